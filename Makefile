@@ -1,0 +1,39 @@
+# Every target works on a fresh clone with nothing but Python 3.11+.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+OUT ?= out
+
+.PHONY: install reproduce test check regen lint bench clean
+
+install: $(STAMP)
+
+# Reinstall only when pyproject.toml changes (or the venv is missing).
+$(STAMP): pyproject.toml
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test]'
+	@touch $(STAMP)
+
+reproduce: $(STAMP)
+	$(BIN)/pendcli reproduce --out $(OUT) --quiet --format markdown > /dev/null
+	@echo "report: $(OUT)/report.md"
+
+test: $(STAMP)
+	$(BIN)/python -m pytest -q
+
+check: $(STAMP)
+	$(BIN)/pendcli check
+
+regen: $(STAMP)
+	$(BIN)/pendcli check --update
+
+lint: $(STAMP)
+	$(BIN)/ruff check pendcli tests
+	$(BIN)/ruff format --check pendcli tests
+
+bench: $(STAMP)
+	$(BIN)/python -m pendcli.bench --write README.md
+
+clean:
+	rm -rf $(OUT) .pytest_cache build *.egg-info

@@ -1,0 +1,3 @@
+from pendcli.cli.main import run
+
+run()

@@ -1,0 +1,100 @@
+"""`pendcli charbonnier ...`: the I_n(π) table and the integrals I_n(x)."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.render import OutputFormat
+
+app = typer.Typer(
+    help="Charbonnier 1908: perturbations, the table of I_n(π).", no_args_is_help=True
+)
+
+
+@app.command("table")
+def table(
+    n_max: Annotated[
+        int, typer.Option("--n-max", help="Extend the table beyond the printed n = 5 up to N.")
+    ] = 5,
+    fmt: FormatOption = OutputFormat.table,
+    plot: PlotOption = None,
+) -> None:
+    """The printed table of I_n(π), n = 0..5, and its closed forms, against recomputation."""
+    from pendcli import charbonnier
+    from pendcli.claims import evaluate_paper
+    from pendcli.formulas import formula_checks
+    from pendcli.plotting import validate_plot_path
+    from pendcli.render import Column, fmt_float
+    from pendcli.views import claim_columns
+
+    plot = validate_plot_path(plot)
+    rows = charbonnier.table_rows(n_max)
+    claims = [r.as_dict() for r in evaluate_paper("charbonnier")]
+    formulas = [f.as_dict() for f in formula_checks("charbonnier")]
+    columns = (
+        Column("n", "n", justify="right"),
+        Column("published", "printed"),
+        Column("exact", "exact (recurrence, rationals)"),
+        Column(
+            "closed_form_matches_recurrence",
+            "printed closed form = recurrence",
+            fmt=lambda r: "yes" if r["closed_form_matches_recurrence"] else "NO",
+        ),
+        Column(
+            "recurrence_float",
+            "recurrence (double)",
+            fmt=lambda r: fmt_float(r["recurrence_float"], 17),
+            justify="right",
+        ),
+        Column("beta", "B(1/2,(n+2)/2)", fmt=lambda r: fmt_float(r["beta"], 17), justify="right"),
+    )
+    from pendcli.views import FORMULA_COLUMNS
+
+    emit(
+        fmt,
+        [
+            (
+                "Charbonnier no. 15: printed I_n(π) against recomputation",
+                claims,
+                claim_columns(claims),
+            ),
+            (f"I_n(π) for n = -1..{n_max}", rows, columns),
+            ("The printed closed forms", formulas, FORMULA_COLUMNS),
+        ],
+        {"claims": claims, "formulas": formulas, "table": rows},
+    )
+    if plot is not None:
+        charbonnier.plot_table(plot, n_max=max(n_max, 5))
+
+
+@app.command("integral", context_settings={"ignore_unknown_options": True})
+def integral(
+    n: Annotated[int, typer.Argument(help="Order n: integer, -1 <= n <= 10^12.")],
+    x: Annotated[
+        float, typer.Option("--x", help="Upper limit x (real, |x| <= 1e6).")
+    ] = 3.141592653589793,
+    fmt: FormatOption = OutputFormat.table,
+) -> None:
+    """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (default π)."""
+    import math
+
+    from pendcli import charbonnier
+    from pendcli.render import Column, fmt_float
+
+    value = charbonnier.integral(n, x)
+    row = {"n": n, "x": x, "value": value, "method": charbonnier.integral_method(n, x)}
+    if x == math.pi and -1 <= n <= 100_000:
+        q, p = charbonnier.integral_pi_exact(n)
+        row["exact"] = charbonnier.exact_text(q, p)
+    columns = [
+        Column("n", "n", justify="right"),
+        Column("x", "x", fmt=lambda r: fmt_float(r["x"], 17), justify="right"),
+        Column("value", "I_n(x)", fmt=lambda r: fmt_float(r["value"], 17), justify="right"),
+    ]
+    if "exact" in row:
+        columns.append(Column("exact", "exact"))
+    columns.append(Column("method", "method"))
+    emit(fmt, [("", [row], columns)], {"claims": [], "formulas": [], "integral": row})

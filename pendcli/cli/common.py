@@ -1,0 +1,35 @@
+"""Shared CLI pieces: options, the console, and printing rows in the chosen format."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from pendcli.console import console
+from pendcli.render import OutputFormat
+
+FormatOption = Annotated[
+    OutputFormat,
+    typer.Option("--format", "-f", help="Output format.", case_sensitive=False),
+]
+PlotOption = Annotated[
+    Path | None,
+    typer.Option("--plot", help="Also draw the comparison to this file (.png, .svg or .pdf)."),
+]
+
+
+def emit(fmt: OutputFormat, sections, document: dict) -> None:
+    """Print titled sections of rows (tables) or the whole document (JSON, CSV, Markdown)."""
+    from pendcli.render import render
+
+    text = render(fmt, sections, document, console=console())
+    if text is not None:
+        sys.stdout.write(text)
+
+
+def say(message: str) -> None:
+    """A status line on stderr (so stdout stays machine-readable)."""
+    console(stderr=True).print(message)

@@ -1,0 +1,154 @@
+"""`pendcli`: the entry point. Commands are thin; errors are one line and a non-zero exit."""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from pendcli.cli import charbonnier as charbonnier_cli
+from pendcli.cli import formulas as formulas_cli
+from pendcli.cli import lecornu as lecornu_cli
+from pendcli.cli import tisserand as tisserand_cli
+from pendcli.cli import tradeoff as tradeoff_cli
+from pendcli.cli.common import FormatOption, emit
+from pendcli.render import OutputFormat
+
+app = typer.Typer(
+    name="pendcli",
+    help=(
+        "Regenerate, number by number, the claims of three historical papers on the pendulum "
+        "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values."
+    ),
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    add_completion=False,
+)
+app.add_typer(tisserand_cli.app, name="tisserand")
+app.add_typer(lecornu_cli.app, name="lecornu")
+app.add_typer(charbonnier_cli.app, name="charbonnier")
+app.add_typer(formulas_cli.app, name="formulas")
+app.add_typer(tradeoff_cli.app, name="tradeoff")
+
+PaperOption = Annotated[
+    str | None,
+    typer.Option("--paper", "-p", help="Only this paper: tisserand, lecornu or charbonnier."),
+]
+
+
+def _version(value: bool) -> None:
+    if value:
+        from pendcli import __version__
+
+        print(f"pendcli {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def main(
+    version: Annotated[
+        bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version.")
+    ] = False,
+) -> None:
+    """Published against recomputed values for Tisserand, Lecornu and Charbonnier."""
+
+
+@app.command("list")
+def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.table) -> None:
+    """Every claim with its id, paper and source (reads the tables only; computes nothing)."""
+    from pendcli.claims import list_rows, resolve_papers
+    from pendcli.render import Column
+
+    rows = list_rows(resolve_papers(paper))
+    columns = [Column(k, k) for k in ("id", "paper", "source", "quantity", "published", "unit")]
+    emit(fmt, [("", rows, columns)], {"claims": rows})
+
+
+@app.command("reproduce")
+def reproduce(
+    paper: PaperOption = None,
+    fmt: FormatOption = OutputFormat.table,
+    out: Annotated[
+        Path | None,
+        typer.Option(
+            "--out", "-o", help="Also write the report, tables and figures to this folder."
+        ),
+    ] = None,
+    formulas: Annotated[
+        bool,
+        typer.Option("--formulas/--no-formulas", help="Include the checks of derived formulas."),
+    ] = True,
+    quiet: Annotated[
+        bool, typer.Option("--quiet", "-q", help="No progress or status lines.")
+    ] = False,
+) -> None:
+    """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
+    from pendcli.claims import resolve_papers
+    from pendcli.reproduce import reproduce_all
+
+    keys = resolve_papers(paper)
+    result = reproduce_all(keys, formulas=formulas, quiet=quiet or fmt is not OutputFormat.table)
+    emit(fmt, result.sections(), result.document())
+    if out is not None:
+        from pendcli.report import write_report
+
+        written = write_report(result, out, quiet=quiet)
+        if not quiet:
+            from pendcli.cli.common import say
+
+            say(f"wrote {len(written)} files to {out}")
+
+
+@app.command("check")
+def check(
+    update: Annotated[
+        bool, typer.Option("--update", help="Rewrite the committed regenerated tables instead.")
+    ] = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print only failures.")] = False,
+) -> None:
+    """Regenerate every table and compare with the committed ones (exit 1 on any drift)."""
+    from pendcli.regression import run_check
+
+    code = run_check(update=update, quiet=quiet)
+    raise typer.Exit(code)
+
+
+def run() -> None:
+    """Console-script entry: turn every user error into one line and exit code 2."""
+    try:  # typer >= 0.20 vendors click as typer._click; older releases use click itself
+        from typer._click import exceptions as click_exceptions
+    except ImportError:  # pragma: no cover
+        from click import exceptions as click_exceptions
+
+    from pendcli.errors import PendcliError
+
+    try:
+        code = app(standalone_mode=False)
+    except PendcliError as exc:
+        _fail(str(exc), 2)
+    except click_exceptions.UsageError as exc:
+        if type(exc).__name__ == "NoArgsIsHelpError":  # help was shown: not an error
+            sys.exit(0)
+        _fail(exc.format_message().replace("\n", " "), 2)
+    except click_exceptions.ClickException as exc:
+        _fail(exc.format_message().replace("\n", " "), 2)
+    except (typer.Abort, click_exceptions.Abort, KeyboardInterrupt):
+        _fail("aborted", 130)
+    except (typer.Exit, click_exceptions.Exit) as exc:
+        sys.exit(exc.exit_code)
+    except BrokenPipeError:
+        sys.exit(0)
+    except Exception as exc:  # a bug: still one line, unless PENDCLI_DEBUG asks for the trace
+        if os.environ.get("PENDCLI_DEBUG"):
+            raise
+        _fail(f"internal error: {type(exc).__name__}: {exc} (set PENDCLI_DEBUG=1 for details)", 3)
+    sys.exit(code if isinstance(code, int) else 0)
+
+
+def _fail(message: str, code: int) -> None:
+    first = message.strip().splitlines()[0] if message.strip() else "error"
+    sys.stderr.write(f"pendcli: error: {first}\n")
+    sys.exit(code)

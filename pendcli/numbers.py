@@ -1,0 +1,173 @@
+"""Parse numbers as the papers print them, keeping the precision the print implies.
+
+A printed string fixes its own precision: ``5,14`` is known to 0.01, ``-0,130``
+to 0.001, ``1°7'33''`` to one second of arc, ``2/3`` and ``2·4/(1·3·5)`` are
+exact. :func:`parse_printed` returns the value together with that resolution
+(the unit in the last printed place), which the verdict engine then uses.
+
+Accepted forms (all found in the three papers):
+
+* decimals with a comma or a point, optional sign: ``5,14``, ``+0,072``, ``0.25``;
+* old French unit-in-the-middle decimals: ``0^m,35``, ``2^{sec},86`` (value 0.35, 2.86);
+* sexagesimal angles: ``1°7'33''``, ``2'42''``, ``2''``, ``30'`` (value in degrees);
+* exact expressions of integers, ``·``, ``*``, ``/``, parentheses and ``π``:
+  ``1/5``, ``2·2·4/(1·3·5)``, ``π·1·3/(2·4)``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+
+from pendcli.errors import PendcliError
+
+__all__ = ["PrintedNumber", "parse_printed"]
+
+
+@dataclass(frozen=True)
+class PrintedNumber:
+    """A printed value and the precision its printed form implies."""
+
+    text: str
+    value: float
+    resolution: float | None  # unit in the last printed place; None when exact
+    kind: str  # "decimal", "sexagesimal" or "exact"
+    exact: Fraction | None = None  # rational part of an exact expression
+    pi_power: int = 0  # exact expressions are exact * pi**pi_power
+    decimals: int | None = None  # printed decimals (decimal kind only)
+
+    @property
+    def is_exact(self) -> bool:
+        return self.kind == "exact"
+
+
+_DECIMAL = re.compile(r"^([+-]?)(\d+)(?:[.,](\d+))?$")
+# 0^m,35 or 2^{sec},86: the unit is written between the integer and the decimals.
+_UNIT_MIDDLE = re.compile(r"^([+-]?)(\d+)\^\{?([a-zA-Z]+)\}?\s*(?:[.,]\s*(\d+))?$")
+_SEXAGESIMAL = re.compile(
+    r"^([+-]?)(?:(\d+)\s*°)?\s*(?:(\d+)\s*(?:'|′)(?!'))?\s*(?:(\d+(?:[.,]\d+)?)\s*(?:''|″|\"))?$"
+)
+_EXPR_TOKEN = re.compile(r"\s*(\d+|π|pi|[()·*/×.])")
+
+
+def _normalise(text: str) -> str:
+    return text.strip().replace("\u2212", "-").replace("’", "'")
+
+
+def parse_printed(text: str) -> PrintedNumber:
+    """Parse one printed number; raise :class:`PendcliError` naming the string if it is not one."""
+    if not isinstance(text, str) or not text.strip():
+        raise PendcliError(
+            f"empty printed value {text!r}; expected e.g. '5,14', '1°7\\'33\\'\\'', '1/5'"
+        )
+    s = _normalise(text)
+
+    m = _DECIMAL.match(s) or _UNIT_MIDDLE.match(s)
+    if m:
+        groups = m.groups()
+        sign, whole, frac = groups[0], groups[1], groups[-1]
+        frac = frac or ""
+        magnitude = float(f"{whole}.{frac}") if frac else float(whole)
+        value = -magnitude if sign == "-" else magnitude
+        return PrintedNumber(
+            text=text,
+            value=value,
+            resolution=10.0 ** (-len(frac)),
+            kind="decimal",
+            decimals=len(frac),
+        )
+
+    if any(c in s for c in "°'″\""):
+        m = _SEXAGESIMAL.match(s)
+        if m and any(m.group(i) for i in (2, 3, 4)):
+            sign, deg, minutes, seconds = m.groups()
+            value = 0.0
+            resolution = 1.0
+            if deg:
+                value += int(deg)
+                resolution = 1.0
+            if minutes:
+                value += int(minutes) / 60
+                resolution = 1 / 60
+            if seconds:
+                sec_text = seconds.replace(",", ".")
+                value += float(sec_text) / 3600
+                decimals = len(sec_text.split(".")[1]) if "." in sec_text else 0
+                resolution = 10.0 ** (-decimals) / 3600
+            if sign == "-":
+                value = -value
+            return PrintedNumber(text=text, value=value, resolution=resolution, kind="sexagesimal")
+        raise PendcliError(
+            f"malformed sexagesimal angle {text!r}; expected e.g. 1°7'33'' or 2'42''"
+        )
+
+    exact, pi_power = _parse_exact(s, text)
+    value = float(exact) * math.pi**pi_power
+    return PrintedNumber(
+        text=text, value=value, resolution=None, kind="exact", exact=exact, pi_power=pi_power
+    )
+
+
+def _parse_exact(s: str, original: str) -> tuple[Fraction, int]:
+    """Evaluate an exact expression: integers, π, products, quotients, parentheses."""
+    tokens: list[str] = []
+    pos = 0
+    while pos < len(s):
+        m = _EXPR_TOKEN.match(s, pos)
+        if not m:
+            raise PendcliError(
+                f"cannot read printed value {original!r} at {s[pos:]!r}; expected a decimal "
+                "(5,14), an angle (1°7'33''), or an exact expression (2·4/(1·3·5), π·1/2)"
+            )
+        tokens.append(m.group(1))
+        pos = m.end()
+        while pos < len(s) and s[pos].isspace():
+            pos += 1
+
+    # Recursive descent: expr := factor (( '·' | '*' | '/' | juxtaposition) factor)*
+    index = 0
+
+    def factor() -> tuple[Fraction, int]:
+        nonlocal index
+        if index >= len(tokens):
+            raise PendcliError(f"printed value {original!r} ends too early")
+        tok = tokens[index]
+        index += 1
+        if tok == "(":
+            val = expr()
+            if index >= len(tokens) or tokens[index] != ")":
+                raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
+            index += 1
+            return val
+        if tok in ("π", "pi"):
+            return Fraction(1), 1
+        if tok.isdigit():
+            return Fraction(int(tok)), 0
+        raise PendcliError(f"unexpected {tok!r} in printed value {original!r}")
+
+    def expr() -> tuple[Fraction, int]:
+        nonlocal index
+        val, power = factor()
+        while index < len(tokens) and tokens[index] != ")":
+            op = tokens[index]
+            if op in ("·", "*", "×", "."):
+                index += 1
+                rhs, rp = factor()
+                val, power = val * rhs, power + rp
+            elif op == "/":
+                index += 1
+                rhs, rp = factor()
+                if rhs == 0:
+                    raise PendcliError(f"division by zero in printed value {original!r}")
+                val, power = val / rhs, power - rp
+            else:  # juxtaposition, as in "2 2/(1·3)" printed for 2·2/(1·3)
+                rhs, rp = factor()
+                val, power = val * rhs, power + rp
+        return val, power
+
+    result = expr()
+    if index != len(tokens):
+        raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
+    return result

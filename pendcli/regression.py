@@ -1,0 +1,1 @@
+"""CI regression of tables (placeholder replaced in issue 8)."""

@@ -1,0 +1,1 @@
+"""Write the reproduction report (placeholder replaced in issue 8)."""

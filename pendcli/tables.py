@@ -1,0 +1,139 @@
+"""Load and validate the published tables (``tables/published/<paper>.toml``).
+
+Each file holds one paper's printed values, transcribed exactly as printed; the format is
+documented in ``tables/README.md``. Every problem (missing file, bad TOML, a missing or
+mistyped field, an unparsable printed value, a duplicate id) raises :class:`PendcliError`
+naming the file and the entry.
+"""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+from pendcli.errors import PendcliError
+from pendcli.numbers import PrintedNumber, parse_printed
+
+__all__ = ["PaperTable", "PublishedValue", "load_paper_table", "tables_dir"]
+
+_REQUIRED = ("id", "source", "quantity", "published")
+_OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison")
+_COMPARISONS = ("equal", "upper-bound")
+
+
+@dataclass(frozen=True)
+class PublishedValue:
+    """One printed number with its provenance."""
+
+    id: str
+    paper: str
+    source: str
+    quantity: str
+    published: str  # the printed string, exactly as printed (normalised notation noted in ocr)
+    number: PrintedNumber
+    unit: str = ""
+    note: str = ""
+    ocr: str = ""  # OCR correction and its reason, if any
+    as_printed: str = ""  # the OCR text, when `published` normalises its notation
+    comparison: str = "equal"
+
+
+@dataclass(frozen=True)
+class PaperTable:
+    key: str
+    citation: str
+    seed: str
+    assumptions: tuple[str, ...]
+    claims: tuple[PublishedValue, ...]
+
+
+def tables_dir() -> Path:
+    """Where the tables live: $PENDCLI_TABLES, else the copy shipped with the package."""
+    override = os.environ.get("PENDCLI_TABLES")
+    if override:
+        return Path(override)
+    return Path(__file__).resolve().parent / "_tables"
+
+
+def load_paper_table(key: str, root: Path | None = None) -> PaperTable:
+    """Read and validate ``published/<key>.toml`` under ``root`` (default :func:`tables_dir`)."""
+    return _load_paper_table(key, (root or tables_dir()).resolve())
+
+
+@cache
+def _load_paper_table(key: str, root: Path) -> PaperTable:
+    path = root / "published" / f"{key}.toml"
+    try:
+        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise PendcliError(f"published table {path} is missing") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise PendcliError(f"published table {path} is not valid TOML: {exc}") from None
+
+    paper = raw.get("paper")
+    if not isinstance(paper, dict) or paper.get("key") != key:
+        raise PendcliError(f"{path}: [paper] must be a table with key = {key!r}")
+    for field in ("citation", "seed"):
+        if not isinstance(paper.get(field), str):
+            raise PendcliError(f"{path}: [paper] needs a string {field!r}")
+    assumptions = paper.get("assumptions", [])
+    if not isinstance(assumptions, list) or not all(isinstance(a, str) for a in assumptions):
+        raise PendcliError(f"{path}: [paper] assumptions must be a list of strings")
+
+    entries = raw.get("claim")
+    if not isinstance(entries, list) or not entries:
+        raise PendcliError(f"{path}: no [[claim]] entries")
+    claims: list[PublishedValue] = []
+    seen: set[str] = set()
+    for index, entry in enumerate(entries, start=1):
+        where = f"{path}: claim #{index}"
+        if not isinstance(entry, dict):
+            raise PendcliError(f"{where} is not a table")
+        if isinstance(entry.get("id"), str):
+            where = f"{path}: claim {entry['id']!r}"
+        for field in _REQUIRED:
+            if not isinstance(entry.get(field), str) or not entry[field].strip():
+                raise PendcliError(f"{where}: field {field!r} must be a non-empty string")
+        for field in _OPTIONAL:
+            if field in entry and not isinstance(entry[field], str):
+                raise PendcliError(f"{where}: field {field!r} must be a string")
+        unknown = set(entry) - set(_REQUIRED) - set(_OPTIONAL)
+        if unknown:
+            raise PendcliError(f"{where}: unknown field(s) {', '.join(sorted(unknown))}")
+        if not entry["id"].startswith(f"{key}."):
+            raise PendcliError(f"{where}: id must start with {key + '.'!r}")
+        if entry["id"] in seen:
+            raise PendcliError(f"{where}: duplicate id")
+        seen.add(entry["id"])
+        comparison = entry.get("comparison", "equal")
+        if comparison not in _COMPARISONS:
+            raise PendcliError(f"{where}: comparison must be one of {', '.join(_COMPARISONS)}")
+        try:
+            number = parse_printed(entry["published"])
+        except PendcliError as exc:
+            raise PendcliError(f"{where}: {exc}") from None
+        claims.append(
+            PublishedValue(
+                id=entry["id"],
+                paper=key,
+                source=entry["source"],
+                quantity=entry["quantity"],
+                published=entry["published"],
+                number=number,
+                unit=entry.get("unit", ""),
+                note=entry.get("note", ""),
+                ocr=entry.get("ocr", ""),
+                as_printed=entry.get("as_printed", ""),
+                comparison=comparison,
+            )
+        )
+    return PaperTable(
+        key=key,
+        citation=paper["citation"],
+        seed=paper["seed"],
+        assumptions=tuple(assumptions),
+        claims=tuple(claims),
+    )

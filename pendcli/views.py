@@ -1,0 +1,88 @@
+"""Columns for claim and formula rows: what the table and Markdown outputs show.
+
+Kept apart from :mod:`pendcli.render` (which knows only columns and rows) and from the
+paper modules (which know only numbers).
+"""
+
+from __future__ import annotations
+
+from pendcli.numbers import parse_printed
+from pendcli.render import Column, fmt_float
+
+
+def format_like_printed(value: float | None, published: str) -> str:
+    """The recomputed value shown three digits beyond the printed precision."""
+    if value is None:
+        return ""
+    try:
+        printed = parse_printed(published)
+    except Exception:
+        return fmt_float(value)
+    if printed.kind == "decimal":
+        return f"{value:.{(printed.decimals or 0) + 3}f}"
+    if printed.kind == "sexagesimal":
+        return sexagesimal(value, seconds_decimals=2)
+    return fmt_float(value, 16)
+
+
+def sexagesimal(degrees: float, seconds_decimals: int = 2) -> str:
+    sign = "-" if degrees < 0 else ""
+    total = round(abs(degrees) * 3600, seconds_decimals)
+    d, rem = divmod(total, 3600)
+    m, s = divmod(rem, 60)
+    return f"{sign}{int(d)}°{int(m)}'{s:.{seconds_decimals}f}''"
+
+
+def _rel(row: dict) -> str:
+    rel = row.get("rel_diff")
+    return "" if rel is None else f"{rel:+.2e}"
+
+
+CLAIM_COLUMNS = (
+    Column("id", "claim"),
+    Column("quantity", "quantity"),
+    Column("source", "source"),
+    Column("published", "published", justify="right"),
+    Column(
+        "recomputed",
+        "recomputed",
+        fmt=lambda r: format_like_printed(r.get("recomputed"), r["published"]),
+        justify="right",
+    ),
+    Column(
+        "exact",
+        "exact model",
+        fmt=lambda r: format_like_printed(r.get("exact"), r["published"]),
+        justify="right",
+    ),
+    Column("unit", "unit"),
+    Column("rel_diff", "rel. diff", fmt=_rel, justify="right"),
+    Column("verdict", "verdict"),
+    Column("note", "note"),
+)
+
+FORMULA_COLUMNS = (
+    Column("id", "formula"),
+    Column("source", "source"),
+    Column("published", "as printed"),
+    Column("recomputed", "as found"),
+    Column("claimed_order", "claimed order", justify="right"),
+    Column(
+        "observed_order",
+        "observed order",
+        fmt=lambda r: "" if r.get("observed_order") is None else f"{r['observed_order']:.2f}",
+        justify="right",
+    ),
+    Column("verdict", "verdict"),
+    Column("note", "note"),
+)
+
+
+def claim_columns(rows: list[dict], with_note: bool = True) -> tuple[Column, ...]:
+    """Drop the exact-model column when no row has one."""
+    cols = CLAIM_COLUMNS
+    if not any(r.get("exact") is not None for r in rows):
+        cols = tuple(c for c in cols if c.key != "exact")
+    if not with_note:
+        cols = tuple(c for c in cols if c.key != "note")
+    return cols
