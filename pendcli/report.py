@@ -1,1 +1,175 @@
-"""Write the reproduction report (placeholder replaced in issue 8)."""
+"""Write the reproduction report: ``out/report.md`` plus its tables and figures.
+
+Everything written here is byte-identical run to run on the same machine (no timestamps,
+fixed plot metadata), except the work-precision diagrams under ``out/tradeoff/``, which
+are timings and vary by nature; the report says so where it links them.
+"""
+
+from __future__ import annotations
+
+import importlib
+import importlib.util
+import platform
+import sys
+from pathlib import Path
+
+from pendcli.errors import PendcliError
+from pendcli.render import Column, to_json, to_markdown
+from pendcli.views import FORMULA_COLUMNS, claim_columns
+
+__all__ = ["write_report"]
+
+_PACKAGES = ("pendcli", "numpy", "scipy", "mpmath", "matplotlib", "typer", "rich")
+
+_VERDICT_RULES = """\
+A printed number fixes its own precision: `5,14` is known to 0.01, `1°7'33''` to one
+second of arc, `2·2/(1·3)` is exact. With `u` the unit of the last printed place:
+
+| verdict | rule |
+|---|---|
+| agrees | the recomputed value rounds to the printed one: \\|r − p\\| ≤ u/2 |
+| truncated | it does not round to it but chops to it (same sign, \\|p\\| ≤ \\|r\\| < \\|p\\| + u) |
+| last-digit | neither, but it rounds one unit away: \\|r − p\\| ≤ 3u/2 |
+| discrepant | anything else |
+
+An exact printed value agrees only if equal to floating-point accuracy. A claim "at most
+p" agrees when the recomputed value, rounded to the printed precision, is ≤ p. A derived
+formula `holds` when its residual against a numerical solution vanishes at the claimed
+order, and `fails` otherwise.
+"""
+
+
+def _module(name: str):
+    return importlib.import_module(name) if importlib.util.find_spec(name) else None
+
+
+def _environment() -> list[dict]:
+    from importlib.metadata import PackageNotFoundError, version
+
+    rows = [{"item": "python", "version": platform.python_version()}]
+    rows.append({"item": "platform", "version": f"{platform.system()} {platform.machine()}"})
+    for pkg in _PACKAGES:
+        try:
+            rows.append({"item": pkg, "version": version(pkg)})
+        except PackageNotFoundError:
+            rows.append({"item": pkg, "version": "not installed"})
+    return rows
+
+
+def _rel(path: Path, out: Path) -> str:
+    return path.resolve().relative_to(out.resolve()).as_posix()
+
+
+def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
+    """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``."""
+    from pendcli.regression import regenerated_tables
+    from pendcli.tables import load_paper_table
+
+    out = Path(out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise PendcliError(f"cannot create output folder {str(out)!r}: {exc.strerror}") from None
+    if not out.is_dir():
+        raise PendcliError(f"--out {str(out)!r} is not a folder")
+    written: list[Path] = []
+
+    def write(name: str, text: str) -> Path:
+        path = out / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+        written.append(path)
+        return path
+
+    write("claims.json", to_json(result.document()))
+    for name, text in regenerated_tables(result).items():
+        write(f"tables/{name}", text)
+
+    counts = result.verdict_counts()
+    verdicts = ["agrees", "truncated", "last-digit", "discrepant"]
+    lines = [
+        "# pendcli reproduction report",
+        "",
+        "Every numerical claim of three papers on the pendulum, as printed, against its "
+        "recomputation with the author's own model (and, where it answers a question about "
+        "the claim, a fuller model). Regenerate with `make reproduce`; the same data is in "
+        "`claims.json` and `tables/`.",
+        "",
+        "## Summary",
+        "",
+    ]
+    summary = []
+    for key in result.papers:
+        c = counts.get(key, {})
+        row = {"paper": key, **{v: c.get(v, 0) for v in verdicts}}
+        row["formulas holding"] = c.get("formula holds", 0)
+        row["formulas failing"] = c.get("formula fails", 0)
+        summary.append(row)
+    lines.append(to_markdown(summary, [Column(k, k) for k in summary[0]]) if summary else "")
+    lines += ["## How verdicts are decided", "", _VERDICT_RULES]
+
+    for key in result.papers:
+        table = load_paper_table(key)
+        rows = [r.as_dict() for r in result.claims.get(key, [])]
+        lines += [f"## {key.capitalize()}", "", f"*{table.citation}* (seed `{table.seed}`).", ""]
+        if table.assumptions:
+            lines += ["Assumptions:", ""] + [f"- {a}" for a in table.assumptions] + [""]
+        c = counts.get(key, {})
+        lines.append(
+            "Verdicts: " + ", ".join(f"{c.get(v, 0)} {v}" for v in verdicts) + f" ({len(rows)} claims)."
+        )
+        lines += ["", "### Claims", "", to_markdown(rows, claim_columns(rows))]
+        frows = [f.as_dict() for f in result.formulas.get(key, [])]
+        if frows:
+            lines += ["### Derived formulas", "", to_markdown(frows, FORMULA_COLUMNS)]
+        figures: list[Path] = []
+        module = _module(f"pendcli.{key}")
+        if module is not None and hasattr(module, "figures"):
+            figures += list(module.figures(out / "figures" / key))
+        fmodule = _module(f"pendcli.formulas.{key}")
+        if fmodule is not None and hasattr(fmodule, "figures"):
+            figures += list(fmodule.figures(out / "figures" / key / "formulas"))
+        if figures:
+            lines += ["### Figures", ""]
+            for fig in figures:
+                written.append(fig)
+                lines += [f"![{fig.stem}]({_rel(fig, out)})", ""]
+
+    stability = _module("pendcli.stability")
+    if stability is not None and hasattr(stability, "stability_rows"):
+        srows = stability.stability_rows()
+        if srows:
+            lines += [
+                "## Numerical stability: where each method is accurate",
+                "",
+                "Measured at run time against mpmath or closed forms (issue 7).",
+                "",
+                to_markdown(srows, [Column(k, k) for k in srows[0]]),
+            ]
+
+    tradeoff = _module("pendcli.tradeoff")
+    if tradeoff is not None and hasattr(tradeoff, "report_figures"):
+        figs = list(tradeoff.report_figures(out / "tradeoff"))
+        if figs:
+            lines += [
+                "## Speed against accuracy",
+                "",
+                "Work-precision diagrams (error against time per evaluation). These are "
+                "timings on the machine that ran `make reproduce`: unlike every other file "
+                "here they change from run to run.",
+                "",
+            ]
+            for fig in figs:
+                written.append(fig)
+                lines += [f"![{fig.stem}]({_rel(fig, out)})", ""]
+
+    env = _environment()
+    lines += [
+        "## Environment",
+        "",
+        to_markdown(env, [Column("item", "item"), Column("version", "version")]),
+        f"Command: `pendcli reproduce --out {out.as_posix()}` ({sys.implementation.name}).",
+        "",
+    ]
+    write("report.md", "\n".join(lines))
+    return written

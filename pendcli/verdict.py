@@ -67,6 +67,11 @@ def judge(printed: PrintedNumber, recomputed: float, comparison: str = "equal") 
     rel = diff / abs(p) if p != 0 else None
     digits = _digits(rel, diff)
 
+    if comparison not in ("equal", "upper-bound"):
+        raise ValueError(f"unknown comparison {comparison!r}")
+    if printed.resolution is None and comparison == "upper-bound":
+        ok = recomputed <= p + _EXACT_RTOL * abs(p)
+        return Comparison(Verdict.AGREES if ok else Verdict.DISCREPANT, diff, rel, digits)
     if printed.resolution is None:  # exact printed value
         ok = abs(diff) <= _EXACT_RTOL * max(abs(p), abs(recomputed))
         return Comparison(Verdict.AGREES if ok else Verdict.DISCREPANT, diff, rel, digits)
@@ -76,8 +81,6 @@ def judge(printed: PrintedNumber, recomputed: float, comparison: str = "equal") 
     if comparison == "upper-bound":
         rounded_ok = recomputed <= p + u / 2 + slack
         return Comparison(Verdict.AGREES if rounded_ok else Verdict.DISCREPANT, diff, rel, digits)
-    if comparison != "equal":
-        raise ValueError(f"unknown comparison {comparison!r}")
 
     if abs(diff) <= u / 2 + slack:
         verdict = Verdict.AGREES

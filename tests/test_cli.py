@@ -1,0 +1,126 @@
+"""The CLI as a user meets it: outputs, one-line errors, exit codes, never a traceback."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import sys
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from pendcli.cli.main import run
+
+
+def invoke(*args: str) -> tuple[int, str, str]:
+    """Run `pendcli ARGS` in-process; return (exit code, stdout, stderr)."""
+    out, err = io.StringIO(), io.StringIO()
+    argv = sys.argv
+    sys.argv = ["pendcli", *args]
+    code = 0
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            run()
+    except SystemExit as exc:
+        code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+    finally:
+        sys.argv = argv
+    return code, out.getvalue(), err.getvalue()
+
+
+def assert_clean_error(code: int, err: str) -> None:
+    assert code == 2, err
+    assert "Traceback" not in err
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert len(lines) == 1, err
+    assert lines[0].startswith("pendcli: error: ")
+
+
+def test_help_and_version():
+    code, out, _ = invoke("--help")
+    assert code == 0 and "reproduce" in out and "charbonnier" in out
+    code, out, _ = invoke("--version")
+    assert code == 0 and out.startswith("pendcli ")
+
+
+def test_charbonnier_table_json_schema():
+    code, out, _ = invoke("charbonnier", "table", "--format", "json")
+    assert code == 0
+    doc = json.loads(out)
+    assert set(doc) >= {"claims", "formulas"}
+    for row in doc["claims"]:
+        assert {"id", "paper", "source", "quantity", "published", "recomputed", "verdict"} <= set(row)
+        assert isinstance(row["recomputed"], float)
+        assert row["verdict"] in {"agrees", "truncated", "last-digit", "discrepant"}
+    assert [r["n"] for r in doc["table"]] == list(range(-1, 6))
+
+
+@pytest.mark.parametrize("fmt", ["table", "json", "csv", "markdown"])
+def test_every_format_is_deterministic(fmt):
+    first = invoke("charbonnier", "table", "--n-max", "8", "--format", fmt)
+    assert first[0] == 0 and first[1]
+    assert invoke("charbonnier", "table", "--n-max", "8", "--format", fmt) == first
+
+
+def test_integral_accepts_negative_order_and_real_x():
+    code, out, _ = invoke("charbonnier", "integral", "-1", "--x", "2.5", "--format", "json")
+    assert code == 0
+    assert json.loads(out)["integral"]["value"] == 2.5
+
+
+def test_plot_is_written(tmp_path):
+    path = tmp_path / "in.png"
+    code, _, err = invoke("charbonnier", "table", "--plot", str(path), "--format", "json")
+    assert code == 0, err
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("charbonnier", "integral", "-3"),
+        ("charbonnier", "integral", "abc"),
+        ("charbonnier", "integral", "2", "--x", "nan"),
+        ("charbonnier", "integral", "2", "--x", "inf"),
+        ("charbonnier", "integral", "2", "--x", "1e400"),
+        ("charbonnier", "integral", "99999999999999999999"),
+        ("charbonnier", "table", "--n-max", "-5"),
+        ("charbonnier", "table", "--n-max", "10000000"),
+        ("charbonnier", "table", "--format", "xml"),
+        ("charbonnier", "table", "--plot", "out.txt"),
+        ("reproduce", "--paper", "newton"),
+        ("list", "--paper", ""),
+        ("nosuchcommand",),
+        ("charbonnier", "nosuch"),
+    ],
+)
+def test_bad_input_gives_one_line_and_exit_2(args):
+    code, _, err = invoke(*args)
+    assert_clean_error(code, err)
+
+
+BAD_VALUES = ["-1", "0", "-0", "nan", "inf", "-inf", "1e400", "abc", "", "3.5", "1e9", "-1e-300"]
+COMMANDS = [
+    ["charbonnier", "integral"],
+    ["charbonnier", "table", "--n-max"],
+    ["charbonnier", "integral", "3", "--x"],
+    ["list", "--paper"],
+    ["reproduce", "--paper"],
+    ["charbonnier", "table", "--format"],
+]
+
+
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    command=st.sampled_from(COMMANDS),
+    value=st.one_of(st.sampled_from(BAD_VALUES), st.text(max_size=6)),
+    extra=st.lists(st.sampled_from(BAD_VALUES + ["--format", "--x", "json"]), max_size=2),
+)
+def test_fuzz_cli_never_tracebacks(command, value, extra):
+    code, _, err = invoke(*command, value, *extra)
+    assert "Traceback" not in err
+    assert code in (0, 2), err
+    if code == 2:
+        assert_clean_error(code, err)

@@ -1,0 +1,85 @@
+"""The published-table loader: every malformed table names its file and entry."""
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from pendcli.claims import PAPERS, Recomputed, join_claims
+from pendcli.errors import PendcliError
+from pendcli.tables import load_paper_table, tables_dir
+
+GOOD = """
+[paper]
+key = "demo"
+citation = "A. Author, A paper (1900)"
+seed = "x.txt"
+
+[[claim]]
+id = "demo.a"
+source = "p. 1"
+quantity = "a"
+published = "5,14"
+"""
+
+
+def write(tmp_path: Path, text: str) -> Path:
+    (tmp_path / "published").mkdir(exist_ok=True)
+    (tmp_path / "published" / "demo.toml").write_text(text, encoding="utf-8")
+    return tmp_path
+
+
+def test_good_table_loads(tmp_path):
+    table = load_paper_table("demo", write(tmp_path, GOOD))
+    assert table.claims[0].number.value == pytest.approx(5.14)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (GOOD.replace('published = "5,14"', 'published = "5;14"'), "demo.a"),
+        (GOOD.replace('published = "5,14"', ""), "'published'"),
+        (GOOD.replace('id = "demo.a"', 'id = "other.a"'), "must start with"),
+        (GOOD + GOOD.split("[[claim]]")[1].join(["[[claim]]", ""]), "duplicate id"),
+        (GOOD.replace('key = "demo"', 'key = "else"'), "[paper]"),
+        (GOOD.replace('quantity = "a"', 'quantity = "a"\ncolour = "red"'), "unknown field"),
+        (GOOD.replace('quantity = "a"', "quantity = 3"), "'quantity'"),
+        (GOOD + "\n[[claim]\n", "not valid TOML"),
+        (GOOD.split("[[claim]]")[0], "no [[claim]]"),
+        (GOOD.replace('published = "5,14"', 'published = "5,14"\ncomparison = "about"'), "comparison"),
+    ],
+)
+def test_malformed_tables_name_file_and_entry(tmp_path, text, message):
+    root = write(tmp_path, text)
+    with pytest.raises(PendcliError) as err:
+        load_paper_table("demo", root)
+    assert "demo.toml" in str(err.value)
+    assert message in str(err.value)
+    assert "\n" not in str(err.value)
+
+
+def test_missing_table(tmp_path):
+    (tmp_path / "published").mkdir()
+    with pytest.raises(PendcliError, match="missing"):
+        load_paper_table("demo", tmp_path)
+
+
+def test_join_requires_a_computation_for_every_claim(tmp_path):
+    table = load_paper_table("demo", write(tmp_path, GOOD))
+    with pytest.raises(PendcliError, match="no computation"):
+        join_claims(table, {})
+    with pytest.raises(PendcliError, match="without a published entry"):
+        join_claims(table, {"demo.a": Recomputed(5.14), "demo.b": Recomputed(1.0)})
+
+
+@pytest.mark.parametrize("key", PAPERS)
+def test_shipped_tables_load(key):
+    table = load_paper_table(key)
+    assert table.claims
+    assert all(c.id.startswith(key + ".") for c in table.claims)
+
+
+def test_tables_dir_override(tmp_path, monkeypatch):
+    shutil.copytree(tables_dir() / "published", tmp_path / "published")
+    monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path))
+    assert tables_dir() == tmp_path
