@@ -16,8 +16,7 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 reproduce: $(STAMP)
-	$(BIN)/pendcli reproduce --out $(OUT) --quiet --format markdown > /dev/null
-	@echo "report: $(OUT)/report.md"
+	$(BIN)/pendcli reproduce --out $(OUT) --format json > /dev/null
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
@@ -27,6 +26,7 @@ check: $(STAMP)
 
 regen: $(STAMP)
 	$(BIN)/pendcli check --update
+	$(BIN)/python -m pendcli.docs
 
 lint: $(STAMP)
 	$(BIN)/ruff check pendcli tests

@@ -28,7 +28,16 @@ from pendcli.tables import tables_dir
 
 __all__ = ["TOLERANCES", "Drift", "compare_tables", "regenerated_tables", "run_check"]
 
-CLAIM_COLUMNS = ("id", "published", "unit", "recomputed", "exact", "abs_diff", "rel_diff", "verdict")
+CLAIM_COLUMNS = (
+    "id",
+    "published",
+    "unit",
+    "recomputed",
+    "exact",
+    "abs_diff",
+    "rel_diff",
+    "verdict",
+)
 FORMULA_COLUMNS = ("id", "source", "claimed_order", "observed_order", "verdict")
 
 # column -> (kind, tolerance). "rel": |now - then| <= tol * max(|then|, tiny);
@@ -106,7 +115,9 @@ def compare_tables(name: str, committed_text: str, now_text: str) -> list[Drift]
     columns, now = _read_csv(now_text, f"regenerated {name}")
     drifts: list[Drift] = []
     for cid in sorted(set(then) - set(now)):
-        drifts.append(Drift(name, cid, "(row)", then[cid].get("published", ""), "present", "gone", ""))
+        drifts.append(
+            Drift(name, cid, "(row)", then[cid].get("published", ""), "present", "gone", "")
+        )
     for cid in sorted(set(now) - set(then)):
         drifts.append(Drift(name, cid, "(row)", now[cid].get("published", ""), "absent", "new", ""))
     for cid in [c for c in now if c in then]:
@@ -127,15 +138,15 @@ def compare_tables(name: str, committed_text: str, now_text: str) -> list[Drift]
             y = _number(b[col], f"regenerated {name}: {cid!r} column {col!r}")
             if x is None or y is None:
                 if (x is None) != (y is None):
-                    drifts.append(Drift(name, cid, col, published, a[col], b[col], "appeared/vanished"))
+                    drifts.append(
+                        Drift(name, cid, col, published, a[col], b[col], "appeared/vanished")
+                    )
                 continue
             diff = y - x
             limit = tol * max(abs(x), 1e-300) if kind == "rel" else tol
             if not (abs(diff) <= limit) or math.isnan(diff):
                 rel = f" ({diff / x:+.2e} rel)" if x else ""
-                drifts.append(
-                    Drift(name, cid, col, published, a[col], b[col], f"{diff:+.3e}{rel}")
-                )
+                drifts.append(Drift(name, cid, col, published, a[col], b[col], f"{diff:+.3e}{rel}"))
     return drifts
 
 

@@ -116,7 +116,9 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
             lines += ["Assumptions:", ""] + [f"- {a}" for a in table.assumptions] + [""]
         c = counts.get(key, {})
         lines.append(
-            "Verdicts: " + ", ".join(f"{c.get(v, 0)} {v}" for v in verdicts) + f" ({len(rows)} claims)."
+            "Verdicts: "
+            + ", ".join(f"{c.get(v, 0)} {v}" for v in verdicts)
+            + f" ({len(rows)} claims)."
         )
         lines += ["", "### Claims", "", to_markdown(rows, claim_columns(rows))]
         frows = [f.as_dict() for f in result.formulas.get(key, [])]

@@ -20,7 +20,9 @@ def mp_integral(n: int, x: float) -> mpmath.mpf:
     with mpmath.workdps(40):
         xm = mpmath.mpf(x)
         if xm <= mpmath.pi / 2:
-            return mpmath.betainc(mpmath.mpf(n + 2) / 2, mpmath.mpf(1) / 2, 0, mpmath.sin(xm) ** 2) / 2
+            return (
+                mpmath.betainc(mpmath.mpf(n + 2) / 2, mpmath.mpf(1) / 2, 0, mpmath.sin(xm) ** 2) / 2
+            )
         points = [mpmath.mpf(0)]
         k = 1
         while k * mpmath.pi / 2 < xm:
@@ -52,7 +54,9 @@ def test_integral_pi_against_mpmath_beta(n):
 
 
 @pytest.mark.parametrize("n", [-1, 0, 1, 2, 3, 6, 11, 40])
-@pytest.mark.parametrize("x", [1e-3, 0.3, 1.0, math.pi / 2, 2.0, 3.0, math.pi - 1e-6, 5.0, 10.0, -2.5])
+@pytest.mark.parametrize(
+    "x", [1e-3, 0.3, 1.0, math.pi / 2, 2.0, 3.0, math.pi - 1e-6, 5.0, 10.0, -2.5]
+)
 def test_integral_general_x_against_quadrature(n, x):
     ref = mp_integral(n, x) if x >= 0 else (-1) ** n * mp_integral(n, -x)
     got = charbonnier.integral(n, x)

@@ -51,7 +51,9 @@ def test_charbonnier_table_json_schema():
     doc = json.loads(out)
     assert set(doc) >= {"claims", "formulas"}
     for row in doc["claims"]:
-        assert {"id", "paper", "source", "quantity", "published", "recomputed", "verdict"} <= set(row)
+        assert {"id", "paper", "source", "quantity", "published", "recomputed", "verdict"} <= set(
+            row
+        )
         assert isinstance(row["recomputed"], float)
         assert row["verdict"] in {"agrees", "truncated", "last-digit", "discrepant"}
     assert [r["n"] for r in doc["table"]] == list(range(-1, 6))
@@ -116,7 +118,7 @@ COMMANDS = [
 @given(
     command=st.sampled_from(COMMANDS),
     value=st.one_of(st.sampled_from(BAD_VALUES), st.text(max_size=6)),
-    extra=st.lists(st.sampled_from(BAD_VALUES + ["--format", "--x", "json"]), max_size=2),
+    extra=st.lists(st.sampled_from([*BAD_VALUES, "--format", "--x", "json"]), max_size=2),
 )
 def test_fuzz_cli_never_tracebacks(command, value, extra):
     code, _, err = invoke(*command, value, *extra)

@@ -98,9 +98,7 @@ def test_decimal_roundtrip(sign, whole, frac, comma):
     assert p.resolution == pytest.approx(10.0 ** -len(frac))
 
 
-@given(
-    d=st.integers(0, 359), m=st.integers(0, 59), s=st.integers(0, 59), which=st.integers(0, 2)
-)
+@given(d=st.integers(0, 359), m=st.integers(0, 59), s=st.integers(0, 59), which=st.integers(0, 2))
 def test_sexagesimal_roundtrip(d, m, s, which):
     text = [f"{d}°{m}'{s}''", f"{m}'{s}''", f"{s}''"][which]
     expected = [d + m / 60 + s / 3600, m / 60 + s / 3600, s / 3600][which]

@@ -12,7 +12,7 @@ COLS = [Column("id", "id"), Column("x", "x", justify="right"), Column("verdict",
 
 
 def test_markdown_whole_output():
-    assert to_markdown(ROWS, COLS + [Column("note", "note")]) == (
+    assert to_markdown(ROWS, [*COLS, Column("note", "note")]) == (
         "| id | x | verdict | note |\n"
         "|---|---:|---|---|\n"
         "| a | 1.5 | agrees | pipe \\| here |\n"
@@ -21,7 +21,7 @@ def test_markdown_whole_output():
 
 
 def test_csv_whole_output_round_trips_floats():
-    assert to_csv(ROWS, ["id", "x", "note"]) == 'id,x,note\na,1.5,pipe | here\nb,0.1,\n'
+    assert to_csv(ROWS, ["id", "x", "note"]) == "id,x,note\na,1.5,pipe | here\nb,0.1,\n"
 
 
 def test_json_is_deterministic_and_has_no_nan():

@@ -46,7 +46,10 @@ def test_good_table_loads(tmp_path):
         (GOOD.replace('quantity = "a"', "quantity = 3"), "'quantity'"),
         (GOOD + "\n[[claim]\n", "not valid TOML"),
         (GOOD.split("[[claim]]")[0], "no [[claim]]"),
-        (GOOD.replace('published = "5,14"', 'published = "5,14"\ncomparison = "about"'), "comparison"),
+        (
+            GOOD.replace('published = "5,14"', 'published = "5,14"\ncomparison = "about"'),
+            "comparison",
+        ),
     ],
 )
 def test_malformed_tables_name_file_and_entry(tmp_path, text, message):

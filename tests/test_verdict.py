@@ -60,7 +60,7 @@ def test_differences_and_digits():
 
 
 printed_decimals = st.tuples(
-    st.integers(min_value=-10**5, max_value=10**5), st.integers(min_value=0, max_value=4)
+    st.integers(min_value=-(10**5), max_value=10**5), st.integers(min_value=0, max_value=4)
 ).map(lambda t: (f"{t[0] / 10 ** t[1]:.{t[1]}f}", t[1]))
 
 

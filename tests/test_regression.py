@@ -1,0 +1,87 @@
+"""`pendcli check`: drift in a value, a verdict, a published string or a row is caught."""
+
+from __future__ import annotations
+
+import shutil
+
+import pytest
+
+from pendcli.errors import PendcliError
+from pendcli.regression import TOLERANCES, compare_tables
+
+HEADER = "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict\n"
+ROW = 'x.a,"5,14",,5.135622301840683,,-0.004377698159317,-0.00085,agrees\n'
+
+
+def test_identical_tables_have_no_drift():
+    assert compare_tables("t.csv", HEADER + ROW, HEADER + ROW) == []
+
+
+def test_last_bit_noise_is_within_tolerance():
+    noisy = ROW.replace("5.135622301840683", "5.135622301840684")
+    assert compare_tables("t.csv", HEADER + ROW, HEADER + noisy) == []
+
+
+@pytest.mark.parametrize(
+    ("changed", "column"),
+    [
+        (ROW.replace("5.135622301840683", "5.1357"), "recomputed"),
+        (ROW.replace("agrees", "truncated"), "verdict"),
+        (ROW.replace('"5,14"', '"5,15"'), "published"),
+    ],
+)
+def test_real_changes_are_drift(changed, column):
+    drifts = compare_tables("t.csv", HEADER + ROW, HEADER + changed)
+    assert [d.column for d in drifts] == [column]
+    assert drifts[0].id == "x.a"
+
+
+def test_added_and_removed_rows():
+    other = ROW.replace("x.a", "x.b")
+    drifts = compare_tables("t.csv", HEADER + ROW, HEADER + other)
+    assert {(d.id, d.now) for d in drifts} == {("x.a", "gone"), ("x.b", "new")}
+
+
+@pytest.mark.parametrize(
+    "bad",
+    [
+        "nonsense\n1,2\n",
+        HEADER + "x.a,1\n",
+        HEADER + ROW + ROW,
+        HEADER + ROW.replace("5.135622301840683", "five"),
+    ],
+)
+def test_malformed_committed_table_names_the_file(bad):
+    with pytest.raises(PendcliError) as err:
+        compare_tables("t.csv", bad, HEADER + ROW)
+    assert "t.csv" in str(err.value)
+
+
+def test_every_committed_column_has_an_explicit_tolerance():
+    from pendcli.regression import CLAIM_COLUMNS, FORMULA_COLUMNS
+
+    for col in set(CLAIM_COLUMNS + FORMULA_COLUMNS) - {"id"}:
+        assert col in TOLERANCES
+
+
+def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
+    from pendcli.regression import run_check
+    from pendcli.tables import _load_paper_table, tables_dir
+
+    shutil.copytree(tables_dir(), tmp_path / "tables")
+    monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
+    _load_paper_table.cache_clear()
+    try:
+        assert run_check(quiet=True) == 0
+        path = tmp_path / "tables" / "published" / "charbonnier.toml"
+        text = path.read_text(encoding="utf-8")
+        path.write_text(text.replace('published = "2·2/(1·3)"', 'published = "2·2/(1·5)"'), "utf-8")
+        _load_paper_table.cache_clear()
+        assert run_check(quiet=True) == 1  # published string and verdict both drift
+        path.write_text(text, "utf-8")
+        csv_path = tmp_path / "tables" / "regenerated" / "charbonnier-claims.csv"
+        csv_path.write_text(csv_path.read_text("utf-8").replace("agrees", "discrepant", 1), "utf-8")
+        _load_paper_table.cache_clear()
+        assert run_check(quiet=True) == 1
+    finally:
+        _load_paper_table.cache_clear()
