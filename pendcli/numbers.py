@@ -23,7 +23,7 @@ from fractions import Fraction
 
 from pendcli.errors import PendcliError
 
-__all__ = ["PrintedNumber", "parse_printed"]
+__all__ = ["PrintedNumber", "exact_number", "parse_printed"]
 
 
 @dataclass(frozen=True)
@@ -171,3 +171,16 @@ def _parse_exact(s: str, original: str) -> tuple[Fraction, int]:
     if index != len(tokens):
         raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
     return result
+
+
+def exact_number(printed: PrintedNumber) -> PrintedNumber:
+    """The same printed number taken as exact (a count, a definition), not as a rounded value."""
+    if printed.is_exact:
+        return printed
+    if printed.kind != "decimal":
+        raise PendcliError(f"only a decimal can be declared exact, not {printed.text!r}")
+    scale = 10 ** (printed.decimals or 0)
+    exact = Fraction(round(printed.value * scale), scale)
+    return PrintedNumber(
+        text=printed.text, value=printed.value, resolution=None, kind="exact", exact=exact
+    )

@@ -15,12 +15,13 @@ from functools import cache
 from pathlib import Path
 
 from pendcli.errors import PendcliError
-from pendcli.numbers import PrintedNumber, parse_printed
+from pendcli.numbers import PrintedNumber, exact_number, parse_printed
 
 __all__ = ["PaperTable", "PublishedValue", "load_paper_table", "tables_dir"]
 
 _REQUIRED = ("id", "source", "quantity", "published")
-_OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison")
+_OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison", "precision")
+_PRECISIONS = ("printed", "exact")
 _COMPARISONS = ("equal", "upper-bound")
 
 
@@ -111,10 +112,16 @@ def _load_paper_table(key: str, root: Path) -> PaperTable:
         comparison = entry.get("comparison", "equal")
         if comparison not in _COMPARISONS:
             raise PendcliError(f"{where}: comparison must be one of {', '.join(_COMPARISONS)}")
+        precision = entry.get("precision", "printed")
+        if precision not in _PRECISIONS:
+            raise PendcliError(f"{where}: precision must be one of {', '.join(_PRECISIONS)}")
         try:
             number = parse_printed(entry["published"])
         except PendcliError as exc:
             raise PendcliError(f"{where}: {exc}") from None
+        if precision == "exact":
+            # A count or a definition ("cinq racines", "un mètre"): exact, whatever its digits.
+            number = exact_number(number)
         claims.append(
             PublishedValue(
                 id=entry["id"],

@@ -86,3 +86,14 @@ def test_tables_dir_override(tmp_path, monkeypatch):
     shutil.copytree(tables_dir() / "published", tmp_path / "published")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path))
     assert tables_dir() == tmp_path
+
+
+def test_precision_exact_makes_a_decimal_exact(tmp_path):
+    text = GOOD.replace('published = "5,14"', 'published = "5"\nprecision = "exact"')
+    number = load_paper_table("demo", write(tmp_path, text)).claims[0].number
+    assert number.is_exact
+    assert number.resolution is None
+    with pytest.raises(PendcliError, match="precision"):
+        other = tmp_path / "other"
+        other.mkdir()
+        load_paper_table("demo", write(other, text.replace('"exact"', '"loose"')))

@@ -1,7 +1,233 @@
-"""`pendcli lecornu ...` subcommands."""
+"""`pendcli lecornu ...`: the variable-length pendulum (claims, zeros, the 0,35 m/s example)."""
 
 from __future__ import annotations
 
+from typing import Annotated
+
 import typer
 
-app = typer.Typer(help="Lecornu (see `pendcli lecornu --help`).", no_args_is_help=True)
+from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.render import OutputFormat
+
+app = typer.Typer(
+    help="Lecornu: the pendulum of variable length (Bessel zeros, the 0,35 m/s example).",
+    no_args_is_help=True,
+)
+
+SpeedOption = Annotated[
+    float, typer.Option("--speed", help="Shortening speed b (m/s), 0.001 <= b <= 1000.")
+]
+LengthOption = Annotated[
+    float, typer.Option("--length", help="Length at t = 0 (m), 0.001 <= L <= 1000.")
+]
+GOption = Annotated[float, typer.Option("--g", help="Gravity (m/s²), 0.1 <= g <= 100.")]
+
+
+def _col(key: str, header: str, sig: int = 10):
+    from pendcli.render import Column, fmt_float
+
+    return Column(key, header, fmt=lambda r: fmt_float(r.get(key), sig), justify="right")
+
+
+@app.command("claims")
+def claims(
+    g: GOption = 9.81,
+    fmt: FormatOption = OutputFormat.table,
+) -> None:
+    """Every printed number of the memoir against its recomputation, with a verdict."""
+    from pendcli import lecornu
+    from pendcli.claims import evaluate_paper
+    from pendcli.views import claim_columns
+
+    g = lecornu._real("g", g, *lecornu.G_RANGE, "m/s²")
+    rows = [r.as_dict() for r in evaluate_paper("lecornu", lambda: lecornu.recompute(g))]
+    emit(
+        fmt,
+        [(f"Lecornu: printed against recomputed (g = {g:g} m/s²)", rows, claim_columns(rows))],
+        {"g": g, "claims": rows, "formulas": []},
+    )
+
+
+@app.command("zeros")
+def zeros(
+    order: Annotated[int, typer.Option("--order", help="Order of J: 1 or 2.")] = 2,
+    count: Annotated[int, typer.Option("--count", help="How many zeros, 1 <= K <= 10^7.")] = 5,
+    method: Annotated[
+        str,
+        typer.Option("--method", help="auto, scipy, mcmahon, mcmahon-newton, mpmath or series."),
+    ] = "auto",
+    fmt: FormatOption = OutputFormat.table,
+) -> None:
+    """The first K positive zeros of J_1 or J_2 (Lecornu's (15) and the vertical passages)."""
+    from pendcli.besselzeros import bessel_zeros
+    from pendcli.render import Column
+
+    values = bessel_zeros(order, count, method)
+    rows = [{"k": k + 1, "zero": float(z)} for k, z in enumerate(values)]
+    columns = [
+        Column("k", "k", justify="right"),
+        Column("zero", "j", fmt=lambda r: repr(r["zero"]), justify="right"),
+    ]
+    emit(
+        fmt,
+        [(f"Zeros of J_{order} ({method})", rows, columns)],
+        {"order": order, "method": method, "zeros": rows},
+    )
+
+
+@app.command("example")
+def example(
+    speed: SpeedOption = 0.35,
+    length: LengthOption = 1.0,
+    g: GOption = 9.81,
+    fmt: FormatOption = OutputFormat.table,
+    plot: PlotOption = None,
+) -> None:
+    """The shortening pendulum of the example: elongations, amplitudes, vertical passages."""
+    from pendcli import lecornu
+    from pendcli.plotting import validate_plot_path
+
+    plot = validate_plot_path(plot)
+    elong, passages, summary = lecornu.example_rows(speed, length, g)
+    cols_e = [
+        _col("k", "k"),
+        _col("z", "z (J2 = 0)", 8),
+        _col("length_m", "l (m)", 6),
+        _col("time_s", "t (s)", 6),
+        _col("j0", "J0(z)", 6),
+        _col("ratio", "θ/θ0", 6),
+        _col("from_rest_length_m", "from rest: l (m)", 6),
+        _col("from_rest_time_s", "from rest: t (s)", 6),
+        _col("from_rest_ratio", "from rest: θ/θ0", 6),
+    ]
+    cols_p = [
+        _col("k", "k"),
+        _col("z", "z (J1 = 0)", 8),
+        _col("length_m", "l (m)", 6),
+        _col("time_s", "t (s)", 6),
+        _col("from_rest_time_s", "from rest: t (s)", 6),
+    ]
+    from pendcli.render import Column
+
+    cols_s = [Column("quantity", "quantity"), _col("value", "value", 8), Column("unit", "unit")]
+    emit(
+        fmt,
+        [
+            ("Elongations (solution (10); from rest: released at rest at t = 0)", elong, cols_e),
+            ("Vertical passages", passages, cols_p),
+            ("Summary", summary, cols_s),
+        ],
+        {"elongations": elong, "passages": passages, "summary": summary},
+    )
+    if plot is not None:
+        lecornu.plot_example(plot, speed, length, g)
+
+
+@app.command("ode-check")
+def ode_check(
+    speed: SpeedOption = 0.35,
+    length: LengthOption = 1.0,
+    g: GOption = 9.81,
+    amplitude: Annotated[
+        list[float] | None,
+        typer.Option("--amplitude", help="Initial amplitude(s) in degrees for eq. (3) with sin θ."),
+    ] = None,
+    floor: Annotated[
+        float, typer.Option("--floor", help="Stop at this fraction of the length, 1e-9..0.5.")
+    ] = 0.02,
+    fmt: FormatOption = OutputFormat.table,
+) -> None:
+    """Bessel elongation times against solve_ivp on eq. (3), linear and with sin θ."""
+    from pendcli import lecornu
+
+    amps = tuple(amplitude) if amplitude else (1.0, 5.0)
+    for a in amps:
+        lecornu._real("amplitude", a, 1e-6, 179.0, "degrees")
+    rows = lecornu.ode_check(speed, length, g, amps, floor)
+    columns = [_col(k, k.replace("_", " "), 8) for k in rows[0]]
+    emit(
+        fmt,
+        [("Released from rest: Bessel (9) against eq. (3) integrated", rows, columns)],
+        {"rows": rows},
+    )
+
+
+@app.command("g-sensitivity")
+def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
+    """The g-dependent claims at several g, their verdicts, and the g that fits best."""
+    from pendcli import lecornu
+    from pendcli.render import Column
+
+    rows = lecornu.g_sensitivity()
+    best = lecornu.best_g()
+    columns = [Column("id", "claim"), Column("published", "published")]
+    for key in rows[0]:
+        if key.startswith("g="):
+            columns.append(_col(key, key, 5))
+        elif key.startswith("verdict"):
+            columns.append(Column(key, key.replace("verdict ", "")))
+    columns.append(_col("d_value_dg", "d/dg", 4))
+    summary = [{"quantity": k, "value": str(v)} for k, v in best.items()]
+    emit(
+        fmt,
+        [
+            ("g-dependent claims at several g (verdicts always use g = 9.81)", rows, columns),
+            (
+                "Which g reproduces the printed figures best",
+                summary,
+                [Column("quantity", "quantity"), Column("value", "value")],
+            ),
+        ],
+        {"rows": rows, "best_g": best},
+    )
+
+
+@app.command("series")
+def series(fmt: FormatOption = OutputFormat.table) -> None:
+    """Lecornu's series (10)/(13) in double precision: where cancellation destroys them."""
+    from pendcli import besselzeros, lecornu
+    from pendcli.render import Column
+
+    rows = lecornu.series_cancellation()
+    columns = [Column("order", "order")] + [
+        _col(k, k.replace("_", " "), 6) for k in rows[0] if k != "order"
+    ]
+    limits = [
+        {
+            "order": o,
+            "safe_limit_z": besselzeros.series_safe_limit(o),
+            "max_error": besselzeros.SERIES_MAX_ERROR,
+        }
+        for o in besselzeros.ORDERS
+    ]
+    emit(
+        fmt,
+        [
+            ("Series against mpmath", rows, columns),
+            (
+                "Safe range of method 'series'",
+                limits,
+                [
+                    Column("order", "order"),
+                    _col("safe_limit_z", "z limit", 6),
+                    _col("max_error", "max zero error", 3),
+                ],
+            ),
+        ],
+        {"rows": rows, "limits": limits},
+    )
+
+
+@app.command("zero-length")
+def zero_length(
+    speed: SpeedOption = 0.35,
+    length: LengthOption = 1.0,
+    g: GOption = 9.81,
+    fmt: FormatOption = OutputFormat.table,
+) -> None:
+    """Amplitude growth as the length goes to zero (linear eq. (3) from rest, to a floor)."""
+    from pendcli import lecornu
+
+    rows = lecornu.zero_length_behaviour(speed, length, g)
+    columns = [_col(k, k.replace("_", " "), 6) for k in rows[0]]
+    emit(fmt, [("|θ| / θ0 down to a length floor", rows, columns)], {"rows": rows})

@@ -1,0 +1,120 @@
+"""Zeros of J_1 and J_2 by every method, against mpmath at 40 digits (findroot on besselj)."""
+
+from __future__ import annotations
+
+import inspect
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+from pendcli.besselzeros import (
+    MAX_COUNT,
+    METHODS,
+    bessel_zeros,
+    lecornu_series,
+    series_safe_limit,
+)
+from pendcli.errors import PendcliError
+
+REF_DPS = 40
+
+
+def reference_zero(order: int, s: int) -> mpmath.mpf:
+    """Independent reference: Newton on mpmath.besselj at 40 digits from McMahon's β."""
+    with mpmath.workdps(REF_DPS):
+        beta = (s + order / 2 - mpmath.mpf(1) / 4) * mpmath.pi
+        start = beta - (4 * order**2 - 1) / (8 * beta)
+        return mpmath.findroot(lambda x: mpmath.besselj(order, x), start)
+
+
+def ulp_error(value: float, ref: mpmath.mpf) -> float:
+    with mpmath.workdps(REF_DPS):
+        return float((mpmath.mpf(value) - ref) / np.spacing(float(ref)))
+
+
+@pytest.fixture(scope="module")
+def references():
+    return {order: [reference_zero(order, s) for s in range(1, 41)] for order in (1, 2)}
+
+
+def test_signature_and_methods():
+    params = list(inspect.signature(bessel_zeros).parameters)
+    assert params == ["order", "count", "method"]
+    assert inspect.signature(bessel_zeros).parameters["method"].default == "auto"
+    assert set(METHODS) == {"auto", "scipy", "mcmahon", "mcmahon-newton", "mpmath", "series"}
+
+
+# (method, count, largest allowed error in ulp over the first `count` zeros)
+ULP_LIMITS = [
+    ("auto", 40, 0.5),  # correctly rounded
+    ("mpmath", 40, 0.5),
+    ("scipy", 40, 1.0),  # measured up to 0.87 ulp
+    ("mcmahon-newton", 40, 2.0),  # measured up to 1.1 ulp (scipy jv near a zero)
+]
+
+
+@pytest.mark.parametrize("order", [1, 2])
+@pytest.mark.parametrize(("method", "count", "max_ulp"), ULP_LIMITS)
+def test_zeros_against_mpmath(references, order, method, count, max_ulp):
+    zeros = bessel_zeros(order, count, method)
+    assert zeros.shape == (count,)
+    errors = [ulp_error(z, references[order][k]) for k, z in enumerate(zeros)]
+    assert max(abs(e) for e in errors) <= max_ulp, errors
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_mcmahon_bad_at_first_zeros_exact_beyond(references, order):
+    zeros = bessel_zeros(order, 40, "mcmahon")
+    errors = [ulp_error(z, references[order][k]) for k, z in enumerate(zeros)]
+    # Truncation: the asymptotic expansion is off by many ulp at s = 1 ...
+    assert abs(errors[0]) > 1e6
+    # ... and correctly rounded from s = 16 on (measured: the first >0.5 ulp is at s <= 15).
+    assert max(abs(e) for e in errors[15:]) <= 0.5
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_series_method_in_its_range(references, order):
+    zeros = bessel_zeros(order, 6, "series")
+    for k, z in enumerate(zeros):
+        assert abs(z - float(references[order][k])) < 1e-8
+
+
+@pytest.mark.parametrize("order", [1, 2])
+@pytest.mark.parametrize("z", [0.5, 3.0, 8.0, 12.0])
+def test_lecornu_series_is_bessel(order, z):
+    x = z * z / 4
+    s = float(lecornu_series(order, x))
+    value = s * 2 / z if order == 1 else s * x  # (10): φ = √x J1(2√x); (13): J2(2√x)/x
+    # Rounding error of an alternating sum: a few ε times the sum of |terms| = I_ν(z).
+    bound = 4 * np.finfo(float).eps * float(mpmath.besseli(order, z))
+    assert abs(value - float(mpmath.besselj(order, z))) <= bound
+
+
+@pytest.mark.parametrize(
+    ("order", "count", "method"),
+    [
+        (0, 5, "auto"),
+        (3, 5, "auto"),
+        (True, 5, "auto"),
+        (1, 0, "auto"),
+        (1, -3, "auto"),
+        (1, MAX_COUNT + 1, "auto"),
+        (1, 2.5, "auto"),
+        (2, 5, "newton"),
+        (2, 50_000, "mpmath"),
+        (2, 8, "series"),
+    ],
+)
+def test_bad_input(order, count, method):
+    with pytest.raises(PendcliError, match=r"range|one of|unknown|must be"):
+        bessel_zeros(order, count, method)
+
+
+def test_series_refusal_names_the_limit():
+    limit = series_safe_limit(2)
+    with pytest.raises(PendcliError, match=r"valid range is 1 <= count <= 6"):
+        bessel_zeros(2, 7, "series")
+    assert 22.0 < limit < 24.0
+    assert math.isfinite(series_safe_limit(1))
