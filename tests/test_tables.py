@@ -93,7 +93,7 @@ def test_precision_exact_makes_a_decimal_exact(tmp_path):
     number = load_paper_table("demo", write(tmp_path, text)).claims[0].number
     assert number.is_exact
     assert number.resolution is None
+    other = tmp_path / "other"
+    other.mkdir()
     with pytest.raises(PendcliError, match="precision"):
-        other = tmp_path / "other"
-        other.mkdir()
         load_paper_table("demo", write(other, text.replace('"exact"', '"loose"')))
