@@ -348,3 +348,25 @@ def test_figures(tmp_path):
         "lecornu_printed_minus_recomputed.png",
     ]
     assert all(p.stat().st_size > 20_000 for p in paths)
+
+
+def test_exact_solution_constants_against_mpmath_roots():
+    """The double-precision roots behind -0,13, 3π/32 and 6,47 against mpmath at 30 digits."""
+    from pendcli.lecornu import _lengthening_from_vertical
+
+    for p in (0.004, 0.001):
+        with mpmath.workdps(30):
+            z0 = 2 / mpmath.mpf(p)
+            j1, y1 = mpmath.besselj(1, z0), mpmath.bessely(1, z0)
+            ze = mpmath.findroot(
+                lambda z, j1=j1, y1=y1: mpmath.besselj(2, z) * y1 - mpmath.bessely(2, z) * j1,
+                z0 + mpmath.pi / 2,
+            )
+            z1 = mpmath.findroot(
+                lambda z, j1=j1, y1=y1: mpmath.besselj(1, z) * y1 - mpmath.bessely(1, z) * j1,
+                z0 + mpmath.pi,
+            )
+            ref = (p * (ze**2 - z0**2) / 4, p * (z1**2 - z0**2) / 4)
+        got = _lengthening_from_vertical(p)
+        assert abs(got[0] - float(ref[0])) < 1e-12
+        assert abs(got[1] - float(ref[1])) < 1e-12

@@ -1,0 +1,458 @@
+"""Tisserand 1881: claims, series and exact motion, each against an independent computation.
+
+References here are computed with mpmath at 30+ digits from Tisserand's equations as printed,
+(1)-(2) in the variable z = cos θ and (4)-(5) in ψ, with formulas other than those in
+pendcli.spherical (Gauss-Legendre/tanh-sinh quadrature instead of the trapezoidal rule, the
+Kapteyn-type form b_n = (1/nπ)∫ cos 2nτ(ψ) dψ instead of the by-parts form).
+"""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+
+import mpmath
+import pytest
+from typer.testing import CliRunner
+
+from pendcli import tisserand
+from pendcli.claims import evaluate_paper
+from pendcli.errors import PendcliError
+from pendcli.numbers import parse_printed
+from pendcli.spherical import exact_conical
+from pendcli.tables import load_paper_table
+from pendcli.verdict import judge
+
+CLAIMS = load_paper_table("tisserand").claims
+EXAMPLE = (math.radians(30), math.radians(15))
+
+# Verdict of Tisserand's own formulas (value) and of the exact motion (exact) per claim.
+EXPECTED = {
+    "tisserand.example.psi_sin2": ("agrees", "discrepant"),
+    "tisserand.example.psi_sin4": ("agrees", "last-digit"),
+    "tisserand.example.phi_sin2": ("agrees", "discrepant"),
+    "tisserand.example.displacement": ("agrees", "discrepant"),
+    "tisserand.resal.rate": ("agrees", None),
+}
+
+
+# ------------------------------------------------------------ independent references
+
+
+def mp_mean_motions(theta0: float, theta1: float, dps: int = 40) -> tuple[float, float]:
+    """k'/k and Ω from (1)-(2) in z = cos θ, z = c0 + (c1 - c0) sin² s (no singularity)."""
+    with mpmath.workdps(dps):
+        t0, t1 = mpmath.mpf(theta0), mpmath.mpf(theta1)
+        c0, c1 = mpmath.cos(t0), mpmath.cos(t1)
+        u0u1 = mpmath.sin(t0) * mpmath.sin(t1)
+
+        def z(s):
+            return c0 + (c1 - c0) * mpmath.sin(s) ** 2
+
+        def d(zz):
+            return 1 + zz * c0 + zz * c1 + c0 * c1
+
+        # dz / sqrt((z - c0)(c1 - z)) = 2 ds
+        half_time = mpmath.sqrt((c0 + c1) / 2) * mpmath.quad(
+            lambda s: 2 / mpmath.sqrt(d(z(s))), [0, mpmath.pi / 2]
+        )
+        half_phi = u0u1 * mpmath.quad(
+            lambda s: 2 / ((1 - z(s) ** 2) * mpmath.sqrt(d(z(s)))), [0, mpmath.pi / 2]
+        )
+        k1 = mpmath.pi / (2 * half_time)
+        omega = (2 * half_phi - mpmath.pi) / mpmath.pi
+        return float(k1), float(omega)
+
+
+def mp_fourier(theta0: float, theta1: float, harmonics: int = 2, dps: int = 30):
+    """b_n and c_n from (4)-(5) as printed, by Fourier series of k dt/dψ and mpmath.quad."""
+    with mpmath.workdps(dps):
+        t0, t1 = mpmath.mpf(theta0), mpmath.mpf(theta1)
+        u0, u1 = mpmath.sin(t0), mpmath.sin(t1)
+        c0, c1 = mpmath.cos(t0), mpmath.cos(t1)
+        pi = mpmath.pi
+
+        def u2(psi):
+            return u0**2 * mpmath.cos(psi) ** 2 + u1**2 * mpmath.sin(psi) ** 2
+
+        def common(psi):
+            uu = u2(psi)
+            c = mpmath.sqrt(1 - uu)
+            dd = 1 + c * c0 + c * c1 + c0 * c1
+            return uu, c, dd
+
+        def kdt(psi):  # eq. (4) divided by √2
+            _, c, dd = common(psi)
+            return mpmath.sqrt((c + c0) * (c + c1) * (c0 + c1)) / (c * mpmath.sqrt(2 * dd))
+
+        def dphi_prime(psi):  # eq. (5) minus dφ1/dψ = u0 u1 / u²
+            uu, c, dd = common(psi)
+            dphi = u0 * u1 / (uu * c) * mpmath.sqrt((c + c0) * (c + c1) / dd)
+            return dphi - u0 * u1 / uu
+
+        a0 = mpmath.quad(kdt, [0, pi]) / pi
+        coeffs = []
+        for m in range(1, 60):
+            am = 2 / pi * mpmath.quad(lambda p, m=m: kdt(p) * mpmath.cos(2 * m * p), [0, pi])
+            coeffs.append(am / (2 * m * a0))
+            if abs(am) < mpmath.mpf(10) ** (-dps + 2):
+                break
+
+        def tau(psi):
+            return psi + mpmath.fsum(
+                a * mpmath.sin(2 * (j + 1) * psi) for j, a in enumerate(coeffs)
+            )
+
+        b = [
+            float(
+                mpmath.quad(lambda p, n=n: mpmath.cos(2 * n * tau(p)), [0, pi / 2, pi]) / (n * pi)
+            )
+            for n in range(1, harmonics + 1)
+        ]
+        c = [
+            float(
+                mpmath.quad(
+                    lambda p, n=n: dphi_prime(p) * mpmath.cos(2 * n * tau(p)), [0, pi / 2, pi]
+                )
+                / (n * pi)
+            )
+            for n in range(1, harmonics + 1)
+        ]
+        return b, c
+
+
+@pytest.fixture(scope="module")
+def example_exact():
+    return exact_conical(*EXAMPLE, method="quad"), exact_conical(*EXAMPLE, method="ode")
+
+
+@pytest.fixture(scope="module")
+def example_reference():
+    return mp_mean_motions(*EXAMPLE), mp_fourier(*EXAMPLE)
+
+
+@pytest.fixture(scope="module")
+def rows():
+    return {r.id: r for r in evaluate_paper("tisserand")}
+
+
+# ------------------------------------------------------------ the claims
+
+
+def test_every_claim_has_an_expectation():
+    assert {c.id for c in CLAIMS} == set(EXPECTED)
+
+
+@pytest.mark.parametrize("claim", CLAIMS, ids=[c.id for c in CLAIMS])
+def test_claim_verdicts(claim, rows):
+    series_verdict, exact_verdict = EXPECTED[claim.id]
+    row = rows[claim.id]
+    assert row.verdict == series_verdict
+    if exact_verdict is None:
+        assert row.exact is None
+    else:  # the disagreement of the exact motion with the printed value, asserted as such
+        assert judge(claim.number, row.exact, claim.comparison).verdict == exact_verdict
+
+
+def test_example_exact_matches_mpmath(example_exact, example_reference):
+    quad, _ = example_exact
+    (k1, omega), (b, c) = example_reference
+    assert quad.k1 == pytest.approx(k1, rel=1e-14)
+    assert quad.precession == pytest.approx(omega, rel=1e-13)
+    for got, want in zip(quad.psi_coeffs[:2] + quad.phi_coeffs[:2], b + c, strict=True):
+        assert got == pytest.approx(want, abs=1e-15)
+
+
+def test_two_exact_methods_agree(example_exact):
+    quad, ode = example_exact
+    assert ode.k1 == pytest.approx(quad.k1, rel=1e-10)
+    assert ode.k2 == pytest.approx(quad.k2, rel=1e-10)
+    assert ode.precession == pytest.approx(quad.precession, rel=1e-10)
+    for a, b in zip(
+        quad.psi_coeffs + quad.phi_coeffs, ode.psi_coeffs + ode.phi_coeffs, strict=True
+    ):
+        assert abs(a - b) < 1e-10  # radians
+
+
+@pytest.mark.parametrize("angles", [(0.4, 0.1), (1.2, 0.9), (0.05, 0.03)])
+def test_quadrature_against_mpmath_elsewhere(angles):
+    quad = exact_conical(*angles)
+    k1, omega = mp_mean_motions(*angles)
+    b, c = mp_fourier(*angles, harmonics=1, dps=25)
+    assert quad.k1 == pytest.approx(k1, rel=1e-14)
+    assert quad.precession == pytest.approx(omega, rel=1e-12)
+    assert quad.psi_coeffs[0] == pytest.approx(b[0], rel=1e-11, abs=1e-16)
+    assert quad.phi_coeffs[0] == pytest.approx(c[0], rel=1e-11, abs=1e-16)
+
+
+def test_resal_rate_is_the_small_amplitude_limit():
+    # The exact Ω/(u0 u1) at 10⁻⁴ rad, at 40 digits from (1)-(2): within O(u²) of 3/8.
+    _, omega = mp_mean_motions(2e-4, 1e-4)
+    assert omega / (math.sin(2e-4) * math.sin(1e-4)) == pytest.approx(
+        tisserand.resal_rate_limit(), abs=1e-7
+    )
+    assert tisserand.resal_rate_limit() == pytest.approx(3 / 8, abs=1e-15)
+
+
+# ------------------------------------------------------------ the reading of the units
+
+
+def test_degree_reading_is_the_one_the_printed_values_support():
+    minutes, degrees = tisserand.reading_evidence()
+    printed = {c.id: c for c in CLAIMS}
+    pairs = [
+        ("tisserand.example.psi_sin2", "b1"),
+        ("tisserand.example.psi_sin4", "b2"),
+        ("tisserand.example.phi_sin2", "c1"),
+    ]
+    for claim_id, field in pairs:
+        number = printed[claim_id].number
+        assert judge(number, math.degrees(getattr(degrees, field))).verdict == "agrees"
+        assert judge(number, math.degrees(getattr(minutes, field))).verdict == "discrepant"
+
+
+def test_second_order_term_alone_under_both_readings():
+    # The brief's check, (3/32)(u0² - u1²) in arc with mpmath: 58'59'' with degrees (near the
+    # printed 1°7'33'', the fourth-order term supplies the rest), about 1.1'' with minutes.
+    def term_arcsec(unit):
+        e = mpmath.sin(30 * unit) ** 2 - mpmath.sin(15 * unit) ** 2
+        return float(mpmath.mpf(3) / 32 * e * 180 * 3600 / mpmath.pi)
+
+    assert term_arcsec(mpmath.pi / 180) == pytest.approx(58 * 60 + 59, abs=0.5)
+    assert term_arcsec(mpmath.pi / 10800) == pytest.approx(1.1, abs=0.05)
+
+
+# ------------------------------------------------------------ the series
+
+
+def test_sin4_coefficient_1_over_4096_not_35_over_4096():
+    # Against the exact motion the explicit sin 4k't coefficient behaves like 1/4096;
+    # 35/4096 (the implicit form's value) leaves a fourth-order residual: a disagreement.
+    residual_1, residual_35 = [], []
+    for eps in (0.1, 0.05):
+        m = exact_conical(eps, eps / 2)
+        e2 = (math.sin(eps) ** 2 - math.sin(eps / 2) ** 2) ** 2
+        residual_1.append(abs(m.psi_coeffs[1] - e2 / 4096))
+        residual_35.append(abs(m.psi_coeffs[1] - 35 * e2 / 4096))
+    assert math.log2(residual_1[0] / residual_1[1]) == pytest.approx(6, abs=0.2)
+    assert math.log2(residual_35[0] / residual_35[1]) == pytest.approx(4, abs=0.2)
+
+
+# Each printed series of the summary, truncated after degree n, must leave a residual of
+# degree n + 2 against the exact motion (θ0 = ε, θ1 = ε/2): (I) k' to u⁶, k'' to u⁴, (II) and
+# (V) to u⁴, Resal (order 0) to u².
+SERIES_TERMS = {
+    "I k'": (8, lambda s, x: (s.k1 - x.k1) / x.k1),
+    "I k''/k'": (6, lambda s, x: s.k2 / s.k1 - x.k2 / x.k1),
+    "II sin 2k't": (6, lambda s, x: s.psi_coeffs[0] - x.psi_coeffs[0]),
+    "II sin 4k't": (6, lambda s, x: s.psi_coeffs[1] - x.psi_coeffs[1]),
+    "V sin 2k't": (6, lambda s, x: s.phi_coeffs[0] - x.phi_coeffs[0]),
+}
+
+
+@pytest.mark.parametrize("term", SERIES_TERMS, ids=list(SERIES_TERMS))
+def test_printed_series_residual_order(term):
+    claimed, residual = SERIES_TERMS[term]
+    values = []
+    for eps in (0.1, 0.05):
+        values.append(
+            abs(residual(tisserand.series_conical(eps, eps / 2, 6), exact_conical(eps, eps / 2)))
+        )
+    assert math.log2(values[0] / values[1]) == pytest.approx(claimed, abs=0.25)
+
+
+def test_resal_first_approximation_residual_order():
+    values = []
+    for eps in (0.1, 0.05):
+        s0, x = tisserand.series_conical(eps, eps / 2, 0), exact_conical(eps, eps / 2)
+        values.append(abs(s0.precession - x.precession))
+    assert math.log2(values[0] / values[1]) == pytest.approx(4, abs=0.25)
+
+
+def test_implicit_form_before_13_has_35_over_4096():
+    # ψ = k't - a sin 2ψ - b sin 4ψ: the implicit form's b is 35/4096 (u0²-u1²)², as printed.
+    from pendcli.spherical import implicit_psi_coeffs
+
+    values = []
+    for eps in (0.1, 0.05):
+        e = math.sin(eps) ** 2 - math.sin(eps / 2) ** 2
+        values.append(abs(implicit_psi_coeffs(eps, eps / 2)[1] - 35 * e * e / 4096))
+    assert math.log2(values[0] / values[1]) == pytest.approx(6, abs=0.25)
+
+
+@pytest.mark.parametrize("order", [0, 2, 4, 6])
+def test_series_error_shrinks_with_order(order):
+    theta0, theta1 = 0.2, 0.1
+    exact = exact_conical(theta0, theta1)
+    s = tisserand.series_conical(theta0, theta1, order)
+    u = math.sin(theta0)
+    # k' to order n is wrong by O(u^(n+2)); u^(n+2) with a generous constant
+    assert abs(s.k1 - exact.k1) < u ** (order + 2)
+
+
+def test_series_conical_rejects_bad_order():
+    with pytest.raises(PendcliError, match="order"):
+        tisserand.series_conical(0.2, 0.1, 3)
+
+
+# ------------------------------------------------------------ input parsing
+
+
+@pytest.mark.parametrize(
+    ("text", "degrees"),
+    [
+        ("30'", 0.5),
+        ("30arcmin", 0.5),
+        ("30deg", 30.0),
+        ("30°", 30.0),
+        ("1800arcsec", 0.5),
+        ("1°7'33''", 1 + 7 / 60 + 33 / 3600),
+        ("0,5deg", 0.5),
+    ],
+)
+def test_parse_angle(text, degrees):
+    assert math.degrees(tisserand.parse_angle(text)) == pytest.approx(degrees, rel=1e-15)
+
+
+def test_parse_angle_rad():
+    assert tisserand.parse_angle("0.52rad") == 0.52
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [("30", "no unit"), ("30km", "unknown unit"), ("", "empty"), ("abc", "not an angle")],
+)
+def test_parse_angle_errors(text, message):
+    with pytest.raises(PendcliError, match=message):
+        tisserand.parse_angle(text)
+
+
+@pytest.mark.parametrize(
+    ("theta0", "theta1", "message"),
+    [
+        ("90deg", "10deg", "0 < theta0 < 90"),
+        ("0deg", "0deg", "0 < theta0"),
+        ("10deg", "11deg", "theta1"),
+    ],
+)
+def test_amplitude_ranges(theta0, theta1, message):
+    with pytest.raises(PendcliError, match=message):
+        tisserand.amplitudes(theta0, theta1)
+
+
+# ------------------------------------------------------------ CLI and figures
+
+
+@pytest.fixture
+def runner():
+    return CliRunner()
+
+
+@pytest.mark.parametrize("fmt", ["table", "json", "csv", "markdown"])
+def test_cli_example_formats(runner, fmt):
+    from pendcli.cli.main import app
+
+    result = runner.invoke(app, ["tisserand", "example", "--format", fmt], env={"COLUMNS": "200"})
+    assert result.exit_code == 0, result.output
+    assert "-1°7'33''" in result.output  # the printed value, in every format
+    assert "np.float" not in result.output  # plain floats only
+
+
+def test_cli_claims_json(runner):
+    import json
+
+    from pendcli.cli.main import app
+
+    result = runner.invoke(app, ["tisserand", "claims", "--format", "json"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.output)
+    assert {r["id"] for r in doc["claims"]} == set(EXPECTED)
+    assert [r["reading"] for r in doc["readings"]] == ["as printed (arcmin)", "degrees"]
+
+
+def test_cli_series_json(runner):
+    import json
+
+    from pendcli.cli.main import app
+
+    result = runner.invoke(app, ["tisserand", "series", "--format", "json", "--ratio", "0.25"])
+    assert result.exit_code == 0, result.output
+    rows = json.loads(result.output)["series"]
+    assert all(r["theta1_deg"] == pytest.approx(0.25 * r["theta0_deg"]) for r in rows)
+
+
+def test_cli_bad_unit_is_one_line_exit_2():
+    proc = subprocess.run(
+        [sys.executable, "-m", "pendcli", "tisserand", "example", "--theta0", "30"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert proc.returncode == 2
+    assert proc.stderr.count("\n") == 1
+    assert "no unit" in proc.stderr and "30deg" in proc.stderr
+
+
+def test_figures(tmp_path):
+    paths = tisserand.figures(tmp_path)
+    assert [p.name for p in paths] == ["tisserand_path.png", "tisserand_series_error.png"]
+    for p in paths:
+        assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        assert p.stat().st_size > 10_000
+
+
+def test_example_rows_published_only_for_the_example():
+    rows = tisserand.example_rows(*EXAMPLE)
+    assert [r["published"] for r in rows if r["published"]] == [
+        "-1°7'33''",
+        "2''",
+        "2'42''",
+        "<= 1/5",
+    ]
+    other = tisserand.example_rows(math.radians(20), math.radians(10))
+    assert not any(r["published"] for r in other)
+    assert parse_printed("2'42''").value == pytest.approx(2 / 60 + 42 / 3600)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        ({"method": "euler"}, "method"),
+        ({"rtol": 1e-20}, "rtol"),
+        ({"harmonics": 0}, "harmonics"),
+    ],
+)
+def test_exact_conical_rejects_bad_options(kwargs, message):
+    with pytest.raises(PendcliError, match=message):
+        exact_conical(0.3, 0.1, **kwargs)
+
+
+def test_cli_bad_plot_path_is_refused_before_computing(runner, tmp_path):
+    from pendcli.cli.main import app
+
+    result = runner.invoke(app, ["tisserand", "series", "--plot", str(tmp_path / "x.txt")])
+    assert isinstance(result.exception, PendcliError)
+    assert ".png" in str(result.exception)
+
+
+def test_cli_example_plot(runner, tmp_path):
+    from pendcli.cli.main import app
+
+    out = tmp_path / "path.png"
+    args = ["tisserand", "example", "--theta0", "20deg", "--theta1", "600arcmin"]
+    result = runner.invoke(app, [*args, "--format", "json", "--plot", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.parametrize("angles", [EXAMPLE, (0.4, 0.1), (1.2, 0.9), (1.5, 1.5)])
+def test_elliptic_method_against_mpmath(angles):
+    m = exact_conical(*angles, method="elliptic")
+    k1, omega = mp_mean_motions(*angles)
+    assert m.k1 == pytest.approx(k1, rel=1e-14)
+    # Ω = (Δφ - π)/π cancels log10(1/(u0 u1)) digits: allow that.
+    assert m.precession == pytest.approx(
+        omega, rel=1e-14 / (math.sin(angles[0]) * math.sin(angles[1]))
+    )
+    assert m.psi_coeffs == () and m.phi_coeffs == ()
