@@ -31,6 +31,7 @@ class Column:
     header: str
     fmt: Callable[[dict], str] | None = None  # text for table/markdown; default str(value)
     justify: str = "left"
+    table_max: int | None = None  # in the terminal table only, cut longer text with "…"
 
     def text(self, row: dict) -> str:
         if self.fmt is not None:
@@ -123,6 +124,8 @@ def to_rich_table(rows: Sequence[dict], columns: Sequence[Column], title: str | 
         cells = []
         for c in columns:
             text = c.text(r)
+            if c.table_max is not None and len(text) > c.table_max:
+                text = text[: c.table_max - 1].rstrip() + "…"
             style = VERDICT_STYLES.get(text) if c.key == "verdict" else None
             cells.append(f"[{style}]{text}[/]" if style else _escape(text))
         table.add_row(*cells)

@@ -130,7 +130,10 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
             figures += list(module.figures(out / "figures" / key))
         fmodule = _module(f"pendcli.formulas.{key}")
         if fmodule is not None and hasattr(fmodule, "figures"):
-            figures += list(fmodule.figures(out / "figures" / key / "formulas"))
+            # pass the rows already computed so the checks do not run twice
+            figures += list(
+                fmodule.figures(out / "figures" / key / "formulas", result.formulas.get(key))
+            )
         if figures:
             lines += ["### Figures", ""]
             for fig in figures:

@@ -58,7 +58,9 @@ CLAIM_COLUMNS = (
     Column("unit", "unit"),
     Column("rel_diff", "rel. diff", fmt=_rel, justify="right"),
     Column("verdict", "verdict"),
-    Column("note", "note"),
+    # Notes can run to paragraphs: the terminal table shows their start, JSON, CSV, Markdown
+    # and the report show them whole.
+    Column("note", "note", table_max=160),
 )
 
 FORMULA_COLUMNS = (
@@ -74,7 +76,7 @@ FORMULA_COLUMNS = (
         justify="right",
     ),
     Column("verdict", "verdict"),
-    Column("note", "note"),
+    Column("note", "note", table_max=160),
 )
 
 

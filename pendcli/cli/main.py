@@ -33,7 +33,7 @@ app = typer.Typer(
 app.add_typer(tisserand_cli.app, name="tisserand")
 app.add_typer(lecornu_cli.app, name="lecornu")
 app.add_typer(charbonnier_cli.app, name="charbonnier")
-app.add_typer(formulas_cli.app, name="formulas")
+app.command("formulas")(formulas_cli.formulas)
 app.add_typer(tradeoff_cli.app, name="tradeoff")
 
 PaperOption = Annotated[
@@ -142,9 +142,9 @@ def run() -> None:
         _fail(exc.format_message().replace("\n", " "), 2)
     except click_exceptions.ClickException as exc:
         _fail(exc.format_message().replace("\n", " "), 2)
-    except (typer.Abort, click_exceptions.Abort, KeyboardInterrupt):
+    except (typer.Abort, KeyboardInterrupt):
         _fail("aborted", 130)
-    except (typer.Exit, click_exceptions.Exit) as exc:
+    except typer.Exit as exc:
         sys.exit(exc.exit_code)
     except BrokenPipeError:
         sys.exit(0)

@@ -1,0 +1,359 @@
+"""Shared machinery for the derived-formula checks: residual studies, order fit, verdict.
+
+A derived formula of a paper is a truncated series in a small parameter ``p`` (several
+parameters are reduced to one by a fixed ray, e.g. θ1 = θ0/2). It is checked by computing
+the quantity from a numerical solution of the paper's own governing equation (the
+*reference*) at a few values of ``p`` and forming the residual = reference − formula.
+
+Conventions (stated in every row's note):
+
+* ``claimed_order`` is the exponent of the residual the paper's derivation implies: a formula
+  correct through p² has a residual O(p³), so claimed_order = 3. For a coefficient (e.g. the
+  coefficient of sin 2k't in a series) the residual is that of the coefficient itself.
+* ``observed_order`` is the least-squares slope of log|residual| against log p.
+* verdict ``holds`` when the observed order is at least the claimed order minus
+  :data:`ORDER_TOLERANCE` AND every residual used is at least :data:`FLOOR_FACTOR` times the
+  reference's error bound (otherwise the slope would measure the reference, not the formula);
+  a formula whose residual sits at the reference's error level at every point is exact in the
+  model and also ``holds``. Anything else ``fails``.
+* Where a formula fails, the leading residual coefficient is fitted (Richardson on the two
+  smallest parameters) and recognised as a small rational times a power of π
+  (:func:`identify`), which gives the corrected term.
+
+The reference is scipy's ``solve_ivp`` (DOP853 at rtol 1e-12 by default, see
+:class:`Reference`); the tests re-run every study with a second method (Radau, or DOP853 at a
+tighter tolerance) and check the residuals do not move beyond the stated error bound.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+
+import numpy as np
+
+from pendcli.claims import FormulaRow
+
+__all__ = [
+    "DEFAULT_REFERENCE",
+    "DENOMINATORS",
+    "FLOOR_FACTOR",
+    "ORDER_TOLERANCE",
+    "Reference",
+    "Study",
+    "crossings",
+    "extrapolate_to_zero",
+    "fit_basis",
+    "fit_order",
+    "identify",
+    "identify_combination",
+    "judge",
+    "leading_coefficient",
+    "make_row",
+    "plot_studies",
+]
+
+ORDER_TOLERANCE = 0.3  # |observed − claimed| allowed below the claim; above it is "better"
+# Denominators the papers' series use: powers of two, and three times powers of two.
+DENOMINATORS = tuple(sorted({2**j * m for j in range(15) for m in (1, 3)}))
+FLOOR_FACTOR = 10.0  # a residual must exceed the reference's error bound this many times
+
+
+@dataclass(frozen=True)
+class Reference:
+    """How the governing equation is integrated (scipy.integrate.solve_ivp)."""
+
+    method: str = "DOP853"
+    rtol: float = 1e-12
+    atol: float = 1e-14
+
+    @property
+    def error_bound(self) -> float:
+        """A bound on the reference's error relative to the solution's scale.
+
+        Global error of a tolerance-controlled solver over a few oscillations stays within
+        a few tens of times rtol; the tests measure it (second method) against this bound.
+        """
+        return 100.0 * max(self.rtol, self.atol)
+
+    def solve(self, rhs: Callable, t_end: float, y0: Sequence[float], t0: float = 0.0):
+        """Integrate y' = rhs(t, y) from t0 to t_end with dense output (the OdeSolution)."""
+        from scipy.integrate import solve_ivp
+
+        sol = solve_ivp(
+            rhs,
+            (t0, t_end),
+            np.asarray(y0, dtype=float),
+            method=self.method,
+            rtol=self.rtol,
+            atol=self.atol,
+            dense_output=True,
+        )
+        if not sol.success:  # pragma: no cover - the systems here are smooth and short
+            raise RuntimeError(f"reference integration failed: {sol.message}")
+        return sol.sol
+
+    @property
+    def label(self) -> str:
+        return f"solve_ivp {self.method}, rtol {self.rtol:.0e}, atol {self.atol:.0e}"
+
+
+DEFAULT_REFERENCE = Reference()
+
+
+def crossings(sol, component: int, t0: float, t1: float, count: int, grid: int = 400) -> list:
+    """The first ``count`` zeros of one component of a dense solution in (t0, t1]."""
+    from scipy.optimize import brentq
+
+    ts = np.linspace(t0, t1, grid)
+    ys = sol(ts)[component]
+    out = []
+    for i in range(1, grid):
+        if ys[i - 1] == 0.0 or ys[i - 1] * ys[i] > 0.0:
+            continue
+        out.append(brentq(lambda t: sol(t)[component], ts[i - 1], ts[i], xtol=1e-15, rtol=1e-15))
+        if len(out) == count:
+            break
+    if len(out) < count:  # pragma: no cover - windows are chosen to contain the events
+        raise RuntimeError(f"found {len(out)} of {count} zeros of component {component}")
+    return out
+
+
+@dataclass(frozen=True)
+class Study:
+    """Residuals of one formula at several values of its small parameter."""
+
+    parameter: str  # what p is, e.g. "p = b/√(ga)"
+    params: tuple[float, ...]
+    residuals: tuple[float, ...]  # signed: reference − formula
+    claimed_order: float | None
+    floor: float  # the reference's error bound in the residual's units
+
+    def pairs(self) -> tuple[tuple[float, float], ...]:
+        return tuple(
+            (float(p), float(abs(r))) for p, r in zip(self.params, self.residuals, strict=True)
+        )
+
+
+def fit_order(params: Sequence[float], residuals: Sequence[float]) -> float | None:
+    """Least-squares slope of log|r| against log p (None with fewer than 2 usable points)."""
+    pts = [
+        (math.log(p), math.log(abs(r))) for p, r in zip(params, residuals, strict=True) if r != 0
+    ]
+    if len(pts) < 2:
+        return None
+    x = np.array([a for a, _ in pts])
+    y = np.array([b for _, b in pts])
+    return float(np.polyfit(x, y, 1)[0])
+
+
+def judge(study: Study) -> tuple[str, float | None, str]:
+    """(verdict, observed order, reason) by the rule in the module docstring."""
+    above = [
+        (p, r)
+        for p, r in zip(study.params, study.residuals, strict=True)
+        if abs(r) > FLOOR_FACTOR * study.floor
+    ]
+    if not above:
+        return (
+            "holds",
+            None,
+            f"residual within {FLOOR_FACTOR:g}× the reference's error bound "
+            f"({study.floor:.1e}) at every point: exact in this model",
+        )
+    if study.claimed_order is None:  # an identity: it must hold to the reference's precision
+        return "fails", None, "residual far above the reference's error: the identity is false"
+    if len(above) < 3:
+        return (
+            "fails",
+            fit_order(study.params, study.residuals),
+            "too few residuals above the reference's error to fit an order",
+        )
+    observed = fit_order([p for p, _ in above], [r for _, r in above])
+    used = "" if len(above) == len(study.params) else f" (fit on {len(above)} points)"
+    if observed >= study.claimed_order - ORDER_TOLERANCE:
+        faster = (
+            "; vanishes faster than claimed"
+            if observed > study.claimed_order + ORDER_TOLERANCE + 0.4
+            else ""
+        )
+        return "holds", observed, f"observed order ≥ claimed − {ORDER_TOLERANCE}{faster}{used}"
+    return (
+        "fails",
+        observed,
+        f"observed order {observed:.2f} < claimed {study.claimed_order:g} − "
+        f"{ORDER_TOLERANCE}{used}",
+    )
+
+
+def leading_coefficient(
+    params: Sequence[float], residuals: Sequence[float], order: int, step: int = 1
+):
+    """c in residual ≈ c·p^order (1 + d·p^step), by Richardson on the two smallest parameters.
+
+    ``residuals`` may hold arrays (a coefficient function sampled on a grid).
+    """
+    pairs = sorted(zip(params, residuals, strict=True), key=lambda pr: pr[0])[:2]
+    (p1, r1), (p2, r2) = pairs
+    c1, c2 = np.asarray(r1) / p1**order, np.asarray(r2) / p2**order
+    w1, w2 = p1**step, p2**step
+    out = (c1 * w2 - c2 * w1) / (w2 - w1)
+    return float(out) if np.ndim(out) == 0 else out
+
+
+def extrapolate_to_zero(
+    params: Sequence[float], values: Sequence[float], step: int = 1, degree: int = 3
+) -> float:
+    """The value at p = 0 of a polynomial in p^step fitted to (p, value) (all points)."""
+    x = np.asarray(params, dtype=float) ** step
+    deg = min(degree, len(x) - 1)
+    return float(np.polyval(np.polyfit(x, np.asarray(values, dtype=float), deg), 0.0))
+
+
+def fit_basis(grid: np.ndarray, values: np.ndarray, basis: dict[str, Callable]) -> dict:
+    """Least-squares coefficients of values on named functions of the grid."""
+    names = list(basis)
+    mat = np.stack([basis[n](grid) for n in names], axis=1)
+    coef, *_ = np.linalg.lstsq(mat, values, rcond=None)
+    return dict(zip(names, (float(c) for c in coef), strict=True))
+
+
+def identify_combination(
+    value: float, terms: Sequence[tuple[float, str]], denominators=DENOMINATORS[:14]
+) -> str | None:
+    """Recognise value as (n1·term1 + n2·term2)/d with integers |n_i| <= 200, or None."""
+    best = None
+    (a, na), (b, nb) = terms
+    for d in denominators:
+        for n1 in range(-200, 201):
+            n2 = round((value * d - n1 * a) / b)
+            err = abs((n1 * a + n2 * b) / d - value)
+            ok = abs(n2) <= 200 and err < 2e-5 * max(abs(value), 1e-300)
+            if ok and (best is None or err < best[3]):
+                best = (d, n1, n2, err)
+        if best is not None:
+            break
+    if best is None:
+        return None
+    d, n1, n2, _ = best
+    terms_out = [(n, name) for n, name in ((n1, na), (n2, nb)) if n]
+    terms_out.sort(key=lambda t: t[0] < 0)  # a positive term first
+    text = ""
+    for n, name in terms_out:
+        mag = str(abs(n)) if (abs(n) != 1 or not name) else ""
+        sign = "−" if n < 0 else "+"
+        text += (f" {sign} " if text else ("−" if n < 0 else "")) + mag + name
+    text = text or "0"
+    return f"({text})/{d}" if d != 1 else text
+
+
+_PI_POWERS = ((0, 1.0, ""), (1, math.pi, "π"), (2, math.pi**2, "π²"), (3, math.pi**3, "π³"))
+
+
+def identify(value: float, rel: float = 2e-5, max_den: int = 16384) -> str | None:
+    """Recognise value as (n/d)·π^k, d a power of two (or 3×), |n| <= 4000, or None.
+
+    The smallest such d within ``rel`` wins; a value fitted to ~1e-6 is thus recognised
+    only if it sits on one of a few thousand candidates, not on any nearby fraction.
+    """
+    best = None
+    for d in DENOMINATORS:
+        if d > max_den:
+            break
+        for _k, power, name in _PI_POWERS:
+            n = round(value * d / power)
+            if n == 0 or abs(n) > 4000:
+                continue
+            err = abs(n / d * power - value) / abs(value)
+            if err < rel and (best is None or err < best[3]):
+                best = (n, d, name, err)
+        if best is not None:
+            break
+    if best is None:
+        return None
+    n, d, name, _ = best
+    q = Fraction(n, d)
+    text = f"{q.numerator}" if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+    return f"{text}{'·' + name if name else ''}"
+
+
+def make_row(
+    *,
+    id: str,
+    paper: str,
+    source: str,
+    published: str,
+    study: Study,
+    reference: str,
+    recomputed: str | None = None,
+    note: str = "",
+    verdict_override: tuple[str, str] | None = None,
+) -> FormulaRow:
+    """A FormulaRow from a study: verdict, observed order and the convention in the note."""
+    verdict, observed, reason = judge(study)
+    if verdict_override is not None:
+        verdict, reason = verdict_override
+    convention = (
+        f"Residual = reference − formula over {study.parameter} (claimed order: its exponent; "
+        f"holds iff observed ≥ claimed − {ORDER_TOLERANCE} and residuals ≥ {FLOOR_FACTOR:g}× "
+        f"the reference error {study.floor:.0e}). Reference: {reference}."
+    )
+    text = " ".join(t for t in (note, f"Verdict: {reason}.", convention) if t)
+    return FormulaRow(
+        id=id,
+        paper=paper,
+        source=source,
+        published=published,
+        recomputed=recomputed if recomputed is not None else published,
+        verdict=verdict,
+        claimed_order=study.claimed_order,
+        observed_order=observed,
+        note=text,
+        residuals=study.pairs(),
+    )
+
+
+def plot_studies(path, rows: Sequence[FormulaRow], title: str, ncols: int = 4) -> None:
+    """One log-log panel per row: |residual| against parameter, claimed slope drawn.
+
+    Identity checks (no claimed order) have no parameter to shrink and are not drawn.
+    """
+    from matplotlib.ticker import LogLocator, NullFormatter, NullLocator
+
+    from pendcli.plotting import new_figure
+
+    rows = [r for r in rows if r.residuals and r.claimed_order is not None]
+    if not rows:
+        return
+    nrows = math.ceil(len(rows) / ncols)
+    with new_figure(path, nrows=nrows, ncols=ncols, size=(3.3 * ncols, 2.8 * nrows)) as (
+        _fig,
+        axes,
+    ):
+        flat = list(np.ravel(axes))
+        for ax, row in zip(flat, rows, strict=False):  # more panels than rows
+            ps = np.array([p for p, _ in row.residuals])
+            rs = np.array([r for _, r in row.residuals])
+            positive = rs > 0
+            color = "tab:green" if row.verdict == "holds" else "tab:red"
+            ax.loglog(ps[positive], rs[positive], "o-", color=color, ms=4, label="|residual|")
+            if row.claimed_order is not None and positive.any():
+                i = int(np.argmin(np.where(positive, ps, np.inf)))
+                line = rs[i] * (ps / ps[i]) ** row.claimed_order
+                ax.loglog(ps, line, "--", color="gray", lw=1, label=f"slope {row.claimed_order:g}")
+            obs = "" if row.observed_order is None else f", observed {row.observed_order:.2f}"
+            ax.set_title(f"{row.id.split('.', 1)[1]} {row.source}\n{row.verdict}{obs}", fontsize=8)
+            ax.set_xlabel("small parameter (see note)", fontsize=7)
+            # Minor log ticks over many decades make tight_layout take seconds: majors only.
+            for axis in (ax.xaxis, ax.yaxis):
+                axis.set_major_locator(LogLocator(numticks=6))
+                axis.set_minor_locator(NullLocator())
+                axis.set_minor_formatter(NullFormatter())
+            ax.tick_params(labelsize=7)
+            ax.grid(True, alpha=0.3)
+            ax.legend(fontsize=6)
+        for ax in flat[len(rows) :]:
+            ax.set_visible(False)
+        flat[0].set_title(f"{title}\n{flat[0].get_title()}", fontsize=8)
