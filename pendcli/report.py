@@ -10,7 +10,6 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import platform
-import sys
 from pathlib import Path
 
 from pendcli.errors import PendcliError
@@ -173,7 +172,7 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
         "## Environment",
         "",
         to_markdown(env, [Column("item", "item"), Column("version", "version")]),
-        f"Command: `pendcli reproduce --out {out.as_posix()}` ({sys.implementation.name}).",
+        "Made by `pendcli reproduce --out DIR` (`make reproduce`).",
         "",
     ]
     write("report.md", "\n".join(lines))
