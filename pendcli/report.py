@@ -59,6 +59,31 @@ def _rel(path: Path, out: Path) -> str:
     return path.resolve().relative_to(out.resolve()).as_posix()
 
 
+def _first_sentence(text: str, limit: int = 220) -> str:
+    text = text.removeprefix("OCR: ")
+    cut = text.find(". ")
+    sentence = text if cut < 0 else text[: cut + 1]
+    return sentence if len(sentence) <= limit else sentence[: limit - 1].rstrip() + "…"
+
+
+def disagreement_digest(result) -> list[str]:
+    """One bullet per printed number that is not `agrees` and per formula that `fails`."""
+    bullets = []
+    for key in result.papers:
+        for r in result.claims.get(key, []):
+            if r.verdict != "agrees":
+                bullets.append(
+                    f"- **{r.id}** ({r.source}): printed `{r.published}`, recomputed "
+                    f"{r.recomputed:.6g}: **{r.verdict}**. {_first_sentence(r.note)}"
+                )
+        for f in result.formulas.get(key, []):
+            if f.verdict != "holds":
+                bullets.append(
+                    f"- **{f.id}** {f.source}: `{f.published}` fails; found `{f.recomputed}`."
+                )
+    return bullets or ["Every printed number and formula holds."]
+
+
 def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
     """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``."""
     from pendcli.regression import regenerated_tables
@@ -105,6 +130,7 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
         row["formulas failing"] = c.get("formula fails", 0)
         summary.append(row)
     lines.append(to_markdown(summary, [Column(k, k) for k in summary[0]]) if summary else "")
+    lines += ["## What does not hold", "", *disagreement_digest(result), ""]
     lines += ["## How verdicts are decided", "", _VERDICT_RULES]
 
     for key in result.papers:
