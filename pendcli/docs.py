@@ -32,16 +32,21 @@ def sample_section() -> str:
         }
         for key in PAPERS
     ]
-    sample = [r.as_dict() for r in result.claims.get("lecornu", [])][:6] or [
-        r.as_dict() for r in result.claims["charbonnier"]
-    ]
+    # One row of each verdict, first in paper order, plus one with an exact-model column.
+    rows = [r.as_dict() for key in PAPERS for r in result.claims[key]]
+    sample, seen = [], set()
+    for row in rows:
+        kind = (row["verdict"], row["exact"] is not None)
+        if kind not in seen:
+            seen.add(kind)
+            sample.append(row)
     columns = [c for c in claim_columns(sample, with_note=False) if c.key != "source"]
     return "\n".join(
         [
             "Verdicts over all three papers (`pendcli reproduce`):",
             "",
             to_markdown(summary, [Column(k, k) for k in summary[0]]),
-            "A few rows of `pendcli reproduce --paper lecornu --format markdown`:",
+            "One row of each verdict from `pendcli reproduce --format markdown` (notes and sources in the report):",
             "",
             to_markdown(sample, columns),
         ]

@@ -18,8 +18,10 @@ def format_like_printed(value: float | None, published: str) -> str:
         printed = parse_printed(published)
     except Exception:
         return fmt_float(value)
-    if printed.kind == "decimal":
-        return f"{value:.{(printed.decimals or 0) + 3}f}"
+    if printed.kind == "decimal" and printed.decimals:
+        return f"{value:.{printed.decimals + 3}f}"
+    if printed.kind == "decimal":  # an integer as printed: a count or a round figure
+        return fmt_float(value)
     if printed.kind == "sexagesimal":
         return sexagesimal(value, seconds_decimals=2)
     return fmt_float(value, 16)
