@@ -46,7 +46,8 @@ def sample_section() -> str:
             "Verdicts over all three papers (`pendcli reproduce`):",
             "",
             to_markdown(summary, [Column(k, k) for k in summary[0]]),
-            "One row of each verdict from `pendcli reproduce --format markdown` (notes and sources in the report):",
+            "One row of each verdict from `pendcli reproduce --format markdown` "
+            "(notes and sources in the report):",
             "",
             to_markdown(sample, columns),
         ]
