@@ -155,7 +155,7 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     from pendcli.console import console
     from pendcli.reproduce import reproduce_all
 
-    folder = (root or tables_dir()) / "regenerated"
+    folder = (root or tables_dir()).resolve() / "regenerated"
     result = reproduce_all(PAPERS, formulas=True, quiet=quiet)
     tables = regenerated_tables(result)
     out = console()

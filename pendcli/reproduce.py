@@ -15,6 +15,7 @@ class ReproduceResult:
     papers: tuple[str, ...]
     claims: dict[str, list[ClaimRow]] = field(default_factory=dict)
     formulas: dict[str, list[FormulaRow]] = field(default_factory=dict)
+    stability: list[dict] = field(default_factory=list)
 
     def claim_dicts(self) -> list[dict]:
         return [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
@@ -23,12 +24,17 @@ class ReproduceResult:
         return [r.as_dict() for key in self.papers for r in self.formulas.get(key, [])]
 
     def document(self) -> dict:
-        return {"claims": self.claim_dicts(), "formulas": self.formula_dicts()}
+        doc: dict = {"claims": self.claim_dicts(), "formulas": self.formula_dicts()}
+        if self.stability:
+            doc["stability"] = self.stability
+        return doc
 
     def sections(self) -> list:
         from pendcli.views import FORMULA_COLUMNS, claim_columns
 
         out = []
+        from pendcli.render import Column
+
         for key in self.papers:
             rows = [r.as_dict() for r in self.claims.get(key, [])]
             if rows:
@@ -36,6 +42,9 @@ class ReproduceResult:
             frows = [r.as_dict() for r in self.formulas.get(key, [])]
             if frows:
                 out.append((f"{key.capitalize()}: derived formulas", frows, FORMULA_COLUMNS))
+        if self.stability:
+            cols = [Column(k, k) for k in self.stability[0]]
+            out.append(("Numerical stability: where each method is accurate", self.stability, cols))
         return out
 
     def verdict_counts(self) -> dict[str, dict[str, int]]:
@@ -51,18 +60,24 @@ class ReproduceResult:
 
 
 def reproduce_all(
-    keys: tuple[str, ...], formulas: bool = True, quiet: bool = True
+    keys: tuple[str, ...], formulas: bool = True, quiet: bool = True, stability: bool = False
 ) -> ReproduceResult:
-    """Evaluate the claims (and, if asked, the formula checks) of each paper in ``keys``."""
+    """Evaluate the claims (and, if asked, the formula checks and the stability measurements)."""
     result = ReproduceResult(papers=keys)
     steps = [(k, "claims") for k in keys] + ([(k, "formulas") for k in keys] if formulas else [])
+    if stability:
+        steps.append(("all", "stability"))
     with _progress(len(steps), quiet) as advance:
         for key, what in steps:
             advance(f"{key}: {what}")
             if what == "claims":
                 result.claims[key] = evaluate_paper(key)
-            else:
+            elif what == "formulas":
                 result.formulas[key] = formula_checks(key)
+            else:
+                from pendcli.stability import stability_rows
+
+                result.stability = stability_rows()
     return result
 
 

@@ -76,6 +76,20 @@ def integral(
     x: Annotated[
         float, typer.Option("--x", help="Upper limit x (real, |x| <= 1e6).")
     ] = 3.141592653589793,
+    tol: Annotated[
+        float | None,
+        typer.Option(
+            "--tol",
+            help="Use the cheapest method whose measured worst relative error is <= TOL "
+            "(tables/tradeoff, see `pendcli tradeoff`).",
+        ),
+    ] = None,
+    method: Annotated[
+        str | None,
+        typer.Option(
+            "--method", help="Force a method of the tradeoff tables (recurrence, quad, ...)."
+        ),
+    ] = None,
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (default π)."""
@@ -84,8 +98,13 @@ def integral(
     from pendcli import charbonnier
     from pendcli.render import Column, fmt_float
 
-    value = charbonnier.integral(n, x)
-    row = {"n": n, "x": x, "value": value, "method": charbonnier.integral_method(n, x)}
+    if method is not None or tol is not None:
+        from pendcli import tradeoff
+
+        value, label = tradeoff.integral_with_choice(n, x, tol=tol, method=method)
+    else:
+        value, label = charbonnier.integral(n, x), charbonnier.integral_method(n, x)
+    row = {"n": n, "x": x, "value": value, "method": label}
     if x == math.pi and -1 <= n <= 100_000:
         q, p = charbonnier.integral_pi_exact(n)
         row["exact"] = charbonnier.exact_text(q, p)

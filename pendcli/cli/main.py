@@ -34,7 +34,7 @@ app.add_typer(tisserand_cli.app, name="tisserand")
 app.add_typer(lecornu_cli.app, name="lecornu")
 app.add_typer(charbonnier_cli.app, name="charbonnier")
 app.command("formulas")(formulas_cli.formulas)
-app.add_typer(tradeoff_cli.app, name="tradeoff")
+app.command("tradeoff")(tradeoff_cli.tradeoff)
 
 PaperOption = Annotated[
     str | None,
@@ -84,6 +84,13 @@ def reproduce(
         bool,
         typer.Option("--formulas/--no-formulas", help="Include the checks of derived formulas."),
     ] = True,
+    stability: Annotated[
+        bool | None,
+        typer.Option(
+            "--stability/--no-stability",
+            help="Include the measured stability table (default: only with --out).",
+        ),
+    ] = None,
     quiet: Annotated[
         bool, typer.Option("--quiet", "-q", help="No progress or status lines.")
     ] = False,
@@ -93,7 +100,12 @@ def reproduce(
     from pendcli.reproduce import reproduce_all
 
     keys = resolve_papers(paper)
-    result = reproduce_all(keys, formulas=formulas, quiet=quiet or fmt is not OutputFormat.table)
+    result = reproduce_all(
+        keys,
+        formulas=formulas,
+        stability=(out is not None) if stability is None else stability,
+        quiet=quiet or fmt is not OutputFormat.table,
+    )
     emit(fmt, result.sections(), result.document())
     if out is not None:
         from pendcli.report import write_report

@@ -1,0 +1,233 @@
+"""Issue 7: Charbonnier's I_n and first-order amplitude loss far outside the printed range.
+
+References are independent of the code under test: I_n(π) = B(½, (n+2)/2) from mpmath's gamma
+functions at 50 digits; I_n(x) from the positive hypergeometric series written out here at 50
+digits (no beta-function code); the amplitude loss from closed forms (n = 0, 1, 2) written
+out here and from direct ODE integration.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath
+import pytest
+
+from pendcli import charbonnier as ch
+from pendcli import charbonnier_resistance as cr
+from pendcli.errors import PendcliError
+
+pytestmark = pytest.mark.extremes
+
+
+def ref_pi(n: int):
+    with mpmath.workdps(50):
+        return (
+            mpmath.gamma(mpmath.mpf(1) / 2)
+            * mpmath.gamma(mpmath.mpf(n + 2) / 2)
+            / (mpmath.gamma(mpmath.mpf(n + 3) / 2))
+        )
+
+
+def series_0_half(n: int, x):
+    """∫_0^x sin^(n+1) = sin^(n+2)x cos x/(n+2) Σ_k Π_(j<k) (n+3+2j)/(n+4+2j) sin^(2k)x."""
+    s, c = mpmath.sin(x), mpmath.cos(x)
+    u = s * s
+    term, total, k = mpmath.mpf(1), mpmath.mpf(0), n + 3
+    tiny = mpmath.mpf(10) ** -55
+    while term > total * tiny:
+        total += term
+        term = term * u * k / (k + 1)
+        k += 2
+    return s ** (n + 2) * c / (n + 2) * total
+
+
+def ref_x(n: int, x: float):
+    """I_n(x) for any real x: reduction mod π and the sign rules done in mpmath."""
+    with mpmath.workdps(60):
+        xm = mpmath.mpf(x)
+        sign = 1
+        if xm < 0:
+            xm, sign = -xm, (1 if n % 2 == 0 else -1)
+        q = int(mpmath.floor(xm / mpmath.pi))
+        r = xm - q * mpmath.pi
+        full = ref_pi(n)
+
+        def base(t):  # ∫_0^t sin^(n+1), 0 <= t <= π
+            return (
+                full - series_0_half(n, mpmath.pi - t)
+                if 2 * t > mpmath.pi
+                else (series_0_half(n, t))
+            )
+
+        if n % 2 == 1:  # even power: every half-period adds I_n(π)
+            value = q * full + base(r)
+        else:  # odd power: half-periods cancel in pairs; the partial one carries (-1)^q
+            value = base(r) if q % 2 == 0 else full - base(r)
+        return sign * value
+
+
+def ulps(value: float, reference) -> float:
+    with mpmath.workdps(60):
+        return float(abs(mpmath.mpf(value) - reference) / math.ulp(float(reference)))
+
+
+N_PI = [-1, 0, 1, 2, 5, 59, 60, 61, 100, 999, 10**4, 10**5, 10**7, 10**9, 10**12]
+
+
+@pytest.mark.parametrize("n", N_PI)
+def test_integral_pi_within_one_ulp_up_to_1e12(n):
+    assert ulps(ch.integral_pi(n), ref_pi(n)) <= 1.0
+
+
+GRID = [
+    (n, x)
+    for n in (1, 10, 100, 1000, 10**4)
+    for x in (1e-3, 0.3, 1.0, 1.4, 2.0, 3.0, 3.14)
+    if not (n == 10**4 and x in (1e-3, 0.3, 1.0, 2.0, 3.0, 3.14))  # underflow / cheap refs
+] + [(5, 1.3), (100, 1.5), (10, 10.0), (11, 10.0), (3, -2.5), (4, -2.5), (50, 1000.0)]
+
+
+@pytest.mark.parametrize(("n", "x"), GRID)
+def test_integral_general_x_within_two_ulp(n, x):
+    reference = ref_x(n, x)
+    if abs(float(reference)) < 1e-290:
+        pytest.skip("reference underflows a double")
+    assert ulps(ch.integral(n, x), reference) <= 2.0
+
+
+def test_rounding_sin2_is_the_loss_and_the_correction_removes_it():
+    """The naive call loses ~a ulp; integral_fast's δ·pdf correction takes most of it back."""
+    from pendcli.tradeoff import _naive_betainc
+
+    n, x = 10**4, 1.4
+    reference = ref_x(n, x)
+    naive = ulps(_naive_betainc(n, x), reference)
+    fast = ulps(ch.integral_fast(n, x), reference)
+    assert naive > 1000  # measured 7e4 ulp
+    assert fast < 50  # what is left is scipy's own betainc error
+    assert ulps(ch.integral(n, x), reference) <= 1.0
+
+
+def test_integral_fast_bounded_on_grid():
+    worst = max(
+        ulps(ch.integral_fast(n, x), ref_x(n, x))
+        for n, x in GRID
+        if 0 <= x <= math.pi and abs(float(ref_x(n, x))) > 1e-290
+    )
+    assert worst < 500  # scipy's betainc at large a; measured up to ~370 ulp at (1000, 0.7)
+
+
+def test_recurrence_exact_at_pi_but_breaks_at_small_x():
+    for n in (1, 10, 1001, 10**5):
+        assert float(abs(ch.integral_recurrence(n, math.pi) - ref_pi(n)) / ref_pi(n)) < 1e-13
+    # at small x it subtracts nearly equal numbers: garbage, not a few lost digits
+    rel = float(abs(ch.integral_recurrence(100, 0.5) - ref_x(100, 0.5)) / ref_x(100, 0.5))
+    assert rel > 1.0
+    rel_ok = float(abs(ch.integral_recurrence(10, 2.0) - ref_x(10, 2.0)) / ref_x(10, 2.0))
+    assert rel_ok < 1e-12
+
+
+def test_printed_products_overflow_as_floats():
+    from pendcli.tradeoff import _products
+
+    assert ulps(_products(150), ref_pi(150)) < 4
+    with pytest.raises(OverflowError):
+        _products(400)
+
+
+def test_scipy_beta_loses_digits_where_integral_pi_does_not():
+    from scipy.special import beta
+
+    n = 10**4
+    scipy_err = float(abs(beta(0.5, (n + 2) / 2) - ref_pi(n)) / ref_pi(n))
+    assert scipy_err > 1e-13  # measured 9e-12 (scipy 1.17)
+    assert ulps(ch.integral_pi(n), ref_pi(n)) <= 1.0
+
+
+@pytest.mark.parametrize(
+    ("n", "x"), [(10**12 + 1, math.pi), (5, math.inf), (5, math.nan), (-2, 1.0), (5, 2e6)]
+)
+def test_out_of_range_is_one_line_error(n, x):
+    with pytest.raises(PendcliError) as info:
+        ch.integral(n, x)
+    assert "\n" not in str(info.value)
+
+
+# --- Charbonnier's first-order amplitude loss (no. 16) -------------------------------------
+
+
+def closed_form_loss(beta: float, n: int):
+    """(α1 - α)/α for y'' + y + β y'^n = 0 over one swing, n = 0, 1, 2 (written out here)."""
+    with mpmath.workdps(40):
+        b = mpmath.mpf(beta)
+        if n == 0:
+            return -2 * b
+        if n == 1:
+            return mpmath.exp(-b * mpmath.pi / (2 * mpmath.sqrt(1 - b * b / 4))) - 1
+        c = -mpmath.exp(-2 * b) * (1 / (2 * b) + 1 / (4 * b * b))
+        y1 = mpmath.findroot(
+            lambda y: c * mpmath.exp(-2 * b * y) - y / (2 * b) + 1 / (4 * b * b), 1 - 4 * b / 3
+        )
+        return y1 - 1
+
+
+@pytest.mark.parametrize("n", [0, 1, 2])
+@pytest.mark.parametrize("beta", [1e-4, 1e-2, 0.3])
+def test_ode_matches_closed_forms(n, beta):
+    ode = cr.relative_loss_ode(beta, n, rtol=1e-12).relative_loss
+    assert ode == pytest.approx(float(closed_form_loss(beta, n)), rel=1e-8)
+
+
+@pytest.mark.parametrize("n", [1, 2])
+def test_first_order_limit_is_where_the_error_reaches_one_percent(n):
+    lim = cr.first_order_limit(n)
+    beta = lim["beta"]
+    exact = closed_form_loss(beta, n)
+    error = float(abs(cr.relative_loss_first_order(beta, n) - exact) / abs(exact))
+    assert error == pytest.approx(0.01, rel=0.02)
+    # and the formula is better than 1% below that β, worse above
+    for factor, below in ((0.5, True), (2.0, False)):
+        b = beta * factor
+        e = float(abs(cr.relative_loss_first_order(b, n) - closed_form_loss(b, n)))
+        assert (e / abs(float(closed_form_loss(b, n))) < 0.01) is below
+
+
+def test_friction_formula_exact_and_limits():
+    assert cr.relative_loss_first_order(0.4, 0) == pytest.approx(-0.8, rel=1e-15)
+    assert cr.relative_loss_ode(0.4, 0, rtol=1e-12).relative_loss == pytest.approx(-0.8, rel=1e-9)
+    with pytest.raises(PendcliError):
+        cr.relative_loss_ode(1.0, 0)
+    with pytest.raises(PendcliError):
+        cr.relative_loss_ode(3.0, 1)  # overdamped: no second elongation
+
+
+def test_physical_formula_matches_dimensionless():
+    """Δα = -(b_n/g)(αgT/π)^n I_n(π) equals -β I_n(π) α with β = b_n v_m^n/(gα)."""
+    g, length, alpha, b2 = 9.81, 0.8, 0.1, 0.02
+    v_m = alpha * math.sqrt(g * length)
+    beta = b2 * v_m**2 / (g * alpha)
+    assert cr.amplitude_loss_first_order(b2, 2, alpha, length, g) == pytest.approx(
+        alpha * cr.relative_loss_first_order(beta, 2), rel=1e-14
+    )
+
+
+@pytest.mark.parametrize(
+    ("n", "x"), [(10**6, 1.5707), (10**9, 1.5707), (10**9, 1.5708), (10**12, 1.5708)]
+)
+def test_huge_n_near_half_pi(n, x):
+    """Beyond the positive series' reach: mpmath's incomplete beta at 80 digits (twice the
+    working precision of the code under test)."""
+    with mpmath.workdps(80):
+        a = mpmath.mpf(n + 2) / 2
+        part = mpmath.betainc(a, 0.5, 0, mpmath.sin(mpmath.mpf(x)) ** 2) / 2
+        reference = part if 2 * x <= math.pi else mpmath.beta(a, 0.5) - part
+    assert ulps(ch.integral(n, x), reference) <= 1.0
+
+
+def test_underflow_and_negligible_tail_are_exact():
+    """I_n(x) below half the smallest subnormal is 0; a tail below 1e-20 leaves I_n(π)."""
+    assert ch.integral(10**5, 1.0) == 0.0
+    assert ch.integral(10**12, 1.5707) == 0.0  # sin^(n+1) < 1e-700 there
+    for n in (10**5, 10**12):
+        assert ch.integral(n, 2.0) == ch.integral_pi(n)
