@@ -7,9 +7,6 @@ floats written with ``repr`` in JSON and CSV so they round-trip exactly).
 
 from __future__ import annotations
 
-import csv
-import io
-import json
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -81,10 +78,15 @@ def _plain(value: object) -> object:
 
 def to_json(document: dict) -> str:
     """Deterministic JSON (NaN/inf become null: JSON has no such numbers)."""
+    import json
+
     return json.dumps(_plain(document), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 
 def to_csv(rows: Sequence[dict], keys: Sequence[str] | None = None) -> str:
+    import csv
+    import io
+
     keys = list(keys or (rows[0].keys() if rows else []))
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
@@ -98,6 +100,8 @@ def _csv_cell(value: object) -> str:
     if isinstance(value, float):
         return repr(value) if math.isfinite(value) else ""
     if isinstance(value, (list, tuple)):
+        import json
+
         return json.dumps(_plain(value))
     return str(value)
 

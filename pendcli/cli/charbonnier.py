@@ -10,7 +10,10 @@ from pendcli.cli.common import FormatOption, PlotOption, emit
 from pendcli.render import OutputFormat
 
 app = typer.Typer(
-    help="Charbonnier 1908: perturbations, the table of I_n(π).", no_args_is_help=True
+    help="Charbonnier 1908: perturbations, the table of I_n(π).",
+    no_args_is_help=True,
+    add_completion=False,
+    rich_markup_mode=None,
 )
 
 

@@ -12,6 +12,8 @@ from pendcli.render import OutputFormat
 app = typer.Typer(
     help="Lecornu: the pendulum of variable length (Bessel zeros, the 0,35 m/s example).",
     no_args_is_help=True,
+    add_completion=False,
+    rich_markup_mode=None,
 )
 
 SpeedOption = Annotated[

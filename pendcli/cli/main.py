@@ -2,22 +2,86 @@
 
 from __future__ import annotations
 
+import importlib
 import os
 import sys
 from pathlib import Path
 from typing import Annotated
 
 import typer
+from typer.core import TyperGroup
 
-from pendcli.cli import charbonnier as charbonnier_cli
-from pendcli.cli import formulas as formulas_cli
-from pendcli.cli import lecornu as lecornu_cli
-from pendcli.cli import tisserand as tisserand_cli
-from pendcli.cli import tradeoff as tradeoff_cli
 from pendcli.cli.common import FormatOption, emit
 from pendcli.render import OutputFormat
 
+# Subcommands whose modules load only when named: `pendcli --help` then costs neither their
+# imports nor typer's conversion of their parameters (about half of start-up otherwise).
+# name -> (module, attribute: a Typer sub-app or a command function, short help for --help)
+LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
+    "tisserand": (
+        "pendcli.cli.tisserand",
+        "app",
+        "Tisserand 1881: the conical pendulum, the example, series against the exact motion.",
+    ),
+    "lecornu": (
+        "pendcli.cli.lecornu",
+        "app",
+        "Lecornu: the pendulum of variable length (zeros of J1/J2, the 0,35 m/s example).",
+    ),
+    "charbonnier": (
+        "pendcli.cli.charbonnier",
+        "app",
+        "Charbonnier 1908: perturbations, the table of I_n(π), the integrals I_n(x).",
+    ),
+    "formulas": (
+        "pendcli.cli.formulas",
+        "formulas",
+        "Derived formulas against direct numerical solutions: observed order, verdict.",
+    ),
+    "tradeoff": (
+        "pendcli.cli.tradeoff",
+        "tradeoff",
+        "Speed against accuracy: each method's error and time (work-precision).",
+    ),
+}
+
+
+def _load_command(name: str):
+    module_name, attribute, _ = LAZY_COMMANDS[name]
+    target = getattr(importlib.import_module(module_name), attribute)
+    if not isinstance(target, typer.Typer):
+        target_app = typer.Typer(add_completion=False, rich_markup_mode=None)
+        target_app.command(name)(target)
+        target = target_app
+    command = typer.main.get_command(target)
+    command.name = name
+    return command
+
+
+class LazyGroup(TyperGroup):
+    """The top-level group: eager commands first, then the lazily imported ones."""
+
+    def list_commands(self, ctx) -> list[str]:
+        return [*super().list_commands(ctx), *(n for n in LAZY_COMMANDS if n not in self.commands)]
+
+    def get_command(self, ctx, cmd_name: str):
+        if cmd_name in LAZY_COMMANDS and cmd_name not in self.commands:
+            self.commands[cmd_name] = _load_command(cmd_name)
+        return super().get_command(ctx, cmd_name)
+
+    def format_commands(self, ctx, formatter) -> None:
+        rows = []
+        for name in self.list_commands(ctx):
+            if name in LAZY_COMMANDS and name not in self.commands:
+                rows.append((name, LAZY_COMMANDS[name][2]))
+            else:
+                rows.append((name, self.commands[name].get_short_help_str(limit=200)))
+        with formatter.section("Commands"):
+            formatter.write_dl(rows)
+
+
 app = typer.Typer(
+    cls=LazyGroup,
     name="pendcli",
     help=(
         "Regenerate, number by number, the claims of three historical papers on the pendulum "
@@ -30,11 +94,6 @@ app = typer.Typer(
     # more than the rest of start-up together.
     rich_markup_mode=None,
 )
-app.add_typer(tisserand_cli.app, name="tisserand")
-app.add_typer(lecornu_cli.app, name="lecornu")
-app.add_typer(charbonnier_cli.app, name="charbonnier")
-app.command("formulas")(formulas_cli.formulas)
-app.command("tradeoff")(tradeoff_cli.tradeoff)
 
 PaperOption = Annotated[
     str | None,

@@ -12,6 +12,8 @@ from pendcli.render import OutputFormat
 app = typer.Typer(
     help="Tisserand 1881: the conical pendulum, series (I)-(VI) against the exact motion.",
     no_args_is_help=True,
+    add_completion=False,
+    rich_markup_mode=None,
 )
 
 AngleOption = Annotated[
