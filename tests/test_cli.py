@@ -164,3 +164,15 @@ def test_fuzz_cli_never_tracebacks(command, value, extra):
     assert code in (0, 2), err
     if code == 2:
         assert_clean_error(code, err)
+
+
+def test_tol_picks_a_measured_method_and_says_which():
+    code, out, _ = invoke("lecornu", "zeros", "--tol", "1e-12", "--count", "3", "--format", "json")
+    assert code == 0
+    doc = json.loads(out)
+    assert "<= tol 1e-12" in doc["method_reason"]
+    code, out, _ = invoke("lecornu", "zeros", "--method", "scipy", "--format", "json")
+    assert json.loads(out)["method_reason"] == "forced by --method"
+    code, _, err = invoke("lecornu", "zeros", "--tol", "1e-30")
+    assert_clean_error(code, err)
+    assert "out of reach" in err

@@ -55,15 +55,39 @@ def zeros(
     order: Annotated[int, typer.Option("--order", help="Order of J: 1 or 2.")] = 2,
     count: Annotated[int, typer.Option("--count", help="How many zeros, 1 <= K <= 10^7.")] = 5,
     method: Annotated[
-        str,
-        typer.Option("--method", help="auto, scipy, mcmahon, mcmahon-newton, mpmath or series."),
-    ] = "auto",
+        str | None,
+        typer.Option(
+            "--method",
+            help="Force one: auto, scipy, mcmahon, mcmahon-newton, mpmath or series.",
+        ),
+    ] = None,
+    tol: Annotated[
+        float | None,
+        typer.Option(
+            "--tol",
+            help="Cheapest method whose measured worst relative error is <= TOL "
+            "(tables/tradeoff/bessel_zeros.csv).",
+        ),
+    ] = None,
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """The first K positive zeros of J_1 or J_2 (Lecornu's (15) and the vertical passages)."""
     from pendcli.besselzeros import bessel_zeros
     from pendcli.render import Column
 
+    if method is not None:
+        reason = "forced by --method"
+    elif tol is not None:
+        from pendcli.tradeoff import choose
+
+        chosen = choose("bessel_zeros", tol)
+        method = chosen.method
+        reason = (
+            f"cheapest with measured worst error {chosen.error:.1e} <= tol {tol:g}, "
+            f"{chosen.seconds:.1e} s/evaluation"
+        )
+    else:
+        method, reason = "auto", "default"
     values = bessel_zeros(order, count, method)
     rows = [{"k": k + 1, "zero": float(z)} for k, z in enumerate(values)]
     columns = [
@@ -73,8 +97,12 @@ def zeros(
     emit(
         fmt,
         [(f"Zeros of J_{order} ({method})", rows, columns)],
-        {"order": order, "method": method, "zeros": rows},
+        {"order": order, "method": method, "method_reason": reason, "zeros": rows},
     )
+    if fmt is OutputFormat.table:
+        from pendcli.cli.common import say
+
+        say(f"method: {method} ({reason})")
 
 
 @app.command("example")
