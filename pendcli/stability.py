@@ -19,6 +19,14 @@ from pendcli.errors import PendcliError
 __all__ = ["stability_rows"]
 
 
+
+def _short(exc: Exception, limit: int = 90) -> str:
+    """An error message cut at a word boundary, marked when cut."""
+    text = str(exc).split("; ")[0]
+    if len(text) <= limit:
+        return text
+    return text[:limit].rsplit(" ", 1)[0] + " …"
+
 def _ulps(value: float, reference) -> float:
     import mpmath
 
@@ -340,7 +348,7 @@ def _bessel_rows() -> list[dict]:
             try:
                 errs[(order, s)] = _rel(float(bz.bessel_zeros(order, s, method)[s - 1]), r)
             except PendcliError as exc:
-                failures.append(f"J{order} s={s}: {str(exc)[:60]}")
+                failures.append(f"J{order} s={s}: {_short(exc)}")
         good = [k for k, e in errs.items() if e < 1e-13]
         rows.append(
             _row(
@@ -391,7 +399,7 @@ def _conical_rows() -> list[dict]:
             m = tis.exact_conical(math.radians(c[0]), math.radians(c[1]), method="ode", rtol=1e-12)
             odes[c] = _rel(m.precession, refs[c])
         except PendcliError as exc:
-            refused.append(f"{c[0]:g}°/{c[1]:g}°: {str(exc)[:50]}")
+            refused.append(f"{c[0]:g}°/{c[1]:g}°: {_short(exc)}")
     rows.append(
         _row(
             "exact conical pendulum",
