@@ -134,11 +134,9 @@ def _two_prod(a: np.ndarray, b: float) -> tuple[np.ndarray, np.ndarray]:
     return p, e
 
 
-def _mcmahon_terms(order: int, beta: np.ndarray) -> np.ndarray:
-    """β - j_(ν,s): the sum of McMahon's correction terms (DLMF 10.21.19, through (8β)^-9)."""
+def _mcmahon_coefficients(order: int) -> tuple[float, float, float, float, float]:
+    """c1, c3, c5, c7, c9 of McMahon's expansion β - j_(ν,s) = Σ c_k (8β)^-k (DLMF 10.21.19)."""
     mu = 4.0 * order * order
-    w = 1.0 / (8.0 * beta)
-    w2 = w * w
     c1 = mu - 1.0
     c3 = 4.0 * (mu - 1.0) * (7.0 * mu - 31.0) / 3.0
     c5 = 32.0 * (mu - 1.0) * (83.0 * mu**2 - 982.0 * mu + 3779.0) / 15.0
@@ -157,6 +155,14 @@ def _mcmahon_terms(order: int, beta: np.ndarray) -> np.ndarray:
         )
         / 315.0
     )
+    return c1, c3, c5, c7, c9
+
+
+def _mcmahon_terms(order: int, beta: np.ndarray) -> np.ndarray:
+    """β - j_(ν,s): the sum of McMahon's correction terms (DLMF 10.21.19, through (8β)^-9)."""
+    c1, c3, c5, c7, c9 = _mcmahon_coefficients(order)
+    w = 1.0 / (8.0 * beta)
+    w2 = w * w
     # Horner in w² from the smallest term, so the sum is accurate to its last bit.
     return w * (c1 + w2 * (c3 + w2 * (c5 + w2 * (c7 + w2 * c9))))
 
@@ -182,22 +188,7 @@ def mcmahon_truncation_bound(order: int, s: np.ndarray | int) -> np.ndarray:
     """
     s = np.asarray(s, dtype=float)
     beta = (s + 0.5 * order - 0.25) * math.pi
-    mu = 4.0 * order * order
-    c7 = (
-        64.0 * (mu - 1.0) * (6949.0 * mu**3 - 153855.0 * mu**2 + 1585743.0 * mu - 6277237.0)
-    ) / 105.0
-    c9 = (
-        512.0
-        * (mu - 1.0)
-        * (
-            70197.0 * mu**4
-            - 2479316.0 * mu**3
-            + 48010494.0 * mu**2
-            - 512062548.0 * mu
-            + 2092163573.0
-        )
-        / 315.0
-    )
+    *_, c7, c9 = _mcmahon_coefficients(order)
     ratio = abs(c9 / c7)
     return np.abs(c9) * ratio / (8.0 * beta) ** 11
 

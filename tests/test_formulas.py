@@ -337,32 +337,7 @@ def test_charbonnier_friction_count_exact_by_simulation():
 
 
 # ----------------------------------------------------------------------------- CLI
-def invoke(*args: str) -> tuple[int, str, str]:
-    """Run `pendcli ARGS` in-process; return (exit code, stdout, stderr)."""
-    import contextlib
-    import io
-    import sys
-
-    from pendcli.cli.main import run
-
-    out, err = io.StringIO(), io.StringIO()
-    argv, sys.argv = sys.argv, ["pendcli", *args]
-    code = 0
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            run()
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
-    finally:
-        sys.argv = argv
-    return code, out.getvalue(), err.getvalue()
-
-
-def assert_clean_error(code: int, err: str) -> None:
-    assert code == 2, err
-    assert "Traceback" not in err
-    lines = [line for line in err.splitlines() if line.strip()]
-    assert len(lines) == 1 and lines[0].startswith("pendcli: error: "), err
+from cli_helpers import assert_clean_error, invoke  # noqa: E402
 
 
 def test_cli_formulas_json_and_plot(tmp_path):
