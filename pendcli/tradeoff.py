@@ -514,10 +514,35 @@ def _conical_quantities(motion) -> tuple[float, float]:
     return motion.k1, motion.precession
 
 
-def _ref_conical(problem):
-    """Tisserand's exact quadratures at rtol 1e-15 (trapezoid rule, geometric convergence)."""
-    tis = importlib.import_module("pendcli.tisserand")
-    return _conical_quantities(tis.exact_conical(*problem, method="quad", rtol=1e-15))
+def _ref_conical(problem, dps: int = 30):
+    """k'/k and Ω from the first integrals in z = cos θ, by mpmath quadrature at 30 digits.
+
+    Independent of pendcli.spherical: with k = 1, ż² = 2P(z), P = (1 - z²)(e + z) - h²/2 =
+    (z - z0)(z1 - z)(z - z3); z = z0 + (z1 - z0) sin² s removes both endpoint singularities.
+    k' = π / T_r and Ω = (Δφ - π)/π per radial period T_r.
+    """
+    import mpmath
+
+    theta0, theta1 = problem
+    with mpmath.workdps(dps):
+        z0, z1 = mpmath.cos(mpmath.mpf(theta0)), mpmath.cos(mpmath.mpf(theta1))
+        # (1 - z²)(e + z) takes the same value h²/2 at both turning points
+        e = (z1 * (1 - z1**2) - z0 * (1 - z0**2)) / ((1 - z0**2) - (1 - z1**2))
+        h = mpmath.sqrt(2 * (1 - z0**2) * (e + z0))
+        z3 = -e - z0 - z1
+
+        def z(s):
+            return z0 + (z1 - z0) * mpmath.sin(s) ** 2
+
+        half_period = mpmath.quad(lambda s: 2 / mpmath.sqrt(2 * (z(s) - z3)), [0, mpmath.pi / 2])
+        half_turn = mpmath.quad(
+            lambda s: 2 * h / ((1 - z(s) ** 2) * mpmath.sqrt(2 * (z(s) - z3))),
+            [0, mpmath.pi / 2],
+        )
+        return (
+            float(mpmath.pi / (2 * half_period)),
+            float((2 * half_turn - mpmath.pi) / mpmath.pi),
+        )
 
 
 def _conical_candidates(quick: bool) -> list[Candidate]:
