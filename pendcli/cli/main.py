@@ -175,7 +175,9 @@ def reproduce(
 
             counts = result.verdict_counts()
             for key in keys:
-                tally = ", ".join(f"{n} {v}" for v, n in sorted(counts[key].items()))
+                order = ["agrees", "truncated", "last-digit", "discrepant"]
+                order += ["formula holds", "formula fails"]
+                tally = ", ".join(f"{counts[key][v]} {v}" for v in order if v in counts[key])
                 say(f"{key}: {tally}")
             say(f"wrote {len(written)} files to {out} (report: {out / 'report.md'})")
 
