@@ -670,6 +670,16 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
     printed_z2 = np.array([5.14, 8.41, 11.62, 14.80, 17.96])  # table (15), for his procedure
     printed_z1 = np.array([19.61, 16.47, 13.32, 10.17, 7.01, 3.83])
     b = EXAMPLE_SPEED
+    # The printed example has five elongations: the release (1 m, b = 0,35) must stay nearest
+    # the fifth zero of J2, i.e. 2√g/b between the midpoints around j_(2,5).
+    g_low = (b * (z2[3] + z2[4]) / 4) ** 2
+    g_high = (b * (z2[4] + z2[5]) / 4) ** 2
+    if not (isinstance(g, (int, float)) and math.isfinite(g) and g_low < g < g_high):
+        raise PendcliError(
+            f"g = {g!r} m/s² changes the structure of the printed example (no longer five "
+            f"elongations from 1 m at 0,35 m/s); valid range for the claims is "
+            f"{g_low:.3f} < g < {g_high:.3f}"
+        )
 
     out["lecornu.j2_zeros.count_below_20"] = Recomputed(
         float(np.sum(z2 < TABLE_LIMIT)),
