@@ -660,6 +660,19 @@ def _chop(v: float, decimals: int) -> float:
     return math.copysign(math.floor(abs(v) * f + 1e-9) / f, v)
 
 
+def _printed_values(prefix: str, count: int) -> np.ndarray:
+    """The printed values of claims ``prefix1..prefixN`` (or ``prefix`` alone), in table order."""
+    from pendcli.tables import load_paper_table
+
+    claims = {c.id: c.number.value for c in load_paper_table("lecornu").claims}
+    ids = (
+        [prefix]
+        if count == 1 and prefix in claims
+        else [f"{prefix}{k}" for k in range(1, count + 1)]
+    )
+    return np.array([claims[i] for i in ids])
+
+
 def recompute(g: float = G) -> dict[str, Recomputed]:
     """Every printed number of section II (and k⁴ of III), recomputed; see the module doc."""
     from scipy.special import j0
@@ -667,8 +680,10 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
     out: dict[str, Recomputed] = {}
     z2 = bessel_zeros(2, 6)
     z1 = bessel_zeros(1, 7)
-    printed_z2 = np.array([5.14, 8.41, 11.62, 14.80, 17.96])  # table (15), for his procedure
-    printed_z1 = np.array([19.61, 16.47, 13.32, 10.17, 7.01, 3.83])
+    # His printed intermediates, read from the published table, for "the author's procedure".
+    printed_z2 = _printed_values("lecornu.j2_zeros.", 5)  # (15)
+    printed_z1 = _printed_values("lecornu.j1_zeros.", 6)
+    printed_coefficient = _printed_values("lecornu.coefficient_b2_4g", 1)[0]  # 0,00313
     b = EXAMPLE_SPEED
     # The printed example has five elongations: the release (1 m, b = 0,35) must stay nearest
     # the fifth zero of J2, i.e. 2√g/b between the midpoints around j_(2,5).
@@ -713,8 +728,8 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
 
     m = example_model(b, EXAMPLE_LENGTH, g)
     rest = from_rest_model(b, EXAMPLE_LENGTH, g, floor_fraction=1e-3)
-    printed_lengths = np.array([1.0, 0.68, 0.42, 0.22, 0.08])
-    author_len = 0.00313 * printed_z2[::-1] ** 2
+    printed_lengths = _printed_values("lecornu.example.length.", 5)
+    author_len = printed_coefficient * printed_z2[::-1] ** 2
     author_times = (1.0 - printed_lengths) / b
     for k in range(5):
         out[f"lecornu.example.length.{k + 1}"] = Recomputed(
@@ -724,7 +739,7 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
             note=(
                 f"Author's procedure 0,00313·z² (printed z) gives {author_len[k]:.4f}; "
                 f"with l = (z/17,96)² (1 m at the first elongation) "
-                f"{(printed_z2[::-1][k] / 17.96) ** 2:.4f}."
+                f"{(printed_z2[::-1][k] / printed_z2[-1]) ** 2:.4f}."
             ),
         )
     for k in range(5):
@@ -753,7 +768,7 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
             note=f"Differences of his own (printed-length) times give {author_intervals[k]:.4f}.",
         )
 
-    printed_j0 = np.array([-0.130, 0.072, -0.040, 0.027, -0.021])
+    printed_j0 = _printed_values("lecornu.j0_at_j2_zeros.", 5)
     for k in range(5):
         out[f"lecornu.j0_at_j2_zeros.{k + 1}"] = Recomputed(
             float(j0(z2[k])),
@@ -782,7 +797,8 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
         float(limit / j0(z2[4])),
         method="lim 2J_1(z)/z = 1 over J_0(j_(2,5))",
         note=(
-            f"Author's procedure 1/(-0,021) = {1 / -0.021:.2f}. Released from rest at 1 m with "
+            f"Author's procedure 1/({printed_j0[4]:+.3f}) = {1 / printed_j0[4]:.2f}. "
+            "Released from rest at 1 m with "
             "b = 0,35 m/s exactly (not the speed 2√g/j_(2,5) = "
             f"{2 * math.sqrt(g) / z2[4]:.5f} that satisfies his condition) the solution has a "
             f"Y_1 part (weight J_2(z0)/Y_2(z0) = {rest.singular_weight:.2e}) and θ grows like "
@@ -800,7 +816,7 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
             method="j_(1,k), correctly rounded",
             note=f"Exact {z:.5f}: rounded {round(z, 2):.2f}, truncated {_chop(z, 2):.2f}.",
         )
-    author_j1_len = 0.00313 * printed_z1**2
+    author_j1_len = printed_coefficient * printed_z1**2
     for k in range(6):
         out[f"lecornu.j1_lengths.{k + 1}"] = Recomputed(
             float(m.passage_lengths[k]),
@@ -1019,7 +1035,7 @@ def figures(outdir: str | Path) -> list[Path]:
         )
         pub_lp = [rows[f"lecornu.j1_lengths.{k}"].published_value for k in range(1, 7)]
         ax.plot(
-            (1 - np.array(pub_lp)) / 0.35,
+            (1 - np.array(pub_lp)) / EXAMPLE_SPEED,
             np.zeros(6),
             "+",
             color="C3",
