@@ -150,3 +150,18 @@ def test_charbonnier_integral_method_and_tol(tmp_path, monkeypatch):
     assert "cheapest" in row["method"]
     result = runner.invoke(app, ["charbonnier", "integral", "5", "--method", "nope"])
     assert result.exit_code != 0
+
+
+def test_conical_reference_is_independent_and_agrees_with_the_quadrature():
+    """mpmath on the first integrals (tradeoff's reference) against Tisserand's (4)-(5)."""
+    import math
+
+    from pendcli.tisserand import exact_conical
+    from pendcli.tradeoff import _ref_conical
+
+    for a, b in ((20.0, 10.0), (10.0, 2.0), (60.0, 1.0), (89.0, 45.0)):
+        t0, t1 = math.radians(a), math.radians(b)
+        k1, omega = _ref_conical((t0, t1))
+        motion = exact_conical(t0, t1, method="quad")
+        assert abs(motion.k1 - k1) <= 1e-14 * k1
+        assert abs(motion.precession - omega) <= 1e-14 * omega
