@@ -65,3 +65,17 @@ def test_reproduce_json_matches_the_documented_schema():
     for row in doc["stability"]:
         assert set(row) == {"family", "method", "accurate_range", "fails_beyond", "measured"}
     assert {row["paper"] for row in doc["claims"]} == set(PAPERS)
+
+
+def test_every_disagreement_is_explained():
+    """A verdict other than `agrees` carries a note; a failing formula says what is right."""
+    from pendcli.reproduce import reproduce_all
+
+    result = reproduce_all(PAPERS, formulas=True)
+    for row in result.claim_dicts():
+        if row["verdict"] != "agrees":
+            assert len(row["note"]) > 20, row["id"]
+    for row in result.formula_dicts():
+        if row["verdict"] == "fails":
+            assert row["recomputed"] != row["published"], row["id"]
+            assert len(row["note"]) > 20, row["id"]
