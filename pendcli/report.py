@@ -105,6 +105,13 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
     from pendcli.tables import load_paper_table
 
     out = Path(out)
+
+    def status(message: str) -> None:
+        if not quiet:
+            from pendcli.console import console
+
+            console(stderr=True).print(f"report: {message}")
+
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -167,6 +174,7 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
         figures: list[Path] = []
         module = _module(f"pendcli.{key}")
         if module is not None and hasattr(module, "figures"):
+            status(f"drawing the {key} figures")
             figures += list(module.figures(out / "figures" / key))
         fmodule = _module(f"pendcli.formulas.{key}")
         if fmodule is not None and hasattr(fmodule, "figures"):
@@ -191,6 +199,7 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
 
     tradeoff = _module("pendcli.tradeoff")
     if tradeoff is not None:
+        status("measuring speed against accuracy (about 10 s)")
         figs = _tradeoff_figures(tradeoff, out / "tradeoff")
         written += figs
         lines += [
