@@ -91,8 +91,9 @@ GRID = [
 @pytest.mark.parametrize(("n", "x"), GRID)
 def test_integral_general_x_within_two_ulp(n, x):
     reference = ref_x(n, x)
-    if abs(float(reference)) < 1e-290:
-        pytest.skip("reference underflows a double")
+    if abs(float(reference)) < 1e-290:  # subnormal or below: only an absolute error means much
+        assert abs(ch.integral(n, x) - float(reference)) <= 1e-300
+        return
     assert ulps(ch.integral(n, x), reference) <= 2.0
 
 
