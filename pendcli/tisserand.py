@@ -308,6 +308,12 @@ def recompute() -> dict[str, Recomputed]:
     c1s, c1x = series.phi_coeffs[0], exact.phi_coeffs[0]
     shift_series = displacement_mm(series, EXAMPLE_LENGTH_M)
     shift_exact = displacement_mm(exact, EXAMPLE_LENGTH_M)
+    # the printed bound « au plus un cinquième de millimètre », read from the table
+    from pendcli.tables import load_paper_table
+
+    bound = {c.id: c.number.value for c in load_paper_table("tisserand").claims}[
+        "tisserand.example.displacement"
+    ]
     limit = resal_rate_limit()
     ratio_exact = exact.precession / (math.sin(theta0) * math.sin(theta1))
     return {
@@ -325,8 +331,9 @@ def recompute() -> dict[str, Recomputed]:
             exact=shift_exact,
             method="l sin θ0 |c_1| with c_1 from (V) (value) and from the exact motion (exact)",
             note=(
-                f"Series {shift_series:.4f} mm <= 1/5 mm; exact motion {shift_exact:.4f} mm "
-                f"{'<=' if shift_exact <= 0.2 else '>'} 1/5 mm (all harmonics of the exact "
+                f"Series {shift_series:.4f} mm {'<=' if shift_series <= bound else '>'} 1/5 mm; "
+                f"exact motion {shift_exact:.4f} mm "
+                f"{'<=' if shift_exact <= bound else '>'} 1/5 mm (all harmonics of the exact "
                 f"periodic part of φ': at most {periodic_excursion_mm(theta0, theta1):.4f} mm)."
             ),
         ),
