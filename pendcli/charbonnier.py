@@ -385,8 +385,7 @@ def table_rows(n_max: int = 5) -> list[dict]:
     """n = -1..n_max: printed (n <= 5), the printed closed form, the recurrence, the beta form."""
     from pendcli.tables import load_paper_table
 
-    _check_n(n_max)
-    if n_max > 10_000:
+    if isinstance(n_max, bool) or not isinstance(n_max, int) or not -1 <= n_max <= 10_000:
         raise PendcliError(f"--n-max = {n_max} is out of range; valid range is -1..10000")
     printed = {c.id: c for c in load_paper_table("charbonnier").claims}
     rows = []
