@@ -1,10 +1,8 @@
 """pendcli: regenerate the numerical claims of three historical papers on the pendulum.
 
-The library is a set of pure functions (one module per paper: :mod:`pendcli.charbonnier`,
-:mod:`pendcli.lecornu`, :mod:`pendcli.tisserand`) plus small shared modules: number
-parsing (:mod:`pendcli.numbers`), verdicts (:mod:`pendcli.verdict`), the published tables
-(:mod:`pendcli.tables`), the claim engine (:mod:`pendcli.claims`) and output formats
-(:mod:`pendcli.render`). :mod:`pendcli.cli` is a thin adapter over them.
+Layout: :mod:`pendcli.core` (printed numbers, verdicts, published tables, the claim and
+formula engines, errors), :mod:`pendcli.render` (one renderer per output format, knowing
+nothing of pendulums), :mod:`pendcli.numerics` (Bessel zeros, planar and spherical
+pendulum done exactly), :mod:`pendcli.papers` (one package per paper: its model, claims,
+formulas, figures and speed/accuracy families) and :mod:`pendcli.cli`, a thin adapter.
 """
-
-__version__ = "0.1.0"

@@ -16,9 +16,9 @@ START, END = "<!-- sample:start -->", "<!-- sample:end -->"
 
 
 def sample_section() -> str:
-    from pendcli.claims import PAPERS
+    from pendcli.core.claims import PAPERS
+    from pendcli.render.views import claim_columns
     from pendcli.reproduce import reproduce_all
-    from pendcli.views import claim_columns
 
     result = reproduce_all(PAPERS, formulas=True, quiet=True)
     counts = result.verdict_counts()

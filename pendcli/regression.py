@@ -21,10 +21,10 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from pendcli.claims import PAPERS
-from pendcli.errors import PendcliError
+from pendcli.core.claims import PAPERS
+from pendcli.core.errors import PendcliError
+from pendcli.core.tables import tables_dir
 from pendcli.render import to_csv
-from pendcli.tables import tables_dir
 
 __all__ = ["TOLERANCES", "Drift", "compare_tables", "regenerated_tables", "run_check"]
 
@@ -152,7 +152,7 @@ def compare_tables(name: str, committed_text: str, now_text: str) -> list[Drift]
 
 def run_check(update: bool = False, quiet: bool = False, root: Path | None = None) -> int:
     """Regenerate every table; compare (or, with ``update``, rewrite). Returns the exit code."""
-    from pendcli.console import console
+    from pendcli.core.console import console
     from pendcli.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"

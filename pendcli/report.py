@@ -12,9 +12,9 @@ import importlib.util
 import platform
 from pathlib import Path
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 from pendcli.render import Column, to_json, to_markdown
-from pendcli.views import FORMULA_COLUMNS, claim_columns
+from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
 __all__ = ["write_report"]
 
@@ -101,14 +101,14 @@ def _tradeoff_figures(tradeoff, folder: Path) -> list[Path]:
 
 def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
     """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``."""
+    from pendcli.core.tables import load_paper_table
     from pendcli.regression import regenerated_tables
-    from pendcli.tables import load_paper_table
 
     out = Path(out)
 
     def status(message: str) -> None:
         if not quiet:
-            from pendcli.console import console
+            from pendcli.core.console import console
 
             console(stderr=True).print(f"report: {message}")
 
@@ -172,11 +172,11 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
         if frows:
             lines += ["### Derived formulas", "", to_markdown(frows, FORMULA_COLUMNS)]
         figures: list[Path] = []
-        module = _module(f"pendcli.{key}")
+        module = _module(f"pendcli.papers.{key}.claims")
         if module is not None and hasattr(module, "figures"):
             status(f"drawing the {key} figures")
             figures += list(module.figures(out / "figures" / key))
-        fmodule = _module(f"pendcli.formulas.{key}")
+        fmodule = _module(f"pendcli.papers.{key}.formulas")
         if fmodule is not None and hasattr(fmodule, "figures"):
             # pass the rows already computed so the checks do not run twice
             figures += list(

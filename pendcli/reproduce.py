@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from pendcli.claims import ClaimRow, FormulaRow, evaluate_paper
-from pendcli.formulas import formula_checks
+from pendcli.core.claims import ClaimRow, FormulaRow, evaluate_paper
+from pendcli.papers import formula_checks
 
 __all__ = ["ReproduceResult", "reproduce_all"]
 
@@ -30,7 +30,7 @@ class ReproduceResult:
         return doc
 
     def sections(self) -> list:
-        from pendcli.views import FORMULA_COLUMNS, claim_columns
+        from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
         out = []
         from pendcli.render import Column
@@ -95,7 +95,7 @@ class _progress:
             return lambda label: None
         from rich.progress import Progress
 
-        from pendcli.console import console
+        from pendcli.core.console import console
 
         self.progress = Progress(console=console(stderr=True), transient=True)
         self.progress.__enter__()

@@ -14,7 +14,7 @@ import importlib.util
 import math
 from collections.abc import Callable
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 __all__ = ["stability_rows"]
 
@@ -108,7 +108,7 @@ def _worst(points, fn: Callable, ref: Callable) -> tuple[float, object]:
 def _integral_rows() -> list[dict]:
     from scipy.special import beta, gammaln
 
-    from pendcli import charbonnier as ch
+    from pendcli.papers.charbonnier import claims as ch
     from pendcli.tradeoff import _naive_betainc, _products
 
     rows = []
@@ -252,7 +252,7 @@ def _ref_period(amplitude: float):
 
 
 def _planar_rows() -> list[dict]:
-    from pendcli import planar
+    from pendcli.numerics import planar
 
     rows = []
     fam = "planar period T/T0"
@@ -299,7 +299,7 @@ def _planar_rows() -> list[dict]:
 
 
 def _resistance_rows() -> list[dict]:
-    from pendcli.charbonnier_resistance import first_order_limit
+    from pendcli.papers.charbonnier.resistance import first_order_limit
 
     rows = []
     for n in range(6):
@@ -333,11 +333,11 @@ def _resistance_rows() -> list[dict]:
 
 
 def _bessel_rows() -> list[dict]:
-    if importlib.util.find_spec("pendcli.besselzeros") is None:
+    if importlib.util.find_spec("pendcli.numerics.besselzeros") is None:
         return []
     import mpmath
 
-    from pendcli import besselzeros as bz
+    from pendcli.numerics import besselzeros as bz
 
     rows = []
     with mpmath.workdps(30):
@@ -368,9 +368,9 @@ def _bessel_rows() -> list[dict]:
 
 
 def _conical_rows() -> list[dict]:
-    if importlib.util.find_spec("pendcli.tisserand") is None:
+    if importlib.util.find_spec("pendcli.papers.tisserand.claims") is None:
         return []
-    tis = importlib.import_module("pendcli.tisserand")
+    tis = importlib.import_module("pendcli.papers.tisserand.claims")
     if not (hasattr(tis, "exact_conical") and hasattr(tis, "series_conical")):
         return []
     rows = []

@@ -29,7 +29,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 __all__ = [
     "FAMILIES",
@@ -175,8 +175,8 @@ def _ref_integral_pi(n: int):
 
 
 def _asymptotic_pi(n: int, terms: int) -> float:
-    """√(π/m)·exp(-S) with S truncated to ``terms`` terms (pendcli.charbonnier's series)."""
-    from pendcli.charbonnier import _log_gamma_ratio_coefficients
+    """√(π/m)·exp(-S) with S truncated to ``terms`` terms (the Charbonnier series)."""
+    from pendcli.papers.charbonnier.claims import _log_gamma_ratio_coefficients
 
     m = (n + 2) / 2
     inv = 1.0 / m
@@ -207,7 +207,7 @@ def _quad_power(n: int, x: float, epsrel: float):
 
 def integral_by_method(n: int, x: float, method: str, setting: str = "") -> float:
     """I_n(x) by a named method of the tradeoff tables (what ``--method`` selects)."""
-    from pendcli import charbonnier as ch
+    from pendcli.papers.charbonnier import claims as ch
 
     at_pi = x == math.pi
     opts = dict(kv.split("=", 1) for kv in setting.split(",") if "=" in kv)
@@ -237,10 +237,10 @@ def integral_with_choice(
 
     The choice reads the published table of family integral_pi (x = π) or integral_x; outside
     the range that table measured (n beyond its largest n, x outside [0, π]) the measured
-    errors say nothing, so the default :func:`pendcli.charbonnier.integral` is used and the
-    label says why.
+    errors say nothing, so the default Charbonnier ``integral`` is used and the label says
+    why.
     """
-    from pendcli import charbonnier as ch
+    from pendcli.papers.charbonnier import claims as ch
 
     if method is not None:
         if method not in INTEGRAL_METHODS:
@@ -287,7 +287,7 @@ def _gammaln(n: int) -> float:
 
 
 def _exact(n: int) -> float:
-    from pendcli.charbonnier import integral_pi_exact
+    from pendcli.papers.charbonnier.claims import integral_pi_exact
 
     q, p = integral_pi_exact.__wrapped__(n)  # uncached: time the arithmetic, not the cache
     return float(q) * math.pi if p else float(q)
@@ -299,7 +299,9 @@ _PI_ONLY: dict[str, Callable[[int, dict], float]] = {
     "scipy-beta": lambda n, o: _scipy_beta(n),
     "gammaln": lambda n, o: _gammaln(n),
     "asymptotic": lambda n, o: _asymptotic_pi(n, int(o.get("terms", "12"))),
-    "integral_pi": lambda n, o: __import__("pendcli.charbonnier").charbonnier.integral_pi(n),
+    "integral_pi": lambda n, o: importlib.import_module(
+        "pendcli.papers.charbonnier.claims"
+    ).integral_pi(n),
 }
 INTEGRAL_METHODS = ("recurrence", "quad", "fast", "pendcli", "betainc", *_PI_ONLY)
 
@@ -337,13 +339,13 @@ def _integral_pi_candidates(quick: bool) -> list[Candidate]:
 
 
 def integral_pi_run(n: int) -> float:
-    from pendcli.charbonnier import integral_pi
+    from pendcli.papers.charbonnier.claims import integral_pi
 
     return integral_pi(n)
 
 
 def _recurrence_pi(n: int) -> float:
-    from pendcli.charbonnier import integral_recurrence
+    from pendcli.papers.charbonnier.claims import integral_recurrence
 
     return integral_recurrence(n, math.pi)
 
@@ -384,7 +386,7 @@ def _series_0_half(n: int, x):
 
 
 def _integral_x_candidates(quick: bool) -> list[Candidate]:
-    from pendcli import charbonnier as ch
+    from pendcli.papers.charbonnier import claims as ch
 
     epsrels = (1e-2, 1e-6, 1e-12) if quick else (1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13)
     out = [
@@ -413,7 +415,7 @@ def _ref_period_ratio(amplitude: float):
 
 
 def _planar_candidates(quick: bool) -> list[Candidate]:
-    from pendcli import planar
+    from pendcli.numerics import planar
 
     orders = (1, 4, 16) if quick else (1, 2, 4, 8, 16, 32, 48)
     iters = (1, 3) if quick else (1, 2, 3, 4, 5)
@@ -450,14 +452,14 @@ def _planar_candidates(quick: bool) -> list[Candidate]:
 
 
 def _ref_loss(problem):
-    from pendcli.charbonnier_resistance import relative_loss_exact
+    from pendcli.papers.charbonnier.resistance import relative_loss_exact
 
     n, beta = problem
     return relative_loss_exact(beta, n, digits=40)
 
 
 def _loss_candidates(quick: bool) -> list[Candidate]:
-    from pendcli.charbonnier_resistance import relative_loss_first_order, relative_loss_ode
+    from pendcli.papers.charbonnier.resistance import relative_loss_first_order, relative_loss_ode
 
     rtols = (1e-3, 1e-8) if quick else (1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 
@@ -482,7 +484,7 @@ def _loss_candidates(quick: bool) -> list[Candidate]:
 
 
 # ---------------------------------------------------------------------------------------------
-# Zeros of J1 and J2 (pendcli.besselzeros, another helper's module)
+# Zeros of J1 and J2 (pendcli.numerics.besselzeros, another helper's module)
 
 
 def _ref_bessel(problem):
@@ -494,7 +496,7 @@ def _ref_bessel(problem):
 
 
 def _bessel_candidates(quick: bool) -> list[Candidate]:
-    bz = importlib.import_module("pendcli.besselzeros")
+    bz = importlib.import_module("pendcli.numerics.besselzeros")
     out = []
     for method in bz.METHODS:
 
@@ -507,7 +509,7 @@ def _bessel_candidates(quick: bool) -> list[Candidate]:
 
 
 # ---------------------------------------------------------------------------------------------
-# The exact conical pendulum (pendcli.tisserand: exact_conical, series_conical)
+# The exact conical pendulum (pendcli.papers.tisserand.claims: exact_conical, series_conical)
 
 
 def _conical_quantities(motion) -> tuple[float, float]:
@@ -517,7 +519,7 @@ def _conical_quantities(motion) -> tuple[float, float]:
 def _ref_conical(problem, dps: int = 30):
     """k'/k and Ω from the first integrals in z = cos θ, by mpmath quadrature at 30 digits.
 
-    Independent of pendcli.spherical: with k = 1, ż² = 2P(z), P = (1 - z²)(e + z) - h²/2 =
+    Independent of pendcli.numerics.spherical: with k = 1, ż² = 2P(z), P = (1 - z²)(e + z) - h²/2 =
     (z - z0)(z1 - z)(z - z3); z = z0 + (z1 - z0) sin² s removes both endpoint singularities.
     k' = π / T_r and Ω = (Δφ - π)/π per radial period T_r.
     """
@@ -546,7 +548,7 @@ def _ref_conical(problem, dps: int = 30):
 
 
 def _conical_candidates(quick: bool) -> list[Candidate]:
-    tis = importlib.import_module("pendcli.tisserand")
+    tis = importlib.import_module("pendcli.papers.tisserand.claims")
     orders = (0, 6) if quick else tuple(getattr(tis, "SERIES_ORDERS", (0, 2, 4, 6)))
     rtols = (1e-4, 1e-10) if quick else (1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-13)
 
@@ -566,19 +568,19 @@ def _conical_candidates(quick: bool) -> list[Candidate]:
 
 
 # ---------------------------------------------------------------------------------------------
-# Lecornu's variable-length pendulum: elongation times (pendcli.lecornu)
+# Lecornu's variable-length pendulum: elongation times (pendcli.papers.lecornu.claims)
 
 _LECORNU_PROBLEM = (0.35, 1.0, 9.81)  # Lecornu's example: 0.35 m/s, 1 m at t = 0, g = 9.81
 
 
 def _ref_lecornu(problem):
     """The exact Bessel-function solution (its zeros are checked against mpmath elsewhere)."""
-    lec = importlib.import_module("pendcli.lecornu")
+    lec = importlib.import_module("pendcli.papers.lecornu.claims")
     return tuple(float(t) for t in lec.elongation_times(*problem, method="bessel"))
 
 
 def _lecornu_candidates(quick: bool) -> list[Candidate]:
-    lec = importlib.import_module("pendcli.lecornu")
+    lec = importlib.import_module("pendcli.papers.lecornu.claims")
     reference = _ref_lecornu(_LECORNU_PROBLEM)
     rtols = (1e-3, 1e-9) if quick else (1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 
@@ -632,7 +634,7 @@ FAMILIES: dict[str, Family] = {
             [(1, 1), (2, 1), (1, 6), (2, 6)],
             _ref_bessel,
             _bessel_candidates,
-            module="pendcli.besselzeros",
+            module="pendcli.numerics.besselzeros",
             needs=("bessel_zeros", "METHODS"),
             quick_problems=[(1, 1), (2, 6)],
         ),
@@ -642,7 +644,7 @@ FAMILIES: dict[str, Family] = {
             [(math.radians(20.0), math.radians(10.0)), (math.radians(10.0), math.radians(2.0))],
             _ref_conical,
             _conical_candidates,
-            module="pendcli.tisserand",
+            module="pendcli.papers.tisserand.claims",
             needs=("exact_conical", "series_conical"),
             quick_problems=[(math.radians(20.0), math.radians(10.0))],
         ),
@@ -652,7 +654,7 @@ FAMILIES: dict[str, Family] = {
             [_LECORNU_PROBLEM],
             _ref_lecornu,
             _lecornu_candidates,
-            module="pendcli.lecornu",
+            module="pendcli.papers.lecornu.claims",
             needs=("elongation_times",),
         ),
     )
@@ -700,7 +702,7 @@ def _family(name: str) -> Family:
 
 
 def table_path(name: str, root: Path | None = None) -> Path:
-    from pendcli.tables import tables_dir
+    from pendcli.core.tables import tables_dir
 
     return (root or tables_dir()) / "tradeoff" / f"{name}.csv"
 
@@ -769,7 +771,7 @@ def choose_method(family: str, tol: float) -> str:
 
 def plot_tradeoff(points: list[Point], path) -> None:
     """Log error against log time, one line per method, one panel per family."""
-    from pendcli.plotting import new_figure
+    from pendcli.core.plotting import new_figure
 
     families = list(dict.fromkeys(p.family for p in points))
     ncols = 2 if len(families) > 1 else 1

@@ -9,14 +9,14 @@ import mpmath
 import numpy as np
 import pytest
 
-from pendcli.besselzeros import (
+from pendcli.core.errors import PendcliError
+from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     METHODS,
     bessel_zeros,
     lecornu_series,
     series_safe_limit,
 )
-from pendcli.errors import PendcliError
 
 REF_DPS = 40
 

@@ -5,11 +5,11 @@ import math
 import mpmath
 import pytest
 
-from pendcli import charbonnier
-from pendcli.claims import evaluate_paper
-from pendcli.errors import PendcliError
-from pendcli.formulas import formula_checks
-from pendcli.tables import load_paper_table
+from pendcli.core.claims import evaluate_paper
+from pendcli.core.errors import PendcliError
+from pendcli.core.tables import load_paper_table
+from pendcli.papers import formula_checks
+from pendcli.papers.charbonnier import claims as charbonnier
 
 CLAIMS = load_paper_table("charbonnier").claims
 

@@ -13,9 +13,9 @@ import math
 import mpmath
 import pytest
 
-from pendcli import charbonnier as ch
-from pendcli import charbonnier_resistance as cr
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
+from pendcli.papers.charbonnier import claims as ch
+from pendcli.papers.charbonnier import resistance as cr
 
 pytestmark = pytest.mark.extremes
 

@@ -13,10 +13,10 @@ import math
 import numpy as np
 import pytest
 
-from pendcli.formulas import charbonnier as fch
-from pendcli.formulas import engine
-from pendcli.formulas import lecornu as fle
-from pendcli.formulas import tisserand as fti
+from pendcli.core import formula_engine as engine
+from pendcli.papers.charbonnier import formulas as fch
+from pendcli.papers.lecornu import formulas as fle
+from pendcli.papers.tisserand import formulas as fti
 
 PI = math.pi
 TIGHT = engine.Reference(rtol=1e-13, atol=1e-15)
@@ -303,7 +303,7 @@ def test_charbonnier_damped_oscillator_closed_form():
 
 def test_charbonnier_e_integrals_closed_form():
     """E_s, E_c of the monomial resistance by quadrature against B_n k^(n−1)(αl0)^n I_n."""
-    from pendcli.charbonnier import integral
+    from pendcli.papers.charbonnier.claims import integral
 
     for n in range(6):
         phi = lambda th, om, t, n=n: (fch.L0 * om) ** n  # noqa: E731

@@ -6,7 +6,7 @@ import json
 
 from cli_helpers import invoke
 
-from pendcli.claims import PAPERS
+from pendcli.core.claims import PAPERS
 
 NUMBER, TEXT, OPTIONAL_NUMBER = (int, float), str, (int, float, type(None))
 CLAIM_SCHEMA = {

@@ -15,11 +15,11 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from pendcli import lecornu
-from pendcli.claims import evaluate_paper
-from pendcli.errors import PendcliError
-from pendcli.tables import load_paper_table
-from pendcli.verdict import judge
+from pendcli.core.claims import evaluate_paper
+from pendcli.core.errors import PendcliError
+from pendcli.core.tables import load_paper_table
+from pendcli.core.verdict import judge
+from pendcli.papers.lecornu import claims as lecornu
 
 G = 9.81
 B = 0.35
@@ -352,7 +352,7 @@ def test_figures(tmp_path):
 
 def test_exact_solution_constants_against_mpmath_roots():
     """The double-precision roots behind -0,13, 3π/32 and 6,47 against mpmath at 30 digits."""
-    from pendcli.lecornu import _lengthening_from_vertical
+    from pendcli.papers.lecornu.claims import _lengthening_from_vertical
 
     for p in (0.004, 0.001):
         with mpmath.workdps(30):

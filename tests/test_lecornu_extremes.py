@@ -13,8 +13,8 @@ import mpmath
 import numpy as np
 import pytest
 
-from pendcli import lecornu
-from pendcli.besselzeros import (
+from pendcli.core.errors import PendcliError
+from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     SERIES_MAX_ERROR,
     bessel_zeros,
@@ -22,7 +22,7 @@ from pendcli.besselzeros import (
     series_error_bound,
     series_safe_limit,
 )
-from pendcli.errors import PendcliError
+from pendcli.papers.lecornu import claims as lecornu
 
 pytestmark = pytest.mark.extremes
 

@@ -7,8 +7,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from pendcli.errors import PendcliError
-from pendcli.numbers import parse_printed
+from pendcli.core.errors import PendcliError
+from pendcli.core.numbers import parse_printed
 
 
 @pytest.mark.parametrize(

@@ -11,8 +11,8 @@ import math
 import mpmath
 import pytest
 
-from pendcli import planar
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
+from pendcli.numerics import planar
 
 pytestmark = pytest.mark.extremes
 

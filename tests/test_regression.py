@@ -6,7 +6,7 @@ import shutil
 
 import pytest
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 from pendcli.regression import TOLERANCES, compare_tables
 
 HEADER = "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict\n"
@@ -65,8 +65,8 @@ def test_every_committed_column_has_an_explicit_tolerance():
 
 
 def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
+    from pendcli.core.tables import _load_paper_table, tables_dir
     from pendcli.regression import run_check
-    from pendcli.tables import _load_paper_table, tables_dir
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))

@@ -54,7 +54,7 @@ def test_measured_numbers_reflect_the_methods(rows):
 
 def test_rows_change_when_a_method_breaks(monkeypatch):
     """Generated, not typed in: make agm wrong and its row says so."""
-    from pendcli import planar
+    from pendcli.numerics import planar
 
     real = planar.period_ratio
 

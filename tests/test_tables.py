@@ -5,9 +5,9 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.claims import PAPERS, Recomputed, join_claims
-from pendcli.errors import PendcliError
-from pendcli.tables import load_paper_table, tables_dir
+from pendcli.core.claims import PAPERS, Recomputed, join_claims
+from pendcli.core.errors import PendcliError
+from pendcli.core.tables import load_paper_table, tables_dir
 
 GOOD = """
 [paper]

@@ -2,7 +2,7 @@
 
 References here are computed with mpmath at 30+ digits from Tisserand's equations as printed,
 (1)-(2) in the variable z = cos θ and (4)-(5) in ψ, with formulas other than those in
-pendcli.spherical (Gauss-Legendre/tanh-sinh quadrature instead of the trapezoidal rule, the
+pendcli.numerics.spherical (Gauss-Legendre/tanh-sinh quadrature instead of the trapezoidal rule, the
 Kapteyn-type form b_n = (1/nπ)∫ cos 2nτ(ψ) dψ instead of the by-parts form).
 """
 
@@ -16,13 +16,13 @@ import mpmath
 import pytest
 from typer.testing import CliRunner
 
-from pendcli import tisserand
-from pendcli.claims import evaluate_paper
-from pendcli.errors import PendcliError
-from pendcli.numbers import parse_printed
-from pendcli.spherical import exact_conical
-from pendcli.tables import load_paper_table
-from pendcli.verdict import judge
+from pendcli.core.claims import evaluate_paper
+from pendcli.core.errors import PendcliError
+from pendcli.core.numbers import parse_printed
+from pendcli.core.tables import load_paper_table
+from pendcli.core.verdict import judge
+from pendcli.numerics.spherical import exact_conical
+from pendcli.papers.tisserand import claims as tisserand
 
 CLAIMS = load_paper_table("tisserand").claims
 EXAMPLE = (math.radians(30), math.radians(15))
@@ -272,7 +272,7 @@ def test_resal_first_approximation_residual_order():
 
 def test_implicit_form_before_13_has_35_over_4096():
     # ψ = k't - a sin 2ψ - b sin 4ψ: the implicit form's b is 35/4096 (u0²-u1²)², as printed.
-    from pendcli.spherical import implicit_psi_coeffs
+    from pendcli.numerics.spherical import implicit_psi_coeffs
 
     values = []
     for eps in (0.1, 0.05):

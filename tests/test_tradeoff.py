@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 
 from pendcli import tradeoff
 from pendcli.cli.main import app
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 runner = CliRunner()
 
@@ -37,7 +37,7 @@ def test_points_have_error_time_and_span_six_decades(planar_points, integral_poi
 
 def test_errors_are_measured_against_an_independent_reference(planar_points):
     """Recompute one point's error here: series order 1 at 90° against mpmath's K."""
-    from pendcli.planar import series_period_ratio
+    from pendcli.numerics.planar import series_period_ratio
 
     with mpmath.workdps(50):
         worst = max(
@@ -156,7 +156,7 @@ def test_conical_reference_is_independent_and_agrees_with_the_quadrature():
     """mpmath on the first integrals (tradeoff's reference) against Tisserand's (4)-(5)."""
     import math
 
-    from pendcli.tisserand import exact_conical
+    from pendcli.papers.tisserand.claims import exact_conical
     from pendcli.tradeoff import _ref_conical
 
     for a, b in ((20.0, 10.0), (10.0, 2.0), (60.0, 1.0), (89.0, 45.0)):

@@ -1,4 +1,4 @@
-"""Verdict boundaries: agrees, truncated, last-digit, discrepant (rules in pendcli.verdict)."""
+"""Verdict boundaries: agrees, truncated, last-digit, discrepant (rules in pendcli.core.verdict)."""
 
 import math
 
@@ -6,8 +6,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from pendcli.numbers import parse_printed
-from pendcli.verdict import Verdict, judge
+from pendcli.core.numbers import parse_printed
+from pendcli.core.verdict import Verdict, judge
 
 
 @pytest.mark.parametrize(

@@ -26,12 +26,12 @@ def table(
     plot: PlotOption = None,
 ) -> None:
     """The printed table of I_n(π), n = 0..5, and its closed forms, against recomputation."""
-    from pendcli import charbonnier
-    from pendcli.claims import evaluate_paper
-    from pendcli.formulas.charbonnier import closed_form_rows
-    from pendcli.plotting import validate_plot_path
+    from pendcli.core.claims import evaluate_paper
+    from pendcli.core.plotting import validate_plot_path
+    from pendcli.papers.charbonnier import claims as charbonnier
+    from pendcli.papers.charbonnier.formulas import closed_form_rows
     from pendcli.render import Column, fmt_float
-    from pendcli.views import claim_columns
+    from pendcli.render.views import claim_columns
 
     plot = validate_plot_path(plot)
     rows = charbonnier.table_rows(n_max)
@@ -55,7 +55,7 @@ def table(
         ),
         Column("beta", "B(1/2,(n+2)/2)", fmt=lambda r: fmt_float(r["beta"], 17), justify="right"),
     )
-    from pendcli.views import FORMULA_COLUMNS
+    from pendcli.render.views import FORMULA_COLUMNS
 
     emit(
         fmt,
@@ -99,7 +99,7 @@ def integral(
     """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (default π)."""
     import math
 
-    from pendcli import charbonnier
+    from pendcli.papers.charbonnier import claims as charbonnier
     from pendcli.render import Column, fmt_float
 
     if method is not None or tol is not None:

@@ -8,7 +8,7 @@ from typing import Annotated
 
 import typer
 
-from pendcli.console import console
+from pendcli.core.console import console
 from pendcli.render import OutputFormat
 
 FormatOption = Annotated[

@@ -29,10 +29,10 @@ def formulas(
     ] = None,
 ) -> None:
     """Residual of each derived formula as its small parameter shrinks: observed order, verdict."""
-    from pendcli.claims import resolve_papers
-    from pendcli.errors import PendcliError
-    from pendcli.formulas import formula_checks
-    from pendcli.views import FORMULA_COLUMNS
+    from pendcli.core.claims import resolve_papers
+    from pendcli.core.errors import PendcliError
+    from pendcli.papers import formula_checks
+    from pendcli.render.views import FORMULA_COLUMNS
 
     keys = resolve_papers(paper)
     if plot is not None and plot.exists() and not plot.is_dir():
@@ -50,7 +50,7 @@ def formulas(
 
         written = []
         for key in keys:
-            module = importlib.import_module(f"pendcli.formulas.{key}")
+            module = importlib.import_module(f"pendcli.papers.{key}.formulas")
             written += module.figures(plot, results[key])
         if fmt is OutputFormat.table:
             say(f"wrote {len(written)} figure(s) to {plot}")

@@ -37,9 +37,9 @@ def claims(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """Every printed number of the memoir against its recomputation, with a verdict."""
-    from pendcli import lecornu
-    from pendcli.claims import evaluate_paper
-    from pendcli.views import claim_columns
+    from pendcli.core.claims import evaluate_paper
+    from pendcli.papers.lecornu import claims as lecornu
+    from pendcli.render.views import claim_columns
 
     g = lecornu._real("g", g, *lecornu.G_RANGE, "m/s²")
     rows = [r.as_dict() for r in evaluate_paper("lecornu", lambda: lecornu.recompute(g))]
@@ -72,7 +72,7 @@ def zeros(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """The first K positive zeros of J_1 or J_2 (Lecornu's (15) and the vertical passages)."""
-    from pendcli.besselzeros import bessel_zeros
+    from pendcli.numerics.besselzeros import bessel_zeros
     from pendcli.render import Column
 
     if method is not None:
@@ -114,8 +114,8 @@ def example(
     plot: PlotOption = None,
 ) -> None:
     """The shortening pendulum of the example: elongations, amplitudes, vertical passages."""
-    from pendcli import lecornu
-    from pendcli.plotting import validate_plot_path
+    from pendcli.core.plotting import validate_plot_path
+    from pendcli.papers.lecornu import claims as lecornu
 
     plot = validate_plot_path(plot)
     elong, passages, summary = lecornu.example_rows(speed, length, g)
@@ -168,7 +168,7 @@ def ode_check(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """Bessel elongation times against solve_ivp on eq. (3), linear and with sin θ."""
-    from pendcli import lecornu
+    from pendcli.papers.lecornu import claims as lecornu
 
     amps = tuple(amplitude) if amplitude else (1.0, 5.0)
     for a in amps:
@@ -185,7 +185,7 @@ def ode_check(
 @app.command("g-sensitivity")
 def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
     """The g-dependent claims at several g, their verdicts, and the g that fits best."""
-    from pendcli import lecornu
+    from pendcli.papers.lecornu import claims as lecornu
     from pendcli.render import Column
 
     rows = lecornu.g_sensitivity()
@@ -215,7 +215,8 @@ def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
 @app.command("series")
 def series(fmt: FormatOption = OutputFormat.table) -> None:
     """Lecornu's series (10)/(13) in double precision: where cancellation destroys them."""
-    from pendcli import besselzeros, lecornu
+    from pendcli.numerics import besselzeros
+    from pendcli.papers.lecornu import claims as lecornu
     from pendcli.render import Column
 
     rows = lecornu.series_cancellation()
@@ -256,7 +257,7 @@ def zero_length(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """Amplitude growth as the length goes to zero (linear eq. (3) from rest, to a floor)."""
-    from pendcli import lecornu
+    from pendcli.papers.lecornu import claims as lecornu
 
     rows = lecornu.zero_length_behaviour(speed, length, g)
     columns = [_col(k, k.replace("_", " "), 6) for k in rows[0]]

@@ -121,7 +121,7 @@ def main(
 @app.command("list")
 def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.table) -> None:
     """Every claim with its id, paper and source (reads the tables only; computes nothing)."""
-    from pendcli.claims import list_rows, resolve_papers
+    from pendcli.core.claims import list_rows, resolve_papers
     from pendcli.render import Column
 
     rows = list_rows(resolve_papers(paper))
@@ -155,7 +155,7 @@ def reproduce(
     ] = False,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
-    from pendcli.claims import resolve_papers
+    from pendcli.core.claims import resolve_papers
     from pendcli.reproduce import reproduce_all
 
     keys = resolve_papers(paper)
@@ -203,7 +203,7 @@ def run() -> None:
     except ImportError:  # pragma: no cover
         from click import exceptions as click_exceptions
 
-    from pendcli.errors import PendcliError
+    from pendcli.core.errors import PendcliError
 
     try:
         code = app(standalone_mode=False)

@@ -39,11 +39,11 @@ def _angle_text(fmt_key: str):
 @app.command("claims")
 def claims(fmt: FormatOption = OutputFormat.table) -> None:
     """The printed numbers of the example and Resal's rate, with verdicts and the unit reading."""
-    from pendcli import tisserand
-    from pendcli.claims import evaluate_paper
-    from pendcli.formulas import formula_checks
+    from pendcli.core.claims import evaluate_paper
+    from pendcli.papers import formula_checks
+    from pendcli.papers.tisserand import claims as tisserand
     from pendcli.render import Column
-    from pendcli.views import FORMULA_COLUMNS, claim_columns
+    from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
     rows = [r.as_dict() for r in evaluate_paper("tisserand")]
     formulas = [f.as_dict() for f in formula_checks("tisserand")]
@@ -93,8 +93,8 @@ def example(
     plot: PlotOption = None,
 ) -> None:
     """Published / series / exact (two methods) side by side for any amplitudes."""
-    from pendcli import tisserand
-    from pendcli.plotting import validate_plot_path
+    from pendcli.core.plotting import validate_plot_path
+    from pendcli.papers.tisserand import claims as tisserand
     from pendcli.render import Column, fmt_float
 
     plot = validate_plot_path(plot)
@@ -145,8 +145,8 @@ def series(
     plot: PlotOption = None,
 ) -> None:
     """k', k'' and the precession from the series against the exact values over θ0."""
-    from pendcli import tisserand
-    from pendcli.plotting import validate_plot_path
+    from pendcli.core.plotting import validate_plot_path
+    from pendcli.papers.tisserand import claims as tisserand
     from pendcli.render import Column, fmt_float
 
     plot = validate_plot_path(plot)

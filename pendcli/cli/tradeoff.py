@@ -42,14 +42,14 @@ def tradeoff(
     """Measure each method's worst error (against an independent reference) and its cost."""
     from pendcli import tradeoff as wp
     from pendcli.cli.common import say
-    from pendcli.plotting import validate_plot_path
+    from pendcli.core.plotting import validate_plot_path
     from pendcli.render import Column, fmt_float
 
     plot = validate_plot_path(plot)
     ready, skipped = wp.available_families()
     if family is not None:
         if family in skipped:
-            from pendcli.errors import PendcliError
+            from pendcli.core.errors import PendcliError
 
             raise PendcliError(f"family {family!r} is skipped: {skipped[family]}")
         wp._family(family)  # one-line error for an unknown name
@@ -103,7 +103,7 @@ class _progress:
             return lambda label: None
         from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-        from pendcli.console import console
+        from pendcli.core.console import console
 
         self.bar = Progress(
             TextColumn("{task.description}"),

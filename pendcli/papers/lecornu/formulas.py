@@ -25,8 +25,8 @@ from functools import cache
 
 import numpy as np
 
-from pendcli.claims import FormulaRow
-from pendcli.formulas.engine import (
+from pendcli.core.claims import FormulaRow
+from pendcli.core.formula_engine import (
     DEFAULT_REFERENCE,
     Reference,
     Study,

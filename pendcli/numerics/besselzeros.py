@@ -38,7 +38,7 @@ from functools import cache
 
 import numpy as np
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 __all__ = [
     "AUTO_SWITCH",

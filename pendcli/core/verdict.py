@@ -1,6 +1,6 @@
 """Decide how a recomputed value stands against a printed one.
 
-Rules (the printed string fixes the unit ``u`` of its last place, see :mod:`pendcli.numbers`):
+Rules (the printed string fixes the unit ``u`` of its last place, see :mod:`pendcli.core.numbers`):
 
 ``agrees``
     the recomputed value rounds to the printed one: ``|r - p| <= u/2``.
@@ -27,7 +27,7 @@ import math
 from dataclasses import dataclass
 from enum import StrEnum
 
-from pendcli.numbers import PrintedNumber
+from pendcli.core.numbers import PrintedNumber
 
 __all__ = ["Comparison", "Verdict", "judge"]
 

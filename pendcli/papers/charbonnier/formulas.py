@@ -16,9 +16,8 @@ import math
 
 import numpy as np
 
-from pendcli.charbonnier import integral_pi_exact, printed_closed_form
-from pendcli.claims import FormulaRow
-from pendcli.formulas.engine import (
+from pendcli.core.claims import FormulaRow
+from pendcli.core.formula_engine import (
     DEFAULT_REFERENCE,
     Reference,
     Study,
@@ -28,6 +27,7 @@ from pendcli.formulas.engine import (
     make_row,
     plot_studies,
 )
+from pendcli.papers.charbonnier.claims import integral_pi_exact, printed_closed_form
 
 
 def formula_checks(ref=None) -> list[FormulaRow]:
@@ -301,7 +301,7 @@ def general_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
 
 def monomial_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     """ΔT = 0 (n° 13), Δα (n° 16) for b_n v^n, n = 0..5, ΔT_1/2 and Δv_m (n° 17), (9)."""
-    from pendcli.charbonnier import integral_pi
+    from pendcli.papers.charbonnier.claims import integral_pi
 
     rows = []
     deltas = np.array(DELTA_SWEEP)
@@ -316,7 +316,7 @@ def monomial_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
         res = (ev["theta_end"] - ALPHA - d_alpha) / ALPHA
         note = (
             f"Resistance b_n v^n with n = {n}, b_n = δ/(k^(n−2)α^(n−1)l0^(n−1)); "
-            f"I_{n}(π) = {integral_pi(n):.10g} from pendcli.charbonnier.integral_pi. "
+            f"I_{n}(π) = {integral_pi(n):.10g} from pendcli.papers.charbonnier.claims.integral_pi. "
             "The printed second form −(b_n/g)(αgT/π)^n I_n(π) is the same expression "
             "(k = π/T, g = k²l0)."
         )

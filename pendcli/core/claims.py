@@ -1,6 +1,7 @@
 """The comparison engine: published values (data) joined with recomputations (code).
 
-A paper module (``pendcli.charbonnier`` ...) exposes ``recompute() -> dict[id, Recomputed]``.
+A paper's claims module (``pendcli.papers.<paper>.claims``) exposes
+``recompute() -> dict[id, Recomputed]``.
 :func:`evaluate_paper` loads the paper's published table, calls it, and judges every claim.
 Every published entry must have a recomputation and every recomputation a published entry:
 a claim without a computation is a defect, reported as an error, never silently skipped.
@@ -14,9 +15,9 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from types import ModuleType
 
-from pendcli.errors import PendcliError
-from pendcli.tables import PaperTable, PublishedValue, load_paper_table
-from pendcli.verdict import judge
+from pendcli.core.errors import PendcliError
+from pendcli.core.tables import PaperTable, PublishedValue, load_paper_table
+from pendcli.core.verdict import judge
 
 __all__ = [
     "PAPERS",
@@ -98,7 +99,7 @@ def _json_number(v: object) -> object:
 def paper_module(key: str) -> ModuleType:
     if key not in PAPERS:
         raise PendcliError(f"unknown paper {key!r}; choose one of {', '.join(PAPERS)}")
-    return importlib.import_module(f"pendcli.{key}")
+    return importlib.import_module(f"pendcli.papers.{key}.claims")
 
 
 def resolve_papers(paper: str | None) -> tuple[str, ...]:

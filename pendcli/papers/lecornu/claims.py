@@ -16,7 +16,7 @@ Reproduced here, section II (small oscillations):
   (mean-pendulum comparison, after (28)), and k⁴ in section III.
 
 Methods. The author's model (the linear equation, solution (10)) is done exactly with
-scipy.special and :mod:`pendcli.besselzeros`; each derived table is also recomputed by the
+scipy.special and :mod:`pendcli.numerics.besselzeros`; each derived table is also recomputed by the
 author's own procedure from his printed, rounded intermediate values (given in the notes), so a
 carried rounding can be told from a slip. Where a fuller model answers a question about a claim
 it fills ``Recomputed.exact``:
@@ -40,9 +40,9 @@ from pathlib import Path
 
 import numpy as np
 
-from pendcli.besselzeros import bessel_zeros, lecornu_series
-from pendcli.claims import Recomputed
-from pendcli.errors import PendcliError
+from pendcli.core.claims import Recomputed
+from pendcli.core.errors import PendcliError
+from pendcli.numerics.besselzeros import bessel_zeros, lecornu_series
 
 __all__ = [
     "EXAMPLE_LENGTH",
@@ -531,7 +531,7 @@ def series_cancellation(zs=(2, 5, 10, 15, 20, 25, 30, 35, 40)) -> list[dict]:
     """J_1 and J_2 from Lecornu's series (10)/(13) in double precision against mpmath."""
     import mpmath as mp
 
-    from pendcli.besselzeros import series_error_bound
+    from pendcli.numerics.besselzeros import series_error_bound
 
     rows = []
     with mp.workdps(40):
@@ -584,8 +584,8 @@ def _g_values(g: float) -> dict[str, float]:
 
 def g_sensitivity(gs=(9.78, 9.80, G_PARIS, 9.81, 9.83)) -> list[dict]:
     """Each g-dependent claim recomputed at several g, with its verdict and d(value)/dg."""
-    from pendcli.tables import load_paper_table
-    from pendcli.verdict import judge
+    from pendcli.core.tables import load_paper_table
+    from pendcli.core.verdict import judge
 
     table = {c.id: c for c in load_paper_table("lecornu").claims}
     per_g = {g: _g_values(g) for g in gs}
@@ -613,8 +613,8 @@ def best_g(lo: float = 9.70, hi: float = 9.90, step: float = 0.0005) -> dict:
     Score: Σ ((recomputed - printed)/u)² over the g-dependent claims, u the printed last
     unit; also the g range where the most claims agree.
     """
-    from pendcli.tables import load_paper_table
-    from pendcli.verdict import Verdict, judge
+    from pendcli.core.tables import load_paper_table
+    from pendcli.core.verdict import Verdict, judge
 
     table = {c.id: c for c in load_paper_table("lecornu").claims}
     ids = _g_dependent_ids()
@@ -662,7 +662,7 @@ def _chop(v: float, decimals: int) -> float:
 
 def _printed_values(prefix: str, count: int) -> np.ndarray:
     """The printed values of claims ``prefix1..prefixN`` (or ``prefix`` alone), in table order."""
-    from pendcli.tables import load_paper_table
+    from pendcli.core.tables import load_paper_table
 
     claims = {c.id: c.number.value for c in load_paper_table("lecornu").claims}
     ids = (
@@ -698,7 +698,7 @@ def recompute(g: float = G) -> dict[str, Recomputed]:
 
     out["lecornu.j2_zeros.count_below_20"] = Recomputed(
         float(np.sum(z2 < TABLE_LIMIT)),
-        method="zeros of J_2 (pendcli.besselzeros, auto) below 20",
+        method="zeros of J_2 (pendcli.numerics.besselzeros, auto) below 20",
         note=f"The sixth zero is {z2[5]:.4f}, just beyond the table's end.",
     )
     for k in range(5):
@@ -951,7 +951,7 @@ def plot_example(
     path: str | Path, speed: float = EXAMPLE_SPEED, length: float = EXAMPLE_LENGTH, g: float = G
 ) -> Path:
     """θ/θ0 against time for solution (10) and for the release from rest, events marked."""
-    from pendcli.plotting import new_figure
+    from pendcli.core.plotting import new_figure
 
     m = example_model(speed, length, g)
     rest = from_rest_model(speed, length, g, floor_fraction=0.02)
@@ -987,8 +987,8 @@ _VERDICT_COLOURS = {"agrees": "C2", "truncated": "C1", "last-digit": "C1"}
 def figures(outdir: str | Path) -> list[Path]:
     """(1) θ/θ0 of the example against time, published and recomputed elongations and vertical
     passages marked; (2) printed minus recomputed, in units of the printed last digit."""
-    from pendcli.claims import evaluate_paper
-    from pendcli.plotting import new_figure
+    from pendcli.core.claims import evaluate_paper
+    from pendcli.core.plotting import new_figure
 
     outdir = Path(outdir)
     m = example_model()
@@ -1062,7 +1062,7 @@ def figures(outdir: str | Path) -> list[Path]:
         ("J1 lengths", [f"lecornu.j1_lengths.{k}" for k in range(1, 7)]),
         ("J0", [f"lecornu.j0_at_j2_zeros.{k}" for k in range(1, 6)]),
     ]
-    from pendcli.numbers import parse_printed
+    from pendcli.core.numbers import parse_printed
 
     path2 = outdir / "lecornu_printed_minus_recomputed.png"
     bars = []  # (x, difference in printed units, verdict, label), groups one slot apart

@@ -22,8 +22,8 @@ import math
 
 import numpy as np
 
-from pendcli.claims import FormulaRow
-from pendcli.formulas.engine import (
+from pendcli.core.claims import FormulaRow
+from pendcli.core.formula_engine import (
     Study,
     extrapolate_to_zero,
     identify,

@@ -34,7 +34,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from pendcli.claims import FormulaRow
+from pendcli.core.claims import FormulaRow
 
 __all__ = [
     "DEFAULT_REFERENCE",
@@ -322,7 +322,7 @@ def plot_studies(path, rows: Sequence[FormulaRow], title: str, ncols: int = 4) -
     """
     from matplotlib.ticker import LogLocator, NullFormatter, NullLocator
 
-    from pendcli.plotting import new_figure
+    from pendcli.core.plotting import new_figure
 
     rows = [r for r in rows if r.residuals and r.claimed_order is not None]
     if not rows:

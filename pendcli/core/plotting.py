@@ -5,7 +5,7 @@ from __future__ import annotations
 from contextlib import contextmanager
 from pathlib import Path
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 __all__ = ["new_figure", "save_figure"]
 

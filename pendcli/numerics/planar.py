@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 __all__ = [
     "G_STANDARD",

@@ -14,8 +14,8 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
-from pendcli.errors import PendcliError
-from pendcli.numbers import PrintedNumber, exact_number, parse_printed
+from pendcli.core.errors import PendcliError
+from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
 
 __all__ = ["PaperTable", "PublishedValue", "load_paper_table", "tables_dir"]
 
@@ -56,7 +56,7 @@ def tables_dir() -> Path:
     override = os.environ.get("PENDCLI_TABLES")
     if override:
         return Path(override)
-    return Path(__file__).resolve().parent / "_tables"
+    return Path(__file__).resolve().parent.parent / "_tables"
 
 
 def load_paper_table(key: str, root: Path | None = None) -> PaperTable:

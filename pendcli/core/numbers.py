@@ -21,7 +21,7 @@ import re
 from dataclasses import dataclass
 from fractions import Fraction
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 __all__ = ["PrintedNumber", "exact_number", "parse_printed"]
 

@@ -23,8 +23,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from pendcli.charbonnier import integral_pi
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
+from pendcli.papers.charbonnier.claims import integral_pi
 
 __all__ = [
     "SwingResult",

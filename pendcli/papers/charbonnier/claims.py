@@ -32,8 +32,8 @@ import math
 from fractions import Fraction
 from functools import cache
 
-from pendcli.claims import Recomputed
-from pendcli.errors import PendcliError
+from pendcli.core.claims import Recomputed
+from pendcli.core.errors import PendcliError
 
 __all__ = [
     "MAX_N",
@@ -343,8 +343,8 @@ def recompute() -> dict[str, Recomputed]:
 
 def plot_table(path, n_max: int = 5) -> None:
     """I_n(π) against n on log-log axes, printed entries marked, with the √(2π/n) asymptote."""
-    from pendcli.plotting import new_figure
-    from pendcli.tables import load_paper_table
+    from pendcli.core.plotting import new_figure
+    from pendcli.core.tables import load_paper_table
 
     n_max = max(n_max, 40)
     ns = list(range(-1, n_max + 1))
@@ -383,7 +383,7 @@ def plot_table(path, n_max: int = 5) -> None:
 
 def table_rows(n_max: int = 5) -> list[dict]:
     """n = -1..n_max: printed (n <= 5), the printed closed form, the recurrence, the beta form."""
-    from pendcli.tables import load_paper_table
+    from pendcli.core.tables import load_paper_table
 
     if isinstance(n_max, bool) or not isinstance(n_max, int) or not -1 <= n_max <= 10_000:
         raise PendcliError(f"--n-max = {n_max} is out of range; valid range is -1..10000")

@@ -1,8 +1,8 @@
 """The spherical (conical) pendulum done exactly: no small-amplitude series.
 
-This is the fuller model behind the Tisserand claims (:mod:`pendcli.tisserand`). Units: time in
-1/k with k = √(g/l), angles in radians, lengths in l. The bob swings between the largest
-angle θ0 and the smallest θ1 from the downward vertical; at t = 0, θ = θ0 and φ = 0.
+This is the fuller model behind the Tisserand claims (:mod:`pendcli.papers.tisserand`).
+Units: time in 1/k with k = √(g/l), angles in radians, lengths in l. The bob swings
+between the largest angle θ0 and the smallest θ1 from the downward vertical; at t = 0, θ = θ0 and φ = 0.
 
 Tisserand's variables (his eqs. (3), (9), (10)): ``sin²θ = u0² cos²ψ + u1² sin²ψ`` defines the
 eccentric anomaly ψ (it grows by π per radial period T_r, from one end of the major axis to
@@ -49,7 +49,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from pendcli.errors import PendcliError
+from pendcli.core.errors import PendcliError
 
 __all__ = [
     "METHODS",

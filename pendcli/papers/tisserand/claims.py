@@ -20,7 +20,7 @@ be 1.1'', not 1°7'33''); with degrees (30°, 15°) Tisserand's own series give 
 
 Methods: ``Recomputed.value`` is what Tisserand's formulas give (:func:`series_conical`, the
 series as printed in the summary (I), (II), (V)); ``Recomputed.exact`` is the same quantity
-from the exact motion (:mod:`pendcli.spherical`: quadrature of his (4)-(5), checked against
+from the exact motion (:mod:`pendcli.numerics.spherical`: quadrature of his (4)-(5), checked against
 direct integration of Newton's equations and, for k', k'' and Ω, against complete elliptic
 integrals). No value of g is needed: everything is in units of k = √(g/l) and of l
 (l = 0,5 m only for the displacement).
@@ -40,9 +40,9 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from pendcli.claims import Recomputed
-from pendcli.errors import PendcliError
-from pendcli.spherical import (
+from pendcli.core.claims import Recomputed
+from pendcli.core.errors import PendcliError
+from pendcli.numerics.spherical import (
     ConicalMotion,
     check_amplitudes,
     exact_conical,
@@ -98,7 +98,7 @@ def parse_angle(text: str, name: str = "angle") -> float:
         raise PendcliError(f"{name} is empty; write an angle with its unit, e.g. {_ANGLE_FORMS}")
     s = text.strip().replace("’", "'")
     if _SEXAGESIMAL.match(s):
-        from pendcli.numbers import parse_printed
+        from pendcli.core.numbers import parse_printed
 
         return math.radians(parse_printed(s).value)
     m = _NUMBER_UNIT.match(s)
@@ -219,7 +219,7 @@ def _deg(rad: float) -> float:
 
 def angle_text(rad: float) -> str:
     """1°7'33.14'' for readable angles; seconds in scientific notation below 0.01''."""
-    from pendcli.views import sexagesimal
+    from pendcli.render.views import sexagesimal
 
     if abs(rad) < 0.01 * _ARCSEC:
         return f"{rad / _ARCSEC:.2e}''"
@@ -228,10 +228,10 @@ def angle_text(rad: float) -> str:
 
 def resal_rate_limit() -> float:
     """Ω/(u0 u1) of the exact motion at zero amplitude: eq. (5) minus dφ1/dψ, per u0 u1,
-    averaged over ψ (the integrand is regular there, see :mod:`pendcli.spherical`)."""
+    averaged over ψ (the integrand is regular there, see :mod:`pendcli.numerics.spherical`)."""
     import numpy as np
 
-    from pendcli.spherical import _integrands
+    from pendcli.numerics.spherical import _integrands
 
     psi = np.arange(64) * (math.pi / 64)
     _, q = _integrands(0.0, 0.0, psi)
@@ -309,7 +309,7 @@ def recompute() -> dict[str, Recomputed]:
     shift_series = displacement_mm(series, EXAMPLE_LENGTH_M)
     shift_exact = displacement_mm(exact, EXAMPLE_LENGTH_M)
     # the printed bound « au plus un cinquième de millimètre », read from the table
-    from pendcli.tables import load_paper_table
+    from pendcli.core.tables import load_paper_table
 
     bound = {c.id: c.number.value for c in load_paper_table("tisserand").claims}[
         "tisserand.example.displacement"
@@ -440,7 +440,7 @@ def _elliptic_rel_diff(elliptic: ConicalMotion | None, key: str, exact: float) -
 
 def _printed_for(theta0: float, theta1: float, length_m: float) -> dict[str, str]:
     """The printed strings, when the amplitudes are the example's (either reading)."""
-    from pendcli.tables import load_paper_table
+    from pendcli.core.tables import load_paper_table
 
     readings = [_example_angles(EXAMPLE_READING), _example_angles(EXAMPLE_AS_PRINTED)]
     if not any(
@@ -516,7 +516,7 @@ def plot_path(path, theta0: float | None = None, theta1: float | None = None, tu
     """The bob's projection over ``turns`` radial periods: exact path, series path, ellipses."""
     import numpy as np
 
-    from pendcli.plotting import new_figure
+    from pendcli.core.plotting import new_figure
 
     if theta0 is None or theta1 is None:
         theta0, theta1 = _example_angles()
@@ -558,7 +558,7 @@ def plot_series_error(path, ratio: float = 0.5):
     """|series - exact|/|exact| for k', k'', Ω and the printed coefficients, against θ0."""
     import numpy as np
 
-    from pendcli.plotting import new_figure
+    from pendcli.core.plotting import new_figure
 
     degrees = np.geomspace(0.5, 85.0, 40)
     curves: dict[str, list[float]] = {

@@ -6,7 +6,7 @@ paper modules (which know only numbers).
 
 from __future__ import annotations
 
-from pendcli.numbers import parse_printed
+from pendcli.core.numbers import parse_printed
 from pendcli.render import Column, fmt_float
 
 
