@@ -6,3 +6,11 @@ nothing of pendulums), :mod:`pendcli.numerics` (Bessel zeros, planar and spheric
 pendulum done exactly), :mod:`pendcli.papers` (one package per paper: its model, claims,
 formulas, figures and speed/accuracy families) and :mod:`pendcli.cli`, a thin adapter.
 """
+
+# The version has one source, pyproject.toml, read through the installed metadata.
+def __getattr__(name: str) -> str:
+    if name == "__version__":
+        from importlib.metadata import version
+
+        return version("pendcli")
+    raise AttributeError(name)

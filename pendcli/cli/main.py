@@ -103,9 +103,9 @@ PaperOption = Annotated[
 
 def _version(value: bool) -> None:
     if value:
-        from pendcli import __version__
+        from importlib.metadata import version as installed_version
 
-        print(f"pendcli {__version__}")
+        print(f"pendcli {installed_version('pendcli')}")
         raise typer.Exit()
 
 

@@ -2,7 +2,8 @@
 
 This is the fuller model behind the Tisserand claims (:mod:`pendcli.papers.tisserand`).
 Units: time in 1/k with k = √(g/l), angles in radians, lengths in l. The bob swings
-between the largest angle θ0 and the smallest θ1 from the downward vertical; at t = 0, θ = θ0 and φ = 0.
+between the largest angle θ0 and the smallest θ1 from the downward vertical; at t = 0,
+θ = θ0 and φ = 0.
 
 Tisserand's variables (his eqs. (3), (9), (10)): ``sin²θ = u0² cos²ψ + u1² sin²ψ`` defines the
 eccentric anomaly ψ (it grows by π per radial period T_r, from one end of the major axis to
