@@ -17,10 +17,19 @@ from pathlib import Path
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
 
-__all__ = ["PaperTable", "PublishedValue", "load_paper_table", "tables_dir"]
+__all__ = [
+    "PaperConstant",
+    "PaperTable",
+    "PublishedValue",
+    "load_paper_table",
+    "paper_constant",
+    "tables_dir",
+]
 
 _REQUIRED = ("id", "source", "quantity", "published")
 _OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison", "precision")
+_PAPER_FIELDS = ("key", "citation", "seed", "assumptions", "constants")
+_CONSTANT_FIELDS = ("value", "unit", "source")
 _PRECISIONS = ("printed", "exact")
 _COMPARISONS = ("equal", "upper-bound")
 
@@ -43,12 +52,40 @@ class PublishedValue:
 
 
 @dataclass(frozen=True)
+class PaperConstant:
+    """A number the paper fixes or the model assumes (g, a speed), with where it comes from."""
+
+    name: str
+    value: float
+    unit: str
+    source: str  # "printed, II (15)" or "assumption: ..."
+
+
+@dataclass(frozen=True)
 class PaperTable:
     key: str
     citation: str
     seed: str
     assumptions: tuple[str, ...]
     claims: tuple[PublishedValue, ...]
+    constants: tuple[PaperConstant, ...] = ()
+
+    def constant(self, name: str) -> float:
+        """The value of constant ``name`` from ``[paper.constants]``."""
+        for c in self.constants:
+            if c.name == name:
+                return c.value
+        raise PendcliError(
+            f"{self.key}: no constant {name!r} in [paper.constants]; "
+            f"known: {', '.join(c.name for c in self.constants) or 'none'}"
+        )
+
+    def claim(self, claim_id: str) -> PublishedValue:
+        """The published entry ``claim_id`` (a printed intermediate the model reuses)."""
+        for c in self.claims:
+            if c.id == claim_id:
+                return c
+        raise PendcliError(f"{self.key}: no published claim {claim_id!r}")
 
 
 def tables_dir() -> Path:
@@ -57,6 +94,36 @@ def tables_dir() -> Path:
     if override:
         return Path(override)
     return Path(__file__).resolve().parent.parent / "_tables"
+
+
+def paper_constant(key: str, name: str) -> float:
+    """Constant ``name`` of paper ``key`` (e.g. ``paper_constant("lecornu", "g")``)."""
+    return load_paper_table(key).constant(name)
+
+
+def _constants(path: Path, raw: object) -> tuple[PaperConstant, ...]:
+    if raw is None:
+        return ()
+    if not isinstance(raw, dict):
+        raise PendcliError(f"{path}: [paper.constants] must be a table")
+    out = []
+    for name, entry in raw.items():
+        where = f"{path}: [paper.constants.{name}]"
+        if not isinstance(entry, dict):
+            raise PendcliError(f"{where} must be a table with value, unit, source")
+        unknown = set(entry) - set(_CONSTANT_FIELDS)
+        if unknown:
+            raise PendcliError(f"{where}: unknown field(s) {', '.join(sorted(unknown))}")
+        value = entry.get("value")
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise PendcliError(f"{where}: value must be a number")
+        for field in ("unit", "source"):
+            if not isinstance(entry.get(field, ""), str):
+                raise PendcliError(f"{where}: {field} must be a string")
+        if not entry.get("source"):
+            raise PendcliError(f"{where}: source must say where the value comes from")
+        out.append(PaperConstant(name, float(value), entry.get("unit", ""), entry["source"]))
+    return tuple(out)
 
 
 def load_paper_table(key: str, root: Path | None = None) -> PaperTable:
@@ -77,6 +144,9 @@ def _load_paper_table(key: str, root: Path) -> PaperTable:
     paper = raw.get("paper")
     if not isinstance(paper, dict) or paper.get("key") != key:
         raise PendcliError(f"{path}: [paper] must be a table with key = {key!r}")
+    unknown_paper = set(paper) - set(_PAPER_FIELDS)
+    if unknown_paper:
+        raise PendcliError(f"{path}: [paper]: unknown field(s) {', '.join(sorted(unknown_paper))}")
     for field in ("citation", "seed"):
         if not isinstance(paper.get(field), str):
             raise PendcliError(f"{path}: [paper] needs a string {field!r}")
@@ -143,4 +213,5 @@ def _load_paper_table(key: str, root: Path) -> PaperTable:
         seed=paper["seed"],
         assumptions=tuple(assumptions),
         claims=tuple(claims),
+        constants=_constants(path, paper.get("constants")),
     )
