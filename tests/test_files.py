@@ -1,0 +1,163 @@
+"""Atomic files and folders (issue 15): a crash leaves the old content or the new, never a mix."""
+
+from __future__ import annotations
+
+import os
+import resource
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+
+from pendcli.core.errors import PendcliError
+from pendcli.core.files import atomic_write, locked, remove_stale, replace_directory
+
+
+def _snapshot(folder: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
+
+
+def test_atomic_write_replaces_whole_file(tmp_path: Path) -> None:
+    target = tmp_path / "t.csv"
+    target.write_text("old\n")
+    atomic_write(target, "new\n")
+    assert target.read_text() == "new\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["t.csv"]  # no temporary left behind
+
+
+def test_atomic_write_names_path_and_cause(tmp_path: Path) -> None:
+    with pytest.raises(PendcliError, match=r"cannot write .*missing/x\.csv: No such file"):
+        atomic_write(tmp_path / "missing" / "x.csv", "a")
+
+
+def test_replace_directory_drops_stale_files(tmp_path: Path) -> None:
+    target = tmp_path / "tables"
+    target.mkdir()
+    (target / "a.csv").write_text("old a")
+    (target / "stale.csv").write_text("stale")
+
+    def fill(tmp: Path) -> None:
+        (tmp / "a.csv").write_text("new a")
+        (tmp / "b.csv").write_text("new b")
+
+    replace_directory(target, fill)
+    assert _snapshot(target) == {"a.csv": b"new a", "b.csv": b"new b"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["tables"]
+
+
+def test_replace_directory_keeps_old_when_fill_fails(tmp_path: Path) -> None:
+    target = tmp_path / "tables"
+    target.mkdir()
+    (target / "a.csv").write_text("old a")
+
+    def fill(tmp: Path) -> None:
+        (tmp / "a.csv").write_text("half")
+        raise PendcliError("boom")
+
+    with pytest.raises(PendcliError, match="boom"):
+        replace_directory(target, fill)
+    assert _snapshot(target) == {"a.csv": b"old a"}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["tables"]
+
+
+_WRITER = textwrap.dedent(
+    """
+    import sys, time
+    from pathlib import Path
+    from pendcli.core.files import replace_directory
+
+    def fill(tmp):
+        for i in range(6):
+            with open(tmp / f"t{i}.csv", "w") as fh:
+                for _ in range(200):
+                    fh.write("new," * 50 + "\\n")
+                    fh.flush()
+                time.sleep(0.002)
+
+    while True:
+        replace_directory(Path(sys.argv[1]), fill)
+    """
+)
+
+
+@pytest.mark.parametrize("delay", [0.01, 0.03, 0.05, 0.08, 0.13, 0.21])
+def test_kill_during_replace_leaves_old_or_new(tmp_path: Path, delay: float) -> None:
+    target = tmp_path / "tables"
+    target.mkdir()
+    for i in range(6):
+        (target / f"t{i}.csv").write_text("old\n")
+    old = _snapshot(target)
+    new = {f"t{i}.csv": ("new," * 50 + "\n").encode() * 200 for i in range(6)}
+    proc = subprocess.Popen([sys.executable, "-c", _WRITER, str(target)])
+    time.sleep(delay)
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    assert _snapshot(target) in (old, new)
+    remove_stale(tmp_path, "tables")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["tables"]
+
+
+def _limited_fill(tmp: Path) -> None:
+    (tmp / "big.csv").write_bytes(b"x" * 20_000)
+
+
+def test_file_size_limit_leaves_old_content(tmp_path: Path) -> None:
+    target = tmp_path / "tables"
+    target.mkdir()
+    (target / "a.csv").write_text("old")
+    script = textwrap.dedent(
+        f"""
+        import resource
+        from pathlib import Path
+        from pendcli.core.errors import PendcliError
+        from pendcli.core.files import replace_directory
+        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, {resource.RLIM_INFINITY}))
+        def fill(tmp):
+            (tmp / "big.csv").write_bytes(b"x" * 20000)
+        try:
+            replace_directory(Path({str(target)!r}), fill)
+        except PendcliError as exc:
+            print(exc)
+            raise SystemExit(2)
+        """
+    )
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert out.returncode == 2, out.stderr
+    assert "File too large" in out.stdout and str(target) in out.stdout
+    assert _snapshot(target) == {"a.csv": b"old"}
+
+
+def test_exclusive_lock_blocks_a_second_writer(tmp_path: Path) -> None:
+    lock = tmp_path / ".lock"
+    holder = subprocess.Popen(
+        [
+            sys.executable,
+            "-c",
+            "import sys, time; from pendcli.core.files import locked\n"
+            f"with locked({str(lock)!r}):\n    print('held', flush=True); time.sleep(0.6)",
+        ],
+        stdout=subprocess.PIPE,
+        text=True,
+    )
+    assert holder.stdout is not None and holder.stdout.readline().strip() == "held"
+    start = time.perf_counter()
+    with locked(lock, shared=True):
+        waited = time.perf_counter() - start
+    holder.wait()
+    assert waited > 0.2  # the reader waited for the writer to finish
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
+def test_read_only_folder_is_a_named_error(tmp_path: Path) -> None:
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    folder.chmod(0o555)
+    try:
+        with pytest.raises(PendcliError, match="Permission denied"):
+            atomic_write(folder / "x.csv", "a")
+    finally:
+        folder.chmod(0o755)
