@@ -31,6 +31,7 @@ regen: $(STAMP)
 lint: $(STAMP)
 	$(BIN)/ruff check pendcli tests
 	$(BIN)/ruff format --check pendcli tests
+	$(BIN)/mypy pendcli
 
 bench: $(STAMP)
 	$(BIN)/python -m pendcli.bench --write README.md
