@@ -59,6 +59,7 @@ __all__ = [
     "conical_limit",
     "exact_conical",
     "implicit_psi_coeffs",
+    "integrands",
     "planar_limit_k1",
     "projected_path",
 ]
@@ -171,7 +172,7 @@ def _log_near_one(defect, value):
     )
 
 
-def _integrands(theta0: float, theta1: float, psi: np.ndarray):
+def integrands(theta0: float, theta1: float, psi: np.ndarray):
     """F - 1 with F = k dt/dψ (eq. 4), and Q = (dφ'/dψ)/(u0 u1) (eq. 5 minus dφ1/dψ)."""
     u0, u1 = math.sin(theta0), math.sin(theta1)
     c0, c1 = math.cos(theta0), math.cos(theta1)
@@ -196,7 +197,7 @@ def _integrands(theta0: float, theta1: float, psi: np.ndarray):
 def _spectral(theta0: float, theta1: float, n: int, harmonics: int) -> ConicalMotion:
     u0u1 = math.sin(theta0) * math.sin(theta1)
     psi = np.arange(n) * (math.pi / n)
-    f_minus_1, q = _integrands(theta0, theta1, psi)
+    f_minus_1, q = integrands(theta0, theta1, psi)
     a0 = 1.0 + float(f_minus_1.mean())  # k T_r / π
     g = f_minus_1 - f_minus_1.mean()  # periodic part of k dt/dψ
     # ∫_0^ψ g by FFT: the π-periodic g has harmonics e^{2imψ}.
@@ -473,7 +474,7 @@ def implicit_psi_coeffs(theta0_rad: float, theta1_rad: float, harmonics: int = 2
     theta0, theta1 = check_amplitudes(theta0_rad, theta1_rad)
     n = _quadrature(theta0, theta1, harmonics, 1e-14).grid
     psi = np.arange(n) * (math.pi / n)
-    f_minus_1, _ = _integrands(theta0, theta1, psi)
+    f_minus_1, _ = integrands(theta0, theta1, psi)
     a0 = 1.0 + f_minus_1.mean()
     # F = a0 + Σ A_m cos 2mψ, A_m = (2/n) Σ F_j cos 2mψ_j; ∫ gives A_m sin 2mψ /(2m).
     return tuple(

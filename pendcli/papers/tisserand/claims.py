@@ -231,10 +231,10 @@ def resal_rate_limit() -> float:
     averaged over ψ (the integrand is regular there, see :mod:`pendcli.numerics.spherical`)."""
     import numpy as np
 
-    from pendcli.numerics.spherical import _integrands
+    from pendcli.numerics.spherical import integrands
 
     psi = np.arange(64) * (math.pi / 64)
-    _, q = _integrands(0.0, 0.0, psi)
+    _, q = integrands(0.0, 0.0, psi)
     return float(q.mean())
 
 
