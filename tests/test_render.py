@@ -1,14 +1,36 @@
-"""Renderers compared whole against expected strings; they know nothing of pendulums."""
+"""Renderers compared whole against expected text written by hand; they know nothing of
+pendulums. Each expectation is a literal (or a structure parsed independently of the renderer),
+so a change in any byte of the output fails."""
 
+from __future__ import annotations
+
+import csv
+import io
 import json
 
-from pendcli.render import Column, OutputFormat, render, to_csv, to_json, to_markdown
+import pytest
+from rich.console import Console
+
+from pendcli.render import (
+    Column,
+    OutputFormat,
+    fmt_float,
+    render,
+    renderer,
+    to_csv,
+    to_json,
+    to_markdown,
+)
 
 ROWS = [
     {"id": "a", "x": 1.5, "verdict": "agrees", "note": "pipe | here"},
     {"id": "b", "x": 0.1, "verdict": "discrepant", "note": None},
 ]
 COLS = [Column("id", "id"), Column("x", "x", justify="right"), Column("verdict", "verdict")]
+
+
+def _red_when_bad(text: str) -> str | None:
+    return "red" if text == "discrepant" else None
 
 
 def test_markdown_whole_output():
@@ -20,23 +42,104 @@ def test_markdown_whole_output():
     )
 
 
+def test_markdown_sections_have_titles_and_a_blank_line_between():
+    text = render(
+        OutputFormat.markdown, [("One", ROWS[:1], COLS[:1]), ("", ROWS[1:], COLS[:1])], {}
+    )
+    assert text == "### One\n\n| id |\n|---|\n| a |\n\n| id |\n|---|\n| b |\n"
+
+
 def test_csv_whole_output_round_trips_floats():
     assert to_csv(ROWS, ["id", "x", "note"]) == "id,x,note\na,1.5,pipe | here\nb,0.1,\n"
 
 
-def test_json_is_deterministic_and_has_no_nan():
-    doc = {"claims": [{"v": float("nan"), "w": 0.1 + 0.2}], "formulas": []}
-    text = to_json(doc)
-    assert text == to_json(doc)
-    assert json.loads(text) == {"claims": [{"v": None, "w": 0.30000000000000004}], "formulas": []}
+def test_csv_cells_floats_lists_and_non_finite():
+    rows = [{"v": 0.1 + 0.2, "w": float("inf"), "pairs": [(0.5, 2.0)], "n": 3, "s": 'say "x"'}]
+    text = to_csv(rows)
+    assert text == 'v,w,pairs,n,s\n0.30000000000000004,,"[[0.5, 2.0]]",3,"say ""x"""\n'
+    parsed = list(csv.reader(io.StringIO(text)))
+    assert float(parsed[1][0]) == 0.30000000000000004  # repr round-trips the exact double
+    assert json.loads(parsed[1][2]) == [[0.5, 2.0]]
 
 
-def test_rich_table_renders_all_rows():
-    from io import StringIO
+def test_csv_renderer_writes_the_union_of_keys_in_order_of_appearance():
+    sections = [("A", [{"id": "a", "x": 1}], COLS), ("B", [{"id": "b", "y": 2}], COLS)]
+    assert render(OutputFormat.csv, sections, {}) == "id,x,y\na,1,\nb,,2\n"
 
-    from rich.console import Console
 
-    buf = StringIO()
-    render(OutputFormat.table, [("T", ROWS, COLS)], {}, console=Console(file=buf, width=80))
-    out = buf.getvalue()
-    assert "agrees" in out and "discrepant" in out and "1.5" in out
+def test_json_whole_output():
+    doc = {
+        "claims": [{"v": float("nan"), "w": 0.1 + 0.2, "angle": "1°7'33''", "pair": (1, -2.5)}],
+        "formulas": [],
+        "inf": float("-inf"),
+    }
+    assert to_json(doc) == (
+        "{\n"
+        '  "claims": [\n'
+        "    {\n"
+        '      "v": null,\n'
+        '      "w": 0.30000000000000004,\n'
+        '      "angle": "1°7\'33\'\'",\n'
+        '      "pair": [\n'
+        "        1,\n"
+        "        -2.5\n"
+        "      ]\n"
+        "    }\n"
+        "  ],\n"
+        '  "formulas": [],\n'
+        '  "inf": null\n'
+        "}\n"
+    )
+
+
+def test_json_renderer_prints_the_document_not_the_sections():
+    assert render(OutputFormat.json, [("A", ROWS, COLS)], {"k": 1}) == '{\n  "k": 1\n}\n'
+
+
+def test_rich_table_whole_output():
+    cols = [*COLS[:2], Column("verdict", "verdict", style=_red_when_bad), Column("note", "n")]
+    console = Console(file=io.StringIO(), width=60)
+    text = render(OutputFormat.table, [("T", ROWS, cols)], {}, console=console)
+    assert text == (
+        "                   T                   \n"  # centred over the 39 columns
+        "┏━━━━┳━━━━━┳━━━━━━━━━━━━┳━━━━━━━━━━━━━┓\n"
+        "┃ id ┃   x ┃ verdict    ┃ n           ┃\n"
+        "┡━━━━╇━━━━━╇━━━━━━━━━━━━╇━━━━━━━━━━━━━┩\n"
+        "│ a  │ 1.5 │ agrees     │ pipe | here │\n"
+        "│ b  │ 0.1 │ discrepant │             │\n"
+        "└────┴─────┴────────────┴─────────────┘\n"
+    )
+
+
+def test_rich_table_cuts_long_cells_styles_and_escapes(monkeypatch):
+    monkeypatch.delenv("NO_COLOR", raising=False)  # conftest sets it; colour is tested here
+    rows = [{"verdict": "discrepant", "note": "[b]not markup[/b] and more"}]
+    cols = [Column("verdict", "v", style=_red_when_bad), Column("note", "note", table_max=12)]
+    console = Console(file=io.StringIO(), width=40, force_terminal=True, color_system="standard")
+    text = render(OutputFormat.table, [("", rows, cols)], {}, console=console)
+    assert "│ \x1b[31mdiscrepant\x1b[0m │ [b]not mark… │" in text  # red; markup shown as text
+    plain = render(OutputFormat.table, [("", rows, cols)], {}, console=Console(width=40))
+    assert "\x1b" not in plain
+
+
+@pytest.mark.parametrize("fmt", list(OutputFormat))
+def test_every_format_has_a_renderer_returning_text(fmt):
+    text = renderer(fmt, Console(file=io.StringIO(), width=80))([("T", ROWS, COLS)], {"a": 1})
+    assert isinstance(text, str) and text.endswith("\n")
+
+
+@pytest.mark.parametrize(
+    ("value", "text"),
+    [
+        (None, ""),
+        (float("nan"), ""),
+        (float("inf"), "inf"),
+        (-float("inf"), "-inf"),
+        (0.0, "0"),
+        (1 / 3, "0.3333333333"),
+        (123456789012.0, "1.23456789e+11"),
+        (2.5, "2.5"),
+    ],
+)
+def test_fmt_float(value, text):
+    assert fmt_float(value) == text

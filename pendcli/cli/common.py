@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import sys
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
 from pendcli.core.console import console
-from pendcli.render import OutputFormat
+from pendcli.render import OutputFormat, Section
 
 FormatOption = Annotated[
     OutputFormat,
@@ -21,13 +22,11 @@ PlotOption = Annotated[
 ]
 
 
-def emit(fmt: OutputFormat, sections, document: dict) -> None:
+def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, object]) -> None:
     """Print titled sections of rows (tables) or the whole document (JSON, CSV, Markdown)."""
     from pendcli.render import render
 
-    text = render(fmt, sections, document, console=console())
-    if text is not None:
-        sys.stdout.write(text)
+    sys.stdout.write(render(fmt, sections, document, console=console()))
 
 
 def say(message: str) -> None:

@@ -1,18 +1,48 @@
-"""Output formats over plain rows (dicts): rich table, JSON, CSV, Markdown.
+"""Output formats over plain rows (mappings): rich table, JSON, CSV, Markdown.
 
-A renderer knows columns and values, nothing about pendulums. Every renderer is
-deterministic: the same rows give the same bytes (no timestamps, fixed key order,
-floats written with ``repr`` in JSON and CSV so they round-trip exactly).
+One module per format (:mod:`~pendcli.render.table`, :mod:`~pendcli.render.json`,
+:mod:`~pendcli.render.csv`, :mod:`~pendcli.render.markdown`), each a renderer turning titled
+sections of rows (and the whole document, which JSON prints) into text; :class:`OutputFormat`
+maps ``--format`` to one. Renderers know columns and values, nothing about pendulums, and are
+deterministic: the same rows give the same bytes (no timestamps, fixed key order, floats
+written with ``repr`` in JSON and CSV so they round-trip exactly).
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+import importlib
+from collections.abc import Mapping, Sequence
 from enum import StrEnum
+from typing import TYPE_CHECKING, Protocol
 
-__all__ = ["Column", "OutputFormat", "fmt_float", "render"]
+from pendcli.render.columns import Column, Row, Section, fmt_float
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from pendcli.render.csv import to_csv
+    from pendcli.render.json import to_json
+    from pendcli.render.markdown import to_markdown
+    from pendcli.render.table import to_rich_table
+
+__all__ = [
+    "Column",
+    "OutputFormat",
+    "Renderer",
+    "Row",
+    "Section",
+    "fmt_float",
+    "render",
+    "renderer",
+    "to_csv",
+    "to_json",
+    "to_markdown",
+    "to_rich_table",
+]
+
+
+class Renderer(Protocol):
+    def __call__(self, sections: Sequence[Section], document: Mapping[str, object]) -> str: ...
 
 
 class OutputFormat(StrEnum):
@@ -22,152 +52,44 @@ class OutputFormat(StrEnum):
     markdown = "markdown"
 
 
-@dataclass(frozen=True)
-class Column:
-    key: str
-    header: str
-    fmt: Callable[[dict], str] | None = None  # text for table/markdown; default str(value)
-    justify: str = "left"
-    table_max: int | None = None  # in the terminal table only, cut longer text with "…"
-
-    def text(self, row: dict) -> str:
-        if self.fmt is not None:
-            return self.fmt(row)
-        value = row.get(self.key)
-        if value is None:
-            return ""
-        if isinstance(value, float):
-            return fmt_float(value)
-        return str(value)
-
-
-def fmt_float(value: float | None, sig: int = 10) -> str:
-    """A float for human eyes: ``sig`` significant digits, no trailing noise."""
-    if value is None or (isinstance(value, float) and math.isnan(value)):
-        return ""
-    if isinstance(value, float) and math.isinf(value):
-        return "inf" if value > 0 else "-inf"
-    if value == 0:
-        return "0"
-    return f"{value:.{sig}g}"
-
-
-VERDICT_STYLES = {
-    "agrees": "green",
-    "holds": "green",
-    "truncated": "yellow",
-    "last-digit": "yellow",
-    "discrepant": "bold red",
-    "fails": "bold red",
+# --format -> (module, renderer class). Modules load on first use: `pendcli --help` needs
+# only the enum.
+_RENDERERS: dict[OutputFormat, tuple[str, str]] = {
+    OutputFormat.table: ("pendcli.render.table", "TableRenderer"),
+    OutputFormat.json: ("pendcli.render.json", "JsonRenderer"),
+    OutputFormat.csv: ("pendcli.render.csv", "CsvRenderer"),
+    OutputFormat.markdown: ("pendcli.render.markdown", "MarkdownRenderer"),
+}
+_FUNCTIONS = {
+    "to_csv": "pendcli.render.csv",
+    "to_json": "pendcli.render.json",
+    "to_markdown": "pendcli.render.markdown",
+    "to_rich_table": "pendcli.render.table",
 }
 
 
-def _plain(value: object) -> object:
-    if isinstance(value, float):
-        if not math.isfinite(value):
-            return None
-        return value
-    if isinstance(value, tuple):
-        return [_plain(v) for v in value]
-    if isinstance(value, list):
-        return [_plain(v) for v in value]
-    if isinstance(value, dict):
-        return {k: _plain(v) for k, v in value.items()}
-    return value
+def __getattr__(name: str) -> object:
+    if name in _FUNCTIONS:
+        return getattr(importlib.import_module(_FUNCTIONS[name]), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def to_json(document: dict) -> str:
-    """Deterministic JSON (NaN/inf become null: JSON has no such numbers)."""
-    import json
-
-    return json.dumps(_plain(document), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
-
-
-def to_csv(rows: Sequence[dict], keys: Sequence[str] | None = None) -> str:
-    import csv
-    import io
-
-    keys = list(keys or (rows[0].keys() if rows else []))
-    buf = io.StringIO()
-    writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(keys)
-    for row in rows:
-        writer.writerow(["" if row.get(k) is None else _csv_cell(row.get(k)) for k in keys])
-    return buf.getvalue()
-
-
-def _csv_cell(value: object) -> str:
-    if isinstance(value, float):
-        return repr(value) if math.isfinite(value) else ""
-    if isinstance(value, (list, tuple)):
-        import json
-
-        return json.dumps(_plain(value))
-    return str(value)
-
-
-def to_markdown(rows: Sequence[dict], columns: Sequence[Column]) -> str:
-    def cell(text: str) -> str:
-        return text.replace("|", "\\|").replace("\n", " ")
-
-    lines = [
-        "| " + " | ".join(cell(c.header) for c in columns) + " |",
-        "|" + "|".join("---:" if c.justify == "right" else "---" for c in columns) + "|",
-    ]
-    lines += ["| " + " | ".join(cell(c.text(r)) for c in columns) + " |" for r in rows]
-    return "\n".join(lines) + "\n"
-
-
-def to_rich_table(rows: Sequence[dict], columns: Sequence[Column], title: str | None = None):
-    from rich.table import Table
-
-    table = Table(title=title, show_lines=False, header_style="bold")
-    for c in columns:
-        table.add_column(c.header, justify=c.justify, overflow="fold")
-    for r in rows:
-        cells = []
-        for c in columns:
-            text = c.text(r)
-            if c.table_max is not None and len(text) > c.table_max:
-                text = text[: c.table_max - 1].rstrip() + "…"
-            style = VERDICT_STYLES.get(text) if c.key == "verdict" else None
-            cells.append(f"[{style}]{text}[/]" if style else _escape(text))
-        table.add_row(*cells)
-    return table
-
-
-def _escape(text: str) -> str:
-    from rich.markup import escape
-
-    return escape(text)
+def renderer(fmt: OutputFormat, console: Console | None = None) -> Renderer:
+    """The renderer of ``fmt``; ``console`` (width, colour) matters to the table only."""
+    module, name = _RENDERERS[fmt]
+    cls = getattr(importlib.import_module(module), name)
+    return cls(console) if fmt is OutputFormat.table else cls()
 
 
 def render(
     fmt: OutputFormat,
-    sections: Sequence[tuple[str, Sequence[dict], Sequence[Column]]],
-    document: dict,
-    console=None,
-) -> str | None:
-    """Render titled sections of rows.
+    sections: Sequence[Section],
+    document: Mapping[str, object],
+    console: Console | None = None,
+) -> str:
+    """Titled sections of rows as text in format ``fmt``.
 
-    ``document`` is what JSON prints whole; CSV writes every row of every section with the
-    union of their keys; table prints to ``console`` (returns None); Markdown returns text.
+    JSON prints ``document`` whole; CSV writes every row of every section under the union of
+    their keys; Markdown and the table show each section under its title.
     """
-    if fmt is OutputFormat.json:
-        return to_json(document)
-    if fmt is OutputFormat.csv:
-        all_rows = [r for _, rows, _ in sections for r in rows]
-        keys: list[str] = []
-        for r in all_rows:
-            keys.extend(k for k in r if k not in keys)
-        return to_csv(all_rows, keys)
-    if fmt is OutputFormat.markdown:
-        parts = []
-        for title, rows, columns in sections:
-            if title:
-                parts.append(f"### {title}\n")
-            parts.append(to_markdown(rows, columns))
-        return "\n".join(parts)
-    for title, rows, columns in sections:
-        console.print(to_rich_table(rows, columns, title=title))
-    return None
+    return renderer(fmt, console)(sections, document)

@@ -1,13 +1,33 @@
 """Columns for claim and formula rows: what the table and Markdown outputs show.
 
-Kept apart from :mod:`pendcli.render` (which knows only columns and rows) and from the
-paper modules (which know only numbers).
+The one module under :mod:`pendcli.render` that knows what a claim is: the renderers know
+only columns and rows, the paper packages only numbers. The colour of a verdict is set here.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from pendcli.core.numbers import parse_printed
-from pendcli.render import Column, fmt_float
+from pendcli.render.columns import Column, Row, fmt_float
+
+__all__ = [
+    "CLAIM_COLUMNS",
+    "FORMULA_COLUMNS",
+    "VERDICT_STYLES",
+    "claim_columns",
+    "format_like_printed",
+    "sexagesimal",
+]
+
+VERDICT_STYLES = {
+    "agrees": "green",
+    "holds": "green",
+    "truncated": "yellow",
+    "last-digit": "yellow",
+    "discrepant": "bold red",
+    "fails": "bold red",
+}
 
 
 def format_like_printed(value: float | None, published: str) -> str:
@@ -35,12 +55,21 @@ def sexagesimal(degrees: float, seconds_decimals: int = 2) -> str:
     return f"{sign}{int(d)}°{int(m)}'{s:.{seconds_decimals}f}''"
 
 
-def _rel(row: dict) -> str:
+def _rel(row: Row) -> str:
     rel = row.get("rel_diff")
     return "" if rel is None else f"{rel:+.2e}"
 
 
-CLAIM_COLUMNS = (
+def _verdict_style(text: str) -> str | None:
+    return VERDICT_STYLES.get(text)
+
+
+def _observed(row: Row) -> str:
+    order = row.get("observed_order")
+    return "" if order is None else f"{order:.2f}"
+
+
+CLAIM_COLUMNS: tuple[Column, ...] = (
     Column("id", "claim"),
     Column("quantity", "quantity"),
     Column("source", "source"),
@@ -59,13 +88,13 @@ CLAIM_COLUMNS = (
     ),
     Column("unit", "unit"),
     Column("rel_diff", "rel. diff", fmt=_rel, justify="right"),
-    Column("verdict", "verdict"),
+    Column("verdict", "verdict", style=_verdict_style),
     # Notes can run to paragraphs: the terminal table shows their start, JSON, CSV, Markdown
     # and the report show them whole.
     Column("note", "note", table_max=160),
 )
 
-FORMULA_COLUMNS = (
+FORMULA_COLUMNS: tuple[Column, ...] = (
     Column("id", "formula"),
     Column("source", "source"),
     Column("published", "as printed"),
@@ -74,15 +103,15 @@ FORMULA_COLUMNS = (
     Column(
         "observed_order",
         "observed order",
-        fmt=lambda r: "" if r.get("observed_order") is None else f"{r['observed_order']:.2f}",
+        fmt=_observed,
         justify="right",
     ),
-    Column("verdict", "verdict"),
+    Column("verdict", "verdict", style=_verdict_style),
     Column("note", "note", table_max=160),
 )
 
 
-def claim_columns(rows: list[dict], with_note: bool = True) -> tuple[Column, ...]:
+def claim_columns(rows: Sequence[Row], with_note: bool = True) -> tuple[Column, ...]:
     """Drop the exact-model column when no row has one."""
     cols = CLAIM_COLUMNS
     if not any(r.get("exact") is not None for r in rows):
