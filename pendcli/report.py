@@ -172,7 +172,8 @@ def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
         if frows:
             lines += ["### Derived formulas", "", to_markdown(frows, FORMULA_COLUMNS)]
         figures: list[Path] = []
-        module = _module(f"pendcli.papers.{key}.claims")
+        # papers/<key>/figures.py (the layout of issue 11); claims.py until a paper has moved
+        module = _module(f"pendcli.papers.{key}.figures") or _module(f"pendcli.papers.{key}.claims")
         if module is not None and hasattr(module, "figures"):
             status(f"drawing the {key} figures")
             figures += list(module.figures(out / "figures" / key))

@@ -253,6 +253,7 @@ def _ref_period(amplitude: float):
 
 def _planar_rows() -> list[dict]:
     from pendcli.numerics import planar
+    from pendcli.papers.lecornu.model import lecornu_k4
 
     rows = []
     fam = "planar period T/T0"
@@ -286,7 +287,7 @@ def _planar_rows() -> list[dict]:
                 f"series in k², order {order}"
                 + (" (Lecornu keeps k², neglects k⁴)" if order == 1 else ""),
                 ", ".join(f"{a:g}°: {e:.1e}" for a, e in errs.items()),
-                f"k⁴ = {planar.lecornu_k4(20.0):.5f} at 20°, {planar.lecornu_k4(90.0):.2f} "
+                f"k⁴ = {lecornu_k4(20.0):.5f} at 20°, {lecornu_k4(90.0):.2f} "
                 "at 90°; diverges as θ0 → 180°",
                 "relative error of T against mpmath.ellipk at 50 digits",
             )
@@ -368,9 +369,9 @@ def _bessel_rows() -> list[dict]:
 
 
 def _conical_rows() -> list[dict]:
-    if importlib.util.find_spec("pendcli.papers.tisserand.claims") is None:
+    if importlib.util.find_spec("pendcli.papers.tisserand.model") is None:
         return []
-    tis = importlib.import_module("pendcli.papers.tisserand.claims")
+    tis = importlib.import_module("pendcli.papers.tisserand.model")
     if not (hasattr(tis, "exact_conical") and hasattr(tis, "series_conical")):
         return []
     rows = []

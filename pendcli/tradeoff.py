@@ -509,7 +509,7 @@ def _bessel_candidates(quick: bool) -> list[Candidate]:
 
 
 # ---------------------------------------------------------------------------------------------
-# The exact conical pendulum (pendcli.papers.tisserand.claims: exact_conical, series_conical)
+# The exact conical pendulum (pendcli.papers.tisserand.model: exact_conical, series_conical)
 
 
 def _conical_quantities(motion) -> tuple[float, float]:
@@ -548,7 +548,7 @@ def _ref_conical(problem, dps: int = 30):
 
 
 def _conical_candidates(quick: bool) -> list[Candidate]:
-    tis = importlib.import_module("pendcli.papers.tisserand.claims")
+    tis = importlib.import_module("pendcli.papers.tisserand.model")
     orders = (0, 6) if quick else tuple(getattr(tis, "SERIES_ORDERS", (0, 2, 4, 6)))
     rtols = (1e-4, 1e-10) if quick else (1e-3, 1e-5, 1e-7, 1e-9, 1e-11, 1e-13)
 
@@ -568,19 +568,19 @@ def _conical_candidates(quick: bool) -> list[Candidate]:
 
 
 # ---------------------------------------------------------------------------------------------
-# Lecornu's variable-length pendulum: elongation times (pendcli.papers.lecornu.claims)
+# Lecornu's variable-length pendulum: elongation times (pendcli.papers.lecornu.model)
 
 _LECORNU_PROBLEM = (0.35, 1.0, 9.81)  # Lecornu's example: 0.35 m/s, 1 m at t = 0, g = 9.81
 
 
 def _ref_lecornu(problem):
     """The exact Bessel-function solution (its zeros are checked against mpmath elsewhere)."""
-    lec = importlib.import_module("pendcli.papers.lecornu.claims")
+    lec = importlib.import_module("pendcli.papers.lecornu.model")
     return tuple(float(t) for t in lec.elongation_times(*problem, method="bessel"))
 
 
 def _lecornu_candidates(quick: bool) -> list[Candidate]:
-    lec = importlib.import_module("pendcli.papers.lecornu.claims")
+    lec = importlib.import_module("pendcli.papers.lecornu.model")
     reference = _ref_lecornu(_LECORNU_PROBLEM)
     rtols = (1e-3, 1e-9) if quick else (1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 
@@ -644,7 +644,7 @@ FAMILIES: dict[str, Family] = {
             [(math.radians(20.0), math.radians(10.0)), (math.radians(10.0), math.radians(2.0))],
             _ref_conical,
             _conical_candidates,
-            module="pendcli.papers.tisserand.claims",
+            module="pendcli.papers.tisserand.model",
             needs=("exact_conical", "series_conical"),
             quick_problems=[(math.radians(20.0), math.radians(10.0))],
         ),
@@ -654,7 +654,7 @@ FAMILIES: dict[str, Family] = {
             [_LECORNU_PROBLEM],
             _ref_lecornu,
             _lecornu_candidates,
-            module="pendcli.papers.lecornu.claims",
+            module="pendcli.papers.lecornu.model",
             needs=("elongation_times",),
         ),
     )

@@ -22,7 +22,7 @@ from pendcli.core.numbers import parse_printed
 from pendcli.core.tables import load_paper_table
 from pendcli.core.verdict import judge
 from pendcli.numerics.spherical import exact_conical
-from pendcli.papers.tisserand import claims as tisserand
+from pendcli.papers.tisserand import claims, explore, figures, model, units
 
 CLAIMS = load_paper_table("tisserand").claims
 EXAMPLE = (math.radians(30), math.radians(15))
@@ -190,16 +190,16 @@ def test_resal_rate_is_the_small_amplitude_limit():
     # The exact Ω/(u0 u1) at 10⁻⁴ rad, at 40 digits from (1)-(2): within O(u²) of 3/8.
     _, omega = mp_mean_motions(2e-4, 1e-4)
     assert omega / (math.sin(2e-4) * math.sin(1e-4)) == pytest.approx(
-        tisserand.resal_rate_limit(), abs=1e-7
+        model.resal_rate_limit(), abs=1e-7
     )
-    assert tisserand.resal_rate_limit() == pytest.approx(3 / 8, abs=1e-15)
+    assert model.resal_rate_limit() == pytest.approx(3 / 8, abs=1e-15)
 
 
 # ------------------------------------------------------------ the reading of the units
 
 
 def test_degree_reading_is_the_one_the_printed_values_support():
-    minutes, degrees = tisserand.reading_evidence()
+    minutes, degrees = claims.reading_evidence()
     printed = {c.id: c for c in CLAIMS}
     pairs = [
         ("tisserand.example.psi_sin2", "b1"),
@@ -257,7 +257,7 @@ def test_printed_series_residual_order(term):
     values = []
     for eps in (0.1, 0.05):
         values.append(
-            abs(residual(tisserand.series_conical(eps, eps / 2, 6), exact_conical(eps, eps / 2)))
+            abs(residual(model.series_conical(eps, eps / 2, 6), exact_conical(eps, eps / 2)))
         )
     assert math.log2(values[0] / values[1]) == pytest.approx(claimed, abs=0.25)
 
@@ -265,7 +265,7 @@ def test_printed_series_residual_order(term):
 def test_resal_first_approximation_residual_order():
     values = []
     for eps in (0.1, 0.05):
-        s0, x = tisserand.series_conical(eps, eps / 2, 0), exact_conical(eps, eps / 2)
+        s0, x = model.series_conical(eps, eps / 2, 0), exact_conical(eps, eps / 2)
         values.append(abs(s0.precession - x.precession))
     assert math.log2(values[0] / values[1]) == pytest.approx(4, abs=0.25)
 
@@ -285,7 +285,7 @@ def test_implicit_form_before_13_has_35_over_4096():
 def test_series_error_shrinks_with_order(order):
     theta0, theta1 = 0.2, 0.1
     exact = exact_conical(theta0, theta1)
-    s = tisserand.series_conical(theta0, theta1, order)
+    s = model.series_conical(theta0, theta1, order)
     u = math.sin(theta0)
     # k' to order n is wrong by O(u^(n+2)); u^(n+2) with a generous constant
     assert abs(s.k1 - exact.k1) < u ** (order + 2)
@@ -293,7 +293,7 @@ def test_series_error_shrinks_with_order(order):
 
 def test_series_conical_rejects_bad_order():
     with pytest.raises(PendcliError, match="order"):
-        tisserand.series_conical(0.2, 0.1, 3)
+        model.series_conical(0.2, 0.1, 3)
 
 
 # ------------------------------------------------------------ input parsing
@@ -312,11 +312,11 @@ def test_series_conical_rejects_bad_order():
     ],
 )
 def test_parse_angle(text, degrees):
-    assert math.degrees(tisserand.parse_angle(text)) == pytest.approx(degrees, rel=1e-15)
+    assert math.degrees(units.parse_angle(text)) == pytest.approx(degrees, rel=1e-15)
 
 
 def test_parse_angle_rad():
-    assert tisserand.parse_angle("0.52rad") == 0.52
+    assert units.parse_angle("0.52rad") == 0.52
 
 
 @pytest.mark.parametrize(
@@ -325,7 +325,7 @@ def test_parse_angle_rad():
 )
 def test_parse_angle_errors(text, message):
     with pytest.raises(PendcliError, match=message):
-        tisserand.parse_angle(text)
+        units.parse_angle(text)
 
 
 @pytest.mark.parametrize(
@@ -338,7 +338,7 @@ def test_parse_angle_errors(text, message):
 )
 def test_amplitude_ranges(theta0, theta1, message):
     with pytest.raises(PendcliError, match=message):
-        tisserand.amplitudes(theta0, theta1)
+        units.amplitudes(theta0, theta1)
 
 
 # ------------------------------------------------------------ CLI and figures
@@ -395,7 +395,7 @@ def test_cli_bad_unit_is_one_line_exit_2():
 
 
 def test_figures(tmp_path):
-    paths = tisserand.figures(tmp_path)
+    paths = figures.figures(tmp_path)
     assert [p.name for p in paths] == ["tisserand_path.png", "tisserand_series_error.png"]
     for p in paths:
         assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
@@ -403,14 +403,14 @@ def test_figures(tmp_path):
 
 
 def test_example_rows_published_only_for_the_example():
-    rows = tisserand.example_rows(*EXAMPLE)
+    rows = explore.example_rows(*EXAMPLE)
     assert [r["published"] for r in rows if r["published"]] == [
         "-1°7'33''",
         "2''",
         "2'42''",
         "<= 1/5",
     ]
-    other = tisserand.example_rows(math.radians(20), math.radians(10))
+    other = explore.example_rows(math.radians(20), math.radians(10))
     assert not any(r["published"] for r in other)
     assert parse_printed("2'42''").value == pytest.approx(2 / 60 + 42 / 3600)
 

@@ -17,7 +17,7 @@ from test_tisserand import mp_fourier, mp_mean_motions
 
 from pendcli.core.errors import PendcliError
 from pendcli.numerics.spherical import conical_limit, exact_conical, planar_limit_k1
-from pendcli.papers.tisserand.claims import series_conical
+from pendcli.papers.tisserand.model import series_conical
 
 pytestmark = pytest.mark.extremes
 

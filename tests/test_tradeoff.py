@@ -156,7 +156,7 @@ def test_conical_reference_is_independent_and_agrees_with_the_quadrature():
     """mpmath on the first integrals (tradeoff's reference) against Tisserand's (4)-(5)."""
     import math
 
-    from pendcli.papers.tisserand.claims import exact_conical
+    from pendcli.numerics.spherical import exact_conical
     from pendcli.tradeoff import _ref_conical
 
     for a, b in ((20.0, 10.0), (10.0, 2.0), (60.0, 1.0), (89.0, 45.0)):

@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, emit
 from pendcli.render import OutputFormat
+
+if TYPE_CHECKING:
+    from pendcli.render import Column
 
 app = typer.Typer(
     help="Tisserand 1881: the conical pendulum, series (I)-(VI) against the exact motion.",
@@ -17,21 +21,33 @@ app = typer.Typer(
 )
 
 AngleOption = Annotated[
-    str,
-    typer.Option(help="Angle with its unit: 30°, 30deg, 30', 30arcmin, 90arcsec, 0.52rad."),
+    str | None,
+    typer.Option(
+        help="Angle with its unit: 30°, 30deg, 30', 30arcmin, 90arcsec, 0.52rad "
+        "(default: the example's, read as degrees)."
+    ),
 ]
+Row = Mapping[str, Any]
 
 
-def _angle_text(fmt_key: str):
-    def text(row: dict) -> str:
-        value = row.get(fmt_key)
-        if value is None:
-            return ""
-        if row.get("unit") == "rad" and f"{fmt_key}_text" in row:
-            return row[f"{fmt_key}_text"]
-        from pendcli.render import fmt_float
+def _number(key: str, sig: int = 12) -> Callable[[Row], str]:
+    from pendcli.render import fmt_float
 
-        return fmt_float(value, 12)
+    return lambda r: "" if r.get(key) is None else fmt_float(r[key], sig)
+
+
+def _relative(key: str) -> Callable[[Row], str]:
+    return lambda r: "" if r.get(key) is None else f"{r[key]:+.2e}"
+
+
+def _angle_or_number(key: str) -> Callable[[Row], str]:
+    """The sexagesimal text for an angle row, the number otherwise."""
+    number = _number(key)
+
+    def text(row: Row) -> str:
+        if row.get("unit") == "rad" and f"{key}_text" in row:
+            return str(row[f"{key}_text"])
+        return number(row)
 
     return text
 
@@ -41,134 +57,142 @@ def claims(fmt: FormatOption = OutputFormat.table) -> None:
     """The printed numbers of the example and Resal's rate, with verdicts and the unit reading."""
     from pendcli.core.claims import evaluate_paper
     from pendcli.papers import formula_checks
-    from pendcli.papers.tisserand import claims as tisserand
-    from pendcli.render import Column
+    from pendcli.papers.tisserand import explore, model
     from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
     rows = [r.as_dict() for r in evaluate_paper("tisserand")]
     formulas = [f.as_dict() for f in formula_checks("tisserand")]
-    readings = [
-        {
-            "reading": r.reading,
-            "theta0": r.theta0,
-            "theta1": r.theta1,
-            "psi_sin2": tisserand.angle_text(r.b1),
-            "psi_sin4": tisserand.angle_text(r.b2),
-            "phi_sin2": tisserand.angle_text(r.c1),
-            "displacement_mm": r.displacement_mm,
-        }
-        for r in tisserand.reading_evidence()
-    ]
-    reading_columns = (
-        Column("reading", "reading"),
-        Column("theta0", "θ0"),
-        Column("theta1", "θ1"),
-        Column("psi_sin2", "ψ: sin 2k't (printed -1°7'33'')", justify="right"),
-        Column("psi_sin4", "ψ: sin 4k't (printed 2'')", justify="right"),
-        Column("phi_sin2", "φ': sin 2k't (printed 2'42'')", justify="right"),
-        Column(
-            "displacement_mm",
-            "shift, mm (printed <= 1/5)",
-            fmt=lambda r: f"{r['displacement_mm']:.3g}",
-            justify="right",
-        ),
-    )
+    readings = explore.reading_rows()
+    printed0, printed1 = model.example_reading(model.PRINTED_UNIT)
     emit(
         fmt,
         [
             ("Tisserand 1881: printed against recomputed", rows, claim_columns(rows)),
-            ("Reading of « θ0 = 30', θ1 = 15' »: Tisserand's series", readings, reading_columns),
+            (
+                f"Reading of « θ0 = {printed0}, θ1 = {printed1} »: Tisserand's series",
+                readings,
+                _reading_columns(explore.printed_example()),
+            ),
             ("Series (I), (II), (V) against the exact motion", formulas, FORMULA_COLUMNS),
         ],
         {"claims": rows, "formulas": formulas, "readings": readings},
     )
 
 
+def _reading_columns(printed: Mapping[str, str]) -> tuple[Column, ...]:
+    from pendcli.render import Column
+
+    return (
+        Column("reading", "reading"),
+        Column("theta0", "θ0"),
+        Column("theta1", "θ1"),
+        Column("psi_sin2", f"ψ: sin 2k't (printed {printed['b1']})", justify="right"),
+        Column("psi_sin4", f"ψ: sin 4k't (printed {printed['b2']})", justify="right"),
+        Column("phi_sin2", f"φ': sin 2k't (printed {printed['c1']})", justify="right"),
+        Column(
+            "displacement_mm",
+            f"shift, mm (printed {printed['shift']})",
+            fmt=lambda r: f"{r['displacement_mm']:.3g}",
+            justify="right",
+        ),
+    )
+
+
 @app.command("example")
 def example(
-    theta0: AngleOption = "30°",
-    theta1: AngleOption = "15°",
-    length: Annotated[float, typer.Option(help="Pendulum length in metres.")] = 0.5,
+    theta0: AngleOption = None,
+    theta1: AngleOption = None,
+    length: Annotated[
+        float | None, typer.Option(help="Pendulum length in metres (default: the remark's l).")
+    ] = None,
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
 ) -> None:
     """Published / series / exact (two methods) side by side for any amplitudes."""
     from pendcli.core.plotting import validate_plot_path
-    from pendcli.papers.tisserand import claims as tisserand
-    from pendcli.render import Column, fmt_float
+    from pendcli.papers.tisserand import explore, figures, model, units
 
     plot = validate_plot_path(plot)
-    a, b = tisserand.amplitudes(theta0, theta1)
-    length = tisserand.parse_length(length)
-    rows = tisserand.example_rows(a, b, length)
+    default0, default1 = model.example_reading()
+    theta0 = default0 if theta0 is None else theta0
+    theta1 = default1 if theta1 is None else theta1
+    a, b = units.amplitudes(theta0, theta1)
+    length = units.parse_length(model.example_length_m() if length is None else length)
+    rows = explore.example_rows(a, b, length)
+    title = f"Conical pendulum θ0 = {theta0}, θ1 = {theta1}, l = {length:g} m"
+    emit(
+        fmt,
+        [(title, rows, _example_columns(rows))],
+        {"claims": [], "formulas": [], "example": rows},
+    )
+    if plot is not None:
+        figures.plot_path(plot, a, b)
 
-    def num(key: str, sig: int = 12):
-        return lambda r: "" if r.get(key) is None else fmt_float(r[key], sig)
+
+def _example_columns(rows: list[dict[str, Any]]) -> tuple[Column, ...]:
+    from pendcli.render import Column
 
     columns = (
         Column("quantity", "quantity"),
         Column("published", "published", justify="right"),
-        Column("series", "series (I)-(V)", fmt=_angle_text("series"), justify="right"),
-        Column("exact", "exact (quad)", fmt=_angle_text("exact"), justify="right"),
-        Column("series_error", "series - exact", fmt=num("series_error", 3), justify="right"),
+        Column("series", "series (I)-(V)", fmt=_angle_or_number("series"), justify="right"),
+        Column("exact", "exact (quad)", fmt=_angle_or_number("exact"), justify="right"),
+        Column("series_error", "series - exact", fmt=_number("series_error", 3), justify="right"),
         Column(
-            "series_rel_error",
-            "rel. error",
-            fmt=lambda r: (
-                "" if r.get("series_rel_error") is None else f"{r['series_rel_error']:+.2e}"
-            ),
-            justify="right",
+            "series_rel_error", "rel. error", fmt=_relative("series_rel_error"), justify="right"
         ),
-        Column("methods_diff", "ODE - quad", fmt=num("methods_diff", 2), justify="right"),
+        Column("methods_diff", "ODE - quad", fmt=_number("methods_diff", 2), justify="right"),
         Column(
             "elliptic_rel_diff",
             "elliptic/quad - 1",
-            fmt=num("elliptic_rel_diff", 2),
+            fmt=_number("elliptic_rel_diff", 2),
             justify="right",
         ),
         Column("unit", "diff. unit"),
         Column("note", "note"),
     )
     if not any(r.get("note") for r in rows):
-        columns = tuple(c for c in columns if c.key != "note")
-    title = f"Conical pendulum θ0 = {theta0}, θ1 = {theta1}, l = {length:g} m"
-    emit(fmt, [(title, rows, columns)], {"claims": [], "formulas": [], "example": rows})
-    if plot is not None:
-        tisserand.plot_path(plot, a, b)
+        return tuple(c for c in columns if c.key != "note")
+    return columns
 
 
 @app.command("series")
 def series(
-    ratio: Annotated[float, typer.Option(help="θ1/θ0, 0..1 (the example has 0.5).")] = 0.5,
+    ratio: Annotated[
+        float | None, typer.Option(help="θ1/θ0, 0..1 (default: the example's).")
+    ] = None,
     order: Annotated[int, typer.Option(help="Series order: 0, 2, 4 or 6.")] = 6,
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
 ) -> None:
     """k', k'' and the precession from the series against the exact values over θ0."""
     from pendcli.core.plotting import validate_plot_path
-    from pendcli.papers.tisserand import claims as tisserand
-    from pendcli.render import Column, fmt_float
+    from pendcli.papers.tisserand import explore, figures, model
 
     plot = validate_plot_path(plot)
-    rows = tisserand.series_rows(ratio=ratio, order=order)
+    ratio = model.example_ratio() if ratio is None else ratio
+    rows = explore.series_rows(ratio=ratio, order=order)
+    title = f"Tisserand's series (order {order}) against the exact motion, θ1 = {ratio:g}·θ0"
+    emit(fmt, [(title, rows, _series_columns())], {"claims": [], "formulas": [], "series": rows})
+    if plot is not None:
+        figures.plot_series_error(plot, ratio=ratio)
 
-    def num(key: str, sig: int = 12):
-        return lambda r: "" if r.get(key) is None else fmt_float(r[key], sig)
 
-    def rel(key: str):
-        return lambda r: "" if r.get(key) is None else f"{r[key]:+.2e}"
+def _series_columns() -> list[Column]:
+    from pendcli.render import Column
 
     columns = [
-        Column("theta0_deg", "θ0 (°)", fmt=num("theta0_deg", 6), justify="right"),
-        Column("theta1_deg", "θ1 (°)", fmt=num("theta1_deg", 6), justify="right"),
+        Column("theta0_deg", "θ0 (°)", fmt=_number("theta0_deg", 6), justify="right"),
+        Column("theta1_deg", "θ1 (°)", fmt=_number("theta1_deg", 6), justify="right"),
     ]
     for key, label in (("k1", "k'/k"), ("k2", "k''/k"), ("precession", "Ω")):
         columns += [
-            Column(f"{key}_series", f"{label} series", fmt=num(f"{key}_series"), justify="right"),
-            Column(f"{key}_exact", f"{label} exact", fmt=num(f"{key}_exact"), justify="right"),
-            Column(f"{key}_rel_error", "rel. error", fmt=rel(f"{key}_rel_error"), justify="right"),
+            Column(
+                f"{key}_series", f"{label} series", fmt=_number(f"{key}_series"), justify="right"
+            ),
+            Column(f"{key}_exact", f"{label} exact", fmt=_number(f"{key}_exact"), justify="right"),
+            Column(
+                f"{key}_rel_error", "rel. error", fmt=_relative(f"{key}_rel_error"), justify="right"
+            ),
         ]
-    title = f"Tisserand's series (order {order}) against the exact motion, θ1 = {ratio:g}·θ0"
-    emit(fmt, [(title, rows, columns)], {"claims": [], "formulas": [], "series": rows})
-    if plot is not None:
-        tisserand.plot_series_error(plot, ratio=ratio)
+    return columns

@@ -19,6 +19,10 @@ Small parameter: θ0 with θ1 = θ0/2 fixed (s = u0² + u1², Δ = u0² − u1²
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -32,7 +36,16 @@ from pendcli.core.formula_engine import (
     plot_studies,
 )
 
-__all__ = ["QuadratureReference", "figures", "formula_checks", "series_coefficients"]
+__all__ = [
+    "BUILDERS",
+    "QuadratureReference",
+    "Sample",
+    "figures",
+    "formula_checks",
+    "integrands",
+    "samples",
+    "series_coefficients",
+]
 
 PAPER = "tisserand"
 THETA0_SWEEP = (0.4, 0.28, 0.2, 0.14, 0.1)  # rad; θ1 = θ0/2
@@ -42,7 +55,7 @@ PARAM = "θ0 = 0.4 … 0.1 rad, θ1 = θ0/2"
 class QuadratureReference:
     """Trapezoidal Fourier analysis of (4)-(5) on ``nodes`` points per period π of ψ."""
 
-    def __init__(self, nodes: int = 64, harmonics: int = 6):
+    def __init__(self, nodes: int = 64, harmonics: int = 6) -> None:
         self.nodes = nodes
         self.harmonics = harmonics
 
@@ -58,7 +71,7 @@ class QuadratureReference:
 DEFAULT = QuadratureReference()
 
 
-def integrands(theta0: float, theta1: float, psi: np.ndarray):
+def integrands(theta0: float, theta1: float, psi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """k dt/dψ from (4) and (dφ/dψ − u0u1/u²)/(u0u1) from (5), at the eccentric anomaly ψ."""
     u0, u1 = math.sin(theta0), math.sin(theta1)
     c0, c1 = math.cos(theta0), math.cos(theta1)
@@ -70,7 +83,9 @@ def integrands(theta0: float, theta1: float, psi: np.ndarray):
     return kdt, (h - 1.0) / u2
 
 
-def series_coefficients(theta0: float, theta1: float, ref: QuadratureReference = DEFAULT):
+def series_coefficients(
+    theta0: float, theta1: float, ref: QuadratureReference = DEFAULT
+) -> dict[str, np.ndarray]:
     """Exact Fourier coefficients: kt(ψ), φ(ψ) − φ1(ψ), ψ(k't) and φ'(k't).
 
     Returns a dict: ``a`` (k dt/dψ = Σ a_m cos 2mψ), ``b`` ((dφ/dψ − u0u1/u²)/(u0u1)
@@ -105,7 +120,15 @@ def series_coefficients(theta0: float, theta1: float, ref: QuadratureReference =
     return {"a": a, "b": b, "d": d, "e": e}
 
 
-def _row(id_, source, published, residuals, claimed, ref, **kw) -> FormulaRow:
+def _row(
+    id_: str,
+    source: str,
+    published: str,
+    residuals: Sequence[float],
+    claimed: float,
+    ref: QuadratureReference,
+    **kw: Any,
+) -> FormulaRow:
     return make_row(
         id=f"{PAPER}.{id_}",
         paper=PAPER,
@@ -117,47 +140,61 @@ def _row(id_, source, published, residuals, claimed, ref, **kw) -> FormulaRow:
     )
 
 
-def formula_checks(ref: QuadratureReference = DEFAULT) -> list[FormulaRow]:
-    """Every Tisserand formula check (see the module docstring)."""
-    cols: dict[str, list[float]] = {}
+@dataclass(frozen=True)
+class Sample:
+    """Tisserand's small quantities and the exact Fourier coefficients at one θ0 of the sweep."""
 
-    def put(key, value):
-        cols.setdefault(key, []).append(float(value))
+    u0: float
+    u1: float
+    a: np.ndarray  # k dt/dψ = Σ a_m cos 2mψ
+    b: np.ndarray  # (dφ/dψ − u0u1/u²)/(u0u1) = Σ b_m cos 2mψ
+    d: np.ndarray  # ψ − k't = Σ d_m sin 2mk't
+    e: np.ndarray  # φ' − (3/8)u0u1k''t = Σ e_m sin 2mk't
 
+    @property
+    def s(self) -> float:
+        return self.u0**2 + self.u1**2
+
+    @property
+    def dd(self) -> float:
+        return self.u0**2 - self.u1**2
+
+    @property
+    def pp(self) -> float:
+        return self.u0**2 * self.u1**2
+
+
+def samples(ref: QuadratureReference = DEFAULT) -> list[Sample]:
+    """One :class:`Sample` per θ0 of :data:`THETA0_SWEEP`, θ1 = θ0/2."""
+    out = []
     for theta0 in THETA0_SWEEP:
         theta1 = theta0 / 2
-        u0, u1 = math.sin(theta0), math.sin(theta1)
-        s, dd, pp = u0**2 + u1**2, u0**2 - u1**2, u0**2 * u1**2
         co = series_coefficients(theta0, theta1, ref)
-        a, b, d, e = co["a"], co["b"], co["d"], co["e"]
-        k_over_k1 = (
-            1
-            + s / 16
-            + (25 * (u0**4 + u1**4) - 26 * pp) / 1024
-            + (225 * (u0**6 + u1**6) - 313 * pp * s) / 16384
-        )
-        put("k1", a[0] - k_over_k1)
-        put("k2", 8 / 3 * b[0] - (1 + 9 * s / 32 + (151 * (u0**4 + u1**4) + 58 * pp) / 1024))
-        put("kt_sin2", a[1] / 2 - dd * (3 / 32 + 25 * s / 512))
-        put("kt_sin4", a[2] / 4 - dd**2 * 35 / 4096)
-        put("phi_psi", u0 * u1 * (b[0] - 3 / 8 - 27 * s / 256))
-        put("phi_sin2", u0 * u1 * (b[1] / 2 - dd * 35 / 512))
-        put("psi_sin2psi", -a[1] / (2 * a[0]) + dd * (3 / 32 + 11 * s / 256))
-        put("psi_sin4psi", -a[2] / (4 * a[0]) + dd**2 * 35 / 4096)
-        put("II_sin2", d[1] + dd * (3 / 32 + 11 * s / 256))
-        put("II_sin4", d[2] - dd**2 / 4096)
-        put("II_sin4_alt", d[2] - dd**2 * 35 / 4096)
-        put("II_sin4_norm", d[2] / dd**2)
-        put("V_sin2", e[1] - u0 * u1 * dd * 17 / 512)
-        # (7): lim u→0 of u²·(1/(u0u1)) dφ/dψ, from (5) at θ → 0 by extrapolation in u².
-        put("inv_u2", _inverse_square_coefficient(theta0, theta1) - 1.0)
-    rows = [
+        out.append(Sample(math.sin(theta0), math.sin(theta1), co["a"], co["b"], co["d"], co["e"]))
+    return out
+
+
+def _residuals(points: Sequence[Sample], residual: Callable[[Sample], float]) -> list[float]:
+    return [float(residual(x)) for x in points]
+
+
+def _eq_I(points: Sequence[Sample], ref: QuadratureReference) -> list[FormulaRow]:
+    """(I): k' to the sixth order and k'' to the fourth."""
+
+    def k_over_k1(x: Sample) -> float:
+        q4, q6 = x.u0**4 + x.u1**4, x.u0**6 + x.u1**6
+        return 1 + x.s / 16 + (25 * q4 - 26 * x.pp) / 1024 + (225 * q6 - 313 * x.pp * x.s) / 16384
+
+    def k2_over_k1(x: Sample) -> float:
+        return 1 + 9 * x.s / 32 + (151 * (x.u0**4 + x.u1**4) + 58 * x.pp) / 1024
+
+    return [
         _row(
             "k_prime",
             "(I), (12)",
             "k/k' = 1 + (u0² + u1²)/16 + [25(u0⁴ + u1⁴) − 26u0²u1²]/1024 "
             "+ [225(u0⁶ + u1⁶) − 313u0²u1²(u0² + u1²)]/16384",
-            cols["k1"],
+            _residuals(points, lambda x: x.a[0] - k_over_k1(x)),
             8,
             ref,
             note="k' = π / (half radial period) from the mean of k dt/dψ; the sixth-order "
@@ -168,75 +205,127 @@ def formula_checks(ref: QuadratureReference = DEFAULT) -> list[FormulaRow]:
             "k_second",
             "(I), (14)",
             "k'' = k'[1 + 9(u0² + u1²)/32 + (151(u0⁴ + u1⁴) + 58u0²u1²)/1024]",
-            cols["k2"],
+            _residuals(points, lambda x: 8 / 3 * x.b[0] - k2_over_k1(x)),
             6,
             ref,
             note="k'' from the secular rate of φ' = φ − φ1: (3/8)u0u1k'' = mean dφ'/dt.",
         ),
-        _row(
+    ]
+
+
+def _eq_8(points: Sequence[Sample], ref: QuadratureReference) -> list[FormulaRow]:
+    """(8), (11): kt and φ as Fourier series in ψ."""
+    specs: tuple[tuple[str, str, str, Callable[[Sample], float]], ...] = (
+        (
             "eq8_kt_sin2psi",
             "(8)",
             "kt: coefficient of sin 2ψ = (u0² − u1²)(3/32 + 25(u0² + u1²)/512)",
-            cols["kt_sin2"],
-            6,
-            ref,
+            lambda x: x.a[1] / 2 - x.dd * (3 / 32 + 25 * x.s / 512),
         ),
-        _row(
+        (
             "eq8_kt_sin4psi",
             "(8)",
             "kt: coefficient of sin 4ψ = (u0² − u1²)²·35/4096",
-            cols["kt_sin4"],
-            6,
-            ref,
+            lambda x: x.a[2] / 4 - x.dd**2 * 35 / 4096,
         ),
-        _row(
+        (
             "eq8_phi_psi",
             "(8), (11)",
             "φ: coefficient of ψ = u0u1(3/8 + 27(u0² + u1²)/256)",
-            cols["phi_psi"],
-            6,
-            ref,
+            lambda x: x.u0 * x.u1 * (x.b[0] - 3 / 8 - 27 * x.s / 256),
         ),
-        _row(
+        (
             "eq8_phi_sin2psi",
             "(8), (11)",
             "φ: coefficient of sin 2ψ = u0u1(u0² − u1²)·35/512",
-            cols["phi_sin2"],
-            6,
-            ref,
+            lambda x: x.u0 * x.u1 * (x.b[1] / 2 - x.dd * 35 / 512),
         ),
+    )
+    return [
+        _row(id_, source, published, _residuals(points, residual), 6, ref)
+        for id_, source, published, residual in specs
+    ]
+
+
+def _before_13(points: Sequence[Sample], ref: QuadratureReference) -> list[FormulaRow]:
+    """The implicit form ψ = k't − … sin 2ψ − … sin 4ψ printed before (13)."""
+    sin2 = _residuals(points, lambda x: -x.a[1] / (2 * x.a[0]) + x.dd * (3 / 32 + 11 * x.s / 256))
+    sin4 = _residuals(points, lambda x: -x.a[2] / (4 * x.a[0]) + x.dd**2 * 35 / 4096)
+    return [
         _row(
             "psi_in_psi_sin4psi",
             "before (13)",
             "ψ = k't − (u0² − u1²)(3/32 + 11(u0² + u1²)/256) sin 2ψ − (u0² − u1²)²(35/4096) sin 4ψ",
-            [
-                max(abs(x), abs(y))
-                for x, y in zip(cols["psi_sin2psi"], cols["psi_sin4psi"], strict=True)
-            ],
+            [max(abs(x), abs(y)) for x, y in zip(sin2, sin4, strict=True)],
             6,
             ref,
             note="Both coefficients (of sin 2ψ and sin 4ψ, ψ on the right side) together: the "
             "larger residual is shown.",
-        ),
+        )
+    ]
+
+
+def _eq_II(points: Sequence[Sample], ref: QuadratureReference) -> list[FormulaRow]:
+    """(13), (II): ψ as a Fourier series in k't."""
+    return [
         _row(
             "II_sin2",
             "(13), (II)",
             "ψ: coefficient of sin 2k't = −(u0² − u1²)(3/32 + 11(u0² + u1²)/256)",
-            cols["II_sin2"],
+            _residuals(points, lambda x: x.d[1] + x.dd * (3 / 32 + 11 * x.s / 256)),
             6,
             ref,
         ),
-        _sin4_row(cols, ref),
+        _sin4_row(points, ref),
+    ]
+
+
+def _sin4_row(points: Sequence[Sample], ref: QuadratureReference) -> FormulaRow:
+    """(II)/(13): the coefficient of sin 4k't, 1/4096 as printed, against 35/4096."""
+    norm = extrapolate_to_zero(THETA0_SWEEP, _residuals(points, lambda x: x.d[2] / x.dd**2), step=2)
+    found = identify(norm, max_den=4096) or f"{norm:.3e}"
+    alt_residuals = tuple(_residuals(points, lambda x: x.d[2] - x.dd**2 * 35 / 4096))
+    alt_verdict, alt_order, _ = judge(Study(PARAM, THETA0_SWEEP, alt_residuals, 6, ref.error_bound))
+    return _row(
+        "II_sin4",
+        "(13), (II)",
+        "ψ: coefficient of sin 4k't = +(u0² − u1²)²/4096",
+        _residuals(points, lambda x: x.d[2] - x.dd**2 / 4096),
+        6,
+        ref,
+        recomputed=f"+(u0² − u1²)²·{found}",
+        note=f"Leading coefficient found {norm:.6e} = {found}. The 35/4096 of (8) is the "
+        "coefficient of sin 4ψ in kt (and, with a minus sign, in ψ as a function of ψ before "
+        "(13)); inverting the series adds the square (3/32)² = 36/4096 of the sin 2 "
+        "coefficient, so in terms of k't it becomes (36 − 35)/4096 = 1/4096, as (13) and "
+        "(II) print. With 35/4096 the "
+        f"residual is O(θ0^{alt_order:.2f}) ({alt_verdict}). (13) prints 'sin² 4k't' and "
+        "'+ … sin 4k't'; (II) '+ … sin 4k't − …': the sign + is right.",
+    )
+
+
+def _eq_V(points: Sequence[Sample], ref: QuadratureReference) -> list[FormulaRow]:
+    """(15), (V): the periodic term of φ'."""
+    return [
         _row(
             "V_sin2",
             "(15), (V)",
             "φ' = (3/8)u0u1k''t + u0u1(u0² − u1²)(17/512) sin 2k't",
-            cols["V_sin2"],
+            _residuals(points, lambda x: x.e[1] - x.u0 * x.u1 * x.dd * 17 / 512),
             6,
             ref,
             note="Coefficient of sin 2k't in φ' = φ − φ1 as a function of k't (secular part "
             "removed with the exact rate).",
-        ),
+        )
+    ]
+
+
+INVERSE_SQUARE_SWEEP = (1.5, 1.2, 0.9, 0.6, 0.3)
+
+
+def _eq_7(_points: Sequence[Sample], _ref: QuadratureReference) -> list[FormulaRow]:
+    """(7): the coefficient of 1/u² in dφ/dψ is 1, at any amplitude (its own sweep)."""
+    return [
         make_row(
             id=f"{PAPER}.eq7_inverse_square",
             paper=PAPER,
@@ -253,12 +342,8 @@ def formula_checks(ref: QuadratureReference = DEFAULT) -> list[FormulaRow]:
             note="lim u→0 of u²(1/(u0u1))dφ/dψ from (5) for amplitudes up to 86°: 1 to "
             "rounding. Indeed at θ = 0 the two square roots of (5) are both "
             "√((1 + cos θ0)(1 + cos θ1)), at any amplitude.",
-        ),
+        )
     ]
-    return rows
-
-
-INVERSE_SQUARE_SWEEP = (1.5, 1.2, 0.9, 0.6, 0.3)
 
 
 def _inverse_square_coefficient(theta0: float, theta1: float) -> float:
@@ -275,34 +360,19 @@ def _inverse_square_coefficient(theta0: float, theta1: float) -> float:
     return (values[1] * hs[0] ** 2 - values[0] * hs[1] ** 2) / (hs[0] ** 2 - hs[1] ** 2)
 
 
-def _sin4_row(cols, ref) -> FormulaRow:
-    """(II)/(13): the coefficient of sin 4k't, 1/4096 as printed, against 35/4096."""
-    norm = extrapolate_to_zero(THETA0_SWEEP, cols["II_sin4_norm"], step=2)
-    found = identify(norm, max_den=4096) or f"{norm:.3e}"
-    alt = Study(PARAM, THETA0_SWEEP, tuple(cols["II_sin4_alt"]), 6, ref.error_bound)
-    alt_verdict, alt_order, _ = judge(alt)
-    return _row(
-        "II_sin4",
-        "(13), (II)",
-        "ψ: coefficient of sin 4k't = +(u0² − u1²)²/4096",
-        cols["II_sin4"],
-        6,
-        ref,
-        recomputed=f"+(u0² − u1²)²·{found}",
-        note=f"Leading coefficient found {norm:.6e} = {found}. The 35/4096 of (8) is the "
-        "coefficient of sin 4ψ in kt (and, with a minus sign, in ψ as a function of ψ before "
-        "(13)); inverting the series adds the square (3/32)² = 36/4096 of the sin 2 "
-        "coefficient, so in terms of k't it becomes (36 − 35)/4096 = 1/4096, as (13) and "
-        "(II) print. With 35/4096 the "
-        f"residual is O(θ0^{alt_order:.2f}) ({alt_verdict}). (13) prints 'sin² 4k't' and "
-        "'+ … sin 4k't'; (II) '+ … sin 4k't − …': the sign + is right.",
-    )
+Builder = Callable[[Sequence[Sample], QuadratureReference], list[FormulaRow]]
+#: one builder per printed equation, in report order
+BUILDERS: tuple[Builder, ...] = (_eq_I, _eq_8, _before_13, _eq_II, _eq_V, _eq_7)
 
 
-def figures(outdir, rows: list[FormulaRow] | None = None) -> list:
+def formula_checks(ref: QuadratureReference = DEFAULT) -> list[FormulaRow]:
+    """Every Tisserand formula check (see the module docstring), one builder per equation."""
+    points = samples(ref)
+    return [row for builder in BUILDERS for row in builder(points, ref)]
+
+
+def figures(outdir: str | Path, rows: list[FormulaRow] | None = None) -> list[Path]:
     """One PNG: residual against θ0 for every Tisserand formula (log-log)."""
-    from pathlib import Path
-
     path = Path(outdir) / "formulas_tisserand.png"
     plot_studies(
         path, rows if rows is not None else formula_checks(), "Tisserand: derived formulas"
