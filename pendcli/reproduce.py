@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass, field
 
 from pendcli.core.claims import ClaimRow, FormulaRow, evaluate_paper
 from pendcli.papers import formula_checks
+from pendcli.render.columns import Column, Row, Section
 
-__all__ = ["ReproduceResult", "reproduce_all"]
+__all__ = ["CLAIM_VERDICTS", "FORMULA_VERDICTS", "ReproduceResult", "reproduce_all"]
+
+# The order in which tallies and summaries list the verdicts.
+CLAIM_VERDICTS = ("agrees", "truncated", "last-digit", "discrepant")
+FORMULA_VERDICTS = ("formula holds", "formula fails")
 
 
 @dataclass
@@ -15,26 +21,26 @@ class ReproduceResult:
     papers: tuple[str, ...]
     claims: dict[str, list[ClaimRow]] = field(default_factory=dict)
     formulas: dict[str, list[FormulaRow]] = field(default_factory=dict)
-    stability: list[dict] = field(default_factory=list)
+    stability: list[dict[str, object]] = field(default_factory=list)
 
-    def claim_dicts(self) -> list[dict]:
+    def claim_dicts(self) -> list[dict[str, object]]:
         return [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
 
-    def formula_dicts(self) -> list[dict]:
+    def formula_dicts(self) -> list[dict[str, object]]:
         return [r.as_dict() for key in self.papers for r in self.formulas.get(key, [])]
 
-    def document(self) -> dict:
-        doc: dict = {"claims": self.claim_dicts(), "formulas": self.formula_dicts()}
+    def document(self) -> dict[str, object]:
+        """What `--format json` prints (keys described in :mod:`pendcli.core.schema`)."""
+        doc: dict[str, object] = {"claims": self.claim_dicts(), "formulas": self.formula_dicts()}
         if self.stability:
             doc["stability"] = self.stability
         return doc
 
-    def sections(self) -> list:
+    def sections(self) -> list[Section]:
+        """Titled sections for the table and Markdown outputs: claims, formulas, stability."""
         from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
-        out = []
-        from pendcli.render import Column
-
+        out: list[Section] = []
         for key in self.papers:
             rows = [r.as_dict() for r in self.claims.get(key, [])]
             if rows:
@@ -48,6 +54,7 @@ class ReproduceResult:
         return out
 
     def verdict_counts(self) -> dict[str, dict[str, int]]:
+        """Per paper: claim verdict -> count, and "formula holds"/"formula fails" -> count."""
         counts: dict[str, dict[str, int]] = {}
         for key in self.papers:
             c: dict[str, int] = {}
@@ -58,59 +65,57 @@ class ReproduceResult:
             counts[key] = c
         return counts
 
+    def summary_rows(self) -> list[Row]:
+        """One row per paper: how many claims reach each verdict, formulas holding/failing."""
+        counts = self.verdict_counts()
+        return [
+            {
+                "paper": key,
+                **{v: counts[key].get(v, 0) for v in CLAIM_VERDICTS},
+                "formulas holding": counts[key].get("formula holds", 0),
+                "formulas failing": counts[key].get("formula fails", 0),
+            }
+            for key in self.papers
+        ]
+
+    def tally(self, key: str) -> str:
+        """``"12 agrees, 1 truncated, 5 formula holds"``: the verdicts a paper reached."""
+        counts = self.verdict_counts()[key]
+        order = (*CLAIM_VERDICTS, *FORMULA_VERDICTS)
+        return ", ".join(f"{counts[v]} {v}" for v in order if v in counts)
+
 
 def reproduce_all(
     keys: tuple[str, ...], formulas: bool = True, quiet: bool = True, stability: bool = False
 ) -> ReproduceResult:
-    """Evaluate the claims (and, if asked, the formula checks and the stability measurements)."""
-    result = ReproduceResult(papers=keys)
+    """Evaluate the claims (and, if asked, the formula checks and the stability measurements).
+
+    A progress bar on stderr shows the step running, only on a terminal and when not ``quiet``.
+    """
+    from rich.progress import Progress
+
+    from pendcli.core.console import console
+
     steps = [(k, "claims") for k in keys] + ([(k, "formulas") for k in keys] if formulas else [])
     if stability:
         steps.append(("all", "stability"))
-    with _progress(len(steps), quiet) as advance:
+    result = ReproduceResult(papers=keys)
+    hidden = quiet or not sys.stderr.isatty()
+    with Progress(console=console(stderr=True), transient=True, disable=hidden) as progress:
+        task = progress.add_task("reproducing", total=len(steps))
         for key, what in steps:
-            advance(f"{key}: {what}")
-            if what == "claims":
-                result.claims[key] = evaluate_paper(key)
-            elif what == "formulas":
-                result.formulas[key] = formula_checks(key)
-            else:
-                from pendcli.stability import stability_rows
-
-                result.stability = stability_rows()
+            progress.update(task, description=f"{key}: {what}")
+            _run_step(result, key, what)
+            progress.advance(task)
     return result
 
 
-class _progress:
-    """A rich progress bar on stderr when it is a terminal and not quiet; else nothing."""
+def _run_step(result: ReproduceResult, key: str, what: str) -> None:
+    if what == "claims":
+        result.claims[key] = evaluate_paper(key)
+    elif what == "formulas":
+        result.formulas[key] = formula_checks(key)
+    else:
+        from pendcli.stability import stability_rows
 
-    def __init__(self, total: int, quiet: bool):
-        import sys
-
-        self.enabled = not quiet and sys.stderr.isatty()
-        self.total = total
-
-    def __enter__(self):
-        if not self.enabled:
-            return lambda label: None
-        from rich.progress import Progress
-
-        from pendcli.core.console import console
-
-        self.progress = Progress(console=console(stderr=True), transient=True)
-        self.progress.__enter__()
-        self.task = self.progress.add_task("reproducing", total=self.total)
-        first = [True]
-
-        def advance(label: str) -> None:
-            if not first[0]:
-                self.progress.advance(self.task)
-            first[0] = False
-            self.progress.update(self.task, description=label)
-
-        return advance
-
-    def __exit__(self, *exc):
-        if self.enabled:
-            self.progress.__exit__(*exc)
-        return False
+        result.stability = stability_rows()

@@ -6,13 +6,19 @@ import importlib
 import os
 import sys
 from pathlib import Path
-from typing import Annotated
+from types import ModuleType
+from typing import TYPE_CHECKING, Annotated, NoReturn
 
 import typer
 from typer.core import TyperGroup
 
 from pendcli.cli.common import FormatOption, emit
 from pendcli.render import OutputFormat
+
+if TYPE_CHECKING:  # click as typer vendors it; only its types are named here
+    from typer._click import Command, Context, HelpFormatter
+
+    from pendcli.reproduce import ReproduceResult
 
 # Subcommands whose modules load only when named: `pendcli --help` then costs neither their
 # imports nor typer's conversion of their parameters (about half of start-up otherwise).
@@ -46,7 +52,7 @@ LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
 }
 
 
-def _load_command(name: str):
+def _load_command(name: str) -> Command:
     module_name, attribute, _ = LAZY_COMMANDS[name]
     target = getattr(importlib.import_module(module_name), attribute)
     if not isinstance(target, typer.Typer):
@@ -61,15 +67,15 @@ def _load_command(name: str):
 class LazyGroup(TyperGroup):
     """The top-level group: eager commands first, then the lazily imported ones."""
 
-    def list_commands(self, ctx) -> list[str]:
+    def list_commands(self, ctx: Context) -> list[str]:
         return [*super().list_commands(ctx), *(n for n in LAZY_COMMANDS if n not in self.commands)]
 
-    def get_command(self, ctx, cmd_name: str):
+    def get_command(self, ctx: Context, cmd_name: str) -> Command | None:
         if cmd_name in LAZY_COMMANDS and cmd_name not in self.commands:
             self.commands[cmd_name] = _load_command(cmd_name)
         return super().get_command(ctx, cmd_name)
 
-    def format_commands(self, ctx, formatter) -> None:
+    def format_commands(self, ctx: Context, formatter: HelpFormatter) -> None:
         rows = []
         for name in self.list_commands(ctx):
             if name in LAZY_COMMANDS and name not in self.commands:
@@ -129,57 +135,56 @@ def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.tabl
     emit(fmt, [("", rows, columns)], {"claims": rows})
 
 
+OutOption = Annotated[
+    Path | None,
+    typer.Option("--out", "-o", help="Also write the report, tables and figures to this folder."),
+]
+FormulasOption = Annotated[
+    bool, typer.Option("--formulas/--no-formulas", help="Include the checks of derived formulas.")
+]
+StabilityOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--stability/--no-stability",
+        help="Include the measured stability table (default: only with --out).",
+    ),
+]
+QuietOption = Annotated[bool, typer.Option("--quiet", "-q", help="No progress or status lines.")]
+
+
 @app.command("reproduce")
 def reproduce(
     paper: PaperOption = None,
     fmt: FormatOption = OutputFormat.table,
-    out: Annotated[
-        Path | None,
-        typer.Option(
-            "--out", "-o", help="Also write the report, tables and figures to this folder."
-        ),
-    ] = None,
-    formulas: Annotated[
-        bool,
-        typer.Option("--formulas/--no-formulas", help="Include the checks of derived formulas."),
-    ] = True,
-    stability: Annotated[
-        bool | None,
-        typer.Option(
-            "--stability/--no-stability",
-            help="Include the measured stability table (default: only with --out).",
-        ),
-    ] = None,
-    quiet: Annotated[
-        bool, typer.Option("--quiet", "-q", help="No progress or status lines.")
-    ] = False,
+    out: OutOption = None,
+    formulas: FormulasOption = True,
+    stability: StabilityOption = None,
+    quiet: QuietOption = False,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
     from pendcli.core.claims import resolve_papers
     from pendcli.reproduce import reproduce_all
 
-    keys = resolve_papers(paper)
     result = reproduce_all(
-        keys,
+        resolve_papers(paper),
         formulas=formulas,
         stability=(out is not None) if stability is None else stability,
         quiet=quiet or fmt is not OutputFormat.table,
     )
     emit(fmt, result.sections(), result.document())
     if out is not None:
-        from pendcli.report import write_report
+        _write_report(result, out, quiet)
 
-        written = write_report(result, out, quiet=quiet)
-        if not quiet:
-            from pendcli.cli.common import say
 
-            counts = result.verdict_counts()
-            for key in keys:
-                order = ["agrees", "truncated", "last-digit", "discrepant"]
-                order += ["formula holds", "formula fails"]
-                tally = ", ".join(f"{counts[key][v]} {v}" for v in order if v in counts[key])
-                say(f"{key}: {tally}")
-            say(f"wrote {len(written)} files to {out} (report: {out / 'report.md'})")
+def _write_report(result: ReproduceResult, out: Path, quiet: bool) -> None:
+    from pendcli.cli.common import say
+    from pendcli.report import write_report
+
+    written = write_report(result, out, quiet=quiet)
+    if not quiet:
+        for key in result.papers:
+            say(f"{key}: {result.tally(key)}")
+        say(f"wrote {len(written)} files to {out} (report: {out / 'report.md'})")
 
 
 @app.command("check")
@@ -198,12 +203,9 @@ def check(
 
 def run() -> None:
     """Console-script entry: turn every user error into one line and exit code 2."""
-    try:  # typer >= 0.20 vendors click as typer._click; older releases use click itself
-        from typer._click import exceptions as click_exceptions
-    except ImportError:  # pragma: no cover
-        from click import exceptions as click_exceptions
-
     from pendcli.core.errors import PendcliError
+
+    click_exceptions = _click_exceptions()
 
     try:
         code = app(standalone_mode=False)
@@ -228,7 +230,15 @@ def run() -> None:
     sys.exit(code if isinstance(code, int) else 0)
 
 
-def _fail(message: str, code: int) -> None:
+def _click_exceptions() -> ModuleType:
+    """click's exceptions: recent typer vendors click as ``typer._click``, older typer uses it."""
+    try:
+        return importlib.import_module("typer._click.exceptions")
+    except ImportError:  # pragma: no cover
+        return importlib.import_module("click.exceptions")
+
+
+def _fail(message: str, code: int) -> NoReturn:
     first = message.strip().splitlines()[0] if message.strip() else "error"
     sys.stderr.write(f"pendcli: error: {first}\n")
     sys.exit(code)
