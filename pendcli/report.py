@@ -11,10 +11,14 @@ import importlib
 import importlib.util
 import platform
 from pathlib import Path
+from types import ModuleType
 
 from pendcli.core.errors import PendcliError
-from pendcli.render import Column, to_json, to_markdown
+from pendcli.render.columns import Column
+from pendcli.render.json import to_json
+from pendcli.render.markdown import to_markdown
 from pendcli.render.views import FORMULA_COLUMNS, claim_columns
+from pendcli.reproduce import CLAIM_VERDICTS, ReproduceResult
 
 __all__ = ["write_report"]
 
@@ -38,11 +42,11 @@ order, and `fails` otherwise.
 """
 
 
-def _module(name: str):
+def _module(name: str) -> ModuleType | None:
     return importlib.import_module(name) if importlib.util.find_spec(name) else None
 
 
-def _environment() -> list[dict]:
+def _environment() -> list[dict[str, str]]:
     from importlib.metadata import PackageNotFoundError, version
 
     rows = [{"item": "python", "version": platform.python_version()}]
@@ -66,7 +70,7 @@ def _first_sentence(text: str, limit: int = 220) -> str:
     return sentence if len(sentence) <= limit else sentence[: limit - 1].rstrip() + "…"
 
 
-def disagreement_digest(result) -> list[str]:
+def disagreement_digest(result: ReproduceResult) -> list[str]:
     """One bullet per printed number that is not `agrees` and per formula that `fails`."""
     bullets = []
     for key in result.papers:
@@ -84,7 +88,163 @@ def disagreement_digest(result) -> list[str]:
     return bullets or ["Every printed number and formula holds."]
 
 
-def _tradeoff_figures(tradeoff, folder: Path) -> list[Path]:
+class _Writer:
+    """Writes files under the output folder and remembers every path written (in order)."""
+
+    def __init__(self, out: Path | str, quiet: bool) -> None:
+        self.out = Path(out)
+        self.quiet = quiet
+        self.written: list[Path] = []
+        try:
+            self.out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise PendcliError(
+                f"cannot create output folder {str(self.out)!r}: {exc.strerror}"
+            ) from None
+        if not self.out.is_dir():
+            raise PendcliError(f"--out {str(self.out)!r} is not a folder")
+
+    def text(self, name: str, text: str) -> Path:
+        path = self.out / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+        self.written.append(path)
+        return path
+
+    def status(self, message: str) -> None:
+        if not self.quiet:
+            from pendcli.core.console import console
+
+            console(stderr=True).print(f"report: {message}")
+
+    def links(self, figures: list[Path]) -> list[str]:
+        """Markdown image links to figures already written, relative to the report."""
+        return [f"![{fig.stem}]({_rel(fig, self.out)})" for fig in figures]
+
+
+def write_report(result: ReproduceResult, out: Path | str, quiet: bool = True) -> list[Path]:
+    """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``."""
+    from pendcli.regression import regenerated_tables
+
+    writer = _Writer(out, quiet)
+    writer.text("claims.json", to_json(result.document()))
+    for name, text in regenerated_tables(result).items():
+        writer.text(f"tables/{name}", text)
+    lines = _introduction(result)
+    for key in result.papers:
+        lines += _paper_section(result, key, writer)
+    lines += _stability_section(result)
+    lines += _tradeoff_section(writer)
+    lines += _environment_section()
+    writer.text("report.md", "\n".join(lines))
+    return writer.written
+
+
+def _introduction(result: ReproduceResult) -> list[str]:
+    summary = result.summary_rows()
+    return [
+        "# pendcli reproduction report",
+        "",
+        "Every numerical claim of three papers on the pendulum, as printed, against its "
+        "recomputation with the author's own model (and, where it answers a question about "
+        "the claim, a fuller model). Regenerate with `make reproduce`; the same data is in "
+        "`claims.json` and `tables/`.",
+        "",
+        "## Summary",
+        "",
+        to_markdown(summary, [Column(k, k) for k in summary[0]]) if summary else "",
+        "## What does not hold",
+        "",
+        *disagreement_digest(result),
+        "",
+        "## How verdicts are decided",
+        "",
+        _VERDICT_RULES,
+    ]
+
+
+def _paper_section(result: ReproduceResult, key: str, writer: _Writer) -> list[str]:
+    """Citation, assumptions, verdicts, the claim and formula tables, and the figures."""
+    from pendcli.core.tables import load_paper_table
+
+    table = load_paper_table(key)
+    rows = [r.as_dict() for r in result.claims.get(key, [])]
+    lines = [f"## {key.capitalize()}", "", f"*{table.citation}* (seed `{table.seed}`).", ""]
+    if table.assumptions:
+        lines += ["Assumptions:", ""] + [f"- {a}" for a in table.assumptions] + [""]
+    counts = result.verdict_counts().get(key, {})
+    tally = ", ".join(f"{counts.get(v, 0)} {v}" for v in CLAIM_VERDICTS)
+    lines.append(f"Verdicts: {tally} ({len(rows)} claims).")
+    lines += ["", "### Claims", "", to_markdown(rows, claim_columns(rows))]
+    frows = [f.as_dict() for f in result.formulas.get(key, [])]
+    if frows:
+        lines += ["### Derived formulas", "", to_markdown(frows, FORMULA_COLUMNS)]
+    figures = _paper_figures(result, key, writer)
+    writer.written += figures
+    if figures:
+        lines += ["### Figures", ""]
+        for link in writer.links(figures):
+            lines += [link, ""]
+    return lines
+
+
+def _paper_figures(result: ReproduceResult, key: str, writer: _Writer) -> list[Path]:
+    """The paper's claim figures, then its formula figures (from the rows already computed)."""
+    folder = writer.out / "figures" / key
+    figures: list[Path] = []
+    # papers/<key>/figures.py (the layout of issue 11); claims.py until a paper has moved
+    module = _module(f"pendcli.papers.{key}.figures") or _module(f"pendcli.papers.{key}.claims")
+    if module is not None and hasattr(module, "figures"):
+        writer.status(f"drawing the {key} figures")
+        figures += list(module.figures(folder))
+    fmodule = _module(f"pendcli.papers.{key}.formulas")
+    if fmodule is not None and hasattr(fmodule, "figures"):
+        figures += list(fmodule.figures(folder / "formulas", result.formulas.get(key)))
+    return figures
+
+
+def _stability_section(result: ReproduceResult) -> list[str]:
+    if not result.stability:
+        return []
+    return [
+        "## Numerical stability: where each method is accurate",
+        "",
+        "Measured at run time against mpmath or closed forms, far outside the papers' range.",
+        "",
+        to_markdown(result.stability, [Column(k, k) for k in result.stability[0]]),
+    ]
+
+
+def _tradeoff_section(writer: _Writer) -> list[str]:
+    tradeoff = _module("pendcli.tradeoff")
+    if tradeoff is None:
+        return []
+    writer.status("measuring speed against accuracy (about 10 s)")
+    figs = _tradeoff_figures(tradeoff, writer.out / "tradeoff")
+    writer.written += figs
+    return [
+        "## Speed against accuracy",
+        "",
+        "Work-precision diagrams: the worst error each method reaches against an "
+        "independent reference, against its time per evaluation (`pendcli tradeoff`). "
+        "These are timings on the machine that ran `make reproduce`: unlike every other "
+        "file here, `tradeoff/` changes from run to run.",
+        "",
+        *[f"{link}\n" for link in writer.links([f for f in figs if f.suffix == ".png"])],
+    ]
+
+
+def _environment_section() -> list[str]:
+    return [
+        "## Environment",
+        "",
+        to_markdown(_environment(), [Column("item", "item"), Column("version", "version")]),
+        "Made by `pendcli reproduce --out DIR` (`make reproduce`).",
+        "",
+    ]
+
+
+def _tradeoff_figures(tradeoff: ModuleType, folder: Path) -> list[Path]:
     """Measure every available family, write its table and the work-precision diagram."""
     ready, _skipped = tradeoff.available_families()
     points = [p for name in ready for p in tradeoff.measure_family(name)]
@@ -97,130 +257,3 @@ def _tradeoff_figures(tradeoff, folder: Path) -> list[Path]:
     figure = folder / "work-precision.png"
     tradeoff.plot_tradeoff(points, figure)
     return [*written, figure]
-
-
-def write_report(result, out: Path | str, quiet: bool = True) -> list[Path]:
-    """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``."""
-    from pendcli.core.tables import load_paper_table
-    from pendcli.regression import regenerated_tables
-
-    out = Path(out)
-
-    def status(message: str) -> None:
-        if not quiet:
-            from pendcli.core.console import console
-
-            console(stderr=True).print(f"report: {message}")
-
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise PendcliError(f"cannot create output folder {str(out)!r}: {exc.strerror}") from None
-    if not out.is_dir():
-        raise PendcliError(f"--out {str(out)!r} is not a folder")
-    written: list[Path] = []
-
-    def write(name: str, text: str) -> Path:
-        path = out / name
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text, encoding="utf-8")
-        written.append(path)
-        return path
-
-    write("claims.json", to_json(result.document()))
-    for name, text in regenerated_tables(result).items():
-        write(f"tables/{name}", text)
-
-    counts = result.verdict_counts()
-    verdicts = ["agrees", "truncated", "last-digit", "discrepant"]
-    lines = [
-        "# pendcli reproduction report",
-        "",
-        "Every numerical claim of three papers on the pendulum, as printed, against its "
-        "recomputation with the author's own model (and, where it answers a question about "
-        "the claim, a fuller model). Regenerate with `make reproduce`; the same data is in "
-        "`claims.json` and `tables/`.",
-        "",
-        "## Summary",
-        "",
-    ]
-    summary = []
-    for key in result.papers:
-        c = counts.get(key, {})
-        row = {"paper": key, **{v: c.get(v, 0) for v in verdicts}}
-        row["formulas holding"] = c.get("formula holds", 0)
-        row["formulas failing"] = c.get("formula fails", 0)
-        summary.append(row)
-    lines.append(to_markdown(summary, [Column(k, k) for k in summary[0]]) if summary else "")
-    lines += ["## What does not hold", "", *disagreement_digest(result), ""]
-    lines += ["## How verdicts are decided", "", _VERDICT_RULES]
-
-    for key in result.papers:
-        table = load_paper_table(key)
-        rows = [r.as_dict() for r in result.claims.get(key, [])]
-        lines += [f"## {key.capitalize()}", "", f"*{table.citation}* (seed `{table.seed}`).", ""]
-        if table.assumptions:
-            lines += ["Assumptions:", ""] + [f"- {a}" for a in table.assumptions] + [""]
-        c = counts.get(key, {})
-        lines.append(
-            "Verdicts: "
-            + ", ".join(f"{c.get(v, 0)} {v}" for v in verdicts)
-            + f" ({len(rows)} claims)."
-        )
-        lines += ["", "### Claims", "", to_markdown(rows, claim_columns(rows))]
-        frows = [f.as_dict() for f in result.formulas.get(key, [])]
-        if frows:
-            lines += ["### Derived formulas", "", to_markdown(frows, FORMULA_COLUMNS)]
-        figures: list[Path] = []
-        # papers/<key>/figures.py (the layout of issue 11); claims.py until a paper has moved
-        module = _module(f"pendcli.papers.{key}.figures") or _module(f"pendcli.papers.{key}.claims")
-        if module is not None and hasattr(module, "figures"):
-            status(f"drawing the {key} figures")
-            figures += list(module.figures(out / "figures" / key))
-        fmodule = _module(f"pendcli.papers.{key}.formulas")
-        if fmodule is not None and hasattr(fmodule, "figures"):
-            # pass the rows already computed so the checks do not run twice
-            figures += list(
-                fmodule.figures(out / "figures" / key / "formulas", result.formulas.get(key))
-            )
-        if figures:
-            lines += ["### Figures", ""]
-            for fig in figures:
-                written.append(fig)
-                lines += [f"![{fig.stem}]({_rel(fig, out)})", ""]
-
-    if result.stability:
-        lines += [
-            "## Numerical stability: where each method is accurate",
-            "",
-            "Measured at run time against mpmath or closed forms, far outside the papers' range.",
-            "",
-            to_markdown(result.stability, [Column(k, k) for k in result.stability[0]]),
-        ]
-
-    tradeoff = _module("pendcli.tradeoff")
-    if tradeoff is not None:
-        status("measuring speed against accuracy (about 10 s)")
-        figs = _tradeoff_figures(tradeoff, out / "tradeoff")
-        written += figs
-        lines += [
-            "## Speed against accuracy",
-            "",
-            "Work-precision diagrams: the worst error each method reaches against an "
-            "independent reference, against its time per evaluation (`pendcli tradeoff`). "
-            "These are timings on the machine that ran `make reproduce`: unlike every other "
-            "file here, `tradeoff/` changes from run to run.",
-            "",
-            *[f"![{fig.stem}]({_rel(fig, out)})\n" for fig in figs if fig.suffix == ".png"],
-        ]
-
-    env = _environment()
-    lines += [
-        "## Environment",
-        "",
-        to_markdown(env, [Column("item", "item"), Column("version", "version")]),
-        "Made by `pendcli reproduce --out DIR` (`make reproduce`).",
-        "",
-    ]
-    write("report.md", "\n".join(lines))
-    return written
