@@ -13,6 +13,7 @@ import subprocess
 import sys
 
 import mpmath
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
@@ -162,6 +163,36 @@ def test_example_exact_matches_mpmath(example_exact, example_reference):
     assert quad.precession == pytest.approx(omega, rel=1e-13)
     for got, want in zip(quad.psi_coeffs[:2] + quad.phi_coeffs[:2], b + c, strict=True):
         assert got == pytest.approx(want, abs=1e-15)
+
+
+def test_claims_exact_column_matches_mpmath(rows, example_reference):
+    # The exact motion's coefficients and shift in the claim rows, against mpmath's (4)-(5);
+    # l = 0,5 m as the remark prints it.
+    (_, _), (b, c) = example_reference
+    assert rows["tisserand.example.psi_sin2"].exact == pytest.approx(math.degrees(b[0]), abs=1e-13)
+    assert rows["tisserand.example.psi_sin4"].exact == pytest.approx(math.degrees(b[1]), abs=1e-13)
+    assert rows["tisserand.example.phi_sin2"].exact == pytest.approx(math.degrees(c[0]), abs=1e-13)
+    shift = 1000 * 0.5 * math.sin(EXAMPLE[0]) * abs(c[0])
+    assert rows["tisserand.example.displacement"].exact == pytest.approx(shift, rel=1e-12)
+
+
+def test_example_data_is_the_printed_one():
+    # « θ0 = 30', θ1 = 15' » (read as degrees) and « l = 0^m,5 », from the table's constants
+    assert model.example_reading(model.PRINTED_UNIT) == ("30'", "15'")
+    assert model.example_reading() == ("30°", "15°")
+    assert model.example_angles() == pytest.approx(EXAMPLE, rel=1e-15)
+    assert model.example_length_m() == 0.5
+    assert model.example_ratio() == 0.5
+
+
+def test_formula_reference_coefficients_against_mpmath(example_reference):
+    # formulas.py's own Fourier analysis (not numerics.spherical): ψ(k't) and φ'(k't)
+    from pendcli.papers.tisserand import formulas
+
+    (_, _), (b, c) = example_reference
+    co = formulas.series_coefficients(*EXAMPLE)
+    assert co["d"][1:3] == pytest.approx(b, abs=1e-14)
+    assert co["e"][1] == pytest.approx(c[0], abs=1e-14)
 
 
 def test_two_exact_methods_agree(example_exact):
@@ -329,6 +360,28 @@ def test_parse_angle_errors(text, message):
 
 
 @pytest.mark.parametrize(
+    ("degrees", "text"),
+    [
+        (-(1 + 7 / 60 + 33.14 / 3600), "-1°7'33.14''"),
+        (2 / 60 + 42.2 / 3600, "0°2'42.20''"),
+        (1.69 / 3600, "0°0'1.69''"),
+        (2e-7 / 3600, "2.00e-07''"),
+    ],
+)
+def test_angle_text(degrees, text):
+    assert units.angle_text(math.radians(degrees)) == text
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [(0.0, "out of range"), (-0.5, "out of range"), (float("nan"), "not a number"), (True, "not")],
+)
+def test_parse_length_errors(value, message):
+    with pytest.raises(PendcliError, match=message):
+        units.parse_length(value)
+
+
+@pytest.mark.parametrize(
     ("theta0", "theta1", "message"),
     [
         ("90deg", "10deg", "0 < theta0 < 90"),
@@ -357,6 +410,19 @@ def test_cli_example_formats(runner, fmt):
     assert result.exit_code == 0, result.output
     assert "-1°7'33''" in result.output  # the printed value, in every format
     assert "np.float" not in result.output  # plain floats only
+
+
+def test_cli_example_defaults_are_the_papers_example(runner):
+    from pendcli.cli.main import app
+
+    explicit = ["--theta0", "30°", "--theta1", "15°", "--length", "0.5", "--format", "json"]
+    default = runner.invoke(app, ["tisserand", "example", "--format", "json"])
+    given = runner.invoke(app, ["tisserand", "example", *explicit])
+    assert default.exit_code == given.exit_code == 0, default.output
+    assert default.output == given.output
+    series_default = runner.invoke(app, ["tisserand", "series", "--format", "json"])
+    series_given = runner.invoke(app, ["tisserand", "series", "--ratio", "0.5", "--format", "json"])
+    assert series_default.output == series_given.output
 
 
 def test_cli_claims_json(runner):
@@ -394,12 +460,125 @@ def test_cli_bad_unit_is_one_line_exit_2():
     assert "no unit" in proc.stderr and "30deg" in proc.stderr
 
 
-def test_figures(tmp_path):
+# ------------------------------------------------------------ what the figures show
+
+
+def _axes():
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    return plt, fig, ax
+
+
+def _ink(path, rgb=None, tol=0.12):
+    """Fraction of the image's pixels that are not white (or close to colour ``rgb``)."""
+    import matplotlib.image
+    import numpy as np
+
+    pixels = matplotlib.image.imread(path)[..., :3]
+    if rgb is None:
+        return float(np.mean(np.any(pixels < 0.9, axis=-1)))
+    return float(np.mean(np.all(np.abs(pixels - np.asarray(rgb)) < tol, axis=-1)))
+
+
+@pytest.fixture(scope="module")
+def path_axes():
+    plt, fig, ax = _axes()
+    figures.draw_path(ax)  # the example, 6 radial periods, 120 samples per period
+    yield ax
+    plt.close(fig)
+
+
+def test_path_figure_exact_line_meets_the_apocentres_mpmath_predicts(path_axes):
+    # At the j-th apocentre (sample 120 j) the bob is at distance u0 from the vertical, at the
+    # azimuth j·π(1 + Ω) with Ω from mpmath's quadrature of (1)-(2).
+    exact = path_axes.get_lines()[0]
+    assert exact.get_label() == "exact motion (ODE)" and exact.get_linestyle() == "-"
+    x, y = (np.asarray(v) for v in exact.get_data())
+    _, omega = mp_mean_motions(*EXAMPLE)
+    u0, u1 = math.sin(EXAMPLE[0]), math.sin(EXAMPLE[1])
+    for j in range(7):
+        azimuth = j * math.pi * (1 + omega)
+        assert x[120 * j] == pytest.approx(u0 * math.cos(azimuth), abs=1e-9)
+        assert y[120 * j] == pytest.approx(u0 * math.sin(azimuth), abs=1e-9)
+    r = np.hypot(x, y)
+    assert r.max() == pytest.approx(u0, abs=1e-12) and r.min() == pytest.approx(u1, abs=1e-6)
+
+
+def test_path_figure_series_line_and_ellipses_follow_the_exact_motion(path_axes):
+    lines = path_axes.get_lines()
+    x, y = (np.asarray(v) for v in lines[0].get_data())
+    xs, ys = (np.asarray(v) for v in lines[1].get_data())
+    assert lines[1].get_label() == "Tisserand (II)-(VI)" and lines[1].get_linestyle() == "--"
+    assert (xs[0], ys[0]) == pytest.approx((math.sin(EXAMPLE[0]), 0.0), abs=1e-15)
+    # the series path is a different curve, within its truncation error (about 1e-3 in l)
+    assert 1e-5 < np.max(np.hypot(x - xs, y - ys)) < 2e-3
+    ellipses = lines[2:]
+    assert len(ellipses) == 7 and ellipses[0].get_label().startswith("series ellipse")
+    for j, ellipse in enumerate(ellipses):  # a vertex of the j-th ellipse at the j-th apocentre
+        ex, ey = (np.asarray(v) for v in ellipse.get_data())
+        vertex = min(np.hypot(ex[k] - x[120 * j], ey[k] - y[120 * j]) for k in (0, 180))
+        assert vertex < 1e-3
+    assert path_axes.get_xlabel() == "x / l" and path_axes.get_ylabel() == "y / l"
+    assert "θ0 = 30°, θ1 = 15°" in path_axes.get_title()
+
+
+@pytest.fixture(scope="module")
+def error_axes():
+    plt, fig, ax = _axes()
+    figures.draw_series_error(ax)
+    yield ax
+    plt.close(fig)
+
+
+def test_series_error_figure_against_mpmath(error_axes):
+    # Each curve is |series - exact|/|exact|; the exact side here is mpmath's (1)-(2) and
+    # (4)-(5), at θ0 = 10.3° and 38.6° of the plotted grid.
+    lines = {line.get_label(): line for line in error_axes.get_lines()}
+    degrees = np.asarray(lines["k'"].get_xdata())
+    for index in (23, 33):
+        theta0 = math.radians(degrees[index])
+        series = model.series_conical(theta0, theta0 / 2, 6)
+        k1, omega = mp_mean_motions(theta0, theta0 / 2)
+        (b1,), (c1,) = mp_fourier(theta0, theta0 / 2, harmonics=1, dps=25)
+        expected = {
+            "k'": abs(series.k1 - k1) / k1,
+            "Ω (same error as k'')": abs(series.precession - omega) / omega,
+            "sin 2k't in ψ": abs(series.psi_coeffs[0] - b1) / abs(b1),
+            "sin 2k't in φ'": abs(series.phi_coeffs[0] - c1) / abs(c1),
+        }
+        for label, want in expected.items():
+            assert lines[label].get_ydata()[index] == pytest.approx(want, rel=1e-5), label
+
+
+def test_series_error_figure_slopes_and_labels(error_axes):
+    lines = {line.get_label(): line for line in error_axes.get_lines()}
+    assert set(figures.SERIES_ERROR_CURVES) - {"Ω"} < set(lines)
+    assert lines["Ω (same error as k'')"].get_linestyle() == "--"
+    degrees = np.asarray(lines["k'"].get_xdata())
+    # (I) keeps k' to u⁶: its relative error grows like θ0⁸ (between 5.4° and 10.3°)
+    k1 = np.asarray(lines["k'"].get_ydata())
+    slope = math.log(k1[23] / k1[18]) / math.log(degrees[23] / degrees[18])
+    assert slope == pytest.approx(8, abs=0.3)
+    # the example's θ0 is marked (the printed 30, read as degrees)
+    marks = [line for line in error_axes.get_lines() if len(line.get_xdata()) == 2]
+    assert [line.get_xdata()[0] for line in marks] == [pytest.approx(30.0)]
+    assert [t.get_text() for t in error_axes.texts] == ["example θ0 = 30°"]
+    assert error_axes.get_xlabel() == "θ0 (degrees), θ1 = θ0/2"
+    assert error_axes.get_xscale() == error_axes.get_yscale() == "log"
+
+
+def test_figures_written(tmp_path):
     paths = figures.figures(tmp_path)
     assert [p.name for p in paths] == ["tisserand_path.png", "tisserand_series_error.png"]
-    for p in paths:
-        assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-        assert p.stat().st_size > 10_000
+    path, errors = paths
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert _ink(path) > 0.02 and _ink(errors) > 0.02  # curves drawn, not a blank canvas
+    assert _ink(path, (0.839, 0.153, 0.157)) > 1e-3  # the series path, tab:red
+    assert _ink(path, (0.122, 0.467, 0.706)) > 1e-3  # the exact path, tab:blue
 
 
 def test_example_rows_published_only_for_the_example():
@@ -444,6 +623,7 @@ def test_cli_example_plot(runner, tmp_path):
     result = runner.invoke(app, [*args, "--format", "json", "--plot", str(out)])
     assert result.exit_code == 0, result.output
     assert out.read_bytes()[:4] == b"\x89PNG"
+    assert _ink(out, (0.839, 0.153, 0.157)) > 1e-3  # the series path is drawn
 
 
 @pytest.mark.parametrize("angles", [EXAMPLE, (0.4, 0.1), (1.2, 0.9), (1.5, 1.5)])
