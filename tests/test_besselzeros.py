@@ -14,9 +14,9 @@ from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     METHODS,
     bessel_zeros,
-    lecornu_series,
     series_safe_limit,
 )
+from pendcli.papers.lecornu.model import lecornu_series
 
 REF_DPS = 40
 

@@ -1,14 +1,20 @@
-"""Lecornu's claims: engine verdicts, confirmed by an independent mpmath recomputation.
+"""Lecornu's claims: engine verdicts, confirmed by recomputations that share no code with it.
 
-Each printed number is recomputed a second time here with mpmath at 30 digits (zeros by
-findroot on besselj, not by the package's zero finder) and judged; the expected verdict of
-every claim is asserted, disagreements included.
+Every printed number is recomputed a second time here by another method: zeros by mpmath's
+findroot on J_ν at 30 digits (the package uses besseljzero and McMahon), the speeds from the
+elongation condition d(J_1(z)/z)/dz = 0 (the package uses J_2 = 0), and every time, length
+and deviation of the example by integrating eq. (3) with solve_ivp from the values of
+solution (10) at l = 1,3 m (the package uses the Bessel zeros and the identity
+2J_1/z = J_0). The expected verdict of every claim is asserted, disagreements included.
 """
 
 from __future__ import annotations
 
 import json
 import math
+import shutil
+from fractions import Fraction
+from pathlib import Path
 
 import mpmath
 import numpy as np
@@ -17,16 +23,15 @@ from typer.testing import CliRunner
 
 from pendcli.core.claims import evaluate_paper
 from pendcli.core.errors import PendcliError
-from pendcli.core.tables import load_paper_table
+from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.core.verdict import judge
-from pendcli.papers.lecornu import claims as lecornu
-
-G = 9.81
-B = 0.35
-mpmath.mp.dps = 30
+from pendcli.papers.lecornu import claims, explore, figures, model
 
 TABLE = load_paper_table("lecornu")
 CLAIMS = {c.id: c for c in TABLE.claims}
+G = TABLE.constant("g")
+B = TABLE.constant("speed")
+L = TABLE.constant("length")
 
 EXPECTED = {
     "lecornu.j2_zeros.count_below_20": "agrees",
@@ -74,61 +79,144 @@ EXPECTED = {
     "lecornu.k4.swing180": "agrees",
 }
 
+ODE_RTOL = 1e-8  # what the solve_ivp reference (rtol 1e-12) guarantees for event times
+MP_RTOL = 1e-12
+
+
+# --- the independent references ----------------------------------------------------------
+
 
 def mp_zero(order: int, s: int) -> mpmath.mpf:
-    beta = (s + order / 2 - mpmath.mpf(1) / 4) * mpmath.pi
-    return mpmath.findroot(
-        lambda x: mpmath.besselj(order, x), beta - (4 * order**2 - 1) / (8 * beta)
+    """j_(order,s) by findroot on besselj from McMahon's first term (30 digits)."""
+    with mpmath.workdps(30):
+        beta = (s + order / 2 - mpmath.mpf(1) / 4) * mpmath.pi
+        return mpmath.findroot(
+            lambda x: mpmath.besselj(order, x), beta - (4 * order**2 - 1) / (8 * beta)
+        )
+
+
+def mp_elongation_z(s: int) -> mpmath.mpf:
+    """The s-th elongation of solution (10), θ ∝ J_1(z)/z: a zero of its derivative in z."""
+    with mpmath.workdps(30):
+        guess = (s + mpmath.mpf(3) / 4) * mpmath.pi
+        guess -= mpmath.mpf(15) / (8 * guess)
+        return mpmath.findroot(lambda z: mpmath.diff(lambda u: mpmath.besselj(1, u) / u, z), guess)
+
+
+def shortening_rhs(t: float, y: np.ndarray, b: float = B, g: float = G) -> list[float]:
+    """Eq. (3) linear, l = L - bt: (L - bt)θ'' - 2bθ' + gθ = 0."""
+    return [y[1], (2 * b * y[1] - g * y[0]) / (L - b * t)]
+
+
+def solution_10_by_ode(l_start: float = 1.3, l_floor: float = 0.02):
+    """solve_ivp on eq. (3) from the values of solution (10), θ ∝ J_1(z)/z, at l_start
+    (mpmath at 30 digits, derivative numerical): no Bessel zero and no identity used."""
+    from scipy.integrate import solve_ivp
+
+    t0, t1 = (L - l_start) / B, (L - l_floor) / B
+    with mpmath.workdps(30):
+
+        def theta(t):
+            z = 2 * mpmath.sqrt(G * (L - B * t)) / B
+            return mpmath.besselj(1, z) / z
+
+        y0 = [float(theta(t0)), float(mpmath.diff(theta, t0))]
+    sol = solve_ivp(
+        shortening_rhs,
+        (t0, t1),
+        y0,
+        method="DOP853",
+        rtol=1e-12,
+        atol=1e-14 * abs(y0[0]),
+        events=(lambda t, y: y[1], lambda t, y: y[0]),
+        dense_output=True,
     )
+    assert sol.status == 0
+    return sol
 
 
-def independent(cid: str) -> float:
-    """The claim recomputed with mpmath alone (no pendcli code)."""
-    c = mpmath.mpf(B) ** 2 / (4 * mpmath.mpf(G))
-    parts = cid.split(".")
-    k = int(parts[-1]) if parts[-1].isdigit() else None
-    elong_lengths = [c * mp_zero(2, 5 - i) ** 2 for i in range(5)]  # z = 17,96 first
-    times = [(1 - length) / B for length in elong_lengths]
-    if cid == "lecornu.j2_zeros.count_below_20":
-        return float(sum(1 for s in range(1, 10) if mp_zero(2, s) < 20))
-    if cid.startswith("lecornu.j2_zeros."):
-        return float(mp_zero(2, k))
-    if cid.startswith("lecornu.speed."):
-        return float(2 * mpmath.sqrt(G) / mp_zero(2, k))
-    if cid == "lecornu.coefficient_b2_4g":
-        return float(c)
-    if cid.startswith("lecornu.example.length."):
-        return float(elong_lengths[k - 1])
-    if cid.startswith("lecornu.example.time."):
-        return float(times[k - 1])
-    if cid == "lecornu.example.time_zero_length":
-        return 1 / B
-    if cid.startswith("lecornu.example.interval."):
-        return float([*times, 1 / mpmath.mpf(B)][k] - times[k - 1])
-    if cid.startswith("lecornu.j0_at_j2_zeros."):
-        return float(mpmath.besselj(0, mp_zero(2, k)))
-    if cid.startswith("lecornu.deviation."):
-        j0_first = mpmath.besselj(0, mp_zero(2, 5))
-        if cid.endswith("zero_length"):
-            return float(mpmath.limit(lambda z: 2 * mpmath.besselj(1, z) / z, 0) / j0_first)
-        return float(mpmath.besselj(0, mp_zero(2, 6 - k)) / j0_first)
-    if cid == "lecornu.limit_2j1_over_z":
-        return float(mpmath.limit(lambda z: 2 * mpmath.besselj(1, z) / z, 0))
-    if cid.startswith("lecornu.j1_zeros."):
-        return float(mp_zero(1, 7 - k))
-    if cid.startswith("lecornu.j1_lengths."):
-        return float(c * mp_zero(1, 7 - k) ** 2)
-    if cid == "lecornu.x_bound":
-        return float(mp_zero(1, 1) ** 2 / 4)
-    if cid == "lecornu.half_oscillation_coefficient":
-        return float((mpmath.pi**2 - 12) / 16)
-    if cid == "lecornu.mean_pendulum_coefficient":
-        return float(mpmath.pi * (7 * mpmath.pi**2 - 3) / 32)
-    if cid in ("lecornu.k4.theta20", "lecornu.k4.theta20_below_one_thousandth"):
-        return float(mpmath.sin(mpmath.radians(10)) ** 4)
-    if cid == "lecornu.k4.swing180":
-        return float(mpmath.sin(mpmath.radians(45)) ** 4)
-    raise AssertionError(f"no independent recomputation for {cid}")
+def from_rest_by_ode(l_floor: float = 0.05):
+    """solve_ivp on eq. (3) from θ = 1, θ' = 0 at t = 0 (l = 1 m): the release from rest."""
+    from scipy.integrate import solve_ivp
+
+    sol = solve_ivp(
+        shortening_rhs,
+        (0.0, (L - l_floor) / B),
+        [1.0, 0.0],
+        method="DOP853",
+        rtol=1e-12,
+        atol=1e-14,
+        dense_output=True,
+    )
+    assert sol.status == 0
+    return sol
+
+
+def _example_references() -> dict[str, tuple[float, float]]:
+    """Lengths, times, intervals, deviations, J_1 lengths: events of the ODE of solution (10)."""
+    sol = solution_10_by_ode()
+    te = sol.t_events[0]  # elongations, l from 1,007 m down
+    theta_e = sol.y_events[0][:, 0]
+    tp = sol.t_events[1]  # vertical passages, l from 1,21 m down
+    assert len(te) == 5 and len(tp) == 6
+    zero_length = float(Fraction(L) / Fraction(B))  # l = L - bt = 0
+    intervals = np.diff(np.append(te, zero_length))
+    out: dict[str, tuple[float, float]] = {
+        "lecornu.example.time_zero_length": (zero_length, MP_RTOL)
+    }
+    for k in range(5):
+        out[f"lecornu.example.length.{k + 1}"] = (L - B * te[k], ODE_RTOL)
+        out[f"lecornu.example.time.{k + 1}"] = (te[k], ODE_RTOL)
+        out[f"lecornu.example.interval.{k + 1}"] = (intervals[k], ODE_RTOL)
+    for k in range(1, 5):
+        out[f"lecornu.deviation.{k + 1}"] = (theta_e[k] / theta_e[0], 1e-7)
+    for k in range(6):
+        out[f"lecornu.j1_lengths.{k + 1}"] = (L - B * tp[k], ODE_RTOL)
+    return out
+
+
+def _bessel_references() -> dict[str, tuple[float, float]]:
+    """Zeros, speeds, J_0, the limits and the bound: mpmath at 30 digits."""
+    out: dict[str, tuple[float, float]] = {}
+    with mpmath.workdps(30):
+        out["lecornu.j2_zeros.count_below_20"] = (
+            float(sum(1 for s in range(1, 10) if mp_zero(2, s) < 20)),
+            0.0,
+        )
+        for k in range(1, 6):
+            out[f"lecornu.j2_zeros.{k}"] = (float(mp_zero(2, k)), MP_RTOL)
+            speed = 2 * mpmath.sqrt(mpmath.mpf(G) * L) / mp_elongation_z(k)
+            out[f"lecornu.speed.{k}"] = (float(speed), 1e-10)
+            out[f"lecornu.j0_at_j2_zeros.{k}"] = (float(mpmath.besselj(0, mp_zero(2, k))), 1e-10)
+        for k in range(1, 7):
+            out[f"lecornu.j1_zeros.{k}"] = (float(mp_zero(1, 7 - k)), MP_RTOL)
+        limit = mpmath.limit(lambda z: 2 * mpmath.besselj(1, z) / z, 0)
+        out["lecornu.limit_2j1_over_z"] = (float(limit), MP_RTOL)
+        # θ/θ0 at zero length: J_1(z)/z as z → 0 over its value at the first elongation
+        ze = mp_elongation_z(5)
+        tiny = mpmath.mpf("1e-12")
+        ratio = (mpmath.besselj(1, tiny) / tiny) / (mpmath.besselj(1, ze) / ze)
+        out["lecornu.deviation.zero_length"] = (float(ratio), 1e-10)
+        # the smallest nonzero zero of φ(x) = √x J_1(2√x)
+        x1 = mpmath.findroot(lambda x: mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x)), 3.6)
+        out["lecornu.x_bound"] = (float(x1), MP_RTOL)
+        # these two rows recompute the printed expressions (their exact column is tested below)
+        pi = mpmath.pi
+        out["lecornu.half_oscillation_coefficient"] = (float((pi**2 - 12) / 16), MP_RTOL)
+        out["lecornu.mean_pendulum_coefficient"] = (float(pi * (7 * pi**2 - 3) / 32), MP_RTOL)
+        k4_20 = float(mpmath.sin(mpmath.pi / 18) ** 4)  # k = sin(θ0/2), θ0 = 20°
+    out["lecornu.k4.theta20"] = (k4_20, MP_RTOL)
+    out["lecornu.k4.theta20_below_one_thousandth"] = (k4_20, MP_RTOL)
+    out["lecornu.k4.swing180"] = (0.25, MP_RTOL)  # sin⁴(45°) = (1/√2)⁴
+    # b²/(4g) in exact rationals of the table's decimals
+    coefficient = Fraction(str(B)) ** 2 / (4 * Fraction(str(G)))
+    out["lecornu.coefficient_b2_4g"] = (float(coefficient), MP_RTOL)
+    return out
+
+
+@pytest.fixture(scope="module")
+def references() -> dict[str, tuple[float, float]]:
+    return {**_bessel_references(), **_example_references()}
 
 
 @pytest.fixture(scope="module")
@@ -136,15 +224,19 @@ def rows():
     return {r.id: r for r in evaluate_paper("lecornu")}
 
 
-def test_every_claim_has_an_expected_verdict():
+# --- every claim --------------------------------------------------------------------------
+
+
+def test_every_claim_has_an_expected_verdict_and_a_reference(references):
     assert set(EXPECTED) == set(CLAIMS)
+    assert set(references) == set(CLAIMS)
 
 
 @pytest.mark.parametrize("cid", list(CLAIMS))
-def test_claim(rows, cid):
+def test_claim(rows, references, cid):
     row = rows[cid]
-    ref = independent(cid)
-    assert row.recomputed == pytest.approx(ref, rel=1e-9, abs=1e-12)
+    ref, rtol = references[cid]
+    assert row.recomputed == pytest.approx(ref, rel=rtol, abs=1e-14)
     assert row.verdict == EXPECTED[cid]
     # the independent value lands on the same side of the printed precision
     assert judge(CLAIMS[cid].number, ref, CLAIMS[cid].comparison).verdict.value == EXPECTED[cid]
@@ -167,12 +259,21 @@ def test_exact_mean_pendulum_coefficient_is_not_the_printed_formula(rows):
 
 
 def test_period_b2_coefficient_3pi_over_32_holds():
-    assert lecornu.period_b2_coefficient_exact() == pytest.approx(3 * math.pi / 32, abs=1e-5)
+    assert model.period_b2_coefficient_exact() == pytest.approx(3 * math.pi / 32, abs=1e-5)
+
+
+def test_extrapolation_uses_the_given_ps():
+    # a quadratic through unequally spaced p is extrapolated exactly (was: p, p/2, p/4 assumed)
+    ps = (0.003, 0.002, 0.0005)
+    values = [1.5 - 2.0 * p + 30.0 * p * p for p in ps]
+    assert model.extrapolate_to_zero(values, ps) == pytest.approx(1.5, rel=1e-12)
+    with pytest.raises(PendcliError, match="distinct"):
+        model.extrapolate_to_zero([1.0, 2.0], (0.1, 0.1))
 
 
 def test_time_slip_is_not_explained_by_his_own_lengths():
     # (1 - 0,68)/0,35 from his own printed numbers: 0,91, not 0,94
-    own = (1 - CLAIMS["lecornu.example.length.2"].number.value) / B
+    own = (L - CLAIMS["lecornu.example.length.2"].number.value) / B
     assert judge(CLAIMS["lecornu.example.time.2"].number, own).verdict.value == "discrepant"
     # ... while the printed interval 0,72 is 1,66 - 0,94 (the slip propagated)
     t2 = CLAIMS["lecornu.example.time.2"].number.value
@@ -186,37 +287,81 @@ def test_coefficient_needs_g_at_most_9_80():
     assert judge(number, B * B / (4 * 9.8005)).verdict.value != "agrees"
 
 
+def test_notes_use_the_printed_intermediates(rows):
+    # the author's procedure, from his printed (rounded) values: 0,00313·8,41² and 3,83²/4
+    assert "0.2214" in rows["lecornu.example.length.4"].note  # 0,00313 × 8,41²
+    assert f"{3.83**2 / 4:.5f}" in rows["lecornu.x_bound"].note
+    assert "g <= 9.800" in rows["lecornu.coefficient_b2_4g"].note
+
+
+# --- the numbers come from the table, not from the code -----------------------------------
+
+
+@pytest.fixture
+def edited_tables(tmp_path, monkeypatch):
+    """A copy of the tables whose edits the code must follow (PENDCLI_TABLES)."""
+
+    def edit(old: str, new: str) -> Path:
+        root = tmp_path / "tables"
+        if not root.exists():
+            shutil.copytree(tables_dir(), root)
+        path = root / "published" / "lecornu.toml"
+        text = path.read_text(encoding="utf-8")
+        assert text.count(old) == 1
+        path.write_text(text.replace(old, new), encoding="utf-8")
+        monkeypatch.setenv("PENDCLI_TABLES", str(root))
+        return root
+
+    return edit
+
+
+def test_g_and_printed_intermediates_are_read_from_the_table(edited_tables):
+    edited_tables("[paper.constants.g]\nvalue = 9.81", "[paper.constants.g]\nvalue = 9.8")
+    edited_tables('published = "3,83"', 'published = "3,85"')
+    out = claims.recompute()
+    assert out["lecornu.coefficient_b2_4g"].value == pytest.approx(B * B / (4 * 9.8), rel=1e-15)
+    assert "3,85²/4" in out["lecornu.x_bound"].note
+
+
+def test_cli_defaults_come_from_the_table(edited_tables):
+    edited_tables("[paper.constants.speed]\nvalue = 0.35", "[paper.constants.speed]\nvalue = 0.42")
+    result = CliRunner().invoke(_app(), ["lecornu", "example", "--format", "json"])
+    assert result.exit_code == 0, result.output
+    summary = {r["quantity"]: r["value"] for r in json.loads(result.output)["summary"]}
+    assert summary["b²/(4g), eq. (16)"] == pytest.approx(0.42**2 / (4 * G), rel=1e-15)
+
+
 # --- the example against direct integration of eq. (3) -----------------------------------
 
 
 def test_elongation_times_bessel_against_ode():
-    bessel = lecornu.elongation_times(B, 1.0, G, "bessel", floor_fraction=0.02)
-    ode = lecornu.elongation_times(B, 1.0, G, "ode", rtol=1e-11, floor_fraction=0.02)
+    bessel = model.elongation_times(B, L, G, "bessel", floor_fraction=0.02)
+    ode = model.elongation_times(B, L, G, "ode", rtol=1e-11, floor_fraction=0.02)
     assert len(bessel) == len(ode) == 5
     np.testing.assert_allclose(ode, bessel, rtol=0, atol=1e-8)
 
 
 def test_from_rest_amplitudes_against_ode():
-    model = lecornu.from_rest_model(B, 1.0, G, floor_fraction=0.02)
-    run = lecornu.integrate_shortening(B, 1.0, G, 1e-4, rtol=1e-11, floor_fraction=0.02)
+    m = model.from_rest_model(B, L, G, floor_fraction=0.02)
+    run = model.integrate_shortening(B, L, G, 1e-4, rtol=1e-11, floor_fraction=0.02)
     np.testing.assert_allclose(
-        run.elongation_angles / run.elongation_angles[0], model.amplitude_ratios, rtol=1e-7
+        run.elongation_angles / run.elongation_angles[0], m.amplitude_ratios, rtol=1e-7
     )
     # vertical passages, too
-    np.testing.assert_allclose(run.passage_times, model.passage_times, atol=1e-8)
+    np.testing.assert_allclose(run.passage_times, m.passage_times, atol=1e-8)
 
 
 def test_at_lecornus_speed_the_release_is_solution_10():
     b5 = 2 * math.sqrt(G) / float(mp_zero(2, 5))
-    rest = lecornu.from_rest_model(b5, 1.0, G, floor_fraction=0.02)
-    particular = lecornu.example_model(b5, 1.0, G)
+    rest = model.from_rest_model(b5, L, G, floor_fraction=0.02)
+    particular = model.example_model(b5, L, G)
     assert abs(rest.singular_weight) < 1e-12
     np.testing.assert_allclose(rest.elongation_times, particular.elongation_times, atol=1e-9)
     np.testing.assert_allclose(rest.amplitude_ratios, particular.amplitude_ratios, rtol=1e-8)
 
 
 def test_small_angle_cost():
-    rows = lecornu.ode_check(B, 1.0, G, (1.0, 5.0), floor_fraction=0.02)
+    rows = explore.ode_check(B, L, G, (1.0, 5.0), floor_fraction=0.02)
     assert all(abs(r["linear_minus_bessel_s"]) < 1e-8 for r in rows)
     shifts1 = np.array([r["sin_shift_1deg_s"] for r in rows[1:]])
     shifts5 = np.array([r["sin_shift_5deg_s"] for r in rows[1:]])
@@ -226,11 +371,31 @@ def test_small_angle_cost():
     np.testing.assert_allclose(shifts5 / shifts1, 25.0, rtol=0.06)
 
 
+def test_exact_solution_constants_against_mpmath_roots():
+    """The double-precision roots behind -0,13, 3π/32 and 6,47 against mpmath at 30 digits."""
+    for p in (0.004, 0.001):
+        with mpmath.workdps(30):
+            z0 = 2 / mpmath.mpf(p)
+            j1, y1 = mpmath.besselj(1, z0), mpmath.bessely(1, z0)
+            ze = mpmath.findroot(
+                lambda z, j1=j1, y1=y1: mpmath.besselj(2, z) * y1 - mpmath.bessely(2, z) * j1,
+                z0 + mpmath.pi / 2,
+            )
+            z1 = mpmath.findroot(
+                lambda z, j1=j1, y1=y1: mpmath.besselj(1, z) * y1 - mpmath.bessely(1, z) * j1,
+                z0 + mpmath.pi,
+            )
+            ref = (p * (ze**2 - z0**2) / 4, p * (z1**2 - z0**2) / 4)
+        got = model.lengthening_from_vertical(p)
+        assert abs(got[0] - float(ref[0])) < 1e-12
+        assert abs(got[1] - float(ref[1])) < 1e-12
+
+
 # --- g ------------------------------------------------------------------------------------
 
 
 def test_g_sensitivity_derivative_is_analytic():
-    rows = {r["id"]: r for r in lecornu.g_sensitivity(gs=(9.80, 9.81))}
+    rows = {r["id"]: r for r in explore.g_sensitivity(gs=(9.80, 9.81))}
     speed = 2 * math.sqrt(G) / float(mp_zero(2, 5))
     assert rows["lecornu.speed.5"]["d_value_dg"] == pytest.approx(speed / (2 * G), rel=1e-6)
     coef = B * B / (4 * G)
@@ -239,10 +404,11 @@ def test_g_sensitivity_derivative_is_analytic():
 
 
 def test_best_g_is_consistent_with_the_verdicts(rows):
-    best = lecornu.best_g(lo=9.78, hi=9.84, step=0.002)
-    ids = lecornu._g_dependent_ids()
-    assert best["agreeing_at_9.81"] == sum(rows[i].verdict == "agrees" for i in ids)
-    assert best["most_agreeing"] >= best["agreeing_at_9.81"]
+    best = explore.best_g(lo=9.78, hi=9.84, step=0.002)
+    ids = explore.g_dependent_ids()
+    agreeing = best[f"agreeing_at_{G:g}"]
+    assert agreeing == sum(rows[i].verdict == "agrees" for i in ids)
+    assert best["most_agreeing"] >= agreeing
     assert 9.78 <= best["best_g_least_squares"] <= 9.84
 
 
@@ -264,15 +430,27 @@ def test_best_g_is_consistent_with_the_verdicts(rows):
 )
 def test_example_bad_input(kwargs):
     with pytest.raises(PendcliError, match="valid range"):
-        lecornu.example_model(**{"speed": B, "length": 1.0, "g": G, **kwargs})
+        model.example_model(**{"speed": B, "length": L, "g": G, **kwargs})
+
+
+@pytest.mark.parametrize("g", [3.5, 12.0, float("nan"), "9.81"])
+def test_claims_refuse_a_g_that_changes_the_example(g):
+    with pytest.raises(PendcliError, match="structure of the printed example"):
+        claims.recompute(g)
 
 
 def test_elongation_times_bad_method():
     with pytest.raises(PendcliError, match="bessel, ode"):
-        lecornu.elongation_times(B, 1.0, G, "rk4")
+        model.elongation_times(B, L, G, "rk4")
 
 
-# --- CLI and figures ----------------------------------------------------------------------
+# --- CLI ------------------------------------------------------------------------------------
+
+
+def _app():
+    from pendcli.cli.main import app
+
+    return app
 
 
 @pytest.fixture(scope="module")
@@ -281,26 +459,15 @@ def runner():
 
 
 def invoke(runner, *args):
-    from pendcli.cli.main import app
-
-    return runner.invoke(app, ["lecornu", *args])
+    return runner.invoke(_app(), ["lecornu", *args])
 
 
 def test_cli_claims_json(runner):
     result = invoke(runner, "claims", "--format", "json")
     assert result.exit_code == 0, result.output
     doc = json.loads(result.output)
+    assert doc["g"] == G
     assert {r["id"]: r["verdict"] for r in doc["claims"]} == EXPECTED
-
-
-def test_cli_example_csv_and_plot(runner, tmp_path):
-    plot = tmp_path / "ex.png"
-    result = invoke(
-        runner, "example", "--speed", "0.5", "--length", "2", "--format", "csv", "--plot", str(plot)
-    )
-    assert result.exit_code == 0, result.output
-    assert result.output.splitlines()[0].startswith("k,z,length_m,time_s")
-    assert plot.stat().st_size > 10_000
 
 
 @pytest.mark.parametrize("fmt", ["table", "markdown", "json", "csv"])
@@ -333,40 +500,142 @@ def test_cli_other_commands_json(runner, args, key):
         ("zeros", "--order", "3"),
         ("zeros", "--count", "9", "--method", "series"),
         ("ode-check", "--floor", "0"),
+        ("ode-check", "--amplitude", "180"),
+        ("claims", "--g", "3.5"),
     ],
 )
 def test_cli_bad_input_is_one_error(runner, args):
     result = invoke(runner, *args)
     assert isinstance(result.exception, PendcliError)
-    assert "valid range" in str(result.exception) or "one of" in str(result.exception)
+    message = str(result.exception)
+    assert "valid range" in message or "one of" in message
 
 
-def test_figures(tmp_path):
-    paths = lecornu.figures(tmp_path)
+# --- figures: what is drawn ---------------------------------------------------------------
+
+
+@pytest.fixture
+def axes():
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    yield ax
+    plt.close(fig)
+
+
+def _line(ax, label: str):
+    found = [line for line in ax.lines if line.get_label() == label]
+    assert len(found) == 1, [line.get_label() for line in ax.lines]
+    return found[0]
+
+
+def test_example_figure_curves_are_the_solutions_of_eq_3(axes, rows):
+    m = model.example_model()
+    figures.draw_example_claims(axes, m, rows)
+    sol10, rest = solution_10_by_ode(), from_rest_by_ode()
+    curve = _line(axes, f"solution (10), b = 0,35 m/s, g = {G:g}")
+    t, y = curve.get_xdata(), curve.get_ydata()
+    keep = (L - B * t) >= 0.02
+    theta = sol10.sol(t[keep])[0] / sol10.y_events[0][0, 0]  # θ0 at the first elongation
+    np.testing.assert_allclose(y[keep], theta, rtol=0, atol=1e-7 * np.max(np.abs(theta)))
+    curve = _line(axes, "released from rest at 1 m (exact column)")
+    t, y = curve.get_xdata(), curve.get_ydata()
+    assert np.all(np.isnan(y[t < 0]))
+    keep = (t >= 0) & ((L - B * t) >= 0.05)
+    theta = rest.sol(t[keep])[0]
+    np.testing.assert_allclose(y[keep], theta, rtol=0, atol=1e-7 * np.max(np.abs(theta)))
+
+
+def test_example_figure_draws_the_printed_points(axes, rows):
+    figures.draw_example_claims(axes, model.example_model(), rows)
+    printed = _line(axes, "elongations, printed")
+    times = [CLAIMS[f"lecornu.example.time.{k}"].number.value for k in range(1, 6)]
+    deviations = [1.0] + [CLAIMS[f"lecornu.deviation.{k}"].number.value for k in range(2, 6)]
+    assert list(printed.get_xdata()) == times
+    assert list(printed.get_ydata()) == deviations
+    passages = _line(axes, "vertical passages from printed lengths")
+    lengths = np.array([CLAIMS[f"lecornu.j1_lengths.{k}"].number.value for k in range(1, 7)])
+    np.testing.assert_allclose(passages.get_xdata(), (L - lengths) / B)
+    assert axes.get_yscale() == "symlog"
+    assert axes.get_ylabel() == "θ/θ0 (symlog)"
+    assert "1 m long at t = 0, shortening at 0,35 m/s" in axes.get_xlabel()
+
+
+def test_difference_figure_bars(axes, rows, references):
+    from matplotlib.colors import to_rgba
+
+    figures.draw_printed_minus_recomputed(axes, rows, G)
+    ids = [cid for _, group in figures.GROUPS for cid in group]
+    bars = [bar for container in axes.containers for bar in container]
+    assert len(bars) == len(ids)
+    colours = {"agrees": "C2", "truncated": "C1", "last-digit": "C1", "discrepant": "C3"}
+    for bar, cid in zip(bars, ids, strict=True):
+        number = CLAIMS[cid].number
+        expected = (number.value - references[cid][0]) / number.resolution
+        assert bar.get_height() == pytest.approx(expected, abs=1e-5), cid
+        assert bar.get_facecolor() == to_rgba(colours[EXPECTED[cid]]), cid
+    labels = [t.get_text() for t in axes.get_xticklabels()]
+    assert labels == [f"{CLAIMS[c].number.value:.{CLAIMS[c].number.decimals}f}" for c in ids]
+    assert f"(g = {G:g})" in axes.get_title()
+
+
+def _png_pixels(path: Path) -> np.ndarray:
+    from matplotlib.image import imread
+
+    return imread(path)
+
+
+def _share_of(pixels: np.ndarray, colour: str, tol: float = 0.08) -> float:
+    from matplotlib.colors import to_rgb
+
+    rgb = np.array(to_rgb(colour))
+    return float(np.mean(np.all(np.abs(pixels[..., :3] - rgb) < tol, axis=-1)))
+
+
+def test_figures_written(tmp_path):
+    paths = figures.figures(tmp_path)
     assert [p.name for p in paths] == [
         "lecornu_example_theta.png",
         "lecornu_printed_minus_recomputed.png",
     ]
-    assert all(p.stat().st_size > 20_000 for p in paths)
+    theta, bars = (_png_pixels(p) for p in paths)
+    assert theta.shape[:2] == (576, 960)  # 8 × 4.8 in at 120 dpi
+    assert _share_of(theta, "C3") > 1e-4  # the printed crosses (red)
+    assert _share_of(theta, "0.3") > 1e-3  # the solution (10) curve
+    assert _share_of(bars, "C2") > 1e-3  # agreeing bars (green)
+    assert _share_of(bars, "C3") > 1e-3  # discrepant bars (red)
 
 
-def test_exact_solution_constants_against_mpmath_roots():
-    """The double-precision roots behind -0,13, 3π/32 and 6,47 against mpmath at 30 digits."""
-    from pendcli.papers.lecornu.claims import _lengthening_from_vertical
+def test_cli_example_csv_and_plot(runner, tmp_path):
+    plot = tmp_path / "ex.png"
+    result = invoke(
+        runner, "example", "--speed", "0.5", "--length", "2", "--format", "csv", "--plot", str(plot)
+    )
+    assert result.exit_code == 0, result.output
+    assert result.output.splitlines()[0].startswith("k,z,length_m,time_s")
+    pixels = _png_pixels(plot)
+    assert pixels.shape[:2] == (576, 960)
+    assert _share_of(pixels, "0.3") > 1e-3  # solution (10) drawn
+    assert _share_of(pixels, "C0") > 1e-4  # elongations and passages marked
 
-    for p in (0.004, 0.001):
-        with mpmath.workdps(30):
-            z0 = 2 / mpmath.mpf(p)
-            j1, y1 = mpmath.besselj(1, z0), mpmath.bessely(1, z0)
-            ze = mpmath.findroot(
-                lambda z, j1=j1, y1=y1: mpmath.besselj(2, z) * y1 - mpmath.bessely(2, z) * j1,
-                z0 + mpmath.pi / 2,
-            )
-            z1 = mpmath.findroot(
-                lambda z, j1=j1, y1=y1: mpmath.besselj(1, z) * y1 - mpmath.bessely(1, z) * j1,
-                z0 + mpmath.pi,
-            )
-            ref = (p * (ze**2 - z0**2) / 4, p * (z1**2 - z0**2) / 4)
-        got = _lengthening_from_vertical(p)
-        assert abs(got[0] - float(ref[0])) < 1e-12
-        assert abs(got[1] - float(ref[1])) < 1e-12
+
+def test_example_plot_curve_for_other_inputs(axes):
+    # speed 0.5 m/s from 2 m at g = 9.8: the drawn solution (10) against mpmath's J_1
+    m = model.example_model(0.5, 2.0, 9.8)
+    figures.draw_example(axes, m)
+    curve = _line(axes, "solution (10)")
+    t, y = curve.get_xdata()[::97], curve.get_ydata()[::97]
+    with mpmath.workdps(30):
+        ze = mp_elongation_z(len(m.elongation_z))
+        theta0 = mpmath.besselj(1, ze) / ze
+
+        def theta(time):
+            z = 2 * mpmath.sqrt(mpmath.mpf(9.8) * (2.0 - 0.5 * time)) / 0.5
+            return float(mpmath.besselj(1, z) / z / theta0)
+
+        expected = np.array([theta(float(ti)) for ti in t])
+    np.testing.assert_allclose(y, expected, rtol=0, atol=1e-10 * np.max(np.abs(expected)))
+    assert axes.get_xlabel() == "t (s), L = 2 m at t = 0, shortening at 0.5 m/s, g = 9.8"

@@ -18,11 +18,11 @@ from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     SERIES_MAX_ERROR,
     bessel_zeros,
-    lecornu_series,
     series_error_bound,
     series_safe_limit,
 )
-from pendcli.papers.lecornu import claims as lecornu
+from pendcli.papers.lecornu import explore, model
+from pendcli.papers.lecornu.model import lecornu_series
 
 pytestmark = pytest.mark.extremes
 
@@ -68,7 +68,7 @@ def test_scipy_jn_zeros_not_correctly_rounded_at_1e5(order):
 
 
 def test_series_cancellation_destroys_it_beyond_the_safe_range():
-    rows = {(r["order"], r["z"]): r for r in lecornu.series_cancellation((10, 20, 30, 40))}
+    rows = {(r["order"], r["z"]): r for r in explore.series_cancellation((10, 20, 30, 40))}
     for order in (1, 2):
         assert rows[(order, 10.0)]["abs_error_of_J"] < 1e-12
         assert rows[(order, 20.0)]["abs_error_of_J"] < 1e-8  # Lecornu's range: still fine
@@ -98,7 +98,7 @@ def test_series_has_no_digit_at_50():
 
 
 def test_zero_length_amplitude_grows_like_one_over_length():
-    rows = lecornu.zero_length_behaviour(0.35, 1.0, G, floors=(1e-4, 1e-5, 1e-6))
+    rows = explore.zero_length_behaviour(0.35, 1.0, G, floors=(1e-4, 1e-5, 1e-6))
     for r in rows:  # the integration tracks the exact solution down to the floor
         assert r["end_ratio_ode"] == pytest.approx(r["end_ratio_bessel"], rel=1e-5)
     # θ·l tends to a constant: unbounded θ as l → 0 (the Y_1 part, b ≠ Lecornu's speed)
@@ -113,7 +113,7 @@ def test_zero_length_bounded_at_lecornus_speed():
         j25 = mpmath.besseljzero(2, 5)
         limit = float(1 / mpmath.besselj(0, j25))  # θ/θ0 → 1/J0(j_(2,5))
     b5 = 2 * math.sqrt(G) / float(j25)
-    run = lecornu.integrate_shortening(b5, 1.0, G, 1e-6, rtol=1e-11, floor_fraction=1e-6)
+    run = model.integrate_shortening(b5, 1.0, G, 1e-6, rtol=1e-11, floor_fraction=1e-6)
     assert run.end_theta / 1e-6 == pytest.approx(limit, rel=1e-3)
 
 
@@ -121,11 +121,11 @@ def test_zero_length_bounded_at_lecornus_speed():
 def test_fast_shortening(speed):
     # « un raccourcissement de dix mètres par seconde »: x = gl/b² < the first zero of J2's
     # argument, so no elongation after the release; θ grows like 1/l near zero length.
-    rest = lecornu.from_rest_model(speed, 1.0, G, floor_fraction=1e-6)
+    rest = model.from_rest_model(speed, 1.0, G, floor_fraction=1e-6)
     assert list(rest.elongation_times) == [0.0]
-    run = lecornu.integrate_shortening(speed, 1.0, G, 1e-6, rtol=1e-10, floor_fraction=1e-6)
+    run = model.integrate_shortening(speed, 1.0, G, 1e-6, rtol=1e-10, floor_fraction=1e-6)
     np.testing.assert_allclose(run.passage_times, rest.passage_times, atol=1e-9)
-    rows = lecornu.zero_length_behaviour(speed, 1.0, G, floors=(1e-7, 1e-8))
+    rows = explore.zero_length_behaviour(speed, 1.0, G, floors=(1e-7, 1e-8))
     assert rows[1]["end_ratio_times_length"] == pytest.approx(
         rows[0]["end_ratio_times_length"], rel=0.05
     )
@@ -134,12 +134,12 @@ def test_fast_shortening(speed):
 @pytest.mark.parametrize(
     ("call", "match"),
     [
-        (lambda: lecornu.integrate_shortening(0.35, 1.0, G, 1e-3, floor_fraction=0.0), "floor"),
-        (lambda: lecornu.integrate_shortening(0.35, 1.0, G, 1e-3, floor_fraction=-1), "floor"),
-        (lambda: lecornu.integrate_shortening(0.35, 1.0, G, math.nan), "theta0"),
-        (lambda: lecornu.integrate_shortening(0.35, 1.0, G, 4.0), "theta0"),
-        (lambda: lecornu.elongation_times(0.005, 1.0, G, "ode"), "speed"),
-        (lambda: lecornu.from_rest_model(1e-3, 1000.0, G), "speed"),
+        (lambda: model.integrate_shortening(0.35, 1.0, G, 1e-3, floor_fraction=0.0), "floor"),
+        (lambda: model.integrate_shortening(0.35, 1.0, G, 1e-3, floor_fraction=-1), "floor"),
+        (lambda: model.integrate_shortening(0.35, 1.0, G, math.nan), "theta0"),
+        (lambda: model.integrate_shortening(0.35, 1.0, G, 4.0), "theta0"),
+        (lambda: model.elongation_times(0.005, 1.0, G, "ode"), "speed"),
+        (lambda: model.from_rest_model(1e-3, 1000.0, G), "speed"),
     ],
 )
 def test_refuses_rather_than_returns_garbage(call, match):

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, emit
 from pendcli.render import OutputFormat
+
+if TYPE_CHECKING:
+    from pendcli.render import Column
 
 app = typer.Typer(
     help="Lecornu: the pendulum of variable length (Bessel zeros, the 0,35 m/s example).",
@@ -17,15 +20,25 @@ app = typer.Typer(
 )
 
 SpeedOption = Annotated[
-    float, typer.Option("--speed", help="Shortening speed b (m/s), 0.001 <= b <= 1000.")
+    float | None,
+    typer.Option(
+        "--speed",
+        help="Shortening speed b (m/s), 0.001 <= b <= 1000 (default: the table's).",
+    ),
 ]
 LengthOption = Annotated[
-    float, typer.Option("--length", help="Length at t = 0 (m), 0.001 <= L <= 1000.")
+    float | None,
+    typer.Option(
+        "--length", help="Length at t = 0 (m), 0.001 <= L <= 1000 (default: the table's)."
+    ),
 ]
-GOption = Annotated[float, typer.Option("--g", help="Gravity (m/s²), 0.1 <= g <= 100.")]
+GOption = Annotated[
+    float | None,
+    typer.Option("--g", help="Gravity (m/s²), 0.1 <= g <= 100 (default: the table's g)."),
+]
 
 
-def _col(key: str, header: str, sig: int = 10):
+def _col(key: str, header: str, sig: int = 10) -> Column:
     from pendcli.render import Column, fmt_float
 
     return Column(key, header, fmt=lambda r: fmt_float(r.get(key), sig), justify="right")
@@ -33,16 +46,18 @@ def _col(key: str, header: str, sig: int = 10):
 
 @app.command("claims")
 def claims(
-    g: GOption = 9.81,
+    g: GOption = None,
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """Every printed number of the memoir against its recomputation, with a verdict."""
+    from pendcli.core.checks import real_in_range
     from pendcli.core.claims import evaluate_paper
-    from pendcli.papers.lecornu import claims as lecornu
+    from pendcli.papers.lecornu.claims import recompute
+    from pendcli.papers.lecornu.model import G_RANGE, constant
     from pendcli.render.views import claim_columns
 
-    g = lecornu._real("g", g, *lecornu.G_RANGE, "m/s²")
-    rows = [r.as_dict() for r in evaluate_paper("lecornu", lambda: lecornu.recompute(g))]
+    g = real_in_range("g", constant("g") if g is None else g, *G_RANGE, "m/s²")
+    rows = [r.as_dict() for r in evaluate_paper("lecornu", lambda: recompute(g))]
     emit(
         fmt,
         [(f"Lecornu: printed against recomputed (g = {g:g} m/s²)", rows, claim_columns(rows))],
@@ -107,18 +122,18 @@ def zeros(
 
 @app.command("example")
 def example(
-    speed: SpeedOption = 0.35,
-    length: LengthOption = 1.0,
-    g: GOption = 9.81,
+    speed: SpeedOption = None,
+    length: LengthOption = None,
+    g: GOption = None,
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
 ) -> None:
     """The shortening pendulum of the example: elongations, amplitudes, vertical passages."""
     from pendcli.core.plotting import validate_plot_path
-    from pendcli.papers.lecornu import claims as lecornu
+    from pendcli.papers.lecornu.explore import example_rows
 
     plot = validate_plot_path(plot)
-    elong, passages, summary = lecornu.example_rows(speed, length, g)
+    elong, passages, summary = example_rows(speed, length, g)
     cols_e = [
         _col("k", "k"),
         _col("z", "z (J2 = 0)", 8),
@@ -150,14 +165,16 @@ def example(
         {"elongations": elong, "passages": passages, "summary": summary},
     )
     if plot is not None:
-        lecornu.plot_example(plot, speed, length, g)
+        from pendcli.papers.lecornu.figures import plot_example
+
+        plot_example(plot, speed, length, g)
 
 
 @app.command("ode-check")
 def ode_check(
-    speed: SpeedOption = 0.35,
-    length: LengthOption = 1.0,
-    g: GOption = 9.81,
+    speed: SpeedOption = None,
+    length: LengthOption = None,
+    g: GOption = None,
     amplitude: Annotated[
         list[float] | None,
         typer.Option("--amplitude", help="Initial amplitude(s) in degrees for eq. (3) with sin θ."),
@@ -168,12 +185,9 @@ def ode_check(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """Bessel elongation times against solve_ivp on eq. (3), linear and with sin θ."""
-    from pendcli.papers.lecornu import claims as lecornu
+    from pendcli.papers.lecornu.explore import ode_check as check
 
-    amps = tuple(amplitude) if amplitude else (1.0, 5.0)
-    for a in amps:
-        lecornu._real("amplitude", a, 1e-6, 179.0, "degrees")
-    rows = lecornu.ode_check(speed, length, g, amps, floor)
+    rows = check(speed, length, g, tuple(amplitude) if amplitude else (1.0, 5.0), floor)
     columns = [_col(k, k.replace("_", " "), 8) for k in rows[0]]
     emit(
         fmt,
@@ -185,11 +199,13 @@ def ode_check(
 @app.command("g-sensitivity")
 def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
     """The g-dependent claims at several g, their verdicts, and the g that fits best."""
-    from pendcli.papers.lecornu import claims as lecornu
+    from pendcli.papers.lecornu.explore import best_g
+    from pendcli.papers.lecornu.explore import g_sensitivity as sensitivity
+    from pendcli.papers.lecornu.model import constant
     from pendcli.render import Column
 
-    rows = lecornu.g_sensitivity()
-    best = lecornu.best_g()
+    rows = sensitivity()
+    best = best_g()
     columns = [Column("id", "claim"), Column("published", "published")]
     for key in rows[0]:
         if key.startswith("g="):
@@ -201,7 +217,11 @@ def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
     emit(
         fmt,
         [
-            ("g-dependent claims at several g (verdicts always use g = 9.81)", rows, columns),
+            (
+                f"g-dependent claims at several g (verdicts always use g = {constant('g'):g})",
+                rows,
+                columns,
+            ),
             (
                 "Which g reproduces the printed figures best",
                 summary,
@@ -216,10 +236,10 @@ def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
 def series(fmt: FormatOption = OutputFormat.table) -> None:
     """Lecornu's series (10)/(13) in double precision: where cancellation destroys them."""
     from pendcli.numerics import besselzeros
-    from pendcli.papers.lecornu import claims as lecornu
+    from pendcli.papers.lecornu.explore import series_cancellation
     from pendcli.render import Column
 
-    rows = lecornu.series_cancellation()
+    rows = series_cancellation()
     columns = [Column("order", "order")] + [
         _col(k, k.replace("_", " "), 6) for k in rows[0] if k != "order"
     ]
@@ -251,14 +271,14 @@ def series(fmt: FormatOption = OutputFormat.table) -> None:
 
 @app.command("zero-length")
 def zero_length(
-    speed: SpeedOption = 0.35,
-    length: LengthOption = 1.0,
-    g: GOption = 9.81,
+    speed: SpeedOption = None,
+    length: LengthOption = None,
+    g: GOption = None,
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """Amplitude growth as the length goes to zero (linear eq. (3) from rest, to a floor)."""
-    from pendcli.papers.lecornu import claims as lecornu
+    from pendcli.papers.lecornu.explore import zero_length_behaviour
 
-    rows = lecornu.zero_length_behaviour(speed, length, g)
+    rows = zero_length_behaviour(speed, length, g)
     columns = [_col(k, k.replace("_", " "), 6) for k in rows[0]]
     emit(fmt, [("|θ| / θ0 down to a length floor", rows, columns)], {"rows": rows})

@@ -17,10 +17,11 @@ the zeros for any index up to :data:`MAX_COUNT`, with the method named:
 ``"mpmath"``
     ``mpmath.besseljzero`` at 30 digits, one zero at a time: the slow reference.
 ``"series"``
-    Lecornu's series (10) (order 1) and (13) (order 2) in double precision, with bracketed
-    root finding. Summing an alternating series whose terms reach ~I_ν(z) for a result of
-    size ~J_ν(z) loses log10(I_ν/|J_ν'|) digits; the method refuses zeros whose predicted
-    error exceeds :data:`SERIES_MAX_ERROR` (see :func:`series_error_bound`).
+    Lecornu's series (10) (order 1) and (13) (order 2) in double precision
+    (:func:`pendcli.papers.lecornu.model.lecornu_series`), with bracketed root finding.
+    Summing an alternating series whose terms reach ~I_ν(z) for a result of size ~J_ν(z) loses
+    log10(I_ν/|J_ν'|) digits; the method refuses zeros whose predicted error exceeds
+    :data:`SERIES_MAX_ERROR` (see :func:`series_error_bound`).
 ``"auto"``
     the first :data:`AUTO_SWITCH` - 1 zeros from mpmath (computed once per order and
     cached: about 0.07 s), ``mcmahon`` above, where its truncation error is below 2e-6 ulp
@@ -47,7 +48,6 @@ __all__ = [
     "ORDERS",
     "SERIES_MAX_ERROR",
     "bessel_zeros",
-    "lecornu_series",
     "mcmahon_truncation_bound",
     "series_error_bound",
     "series_safe_limit",
@@ -226,39 +226,6 @@ def _mpmath_zeros(order: int, count: int, dps: int = 30) -> np.ndarray:
         return np.array([float(mpmath.besseljzero(order, k)) for k in range(1, count + 1)])
 
 
-# --- Lecornu's series ------------------------------------------------------------------
-
-
-def lecornu_series(order: int, x: float | np.ndarray) -> np.ndarray:
-    """Lecornu's series in double precision, as printed, in the variable x = z²/4.
-
-    order 1: eq. (10), φ(x) = Σ_(n>=1) (-1)^(n-1) n x^n/(n!)² = √x J_1(2√x);
-    order 2: eq. (13), Σ_(k>=0) (-1)^k x^k/(k!(k+2)!) = J_2(2√x)/x.
-    Summed term by term until the terms no longer change the sum (at most 400 terms).
-    """
-    x = np.asarray(x, dtype=float)
-    if order == 1:
-        term = x.copy()  # n = 1
-        total = term.copy()
-        for n in range(2, 400):
-            # t_n / t_(n-1) = -x n / ((n-1) n²) = -x / ((n-1) n)
-            term = -term * x / ((n - 1) * n)
-            new = total + term
-            if np.all(new == total):
-                break
-            total = new
-        return total
-    term = np.full_like(x, 0.5)  # k = 0: 1/(0! 2!)
-    total = term.copy()
-    for k in range(1, 400):
-        term = -term * x / (k * (k + 2))
-        new = total + term
-        if np.all(new == total):
-            break
-        total = new
-    return total
-
-
 def series_error_bound(order: int, z: float | np.ndarray) -> np.ndarray:
     """Predicted absolute error of a zero of J_ν found from Lecornu's double-precision series.
 
@@ -293,6 +260,9 @@ def _series_zeros(order: int, count: int) -> np.ndarray:
             f"{SERIES_MAX_ERROR:g}; valid range is 1 <= count <= {allowed} "
             "(use method 'auto' beyond)"
         )
+
+    # The series is the paper's formula: it lives with the paper (imported only for "series").
+    from pendcli.papers.lecornu.model import lecornu_series
 
     def f(x: float) -> float:
         return float(lecornu_series(order, x))

@@ -31,7 +31,6 @@ __all__ = [
     "METHODS",
     "complementary_modulus",
     "elongation_times",
-    "lecornu_k4",
     "modulus_squared",
     "period",
     "period_ratio",
@@ -78,12 +77,6 @@ def modulus_squared(amplitude: float) -> tuple[float, float]:
         else math.cos(math.radians(180.0 - amplitude) / 2)
     )
     return k * k, kc * kc
-
-
-def lecornu_k4(amplitude: float) -> float:
-    """k⁴ = sin⁴(θ0/2), the order of the error Lecornu neglects in eq. (38)."""
-    m, _ = modulus_squared(amplitude)
-    return m * m
 
 
 def _agm_ellipk(kc: float, iterations: int | None = None) -> tuple[float, int]:

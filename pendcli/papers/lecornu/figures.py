@@ -1,0 +1,207 @@
+"""Lecornu's figures: the example's θ/θ0 against time, and printed minus recomputed.
+
+Each figure is drawn by a ``draw_*`` function on a given matplotlib Axes (so the tests can
+read back what is drawn) and written by :func:`figures` or :func:`plot_example`.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pendcli.core.claims import ClaimRow
+from pendcli.papers.lecornu.model import (
+    ExampleModel,
+    constant,
+    example_model,
+    theta_curves,
+)
+
+__all__ = [
+    "GROUPS",
+    "Bar",
+    "difference_bars",
+    "draw_example",
+    "draw_example_claims",
+    "draw_printed_minus_recomputed",
+    "figures",
+    "plot_example",
+]
+
+Axes = Any  # matplotlib.axes.Axes, imported lazily (pendcli --help stays fast)
+
+_VERDICT_COLOURS = {"agrees": "C2", "truncated": "C1", "last-digit": "C1"}
+PRINTED = {"color": "C3", "ms": 9, "mew": 2}  # the printed values: red crosses
+
+# The groups of the difference figure, in the paper's order.
+GROUPS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("lengths", tuple(f"lecornu.example.length.{k}" for k in range(1, 6))),
+    (
+        "times",
+        (*(f"lecornu.example.time.{k}" for k in range(1, 6)), "lecornu.example.time_zero_length"),
+    ),
+    ("intervals", tuple(f"lecornu.example.interval.{k}" for k in range(1, 6))),
+    ("J1 lengths", tuple(f"lecornu.j1_lengths.{k}" for k in range(1, 7))),
+    ("J0", tuple(f"lecornu.j0_at_j2_zeros.{k}" for k in range(1, 6))),
+)
+
+
+def _comma(v: float) -> str:
+    return f"{v:g}".replace(".", ",")
+
+
+def _passage_ticks(ax: Axes, times: np.ndarray, label: str) -> None:
+    ax.plot(times, np.zeros_like(times), "|", color="C0", ms=14, mew=2, label=label)
+
+
+# --- `pendcli lecornu example --plot` -------------------------------------------------------
+
+
+def draw_example(ax: Axes, m: ExampleModel) -> None:
+    """θ/θ0 of solution (10) and of the release from rest, elongations and passages marked."""
+    t = np.linspace(min(0.0, float(m.passage_times[0])), m.zero_length_time * (1 - 0.02), 4000)
+    theta10, theta_rest = theta_curves(m, t)
+    ax.plot(t, theta10, color="0.3", lw=1.0, label="solution (10)")
+    ax.plot(t, theta_rest, color="C1", lw=0.8, ls="--", label="released from rest at t = 0")
+    ax.plot(m.elongation_times, m.amplitude_ratios, "o", color="C0", label="elongations (10)")
+    _passage_ticks(ax, m.passage_times, "vertical passages (10)")
+    ax.set_yscale("symlog", linthresh=1.0)
+    ax.set_xlabel(f"t (s), L = {m.length:g} m at t = 0, shortening at {m.speed:g} m/s, g = {m.g:g}")
+    ax.set_ylabel("θ/θ0 (symlog)")
+    ax.legend(fontsize=7, loc="lower left")
+
+
+def plot_example(
+    path: str | Path,
+    speed: float | None = None,
+    length: float | None = None,
+    g: float | None = None,
+) -> Path:
+    """θ/θ0 against time for solution (10) and for the release from rest, events marked."""
+    from pendcli.core.plotting import new_figure
+
+    m = example_model(speed, length, g)
+    with new_figure(path, size=(8.0, 4.8)) as (_fig, ax):
+        draw_example(ax, m)
+    return Path(path)
+
+
+# --- the claim figures --------------------------------------------------------------------
+
+
+def _draw_printed_points(ax: Axes, m: ExampleModel, rows: dict[str, ClaimRow]) -> None:
+    """The printed elongations (time, deviation), zero length, and vertical passages."""
+    pub_t = [rows[f"lecornu.example.time.{k}"].published_value for k in range(1, 6)]
+    pub_r = [1.0] + [rows[f"lecornu.deviation.{k}"].published_value for k in range(2, 6)]
+    ax.plot(pub_t, pub_r, "x", **PRINTED, label="elongations, printed")
+    ax.plot([m.zero_length_time], [m.zero_length_ratio], "o", color="C0", mfc="none")
+    ax.plot(
+        [rows["lecornu.example.time_zero_length"].published_value],
+        [rows["lecornu.deviation.zero_length"].published_value],
+        "x",
+        **PRINTED,
+    )
+    _passage_ticks(ax, m.passage_times, "vertical passages, recomputed")
+    pub_lp = np.array([rows[f"lecornu.j1_lengths.{k}"].published_value for k in range(1, 7)])
+    ax.plot(
+        (m.length - pub_lp) / m.speed,
+        np.zeros(6),
+        "+",
+        color="C3",
+        ms=12,
+        mew=1.5,
+        label="vertical passages from printed lengths",
+    )
+
+
+def draw_example_claims(ax: Axes, m: ExampleModel, rows: dict[str, ClaimRow]) -> None:
+    """Figure 1: θ/θ0 of the example against time, recomputed and printed events marked.
+
+    ``m`` is the author's model at the paper's speed, length and g; ``rows`` the judged claims.
+    """
+    t = np.linspace(m.passage_times[0] - 0.05, m.zero_length_time * (1 - 1e-6), 4000)
+    theta, theta_rest = theta_curves(m, t)
+    speed = _comma(m.speed)
+    ax.plot(t, theta, color="0.3", lw=1.0, label=f"solution (10), b = {speed} m/s, g = {m.g:g}")
+    ax.plot(
+        t,
+        theta_rest,
+        color="C1",
+        lw=0.8,
+        ls="--",
+        label=f"released from rest at {m.length:g} m (exact column)",
+    )
+    ax.plot(
+        m.elongation_times, m.amplitude_ratios, "o", color="C0", label="elongations, recomputed"
+    )
+    _draw_printed_points(ax, m, rows)
+    ax.set_yscale("symlog", linthresh=1.0)
+    ax.set_xlabel(f"t (s), pendulum {m.length:g} m long at t = 0, shortening at {speed} m/s")
+    ax.set_ylabel("θ/θ0 (symlog)")
+    ax.set_title("Lecornu's example: elongations and vertical passages")
+    ax.axhline(0, color="0.8", lw=0.5)
+    ax.legend(fontsize=7, loc="lower left")
+
+
+Bar = tuple[int, float, str, str]  # x, (printed - recomputed)/unit, verdict, tick label
+
+
+def difference_bars(rows: dict[str, ClaimRow]) -> tuple[list[Bar], list[tuple[str, int, int]]]:
+    """(printed - recomputed) in units of the printed last digit, per claim of GROUPS; and
+    each group's (name, first x, last x). Groups are one empty slot apart."""
+    from pendcli.core.numbers import parse_printed
+
+    bars: list[Bar] = []
+    spans = []
+    x = 0
+    for name, ids in GROUPS:
+        start = x
+        for cid in ids:
+            r = rows[cid]
+            printed = parse_printed(r.published)
+            d = (r.published_value - r.recomputed) / (printed.resolution or 1.0)
+            bars.append((x, d, r.verdict, f"{r.published_value:.{printed.decimals}f}"))
+            x += 1
+        spans.append((name, start, x - 1))
+        x += 1
+    return bars, spans
+
+
+def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float) -> None:
+    """Figure 2: printed minus recomputed, in printed units, coloured by verdict."""
+    bars, spans = difference_bars(rows)
+    top = max(b[1] for b in bars) + 1.5
+    bottom = min(min(b[1] for b in bars) - 0.5, -1.0)
+    for bx, d, verdict, _ in bars:
+        ax.bar(bx, d, color=_VERDICT_COLOURS.get(verdict, "C3"))
+    for name, start, end in spans:
+        ax.text((start + end) / 2, top - 0.8, name, ha="center", fontsize=8)
+    ax.axhspan(-0.5, 0.5, color="0.9", zorder=0)
+    ax.set_xticks([b[0] for b in bars], [b[3] for b in bars], rotation=90, fontsize=7)
+    ax.set_ylabel("(printed - recomputed) / last printed unit")
+    ax.set_ylim(bottom, top)
+    ax.set_title(
+        f"Lecornu's example, printed minus recomputed (g = {g:g}): green agrees, "
+        "orange truncated/last digit, red discrepant",
+        fontsize=9,
+    )
+
+
+def figures(outdir: str | Path) -> list[Path]:
+    """(1) θ/θ0 of the example against time, published and recomputed elongations and vertical
+    passages marked; (2) printed minus recomputed, in units of the printed last digit."""
+    from pendcli.core.claims import evaluate_paper
+    from pendcli.core.plotting import new_figure
+
+    outdir = Path(outdir)
+    m = example_model()
+    rows = {r.id: r for r in evaluate_paper("lecornu")}
+    path1 = outdir / "lecornu_example_theta.png"
+    with new_figure(path1, size=(8.0, 4.8)) as (_fig, ax):
+        draw_example_claims(ax, m, rows)
+    path2 = outdir / "lecornu_printed_minus_recomputed.png"
+    with new_figure(path2, size=(9.0, 4.5)) as (_fig, ax):
+        draw_printed_minus_recomputed(ax, rows, constant("g"))
+    return [path1, path2]
