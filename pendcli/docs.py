@@ -1,18 +1,22 @@
-"""Regenerate the README's sample-output section from the code (`make regen`).
+"""Regenerate the README's generated sections from the code (`make regen`).
 
-The README shows real output; this module produces it, so the numbers there are never
-typed in. ``python -m pendcli.docs`` rewrites the text between the markers
-``<!-- sample:start -->`` and ``<!-- sample:end -->``; ``--check`` exits 1 if it is stale.
+The README shows real output and the real JSON schema; this module produces both, so nothing
+there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
+(``<!-- sample:start -->`` ... ``<!-- sample:end -->`` for the sample output,
+``<!-- schema:start -->`` ... ``<!-- schema:end -->`` for the JSON schema from
+:mod:`pendcli.core.schema`); ``--check`` exits 1 if either is stale.
 """
 
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
-from pendcli.render import Column, to_markdown
+from pendcli.render.columns import Column, Row
+from pendcli.render.markdown import to_markdown
 
-START, END = "<!-- sample:start -->", "<!-- sample:end -->"
+__all__ = ["SECTIONS", "main", "sample_section", "schema_section", "splice"]
 
 
 def sample_section() -> str:
@@ -21,25 +25,8 @@ def sample_section() -> str:
     from pendcli.reproduce import reproduce_all
 
     result = reproduce_all(PAPERS, formulas=True, quiet=True)
-    counts = result.verdict_counts()
-    verdicts = ["agrees", "truncated", "last-digit", "discrepant"]
-    summary = [
-        {
-            "paper": key,
-            **{v: counts[key].get(v, 0) for v in verdicts},
-            "formulas holding": counts[key].get("formula holds", 0),
-            "formulas failing": counts[key].get("formula fails", 0),
-        }
-        for key in PAPERS
-    ]
-    # One row of each verdict, first in paper order, plus one with an exact-model column.
-    rows = [r.as_dict() for key in PAPERS for r in result.claims[key]]
-    sample, seen = [], set()
-    for row in rows:
-        kind = (row["verdict"], row["exact"] is not None)
-        if kind not in seen:
-            seen.add(kind)
-            sample.append(row)
+    summary = result.summary_rows()
+    sample = _one_row_of_each_verdict(result.claim_dicts())
     columns = [c for c in claim_columns(sample, with_note=False) if c.key != "source"]
     return "\n".join(
         [
@@ -54,21 +41,55 @@ def sample_section() -> str:
     )
 
 
-def splice(readme: str, section: str) -> str:
-    if START not in readme or END not in readme:
-        raise SystemExit(f"README has no {START} ... {END} markers")
-    head, rest = readme.split(START, 1)
-    _, tail = rest.split(END, 1)
-    return f"{head}{START}\n{section}\n{END}{tail}"
+def _one_row_of_each_verdict(rows: list[dict[str, object]]) -> list[Row]:
+    """The first row (in paper order) of each verdict, with and without an exact model."""
+    sample: list[Row] = []
+    seen = set()
+    for row in rows:
+        kind = (row["verdict"], row["exact"] is not None)
+        if kind not in seen:
+            seen.add(kind)
+            sample.append(row)
+    return sample
+
+
+def schema_section() -> str:
+    from pendcli.core import schema
+
+    return "\n".join(
+        [
+            "`pendcli reproduce --format json` prints one object whose keys hold lists of rows, "
+            "described below; every paper subcommand prints `claims` and `formulas` the same "
+            "way and adds its own keys beside them (`table`, `example`, ...).",
+            "",
+            schema.markdown(),
+        ]
+    )
+
+
+# marker name -> what goes between <!-- name:start --> and <!-- name:end -->
+SECTIONS: dict[str, Callable[[], str]] = {"sample": sample_section, "schema": schema_section}
+
+
+def splice(readme: str, section: str, name: str = "sample") -> str:
+    """``readme`` with the text between the ``name`` markers replaced by ``section``."""
+    start, end = f"<!-- {name}:start -->", f"<!-- {name}:end -->"
+    if start not in readme or end not in readme:
+        raise SystemExit(f"README has no {start} ... {end} markers")
+    head, rest = readme.split(start, 1)
+    _, tail = rest.split(end, 1)
+    return f"{head}{start}\n{section}\n{end}{tail}"
 
 
 def main(argv: list[str]) -> int:
     path = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
     text = path.read_text(encoding="utf-8")
-    new = splice(text, sample_section())
+    new = text
+    for name, make in SECTIONS.items():
+        new = splice(new, make(), name)
     if "--check" in argv:
         if new != text:
-            print(f"{path}: sample section is stale; run `make regen`", file=sys.stderr)
+            print(f"{path}: a generated section is stale; run `make regen`", file=sys.stderr)
             return 1
         return 0
     path.write_text(new, encoding="utf-8")

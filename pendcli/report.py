@@ -14,11 +14,12 @@ from pathlib import Path
 from types import ModuleType
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.verdict import CLAIM_VERDICTS
 from pendcli.render.columns import Column
 from pendcli.render.json import to_json
 from pendcli.render.markdown import to_markdown
 from pendcli.render.views import FORMULA_COLUMNS, claim_columns
-from pendcli.reproduce import CLAIM_VERDICTS, ReproduceResult
+from pendcli.reproduce import ReproduceResult
 
 __all__ = ["write_report"]
 

@@ -5,15 +5,12 @@ from __future__ import annotations
 import sys
 from dataclasses import dataclass, field
 
-from pendcli.core.claims import ClaimRow, FormulaRow, evaluate_paper
+from pendcli.core.claims import FORMULA_VERDICTS, ClaimRow, FormulaRow, evaluate_paper
+from pendcli.core.verdict import CLAIM_VERDICTS
 from pendcli.papers import formula_checks
 from pendcli.render.columns import Column, Row, Section
 
-__all__ = ["CLAIM_VERDICTS", "FORMULA_VERDICTS", "ReproduceResult", "reproduce_all"]
-
-# The order in which tallies and summaries list the verdicts.
-CLAIM_VERDICTS = ("agrees", "truncated", "last-digit", "discrepant")
-FORMULA_VERDICTS = ("formula holds", "formula fails")
+__all__ = ["ReproduceResult", "reproduce_all"]
 
 
 @dataclass
@@ -81,7 +78,7 @@ class ReproduceResult:
     def tally(self, key: str) -> str:
         """``"12 agrees, 1 truncated, 5 formula holds"``: the verdicts a paper reached."""
         counts = self.verdict_counts()[key]
-        order = (*CLAIM_VERDICTS, *FORMULA_VERDICTS)
+        order = (*CLAIM_VERDICTS, *(f"formula {v}" for v in FORMULA_VERDICTS))
         return ", ".join(f"{counts[v]} {v}" for v in order if v in counts)
 
 

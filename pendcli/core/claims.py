@@ -20,6 +20,7 @@ from pendcli.core.tables import PaperTable, PublishedValue, load_paper_table
 from pendcli.core.verdict import judge
 
 __all__ = [
+    "FORMULA_VERDICTS",
     "PAPERS",
     "ClaimRow",
     "FormulaRow",
@@ -67,6 +68,10 @@ class ClaimRow:
 
     def as_dict(self) -> dict[str, object]:
         return {k: _json_number(v) for k, v in self.__dict__.items()}
+
+
+# A derived formula holds or fails against the numerical solution (pendcli.core.formula_engine).
+FORMULA_VERDICTS: tuple[str, ...] = ("holds", "fails")
 
 
 @dataclass(frozen=True)

@@ -29,7 +29,7 @@ from enum import StrEnum
 
 from pendcli.core.numbers import PrintedNumber
 
-__all__ = ["Comparison", "Verdict", "judge"]
+__all__ = ["CLAIM_VERDICTS", "Comparison", "Verdict", "judge"]
 
 _SLACK = 1e-12  # relative widening of every boundary (binary representation of decimals)
 _EXACT_RTOL = 8 * 2.220446049250313e-16
@@ -40,6 +40,10 @@ class Verdict(StrEnum):
     TRUNCATED = "truncated"
     LAST_DIGIT = "last-digit"
     DISCREPANT = "discrepant"
+
+
+# Every claim verdict, best first: the order of tallies and summaries.
+CLAIM_VERDICTS: tuple[str, ...] = tuple(v.value for v in Verdict)
 
 
 @dataclass(frozen=True)

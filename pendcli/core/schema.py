@@ -1,0 +1,147 @@
+"""The JSON schema of pendcli's output: one source for the README and the tests.
+
+``pendcli reproduce --format json`` prints one object whose lists hold rows of the kinds
+below; every paper subcommand prints ``claims`` and ``formulas`` rows the same way (and adds
+its own keys beside them); ``pendcli tradeoff --format json`` prints ``rows``. The README's
+"JSON schema" section is generated from here (``python -m pendcli.docs``) and
+``tests/test_json_schema.py`` checks real output against it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from pendcli.core.claims import FORMULA_VERDICTS, PAPERS
+from pendcli.core.verdict import CLAIM_VERDICTS
+
+__all__ = ["DOCUMENT", "Field", "RowKind", "check_row", "markdown"]
+
+# JSON type name -> the Python types json.loads gives for it (bool is excluded from numbers).
+_PYTHON_TYPES: dict[str, tuple[type, ...]] = {
+    "string": (str,),
+    "number": (int, float),
+    "integer": (int,),
+    "array": (list,),
+    "null": (type(None),),
+}
+
+
+@dataclass(frozen=True)
+class Field:
+    name: str
+    types: tuple[str, ...]  # JSON type names: "string", "number", "integer", "array", "null"
+    meaning: str
+    values: tuple[str, ...] = ()  # the only values a string may take, when listed
+
+    def problems(self, value: object) -> list[str]:
+        """Why ``value`` (as json.loads gives it) does not fit this field; empty if it does."""
+        allowed = tuple(t for name in self.types for t in _PYTHON_TYPES[name])
+        if isinstance(value, bool) or not isinstance(value, allowed):
+            return [f"{self.name}: {value!r} is not {' or '.join(self.types)}"]
+        if self.values and value not in self.values:
+            return [f"{self.name}: {value!r} is not one of {', '.join(self.values)}"]
+        return []
+
+
+@dataclass(frozen=True)
+class RowKind:
+    key: str  # the document's key holding a list of such rows
+    when: str  # when the document has that key
+    fields: tuple[Field, ...]
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(f.name for f in self.fields)
+
+
+_TEXT, _NUMBER, _OPTIONAL = ("string",), ("number",), ("number", "null")
+
+CLAIMS = RowKind(
+    "claims",
+    "always",
+    (
+        Field("id", _TEXT, "`<paper>.<name>`, unique"),
+        Field("paper", _TEXT, "the paper", PAPERS),
+        Field("source", _TEXT, "where the paper prints it (page, equation)"),
+        Field("quantity", _TEXT, "what the number is"),
+        Field("unit", _TEXT, "unit of `published` and `recomputed` (may be empty)"),
+        Field("published", _TEXT, "the printed string, exactly as printed"),
+        Field("published_value", _NUMBER, "the printed string's value"),
+        Field("recomputed", _NUMBER, "the author's model, done exactly"),
+        Field("verdict", _TEXT, "see *How verdicts are decided*", CLAIM_VERDICTS),
+        Field("abs_diff", _NUMBER, "recomputed − published"),
+        Field("rel_diff", _OPTIONAL, "abs_diff / |published|; null when published is 0"),
+        Field("digits", _NUMBER, "agreeing significant digits, at most 17"),
+        Field("exact", _OPTIONAL, "a fuller model's value, where one answers a question"),
+        Field("method", _TEXT, "how it was recomputed"),
+        Field("note", _TEXT, "OCR corrections, explanations of any disagreement"),
+    ),
+)
+FORMULAS = RowKind(
+    "formulas",
+    "always; empty with `--no-formulas`",
+    (
+        Field("id", _TEXT, "`<paper>.<name>`, unique"),
+        Field("paper", _TEXT, "the paper", PAPERS),
+        Field("source", _TEXT, "the equation's number or place"),
+        Field("published", _TEXT, "the formula as printed"),
+        Field("recomputed", _TEXT, "the formula as found (the corrected term, if any)"),
+        Field("verdict", _TEXT, "against a numerical solution", FORMULA_VERDICTS),
+        Field("claimed_order", _OPTIONAL, "exponent of the residual the derivation implies"),
+        Field("observed_order", _OPTIONAL, "least-squares slope of log|residual| on log p"),
+        Field("note", _TEXT, "the verdict's reason and the residual's convention"),
+        Field("residuals", ("array",), "`[p, |residual|]` pairs, p the small parameter"),
+    ),
+)
+STABILITY = RowKind(
+    "stability",
+    "with `--stability` or `--out`",
+    (
+        Field("family", _TEXT, "the quantity computed"),
+        Field("method", _TEXT, "how"),
+        Field("accurate_range", _TEXT, "where it is accurate, as measured"),
+        Field("fails_beyond", _TEXT, "where and how it fails"),
+        Field("measured", _TEXT, "the measurement behind both"),
+    ),
+)
+TRADEOFF_ROWS = RowKind(
+    "rows",
+    "`pendcli tradeoff --format json`, beside `skipped`",
+    (
+        Field("family", _TEXT, "the quantity computed"),
+        Field("method", _TEXT, "the method"),
+        Field("setting", _TEXT, "its setting (tolerance, terms, nodes)"),
+        Field("seconds", _NUMBER, "time per evaluation"),
+        Field("error", _OPTIONAL, "worst relative error; null when the method failed"),
+        Field("evaluations", ("integer", "null"), "function evaluations per problem"),
+        Field("note", _TEXT, "why a method failed, if it did"),
+    ),
+)
+
+# Every kind of row pendcli prints, by the document key that holds them.
+DOCUMENT: dict[str, RowKind] = {k.key: k for k in (CLAIMS, FORMULAS, STABILITY, TRADEOFF_ROWS)}
+
+
+def check_row(kind: RowKind, row: Mapping[str, object]) -> list[str]:
+    """Every way ``row`` departs from ``kind``: missing or extra keys, wrong types or values."""
+    problems = [f"missing key {name!r}" for name in kind.names if name not in row]
+    problems += [f"unexpected key {name!r}" for name in row if name not in kind.names]
+    for f in kind.fields:
+        if f.name in row:
+            problems += f.problems(row[f.name])
+    return problems
+
+
+def markdown() -> str:
+    """The README's description of the JSON output: one table of keys per kind of row."""
+    parts = []
+    for kind in DOCUMENT.values():
+        parts += [f"`{kind.key}` ({kind.when}), a list of objects:", ""]
+        parts += ["| key | type | meaning |", "|---|---|---|"]
+        for f in kind.fields:
+            meaning = f.meaning + (f" (one of {', '.join(f.values)})" if f.values else "")
+            meaning = meaning.replace("|", "\\|")  # a pipe would end the Markdown cell
+            parts.append(f"| `{f.name}` | {' or '.join(f.types)} | {meaning} |")
+        parts.append("")
+    return "\n".join(parts)
