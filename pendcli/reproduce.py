@@ -18,7 +18,7 @@ class ReproduceResult:
     papers: tuple[str, ...]
     claims: dict[str, list[ClaimRow]] = field(default_factory=dict)
     formulas: dict[str, list[FormulaRow]] = field(default_factory=dict)
-    stability: list[dict[str, object]] = field(default_factory=list)
+    stability: list[dict[str, str]] = field(default_factory=list)
 
     def claim_dicts(self) -> list[dict[str, object]]:
         return [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]

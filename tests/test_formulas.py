@@ -9,6 +9,7 @@ and the corrected terms against their exact values derived by hand.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -114,7 +115,7 @@ def test_observed_orders_near_claims(rows):
 def test_deterministic(rows):
     again = fti.formula_checks()
     assert [r.as_dict() for r in again] == [r.as_dict() for r in rows["tisserand"]]
-    fle._event_times.cache_clear()
+    fle.event_times.cache_clear()
     assert [r.as_dict() for r in fle.formula_checks()] == [r.as_dict() for r in rows["lecornu"]]
 
 
@@ -138,6 +139,133 @@ def test_identify():
     )
     assert engine.identify(35 / 4096 * (1 + 1e-3)) is None
     assert engine.identify(math.e / 10) is None
+
+
+def test_richardson_is_exact_for_a_quadratic_at_uneven_parameters():
+    """Neville at 0 through three points recovers f(0) of any quadratic, whatever the spacing
+    (the old version assumed halving steps and ignored the parameters)."""
+    ps = (Fraction(1, 3), Fraction(1, 7), Fraction(1, 10))
+    values = [3 + 5 * p - 7 * p**2 for p in ps]
+    assert engine.richardson(values, ps) == 3
+
+
+@pytest.mark.parametrize(
+    "ps",
+    [
+        (Fraction(1, 2), Fraction(1, 5), Fraction(1, 9)),
+        (Fraction(4), Fraction(2), Fraction(1)),
+        (Fraction(1, 10), Fraction(3, 10)),
+    ],
+)
+def test_richardson_error_is_the_lagrange_remainder(ps):
+    """For f = 1 + p^n with n points, f − P vanishes at every p_i and is monic: f − P =
+    Π(p − p_i), so P(0) = 1 − Π(−p_i) = 1 + (−1)^(n+1) Π p_i."""
+    n = len(ps)
+    product = math.prod(ps)
+    expected = 1 + (-1) ** (n + 1) * product
+    assert engine.richardson([1 + p**n for p in ps], ps) == expected
+
+
+def _complete_homogeneous(m: int, xs) -> Fraction:
+    """h_m(x1, ..., xn): the sum of every monomial of degree m."""
+    from itertools import combinations_with_replacement
+
+    return sum((math.prod(c) for c in combinations_with_replacement(xs, m)), Fraction(0))
+
+
+def test_richardson_on_a_known_series_in_floats():
+    """log(1 + p)/p = Σ c_k p^k with c_k = (−1)^k/(k + 1). Through n points the extrapolation
+    of p^k (k ≥ n) is (−1)^(n+1) Π p_i · h_(k−n)(p_i) (divided differences of x^k), so from
+    p = 0.004, 0.002, 0.001 the result is 1 + Π Σ_(k≥3) c_k h_(k−3), summed exactly here."""
+    ps = (0.004, 0.002, 0.001)
+    exact_ps = [Fraction(4, 1000), Fraction(2, 1000), Fraction(1, 1000)]
+    product = math.prod(exact_ps)
+    expected = 1 + product * sum(
+        Fraction((-1) ** k, k + 1) * _complete_homogeneous(k - 3, exact_ps) for k in range(3, 9)
+    )
+    got = engine.richardson([math.log1p(p) / p for p in ps], ps)
+    assert got == pytest.approx(float(expected), abs=2e-15)
+    assert abs(got - 1) > 1e-9  # the p³ term is really there: the test sees the parameters
+
+
+def test_richardson_with_halving_steps_is_the_classical_table():
+    """For p, p/2, p/4 the steps are 2 f(p/2) − f(p), then (4 r₂ − r₁)/3: same bits."""
+    f1, f2, f3 = 1.2345678901234567, 1.2345001, 1.2344999999
+    r1, r2 = 2 * f2 - f1, 2 * f3 - f2
+    assert engine.richardson([f1, f2, f3], [0.004, 0.002, 0.001]) == (4 * r2 - r1) / 3
+
+
+def test_richardson_refuses_repeated_or_missing_parameters():
+    with pytest.raises(ValueError, match="distinct"):
+        engine.richardson([1.0, 2.0], [0.1, 0.1])
+    with pytest.raises(ValueError, match="as many"):
+        engine.richardson([1.0, 2.0], [0.1])
+
+
+def test_leading_coefficient_of_a_known_residual():
+    """r = c p² (1 + d p): Richardson on the two smallest p removes d exactly, leaving c."""
+    ps = (0.08, 0.04, 0.02, 0.01)
+    residuals = [0.7 * p**2 * (1 - 3 * p) for p in ps]
+    assert engine.leading_coefficient(ps, residuals, 2) == pytest.approx(0.7, rel=1e-12)
+
+
+def test_extrapolate_to_zero_of_a_polynomial_in_p_squared():
+    ps = (0.4, 0.3, 0.2, 0.1, 0.05)
+    values = [2 + 3 * p**2 - p**4 for p in ps]
+    assert engine.extrapolate_to_zero(ps, values, step=2) == pytest.approx(2.0, abs=1e-12)
+
+
+def _row(verdict: str, residuals, claimed=2.0, observed=2.0):
+    from pendcli.core.claims import FormulaRow
+
+    return FormulaRow(
+        "demo.eq1", "demo", "(1)", "f", "f", verdict, claimed, observed, "", tuple(residuals)
+    )
+
+
+def test_draw_study_shows_the_residuals_and_the_claimed_slope():
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import to_rgba
+
+    residuals = [(0.1, 3e-3), (0.05, 4e-4), (0.025, 0.0), (0.0125, 6e-6)]
+    fig, ax = plt.subplots()
+    try:
+        engine.draw_study(ax, _row("fails", residuals, claimed=3.0, observed=2.71))
+        data, slope = ax.get_lines()
+        # the zero residual cannot sit on a log axis: three points drawn, red for "fails"
+        assert list(data.get_xdata()) == [0.1, 0.05, 0.0125]
+        assert list(data.get_ydata()) == [3e-3, 4e-4, 6e-6]
+        assert to_rgba(data.get_color()) == to_rgba("tab:red")
+        # claimed slope 3 through the smallest parameter's residual: 6e-6 · (p/0.0125)³
+        expected = [6e-6 * (p / 0.0125) ** 3 for p, _ in residuals]
+        np.testing.assert_allclose(slope.get_ydata(), expected, rtol=1e-14)
+        assert ax.get_title() == "eq1 (1)\nfails, observed 2.71"
+        assert ax.get_xscale() == ax.get_yscale() == "log"
+    finally:
+        plt.close(fig)
+
+
+def test_plot_studies_draws_one_panel_per_ordered_row(tmp_path):
+    import matplotlib.image as mpimg
+
+    rows = [
+        _row("holds", [(0.1, 1e-2), (0.05, 2.5e-3), (0.025, 6.25e-4)]),
+        _row("fails", [(0.1, 1e-1), (0.05, 5e-2), (0.025, 2.5e-2)]),
+        _row("holds", [], claimed=None, observed=None),  # an identity: not drawn
+    ]
+    path = tmp_path / "studies.png"
+    engine.plot_studies(path, rows, "Demo", ncols=2)
+    image = mpimg.imread(path)[:, :, :3]
+    green = np.all(np.abs(image - np.array([44, 160, 44]) / 255) < 0.05, axis=-1)
+    red = np.all(np.abs(image - np.array([214, 39, 40]) / 255) < 0.05, axis=-1)
+    left, right = np.hsplit(image, 2)[0].shape[1], image.shape[1]
+    # tab:green markers in the left panel (holds), tab:red in the right one (fails)
+    assert green[:, :left].sum() > 100 and green[:, left:].sum() == 0
+    assert red[:, left:].sum() > 100 and red[:, :left].sum() == 0
+    assert right == 2 * left
 
 
 # ----------------------------------------------------------------------------- Lecornu
@@ -172,7 +300,7 @@ def _bessel_events(p: float):
 
 @pytest.mark.parametrize("j", range(len(fle.P_SWEEP)))
 def test_lecornu_events_against_bessel_closed_form(j):
-    ode = fle._event_times(engine.DEFAULT_REFERENCE)
+    ode = fle.event_times(engine.DEFAULT_REFERENCE)
     exact = _bessel_events(fle.P_SWEEP[j])
     for key, value in exact.items():
         assert ode[key][j] == pytest.approx(value, abs=engine.DEFAULT_REFERENCE.error_bound)
@@ -188,7 +316,7 @@ def _same_residuals(a, b, bound):
 
 def test_lecornu_reference_second_tolerance():
     """DOP853 at rtol 1e-13 moves no residual by more than the stated error bound."""
-    fle._event_times.cache_clear()
+    fle.event_times.cache_clear()
     _same_residuals(
         fle.formula_checks(),
         fle.formula_checks(TIGHT),
@@ -349,7 +477,13 @@ def test_cli_formulas_json_and_plot(tmp_path):
     assert {r["id"] for r in doc["formulas"]} == {k for k in EXPECTED if k.startswith("tiss")}
     code, out, err = invoke("formulas", "-p", "tisserand", "--plot", str(tmp_path / "figs"))
     assert code == 0, err
-    assert (tmp_path / "figs" / "formulas_tisserand.png").stat().st_size > 10_000
+    import matplotlib.image as mpimg
+
+    image = mpimg.imread(tmp_path / "figs" / "formulas_tisserand.png")[:, :, :3]
+    green = np.all(np.abs(image - np.array([44, 160, 44]) / 255) < 0.05, axis=-1).sum()
+    red = np.all(np.abs(image - np.array([214, 39, 40]) / 255) < 0.05, axis=-1).sum()
+    # every Tisserand formula holds: residuals drawn in tab:green, none in tab:red
+    assert green > 1000 and red == 0
 
 
 def test_cli_formulas_bad_input(tmp_path):

@@ -31,10 +31,15 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from pathlib import Path
+from typing import TYPE_CHECKING, TypeVar
 
 import numpy as np
 
 from pendcli.core.claims import FormulaRow
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = [
     "DEFAULT_REFERENCE",
@@ -44,6 +49,7 @@ __all__ = [
     "Reference",
     "Study",
     "crossings",
+    "draw_study",
     "extrapolate_to_zero",
     "fit_basis",
     "fit_order",
@@ -53,7 +59,10 @@ __all__ = [
     "leading_coefficient",
     "make_row",
     "plot_studies",
+    "richardson",
 ]
+
+N = TypeVar("N", float, Fraction)  # a number richardson works on exactly as given
 
 ORDER_TOLERANCE = 0.3  # |observed − claimed| allowed below the claim; above it is "better"
 # Denominators the papers' series use: powers of two, and three times powers of two.
@@ -137,16 +146,22 @@ class Study:
         )
 
 
-def fit_order(params: Sequence[float], residuals: Sequence[float]) -> float | None:
-    """Least-squares slope of log|r| against log p (None with fewer than 2 usable points)."""
-    pts = [
+def _log_points(params: Sequence[float], residuals: Sequence[float]) -> list[tuple[float, float]]:
+    return [
         (math.log(p), math.log(abs(r))) for p, r in zip(params, residuals, strict=True) if r != 0
     ]
-    if len(pts) < 2:
-        return None
-    x = np.array([a for a, _ in pts])
-    y = np.array([b for _, b in pts])
+
+
+def _slope(points: Sequence[tuple[float, float]]) -> float:
+    x = np.array([a for a, _ in points])
+    y = np.array([b for _, b in points])
     return float(np.polyfit(x, y, 1)[0])
+
+
+def fit_order(params: Sequence[float], residuals: Sequence[float]) -> float | None:
+    """Least-squares slope of log|r| against log p (None with fewer than 2 usable points)."""
+    points = _log_points(params, residuals)
+    return _slope(points) if len(points) >= 2 else None
 
 
 def judge(study: Study) -> tuple[str, float | None, str]:
@@ -171,20 +186,25 @@ def judge(study: Study) -> tuple[str, float | None, str]:
             fit_order(study.params, study.residuals),
             "too few residuals above the reference's error to fit an order",
         )
-    observed = fit_order([p for p, _ in above], [r for _, r in above])
     used = "" if len(above) == len(study.params) else f" (fit on {len(above)} points)"
-    if observed >= study.claimed_order - ORDER_TOLERANCE:
+    return _judge_order(study.claimed_order, above, used)
+
+
+def _judge_order(
+    claimed: float, above: Sequence[tuple[float, float]], used: str
+) -> tuple[str, float, str]:
+    """Holds iff the slope over the residuals above the floor reaches the claimed order."""
+    # every residual in `above` exceeds a positive floor: none is dropped as zero
+    observed = _slope(_log_points([p for p, _ in above], [r for _, r in above]))
+    if observed >= claimed - ORDER_TOLERANCE:
         faster = (
-            "; vanishes faster than claimed"
-            if observed > study.claimed_order + ORDER_TOLERANCE + 0.4
-            else ""
+            "; vanishes faster than claimed" if observed > claimed + ORDER_TOLERANCE + 0.4 else ""
         )
         return "holds", observed, f"observed order ≥ claimed − {ORDER_TOLERANCE}{faster}{used}"
     return (
         "fails",
         observed,
-        f"observed order {observed:.2f} < claimed {study.claimed_order:g} − "
-        f"{ORDER_TOLERANCE}{used}",
+        f"observed order {observed:.2f} < claimed {claimed:g} − {ORDER_TOLERANCE}{used}",
     )
 
 
@@ -201,6 +221,27 @@ def leading_coefficient(
     w1, w2 = p1**step, p2**step
     out = (c1 * w2 - c2 * w1) / (w2 - w1)
     return float(out) if np.ndim(out) == 0 else out
+
+
+def richardson(values: Sequence[N], params: Sequence[N]) -> N:
+    """f(0) from samples f(p_i) of f(p) = f0 + f1 p + f2 p² + ...: Richardson (Neville) at 0.
+
+    The value at p = 0 of the polynomial of degree n − 1 through the n points (params[i],
+    values[i]); its error is O(p_1 p_2 ... p_n). Each step is (t·P_{i+1..j} − P_{i..j−1}) /
+    (t − 1) with t = p_i/p_j: for halving steps, t = 2, 4, ..., the classical table
+    (2 f(p/2) − f(p), then (4 r_2 − r_1)/3, ...). Works on floats and on Fractions (exactly).
+    """
+    if len(values) != len(params) or not values:
+        raise ValueError("richardson needs as many parameters as values, at least one")
+    if len(set(params)) != len(params):
+        raise ValueError(f"richardson needs distinct parameters, got {list(params)}")
+    table = list(values)
+    for m in range(1, len(table)):
+        table = [
+            (params[i] / params[i + m] * table[i + 1] - table[i]) / (params[i] / params[i + m] - 1)
+            for i in range(len(table) - 1)
+        ]
+    return table[0]
 
 
 def extrapolate_to_zero(
@@ -315,45 +356,49 @@ def make_row(
     )
 
 
-def plot_studies(path, rows: Sequence[FormulaRow], title: str, ncols: int = 4) -> None:
-    """One log-log panel per row: |residual| against parameter, claimed slope drawn.
+def plot_studies(path: str | Path, rows: Sequence[FormulaRow], title: str, ncols: int = 4) -> None:
+    """One log-log panel per row (:func:`draw_study`), written to ``path``.
 
     Identity checks (no claimed order) have no parameter to shrink and are not drawn.
     """
-    from matplotlib.ticker import LogLocator, NullFormatter, NullLocator
-
     from pendcli.core.plotting import new_figure
 
     rows = [r for r in rows if r.residuals and r.claimed_order is not None]
     if not rows:
         return
     nrows = math.ceil(len(rows) / ncols)
-    with new_figure(path, nrows=nrows, ncols=ncols, size=(3.3 * ncols, 2.8 * nrows)) as (
-        _fig,
-        axes,
-    ):
+    size = (3.3 * ncols, 2.8 * nrows)
+    with new_figure(path, nrows=nrows, ncols=ncols, size=size) as (_fig, axes):
         flat = list(np.ravel(axes))
         for ax, row in zip(flat, rows, strict=False):  # more panels than rows
-            ps = np.array([p for p, _ in row.residuals])
-            rs = np.array([r for _, r in row.residuals])
-            positive = rs > 0
-            color = "tab:green" if row.verdict == "holds" else "tab:red"
-            ax.loglog(ps[positive], rs[positive], "o-", color=color, ms=4, label="|residual|")
-            if row.claimed_order is not None and positive.any():
-                i = int(np.argmin(np.where(positive, ps, np.inf)))
-                line = rs[i] * (ps / ps[i]) ** row.claimed_order
-                ax.loglog(ps, line, "--", color="gray", lw=1, label=f"slope {row.claimed_order:g}")
-            obs = "" if row.observed_order is None else f", observed {row.observed_order:.2f}"
-            ax.set_title(f"{row.id.split('.', 1)[1]} {row.source}\n{row.verdict}{obs}", fontsize=8)
-            ax.set_xlabel("small parameter (see note)", fontsize=7)
-            # Minor log ticks over many decades make tight_layout take seconds: majors only.
-            for axis in (ax.xaxis, ax.yaxis):
-                axis.set_major_locator(LogLocator(numticks=6))
-                axis.set_minor_locator(NullLocator())
-                axis.set_minor_formatter(NullFormatter())
-            ax.tick_params(labelsize=7)
-            ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=6)
+            draw_study(ax, row)
         for ax in flat[len(rows) :]:
             ax.set_visible(False)
         flat[0].set_title(f"{title}\n{flat[0].get_title()}", fontsize=8)
+
+
+def draw_study(ax: Axes, row: FormulaRow) -> None:
+    """|residual| against the parameter on log-log axes, green if it holds, red if it fails,
+    with a dashed line of the claimed slope through the smallest parameter's residual."""
+    from matplotlib.ticker import LogLocator, NullFormatter, NullLocator
+
+    ps = np.array([p for p, _ in row.residuals])
+    rs = np.array([r for _, r in row.residuals])
+    positive = rs > 0
+    color = "tab:green" if row.verdict == "holds" else "tab:red"
+    ax.loglog(ps[positive], rs[positive], "o-", color=color, ms=4, label="|residual|")
+    if row.claimed_order is not None and positive.any():
+        i = int(np.argmin(np.where(positive, ps, np.inf)))
+        line = rs[i] * (ps / ps[i]) ** row.claimed_order
+        ax.loglog(ps, line, "--", color="gray", lw=1, label=f"slope {row.claimed_order:g}")
+    obs = "" if row.observed_order is None else f", observed {row.observed_order:.2f}"
+    ax.set_title(f"{row.id.split('.', 1)[1]} {row.source}\n{row.verdict}{obs}", fontsize=8)
+    ax.set_xlabel("small parameter (see note)", fontsize=7)
+    # Minor log ticks over many decades make tight_layout take seconds: majors only.
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_locator(LogLocator(numticks=6))
+        axis.set_minor_locator(NullLocator())
+        axis.set_minor_formatter(NullFormatter())
+    ax.tick_params(labelsize=7)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=6)
