@@ -21,7 +21,10 @@ Checked here (each against solve_ivp on (3), (30), (32) or (43) linearised, see 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from functools import cache
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -39,7 +42,21 @@ from pendcli.core.formula_engine import (
     plot_studies,
 )
 
-__all__ = ["figures", "formula_checks"]
+__all__ = [
+    "P_SWEEP",
+    "amplitude_rows",
+    "compound_rows",
+    "event_times",
+    "fast_shortening_rows",
+    "figures",
+    "finite_rows",
+    "formula_checks",
+    "series_rows",
+    "table_26_rows",
+]
+
+Array = np.ndarray
+Solution = Callable[[Any], Array]  # the dense output of Reference.solve
 
 PAPER = "lecornu"
 P_SWEEP = (0.032, 0.016, 0.008, 0.004, 0.002)  # p = b/√(ga)
@@ -50,51 +67,10 @@ S_SWEEP = (0.2, 0.1, 0.05, 0.025, 0.0125)  # s·z0 = g a / b² for (31)
 PI = math.pi
 P_PARAM = "p = b/√(ga) = 0.032 … 0.002"
 K_PARAM = "k = sin(θ0/2) = 0.2 … 0.05"
+GRID_2PI = 401  # points of the grids 0 ≤ γt ≤ 2π on which residuals are maximised
 
 
-# ----------------------------------------------------------------------------- equations
-def _linear_rhs(ps: np.ndarray):
-    """(3) linearised, reduced: (1 + pτ) θ'' + 2p θ' + θ = 0, one copy per p (stacked)."""
-    m = len(ps)
-
-    def rhs(t, y):
-        th, om = y[:m], y[m:]
-        return np.concatenate((om, -(2.0 * ps * om + th) / (1.0 + ps * t)))
-
-    return rhs
-
-
-@cache
-def _linear(ps: tuple, theta0: float, omega0: float, t_end: float, ref: Reference):
-    """Dense solution of the linearised (3) for each p, from θ(0) = θ0, θ'(0) = ω0."""
-    arr = np.array(ps)
-    y0 = np.concatenate((np.full(len(ps), theta0), np.full(len(ps), omega0)))
-    return ref.solve(_linear_rhs(arr), t_end, y0)
-
-
-def _vertical_start(ref: Reference, ps=P_SWEEP):
-    """θ(0) = 0, θ'(0) = 1: Lecornu's choice φ = 0 in (26) and A = 1 in (28)."""
-    return _linear(tuple(ps), 0.0, 1.0, 2.6 * PI, ref)
-
-
-# ----------------------------------------------------------------------------- chapter II
-@cache
-def _event_times(ref: Reference, ps=P_SWEEP) -> dict[str, np.ndarray]:
-    """Reduced times of the 2nd, 3rd verticals and the 1st, 2nd elongations, per p."""
-    sol = _vertical_start(ref, ps)
-    m = len(ps)
-    out = {"vertical2": [], "vertical3": [], "elong1": [], "elong2": []}
-    for j in range(m):
-        v2, v3 = crossings(sol, j, 0.0, 2.6 * PI, 2)
-        e1, e2 = crossings(sol, m + j, 0.0, 2.6 * PI, 2)
-        out["vertical2"].append(v2)
-        out["vertical3"].append(v3)
-        out["elong1"].append(e1)
-        out["elong2"].append(e2)
-    return {k: np.array(v) for k, v in out.items()}
-
-
-def _row(id_, source, published, study, ref, **kw) -> FormulaRow:
+def _row(id_: str, source: str, published: str, study: Study, ref: Reference, **kw: Any):
     return make_row(
         id=f"{PAPER}.{id_}",
         paper=PAPER,
@@ -106,11 +82,63 @@ def _row(id_, source, published, study, ref, **kw) -> FormulaRow:
     )
 
 
-def table_26_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
-    """The table after (26): times of vertical positions and elongations (first order in p)."""
-    ev = _event_times(ref)
-    ps = np.array(P_SWEEP)
-    entries = (
+def _p_study(residuals: Sequence[float] | Array, order: float, ref: Reference) -> Study:
+    """A study over P_SWEEP (p = b/√(ga))."""
+    return Study(P_PARAM, P_SWEEP, tuple(residuals), order, ref.error_bound)
+
+
+def _k_study(residuals: Sequence[float] | Array, order: float, ref: Reference) -> Study:
+    """A study over K_SWEEP (k = sin(θ0/2))."""
+    return Study(K_PARAM, K_SWEEP, tuple(residuals), order, ref.error_bound)
+
+
+# ----------------------------------------------------------------------------- equations
+def _linear_rhs(ps: Array) -> Callable[[float, Array], Array]:
+    """(3) linearised, reduced: (1 + pτ) θ'' + 2p θ' + θ = 0, one copy per p (stacked)."""
+    m = len(ps)
+
+    def rhs(t: float, y: Array) -> Array:
+        th, om = y[:m], y[m:]
+        return np.concatenate((om, -(2.0 * ps * om + th) / (1.0 + ps * t)))
+
+    return rhs
+
+
+@cache
+def _linear(
+    ps: tuple[float, ...], theta0: float, omega0: float, t_end: float, ref: Reference
+) -> Solution:
+    """Dense solution of the linearised (3) for each p, from θ(0) = θ0, θ'(0) = ω0."""
+    arr = np.array(ps)
+    y0 = np.concatenate((np.full(len(ps), theta0), np.full(len(ps), omega0)))
+    return ref.solve(_linear_rhs(arr), t_end, y0.tolist())
+
+
+def _vertical_start(ref: Reference, ps: tuple[float, ...] = P_SWEEP) -> Solution:
+    """θ(0) = 0, θ'(0) = 1: Lecornu's choice φ = 0 in (26) and A = 1 in (28)."""
+    return _linear(tuple(ps), 0.0, 1.0, 2.6 * PI, ref)
+
+
+# ----------------------------------------------------------------------------- chapter II
+@cache
+def event_times(ref: Reference, ps: tuple[float, ...] = P_SWEEP) -> dict[str, Array]:
+    """Reduced times of the 2nd, 3rd verticals and the 1st, 2nd elongations, per p."""
+    sol = _vertical_start(ref, ps)
+    m = len(ps)
+    out: dict[str, list[float]] = {"vertical2": [], "vertical3": [], "elong1": [], "elong2": []}
+    for j in range(m):
+        v2, v3 = crossings(sol, j, 0.0, 2.6 * PI, 2)
+        e1, e2 = crossings(sol, m + j, 0.0, 2.6 * PI, 2)
+        out["vertical2"].append(v2)
+        out["vertical3"].append(v3)
+        out["elong1"].append(e1)
+        out["elong2"].append(e2)
+    return {k: np.array(v) for k, v in out.items()}
+
+
+def _table_26_entries(ps: Array) -> tuple[tuple[str, str, str, Array], ...]:
+    """(event, row name, printed time, time of the formula) for each line of the table."""
+    return (
         (
             "elong1",
             "first_elongation",
@@ -126,40 +154,46 @@ def table_26_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
         ),
         ("vertical3", "third_vertical", "2π√(a/g) + π² b/g", 2 * PI + PI**2 * ps),
     )
-    rows = []
-    for key, name, printed, formula in entries:
-        study = Study(P_PARAM, P_SWEEP, tuple(ev[key] - formula), 2, ref.error_bound)
-        rows.append(
-            _row(
-                f"table26.{name}",
-                "table after (26)",
-                f"t = {printed}",
-                study,
-                ref,
-                note="Time from a vertical passage (t = 0) of the small oscillations of (3); "
-                "first order in p, so the residual should be O(p²).",
-            )
-        )
-    # The increase π²b/(4g) of the oscillation time, independent of l (after (23)):
-    # measured on the second oscillation, with l the length at its first vertical passage.
+
+
+def _oscillation_time_increase_row(ref: Reference) -> FormulaRow:
+    """The increase π²b/(4g) of the oscillation time, independent of l (after (23)).
+
+    Measured on the second oscillation, with l the length at its first vertical passage.
+    """
+    ev, ps = event_times(ref), np.array(P_SWEEP)
     l2 = 1.0 + ps * ev["vertical2"]
     increase = ev["vertical3"] - ev["vertical2"] - PI * np.sqrt(l2)
-    study = Study(P_PARAM, P_SWEEP, tuple(increase - PI**2 / 4 * ps), 2, ref.error_bound)
-    rows.append(
-        _row(
-            "oscillation_time_increase",
-            "after (23)",
-            "oscillation time = π√(l/g) + π² b/(4g), l = length at the first vertical passage",
-            study,
-            ref,
-            note="Measured on the second oscillation (between the 2nd and 3rd vertical "
-            "passages) so that l ≠ a. The increase is independent of l to first order.",
-        )
+    return _row(
+        "oscillation_time_increase",
+        "after (23)",
+        "oscillation time = π√(l/g) + π² b/(4g), l = length at the first vertical passage",
+        _p_study(increase - PI**2 / 4 * ps, 2, ref),
+        ref,
+        note="Measured on the second oscillation (between the 2nd and 3rd vertical "
+        "passages) so that l ≠ a. The increase is independent of l to first order.",
     )
-    return rows
 
 
-def _series_28(t: np.ndarray, p: float) -> np.ndarray:
+def table_26_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+    """The table after (26): times of vertical positions and elongations (first order in p)."""
+    ev = event_times(ref)
+    rows = [
+        _row(
+            f"table26.{name}",
+            "table after (26)",
+            f"t = {printed}",
+            _p_study(ev[key] - formula, 2, ref),
+            ref,
+            note="Time from a vertical passage (t = 0) of the small oscillations of (3); "
+            "first order in p, so the residual should be O(p²).",
+        )
+        for key, name, printed, formula in _table_26_entries(np.array(P_SWEEP))
+    ]
+    return [*rows, _oscillation_time_increase_row(ref)]
+
+
+def _series_28(t: Array, p: float) -> Array:
     """(28): u = θ l / a as printed, with A = 1."""
     s, c = np.sin(t), np.cos(t)
     return (
@@ -169,7 +203,7 @@ def _series_28(t: np.ndarray, p: float) -> np.ndarray:
     )
 
 
-def _series_29(t: np.ndarray, p: float, c2: float = -43.0) -> np.ndarray:
+def _series_29(t: Array, p: float, c2: float = -43.0) -> Array:
     """(29): θ as printed (c2 = −43 is the printed coefficient of γ²t² sin γt)."""
     s, c = np.sin(t), np.cos(t)
     return (
@@ -179,12 +213,12 @@ def _series_29(t: np.ndarray, p: float, c2: float = -43.0) -> np.ndarray:
     )
 
 
-def _series_26(t: np.ndarray, p: float) -> np.ndarray:
+def _series_26(t: Array, p: float) -> Array:
     """(26) with ρ = 1: θ = (1 − ¾pγt) sin γt − (pγ²t²/4) cos γt."""
     return (1 - 0.75 * p * t) * np.sin(t) - p * t**2 / 4 * np.cos(t)
 
 
-def _p2_bracket(grid: np.ndarray, ref: Reference) -> np.ndarray:
+def _p2_bracket(grid: Array, ref: Reference) -> Array:
     """32 × the coefficient of p² in θ(τ), fitted on the basis τ^j sin τ, τ^j cos τ (j ≤ 4).
 
     The p² coefficient function is Richardson-extrapolated from p = 0.001 and 0.0005 (small,
@@ -198,46 +232,64 @@ def _p2_bracket(grid: np.ndarray, ref: Reference) -> np.ndarray:
     c2 = leading_coefficient(ps, rests, 2)
     basis = np.stack([grid**j * s for j in range(5)] + [grid**j * c for j in range(5)], axis=1)
     coef, *_ = np.linalg.lstsq(basis, c2, rcond=None)
-    return 32 * coef
+    return np.asarray(32 * coef)
 
 
-def series_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
-    """(26), (28), (29), the period to second order, and the mean-pendulum comparison."""
-    sol = _vertical_start(ref)
-    grid = np.linspace(0.0, 2 * PI, 401)
-    values = sol(grid)
-    m = len(P_SWEEP)
-    rows = []
-    theta = values[:m]
-    # (26): first order.
-    res26 = [np.max(np.abs(theta[j] - _series_26(grid, p))) for j, p in enumerate(P_SWEEP)]
-    rows.append(
-        _row(
-            "eq26",
-            "(26)",
-            "θ = ρ(1 − ¾pγt) sin γt − (ρpγ²t²/4) cos γt",
-            Study(P_PARAM, P_SWEEP, tuple(res26), 2, ref.error_bound),
-            ref,
-            note="Max over 0 ≤ γt ≤ 2π of |θ − (26)|, θ(0) = 0, θ'(0) = γρ, ρ = 1.",
-        )
+def _vertical_start_on_grid(ref: Reference) -> tuple[Array, Array]:
+    """(grid 0 ≤ τ ≤ 2π, θ on it for each p of P_SWEEP) from the vertical start."""
+    grid = np.linspace(0.0, 2 * PI, GRID_2PI)
+    return grid, _vertical_start(ref)(grid)[: len(P_SWEEP)]
+
+
+def _eq26_row(ref: Reference) -> FormulaRow:
+    """(26): first order."""
+    grid, theta = _vertical_start_on_grid(ref)
+    res = [np.max(np.abs(theta[j] - _series_26(grid, p))) for j, p in enumerate(P_SWEEP)]
+    return _row(
+        "eq26",
+        "(26)",
+        "θ = ρ(1 − ¾pγt) sin γt − (ρpγ²t²/4) cos γt",
+        _p_study(res, 2, ref),
+        ref,
+        note="Max over 0 ≤ γt ≤ 2π of |θ − (26)|, θ(0) = 0, θ'(0) = γρ, ρ = 1.",
     )
-    # (28): u = θ(1 + pτ), second order.
-    res28 = [
+
+
+def _eq28_row(ref: Reference) -> FormulaRow:
+    """(28): u = θ(1 + pτ), second order."""
+    grid, theta = _vertical_start_on_grid(ref)
+    res = [
         np.max(np.abs(theta[j] * (1 + p * grid) - _series_28(grid, p)))
         for j, p in enumerate(P_SWEEP)
     ]
-    rows.append(
-        _row(
-            "eq28",
-            "(28)",
-            "u = sin γt + (pγt/4)(sin γt − γt cos γt) + (p²/32)[(2γ³t³ − 3γt) cos γt "
-            "+ (3 − 3γ²t² − γ⁴t⁴) sin γt]",
-            Study(P_PARAM, P_SWEEP, tuple(res28), 3, ref.error_bound),
-            ref,
-            note="u = θl/a from (27) with u(0) = 0, u'(0) = γ; max over 0 ≤ γt ≤ 2π.",
-        )
+    return _row(
+        "eq28",
+        "(28)",
+        "u = sin γt + (pγt/4)(sin γt − γt cos γt) + (p²/32)[(2γ³t³ − 3γt) cos γt "
+        "+ (3 − 3γ²t² − γ⁴t⁴) sin γt]",
+        _p_study(res, 3, ref),
+        ref,
+        note="u = θl/a from (27) with u(0) = 0, u'(0) = γ; max over 0 ≤ γt ≤ 2π.",
     )
-    # (29): θ, second order; the printed −43 against the coefficient found numerically.
+
+
+_P2_NAMES = (
+    "sin",
+    "τ sin",
+    "τ² sin",
+    "τ³ sin",
+    "τ⁴ sin",
+    "cos",
+    "τ cos",
+    "τ² cos",
+    "τ³ cos",
+    "τ⁴ cos",
+)
+
+
+def _eq29_row(ref: Reference) -> FormulaRow:
+    """(29): θ, second order; the printed −43 against the coefficient found numerically."""
+    grid, theta = _vertical_start_on_grid(ref)
     res29 = [np.max(np.abs(theta[j] - _series_29(grid, p))) for j, p in enumerate(P_SWEEP)]
     bracket = _p2_bracket(grid, ref)
     sin_t2 = round(float(bracket[2]))
@@ -245,205 +297,211 @@ def series_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
         np.max(np.abs(theta[j] - _series_29(grid, p, c2=float(sin_t2))))
         for j, p in enumerate(P_SWEEP)
     ]
-    fixed_study = Study(P_PARAM, P_SWEEP, tuple(fixed), 3, ref.error_bound)
-
-    fixed_verdict, fixed_order, _ = judge(fixed_study)
-    names = [
-        "sin",
-        "τ sin",
-        "τ² sin",
-        "τ³ sin",
-        "τ⁴ sin",
-        "cos",
-        "τ cos",
-        "τ² cos",
-        "τ³ cos",
-        "τ⁴ cos",
-    ]
+    fixed_verdict, fixed_order, _ = judge(_p_study(fixed, 3, ref))
     fitted = ", ".join(
-        f"{n}: {b:+.4f}" for n, b in zip(names, bracket, strict=True) if abs(b) > 1e-3
+        f"{n}: {b:+.4f}" for n, b in zip(_P2_NAMES, bracket, strict=True) if abs(b) > 1e-3
     )
-    rows.append(
-        _row(
-            "eq29",
-            "(29)",
-            "θ = sin γt − (pγt/4)(3 sin γt + γt cos γt) + (p²/32)[(10γ³t³ − 3γt) cos γt "
-            "+ (3 − 43γ²t² − γ⁴t⁴) sin γt]",
-            Study(P_PARAM, P_SWEEP, tuple(res29), 3, ref.error_bound),
-            ref,
-            recomputed="θ = sin γt − (pγt/4)(3 sin γt + γt cos γt) + (p²/32)[(10γ³t³ − 3γt) "
-            f"cos γt + (3 {'+' if sin_t2 >= 0 else '−'} {abs(sin_t2)}γ²t² − γ⁴t⁴) sin γt]",
-            note=f"32× the p² coefficient of θ, fitted on τ^j sin τ, τ^j cos τ: {fitted}. "
-            f"The coefficient of γ²t² sin γt is {sin_t2:+d}, not −43: dividing (28) by "
-            "1 + pγt (u = θa(1 + pγt)) gives 3 − 3τ² − 8τ² + 32τ² = 3 + 21τ², so the slip is in "
-            "the last step (a sign and arithmetic slip, the other terms are right). With "
-            f"{sin_t2:+d} the residual is O(p^{fixed_order:.2f}) ({fixed_verdict}).",
-        )
+    return _row(
+        "eq29",
+        "(29)",
+        "θ = sin γt − (pγt/4)(3 sin γt + γt cos γt) + (p²/32)[(10γ³t³ − 3γt) cos γt "
+        "+ (3 − 43γ²t² − γ⁴t⁴) sin γt]",
+        _p_study(res29, 3, ref),
+        ref,
+        recomputed="θ = sin γt − (pγt/4)(3 sin γt + γt cos γt) + (p²/32)[(10γ³t³ − 3γt) "
+        f"cos γt + (3 {'+' if sin_t2 >= 0 else '−'} {abs(sin_t2)}γ²t² − γ⁴t⁴) sin γt]",
+        note=f"32× the p² coefficient of θ, fitted on τ^j sin τ, τ^j cos τ: {fitted}. "
+        f"The coefficient of γ²t² sin γt is {sin_t2:+d}, not −43: dividing (28) by "
+        "1 + pγt (u = θa(1 + pγt)) gives 3 − 3τ² − 8τ² + 32τ² = 3 + 21τ², so the slip is in "
+        "the last step (a sign and arithmetic slip, the other terms are right). With "
+        f"{sin_t2:+d} the residual is O(p^{fixed_order:.2f}) ({fixed_verdict}).",
     )
-    # Period to second order and the comparison with the mean pendulum.
-    ev = _event_times(ref, P_PERIOD_SWEEP)
+
+
+def _period_row(ref: Reference) -> FormulaRow:
+    """The period to second order, π√(a/g) + π²b/(4g) + (3π/32) b²/(g√(ag))."""
+    ev = event_times(ref, P_PERIOD_SWEEP)
     ps = np.array(P_PERIOD_SWEEP)
     period = PI + PI**2 / 4 * ps + 3 * PI / 32 * ps**2
-    rows.append(
-        _row(
-            "period_second_order",
-            "after (28)",
-            "t = π√(a/g) + π²b/(4g) + (3π/32) b²/(g√(ag))",
-            Study(
-                "p = b/√(ga) = 0.1 … 0.025",
-                P_PERIOD_SWEEP,
-                tuple(ev["vertical2"] - period),
-                3,
-                ref.error_bound,
-            ),
-            ref,
-            note="Time between the first two vertical passages (t = 0 vertical). The residual "
-            "is in fact O(p⁴): the p³ term of the exact expansion vanishes.",
-        )
+    return _row(
+        "period_second_order",
+        "after (28)",
+        "t = π√(a/g) + π²b/(4g) + (3π/32) b²/(g√(ag))",
+        Study(
+            "p = b/√(ga) = 0.1 … 0.025",
+            P_PERIOD_SWEEP,
+            tuple(ev["vertical2"] - period),
+            3,
+            ref.error_bound,
+        ),
+        ref,
+        note="Time between the first two vertical passages (t = 0 vertical). The residual "
+        "is in fact O(p⁴): the p³ term of the exact expansion vanishes.",
     )
-    ev = _event_times(ref)
+
+
+def _mean_pendulum_row(ref: Reference) -> FormulaRow:
+    """The comparison with the mean pendulum, printed π(7π² − 3)/32 = 6,47."""
     ps = np.array(P_SWEEP)
-    t2 = ev["vertical2"]
+    t2 = event_times(ref)["vertical2"]
     mean = PI * np.sqrt(1 + ps * t2 / 2)  # ordinary pendulum of the length reached at t/2
     diff = mean - t2
     printed_c = PI * (7 * PI**2 - 3) / 32
     c_found = leading_coefficient(P_SWEEP, tuple(diff), 2)
     match = identify_combination(c_found, [(PI**3, "π³"), (PI, "π")]) or f"{c_found:.6f}"
-    rows.append(
-        _row(
-            "mean_pendulum",
-            "after (28)",
-            "π√(l/g) − t = (π(7π² − 3)/32) b²/(g√(ag)) = 6,47 b²/(g√(ag)), l = a + bt/2",
-            Study(P_PARAM, P_SWEEP, tuple(diff - printed_c * ps**2), 3, ref.error_bound),
-            ref,
-            recomputed=f"π√(l/g) − t = {match} b²/(g√(ag)) = {c_found:.4f} b²/(g√(ag))",
-            note=f"Fitted coefficient {c_found:.6f} = {match} (printed π(7π² − 3)/32 = "
-            f"{printed_c:.4f}, and printed 6,47 is not even that: it is 6,49). Expanding "
-            "π√(a/g)[1 + bt/(4a) − b²t²/(32a²)] with t = π√(a/g) + π²b/(4g) gives π³/32 for "
-            "the b² term, not 7π³/32 (slip in 'En effectuant'); the difference with 3π/32 is "
-            "then π(π² − 3)/32.",
-        )
+    return _row(
+        "mean_pendulum",
+        "after (28)",
+        "π√(l/g) − t = (π(7π² − 3)/32) b²/(g√(ag)) = 6,47 b²/(g√(ag)), l = a + bt/2",
+        _p_study(diff - printed_c * ps**2, 3, ref),
+        ref,
+        recomputed=f"π√(l/g) − t = {match} b²/(g√(ag)) = {c_found:.4f} b²/(g√(ag))",
+        note=f"Fitted coefficient {c_found:.6f} = {match} (printed π(7π² − 3)/32 = "
+        f"{printed_c:.4f}, and printed 6,47 is not even that: it is 6,49). Expanding "
+        "π√(a/g)[1 + bt/(4a) − b²t²/(32a²)] with t = π√(a/g) + π²b/(4g) gives π³/32 for "
+        "the b² term, not 7π³/32 (slip in 'En effectuant'); the difference with 3π/32 is "
+        "then π(π² − 3)/32.",
     )
-    return rows
 
 
-def amplitude_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
-    """Ratio of successive elongations; (52) as printed; the homothety ratio 1 − 3pπ/4."""
-    ev = _event_times(ref)
-    sol = _vertical_start(ref)
+def series_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+    """(26), (28), (29), the period to second order, and the mean-pendulum comparison."""
+    return [
+        _eq26_row(ref),
+        _eq28_row(ref),
+        _eq29_row(ref),
+        _period_row(ref),
+        _mean_pendulum_row(ref),
+    ]
+
+
+def _elongation_ratio_row(ref: Reference) -> FormulaRow:
+    """Ratio of successive elongations, 1 + (3/4)π b/√(gl) (after (24))."""
+    ev, sol = event_times(ref), _vertical_start(ref)
     ps = np.array(P_SWEEP)
-    m = len(ps)
-    rows = []
     e1, e2 = ev["elong1"], ev["elong2"]
     amp1 = np.array([sol(t)[j] for j, t in enumerate(e1)])
     amp2 = np.array([sol(t)[j] for j, t in enumerate(e2)])
-    ratio = amp1 / -amp2
     p_l = ps / np.sqrt(1 + ps * e1)  # b/√(gl) with l the length at the first elongation
-    res = ratio - (1 + 0.75 * PI * p_l)
-    rows.append(
-        _row(
-            "elongation_ratio",
-            "after (24)",
-            "θ/θ' = (l'/l)^(3/4) = 1 + (3/4)π √(b/(gl))",
-            Study(P_PARAM, P_SWEEP, tuple(res), 2, ref.error_bound),
-            ref,
-            recomputed="θ/θ' = 1 + (3/4)π b/√(gl)",
-            note="Ratio of the absolute amplitudes of two successive elongations, l the length "
-            "at the first. The printed √(b/(gl)) is dimensionally impossible; with "
-            "l' = l + bπ√(l/g) the text's own step gives b/√(gl) (a typesetting/OCR slip), "
-            "which is what is tested.",
-        )
+    return _row(
+        "elongation_ratio",
+        "after (24)",
+        "θ/θ' = (l'/l)^(3/4) = 1 + (3/4)π √(b/(gl))",
+        _p_study(amp1 / -amp2 - (1 + 0.75 * PI * p_l), 2, ref),
+        ref,
+        recomputed="θ/θ' = 1 + (3/4)π b/√(gl)",
+        note="Ratio of the absolute amplitudes of two successive elongations, l the length "
+        "at the first. The printed √(b/(gl)) is dimensionally impossible; with "
+        "l' = l + bπ√(l/g) the text's own step gives b/√(gl) (a typesetting/OCR slip), "
+        "which is what is tested.",
     )
-    # (52) and the homothety ratio: the two plane components, same ODE, θ1 from an elongation.
-    grid = np.linspace(0.0, 2 * PI, 401)
+
+
+def _eq52_components(u: Array, p: float) -> tuple[Array, Array, Array, Array]:
+    """(52) as printed (θ1/ρ1, θ2/ρ2), then corrected, on the grid u."""
+    c, s = np.cos(u), np.sin(u)
+    printed1 = c - p * u / 4 * (3 * c + u * c)
+    printed2 = s - p * u / 4 * (3 * s + u * s)
+    fixed1 = c - p * u / 4 * (3 * c - u * s)
+    fixed2 = s - p * u / 4 * (3 * s + u * c)
+    return printed1, printed2, fixed1, fixed2
+
+
+def _conical_residuals(ref: Reference) -> tuple[list[float], list[float], list[float]]:
+    """Max residuals of (52) printed and corrected, and the homothety ratio's, per p.
+
+    The two plane components of the conical pendulum, same ODE, θ1 from an elongation.
+    """
+    ev, sol = event_times(ref), _vertical_start(ref)
+    grid = np.linspace(0.0, 2 * PI, GRID_2PI)
     printed_res, fixed_res, homothety = [], [], []
     for j, p in enumerate(P_SWEEP):
         xs = _linear((p,), 1.0, -0.75 * p, 2.6 * PI, ref)  # θ1/ρ1: (52) gives θ1'(0) = −3pρ1/4
         ys = sol(grid)[j]
         x = xs(grid)[0]
-        printed1 = np.cos(grid) - p * grid / 4 * (3 * np.cos(grid) + grid * np.cos(grid))
-        printed2 = np.sin(grid) - p * grid / 4 * (3 * np.sin(grid) + grid * np.sin(grid))
-        fixed1 = np.cos(grid) - p * grid / 4 * (3 * np.cos(grid) - grid * np.sin(grid))
-        fixed2 = np.sin(grid) - p * grid / 4 * (3 * np.sin(grid) + grid * np.cos(grid))
+        printed1, printed2, fixed1, fixed2 = _eq52_components(grid, p)
         printed_res.append(max(np.max(np.abs(x - printed1)), np.max(np.abs(ys - printed2))))
         fixed_res.append(max(np.max(np.abs(x - fixed1)), np.max(np.abs(ys - fixed2))))
         half_turn = ev["vertical2"][j]  # θ2 = 0 again: the trace crosses the θ1 axis
         homothety.append(-xs(half_turn)[0] - (1 - 0.75 * PI * p))
-    fixed_study = Study(P_PARAM, P_SWEEP, tuple(fixed_res), 2, ref.error_bound)
+    return printed_res, fixed_res, homothety
 
-    fv, fo, _ = judge(fixed_study)
-    rows.append(
-        _row(
-            "eq52",
-            "(52)",
-            "θ1/ρ1 = cos u − (pu/4)(3 cos u + u cos u), θ2/ρ2 = sin u − (pu/4)(3 sin u + u sin u)",
-            Study(P_PARAM, P_SWEEP, tuple(printed_res), 2, ref.error_bound),
-            ref,
-            recomputed="θ1/ρ1 = cos u − (pu/4)(3 cos u − u sin u), "
-            "θ2/ρ2 = sin u − (pu/4)(3 sin u + u cos u)",
-            note="Both plane components of the conical pendulum (48), linear, with the initial "
-            "values (52) itself gives (θ1 = ρ1, θ1' = −3pγρ1/4, θ2 = 0, θ2' = γρ2); max over "
-            "0 ≤ u ≤ 2π. Putting ψ = −π/2 and ψ = 0 in (25) gives the last terms −u sin u "
-            "(θ1) and +u cos u (θ2); the printed 'u cos u' and 'u sin u' are misprints (each "
-            "repeats the trigonometric factor of the term before it); (29) has the right "
-            f"θ2. Corrected, the residual is O(p^{fo:.2f}) ({fv}).",
-        )
+
+def amplitude_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+    """Ratio of successive elongations; (52) as printed; the homothety ratio 1 − 3pπ/4."""
+    printed_res, fixed_res, homothety = _conical_residuals(ref)
+    fv, fo, _ = judge(_p_study(fixed_res, 2, ref))
+    eq52 = _row(
+        "eq52",
+        "(52)",
+        "θ1/ρ1 = cos u − (pu/4)(3 cos u + u cos u), θ2/ρ2 = sin u − (pu/4)(3 sin u + u sin u)",
+        _p_study(printed_res, 2, ref),
+        ref,
+        recomputed="θ1/ρ1 = cos u − (pu/4)(3 cos u − u sin u), "
+        "θ2/ρ2 = sin u − (pu/4)(3 sin u + u cos u)",
+        note="Both plane components of the conical pendulum (48), linear, with the initial "
+        "values (52) itself gives (θ1 = ρ1, θ1' = −3pγρ1/4, θ2 = 0, θ2' = γρ2); max over "
+        "0 ≤ u ≤ 2π. Putting ψ = −π/2 and ψ = 0 in (25) gives the last terms −u sin u "
+        "(θ1) and +u cos u (θ2); the printed 'u cos u' and 'u sin u' are misprints (each "
+        "repeats the trigonometric factor of the term before it); (29) has the right "
+        f"θ2. Corrected, the residual is O(p^{fo:.2f}) ({fv}).",
     )
-    rows.append(
-        _row(
-            "homothety_ratio",
-            "after (52)",
-            "ratio of homothety after half a turn = 1 − 3pπ/4",
-            Study(P_PARAM, P_SWEEP, tuple(homothety), 2, ref.error_bound),
-            ref,
-            note="θ1/ρ1 at the next crossing of the θ1 axis (θ2 = 0, half a turn) divided by its "
-            "initial value, conical pendulum started as in (52).",
-        )
+    homothety_row = _row(
+        "homothety_ratio",
+        "after (52)",
+        "ratio of homothety after half a turn = 1 − 3pπ/4",
+        _p_study(homothety, 2, ref),
+        ref,
+        note="θ1/ρ1 at the next crossing of the θ1 axis (θ2 = 0, half a turn) divided by its "
+        "initial value, conical pendulum started as in (52).",
     )
-    del m
-    return rows
+    return [_elongation_ratio_row(ref), eq52, homothety_row]
 
 
-def compound_rows(ref: Reference = DEFAULT_REFERENCE, radius_ratio: float = 0.5):
-    """Section I: the compound pendulum behaves as the simple one with b → b(1 − R²/a²)."""
-    r2 = radius_ratio**2
+def _compound_residuals(ref: Reference, r2: float) -> tuple[Array, Array]:
+    """Max |Δθ| over two oscillations of the substituted simple pendulum against the compound
+    one, with the printed damping b(1 − R²/a²) and with b kept; per p (R²/a² = r2)."""
     ps = np.array(P_SWEEP)
     m = len(ps)
 
-    def compound(t, y):  # d/dt[(l² + R²)θ'] + g l θ = 0, divided by l, reduced
+    def compound(t: float, y: Array) -> Array:  # d/dt[(l² + R²)θ'] + g l θ = 0, over l
         th, om = y[:m], y[m:]
         length = 1 + ps * t
         return np.concatenate((om, -(2 * ps * om + th) / (length + r2 / length)))
 
-    def substituted(t, y, damping):  # L θ'' + 2 b_d θ' + gθ = 0, L = a + R²/a + b(1 − R²/a²)t
+    def substituted(t: float, y: Array, damping: Array) -> Array:
+        # L θ'' + 2 b_d θ' + gθ = 0, L = a + R²/a + b(1 − R²/a²)t
         th, om = y[:m], y[m:]
         big_l = 1 + r2 + ps * (1 - r2) * t
         return np.concatenate((om, -(2 * damping * om + th) / big_l))
 
     t_end = 4 * PI * math.sqrt(1 + r2)
-    y0 = np.concatenate((np.ones(m), np.zeros(m)))
+    y0 = np.concatenate((np.ones(m), np.zeros(m))).tolist()
     exact = ref.solve(compound, t_end, y0)
     printed = ref.solve(lambda t, y: substituted(t, y, ps * (1 - r2)), t_end, y0)
     fixed = ref.solve(lambda t, y: substituted(t, y, ps), t_end, y0)
     grid = np.linspace(0, t_end, 401)
     ex = exact(grid)[:m]
     res_printed = np.max(np.abs(ex - printed(grid)[:m]), axis=1)
-    res_fixed = np.max(np.abs(ex - fixed(grid)[:m]), axis=1)
+    return res_printed, np.max(np.abs(ex - fixed(grid)[:m]), axis=1)
 
-    fv, fo, _ = judge(Study(P_PARAM, P_SWEEP, tuple(res_fixed), 2, ref.error_bound))
+
+def compound_rows(
+    ref: Reference = DEFAULT_REFERENCE, radius_ratio: float = 0.5
+) -> list[FormulaRow]:
+    """Section I: the compound pendulum behaves as the simple one with b → b(1 − R²/a²)."""
+    res_printed, res_fixed = _compound_residuals(ref, radius_ratio**2)
+    fv, fo, _ = judge(_p_study(res_fixed, 2, ref))
     c1 = leading_coefficient(P_SWEEP, tuple(res_printed), 1)
+    study = Study(
+        f"{P_PARAM}, R/a = {radius_ratio:g}", P_SWEEP, tuple(res_printed), 2, ref.error_bound
+    )
     return [
         _row(
             "compound_pendulum",
             "section I, after (6)",
             "compound pendulum = simple pendulum of length a + R²/a + b(1 − R²/a²)t",
-            Study(
-                f"{P_PARAM}, R/a = {radius_ratio:g}",
-                P_SWEEP,
-                tuple(res_printed),
-                2,
-                ref.error_bound,
-            ),
+            study,
             ref,
             recomputed="(l + R²/l) θ'' + 2b θ' + g θ = 0: the inertia term takes b(1 − R²/a²), "
             "the term 2b θ' keeps b",
@@ -461,32 +519,40 @@ def compound_rows(ref: Reference = DEFAULT_REFERENCE, radius_ratio: float = 0.5)
 
 
 # ----------------------------------------------------------------------------- chapter III
-def fast_shortening_rows(ref: Reference = DEFAULT_REFERENCE, alpha: float = 0.5):
-    """(31): z θ'' + 2θ' + s sin θ = 0 from z0 with θ = α, θ' = 0, to second order in s."""
+def _eq31(z: Array, z0: float, s: float, alpha: float) -> Array:
+    """(31) as printed: θ to second order in s."""
+    return np.asarray(
+        alpha
+        - s * math.sin(alpha) / (2 * z) * (z - z0) ** 2
+        + s**2
+        * math.sin(2 * alpha)
+        / 12
+        * ((z - z0) * (z**2 - 5 * z * z0 - 2 * z0**2) / (2 * z) + 3 * z0**2 * np.log(z / z0))
+    )
+
+
+def _eq31_residuals(ref: Reference, alpha: float, z0: float = 1.0) -> list[float]:
+    """Max |θ − (31)| from z0 down to z0/4, per s of S_SWEEP."""
     ss = np.array(S_SWEEP)
     m = len(ss)
-    z0 = 1.0
 
-    def rhs(z, y):
+    def rhs(z: float, y: Array) -> Array:
         th, om = y[:m], y[m:]
         return np.concatenate((om, -(2 * om + ss * np.sin(th)) / z))
 
     z_end = z0 / 4
-    y0 = np.concatenate((np.full(m, alpha), np.zeros(m)))
+    y0 = np.concatenate((np.full(m, alpha), np.zeros(m))).tolist()
     sol = ref.solve(rhs, z_end, y0, t0=z0)
     z = np.linspace(z0, z_end, 301)
     th = sol(z)[:m]
-    res = []
-    for j, s in enumerate(S_SWEEP):
-        formula = (
-            alpha
-            - s * math.sin(alpha) / (2 * z) * (z - z0) ** 2
-            + s**2
-            * math.sin(2 * alpha)
-            / 12
-            * ((z - z0) * (z**2 - 5 * z * z0 - 2 * z0**2) / (2 * z) + 3 * z0**2 * np.log(z / z0))
-        )
-        res.append(np.max(np.abs(th[j] - formula)))
+    return [float(np.max(np.abs(th[j] - _eq31(z, z0, s, alpha)))) for j, s in enumerate(S_SWEEP)]
+
+
+def fast_shortening_rows(
+    ref: Reference = DEFAULT_REFERENCE, alpha: float = 0.5
+) -> list[FormulaRow]:
+    """(31): z θ'' + 2θ' + s sin θ = 0 from z0 with θ = α, θ' = 0, to second order in s."""
+    res = _eq31_residuals(ref, alpha)
     return [
         _row(
             "eq31",
@@ -503,18 +569,18 @@ def fast_shortening_rows(ref: Reference = DEFAULT_REFERENCE, alpha: float = 0.5)
     ]
 
 
-def _nonlinear(ks: tuple, t_end: float, ref: Reference):
+def _nonlinear(ks: tuple[float, ...], t_end: float, ref: Reference) -> Solution:
     """(33) θ'' + sin θ = 0 from θ0 = 2 arcsin k at rest, with ε = ∂θ/∂p at p = 0 from (32)."""
     karr = np.array(ks)
     m = len(ks)
 
-    def rhs(t, y):
+    def rhs(t: float, y: Array) -> Array:
         th, om, ep, ed = y[:m], y[m : 2 * m], y[2 * m : 3 * m], y[3 * m :]
         acc = -np.sin(th)
         return np.concatenate((om, acc, ed, -np.cos(th) * ep - (t * acc + 2 * om)))
 
     y0 = np.concatenate((2 * np.arcsin(karr), np.zeros(3 * m)))
-    return ref.solve(rhs, t_end, y0)
+    return ref.solve(rhs, t_end, y0.tolist())
 
 
 _TRIG_BASIS = {
@@ -525,16 +591,14 @@ _TRIG_BASIS = {
 }
 
 
-def _delta_found(grid: np.ndarray, ref: Reference) -> dict[str, int]:
+def _delta_found(grid: Array, ref: Reference) -> dict[str, int]:
     """64δ: the k³ coefficient of ∂θ/∂p, extrapolated (k² steps) and fitted on _TRIG_BASIS.
 
     Small k (0.014, 0.01) keep the k⁷ terms, large at u ~ 2π, out of the fit.
     """
     ks = (0.014, 0.01)
     eps = _nonlinear(ks, 2 * PI + 0.1, ref)(grid)[4:]
-    s, c = np.sin(grid), np.cos(grid)
-    beta = (grid**2 * s - 3 * grid * c + 3 * s) / 2
-    c3 = leading_coefficient(ks, [eps[j] - k * beta for j, k in enumerate(ks)], 3, 2)
+    c3 = leading_coefficient(ks, [eps[j] - k * _beta(grid) for j, k in enumerate(ks)], 3, 2)
     coef = fit_basis(grid, 64 * c3, _TRIG_BASIS)
     return {n: round(c) for n, c in coef.items() if round(c) != 0}
 
@@ -550,119 +614,155 @@ def _trig_text(coef: dict[str, int]) -> str:
     return " ".join(parts).lstrip("+ ").replace("− ", "−", 1 if parts[0][0] == "−" else 0)
 
 
-def finite_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
-    """(38), the terms in p of (41), and the terms in b of (42) and (42')."""
-    from scipy.special import ellipk
+def _beta(u: Array) -> Array:
+    """β of (41): the term in pk of ∂θ/∂p is kβ."""
+    return np.asarray((u**2 * np.sin(u) - 3 * u * np.cos(u) + 3 * np.sin(u)) / 2)
 
-    ks = np.array(K_SWEEP)
-    m = len(ks)
-    sol = _nonlinear(K_SWEEP, 2 * PI + 0.1, ref)
-    grid = np.linspace(0.0, 2 * PI, 401)
-    y = sol(grid)
-    rows = []
-    s, c = np.sin(grid), np.cos(grid)
-    f = 9 * c + 12 * grid * s - np.cos(3 * grid)
-    res38 = [np.max(np.abs(y[j] - (2 * k * c + k**3 / 24 * f))) for j, k in enumerate(K_SWEEP)]
-    rows.append(
-        _row(
-            "eq38",
-            "(38)",
-            "θ = 2k cos u + (k³/24)(9 cos u + 12u sin u − cos 3u)",
-            Study(K_PARAM, K_SWEEP, tuple(res38), 4, ref.error_bound),
-            ref,
-            note="(33) from θ0 = 2 arcsin k at rest, max over 0 ≤ u ≤ 2π. The paper says the "
-            "error is of order k⁴; θ is odd in k, so it is in fact O(k⁵).",
+
+def _delta_printed(u: Array) -> Array:
+    """δ of (41) as printed: the term in pk³ of ∂θ/∂p is k³δ."""
+    s, c = np.sin(u), np.cos(u)
+    return np.asarray(
+        (
+            -4 * u**3 * c
+            + 11 * u**2 * s
+            - u * c
+            - u**2 * np.sin(3 * u)
+            - 3 * u * np.cos(3 * u)
+            + 4 * s
         )
+        / 32
     )
-    beta = (grid**2 * s - 3 * grid * c + 3 * s) / 2
-    delta = (
-        -4 * grid**3 * c
-        + 11 * grid**2 * s
-        - grid * c
-        - grid**2 * np.sin(3 * grid)
-        - 3 * grid * np.cos(3 * grid)
-        + 4 * s
-    ) / 32
-    res41 = [
-        np.max(np.abs(y[2 * m + j] - (k * beta + k**3 * delta))) for j, k in enumerate(K_SWEEP)
+
+
+@cache
+def _finite_solution(ref: Reference) -> tuple[Array, Array, Solution]:
+    """(grid 0 ≤ u ≤ 2π, [θ, θ', ε, ε'] on it per k of K_SWEEP, the dense solution)."""
+    sol = _nonlinear(K_SWEEP, 2 * PI + 0.1, ref)
+    grid = np.linspace(0.0, 2 * PI, GRID_2PI)
+    return grid, sol(grid), sol
+
+
+def _eq38_row(ref: Reference) -> FormulaRow:
+    grid, y, _ = _finite_solution(ref)
+    f = 9 * np.cos(grid) + 12 * grid * np.sin(grid) - np.cos(3 * grid)
+    res = [
+        np.max(np.abs(y[j] - (2 * k * np.cos(grid) + k**3 / 24 * f))) for j, k in enumerate(K_SWEEP)
     ]
+    return _row(
+        "eq38",
+        "(38)",
+        "θ = 2k cos u + (k³/24)(9 cos u + 12u sin u − cos 3u)",
+        _k_study(res, 4, ref),
+        ref,
+        note="(33) from θ0 = 2 arcsin k at rest, max over 0 ≤ u ≤ 2π. The paper says the "
+        "error is of order k⁴; θ is odd in k, so it is in fact O(k⁵).",
+    )
+
+
+def _eq41_residuals(y: Array, grid: Array, delta: Array) -> list[float]:
+    """Max |∂θ/∂p − (kβ + k³δ)| per k."""
+    m = len(K_SWEEP)
+    return [
+        np.max(np.abs(y[2 * m + j] - (k * _beta(grid) + k**3 * delta)))
+        for j, k in enumerate(K_SWEEP)
+    ]
+
+
+def _eq41_row(ref: Reference) -> FormulaRow:
+    grid, y, _ = _finite_solution(ref)
     found = _delta_found(grid, ref)
     delta_text = _trig_text(found)
     delta_fixed = sum(c * _TRIG_BASIS[n](grid) for n, c in found.items()) / 64
-    res41_fixed = [
-        np.max(np.abs(y[2 * m + j] - (k * beta + k**3 * delta_fixed)))
-        for j, k in enumerate(K_SWEEP)
-    ]
-    fv, fo, _ = judge(Study(K_PARAM, K_SWEEP, tuple(res41_fixed), 4, ref.error_bound))
-    rows.append(
-        _row(
-            "eq41_terms_in_p",
-            "(41)",
-            "∂θ/∂p at p = 0: (k/2)(u² sin u − 3u cos u + 3 sin u) + (k³/32)(−4u³ cos u "
-            "+ 11u² sin u − u cos u − u² sin 3u − 3u cos 3u + 4 sin u)",
-            Study(K_PARAM, K_SWEEP, tuple(res41), 4, ref.error_bound),
-            ref,
-            recomputed=f"(k/2)(u² sin u − 3u cos u + 3 sin u) + (k³/64)({delta_text})",
-            note="The terms of (41) in p are its first p-derivative; the reference is the exact "
-            "variational equation of (32) at p = 0 (Lecornu's (39) along the exact (33) "
-            "solution), max over 0 ≤ u ≤ 2π. The term in pk is right, the term in pk³ is "
-            "not: 64δ found numerically (k³ coefficient of ∂θ/∂p, Richardson-extrapolated, "
-            "fitted on u^j sin u, u^j cos u, u^j sin 3u, u^j cos 3u, rounded to integers): "
-            f"{delta_text}; with it the residual is O(k^{fo:.2f}) ({fv}). The slip is the "
-            "sign of the last term of 2β cos²u: (−3u cos u)cos²u = −(3u/4)(cos 3u + 3 cos u), "
-            "printed +; the right side of δ'' + δ then has −(31/8)u cos u and −(9/8)u cos 3u "
-            "instead of +(5/8) and +(3/8).",
-        )
+    fv, fo, _ = judge(_k_study(_eq41_residuals(y, grid, delta_fixed), 4, ref))
+    return _row(
+        "eq41_terms_in_p",
+        "(41)",
+        "∂θ/∂p at p = 0: (k/2)(u² sin u − 3u cos u + 3 sin u) + (k³/32)(−4u³ cos u "
+        "+ 11u² sin u − u cos u − u² sin 3u − 3u cos 3u + 4 sin u)",
+        _k_study(_eq41_residuals(y, grid, _delta_printed(grid)), 4, ref),
+        ref,
+        recomputed=f"(k/2)(u² sin u − 3u cos u + 3 sin u) + (k³/64)({delta_text})",
+        note="The terms of (41) in p are its first p-derivative; the reference is the exact "
+        "variational equation of (32) at p = 0 (Lecornu's (39) along the exact (33) "
+        "solution), max over 0 ≤ u ≤ 2π. The term in pk is right, the term in pk³ is "
+        "not: 64δ found numerically (k³ coefficient of ∂θ/∂p, Richardson-extrapolated, "
+        "fitted on u^j sin u, u^j cos u, u^j sin 3u, u^j cos 3u, rounded to integers): "
+        f"{delta_text}; with it the residual is O(k^{fo:.2f}) ({fv}). The slip is the "
+        "sign of the last term of 2β cos²u: (−3u cos u)cos²u = −(3u/4)(cos 3u + 3 cos u), "
+        "printed +; the right side of δ'' + δ then has −(31/8)u cos u and −(9/8)u cos 3u "
+        "instead of +(5/8) and +(3/8).",
     )
-    # (42): T = time from the elongation at t = 0 to the vertical; ∂T/∂p = −ε(K)/θ'(K).
-    quarter = ellipk(ks**2)
+
+
+def _quarter_period_terms(ref: Reference) -> tuple[Array, Array]:
+    """(K(k), ∂T/∂p) per k: T from the elongation at t = 0 to the vertical; ∂T/∂p = −ε(K)/θ'(K)."""
+    from scipy.special import ellipk
+
+    _, _, sol = _finite_solution(ref)
+    m = len(K_SWEEP)
+    quarter = ellipk(np.array(K_SWEEP) ** 2)
     at_k = [sol(t) for t in quarter]
-    t_p = np.array([-at_k[j][2 * m + j] / at_k[j][m + j] for j in range(m)])
+    return quarter, np.array([-at_k[j][2 * m + j] / at_k[j][m + j] for j in range(m)])
+
+
+def _eq42_row(ref: Reference, t_p: Array, quarter: Array, c_k2: float, text: str) -> FormulaRow:
+    ks = np.array(K_SWEEP)
     printed_b = (PI**2 / 4 + 3) / 4 + (2 * PI**2 + 1) / 16 * ks**2
-    c_k2 = (2 * PI**2 + 1) / 16 + leading_coefficient(K_SWEEP, tuple(t_p - printed_b), 2, 2)
-    c_k2_text = identify_combination(c_k2, [(PI**2, "π²"), (1.0, "")]) or f"{c_k2:.6f}"
-    fixed_b = (PI**2 / 4 + 3) / 4 + c_k2 * ks**2
-    fv, fo, _ = judge(Study(K_PARAM, K_SWEEP, tuple(t_p - fixed_b), 4, ref.error_bound))
+    fv, fo, _ = judge(_k_study(t_p - ((PI**2 / 4 + 3) / 4 + c_k2 * ks**2), 4, ref))
     p0_res = quarter - PI / 2 * (1 + ks**2 / 4)
     p0_order = np.polyfit(np.log(ks), np.log(np.abs(p0_res)), 1)[0]
-    rows.append(
-        _row(
-            "eq42_terms_in_b",
-            "(42)",
-            "T = (π/2)√(a/g)(1 + k²/4) + (b/4g)(π²/4 + 3) + (bk²/16g)(2π² + 1)",
-            Study(K_PARAM, K_SWEEP, tuple(t_p - printed_b), 4, ref.error_bound),
-            ref,
-            recomputed=f"T = (π/2)√(a/g)(1 + k²/4) + (b/4g)(π²/4 + 3) + {c_k2_text}·bk²/g",
-            note=f"The coefficient of bk²/g is {c_k2:.6f} = {c_k2_text} (fitted), not "
-            f"(2π² + 1)/16 = {(2 * PI**2 + 1) / 16:.6f}; with it the residual is "
-            f"O(k^{fo:.2f}) ({fv}). The error comes from the pk³ term of (41) (see that row). "
-            "Coefficient of b/g (i.e. ∂T/∂p in units of √(a/g)) of the time from the "
-            "elongation at t = 0 to the next vertical passage, from the variational equation "
-            "of (32): ∂T/∂p = −ε(K)/θ'(K), K = K(k) the exact quarter period. The terms in "
-            f"b⁰ are the classical K(k) = (π/2)(1 + k²/4 + …): residual O(k^{p0_order:.2f}).",
-        )
+    return _row(
+        "eq42_terms_in_b",
+        "(42)",
+        "T = (π/2)√(a/g)(1 + k²/4) + (b/4g)(π²/4 + 3) + (bk²/16g)(2π² + 1)",
+        _k_study(t_p - printed_b, 4, ref),
+        ref,
+        recomputed=f"T = (π/2)√(a/g)(1 + k²/4) + (b/4g)(π²/4 + 3) + {text}·bk²/g",
+        note=f"The coefficient of bk²/g is {c_k2:.6f} = {text} (fitted), not "
+        f"(2π² + 1)/16 = {(2 * PI**2 + 1) / 16:.6f}; with it the residual is "
+        f"O(k^{fo:.2f}) ({fv}). The error comes from the pk³ term of (41) (see that row). "
+        "Coefficient of b/g (i.e. ∂T/∂p in units of √(a/g)) of the time from the "
+        "elongation at t = 0 to the next vertical passage, from the variational equation "
+        "of (32): ∂T/∂p = −ε(K)/θ'(K), K = K(k) the exact quarter period. The terms in "
+        f"b⁰ are the classical K(k) = (π/2)(1 + k²/4 + …): residual O(k^{p0_order:.2f}).",
     )
-    theta0 = 2 * np.arcsin(ks)
+
+
+def _eq42_prime_row(ref: Reference, t_p: Array, text: str) -> FormulaRow:
+    theta0 = 2 * np.arcsin(np.array(K_SWEEP))
     printed_b_theta = (PI**2 / 4 + 3) / 4 + (2 * PI**2 + 1) / 64 * theta0**2
-    rows.append(
-        _row(
-            "eq42prime_terms_in_b",
-            "(42')",
-            "T = (π/2)√(a/g)(1 + θ0²/16) + (b/4g)(π²/4 + 3) + (bθ0²/64g)(2π² + 1)",
-            Study(
-                "θ0 = 2 arcsin k = 0.40 … 0.10",
-                tuple(float(t) for t in theta0),
-                tuple(t_p - printed_b_theta),
-                4,
-                ref.error_bound,
-            ),
-            ref,
-            recomputed=f"T = (π/2)√(a/g)(1 + θ0²/16) + (b/4g)(π²/4 + 3) + {c_k2_text}·bθ0²/(4g)",
-            note="As (42) with k replaced by θ0/2 (the difference is O(θ0⁴), so the claimed "
-            "order is unchanged); it inherits the wrong coefficient of (42).",
-        )
+    return _row(
+        "eq42prime_terms_in_b",
+        "(42')",
+        "T = (π/2)√(a/g)(1 + θ0²/16) + (b/4g)(π²/4 + 3) + (bθ0²/64g)(2π² + 1)",
+        Study(
+            "θ0 = 2 arcsin k = 0.40 … 0.10",
+            tuple(float(t) for t in theta0),
+            tuple(t_p - printed_b_theta),
+            4,
+            ref.error_bound,
+        ),
+        ref,
+        recomputed=f"T = (π/2)√(a/g)(1 + θ0²/16) + (b/4g)(π²/4 + 3) + {text}·bθ0²/(4g)",
+        note="As (42) with k replaced by θ0/2 (the difference is O(θ0⁴), so the claimed "
+        "order is unchanged); it inherits the wrong coefficient of (42).",
     )
-    return rows
+
+
+def _eq42_rows(ref: Reference) -> list[FormulaRow]:
+    """(42) and (42'): the terms in b of the time from an elongation to the vertical."""
+    quarter, t_p = _quarter_period_terms(ref)
+    ks = np.array(K_SWEEP)
+    printed_b = (PI**2 / 4 + 3) / 4 + (2 * PI**2 + 1) / 16 * ks**2
+    c_k2 = (2 * PI**2 + 1) / 16 + leading_coefficient(K_SWEEP, tuple(t_p - printed_b), 2, 2)
+    text = identify_combination(c_k2, [(PI**2, "π²"), (1.0, "")]) or f"{c_k2:.6f}"
+    return [_eq42_row(ref, t_p, quarter, c_k2, text), _eq42_prime_row(ref, t_p, text)]
+
+
+def finite_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+    """(38), the terms in p of (41), and the terms in b of (42) and (42')."""
+    return [_eq38_row(ref), _eq41_row(ref), *_eq42_rows(ref)]
 
 
 def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
@@ -677,10 +777,8 @@ def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     ]
 
 
-def figures(outdir, rows: list[FormulaRow] | None = None) -> list:
+def figures(outdir: str | Path, rows: list[FormulaRow] | None = None) -> list[Path]:
     """One PNG: residual against parameter for every Lecornu formula (log-log)."""
-    from pathlib import Path
-
     path = Path(outdir) / "formulas_lecornu.png"
     plot_studies(path, rows if rows is not None else formula_checks(), "Lecornu: derived formulas")
     return [path]
