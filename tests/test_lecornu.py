@@ -262,13 +262,15 @@ def test_period_b2_coefficient_3pi_over_32_holds():
     assert model.period_b2_coefficient_exact() == pytest.approx(3 * math.pi / 32, abs=1e-5)
 
 
-def test_extrapolation_uses_the_given_ps():
-    # a quadratic through unequally spaced p is extrapolated exactly (was: p, p/2, p/4 assumed)
-    ps = (0.003, 0.002, 0.0005)
-    values = [1.5 - 2.0 * p + 30.0 * p * p for p in ps]
-    assert model.extrapolate_to_zero(values, ps) == pytest.approx(1.5, rel=1e-12)
-    with pytest.raises(PendcliError, match="distinct"):
-        model.extrapolate_to_zero([1.0, 2.0], (0.1, 0.1))
+def test_extrapolation_to_b_zero_uses_the_given_ps():
+    # any three small p give the same limit (the old Richardson step assumed p, p/2, p/4)
+    half = (math.pi**2 - 12) / 16
+    assert model.half_oscillation_coefficient_exact((0.003, 0.0015, 0.001)) == pytest.approx(
+        half, abs=1e-6
+    )
+    assert model.period_b2_coefficient_exact((0.005, 0.003, 0.001)) == pytest.approx(
+        3 * math.pi / 32, abs=1e-5
+    )
 
 
 def test_time_slip_is_not_explained_by_his_own_lengths():

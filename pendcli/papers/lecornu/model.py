@@ -25,6 +25,7 @@ from numpy.typing import NDArray
 
 from pendcli.core.checks import real_in_range
 from pendcli.core.errors import PendcliError
+from pendcli.core.formula_engine import richardson
 from pendcli.core.numbers import PrintedNumber
 from pendcli.core.tables import load_paper_table, paper_constant
 from pendcli.numerics.besselzeros import bessel_zeros
@@ -472,25 +473,10 @@ def lengthening_from_vertical(p: float) -> tuple[float, float]:
     return p * (ze - z0) * (ze + z0) / 4, p * (z1 - z0) * (z1 + z0) / 4
 
 
-def extrapolate_to_zero(values: Sequence[float], ps: Sequence[float]) -> float:
-    """f(0) of the polynomial through (p_i, f(p_i)) (Lagrange): Richardson extrapolation of
-    f(p) = f0 + f1 p + f2 p² + ... (for p, p/2, p/4 the weights are 1/3, -2, 8/3)."""
-    if len(values) != len(ps) or len(set(ps)) != len(ps):
-        raise PendcliError("extrapolation needs one value per distinct p")
-    total = 0.0
-    for i, (v, pi) in enumerate(zip(values, ps, strict=True)):
-        weight = 1.0
-        for j, pj in enumerate(ps):
-            if j != i:
-                weight *= pj / (pj - pi)
-        total += weight * v
-    return total
-
-
 def half_oscillation_coefficient_exact(ps: Sequence[float] = EXTRAPOLATION_PS) -> float:
     """c in T = (π/2)√(l/g) + c b/g (vertical passage to elongation), from the exact solution."""
     vals = [(lengthening_from_vertical(p)[0] - math.pi / 2) / p for p in ps]
-    return float(extrapolate_to_zero(vals, ps))
+    return float(richardson(vals, ps))
 
 
 def period_b2_coefficient_exact(ps: Sequence[float] = EXTRAPOLATION_PS) -> float:
@@ -499,7 +485,7 @@ def period_b2_coefficient_exact(ps: Sequence[float] = EXTRAPOLATION_PS) -> float
     for p in ps:
         tau = lengthening_from_vertical(p)[1]
         vals.append((tau - math.pi - math.pi**2 * p / 4) / p**2)
-    return float(extrapolate_to_zero(vals, ps))
+    return float(richardson(vals, ps))
 
 
 def mean_pendulum_coefficient_exact(ps: Sequence[float] = EXTRAPOLATION_PS) -> float:
@@ -508,4 +494,4 @@ def mean_pendulum_coefficient_exact(ps: Sequence[float] = EXTRAPOLATION_PS) -> f
     for p in ps:
         tau = lengthening_from_vertical(p)[1]
         vals.append((math.pi * math.sqrt(1 + p * tau / 2) - tau) / p**2)
-    return float(extrapolate_to_zero(vals, ps))
+    return float(richardson(vals, ps))
