@@ -1,15 +1,24 @@
-"""Charbonnier's I_n: the printed table and I_n(x), checked against mpmath (independent)."""
+"""Charbonnier's I_n: the printed table, I_n(x), the CLI rows and the figure.
+
+Every expected value comes from a method the code does not use: mpmath's beta function and
+quadrature at 40 digits, Wallis' binomial forms of I_n(π) in exact rationals, Bernoulli
+numbers from mpmath, the log-gamma function of mpmath.
+"""
+
+from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import mpmath
+import numpy as np
 import pytest
 
 from pendcli.core.claims import evaluate_paper
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table
 from pendcli.papers import formula_checks
-from pendcli.papers.charbonnier import claims as charbonnier
+from pendcli.papers.charbonnier import claims, explore, figures, model
 
 CLAIMS = load_paper_table("charbonnier").claims
 
@@ -37,6 +46,19 @@ def mp_beta_pi(n: int) -> mpmath.mpf:
         return mpmath.beta(mpmath.mpf(1) / 2, mpmath.mpf(n + 2) / 2)
 
 
+def wallis(n: int) -> tuple[Fraction, int]:
+    """I_n(π) = q·π^p from Wallis' binomial forms (not Charbonnier's recurrence or products):
+    n = 2m: 2·4^m/((2m+1)·C(2m, m)); n = 2m - 1: π·C(2m, m)/4^m."""
+    if n % 2 == 0:
+        m = n // 2
+        return Fraction(2 * 4**m, (2 * m + 1) * math.comb(2 * m, m)), 0
+    m = (n + 1) // 2
+    return Fraction(math.comb(2 * m, m), 4**m), 1
+
+
+# ----------------------------------------------------------------------------- the claims
+
+
 @pytest.mark.parametrize("claim", CLAIMS, ids=[c.id for c in CLAIMS])
 def test_printed_entry_equals_independent_quadrature(claim):
     n = int(claim.id.rsplit(".n", 1)[1])
@@ -47,10 +69,83 @@ def test_printed_entry_equals_independent_quadrature(claim):
     assert float(abs(rows[claim.id].recomputed - reference) / reference) < 3e-16
 
 
+def test_recompute_covers_exactly_the_printed_claims_with_the_exact_value():
+    recomputed = claims.recompute()
+    assert set(recomputed) == {c.id for c in CLAIMS}
+    # n = 3: 3π/8 (Wallis: π·C(4,2)/16 = 6π/16)
+    assert recomputed["charbonnier.I_pi.n3"].note == "Exact value 3π/8."
+    assert recomputed["charbonnier.I_pi.n4"].note == "Exact value 16/15."
+
+
+# ----------------------------------------------------------------------------- I_n(π)
+
+
 @pytest.mark.parametrize("n", [-1, 0, 1, 2, 7, 58, 59, 60, 61, 150, 1001, 10**5, 10**9, 10**12])
 def test_integral_pi_against_mpmath_beta(n):
     ref = mp_beta_pi(n)
-    assert float(abs(charbonnier.integral_pi(n) - ref) / ref) < 4 * 2.3e-16
+    assert float(abs(model.integral_pi(n) - ref) / ref) < 4 * 2.3e-16
+
+
+def test_exact_rationals_equal_wallis():
+    """The recurrence (cached and uncached) and the printed products against Wallis."""
+    assert model.integral_pi_rational(-1) == (Fraction(1), 1)
+    for n in range(0, 400):
+        expected = wallis(n)
+        assert model.integral_pi_rational(n) == expected, n
+        assert model.integral_pi_exact(n) == expected, n
+        assert model.printed_closed_form(n) == expected, n
+
+
+def test_integral_pi_rational_is_uncached_and_exact_cached():
+    model.integral_pi_exact.cache_clear()
+    model.integral_pi_exact(301)
+    model.integral_pi_exact(301)
+    assert model.integral_pi_exact.cache_info().hits == 1
+    assert not hasattr(model.integral_pi_rational, "cache_info")
+    with pytest.raises(PendcliError, match="limited to n <= 100000"):
+        model.integral_pi_rational(model.MAX_EXACT_N + 1)
+
+
+def test_bernoulli_numbers_against_mpmath():
+    ours = model.bernoulli(30)
+    for k, value in enumerate(ours):
+        p, q = mpmath.bernfrac(k)
+        assert value == Fraction(int(p), int(q)), k
+
+
+@pytest.mark.parametrize("m", [30.5, 100.0, 5000.0])
+def test_log_gamma_ratio_series_against_mpmath_loggamma(m):
+    """Σ c_k m^-k = log Γ(m+½) - log Γ(m) - ½ log m, within the first omitted term."""
+    coeffs = model.log_gamma_ratio_coefficients()
+    series = sum(c * m ** -(2 * i + 1) for i, c in enumerate(coeffs))
+    with mpmath.workdps(50):
+        mm = mpmath.mpf(m)
+        exact = mpmath.loggamma(mm + 0.5) - mpmath.loggamma(mm) - mpmath.log(mm) / 2
+    assert float(abs(series - exact)) <= 4e-16 * abs(float(exact)) + 1e-300
+    assert coeffs[0] == pytest.approx(-1 / 8, rel=1e-15)  # Γ(m+½)/Γ(m) = √m (1 - 1/(8m) ...)
+
+
+@pytest.fixture(scope="module")
+def formula_rows():
+    return formula_checks("charbonnier")
+
+
+def test_closed_form_formula_rows_hold(formula_rows):
+    rows = {r.id: r for r in formula_rows}
+    assert rows["charbonnier.I_pi.closed_form_even"].verdict == "holds"
+    assert rows["charbonnier.I_pi.closed_form_odd"].verdict == "holds"
+
+
+@pytest.mark.parametrize(
+    ("q", "p", "text"),
+    [(Fraction(1), 1, "π"), (Fraction(2), 0, "2"), (Fraction(1, 2), 1, "π/2"),
+     (Fraction(3, 8), 1, "3π/8"), (Fraction(16, 15), 0, "16/15")],
+)  # fmt: skip
+def test_exact_text(q, p, text):
+    assert model.exact_text(q, p) == text
+
+
+# ----------------------------------------------------------------------------- I_n(x)
 
 
 @pytest.mark.parametrize("n", [-1, 0, 1, 2, 3, 6, 11, 40])
@@ -59,30 +154,29 @@ def test_integral_pi_against_mpmath_beta(n):
 )
 def test_integral_general_x_against_quadrature(n, x):
     ref = mp_integral(n, x) if x >= 0 else (-1) ** n * mp_integral(n, -x)
-    got = charbonnier.integral(n, x)
+    got = model.integral(n, x)
     assert float(abs(got - ref)) <= 1e-13 * float(abs(ref)) + 1e-300
-
-
-def test_exact_recurrence_matches_printed_closed_forms():
-    for n in range(-1, 400):
-        assert charbonnier.printed_closed_form(n) == charbonnier.integral_pi_exact(n)
-
-
-def test_closed_form_formula_rows_hold():
-    rows = {r.id: r for r in formula_checks("charbonnier")}
-    assert rows["charbonnier.I_pi.closed_form_even"].verdict == "holds"
-    assert rows["charbonnier.I_pi.closed_form_odd"].verdict == "holds"
 
 
 def test_recurrence_in_floating_point_is_exact_at_pi_but_not_at_small_x():
     for n in range(0, 30):
-        assert charbonnier.integral_recurrence(n, math.pi) == pytest.approx(
+        assert model.integral_recurrence(n, math.pi) == pytest.approx(
             float(mp_beta_pi(n)), rel=1e-14
         )
     # At x = 0.01 the printed recurrence subtracts nearly equal terms: digits vanish.
     ref = mp_integral(12, 0.01)
-    rel = abs(charbonnier.integral_recurrence(12, 0.01) - ref) / ref
+    rel = abs(model.integral_recurrence(12, 0.01) - ref) / ref
     assert rel > 1e-3
+
+
+@pytest.mark.parametrize(
+    ("n", "x", "branch"),
+    [(-1, 2.0, "I_(-1)(x) = x"), (0, 2.0, "I_0(x) = 2 sin²(x/2)"),
+     (5, math.pi, "I_n(π): exact rational"), (60, math.pi, "asymptotic series"),
+     (5, 2.0, "incomplete beta"), (5, 10.0, "exact reduction to [0, π], then incomplete")],
+)  # fmt: skip
+def test_integral_method_names_the_branch(n, x, branch):
+    assert branch in model.integral_method(n, x)
 
 
 @pytest.mark.parametrize(
@@ -90,5 +184,142 @@ def test_recurrence_in_floating_point_is_exact_at_pi_but_not_at_small_x():
 )
 def test_bad_inputs_raise_clear_errors(n, x):
     with pytest.raises(PendcliError) as err:
-        charbonnier.integral(n, x)
+        model.integral(n, x)
     assert "range" in str(err.value) or "must be" in str(err.value)
+    assert "\n" not in str(err.value)
+
+
+# ----------------------------------------------------------------------------- CLI rows
+
+
+def test_table_rows_against_independent_values():
+    rows = explore.table_rows(8)
+    assert [r["n"] for r in rows] == list(range(-1, 9))
+    printed = {int(c.id.rsplit(".n", 1)[1]): c.published for c in CLAIMS}
+    for r in rows:
+        n = r["n"]
+        q, p = wallis(n) if n >= 0 else (Fraction(1), 1)
+        assert r["exact"] == model.exact_text(q, p)
+        assert r["published"] == printed.get(n, "")
+        assert r["closed_form_matches_recurrence"] is True
+        ref = float(mp_beta_pi(n))
+        assert r["beta"] == pytest.approx(ref, rel=5e-16)
+        assert r["recurrence_float"] == pytest.approx(ref, rel=1e-14)
+
+
+@pytest.mark.parametrize("n_max", [-2, 10_001, True, 2.0])
+def test_table_rows_refuses_bad_n_max(n_max):
+    with pytest.raises(PendcliError, match="--n-max") as err:
+        explore.table_rows(n_max)
+    assert "\n" not in str(err.value)
+
+
+def test_integral_row_value_and_exact():
+    row = explore.integral_row(5, math.pi)
+    assert row["value"] == pytest.approx(float(mp_beta_pi(5)), rel=3e-16)
+    assert row["exact"] == "5π/16"  # π·1·3·5/(2·4·6), Wallis: π·C(6,3)/64 = 20π/64
+    row = explore.integral_row(5, 1.0)
+    assert "exact" not in row
+    assert row["value"] == pytest.approx(float(mp_integral(5, 1.0)), rel=1e-15)
+    assert "exact" not in explore.integral_row(model.MAX_EXACT_N + 1, math.pi)
+
+
+# ----------------------------------------------------------------------------- the figure
+
+
+@pytest.fixture(scope="module")
+def table_axes():
+    from matplotlib.figure import Figure
+
+    ax = Figure().subplots()
+    figures.draw_table(ax, n_max=60)
+    return ax
+
+
+def test_figure_curve_is_i_n_pi(table_axes):
+    curve, _points, _asymptote = table_axes.get_lines()
+    xs, ys = curve.get_xdata(), curve.get_ydata()
+    assert list(xs) == [n + 2 for n in range(-1, 61)]
+    for x, y in zip(xs, ys, strict=True):
+        assert y == pytest.approx(float(mp_beta_pi(int(x) - 2)), rel=1e-15)
+
+
+def test_figure_marks_every_printed_entry(table_axes):
+    _curve, points, _asymptote = table_axes.get_lines()
+    xs, ys = points.get_xdata(), points.get_ydata()
+    assert sorted(int(x) - 2 for x in xs) == list(range(-1, 6))  # n = -1..5, as printed
+    for x, y in zip(xs, ys, strict=True):
+        assert y == pytest.approx(float(mp_beta_pi(int(x) - 2)), rel=1e-15)
+    assert "printed" in points.get_label()
+
+
+def test_figure_asymptote_approaches_from_below(table_axes):
+    """√(2π/(n+2)) undershoots I_n(π) by 1/(4(n+2)) + O(n^-2) (Γ(m+½)/Γ(m) ~ √m(1 - 1/(8m)))."""
+    _curve, _points, asymptote = table_axes.get_lines()
+    for x, y in zip(asymptote.get_xdata(), asymptote.get_ydata(), strict=True):
+        if x >= 10:
+            gap = 1 - y / float(mp_beta_pi(int(x) - 2))
+            assert 0 < gap < 1.1 / (4 * x)
+
+
+def test_figure_axes_and_labels(table_axes):
+    assert table_axes.get_xscale() == "log" and table_axes.get_yscale() == "log"
+    assert table_axes.get_xlabel() == "n + 2"
+    assert "I_n(π)" in table_axes.get_ylabel()
+    assert [t.get_text() for t in table_axes.get_legend().get_texts()] == [
+        "recomputed I_n(π)",
+        "printed (Charbonnier 1908, no. 15)",
+        "asymptote √(2π/(n+2))",
+    ]
+
+
+def test_report_figure_shows_the_red_printed_marks(tmp_path):
+    """The written PNG: red pixels (the printed marks) and blue ones (the curve)."""
+    import matplotlib.image
+
+    (path,) = figures.figures(tmp_path)
+    assert path.name == "charbonnier-In-pi.png"
+    rgb = matplotlib.image.imread(path)[..., :3]
+
+    def near(color: tuple[int, int, int]) -> int:
+        return int(np.sum(np.all(np.abs(rgb - np.array(color) / 255) < 0.08, axis=-1)))
+
+    assert near((214, 39, 40)) > 150  # tab:red circles: 7 marks + the legend's (~40 px each)
+    assert near((31, 119, 180)) > 200  # tab:blue curve
+
+
+def test_formulas_figure_colours_each_panel_by_its_verdict(tmp_path, formula_rows):
+    """One panel per δ-sweep row, green if it holds, red if not: the share of red pixels
+    follows the share of failing rows (two: (9) with E_c, on two perturbations)."""
+    import matplotlib.image
+
+    from pendcli.papers.charbonnier import formulas
+
+    (path,) = formulas.figures(tmp_path, formula_rows)
+    rgb = matplotlib.image.imread(path)[..., :3]
+
+    def near(color: tuple[int, int, int]) -> int:
+        return int(np.sum(np.all(np.abs(rgb - np.array(color) / 255) < 0.08, axis=-1)))
+
+    drawn = [r for r in formula_rows if r.claimed_order is not None and r.residuals]
+    failing = sum(r.verdict != "holds" for r in drawn)
+    assert failing == 2  # eq9.linear_damping, eq9.periodic_force
+    red, green = near((214, 39, 40)), near((44, 160, 44))
+    share = red / (red + green)
+    assert 0.5 * failing / len(drawn) < share < 2 * failing / len(drawn)
+
+
+# ----------------------------------------------------------------------------- the checks' pendulum
+
+
+def test_check_pendulum_is_read_from_the_table():
+    from pendcli.papers.charbonnier.perturbation import check_pendulum
+
+    table = load_paper_table("charbonnier")
+    p = check_pendulum()
+    for name in ("g", "l0", "alpha"):
+        (constant,) = [c for c in table.constants if c.name == name]
+        assert constant.source.startswith("assumption")  # Charbonnier prints none of them
+        assert getattr(p, name) == constant.value
+    assert p.k == pytest.approx(math.sqrt(9.81 / 1.5), rel=1e-15)
+    assert p.half * p.k == pytest.approx(math.pi, rel=1e-15)

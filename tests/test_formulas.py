@@ -16,6 +16,7 @@ import pytest
 
 from pendcli.core import formula_engine as engine
 from pendcli.papers.charbonnier import formulas as fch
+from pendcli.papers.charbonnier import perturbation as cpt
 from pendcli.papers.lecornu import formulas as fle
 from pendcli.papers.tisserand import formulas as fti
 
@@ -418,27 +419,29 @@ def test_tisserand_sin4_coefficient_is_one_over_4096(rows):
 # ----------------------------------------------------------------------------- Charbonnier
 def test_charbonnier_damped_oscillator_closed_form():
     """Linear damping εθ': the half-swing ends at π/ω with θ = α exp(−επ/(2ω)) exactly."""
-    text, phi, scale = fch._perturbations()["linear_damping"]
+    p = cpt.check_pendulum()
+    text, phi, scale = cpt.perturbations(p)["linear_damping"]
     eps = np.array(fch.DELTA_SWEEP) * scale
-    ev, _ = fch._measure(phi, eps, engine.DEFAULT_REFERENCE)
-    omega = np.sqrt(fch.K**2 - eps**2 / 4)
+    ev, _ = cpt.measure(p, phi, eps, engine.DEFAULT_REFERENCE)
+    omega = np.sqrt(p.k**2 - eps**2 / 4)
     np.testing.assert_allclose(ev["t_end"], PI / omega, rtol=0, atol=1e-10)
     np.testing.assert_allclose(
-        ev["theta_end"], fch.ALPHA * np.exp(-eps * PI / (2 * omega)), rtol=0, atol=1e-11
+        ev["theta_end"], p.alpha * np.exp(-eps * PI / (2 * omega)), rtol=0, atol=1e-11
     )
     assert "linear" in text
 
 
 def test_charbonnier_e_integrals_closed_form():
     """E_s, E_c of the monomial resistance by quadrature against B_n k^(n−1)(αl0)^n I_n."""
-    from pendcli.papers.charbonnier.claims import integral
+    from pendcli.papers.charbonnier.model import integral
 
+    p = cpt.check_pendulum()
     for n in range(6):
-        phi = lambda th, om, t, n=n: (fch.L0 * om) ** n  # noqa: E731
-        t = np.array([fch.HALF / 3, fch.HALF / 2, fch.HALF])
-        es, ec = fch.e_integrals(phi, t)
-        scale = fch.K ** (n - 1) * (fch.ALPHA * fch.L0) ** n
-        for j, x in enumerate(fch.K * t):
+        phi = lambda th, om, t, n=n: (p.l0 * om) ** n  # noqa: E731
+        t = np.array([p.half / 3, p.half / 2, p.half])
+        es, ec = cpt.e_integrals(p, phi, t)
+        scale = p.k ** (n - 1) * (p.alpha * p.l0) ** n
+        for j, x in enumerate(p.k * t):
             assert es[j] == pytest.approx(scale * integral(n, float(x)), rel=1e-13, abs=1e-15)
             assert ec[j] == pytest.approx(scale * math.sin(x) ** (n + 1) / (n + 1), abs=1e-13)
 
@@ -453,15 +456,16 @@ def test_charbonnier_reference_second_tolerance():
 
 def test_charbonnier_friction_count_exact_by_simulation():
     """The exact count rule against stepping the half-swings one by one."""
+    g, alpha = cpt.check_pendulum().g, cpt.check_pendulum().alpha
     for p_nominal in (3.3, 7.9, 12.5):
-        b0 = fch.ALPHA * fch.G / (2 * p_nominal)
-        amp, count = fch.ALPHA, 0
-        while amp > b0 / fch.G:  # the pendulum moves again from this extremity
-            amp = amp - 2 * b0 / fch.G
+        b0 = alpha * g / (2 * p_nominal)
+        amp, count = alpha, 0
+        while amp > b0 / g:  # the pendulum moves again from this extremity
+            amp = amp - 2 * b0 / g
             count += 1
             if amp < 0:
                 break
-        assert count == max(0, math.ceil((fch.ALPHA - b0 / fch.G) / (2 * b0 / fch.G)))
+        assert count == max(0, math.ceil((alpha - b0 / g) / (2 * b0 / g)))
 
 
 # ----------------------------------------------------------------------------- CLI

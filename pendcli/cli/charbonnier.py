@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, emit
 from pendcli.render import OutputFormat
+
+if TYPE_CHECKING:
+    from pendcli.render import Column
 
 app = typer.Typer(
     help="Charbonnier 1908: perturbations, the table of I_n(π).",
@@ -28,17 +31,37 @@ def table(
     """The printed table of I_n(π), n = 0..5, and its closed forms, against recomputation."""
     from pendcli.core.claims import evaluate_paper
     from pendcli.core.plotting import validate_plot_path
-    from pendcli.papers.charbonnier import claims as charbonnier
+    from pendcli.papers.charbonnier.explore import table_rows
+    from pendcli.papers.charbonnier.figures import plot_table
     from pendcli.papers.charbonnier.formulas import closed_form_rows
-    from pendcli.render import Column, fmt_float
-    from pendcli.render.views import claim_columns
+    from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
     plot = validate_plot_path(plot)
-    rows = charbonnier.table_rows(n_max)
+    rows = table_rows(n_max)
     claims = [r.as_dict() for r in evaluate_paper("charbonnier")]
     # only the closed forms belong to the table; the ODE checks are `pendcli formulas`
     formulas = [f.as_dict() for f in closed_form_rows()]
-    columns = (
+    emit(
+        fmt,
+        [
+            (
+                "Charbonnier no. 15: printed I_n(π) against recomputation",
+                claims,
+                claim_columns(claims),
+            ),
+            (f"I_n(π) for n = -1..{n_max}", rows, _table_columns()),
+            ("The printed closed forms", formulas, FORMULA_COLUMNS),
+        ],
+        {"claims": claims, "formulas": formulas, "table": rows},
+    )
+    if plot is not None:
+        plot_table(plot, n_max=max(n_max, 5))
+
+
+def _table_columns() -> tuple[Column, ...]:
+    from pendcli.render import Column, fmt_float
+
+    return (
         Column("n", "n", justify="right"),
         Column("published", "printed"),
         Column("exact", "exact (recurrence, rationals)"),
@@ -55,23 +78,6 @@ def table(
         ),
         Column("beta", "B(1/2,(n+2)/2)", fmt=lambda r: fmt_float(r["beta"], 17), justify="right"),
     )
-    from pendcli.render.views import FORMULA_COLUMNS
-
-    emit(
-        fmt,
-        [
-            (
-                "Charbonnier no. 15: printed I_n(π) against recomputation",
-                claims,
-                claim_columns(claims),
-            ),
-            (f"I_n(π) for n = -1..{n_max}", rows, columns),
-            ("The printed closed forms", formulas, FORMULA_COLUMNS),
-        ],
-        {"claims": claims, "formulas": formulas, "table": rows},
-    )
-    if plot is not None:
-        charbonnier.plot_table(plot, n_max=max(n_max, 5))
 
 
 @app.command("integral", context_settings={"ignore_unknown_options": True})
@@ -97,21 +103,10 @@ def integral(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (default π)."""
-    import math
-
-    from pendcli.papers.charbonnier import claims as charbonnier
+    from pendcli.papers.charbonnier.explore import integral_row
     from pendcli.render import Column, fmt_float
 
-    if method is not None or tol is not None:
-        from pendcli import tradeoff
-
-        value, label = tradeoff.integral_with_choice(n, x, tol=tol, method=method)
-    else:
-        value, label = charbonnier.integral(n, x), charbonnier.integral_method(n, x)
-    row = {"n": n, "x": x, "value": value, "method": label}
-    if x == math.pi and -1 <= n <= 100_000:
-        q, p = charbonnier.integral_pi_exact(n)
-        row["exact"] = charbonnier.exact_text(q, p)
+    row = integral_row(n, x, tol=tol, method=method)
     columns = [
         Column("n", "n", justify="right"),
         Column("x", "x", fmt=lambda r: fmt_float(r["x"], 17), justify="right"),

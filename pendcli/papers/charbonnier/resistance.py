@@ -21,10 +21,12 @@ linear pendulum loses exactly 2 b_0/g) as long as the pendulum does not stick (�
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.papers.charbonnier.claims import integral_pi
+from pendcli.papers.charbonnier.model import integral_pi
 
 __all__ = [
     "SwingResult",
@@ -56,10 +58,11 @@ def _check_beta(beta: float, n: int) -> float:
     return beta
 
 
-def amplitude_loss_first_order(
-    b_n: float, n: int, alpha: float, length: float, g: float = 9.80665
-) -> float:
-    """Δα = -(b_n/g) (α g T/π)^n I_n(π), T = π √(l0/g) (no. 16), in radians."""
+def amplitude_loss_first_order(b_n: float, n: int, alpha: float, length: float, g: float) -> float:
+    """Δα = -(b_n/g) (α g T/π)^n I_n(π), T = π √(l0/g) (no. 16), in radians.
+
+    Charbonnier prints no value of g: the caller gives it (SI units: b_n in m^(1-n) s^(n-2)).
+    """
     _check_order(n)
     half_period = math.pi * math.sqrt(length / g)
     return -(b_n / g) * (alpha * g * half_period / math.pi) ** n * integral_pi(n)
@@ -78,6 +81,16 @@ class SwingResult:
     evaluations: int  # right-hand-side evaluations of the ODE solver
 
 
+class _Elongation:
+    """solve_ivp's event: y' = 0 while y' decreases (the next elongation); it ends the run."""
+
+    terminal = True
+    direction = -1
+
+    def __call__(self, _tau: float, state: Sequence[float]) -> float:
+        return state[1]
+
+
 def relative_loss_ode(
     beta: float, n: int, rtol: float = 1e-10, method: str = "DOP853"
 ) -> SwingResult:
@@ -90,16 +103,11 @@ def relative_loss_ode(
         raise PendcliError(f"rtol = {rtol} is out of range; valid range is 1e-14 <= rtol <= 0.1")
     from scipy.integrate import solve_ivp
 
-    def rhs(_tau, state):
+    def rhs(_tau: float, state: Sequence[float]) -> list[float]:
         y, w = state
         drag = math.copysign(abs(w) ** n, w) if w != 0.0 else 0.0
         return [w, -y - beta * drag]
 
-    def elongation(_tau, state):
-        return state[1]
-
-    elongation.terminal = True
-    elongation.direction = -1
     sol = solve_ivp(
         rhs,
         (0.0, 60.0),
@@ -107,7 +115,7 @@ def relative_loss_ode(
         method=method,
         rtol=rtol,
         atol=rtol * 1e-3,
-        events=elongation,
+        events=_Elongation(),
     )
     if not sol.t_events[0].size:
         raise PendcliError(
@@ -119,7 +127,7 @@ def relative_loss_ode(
     )
 
 
-def relative_loss_exact(beta: float, n: int, digits: int = 30):
+def relative_loss_exact(beta: float, n: int, digits: int = 30) -> Any:
     """Closed forms, independent of any ODE solver, for n = 0, 1, 2 (an mpmath number).
 
     n = 0: y1 = 1 - 2β.  n = 1: damped oscillator, y1 = exp(-β π/(2 ω)), ω = √(1 - β²/4).
@@ -153,7 +161,7 @@ def relative_loss_exact(beta: float, n: int, digits: int = 30):
     raise PendcliError(f"no closed form for n = {n}; closed forms exist for n = 0, 1, 2")
 
 
-def first_order_limit(n: int, bound: float = 0.01, rtol: float = 1e-11) -> dict:
+def first_order_limit(n: int, bound: float = 0.01, rtol: float = 1e-11) -> dict[str, Any]:
     """The β where |formula - ODE|/|ODE| reaches ``bound``: secant steps in log β from 1e-3.
 
     The error of a first-order formula grows like β (the next term is O(β²)), so a few secant

@@ -1,0 +1,75 @@
+"""Charbonnier's figure: I_n(π) against n, the printed entries of no. 15 marked.
+
+:func:`draw_table` draws on a given matplotlib Axes (what the tests inspect);
+:func:`plot_table` writes it to a file; :func:`figures` is what the report draws.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from pendcli.core.tables import load_paper_table
+from pendcli.papers.charbonnier.model import integral_pi
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
+__all__ = ["MIN_N_MAX", "draw_table", "figures", "plot_table", "printed_points"]
+
+MIN_N_MAX = 40  # the curve always reaches n = 40, where the asymptote is visibly close
+
+
+def figures(outdir: str | Path) -> list[Path]:
+    """The report's Charbonnier figures: I_n(π) against n, printed entries marked."""
+    path = Path(outdir) / "charbonnier-In-pi.png"
+    plot_table(path, n_max=200)
+    return [path]
+
+
+def printed_points() -> list[tuple[int, float]]:
+    """(n, printed value) for every printed I_n(π) of the table (tables/published)."""
+    claims = load_paper_table("charbonnier").claims
+    return [
+        (int(c.id.rsplit("n", 1)[1]), c.number.value)
+        for c in claims
+        if c.id.startswith("charbonnier.I_pi.n")
+    ]
+
+
+def plot_table(path: str | Path, n_max: int = 5) -> None:
+    """Write :func:`draw_table` to ``path`` (.png, .svg or .pdf)."""
+    from pendcli.core.plotting import new_figure
+
+    with new_figure(path) as (_fig, ax):
+        draw_table(ax, n_max)
+
+
+def draw_table(ax: Axes, n_max: int = 5) -> None:
+    """I_n(π) against n + 2 on log-log axes, n = -1..max(n_max, 40), printed entries marked,
+    with the asymptote √(2π/(n+2))."""
+    ns = list(range(-1, max(n_max, MIN_N_MAX) + 1))
+    xs = [n + 2 for n in ns]
+    ax.plot(
+        xs, [integral_pi(n) for n in ns], "-", color="tab:blue", lw=1.2, label="recomputed I_n(π)"
+    )
+    printed = printed_points()
+    ax.plot(
+        [n + 2 for n, _ in printed],
+        [value for _, value in printed],
+        "o",
+        mfc="none",
+        color="tab:red",
+        ms=8,
+        label="printed (Charbonnier 1908, no. 15)",
+    )
+    asymptote = [math.sqrt(2 * math.pi / x) for x in xs]
+    ax.plot(xs, asymptote, ":", color="gray", label="asymptote √(2π/(n+2))")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("n + 2")
+    ax.set_ylabel("I_n(π) = ∫₀^π sin^(n+1) x dx")
+    ax.set_title("Charbonnier's I_n(π): printed entries and recomputation")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
