@@ -247,7 +247,7 @@ def _environment_section() -> list[str]:
 
 def _tradeoff_figures(tradeoff: ModuleType, folder: Path) -> list[Path]:
     """Measure every available family, write its table and the work-precision diagram."""
-    ready, _skipped = tradeoff.available_families()
+    ready = tradeoff.family_names()
     points = [p for name in ready for p in tradeoff.measure_family(name)]
     folder.mkdir(parents=True, exist_ok=True)
     written = []

@@ -65,7 +65,7 @@ def test_bench_runs_on_a_tiny_configuration(tmp_path, monkeypatch):
     monkeypatch.setattr(bench, "import_costs", lambda args, top=8: [("typer", 0.01)])
     from pendcli import tradeoff
 
-    monkeypatch.setattr(tradeoff, "available_families", lambda: (["planar_period"], {}))
+    monkeypatch.setattr(tradeoff, "family_names", lambda: ["planar_period"])
     text = bench.run(runs=1, quick=True, tables=True, root=tmp_path)
     assert (tmp_path / "tradeoff" / "planar_period.csv").exists()
     assert "pendcli --help" in text and "planar_period" in text and "nproc" in text

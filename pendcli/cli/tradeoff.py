@@ -2,13 +2,18 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, emit
 from pendcli.render import OutputFormat
+
+if TYPE_CHECKING:
+    from pendcli.render import Column
+    from pendcli.tradeoff import Point
 
 app = typer.Typer(
     help="Speed against accuracy: error achieved and time per evaluation, per method.",
@@ -23,8 +28,8 @@ def tradeoff(
     family: Annotated[
         str | None,
         typer.Argument(
-            help="One family (integral_pi, integral_x, planar_period, charbonnier_loss, "
-            "bessel_zeros, conical, ...); default: every family whose module is there."
+            help="One family, e.g. integral_pi, planar_period, bessel_zeros, conical (an "
+            "unknown name lists them all); default: every family of every paper."
         ),
     ] = None,
     fmt: FormatOption = OutputFormat.table,
@@ -41,90 +46,68 @@ def tradeoff(
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
     from pendcli import tradeoff as wp
-    from pendcli.cli.common import say
     from pendcli.core.plotting import validate_plot_path
-    from pendcli.render import Column, fmt_float
 
     plot = validate_plot_path(plot)
-    ready, skipped = wp.available_families()
-    if family is not None:
-        if family in skipped:
-            from pendcli.core.errors import PendcliError
-
-            raise PendcliError(f"family {family!r} is skipped: {skipped[family]}")
-        wp._family(family)  # one-line error for an unknown name
-        ready, skipped = [family], {}
-    for name, why in skipped.items():
-        say(f"tradeoff: skipping {name}: {why}")
-    points = []
-    with _progress(len(ready)) as report:
-        for name in ready:
-            points.extend(wp.measure_family(name, quick=quick, progress=report))
-            report(None)
+    names = wp.family_names() if family is None else [wp.family(family).name]
+    points = _measure(names, quick)
     rows = [p.as_dict() for p in points]
-    columns = (
-        Column("method", "method"),
-        Column("setting", "setting"),
-        Column("error", "worst rel. error", fmt=lambda r: _err(r), justify="right"),
-        Column(
-            "seconds", "s / evaluation", fmt=lambda r: fmt_float(r["seconds"], 3), justify="right"
-        ),
-        Column("evaluations", "f-evals", justify="right"),
-    )
     sections = [
-        (f"{name}: {wp.FAMILIES[name].title}", [r for r in rows if r["family"] == name], columns)
-        for name in ready
+        (f"{name}: {wp.family(name).title}", [r for r in rows if r["family"] == name], _columns())
+        for name in names
     ]
-    emit(fmt, sections, {"rows": rows, "skipped": skipped})
+    # "skipped" stays in the document (the JSON schema names it): every family is measured now.
+    emit(fmt, sections, {"rows": rows, "skipped": {}})
     if write_tables is not None:
-        for name in ready:
+        for name in names:
             wp.write_table([p for p in points if p.family == name], write_tables / f"{name}.csv")
     if plot is not None:
         wp.plot_tradeoff(points, plot)
 
 
-def _err(row: dict) -> str:
+def _measure(names: list[str], quick: bool) -> list[Point]:
+    """Every family in ``names``, with a rich progress bar on stderr when it is a terminal."""
+    import sys
+
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from pendcli import tradeoff as wp
+    from pendcli.core.console import console
+
+    points: list[Point] = []
+    with Progress(
+        TextColumn("{task.description}"),
+        BarColumn(),
+        TextColumn("{task.completed}/{task.total} families"),
+        TimeElapsedColumn(),
+        console=console(stderr=True),
+        transient=True,
+        disable=not sys.stderr.isatty(),
+    ) as bar:
+        task = bar.add_task("measuring", total=len(names))
+        for name in names:
+            points += wp.measure_family(
+                name, quick=quick, progress=lambda label: bar.update(task, description=label)
+            )
+            bar.advance(task)
+    return points
+
+
+def _columns() -> tuple[Column, ...]:
+    from pendcli.render import Column, fmt_float
+
+    return (
+        Column("method", "method"),
+        Column("setting", "setting"),
+        Column("error", "worst rel. error", fmt=_err, justify="right"),
+        Column(
+            "seconds", "s / evaluation", fmt=lambda r: fmt_float(r["seconds"], 3), justify="right"
+        ),
+        Column("evaluations", "f-evals", justify="right"),
+    )
+
+
+def _err(row: Mapping[str, Any]) -> str:
     if row["error"] is None:
-        return row["note"] or "failed"
+        return str(row["note"] or "failed")
     return f"{row['error']:.1e}"
-
-
-class _progress:
-    """A rich progress bar on stderr, only when stderr is a terminal."""
-
-    def __init__(self, families: int):
-        import sys
-
-        self.enabled = sys.stderr.isatty()
-        self.total = families
-
-    def __enter__(self):
-        if not self.enabled:
-            return lambda label: None
-        from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
-
-        from pendcli.core.console import console
-
-        self.bar = Progress(
-            TextColumn("{task.description}"),
-            BarColumn(),
-            TextColumn("{task.completed}/{task.total} families"),
-            TimeElapsedColumn(),
-            console=console(stderr=True),
-            transient=True,
-        )
-        self.bar.__enter__()
-        self.task = self.bar.add_task("measuring", total=self.total)
-
-        def report(label: str | None) -> None:
-            if label is None:  # a family is done
-                self.bar.advance(self.task)
-            else:
-                self.bar.update(self.task, description=label)
-
-        return report
-
-    def __exit__(self, *exc):
-        if self.enabled:
-            self.bar.__exit__(*exc)
-        return False

@@ -29,6 +29,7 @@ from pendcli.core.errors import PendcliError
 __all__ = [
     "G_STANDARD",
     "METHODS",
+    "agm_ellipk",
     "complementary_modulus",
     "elongation_times",
     "modulus_squared",
@@ -79,7 +80,7 @@ def modulus_squared(amplitude: float) -> tuple[float, float]:
     return k * k, kc * kc
 
 
-def _agm_ellipk(kc: float, iterations: int | None = None) -> tuple[float, int]:
+def agm_ellipk(kc: float, iterations: int | None = None) -> tuple[float, int]:
     """K from the arithmetic-geometric mean of 1 and k'; (K, iterations used)."""
     a, b = 1.0, kc
     used = 0
@@ -118,7 +119,7 @@ def period_ratio(
         return series_period_ratio(amplitude, order)
     m, m1 = modulus_squared(amplitude)
     if method == "agm":
-        k_value, _ = _agm_ellipk(complementary_modulus(amplitude))
+        k_value, _ = agm_ellipk(complementary_modulus(amplitude))
     elif method == "ellipkm1":
         from scipy.special import ellipkm1
 

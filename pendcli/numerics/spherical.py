@@ -46,7 +46,9 @@ Two independent methods:
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any, NoReturn
 
 import numpy as np
 
@@ -246,7 +248,7 @@ def _converged(new: ConicalMotion, old: ConicalMotion, rtol: float) -> bool:
     return all(abs(x - y) <= max(rtol * scale, floor) for x, y in coeffs)
 
 
-def _too_close_to_90(theta0: float):
+def _too_close_to_90(theta0: float) -> NoReturn:
     raise PendcliError(
         f"theta0 = {math.degrees(theta0):.10g}° is too close to 90° for the quadrature: the "
         f"integrand of (4) peaks like 1/cos θ0 (width cos θ0/sqrt(sin²θ0 - sin²θ1) < "
@@ -289,11 +291,9 @@ def _initial_state(theta0: float, theta1: float) -> list[float]:
     return [u0, 0.0, -c0, 0.0, u1 * math.sqrt(2.0 / (c0 + c1)), 0.0]
 
 
-def _ode(theta0: float, theta1: float, harmonics: int, rtol: float) -> ConicalMotion:
-    from scipy.integrate import solve_ivp
-
+def _check_ode(theta0: float, theta1: float) -> None:
+    """Refuse the motions whose ψ or φ' the integrated state cannot resolve."""
     u0, u1 = math.sin(theta0), math.sin(theta1)
-    c0, c1 = math.cos(theta0), math.cos(theta1)
     split = (u0 - u1) * (u0 + u1)  # u0² - u1²
     if split < _ODE_MIN_SPLIT * u0 * u0 or theta1 == theta0:
         raise PendcliError(
@@ -313,31 +313,43 @@ def _ode(theta0: float, theta1: float, harmonics: int, rtol: float) -> ConicalMo
             f"(got {math.degrees(theta0):.10g}°); use method 'quad'"
         )
 
-    def radial_velocity(_t, y):
+
+class _Pericentre:
+    """solve_ivp event: the radial velocity r_h·v_h turns positive (u decreasing → increasing)."""
+
+    terminal = True
+    direction = 1.0
+
+    def __call__(self, _t: float, y: Sequence[float]) -> float:
         return y[0] * y[3] + y[1] * y[4]
 
-    radial_velocity.terminal = True
-    radial_velocity.direction = 1.0  # u decreasing → increasing: the pericentre θ1
 
-    y0 = _initial_state(theta0, theta1)
+def _half_radial_period(theta0: float, theta1: float, rtol: float) -> tuple[Any, float]:
+    """(dense solution, time from θ0 to the pericentre θ1) of the Newtonian ODE (DOP853)."""
+    from scipy.integrate import solve_ivp
+
     # DOP853 accepts no rtol below 100 eps; it clamps (with a warning) otherwise.
     rtol = max(rtol, 2.5e-14)
     sol = solve_ivp(
         _newton,
         (0.0, 8.0 * math.pi),
-        y0,
+        _initial_state(theta0, theta1),
         method="DOP853",
         rtol=rtol,
         atol=rtol * 1e-3,
-        events=radial_velocity,
+        events=_Pericentre(),
         dense_output=True,
     )
     if sol.status != 1 or len(sol.t_events[0]) == 0:  # pragma: no cover - defensive
         raise PendcliError(f"method 'ode' found no pericentre: {sol.message}")
-    t_half = float(sol.t_events[0][0])
-    samples = 512
-    tau = np.linspace(0.0, 0.5 * math.pi, samples + 1)
-    states = sol.sol(tau * (2.0 * t_half / math.pi))
+    return sol, float(sol.t_events[0][0])
+
+
+def _psi_and_phi(states: np.ndarray, theta0: float, theta1: float) -> tuple[np.ndarray, np.ndarray]:
+    """ψ and φ' (definition (3)) read off the integrated states (x, y, z, vx, vy, vz)."""
+    u0, u1 = math.sin(theta0), math.sin(theta1)
+    c0, c1 = math.cos(theta0), math.cos(theta1)
+    split = (u0 - u1) * (u0 + u1)
     x, y, z, vx, vy, _ = states
     norm2 = x * x + y * y + z * z
     u2 = (x * x + y * y) / norm2
@@ -352,25 +364,36 @@ def _ode(theta0: float, theta1: float, harmonics: int, rtol: float) -> ConicalMo
     # φ' is the angle from the ellipse point (u0 cos ψ, u1 sin ψ) to the bob's projection.
     wx, wy = u0 * np.cos(psi), u1 * np.sin(psi)
     px, py = x / np.sqrt(norm2), y / np.sqrt(norm2)
-    phi_prime = np.arctan2(wx * py - wy * px, wx * px + wy * py)
-    omega = float(phi_prime[-1]) / (0.5 * math.pi)
-    weights = np.full(samples + 1, 1.0)
+    return psi, np.arctan2(wx * py - wy * px, wx * px + wy * py)
+
+
+def _sine_coefficients(tau: np.ndarray, values: np.ndarray, harmonics: int) -> tuple[float, ...]:
+    """(4/π) ∫_0^(π/2) values·sin 2kτ dτ, k = 1..harmonics, by the trapezoidal rule."""
+    weights = np.full(len(tau), 1.0)
     weights[0] = weights[-1] = 0.5
-    step = 0.5 * math.pi / samples
-    b, cc = [], []
-    for k in range(1, harmonics + 1):
-        sin_k = np.sin(2 * k * tau)
-        b.append(4.0 / math.pi * step * float(np.sum(weights * (psi - tau) * sin_k)))
-        cc.append(4.0 / math.pi * step * float(np.sum(weights * (phi_prime - omega * tau) * sin_k)))
+    step = 0.5 * math.pi / (len(tau) - 1)
+    return tuple(
+        4.0 / math.pi * step * float(np.sum(weights * values * np.sin(2 * k * tau)))
+        for k in range(1, harmonics + 1)
+    )
+
+
+def _ode(theta0: float, theta1: float, harmonics: int, rtol: float) -> ConicalMotion:
+    _check_ode(theta0, theta1)
+    sol, t_half = _half_radial_period(theta0, theta1, rtol)
+    samples = 512
+    tau = np.linspace(0.0, 0.5 * math.pi, samples + 1)
+    psi, phi_prime = _psi_and_phi(sol.sol(tau * (2.0 * t_half / math.pi)), theta0, theta1)
+    omega = float(phi_prime[-1]) / (0.5 * math.pi)
     k1 = 0.5 * math.pi / t_half
     return ConicalMotion(
         theta0=theta0,
         theta1=theta1,
         k1=k1,
-        k2=omega * k1 / (0.375 * u0 * u1),
+        k2=omega * k1 / (0.375 * math.sin(theta0) * math.sin(theta1)),
         precession=omega,
-        psi_coeffs=tuple(b),
-        phi_coeffs=tuple(cc),
+        psi_coeffs=_sine_coefficients(tau, psi - tau, harmonics),
+        phi_coeffs=_sine_coefficients(tau, phi_prime - omega * tau, harmonics),
         method="ode",
         grid=samples,
     )
