@@ -65,6 +65,22 @@ def claims(
     )
 
 
+def _zeros_method(method: str | None, tol: float | None) -> tuple[str, str]:
+    """The method of `zeros` and why: forced, the cheapest meeting --tol, or the default."""
+    if method is not None:
+        return method, "forced by --method"
+    if tol is None:
+        return "auto", "default"
+    from pendcli.tradeoff import choose
+
+    chosen = choose("bessel_zeros", tol)
+    reason = (
+        f"cheapest with measured worst error {chosen.error:.1e} <= tol {tol:g}, "
+        f"{chosen.seconds:.1e} s/evaluation"
+    )
+    return chosen.method, reason
+
+
 @app.command("zeros")
 def zeros(
     order: Annotated[int, typer.Option("--order", help="Order of J: 1 or 2.")] = 2,
@@ -90,19 +106,7 @@ def zeros(
     from pendcli.numerics.besselzeros import bessel_zeros
     from pendcli.render import Column
 
-    if method is not None:
-        reason = "forced by --method"
-    elif tol is not None:
-        from pendcli.tradeoff import choose
-
-        chosen = choose("bessel_zeros", tol)
-        method = chosen.method
-        reason = (
-            f"cheapest with measured worst error {chosen.error:.1e} <= tol {tol:g}, "
-            f"{chosen.seconds:.1e} s/evaluation"
-        )
-    else:
-        method, reason = "auto", "default"
+    method, reason = _zeros_method(method, tol)
     values = bessel_zeros(order, count, method)
     rows = [{"k": k + 1, "zero": float(z)} for k, z in enumerate(values)]
     columns = [
@@ -120,6 +124,32 @@ def zeros(
         say(f"method: {method} ({reason})")
 
 
+def _example_columns() -> tuple[list[Column], list[Column], list[Column]]:
+    """Columns of `example`: elongations, vertical passages, summary."""
+    from pendcli.render import Column
+
+    elongations = [
+        _col("k", "k"),
+        _col("z", "z (J2 = 0)", 8),
+        _col("length_m", "l (m)", 6),
+        _col("time_s", "t (s)", 6),
+        _col("j0", "J0(z)", 6),
+        _col("ratio", "θ/θ0", 6),
+        _col("from_rest_length_m", "from rest: l (m)", 6),
+        _col("from_rest_time_s", "from rest: t (s)", 6),
+        _col("from_rest_ratio", "from rest: θ/θ0", 6),
+    ]
+    passages = [
+        _col("k", "k"),
+        _col("z", "z (J1 = 0)", 8),
+        _col("length_m", "l (m)", 6),
+        _col("time_s", "t (s)", 6),
+        _col("from_rest_time_s", "from rest: t (s)", 6),
+    ]
+    summary = [Column("quantity", "quantity"), _col("value", "value", 8), Column("unit", "unit")]
+    return elongations, passages, summary
+
+
 @app.command("example")
 def example(
     speed: SpeedOption = None,
@@ -134,27 +164,7 @@ def example(
 
     plot = validate_plot_path(plot)
     elong, passages, summary = example_rows(speed, length, g)
-    cols_e = [
-        _col("k", "k"),
-        _col("z", "z (J2 = 0)", 8),
-        _col("length_m", "l (m)", 6),
-        _col("time_s", "t (s)", 6),
-        _col("j0", "J0(z)", 6),
-        _col("ratio", "θ/θ0", 6),
-        _col("from_rest_length_m", "from rest: l (m)", 6),
-        _col("from_rest_time_s", "from rest: t (s)", 6),
-        _col("from_rest_ratio", "from rest: θ/θ0", 6),
-    ]
-    cols_p = [
-        _col("k", "k"),
-        _col("z", "z (J1 = 0)", 8),
-        _col("length_m", "l (m)", 6),
-        _col("time_s", "t (s)", 6),
-        _col("from_rest_time_s", "from rest: t (s)", 6),
-    ]
-    from pendcli.render import Column
-
-    cols_s = [Column("quantity", "quantity"), _col("value", "value", 8), Column("unit", "unit")]
+    cols_e, cols_p, cols_s = _example_columns()
     emit(
         fmt,
         [
@@ -187,7 +197,7 @@ def ode_check(
     """Bessel elongation times against solve_ivp on eq. (3), linear and with sin θ."""
     from pendcli.papers.lecornu.explore import ode_check as check
 
-    rows = check(speed, length, g, tuple(amplitude) if amplitude else (1.0, 5.0), floor)
+    rows = check(speed, length, g, tuple(amplitude) if amplitude else None, floor)
     columns = [_col(k, k.replace("_", " "), 8) for k in rows[0]]
     emit(
         fmt,

@@ -56,6 +56,16 @@ class ExampleInputs:
     printed_z1: Array  # descending, as printed
     printed_coefficient: float  # 0,00313 of (16)
 
+    @property
+    def b(self) -> str:
+        """The speed as the paper prints it: "0,35 m/s"."""
+        return f"{_comma(self.speed)} m/s"
+
+    @property
+    def l0(self) -> str:
+        """The length at t = 0: "1 m"."""
+        return f"{self.length:g} m"
+
 
 def _printed_values(prefix: str, count: int) -> Array:
     """The printed values of claims ``prefix1..prefixN``, in table order."""
@@ -100,9 +110,15 @@ def _chop(v: float, decimals: int) -> float:
     return math.copysign(math.floor(abs(v) * f + 1e-9) / f, v)
 
 
-def _comma(v: float, decimals: int) -> str:
-    """A number the way the paper prints it: decimal comma."""
-    return f"{v:.{decimals}f}".replace(".", ",")
+def _comma(v: float, decimals: int | None = None) -> str:
+    """A number the way the paper prints it: decimal comma (shortest form by default)."""
+    text = f"{v:g}" if decimals is None else f"{v:.{decimals}f}"
+    return text.replace(".", ",")
+
+
+def _coefficient_text() -> str:
+    """His coefficient of (16) as printed: "0,00313"."""
+    return printed_number("lecornu.coefficient_b2_4g").text
 
 
 def _zeros_note(z: float) -> str:
@@ -124,7 +140,8 @@ def _j2_zeros(c: ExampleInputs) -> Claims:
     out = {
         "lecornu.j2_zeros.count_below_20": Recomputed(
             float(np.sum(c.z2 < constant("table_limit"))),
-            method="zeros of J_2 (pendcli.numerics.besselzeros, auto) below 20",
+            method="zeros of J_2 (pendcli.numerics.besselzeros, auto) below "
+            f"{constant('table_limit'):g}",
             note=f"The sixth zero is {c.z2[5]:.4f}, just beyond the table's end.",
         )
     }
@@ -144,7 +161,7 @@ def _speeds(c: ExampleInputs) -> Claims:
         numerator = 2 * math.sqrt(c.g * c.length)
         out[f"lecornu.speed.{k + 1}"] = Recomputed(
             float(numerator / c.z2[k]),
-            method="√(g l/ξ), ξ = z²/4, l = 1 m: 2√g/j_(2,k)",
+            method=f"√(g l/ξ), ξ = z²/4, l = {c.l0}: 2√g/j_(2,k)",
             note=f"Author's procedure (printed z) gives {numerator / c.printed_z2[k]:.4f}.",
         )
     return out
@@ -161,9 +178,7 @@ def _coefficient(c: ExampleInputs) -> Claims:
         f"(g = {g_max:.2f} gives exactly {_comma(lowest, 6)}); with g = {c.g:g} it is "
         f"{coef:.6f}."
     )
-    return {
-        "lecornu.coefficient_b2_4g": Recomputed(coef, method="b²/(4g), b = 0,35 m/s", note=note)
-    }
+    return {"lecornu.coefficient_b2_4g": Recomputed(coef, method=f"b²/(4g), b = {c.b}", note=note)}
 
 
 def _lengths(c: ExampleInputs) -> Claims:
@@ -176,10 +191,10 @@ def _lengths(c: ExampleInputs) -> Claims:
         out[f"lecornu.example.length.{k + 1}"] = Recomputed(
             float(c.model.elongation_lengths[k]),
             exact=_exact_at(c.rest.elongation_lengths, k),
-            method="(b²/4g) j_(2,k)², b = 0,35 m/s (eq. (16))",
+            method=f"(b²/4g) j_(2,k)², b = {c.b} (eq. (16))",
             note=(
-                f"Author's procedure 0,00313·z² (printed z) gives {author[k]:.4f}; "
-                f"with l = (z/{first})² (1 m at the first elongation) "
+                f"Author's procedure {_coefficient_text()}·z² (printed z) gives "
+                f"{author[k]:.4f}; with l = (z/{first})² ({c.l0} at the first elongation) "
                 f"{(z_desc[k] / z_desc[0]) ** 2:.4f}."
             ),
         )
@@ -200,15 +215,16 @@ def _times(c: ExampleInputs) -> Claims:
         out[f"lecornu.example.time.{k + 1}"] = Recomputed(
             float(c.model.elongation_times[k]),
             exact=_exact_at(c.rest.elongation_times, k),
-            method="(1 m - l_k)/b, b = 0,35 m/s",
-            note=f"Author's procedure (1 - printed l)/0,35 gives {author[k]:.4f}.",
+            method=f"({c.l0} - l_k)/b, b = {c.b}",
+            note=f"Author's procedure ({c.length:g} - printed l)/{_comma(c.speed)} gives "
+            f"{author[k]:.4f}.",
         )
     exact_speed = 2 * math.sqrt(c.g * c.length) / c.z2[4]
     out["lecornu.example.time_zero_length"] = Recomputed(
         c.model.zero_length_time,
-        method="1 m / b",
+        method=f"{c.l0} / b",
         note=(
-            "With the exact speed that makes 1 m an elongation, "
+            f"With the exact speed that makes {c.l0} an elongation, "
             f"b = 2√g/j_(2,5) = {exact_speed:.5f} m/s, it would be "
             f"{c.length / exact_speed:.4f} s."
         ),
@@ -282,7 +298,7 @@ def _zero_length(c: ExampleInputs) -> Claims:
     exact_speed = 2 * math.sqrt(c.g * c.length) / c.z2[4]
     note = (
         f"Author's procedure 1/({j0_first:+.3f}) = {1 / j0_first:.2f}. Released from rest at "
-        "1 m with b = 0,35 m/s exactly (not the speed 2√g/j_(2,5) = "
+        f"{c.l0} with b = {c.b} exactly (not the speed 2√g/j_(2,5) = "
         f"{exact_speed:.5f} that satisfies his condition) the solution has a Y_1 part "
         f"(weight J_2(z0)/Y_2(z0) = {c.rest.singular_weight:.2e}) and θ grows like 1/l: no "
         "finite limit."
@@ -317,8 +333,8 @@ def _j1_lengths(c: ExampleInputs) -> Claims:
     for k in range(6):
         out[f"lecornu.j1_lengths.{k + 1}"] = Recomputed(
             float(c.model.passage_lengths[k]),
-            method="(b²/4g) j_(1,k)², b = 0,35 m/s (eq. (16))",
-            note=f"Author's procedure 0,00313·z² (printed z) gives {author[k]:.4f}.",
+            method=f"(b²/4g) j_(1,k)², b = {c.b} (eq. (16))",
+            note=f"Author's procedure {_coefficient_text()}·z² (printed z) gives {author[k]:.4f}.",
         )
     smallest = printed_number("lecornu.j1_zeros.6")  # 3,83
     out["lecornu.x_bound"] = Recomputed(

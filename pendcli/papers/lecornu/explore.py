@@ -30,6 +30,7 @@ from pendcli.papers.lecornu.model import (
 __all__ = [
     "AMPLITUDE_RANGE",
     "G_PARIS",
+    "ODE_AMPLITUDES",
     "best_g",
     "example_rows",
     "g_dependent_ids",
@@ -54,6 +55,7 @@ G_PARIS = (
     - 3.086e-6 * 60
 )
 AMPLITUDE_RANGE = (1e-6, 179.0)  # degrees, for eq. (3) with sin θ
+ODE_AMPLITUDES = (1.0, 5.0)  # degrees: small, and 25 times the finite-amplitude effect
 
 
 def g_grid() -> tuple[float, ...]:
@@ -168,10 +170,13 @@ def ode_check(
     speed: float | None = None,
     length: float | None = None,
     g: float | None = None,
-    amplitudes_deg: tuple[float, ...] = (1.0, 5.0),
+    amplitudes_deg: tuple[float, ...] | None = None,
     floor_fraction: float = 0.02,
 ) -> list[Row]:
-    """Bessel elongation times against solve_ivp (linear, and sin θ at the given amplitudes)."""
+    """Bessel elongation times against solve_ivp (linear, and sin θ at the given amplitudes,
+    in degrees; default :data:`ODE_AMPLITUDES`)."""
+    if amplitudes_deg is None:
+        amplitudes_deg = ODE_AMPLITUDES
     amplitudes = [
         real_in_range("amplitude", a, *AMPLITUDE_RANGE, "degrees") for a in amplitudes_deg
     ]

@@ -366,6 +366,26 @@ class Integration:
     max_abs_theta: float
 
 
+def _shortening_rhs(
+    b: float, a: float, g: float, nonlinear: bool
+) -> Callable[[float, Array], list[float]]:
+    """Eq. (3) with l = a - bt as a first-order system in (θ, θ')."""
+    force: Callable[[float], float] = math.sin if nonlinear else (lambda th: th)
+
+    def rhs(t: float, y: Array) -> list[float]:
+        return [y[1], (2.0 * b * y[1] - g * force(y[0])) / (a - b * t)]
+
+    return rhs
+
+
+def _elongation_event(t: float, y: Array) -> float:
+    return float(y[1])
+
+
+def _passage_event(t: float, y: Array) -> float:
+    return float(y[0])
+
+
 def integrate_shortening(
     speed: float | None,
     length: float | None,
@@ -389,33 +409,21 @@ def integrate_shortening(
     tol = real_in_range("rtol", rtol, 1e-13, 1e-3)
     frac = real_in_range("floor_fraction", floor_fraction, *FLOOR_RANGE)
     t_end = a * (1.0 - frac) / b
-    force: Callable[[float], float] = math.sin if nonlinear else (lambda th: th)
-
-    def rhs(t: float, y: Array) -> list[float]:
-        return [y[1], (2.0 * b * y[1] - gg * force(y[0])) / (a - b * t)]
-
-    def elongation(t: float, y: Array) -> float:
-        return float(y[1])
-
-    def passage(t: float, y: Array) -> float:
-        return float(y[0])
-
     sol = solve_ivp(
-        rhs,
+        _shortening_rhs(b, a, gg, nonlinear),
         (0.0, t_end),
         [th0, 0.0],
         method="DOP853",
         rtol=tol,
         atol=tol * th0 * 1e-3,
-        events=(elongation, passage),
+        events=(_elongation_event, _passage_event),
     )
     if sol.status != 0:
         raise PendcliError(f"integration of eq. (3) failed: {sol.message}")
     after_release = sol.t_events[0] > 1e-9 * t_end  # ω = 0 at t = 0 is prepended below
-    angles = sol.y_events[0][:, 0][after_release]
     return Integration(
         elongation_times=np.concatenate(([0.0], sol.t_events[0][after_release])),
-        elongation_angles=np.concatenate(([th0], angles)),
+        elongation_angles=np.concatenate(([th0], sol.y_events[0][:, 0][after_release])),
         passage_times=sol.t_events[1],
         end_time=float(sol.t[-1]),
         end_length=a - b * float(sol.t[-1]),
