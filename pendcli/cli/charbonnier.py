@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING, Annotated
 
 import typer
@@ -83,9 +84,7 @@ def _table_columns() -> tuple[Column, ...]:
 @app.command("integral", context_settings={"ignore_unknown_options": True})
 def integral(
     n: Annotated[int, typer.Argument(help="Order n: integer, -1 <= n <= 10^12.")],
-    x: Annotated[
-        float, typer.Option("--x", help="Upper limit x (real, |x| <= 1e6).")
-    ] = 3.141592653589793,
+    x: Annotated[float, typer.Option("--x", help="Upper limit x (real, |x| <= 1e6).")] = math.pi,
     tol: Annotated[
         float | None,
         typer.Option(

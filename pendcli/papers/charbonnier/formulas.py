@@ -14,9 +14,11 @@ made dimensionless with α and k, so g and l0 (read from the table, see
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -188,7 +190,7 @@ class _Run:
     text: str
     eps: np.ndarray
     events: dict[str, np.ndarray]
-    sol: object  # scipy's OdeSolution (dense output)
+    sol: Callable[[np.ndarray], np.ndarray]  # scipy's OdeSolution (dense output)
     es_pi: float
     ec_pi: float
     es_half: float
@@ -203,7 +205,9 @@ def _run(p: CheckPendulum, name: str, pert: Perturbation, ref: Reference) -> _Ru
     return _Run(name, pert.description, eps, events, sol, es_pi, ec_pi, es_half, ec_half)
 
 
-def _frow(id_: str, source: str, published: str, residuals, ref: Reference, **kw) -> FormulaRow:
+def _frow(
+    id_: str, source: str, published: str, residuals: Iterable[float], ref: Reference, **kw: Any
+) -> FormulaRow:
     """A row of the δ sweep: ``residuals`` (dimensionless, one per δ) of order 2 claimed."""
     study = Study(DELTA_PARAM, DELTA_SWEEP, tuple(residuals), 2, ref.error_bound)
     return make_row(
@@ -236,7 +240,7 @@ def _eq4_5_row(p: CheckPendulum, run: _Run, pert: Perturbation, ref: Reference) 
     k, alpha = p.k, p.alpha
     grid = np.linspace(0.0, p.half, 241)
     es, ec = e_integrals(p, pert.phi, grid)
-    y = run.sol(grid)  # type: ignore[operator]
+    y = run.sol(grid)
     m = len(run.eps)
     res = []
     for j, e in enumerate(run.eps):
@@ -431,7 +435,8 @@ def friction_count_row() -> FormulaRow:
     # (the n = 0 row confirms it on the ODE), and the pendulum stays at an extremity as soon
     # as its angle there is at most b0/g (static friction then balances gravity). The
     # residual is the worst relative miss over a ±10 % band of b0 around each value.
-    g, alpha = check_pendulum().g, check_pendulum().alpha
+    p = check_pendulum()
+    g, alpha = p.g, p.alpha
     p_values = (10.0, 20.0, 40.0, 80.0, 160.0)
     res = []
     for p_nominal in p_values:
