@@ -16,17 +16,32 @@ moves a result in its last bits, does not fail CI, while any real change does.
 from __future__ import annotations
 
 import csv
+import dataclasses
 import io
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from pendcli.core.claims import PAPERS
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import tables_dir
-from pendcli.render import to_csv
+from pendcli.render.columns import Column
+from pendcli.render.csv import to_csv
 
-__all__ = ["TOLERANCES", "Drift", "compare_tables", "regenerated_tables", "run_check"]
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from pendcli.reproduce import ReproduceResult
+
+__all__ = [
+    "TOLERANCES",
+    "Drift",
+    "compare_tables",
+    "find_drifts",
+    "regenerated_tables",
+    "run_check",
+]
 
 CLAIM_COLUMNS = (
     "id",
@@ -67,15 +82,15 @@ class Drift:
     difference: str
 
 
-def _claim_rows(result, key: str) -> list[dict]:
+def _claim_rows(result: ReproduceResult, key: str) -> list[dict[str, object]]:
     return [{k: r.as_dict()[k] for k in CLAIM_COLUMNS} for r in result.claims.get(key, [])]
 
 
-def _formula_rows(result, key: str) -> list[dict]:
+def _formula_rows(result: ReproduceResult, key: str) -> list[dict[str, object]]:
     return [{k: r.as_dict()[k] for k in FORMULA_COLUMNS} for r in result.formulas.get(key, [])]
 
 
-def regenerated_tables(result) -> dict[str, str]:
+def regenerated_tables(result: ReproduceResult) -> dict[str, str]:
     """File name -> CSV text for every regenerated table of a reproduce result."""
     out: dict[str, str] = {}
     for key in result.papers:
@@ -121,32 +136,51 @@ def compare_tables(name: str, committed_text: str, now_text: str) -> list[Drift]
     for cid in sorted(set(now) - set(then)):
         drifts.append(Drift(name, cid, "(row)", now[cid].get("published", ""), "absent", "new", ""))
     for cid in [c for c in now if c in then]:
-        a, b = then[cid], now[cid]
-        published = b.get("published", "")
         for col in columns:
-            if col == "id":
-                continue
-            if col not in a:
-                drifts.append(Drift(name, cid, col, published, "(no column)", b[col], ""))
-                continue
-            kind, tol = TOLERANCES.get(col, ("same", 0.0))
-            if kind == "same":
-                if a[col] != b[col]:
-                    drifts.append(Drift(name, cid, col, published, a[col], b[col], "changed"))
-                continue
-            x = _number(a[col], f"{where}: {cid!r} column {col!r}")
-            y = _number(b[col], f"regenerated {name}: {cid!r} column {col!r}")
-            if x is None or y is None:
-                if (x is None) != (y is None):
-                    drifts.append(
-                        Drift(name, cid, col, published, a[col], b[col], "appeared/vanished")
-                    )
-                continue
-            diff = y - x
-            limit = tol * max(abs(x), 1e-300) if kind == "rel" else tol
-            if not (abs(diff) <= limit) or math.isnan(diff):
-                rel = f" ({diff / x:+.2e} rel)" if x else ""
-                drifts.append(Drift(name, cid, col, published, a[col], b[col], f"{diff:+.3e}{rel}"))
+            if col != "id":
+                drift = _cell_drift(name, cid, col, then[cid], now[cid])
+                if drift is not None:
+                    drifts.append(drift)
+    return drifts
+
+
+def _cell_drift(
+    name: str, cid: str, col: str, then: dict[str, str], now: dict[str, str]
+) -> Drift | None:
+    """How one cell moved beyond its column's tolerance (:data:`TOLERANCES`), or None."""
+    published = now.get("published", "")
+    if col not in then:
+        return Drift(name, cid, col, published, "(no column)", now[col], "")
+    a, b = then[col], now[col]
+    kind, tol = TOLERANCES.get(col, ("same", 0.0))
+    if kind == "same":
+        return Drift(name, cid, col, published, a, b, "changed") if a != b else None
+    x = _number(a, f"tables/regenerated/{name}: {cid!r} column {col!r}")
+    y = _number(b, f"regenerated {name}: {cid!r} column {col!r}")
+    if x is None or y is None:
+        if (x is None) != (y is None):
+            return Drift(name, cid, col, published, a, b, "appeared/vanished")
+        return None
+    diff = y - x
+    limit = tol * max(abs(x), 1e-300) if kind == "rel" else tol
+    if abs(diff) <= limit and not math.isnan(diff):
+        return None
+    rel = f" ({diff / x:+.2e} rel)" if x else ""
+    return Drift(name, cid, col, published, a, b, f"{diff:+.3e}{rel}")
+
+
+def find_drifts(folder: Path, tables: dict[str, str]) -> list[Drift]:
+    """Every drift between the committed tables in ``folder`` and ``tables`` (name -> CSV)."""
+    drifts: list[Drift] = []
+    committed_names = {p.name for p in folder.glob("*.csv")} if folder.is_dir() else set()
+    for name in sorted(committed_names - set(tables)):
+        drifts.append(Drift(name, "(table)", "(file)", "", "committed", "no longer produced", ""))
+    for name, text in tables.items():
+        path = folder / name
+        if not path.is_file():
+            drifts.append(Drift(name, "(table)", "(file)", "", "missing", "produced", ""))
+            continue
+        drifts.extend(compare_tables(name, path.read_text(encoding="utf-8"), text))
     return drifts
 
 
@@ -160,43 +194,38 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     tables = regenerated_tables(result)
     out = console()
     if update:
-        folder.mkdir(parents=True, exist_ok=True)
-        for stale in folder.glob("*.csv"):
-            if stale.name not in tables:
-                stale.unlink()
-        for name, text in tables.items():
-            (folder / name).write_text(text, encoding="utf-8")
+        _rewrite(folder, tables)
         if not quiet:
             out.print(f"rewrote {len(tables)} tables in {folder}")
         return 0
+    drifts = find_drifts(folder, tables)
+    if drifts:
+        _print_drifts(out, drifts)
+        return 1
+    if not quiet:
+        n = sum(len(v) for v in result.claims.values())
+        f = sum(len(v) for v in result.formulas.values())
+        out.print(
+            f"check passed: {len(tables)} tables, {n} claims, {f} formulas match "
+            f"tables/regenerated within tolerance"
+        )
+    return 0
 
-    drifts: list[Drift] = []
-    committed_names = {p.name for p in folder.glob("*.csv")} if folder.is_dir() else set()
-    for name in sorted(committed_names - set(tables)):
-        drifts.append(Drift(name, "(table)", "(file)", "", "committed", "no longer produced", ""))
+
+def _rewrite(folder: Path, tables: dict[str, str]) -> None:
+    """``pendcli check --update``: the committed tables become the regenerated ones."""
+    folder.mkdir(parents=True, exist_ok=True)
+    for stale in folder.glob("*.csv"):
+        if stale.name not in tables:
+            stale.unlink()
     for name, text in tables.items():
-        path = folder / name
-        if not path.is_file():
-            drifts.append(Drift(name, "(table)", "(file)", "", "missing", "produced", ""))
-            continue
-        drifts.extend(compare_tables(name, path.read_text(encoding="utf-8"), text))
+        (folder / name).write_text(text, encoding="utf-8")
 
-    if not drifts:
-        if not quiet:
-            n = sum(len(v) for v in result.claims.values())
-            f = sum(len(v) for v in result.formulas.values())
-            out.print(
-                f"check passed: {len(tables)} tables, {n} claims, {f} formulas match "
-                f"tables/regenerated within tolerance"
-            )
-        return 0
-    from pendcli.render import Column, to_rich_table
 
-    rows = [d.__dict__ for d in drifts]
-    cols = [
-        Column(k, k)
-        for k in ("table", "id", "column", "published", "committed", "now", "difference")
-    ]
+def _print_drifts(out: Console, drifts: list[Drift]) -> None:
+    from pendcli.render.table import to_rich_table
+
+    rows = [dataclasses.asdict(d) for d in drifts]
+    cols = [Column(k, k) for k in (f.name for f in dataclasses.fields(Drift))]
     out.print(to_rich_table(rows, cols, title=f"check FAILED: {len(drifts)} drift(s)"))
     out.print("If the change is intended, run `pendcli check --update` (make regen) and commit.")
-    return 1

@@ -64,24 +64,43 @@ def test_every_committed_column_has_an_explicit_tolerance():
         assert col in TOLERANCES
 
 
+def test_missing_and_extra_committed_tables_are_drift(tmp_path):
+    from pendcli.regression import find_drifts
+
+    (tmp_path / "old.csv").write_text(HEADER + ROW, encoding="utf-8")
+    (tmp_path / "same.csv").write_text(HEADER + ROW, encoding="utf-8")
+    tables = {"same.csv": HEADER + ROW, "new.csv": HEADER + ROW}
+    found = {(d.table, d.committed, d.now) for d in find_drifts(tmp_path, tables)}
+    assert found == {
+        ("old.csv", "committed", "no longer produced"),
+        ("new.csv", "missing", "produced"),
+    }
+
+
+def test_a_number_that_appears_or_vanishes_is_drift():
+    empty = ROW.replace("5.135622301840683", "")
+    drifts = compare_tables("t.csv", HEADER + ROW, HEADER + empty)
+    assert [(d.column, d.difference) for d in drifts] == [("recomputed", "appeared/vanished")]
+
+
 def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
-    from pendcli.core.tables import _load_paper_table, tables_dir
+    from pendcli.core.tables import clear_table_cache, tables_dir
     from pendcli.regression import run_check
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
-    _load_paper_table.cache_clear()
+    clear_table_cache()
     try:
         assert run_check(quiet=True) == 0
         path = tmp_path / "tables" / "published" / "charbonnier.toml"
         text = path.read_text(encoding="utf-8")
         path.write_text(text.replace('published = "2·2/(1·3)"', 'published = "2·2/(1·5)"'), "utf-8")
-        _load_paper_table.cache_clear()
+        clear_table_cache()
         assert run_check(quiet=True) == 1  # published string and verdict both drift
         path.write_text(text, "utf-8")
         csv_path = tmp_path / "tables" / "regenerated" / "charbonnier-claims.csv"
         csv_path.write_text(csv_path.read_text("utf-8").replace("agrees", "discrepant", 1), "utf-8")
-        _load_paper_table.cache_clear()
+        clear_table_cache()
         assert run_check(quiet=True) == 1
     finally:
-        _load_paper_table.cache_clear()
+        clear_table_cache()

@@ -13,6 +13,7 @@ import tomllib
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
@@ -21,6 +22,7 @@ __all__ = [
     "PaperConstant",
     "PaperTable",
     "PublishedValue",
+    "clear_table_cache",
     "load_paper_table",
     "paper_constant",
     "tables_dir",
@@ -127,21 +129,44 @@ def _constants(path: Path, raw: object) -> tuple[PaperConstant, ...]:
 
 
 def load_paper_table(key: str, root: Path | None = None) -> PaperTable:
-    """Read and validate ``published/<key>.toml`` under ``root`` (default :func:`tables_dir`)."""
-    return _load_paper_table(key, (root or tables_dir()).resolve())
+    """Read and validate ``published/<key>.toml`` under ``root`` (default :func:`tables_dir`).
+
+    Tables are read once per process; :func:`clear_table_cache` forgets them.
+    """
+    return _cached_table(key, (root or tables_dir()).resolve())
+
+
+def clear_table_cache() -> None:
+    """Forget every table read (after a table file or ``$PENDCLI_TABLES`` changes)."""
+    _cached_table.cache_clear()
 
 
 @cache
-def _load_paper_table(key: str, root: Path) -> PaperTable:
+def _cached_table(key: str, root: Path) -> PaperTable:
     path = root / "published" / f"{key}.toml"
+    raw = _read_toml(path)
+    paper = _paper_header(path, raw.get("paper"), key)
+    return PaperTable(
+        key=key,
+        citation=paper["citation"],
+        seed=paper["seed"],
+        assumptions=tuple(paper.get("assumptions", [])),
+        claims=_claims(path, raw.get("claim"), key),
+        constants=_constants(path, paper.get("constants")),
+    )
+
+
+def _read_toml(path: Path) -> dict[str, Any]:
     try:
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+        return tomllib.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
         raise PendcliError(f"published table {path} is missing") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise PendcliError(f"published table {path} is not valid TOML: {exc}") from None
 
-    paper = raw.get("paper")
+
+def _paper_header(path: Path, paper: object, key: str) -> dict[str, Any]:
+    """The ``[paper]`` table, checked: its key, citation, seed, assumptions, no other field."""
     if not isinstance(paper, dict) or paper.get("key") != key:
         raise PendcliError(f"{path}: [paper] must be a table with key = {key!r}")
     unknown_paper = set(paper) - set(_PAPER_FIELDS)
@@ -153,65 +178,69 @@ def _load_paper_table(key: str, root: Path) -> PaperTable:
     assumptions = paper.get("assumptions", [])
     if not isinstance(assumptions, list) or not all(isinstance(a, str) for a in assumptions):
         raise PendcliError(f"{path}: [paper] assumptions must be a list of strings")
+    return paper
 
-    entries = raw.get("claim")
+
+def _claims(path: Path, entries: object, key: str) -> tuple[PublishedValue, ...]:
     if not isinstance(entries, list) or not entries:
         raise PendcliError(f"{path}: no [[claim]] entries")
     claims: list[PublishedValue] = []
     seen: set[str] = set()
     for index, entry in enumerate(entries, start=1):
-        where = f"{path}: claim #{index}"
-        if not isinstance(entry, dict):
-            raise PendcliError(f"{where} is not a table")
-        if isinstance(entry.get("id"), str):
-            where = f"{path}: claim {entry['id']!r}"
-        for field in _REQUIRED:
-            if not isinstance(entry.get(field), str) or not entry[field].strip():
-                raise PendcliError(f"{where}: field {field!r} must be a non-empty string")
-        for field in _OPTIONAL:
-            if field in entry and not isinstance(entry[field], str):
-                raise PendcliError(f"{where}: field {field!r} must be a string")
-        unknown = set(entry) - set(_REQUIRED) - set(_OPTIONAL)
-        if unknown:
-            raise PendcliError(f"{where}: unknown field(s) {', '.join(sorted(unknown))}")
-        if not entry["id"].startswith(f"{key}."):
-            raise PendcliError(f"{where}: id must start with {key + '.'!r}")
-        if entry["id"] in seen:
-            raise PendcliError(f"{where}: duplicate id")
-        seen.add(entry["id"])
-        comparison = entry.get("comparison", "equal")
-        if comparison not in _COMPARISONS:
-            raise PendcliError(f"{where}: comparison must be one of {', '.join(_COMPARISONS)}")
-        precision = entry.get("precision", "printed")
-        if precision not in _PRECISIONS:
-            raise PendcliError(f"{where}: precision must be one of {', '.join(_PRECISIONS)}")
-        try:
-            number = parse_printed(entry["published"])
-        except PendcliError as exc:
-            raise PendcliError(f"{where}: {exc}") from None
-        if precision == "exact":
-            # A count or a definition ("cinq racines", "un mètre"): exact, whatever its digits.
-            number = exact_number(number)
-        claims.append(
-            PublishedValue(
-                id=entry["id"],
-                paper=key,
-                source=entry["source"],
-                quantity=entry["quantity"],
-                published=entry["published"],
-                number=number,
-                unit=entry.get("unit", ""),
-                note=entry.get("note", ""),
-                ocr=entry.get("ocr", ""),
-                as_printed=entry.get("as_printed", ""),
-                comparison=comparison,
-            )
-        )
-    return PaperTable(
-        key=key,
-        citation=paper["citation"],
-        seed=paper["seed"],
-        assumptions=tuple(assumptions),
-        claims=tuple(claims),
-        constants=_constants(path, paper.get("constants")),
+        claims.append(_claim(path, index, entry, key, seen))
+        seen.add(claims[-1].id)
+    return tuple(claims)
+
+
+def _claim(path: Path, index: int, entry: object, key: str, seen: set[str]) -> PublishedValue:
+    """One ``[[claim]]`` entry, checked field by field; ``seen`` holds the ids before it."""
+    where = f"{path}: claim #{index}"
+    if not isinstance(entry, dict):
+        raise PendcliError(f"{where} is not a table")
+    if isinstance(entry.get("id"), str):
+        where = f"{path}: claim {entry['id']!r}"
+    _check_fields(where, entry)
+    if not entry["id"].startswith(f"{key}."):
+        raise PendcliError(f"{where}: id must start with {key + '.'!r}")
+    if entry["id"] in seen:
+        raise PendcliError(f"{where}: duplicate id")
+    comparison = entry.get("comparison", "equal")
+    if comparison not in _COMPARISONS:
+        raise PendcliError(f"{where}: comparison must be one of {', '.join(_COMPARISONS)}")
+    return PublishedValue(
+        id=entry["id"],
+        paper=key,
+        source=entry["source"],
+        quantity=entry["quantity"],
+        published=entry["published"],
+        number=_printed_number(where, entry["published"], entry.get("precision", "printed")),
+        unit=entry.get("unit", ""),
+        note=entry.get("note", ""),
+        ocr=entry.get("ocr", ""),
+        as_printed=entry.get("as_printed", ""),
+        comparison=comparison,
     )
+
+
+def _check_fields(where: str, entry: dict[str, Any]) -> None:
+    """Required fields are non-empty strings, optional ones strings, and no other field."""
+    for field in _REQUIRED:
+        if not isinstance(entry.get(field), str) or not entry[field].strip():
+            raise PendcliError(f"{where}: field {field!r} must be a non-empty string")
+    for field in _OPTIONAL:
+        if field in entry and not isinstance(entry[field], str):
+            raise PendcliError(f"{where}: field {field!r} must be a string")
+    unknown = set(entry) - set(_REQUIRED) - set(_OPTIONAL)
+    if unknown:
+        raise PendcliError(f"{where}: unknown field(s) {', '.join(sorted(unknown))}")
+
+
+def _printed_number(where: str, published: str, precision: str) -> PrintedNumber:
+    if precision not in _PRECISIONS:
+        raise PendcliError(f"{where}: precision must be one of {', '.join(_PRECISIONS)}")
+    try:
+        number = parse_printed(published)
+    except PendcliError as exc:
+        raise PendcliError(f"{where}: {exc}") from None
+    # A count or a definition ("cinq racines", "un mètre"): exact, whatever its digits.
+    return exact_number(number) if precision == "exact" else number
