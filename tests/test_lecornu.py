@@ -429,6 +429,7 @@ def test_best_g_is_consistent_with_the_verdicts(rows):
         {"speed": 1e-3, "length": 1000.0},  # too many oscillations
         {"speed": 10.0},  # too fast: no elongation of (10) below the release
     ],
+    ids=lambda kw: ",".join(f"{k}={v}" for k, v in kw.items()),
 )
 def test_example_bad_input(kwargs):
     with pytest.raises(PendcliError, match="valid range"):
@@ -505,6 +506,7 @@ def test_cli_other_commands_json(runner, args, key):
         ("ode-check", "--amplitude", "180"),
         ("claims", "--g", "3.5"),
     ],
+    ids=" ".join,
 )
 def test_cli_bad_input_is_one_error(runner, args):
     result = invoke(runner, *args)

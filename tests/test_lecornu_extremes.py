@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.tables import paper_constant
 from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     SERIES_MAX_ERROR,
@@ -26,7 +27,9 @@ from pendcli.papers.lecornu.model import lecornu_series
 
 pytestmark = pytest.mark.extremes
 
-G = 9.81
+G = paper_constant("lecornu", "g")
+B = paper_constant("lecornu", "speed")  # 0,35 m/s
+L = paper_constant("lecornu", "length")  # 1 m at t = 0
 
 
 def ulp_errors(order: int, zeros: np.ndarray, indices) -> list[float]:
@@ -98,7 +101,7 @@ def test_series_has_no_digit_at_50():
 
 
 def test_zero_length_amplitude_grows_like_one_over_length():
-    rows = explore.zero_length_behaviour(0.35, 1.0, G, floors=(1e-4, 1e-5, 1e-6))
+    rows = explore.zero_length_behaviour(B, L, G, floors=(1e-4, 1e-5, 1e-6))
     for r in rows:  # the integration tracks the exact solution down to the floor
         assert r["end_ratio_ode"] == pytest.approx(r["end_ratio_bessel"], rel=1e-5)
     # θ·l tends to a constant: unbounded θ as l → 0 (the Y_1 part, b ≠ Lecornu's speed)
@@ -113,7 +116,7 @@ def test_zero_length_bounded_at_lecornus_speed():
         j25 = mpmath.besseljzero(2, 5)
         limit = float(1 / mpmath.besselj(0, j25))  # θ/θ0 → 1/J0(j_(2,5))
     b5 = 2 * math.sqrt(G) / float(j25)
-    run = model.integrate_shortening(b5, 1.0, G, 1e-6, rtol=1e-11, floor_fraction=1e-6)
+    run = model.integrate_shortening(b5, L, G, 1e-6, rtol=1e-11, floor_fraction=1e-6)
     assert run.end_theta / 1e-6 == pytest.approx(limit, rel=1e-3)
 
 
@@ -121,11 +124,11 @@ def test_zero_length_bounded_at_lecornus_speed():
 def test_fast_shortening(speed):
     # « un raccourcissement de dix mètres par seconde »: x = gl/b² < the first zero of J2's
     # argument, so no elongation after the release; θ grows like 1/l near zero length.
-    rest = model.from_rest_model(speed, 1.0, G, floor_fraction=1e-6)
+    rest = model.from_rest_model(speed, L, G, floor_fraction=1e-6)
     assert list(rest.elongation_times) == [0.0]
-    run = model.integrate_shortening(speed, 1.0, G, 1e-6, rtol=1e-10, floor_fraction=1e-6)
+    run = model.integrate_shortening(speed, L, G, 1e-6, rtol=1e-10, floor_fraction=1e-6)
     np.testing.assert_allclose(run.passage_times, rest.passage_times, atol=1e-9)
-    rows = explore.zero_length_behaviour(speed, 1.0, G, floors=(1e-7, 1e-8))
+    rows = explore.zero_length_behaviour(speed, L, G, floors=(1e-7, 1e-8))
     assert rows[1]["end_ratio_times_length"] == pytest.approx(
         rows[0]["end_ratio_times_length"], rel=0.05
     )
@@ -134,11 +137,11 @@ def test_fast_shortening(speed):
 @pytest.mark.parametrize(
     ("call", "match"),
     [
-        (lambda: model.integrate_shortening(0.35, 1.0, G, 1e-3, floor_fraction=0.0), "floor"),
-        (lambda: model.integrate_shortening(0.35, 1.0, G, 1e-3, floor_fraction=-1), "floor"),
-        (lambda: model.integrate_shortening(0.35, 1.0, G, math.nan), "theta0"),
-        (lambda: model.integrate_shortening(0.35, 1.0, G, 4.0), "theta0"),
-        (lambda: model.elongation_times(0.005, 1.0, G, "ode"), "speed"),
+        (lambda: model.integrate_shortening(B, L, G, 1e-3, floor_fraction=0.0), "floor"),
+        (lambda: model.integrate_shortening(B, L, G, 1e-3, floor_fraction=-1), "floor"),
+        (lambda: model.integrate_shortening(B, L, G, math.nan), "theta0"),
+        (lambda: model.integrate_shortening(B, L, G, 4.0), "theta0"),
+        (lambda: model.elongation_times(0.005, L, G, "ode"), "speed"),
         (lambda: model.from_rest_model(1e-3, 1000.0, G), "speed"),
     ],
 )
