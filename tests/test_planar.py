@@ -6,6 +6,7 @@ direct integration of θ'' = -(g/l) sin θ (no elliptic functions at all).
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import mpmath
@@ -105,3 +106,18 @@ def test_series_converges_to_exact():
         err = rel(planar.series_period_ratio(amplitude, order), ref_ratio(amplitude))
         assert err < bound
     assert rel(planar.series_period_ratio(150.0, 8), ref_ratio(150.0)) > 1e-2  # slow near 180°
+
+
+@pytest.mark.parametrize("amplitude", [1.0, 20.0, 90.0, 179.0, 180 - 1e-10])
+def test_agm_ellipk_against_mpmath(amplitude):
+    """K(m) from the AGM of 1 and k' against mpmath.ellipk; the AGM converges quadratically."""
+    kc = planar.complementary_modulus(amplitude)
+    with mpmath.workdps(50):
+        m = mpmath.sin(mpmath.mpf(amplitude) * mpmath.pi / 360) ** 2
+        exact = mpmath.ellipk(m)
+    value, used = planar.agm_ellipk(kc)
+    assert rel(value, exact) < 4e-16
+    assert used <= 8  # even 1e-10° from 180° (k' ~ 1e-12): a handful of steps
+    errors = [rel(planar.agm_ellipk(kc, k)[0], exact) for k in (1, 2, 3)]
+    for before, after in itertools.pairwise(errors):
+        assert after <= max(10 * before**2, 1e-15)  # each step squares the error
