@@ -1,14 +1,18 @@
-"""Parsing printed numbers: values and the precision the print implies."""
+"""Parsing printed numbers: values and the precision the print implies.
 
-import math
+Expectations are exact rationals (Fraction) or mpmath at 30 digits, never the parser's own
+floating-point expression.
+"""
+
 from fractions import Fraction
 
+import mpmath
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.numbers import parse_printed
+from pendcli.core.numbers import exact_number, parse_printed
 
 
 @pytest.mark.parametrize(
@@ -33,23 +37,29 @@ def test_decimals(text, value, resolution):
     assert p.resolution == pytest.approx(resolution, rel=1e-12)
 
 
+def _arc(d: int, m: int, s: Fraction | int) -> Fraction:
+    """Degrees, minutes, seconds of arc as an exact number of degrees."""
+    return d + Fraction(m, 60) + Fraction(s) / 3600
+
+
 @pytest.mark.parametrize(
     ("text", "degrees", "resolution_arcsec"),
     [
-        ("1°7'33''", 1 + 7 / 60 + 33 / 3600, 1.0),
-        ("2''", 2 / 3600, 1.0),
-        ("2'42''", 2 / 60 + 42 / 3600, 1.0),
-        ("30'", 0.5, 60.0),
-        ("20°", 20.0, 3600.0),
-        ("-1°7'33''", -(1 + 7 / 60 + 33 / 3600), 1.0),
-        ("1°7′33″", 1 + 7 / 60 + 33 / 3600, 1.0),
+        ("1°7'33''", _arc(1, 7, 33), 1),
+        ("2''", _arc(0, 0, 2), 1),
+        ("2'42''", _arc(0, 2, 42), 1),
+        ("30'", Fraction(1, 2), 60),
+        ("20°", Fraction(20), 3600),
+        ("-1°7'33''", -_arc(1, 7, 33), 1),
+        ("1°7′33″", _arc(1, 7, 33), 1),
+        ("1°7'33,25''", _arc(1, 7, Fraction(3325, 100)), Fraction(1, 100)),
     ],
 )
 def test_sexagesimal(text, degrees, resolution_arcsec):
     p = parse_printed(text)
     assert p.kind == "sexagesimal"
-    assert p.value == pytest.approx(degrees, rel=1e-15)
-    assert p.resolution * 3600 == pytest.approx(resolution_arcsec)
+    assert p.value == pytest.approx(float(degrees), rel=2e-16, abs=1e-300)
+    assert p.resolution == pytest.approx(float(Fraction(resolution_arcsec) / 3600), rel=1e-15)
 
 
 @pytest.mark.parametrize(
@@ -73,7 +83,9 @@ def test_exact_expressions(text, fraction, pi_power):
     assert p.is_exact and p.resolution is None
     assert p.exact == fraction
     assert p.pi_power == pi_power
-    assert p.value == pytest.approx(float(fraction) * math.pi**pi_power, rel=1e-15)
+    with mpmath.workdps(30):
+        reference = mpmath.mpf(fraction.numerator) / fraction.denominator * mpmath.pi**pi_power
+    assert p.value == pytest.approx(float(reference), rel=2e-16)
 
 
 @pytest.mark.parametrize("text", ["", "  ", "abc", "1,2,3", "1°7'x", "(2", "2/0", "2·", "1'2'3'"])
@@ -92,16 +104,32 @@ def test_malformed_values_raise_one_clear_error(text):
 def test_decimal_roundtrip(sign, whole, frac, comma):
     text = f"{sign}{whole}" + ((("," if comma else ".") + frac) if frac else "")
     p = parse_printed(text)
-    expected = float(f"{whole}.{frac}" if frac else whole) * (-1 if sign == "-" else 1)
-    assert p.value == expected
+    exact = whole + (Fraction(int(frac), 10 ** len(frac)) if frac else 0)
+    # float(Fraction) rounds correctly, as the parse of a decimal must: equal, not close
+    assert p.value == float(-exact if sign == "-" else exact)
     assert p.decimals == len(frac)
-    assert p.resolution == pytest.approx(10.0 ** -len(frac))
+    assert p.resolution == pytest.approx(float(Fraction(1, 10 ** len(frac))), rel=1e-15)
 
 
 @given(d=st.integers(0, 359), m=st.integers(0, 59), s=st.integers(0, 59), which=st.integers(0, 2))
 def test_sexagesimal_roundtrip(d, m, s, which):
     text = [f"{d}°{m}'{s}''", f"{m}'{s}''", f"{s}''"][which]
-    expected = [d + m / 60 + s / 3600, m / 60 + s / 3600, s / 3600][which]
+    expected = [_arc(d, m, s), _arc(0, m, s), _arc(0, 0, s)][which]
     p = parse_printed(text)
-    assert p.value == pytest.approx(expected, abs=1e-12)
-    assert p.resolution == pytest.approx(1 / 3600)
+    assert p.value == pytest.approx(float(expected), rel=4e-16, abs=1e-300)
+    assert p.resolution == pytest.approx(float(Fraction(1, 3600)), rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("text", "fraction"),
+    [("5", Fraction(5)), ("0,35", Fraction(35, 100)), ("-2,50", Fraction(-5, 2))],
+)
+def test_exact_number_makes_a_decimal_exact(text, fraction):
+    p = exact_number(parse_printed(text))
+    assert p.is_exact and p.resolution is None and p.exact == fraction
+    assert exact_number(p) is p  # already exact
+
+
+def test_only_a_decimal_can_be_declared_exact():
+    with pytest.raises(PendcliError, match="only a decimal"):
+        exact_number(parse_printed("1°7'33''"))

@@ -63,46 +63,11 @@ def parse_printed(text: str) -> PrintedNumber:
             f"empty printed value {text!r}; expected e.g. '5,14', '1°7\\'33\\'\\'', '1/5'"
         )
     s = _normalise(text)
-
     m = _DECIMAL.match(s) or _UNIT_MIDDLE.match(s)
     if m:
-        groups = m.groups()
-        sign, whole, frac = groups[0], groups[1], groups[-1]
-        frac = frac or ""
-        magnitude = float(f"{whole}.{frac}") if frac else float(whole)
-        value = -magnitude if sign == "-" else magnitude
-        return PrintedNumber(
-            text=text,
-            value=value,
-            resolution=10.0 ** (-len(frac)),
-            kind="decimal",
-            decimals=len(frac),
-        )
-
+        return _decimal(text, m)
     if any(c in s for c in "°'″\""):
-        m = _SEXAGESIMAL.match(s)
-        if m and any(m.group(i) for i in (2, 3, 4)):
-            sign, deg, minutes, seconds = m.groups()
-            value = 0.0
-            resolution = 1.0
-            if deg:
-                value += int(deg)
-                resolution = 1.0
-            if minutes:
-                value += int(minutes) / 60
-                resolution = 1 / 60
-            if seconds:
-                sec_text = seconds.replace(",", ".")
-                value += float(sec_text) / 3600
-                decimals = len(sec_text.split(".")[1]) if "." in sec_text else 0
-                resolution = 10.0 ** (-decimals) / 3600
-            if sign == "-":
-                value = -value
-            return PrintedNumber(text=text, value=value, resolution=resolution, kind="sexagesimal")
-        raise PendcliError(
-            f"malformed sexagesimal angle {text!r}; expected e.g. 1°7'33'' or 2'42''"
-        )
-
+        return _sexagesimal(text, s)
     exact, pi_power = _parse_exact(s, text)
     value = float(exact) * math.pi**pi_power
     return PrintedNumber(
@@ -110,8 +75,46 @@ def parse_printed(text: str) -> PrintedNumber:
     )
 
 
-def _parse_exact(s: str, original: str) -> tuple[Fraction, int]:
-    """Evaluate an exact expression: integers, π, products, quotients, parentheses."""
+def _decimal(text: str, m: re.Match[str]) -> PrintedNumber:
+    """``5,14``, ``-0,130``, ``0^m,35``: the unit of the last place is 10^-(decimals)."""
+    groups = m.groups()
+    sign, whole, frac = groups[0], groups[1], groups[-1] or ""
+    magnitude = float(f"{whole}.{frac}") if frac else float(whole)
+    return PrintedNumber(
+        text=text,
+        value=-magnitude if sign == "-" else magnitude,
+        resolution=10.0 ** (-len(frac)),
+        kind="decimal",
+        decimals=len(frac),
+    )
+
+
+def _sexagesimal(text: str, s: str) -> PrintedNumber:
+    """``1°7'33''``, ``2'42''``, ``30'``: degrees, known to the last printed unit of arc."""
+    m = _SEXAGESIMAL.match(s)
+    if not (m and any(m.group(i) for i in (2, 3, 4))):
+        raise PendcliError(
+            f"malformed sexagesimal angle {text!r}; expected e.g. 1°7'33'' or 2'42''"
+        )
+    sign, deg, minutes, seconds = m.groups()
+    value = 0.0
+    resolution = 1.0
+    if deg:
+        value += int(deg)
+    if minutes:
+        value += int(minutes) / 60
+        resolution = 1 / 60
+    if seconds:
+        sec_text = seconds.replace(",", ".")
+        value += float(sec_text) / 3600
+        decimals = len(sec_text.split(".")[1]) if "." in sec_text else 0
+        resolution = 10.0 ** (-decimals) / 3600
+    if sign == "-":
+        value = -value
+    return PrintedNumber(text=text, value=value, resolution=resolution, kind="sexagesimal")
+
+
+def _tokens(s: str, original: str) -> list[str]:
     tokens: list[str] = []
     pos = 0
     while pos < len(s):
@@ -125,52 +128,58 @@ def _parse_exact(s: str, original: str) -> tuple[Fraction, int]:
         pos = m.end()
         while pos < len(s) and s[pos].isspace():
             pos += 1
+    return tokens
 
-    # Recursive descent: expr := factor (( '·' | '*' | '/' | juxtaposition) factor)*
-    index = 0
 
-    def factor() -> tuple[Fraction, int]:
-        nonlocal index
-        if index >= len(tokens):
-            raise PendcliError(f"printed value {original!r} ends too early")
-        tok = tokens[index]
-        index += 1
+def _parse_exact(s: str, original: str) -> tuple[Fraction, int]:
+    """Evaluate an exact expression: integers, π, products, quotients, parentheses."""
+    parser = _ExactParser(_tokens(s, original), original)
+    result = parser.expr()
+    if parser.index != len(parser.tokens):
+        raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
+    return result
+
+
+class _ExactParser:
+    """Recursive descent: expr := factor (('·' | '*' | '×' | '.' | '/' | juxtaposition) factor)*,
+    factor := integer | π | '(' expr ')'. A value is (rational, power of π)."""
+
+    def __init__(self, tokens: list[str], original: str) -> None:
+        self.tokens = tokens
+        self.original = original
+        self.index = 0
+
+    def factor(self) -> tuple[Fraction, int]:
+        if self.index >= len(self.tokens):
+            raise PendcliError(f"printed value {self.original!r} ends too early")
+        tok = self.tokens[self.index]
+        self.index += 1
         if tok == "(":
-            val = expr()
-            if index >= len(tokens) or tokens[index] != ")":
-                raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
-            index += 1
+            val = self.expr()
+            if self.index >= len(self.tokens) or self.tokens[self.index] != ")":
+                raise PendcliError(f"unbalanced parenthesis in printed value {self.original!r}")
+            self.index += 1
             return val
         if tok in ("π", "pi"):
             return Fraction(1), 1
         if tok.isdigit():
             return Fraction(int(tok)), 0
-        raise PendcliError(f"unexpected {tok!r} in printed value {original!r}")
+        raise PendcliError(f"unexpected {tok!r} in printed value {self.original!r}")
 
-    def expr() -> tuple[Fraction, int]:
-        nonlocal index
-        val, power = factor()
-        while index < len(tokens) and tokens[index] != ")":
-            op = tokens[index]
-            if op in ("·", "*", "×", "."):
-                index += 1
-                rhs, rp = factor()
+    def expr(self) -> tuple[Fraction, int]:
+        val, power = self.factor()
+        while self.index < len(self.tokens) and self.tokens[self.index] != ")":
+            op = self.tokens[self.index]
+            if op in ("·", "*", "×", ".", "/"):
+                self.index += 1
+            rhs, rp = self.factor()  # juxtaposition, as in "2 2/(1·3)" printed for 2·2/(1·3)
+            if op != "/":
                 val, power = val * rhs, power + rp
-            elif op == "/":
-                index += 1
-                rhs, rp = factor()
-                if rhs == 0:
-                    raise PendcliError(f"division by zero in printed value {original!r}")
+            elif rhs == 0:
+                raise PendcliError(f"division by zero in printed value {self.original!r}")
+            else:
                 val, power = val / rhs, power - rp
-            else:  # juxtaposition, as in "2 2/(1·3)" printed for 2·2/(1·3)
-                rhs, rp = factor()
-                val, power = val * rhs, power + rp
         return val, power
-
-    result = expr()
-    if index != len(tokens):
-        raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
-    return result
 
 
 def exact_number(printed: PrintedNumber) -> PrintedNumber:
