@@ -97,3 +97,48 @@ def test_precision_exact_makes_a_decimal_exact(tmp_path):
     other.mkdir()
     with pytest.raises(PendcliError, match="precision"):
         load_paper_table("demo", write(other, text.replace('"exact"', '"loose"')))
+
+
+CONSTANTS = """
+[paper.constants.g]
+value = 9.81
+unit = "m/s²"
+source = "assumption: the value used in the paper's time"
+"""
+
+
+def _with_constants(text: str) -> str:
+    return GOOD.replace('seed = "x.txt"\n', 'seed = "x.txt"\n' + text)
+
+
+def test_constants_and_claims_are_looked_up_by_name(tmp_path):
+    table = load_paper_table("demo", write(tmp_path, _with_constants(CONSTANTS)))
+    assert table.constant("g") == 9.81
+    assert table.constants[0].unit == "m/s²"
+    assert table.claim("demo.a").published == "5,14"
+    with pytest.raises(PendcliError, match=r"no constant 'speed'.*known: g"):
+        table.constant("speed")
+    with pytest.raises(PendcliError, match=r"no published claim 'demo\.b'"):
+        table.claim("demo.b")
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (CONSTANTS.replace("value = 9.81", 'value = "9.81"'), "value must be a number"),
+        (CONSTANTS.replace("value = 9.81", "value = true"), "value must be a number"),
+        (
+            CONSTANTS.replace(
+                'source = "assumption: the value used in the paper\'s time"', 'source = ""'
+            ),
+            "source must say where the value comes from",
+        ),
+        (CONSTANTS + 'colour = "red"\n', "unknown field(s) colour"),
+        ("[paper.constants]\ng = 9.81\n", "must be a table with value, unit, source"),
+    ],
+)
+def test_malformed_constants_name_the_constant(tmp_path, text, message):
+    with pytest.raises(PendcliError) as err:
+        load_paper_table("demo", write(tmp_path, _with_constants(text)))
+    assert "demo.toml" in str(err.value) and message in str(err.value)
+    assert "\n" not in str(err.value)

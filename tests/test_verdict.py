@@ -37,6 +37,25 @@ def test_examples(printed, recomputed, verdict):
     assert judge(parse_printed(printed), recomputed).verdict is verdict
 
 
+@pytest.mark.parametrize(
+    ("recomputed", "verdict"),
+    [
+        (5.135, Verdict.AGREES),  # exactly half a unit below, as written in decimal
+        (5.134999999999, Verdict.AGREES),  # 2e-13 relative: within the 1e-12 slack
+        (5.13499999999, Verdict.LAST_DIGIT),  # 2e-12 relative: beyond it
+        (5.145, Verdict.AGREES),  # half a unit above
+        (5.14500000001, Verdict.TRUNCATED),  # above half a unit: chops to 5,14
+        (5.14999999999, Verdict.TRUNCATED),
+        (5.155, Verdict.LAST_DIGIT),  # 1.5 units: the last-digit boundary, inclusive
+        (5.15500000001, Verdict.DISCREPANT),
+        (5.12500000001, Verdict.LAST_DIGIT),
+        (5.12499999999, Verdict.DISCREPANT),
+    ],
+)
+def test_boundaries_of_5_14(recomputed, verdict):
+    assert judge(parse_printed("5,14"), recomputed).verdict is verdict
+
+
 def test_upper_bound():
     fifth = parse_printed("1/5")
     assert judge(fifth, 0.19, "upper-bound").verdict is Verdict.AGREES

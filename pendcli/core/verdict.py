@@ -17,8 +17,9 @@ the recomputed value equals it to floating-point accuracy (``|r - p| <= 8 eps |p
 discrepant otherwise. A claim of the form "at most p" (``comparison = "upper-bound"``) agrees
 when ``r`` rounded to the printed precision is ``<= p``, and is discrepant otherwise.
 
-Boundaries are widened by a relative 1e-12 so that a value like 5.135 recomputed as
-5.13499999999 is judged by its digits, not by binary representation error.
+Boundaries are widened by a relative 1e-12 so that a value on a boundary, like 5.135 against
+``5,14`` (stored as 5.13499999999999978...) or recomputed as 5.134999999999, is judged by its
+digits, not by binary representation error; 5.13499999999 (2e-12 below) is not on it.
 """
 
 from __future__ import annotations
