@@ -44,11 +44,23 @@ def test_integral_accepts_negative_order_and_real_x():
     assert json.loads(out)["integral"]["value"] == 2.5
 
 
+def _pixels_of(image, rgb: tuple[int, int, int]) -> int:
+    import numpy as np
+
+    return int(np.all(np.abs(image[:, :, :3] - np.array(rgb) / 255) < 0.05, axis=-1).sum())
+
+
 def test_plot_is_written(tmp_path):
+    """The figure shows the recomputed curve (tab:blue) and the printed entries (tab:red)."""
+    import matplotlib.image as mpimg
+
     path = tmp_path / "in.png"
-    code, _, err = invoke("charbonnier", "table", "--plot", str(path), "--format", "json")
+    code, out, err = invoke("charbonnier", "table", "--plot", str(path), "--format", "json")
     assert code == 0, err
-    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert json.loads(out)["claims"]  # the plot does not replace the output
+    image = mpimg.imread(path)
+    assert _pixels_of(image, (31, 119, 180)) > 200  # the curve
+    assert _pixels_of(image, (214, 39, 40)) > 50  # the printed entries' circles
 
 
 @pytest.mark.parametrize(
