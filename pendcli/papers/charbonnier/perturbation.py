@@ -61,9 +61,11 @@ class CheckPendulum:
         return math.pi / self.k
 
 
-@cache
 def check_pendulum() -> CheckPendulum:
-    """g, l0 and α of the checks, from ``[paper.constants]`` (assumptions: see the table)."""
+    """g, l0 and α of the checks, from ``[paper.constants]`` (assumptions: see the table).
+
+    Not cached here: the table loader caches, and its cache can be cleared.
+    """
     table = load_paper_table("charbonnier")
     return CheckPendulum(table.constant("g"), table.constant("l0"), table.constant("alpha"))
 
