@@ -16,6 +16,10 @@ FormatOption = Annotated[
     OutputFormat,
     typer.Option("--format", "-f", help="Output format.", case_sensitive=False),
 ]
+PaperOption = Annotated[
+    str | None,
+    typer.Option("--paper", "-p", help="Only this paper: tisserand, lecornu or charbonnier."),
+]
 PlotOption = Annotated[
     Path | None,
     typer.Option("--plot", help="Also draw the comparison to this file (.png, .svg or .pdf)."),

@@ -3,54 +3,67 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, emit
+from pendcli.cli.common import FormatOption, PaperOption, emit
 from pendcli.render import OutputFormat
 
-app = typer.Typer(
-    help="Derived formulas (series in a small parameter) against direct numerical integration.",
-    invoke_without_command=True,
-)
+if TYPE_CHECKING:
+    from pendcli.core.claims import FormulaRow
+    from pendcli.render import Section
+
+FigureFolderOption = Annotated[
+    Path | None,
+    typer.Option("--plot", help="Also draw residual against parameter (log-log) into DIR."),
+]
 
 
-@app.callback(invoke_without_command=True)
 def formulas(
-    paper: Annotated[
-        str | None,
-        typer.Option("--paper", "-p", help="Only this paper: tisserand, lecornu or charbonnier."),
-    ] = None,
+    paper: PaperOption = None,
     fmt: FormatOption = OutputFormat.table,
-    plot: Annotated[
-        Path | None,
-        typer.Option("--plot", help="Also draw residual against parameter (log-log) into DIR."),
-    ] = None,
+    plot: FigureFolderOption = None,
 ) -> None:
     """Residual of each derived formula as its small parameter shrinks: observed order, verdict."""
     from pendcli.core.claims import resolve_papers
-    from pendcli.core.errors import PendcliError
     from pendcli.papers import formula_checks
-    from pendcli.render.views import FORMULA_COLUMNS
 
     keys = resolve_papers(paper)
+    _check_figure_folder(plot)
+    results = {key: formula_checks(key) for key in keys}
+    rows = [r.as_dict() for key in keys for r in results[key]]
+    emit(fmt, _sections(results), {"claims": [], "formulas": rows})
+    if plot is not None:
+        written = _draw(plot, results)
+        if fmt is OutputFormat.table:
+            from pendcli.cli.common import say
+
+            say(f"wrote {len(written)} figure(s) to {plot}")
+
+
+def _check_figure_folder(plot: Path | None) -> None:
+    from pendcli.core.errors import PendcliError
+
     if plot is not None and plot.exists() and not plot.is_dir():
         raise PendcliError(f"--plot {str(plot)!r} is a file; give a folder for the figures")
-    results = {key: formula_checks(key) for key in keys}
-    sections = []
-    for key in keys:
-        rows = [r.as_dict() for r in results[key]]
-        sections.append((f"{key.capitalize()}: derived formulas", rows, FORMULA_COLUMNS))
-    emit(fmt, sections, {"claims": [], "formulas": [r.as_dict() for k in keys for r in results[k]]})
-    if plot is not None:
-        import importlib
 
-        from pendcli.cli.common import say
 
-        written = []
-        for key in keys:
-            module = importlib.import_module(f"pendcli.papers.{key}.formulas")
-            written += module.figures(plot, results[key])
-        if fmt is OutputFormat.table:
-            say(f"wrote {len(written)} figure(s) to {plot}")
+def _sections(results: dict[str, list[FormulaRow]]) -> list[Section]:
+    from pendcli.render.views import FORMULA_COLUMNS
+
+    return [
+        (f"{key.capitalize()}: derived formulas", [r.as_dict() for r in rows], FORMULA_COLUMNS)
+        for key, rows in results.items()
+    ]
+
+
+def _draw(folder: Path, results: dict[str, list[FormulaRow]]) -> list[Path]:
+    """Each paper's residual figures (papers/<paper>/formulas.py ``figures``) into ``folder``."""
+    import importlib
+
+    written: list[Path] = []
+    for key, rows in results.items():
+        module = importlib.import_module(f"pendcli.papers.{key}.formulas")
+        written += module.figures(folder, rows)
+    return written

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Annotated, NoReturn
 import typer
 from typer.core import TyperGroup
 
-from pendcli.cli.common import FormatOption, emit
+from pendcli.cli.common import FormatOption, PaperOption, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:  # click as typer vendors it; only its types are named here
@@ -100,11 +100,6 @@ app = typer.Typer(
     # more than the rest of start-up together.
     rich_markup_mode=None,
 )
-
-PaperOption = Annotated[
-    str | None,
-    typer.Option("--paper", "-p", help="Only this paper: tisserand, lecornu or charbonnier."),
-]
 
 
 def _version(value: bool) -> None:
