@@ -4,9 +4,13 @@ from __future__ import annotations
 
 import os
 import sys
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 
-def console(stderr: bool = False):
+def console(stderr: bool = False) -> Console:
     """A rich console: colour only on a terminal and never when NO_COLOR is set."""
     from rich.console import Console
 

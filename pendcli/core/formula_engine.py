@@ -28,11 +28,11 @@ tighter tolerance) and check the residuals do not move beyond the stated error b
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import numpy as np
 
@@ -62,6 +62,8 @@ __all__ = [
     "richardson",
 ]
 
+# A dense ODE solution (scipy's OdeSolution): t or an array of t -> the state (components first).
+DenseSolution = Callable[..., np.ndarray]
 N = TypeVar("N", float, Fraction)  # a number richardson works on exactly as given
 
 ORDER_TOLERANCE = 0.3  # |observed − claimed| allowed below the claim; above it is "better"
@@ -87,7 +89,9 @@ class Reference:
         """
         return 100.0 * max(self.rtol, self.atol)
 
-    def solve(self, rhs: Callable, t_end: float, y0: Sequence[float], t0: float = 0.0):
+    def solve(
+        self, rhs: Callable[..., Any], t_end: float, y0: Sequence[float], t0: float = 0.0
+    ) -> DenseSolution:
         """Integrate y' = rhs(t, y) from t0 to t_end with dense output (the OdeSolution)."""
         from scipy.integrate import solve_ivp
 
@@ -112,7 +116,9 @@ class Reference:
 DEFAULT_REFERENCE = Reference()
 
 
-def crossings(sol, component: int, t0: float, t1: float, count: int, grid: int = 400) -> list:
+def crossings(
+    sol: DenseSolution, component: int, t0: float, t1: float, count: int, grid: int = 400
+) -> list[float]:
     """The first ``count`` zeros of one component of a dense solution in (t0, t1]."""
     from scipy.optimize import brentq
 
@@ -208,9 +214,20 @@ def _judge_order(
     )
 
 
+@overload
 def leading_coefficient(
     params: Sequence[float], residuals: Sequence[float], order: int, step: int = 1
-):
+) -> float: ...
+@overload
+def leading_coefficient(
+    params: Sequence[float], residuals: Sequence[np.ndarray], order: int, step: int = 1
+) -> np.ndarray: ...
+def leading_coefficient(
+    params: Sequence[float],
+    residuals: Sequence[float] | Sequence[np.ndarray],
+    order: int,
+    step: int = 1,
+) -> float | np.ndarray:
     """c in residual ≈ c·p^order (1 + d·p^step), by Richardson on the two smallest parameters.
 
     ``residuals`` may hold arrays (a coefficient function sampled on a grid).
@@ -253,7 +270,9 @@ def extrapolate_to_zero(
     return float(np.polyval(np.polyfit(x, np.asarray(values, dtype=float), deg), 0.0))
 
 
-def fit_basis(grid: np.ndarray, values: np.ndarray, basis: dict[str, Callable]) -> dict:
+def fit_basis(
+    grid: np.ndarray, values: np.ndarray, basis: Mapping[str, Callable[..., np.ndarray]]
+) -> dict[str, float]:
     """Least-squares coefficients of values on named functions of the grid."""
     names = list(basis)
     mat = np.stack([basis[n](grid) for n in names], axis=1)
@@ -262,7 +281,9 @@ def fit_basis(grid: np.ndarray, values: np.ndarray, basis: dict[str, Callable]) 
 
 
 def identify_combination(
-    value: float, terms: Sequence[tuple[float, str]], denominators=DENOMINATORS[:14]
+    value: float,
+    terms: Sequence[tuple[float, str]],
+    denominators: Sequence[int] = DENOMINATORS[:14],
 ) -> str | None:
     """Recognise value as (n1·term1 + n2·term2)/d with integers |n_i| <= 200, or None."""
     best = None

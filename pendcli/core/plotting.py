@@ -2,15 +2,22 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
+
+if TYPE_CHECKING:
+    from types import ModuleType
+
+    from matplotlib.figure import Figure
 
 __all__ = ["new_figure", "save_figure"]
 
 
-def _pyplot():
+def _pyplot() -> ModuleType:
     import matplotlib
 
     matplotlib.use("Agg", force=True)
@@ -21,8 +28,13 @@ def _pyplot():
 
 
 @contextmanager
-def new_figure(path: str | Path, *, nrows: int = 1, ncols: int = 1, size=(7.0, 4.5)):
-    """Yield (fig, axes) and save to ``path`` on exit (PNG, no timestamp metadata)."""
+def new_figure(
+    path: str | Path, *, nrows: int = 1, ncols: int = 1, size: tuple[float, float] = (7.0, 4.5)
+) -> Iterator[tuple[Figure, Any]]:
+    """Yield (fig, axes) and save to ``path`` on exit (PNG, no timestamp metadata).
+
+    ``axes`` is one Axes for a single panel, else an array of them (``nrows`` × ``ncols``).
+    """
     plt = _pyplot()
     fig, axes = plt.subplots(nrows, ncols, figsize=size, squeeze=nrows * ncols == 1)
     try:
@@ -32,7 +44,7 @@ def new_figure(path: str | Path, *, nrows: int = 1, ncols: int = 1, size=(7.0, 4
         plt.close(fig)
 
 
-def save_figure(fig, path: str | Path) -> Path:
+def save_figure(fig: Figure, path: str | Path) -> Path:
     path = Path(path)
     if path.suffix.lower() not in (".png", ".svg", ".pdf"):
         raise PendcliError(f"plot path {str(path)!r} must end in .png, .svg or .pdf")
