@@ -7,6 +7,7 @@ pendulum done exactly), :mod:`pendcli.papers` (one package per paper: its model,
 formulas, figures and speed/accuracy families) and :mod:`pendcli.cli`, a thin adapter.
 """
 
+
 # The version has one source, pyproject.toml, read through the installed metadata.
 def __getattr__(name: str) -> str:
     if name == "__version__":
