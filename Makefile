@@ -23,6 +23,7 @@ test: $(STAMP)
 
 check: $(STAMP)
 	$(BIN)/pendcli check
+	$(BIN)/python -m pendcli.docs --check
 
 regen: $(STAMP)
 	$(BIN)/pendcli check --update
