@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING
 
 from pendcli.core.claims import PAPERS
 from pendcli.core.errors import PendcliError
+from pendcli.core.files import locked, remove_stale, replace_directory
 from pendcli.core.tables import tables_dir
 from pendcli.render.columns import Column
 from pendcli.render.csv import to_csv
@@ -194,11 +195,16 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     tables = regenerated_tables(result)
     out = console()
     if update:
-        _rewrite(folder, tables)
+        removed = _rewrite(folder, tables)
         if not quiet:
             out.print(f"rewrote {len(tables)} tables in {folder}")
+            if removed:
+                out.print(
+                    f"removed {len(removed)} table(s) no longer produced: {', '.join(removed)}"
+                )
         return 0
-    drifts = find_drifts(folder, tables)
+    with locked(_lock_file(folder), shared=True):
+        drifts = find_drifts(folder, tables)
     if drifts:
         _print_drifts(out, drifts)
         return 1
@@ -212,14 +218,27 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     return 0
 
 
-def _rewrite(folder: Path, tables: dict[str, str]) -> None:
-    """``pendcli check --update``: the committed tables become the regenerated ones."""
-    folder.mkdir(parents=True, exist_ok=True)
-    for stale in folder.glob("*.csv"):
-        if stale.name not in tables:
-            stale.unlink()
-    for name, text in tables.items():
-        (folder / name).write_text(text, encoding="utf-8")
+def _lock_file(folder: Path) -> Path:
+    return folder.parent / f".{folder.name}.lock"
+
+
+def _rewrite(folder: Path, tables: dict[str, str]) -> list[str]:
+    """``pendcli check --update``: the committed tables become the regenerated ones.
+
+    The whole set is written beside the folder and swapped in at once under an exclusive
+    lock, so a crash leaves the old set or the new one, never a mix or a cut table.
+    Returns the names of the tables that are no longer produced (removed by the swap).
+    """
+
+    def fill(tmp: Path) -> None:
+        for name, text in tables.items():
+            (tmp / name).write_text(text, encoding="utf-8")
+
+    removed = sorted(p.name for p in folder.glob("*.csv") if p.name not in tables)
+    with locked(_lock_file(folder)):
+        remove_stale(folder.parent, folder.name)
+        replace_directory(folder, fill)
+    return removed
 
 
 def _print_drifts(out: Console, drifts: list[Drift]) -> None:
