@@ -118,7 +118,7 @@ def test_constants_and_claims_are_looked_up_by_name(tmp_path):
     assert table.claim("demo.a").published == "5,14"
     with pytest.raises(PendcliError, match=r"no constant 'speed'.*known: g"):
         table.constant("speed")
-    with pytest.raises(PendcliError, match=r"no published claim 'demo\.b'"):
+    with pytest.raises(PendcliError, match=r"demo\.toml: no claim 'demo\.b'.*renamed"):
         table.claim("demo.b")
 
 
@@ -133,7 +133,7 @@ def test_constants_and_claims_are_looked_up_by_name(tmp_path):
             ),
             "source must say where the value comes from",
         ),
-        (CONSTANTS + 'colour = "red"\n', "unknown field(s) colour"),
+        (CONSTANTS + 'colour = "red"\n', "unknown field(s) 'colour'; valid: value, unit, source"),
         ("[paper.constants]\ng = 9.81\n", "must be a table with value, unit, source"),
     ],
 )
@@ -142,3 +142,65 @@ def test_malformed_constants_name_the_constant(tmp_path, text, message):
         load_paper_table("demo", write(tmp_path, _with_constants(text)))
     assert "demo.toml" in str(err.value) and message in str(err.value)
     assert "\n" not in str(err.value)
+
+
+SECOND = """
+[[claim]]
+id = "demo.b"
+source = "p. 2"
+quantity = "b"
+published = "2,5"
+"""
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (GOOD.replace("[[claim]]", "[[claims]]") + SECOND, "top-level section(s) 'claims'"),
+        (GOOD + "\n[extra]\nx = 1\n", "top-level section(s) 'extra'"),
+        (GOOD.replace('seed = "x.txt"', 'seed = "x.txt"\nasumptions = []'), "'asumptions'"),
+        (GOOD.replace('quantity = "a"', 'quantity = "a"\nnotes = "x"'), "claim 'demo.a'"),
+        (GOOD.replace('quantity = "a"', 'quantity = "a"\nnotes = "x"'), "valid: id, source"),
+    ],
+)
+def test_unknown_sections_and_keys_are_refused(tmp_path, text, message):
+    with pytest.raises(PendcliError) as err:
+        load_paper_table("demo", write(tmp_path, text))
+    assert "demo.toml" in str(err.value) and message in str(err.value)
+    assert "\n" not in str(err.value)
+
+
+def _caused(cause: str, sources: str | None) -> str:
+    extra = f'cause = "{cause}"' + (f"\nfrom = {sources}" if sources is not None else "")
+    return GOOD + SECOND.replace('published = "2,5"', 'published = "2,5"\n' + extra)
+
+
+def test_cause_and_from_are_read(tmp_path):
+    table = load_paper_table("demo", write(tmp_path, _caused("propagated", '["demo.a"]')))
+    assert table.claim("demo.b").cause == "propagated"
+    assert table.claim("demo.b").cause_from == ("demo.a",)
+    assert table.claim("demo.a").cause is None and table.claim("demo.a").cause_from == ()
+    other = tmp_path / "other"
+    other.mkdir()
+    table = load_paper_table("demo", write(other, _caused("misprint", None)))
+    assert table.claim("demo.b").cause == "misprint"
+
+
+@pytest.mark.parametrize(
+    ("cause", "sources", "message"),
+    [
+        ("typo", None, "cause 'typo' is not one of rounding, truncation"),
+        ("propagated", None, "needs 'from'"),
+        ("propagated", "[]", "needs 'from'"),
+        ("propagated", '"demo.a"', "needs 'from'"),
+        ("propagated", '["demo.zz"]', "'from' names 'demo.zz'"),
+        ("propagated", '["demo.b"]', "'from' names 'demo.b'"),
+        ("propagated", '["demo.a", "demo.a"]', "repeats"),
+        ("rounding", '["demo.a"]', "only for cause"),
+    ],
+)
+def test_bad_cause_or_from_is_refused(tmp_path, cause, sources, message):
+    with pytest.raises(PendcliError) as err:
+        load_paper_table("demo", write(tmp_path, _caused(cause, sources)))
+    assert "demo.toml" in str(err.value) and "demo.b" in str(err.value)
+    assert message in str(err.value)

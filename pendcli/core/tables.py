@@ -19,21 +19,35 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
 
 __all__ = [
+    "CAUSES",
     "PaperConstant",
     "PaperTable",
     "PublishedValue",
     "clear_table_cache",
     "load_paper_table",
+    "missing_claim",
     "paper_constant",
     "tables_dir",
 ]
 
+_SECTIONS = ("paper", "claim")  # top level: [paper] and [[claim]], nothing else
 _REQUIRED = ("id", "source", "quantity", "published")
-_OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison", "precision")
+_OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison", "precision", "cause")
+_CLAIM_FIELDS = (*_REQUIRED, *_OPTIONAL, "from")
 _PAPER_FIELDS = ("key", "citation", "seed", "assumptions", "constants")
 _CONSTANT_FIELDS = ("value", "unit", "source")
 _PRECISIONS = ("printed", "exact")
 _COMPARISONS = ("equal", "upper-bound")
+# Why a printed value disagrees, when it does (tables/README.md explains each).
+CAUSES = (
+    "rounding",
+    "truncation",
+    "propagated",
+    "arithmetic-slip",
+    "misprint",
+    "derivation-error",
+    "model-approximation",
+)
 
 
 @dataclass(frozen=True)
@@ -51,6 +65,8 @@ class PublishedValue:
     ocr: str = ""  # OCR correction and its reason, if any
     as_printed: str = ""  # the OCR text, when `published` normalises its notation
     comparison: str = "equal"
+    cause: str | None = None  # why it disagrees (one of CAUSES), when known
+    cause_from: tuple[str, ...] = ()  # the claims it inherits an error from ("propagated")
 
 
 @dataclass(frozen=True)
@@ -71,6 +87,11 @@ class PaperTable:
     assumptions: tuple[str, ...]
     claims: tuple[PublishedValue, ...]
     constants: tuple[PaperConstant, ...] = ()
+    path: Path | None = None  # the file it was read from, for error messages
+
+    @property
+    def where(self) -> str:
+        return str(self.path) if self.path is not None else f"published/{self.key}.toml"
 
     def constant(self, name: str) -> float:
         """The value of constant ``name`` from ``[paper.constants]``."""
@@ -78,16 +99,28 @@ class PaperTable:
             if c.name == name:
                 return c.value
         raise PendcliError(
-            f"{self.key}: no constant {name!r} in [paper.constants]; "
+            f"{self.where}: no constant {name!r} in [paper.constants] (the code needs it); "
             f"known: {', '.join(c.name for c in self.constants) or 'none'}"
         )
 
-    def claim(self, claim_id: str) -> PublishedValue:
+    def claim(self, claim_id: str, needed_for: str = "") -> PublishedValue:
         """The published entry ``claim_id`` (a printed intermediate the model reuses)."""
         for c in self.claims:
             if c.id == claim_id:
                 return c
-        raise PendcliError(f"{self.key}: no published claim {claim_id!r}")
+        raise missing_claim(self.where, claim_id, needed_for)
+
+    def claim_ids(self) -> tuple[str, ...]:
+        return tuple(c.id for c in self.claims)
+
+
+def missing_claim(where: str, claim_id: str, needed_for: str = "") -> PendcliError:
+    """The error for a claim id the code needs but the published table lacks (renamed?)."""
+    purpose = f" for {needed_for}" if needed_for else ""
+    return PendcliError(
+        f"{where}: no claim {claim_id!r} (the code needs it{purpose}); "
+        "was it renamed or removed? Restore the id or update the code that uses it"
+    )
 
 
 def tables_dir() -> Path:
@@ -113,9 +146,7 @@ def _constants(path: Path, raw: object) -> tuple[PaperConstant, ...]:
         where = f"{path}: [paper.constants.{name}]"
         if not isinstance(entry, dict):
             raise PendcliError(f"{where} must be a table with value, unit, source")
-        unknown = set(entry) - set(_CONSTANT_FIELDS)
-        if unknown:
-            raise PendcliError(f"{where}: unknown field(s) {', '.join(sorted(unknown))}")
+        _refuse_unknown(where, "field(s)", entry, _CONSTANT_FIELDS)
         value = entry.get("value")
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise PendcliError(f"{where}: value must be a number")
@@ -145,6 +176,7 @@ def clear_table_cache() -> None:
 def _cached_table(key: str, root: Path) -> PaperTable:
     path = root / "published" / f"{key}.toml"
     raw = _read_toml(path)
+    _refuse_unknown(str(path), "top-level section(s)", raw, _SECTIONS)
     paper = _paper_header(path, raw.get("paper"), key)
     return PaperTable(
         key=key,
@@ -153,7 +185,17 @@ def _cached_table(key: str, root: Path) -> PaperTable:
         assumptions=tuple(paper.get("assumptions", [])),
         claims=_claims(path, raw.get("claim"), key),
         constants=_constants(path, paper.get("constants")),
+        path=path,
     )
+
+
+def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: tuple[str, ...]) -> None:
+    """A key the format does not know (a typo such as ``asumptions``) is an error, not ignored."""
+    unknown = sorted(set(entry) - set(valid))
+    if unknown:
+        raise PendcliError(
+            f"{where}: unknown {what} {', '.join(map(repr, unknown))}; valid: {', '.join(valid)}"
+        )
 
 
 def _read_toml(path: Path) -> dict[str, Any]:
@@ -169,9 +211,7 @@ def _paper_header(path: Path, paper: object, key: str) -> dict[str, Any]:
     """The ``[paper]`` table, checked: its key, citation, seed, assumptions, no other field."""
     if not isinstance(paper, dict) or paper.get("key") != key:
         raise PendcliError(f"{path}: [paper] must be a table with key = {key!r}")
-    unknown_paper = set(paper) - set(_PAPER_FIELDS)
-    if unknown_paper:
-        raise PendcliError(f"{path}: [paper]: unknown field(s) {', '.join(sorted(unknown_paper))}")
+    _refuse_unknown(f"{path}: [paper]", "field(s)", paper, _PAPER_FIELDS)
     for field in ("citation", "seed"):
         if not isinstance(paper.get(field), str):
             raise PendcliError(f"{path}: [paper] needs a string {field!r}")
@@ -189,6 +229,13 @@ def _claims(path: Path, entries: object, key: str) -> tuple[PublishedValue, ...]
     for index, entry in enumerate(entries, start=1):
         claims.append(_claim(path, index, entry, key, seen))
         seen.add(claims[-1].id)
+    for claim in claims:
+        for source_id in claim.cause_from:
+            if source_id not in seen or source_id == claim.id:
+                raise PendcliError(
+                    f"{path}: claim {claim.id!r}: 'from' names {source_id!r}, which is "
+                    "not another claim of this file"
+                )
     return tuple(claims)
 
 
@@ -219,7 +266,32 @@ def _claim(path: Path, index: int, entry: object, key: str, seen: set[str]) -> P
         ocr=entry.get("ocr", ""),
         as_printed=entry.get("as_printed", ""),
         comparison=comparison,
+        cause=entry.get("cause"),
+        cause_from=_cause_from(where, entry),
     )
+
+
+def _cause_from(where: str, entry: dict[str, Any]) -> tuple[str, ...]:
+    """``from``: the claims a ``propagated`` error comes from; required then, refused otherwise."""
+    cause = entry.get("cause")
+    if cause is not None and cause not in CAUSES:
+        raise PendcliError(f"{where}: cause {cause!r} is not one of {', '.join(CAUSES)}")
+    sources = entry.get("from")
+    if cause != "propagated":
+        if sources is not None:
+            raise PendcliError(f"{where}: 'from' is only for cause = \"propagated\"")
+        return ()
+    if (
+        not isinstance(sources, list)
+        or not sources
+        or not all(isinstance(s, str) and s for s in sources)
+    ):
+        raise PendcliError(
+            f"{where}: cause = \"propagated\" needs 'from', a non-empty list of claim ids"
+        )
+    if len(set(sources)) != len(sources):
+        raise PendcliError(f"{where}: 'from' repeats a claim id")
+    return tuple(sources)
 
 
 def _check_fields(where: str, entry: dict[str, Any]) -> None:
@@ -230,9 +302,7 @@ def _check_fields(where: str, entry: dict[str, Any]) -> None:
     for field in _OPTIONAL:
         if field in entry and not isinstance(entry[field], str):
             raise PendcliError(f"{where}: field {field!r} must be a string")
-    unknown = set(entry) - set(_REQUIRED) - set(_OPTIONAL)
-    if unknown:
-        raise PendcliError(f"{where}: unknown field(s) {', '.join(sorted(unknown))}")
+    _refuse_unknown(where, "field(s)", entry, _CLAIM_FIELDS)
 
 
 def _printed_number(where: str, published: str, precision: str) -> PrintedNumber:
