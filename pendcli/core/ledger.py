@@ -1,0 +1,344 @@
+"""The equation ledger: every numbered equation and stated result of a paper, accounted for.
+
+A ledger is ``tables/equations/<paper>.toml``: one ``[[equation]]`` row per equation label
+printed in the paper's text (``tables/papers/<paper>.txt``) and per stated result, with a
+status (``holds``, ``fails``, ``misprint``, ``definition``, ``not-checkable``) and, for the
+first three, the name of a check in ``pendcli.papers.<paper>.equations`` returning an
+:class:`~pendcli.core.ledger_check.EquationCheck`. This module knows nothing about pendulums:
+it reads and validates ledgers, extracts the labels a text prints, runs the checks and
+verifies that each agrees with the status its row records. A disagreement is an error in the
+ledger, reported, never re-labelled.
+"""
+
+from __future__ import annotations
+
+import importlib
+import re
+import tomllib
+from collections import Counter
+from collections.abc import Iterable
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+from pendcli.core.errors import PendcliError
+from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
+
+__all__ = [
+    "CHECKED_STATUSES",
+    "ROW_KEYS",
+    "Evaluated",
+    "Ledger",
+    "LedgerRow",
+    "coverage",
+    "equation_rows",
+    "evaluate",
+    "labels_in_text",
+    "ledger_papers",
+    "load_ledger",
+    "parse_ledger",
+    "run_check",
+    "verify",
+]
+
+CHECKED_STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint")
+LEDGER_KEYS = ("paper", "text")
+REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
+ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note")
+# The output layout issue 12 prescribes for `reproduce --format json` under "equations".
+OUTPUT_KEYS = (
+    "id",
+    "paper",
+    "equation",
+    "section",
+    "statement",
+    "status",
+    "check",
+    "observed_order",
+    "note",
+)
+
+# An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),
+# a roman numeral (I)-(XXXIX), or a single lower-case letter ((p), (q)); an OCR prime may be
+# a typewriter quote or a TeX ^{\prime}.
+_LABEL = r"(?:\d{1,3}[a-z]?|[IVX]{1,6}|[a-z])(?:'|’|\^\{?\\prime\}?)*"
+_LABEL_TOKEN = re.compile(rf"\(({_LABEL})\)")
+_LABEL_FORMAT = re.compile(rf"^\({_LABEL}\)$")
+# Where a label sits in display mathematics: at its start (after $$, a line break \\ or a
+# \begin{...}), in a \tag{...}, or at its end after a \quad (a label "in the margin").
+_OPENERS = r"(?:\$\$|\\\\|\\begin\{[a-zA-Z*]+\}(?:\{[^}]*\})?)"
+_AT_START = re.compile(rf"{_OPENERS}\s*\(({_LABEL})\)(?=\s|\\|\{{|$)")
+_TAGGED = re.compile(rf"\\tag\*?\{{\(?({_LABEL})\)?\}}")
+_AT_END = re.compile(rf"\\q?quad\s*\(({_LABEL})\)\s*(?:[.,;]\s*)?(?=\$\$|\\\\|\\end\{{)")
+_DISPLAY = re.compile(r"\$\$(.*?)\$\$", re.DOTALL)
+_ID = re.compile(r"^[a-z]+\.(?:eq|result)\.[A-Za-z0-9_'-]+(?:\.[a-z0-9-]+)?$")
+
+
+def _normalise(label: str) -> str:
+    return re.sub(r"’|\^\{?\\prime\}?", "'", label)
+
+
+def labels_in_text(text: str) -> list[str]:
+    """Every equation label the text prints, as ``"(41)"``, in order, repeats kept.
+
+    Only labels placed in display mathematics count (at the start of a formula line, in a
+    ``\\tag``, or in the margin at its end): a reference in the prose ("la formule (5)"), a
+    year, a page number or a citation is never a label.
+    """
+    found: list[tuple[int, str]] = []
+    for display in _DISPLAY.finditer(text):
+        body = "$$" + display.group(1) + "$$"
+        offset = display.start()
+        for pattern in (_AT_START, _TAGGED, _AT_END):
+            for match in pattern.finditer(body):
+                found.append((offset + match.start(1), f"({_normalise(match.group(1))})"))
+    return [label for _, label in sorted(set(found))]
+
+
+@dataclass(frozen=True)
+class LedgerRow:
+    """One equation or stated result, as the ledger records it."""
+
+    id: str
+    paper: str
+    equation: str
+    section: str
+    statement: str
+    status: Status
+    check: str | None = None
+    reading: str | None = None
+    corrected: str | None = None
+    note: str | None = None
+
+
+@dataclass(frozen=True)
+class Ledger:
+    paper: str
+    text: Path
+    path: Path
+    rows: tuple[LedgerRow, ...]
+
+    def labels(self) -> Counter[str]:
+        """How many rows each printed label has (stated results, with no label, excluded)."""
+        return Counter(r.equation for r in self.rows if r.equation)
+
+
+def _tables_dir() -> Path:
+    from pendcli.core.tables import tables_dir
+
+    return tables_dir()
+
+
+def ledger_path(paper: str, root: Path | None = None) -> Path:
+    return (root or _tables_dir()) / "equations" / f"{paper}.toml"
+
+
+def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
+    """The papers that have a ledger, in the project's order."""
+    from pendcli.core.claims import PAPERS
+
+    return tuple(p for p in PAPERS if ledger_path(p, root).is_file())
+
+
+def load_ledger(paper: str, root: Path | None = None) -> Ledger:
+    """Read and strictly validate ``tables/equations/<paper>.toml``."""
+    path = ledger_path(paper, root)
+    try:
+        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise PendcliError(f"equation ledger {path} is missing") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise PendcliError(f"equation ledger {path} is not valid TOML: {exc}") from None
+    return parse_ledger(raw, paper, path, root or _tables_dir())
+
+
+def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Ledger:
+    """Validate a parsed ledger: unknown keys, missing fields and bad values are errors."""
+    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation"))
+    header = raw.get("ledger")
+    if not isinstance(header, dict) or header.get("paper") != paper:
+        raise PendcliError(f"{path}: [ledger] must be a table with paper = {paper!r}")
+    _refuse_unknown(f"{path}: [ledger]", "key(s)", header, LEDGER_KEYS)
+    text = header.get("text")
+    if not isinstance(text, str) or not text.startswith("tables/"):
+        raise PendcliError(f"{path}: [ledger] text must name a file under tables/, got {text!r}")
+    entries = raw.get("equation")
+    if not isinstance(entries, list) or not entries:
+        raise PendcliError(f"{path}: no [[equation]] rows")
+    rows: list[LedgerRow] = []
+    seen: set[str] = set()
+    for index, entry in enumerate(entries):
+        row = _row(path, index, entry, paper)
+        if row.id in seen:
+            raise PendcliError(f"{path}: {row.id}: duplicate id")
+        seen.add(row.id)
+        rows.append(row)
+    return Ledger(paper, root / text.removeprefix("tables/"), path, tuple(rows))
+
+
+def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: Iterable[str]) -> None:
+    unknown = sorted(set(entry) - set(valid))
+    if unknown:
+        raise PendcliError(
+            f"{where}: unknown {what} {', '.join(map(repr, unknown))}; valid: {', '.join(valid)}"
+        )
+
+
+def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
+    if not isinstance(entry, dict):
+        raise PendcliError(f"{path}: [[equation]] #{index + 1} is not a table")
+    where = f"{path}: {entry.get('id', f'[[equation]] #{index + 1}')}"
+    _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
+    for key in ROW_KEYS:
+        value = entry.get(key)
+        if key in REQUIRED_KEYS and value is None:
+            raise PendcliError(f"{where}: missing {key!r}")
+        blank = not isinstance(value, str) or not value.strip()
+        if value is not None and blank and not (key == "equation" and value == ""):
+            raise PendcliError(f"{where}: {key!r} must be a non-empty string")
+    row = LedgerRow(paper=paper, **entry)
+    _check_identity(where, row)
+    _check_status_fields(where, row)
+    return row
+
+
+def _check_identity(where: str, row: LedgerRow) -> None:
+    if not _ID.match(row.id) or not row.id.startswith(f"{row.paper}."):
+        raise PendcliError(
+            f"{where}: id must read '{row.paper}.eq.<label>[.<section>]' or "
+            f"'{row.paper}.result.<slug>'"
+        )
+    is_result = row.id.startswith(f"{row.paper}.result.")
+    if is_result and row.equation:
+        raise PendcliError(f'{where}: a stated result has equation = ""')
+    if not is_result:
+        if not _LABEL_FORMAT.match(row.equation):
+            raise PendcliError(f'{where}: equation must be a label as printed, e.g. "(4)"')
+        stem = row.id.split(".")[2]
+        if stem != row.equation[1:-1]:
+            raise PendcliError(f"{where}: id does not match the label {row.equation}")
+
+
+def _check_status_fields(where: str, row: LedgerRow) -> None:
+    if row.status not in STATUSES:
+        raise PendcliError(f"{where}: unknown status {row.status!r}; valid: {', '.join(STATUSES)}")
+    checked = row.status in CHECKED_STATUSES
+    if checked and row.check is None:
+        raise PendcliError(f"{where}: status {row.status!r} needs a check")
+    if not checked and row.check is not None:
+        raise PendcliError(f"{where}: status {row.status!r} takes no check")
+    if not checked and row.note is None:
+        raise PendcliError(f"{where}: status {row.status!r} needs a note (what or why)")
+    if (row.reading is not None) != (row.status == "misprint"):
+        raise PendcliError(f"{where}: 'reading' is required for, and only for, misprint")
+    if (row.corrected is not None) != (row.status == "fails"):
+        raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
+
+
+@cache
+def _check_module(paper: str) -> Any:
+    return importlib.import_module(f"pendcli.papers.{paper}.equations")
+
+
+@cache
+def _run_named(paper: str, name: str) -> EquationCheck:
+    function = getattr(_check_module(paper), name, None)
+    if not callable(function):
+        raise PendcliError(f"pendcli.papers.{paper}.equations has no check {name!r}")
+    result = function()
+    if not isinstance(result, EquationCheck):
+        raise PendcliError(f"check {paper}.{name} did not return an EquationCheck")
+    return result
+
+
+def run_check(row: LedgerRow) -> EquationCheck | None:
+    """Run the row's check (None for definitions and not-checkable rows)."""
+    return None if row.check is None else _run_named(row.paper, row.check)
+
+
+def verify(row: LedgerRow, check: EquationCheck | None) -> str | None:
+    """Why the check contradicts the row's status, or None when they agree."""
+    if check is None:
+        return None if row.status not in CHECKED_STATUSES else "no check was run"
+    if check.method not in CHECK_METHODS:
+        return f"unknown check method {check.method!r}"
+    if row.status in ("holds", "misprint") and not check.holds:
+        form = "the evident reading" if row.status == "misprint" else "the printed form"
+        return f"recorded {row.status}, but {form} does not hold: {check.detail}"
+    if row.status == "fails":
+        if check.holds:
+            return f"recorded fails, but the check finds it holds: {check.detail}"
+        if not check.corrected:
+            return "recorded fails, but the check found no corrected form"
+    return None
+
+
+@dataclass(frozen=True)
+class Evaluated:
+    row: LedgerRow
+    check: EquationCheck | None
+    problem: str | None
+
+    def as_dict(self) -> dict[str, object]:
+        row, check = self.row, self.check
+        notes = []
+        if row.reading:
+            notes.append(f"reading: {row.reading}")
+        if row.corrected:
+            found = check.corrected if check is not None else None
+            notes.append(f"corrected: {row.corrected}" + (f" (computed: {found})" if found else ""))
+        if row.note:
+            notes.append(row.note)
+        if self.problem:
+            notes.append(f"LEDGER INCONSISTENT: {self.problem}")
+        return {
+            "id": row.id,
+            "paper": row.paper,
+            "equation": row.equation,
+            "section": row.section,
+            "statement": row.statement,
+            "status": row.status,
+            "check": f"{check.method}: {check.detail}" if check is not None else "",
+            "observed_order": check.observed_order if check is not None else None,
+            "note": "; ".join(notes),
+        }
+
+
+def evaluate(paper: str, root: Path | None = None) -> list[Evaluated]:
+    """Every row of the paper's ledger with its check run and its consistency verified."""
+    out = []
+    for row in load_ledger(paper, root).rows:
+        check = run_check(row)
+        out.append(Evaluated(row, check, verify(row, check)))
+    return out
+
+
+def equation_rows(papers: Iterable[str], root: Path | None = None) -> list[dict[str, object]]:
+    """The rows of ``reproduce --format json`` under "equations", for the papers that have a
+    ledger; raises PendcliError if a check contradicts the status its row records."""
+    available = set(ledger_papers(root))
+    rows = []
+    problems = []
+    for paper in papers:
+        if paper not in available:
+            continue
+        for item in evaluate(paper, root):
+            rows.append(item.as_dict())
+            if item.problem:
+                problems.append(f"{item.row.id}: {item.problem}")
+    if problems:
+        raise PendcliError(f"equation ledger inconsistent: {problems[0]} ({len(problems)} rows)")
+    return rows
+
+
+def coverage(rows: Iterable[dict[str, object]]) -> dict[str, dict[str, int]]:
+    """Per paper: the count of rows by status, the total and how many are checked."""
+    table: dict[str, dict[str, int]] = {}
+    for row in rows:
+        counts = table.setdefault(str(row["paper"]), {s: 0 for s in STATUSES})
+        counts[str(row["status"])] += 1
+    for counts in table.values():
+        counts["total"] = sum(counts[s] for s in STATUSES)
+        counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
+    return table
