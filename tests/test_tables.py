@@ -71,7 +71,7 @@ def test_join_requires_a_computation_for_every_claim(tmp_path):
     table = load_paper_table("demo", write(tmp_path, GOOD))
     with pytest.raises(PendcliError, match="no computation"):
         join_claims(table, {})
-    with pytest.raises(PendcliError, match="without a published entry"):
+    with pytest.raises(PendcliError, match=r"demo\.toml: no claim 'demo\.b'.*renamed"):
         join_claims(table, {"demo.a": Recomputed(5.14), "demo.b": Recomputed(1.0)})
 
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from types import ModuleType
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.tables import PaperTable, PublishedValue, load_paper_table
+from pendcli.core.tables import PaperTable, PublishedValue, load_paper_table, missing_claim
 from pendcli.core.verdict import judge
 
 __all__ = [
@@ -159,14 +159,14 @@ def make_row(entry: PublishedValue, result: Recomputed) -> ClaimRow:
 
 def join_claims(table: PaperTable, results: dict[str, Recomputed]) -> list[ClaimRow]:
     missing = [c.id for c in table.claims if c.id not in results]
-    if missing:
-        raise PendcliError(f"{table.key}: no computation for claim(s) {', '.join(missing)}")
-    ids = {c.id for c in table.claims}
-    extra = sorted(set(results) - ids)
-    if extra:
+    extra = sorted(set(results) - {c.id for c in table.claims})
+    if extra:  # an id renamed or removed in the file: name the file and the id the code uses
+        unmatched = f"; the file's {', '.join(missing)} has no computation" if missing else ""
         raise PendcliError(
-            f"{table.key}: computed claim(s) without a published entry: {', '.join(extra)}"
+            f"{missing_claim(table.where, extra[0], 'its recomputation')}{unmatched}"
         )
+    if missing:
+        raise PendcliError(f"{table.where}: no computation for claim(s) {', '.join(missing)}")
     return [make_row(c, results[c.id]) for c in table.claims]
 
 
