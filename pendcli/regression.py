@@ -101,21 +101,63 @@ def regenerated_tables(result: ReproduceResult) -> dict[str, str]:
     return out
 
 
-def _read_csv(text: str, where: str) -> tuple[list[str], dict[str, dict[str, str]]]:
-    reader = csv.DictReader(io.StringIO(text))
-    if not reader.fieldnames or "id" not in reader.fieldnames:
-        raise PendcliError(f"{where}: malformed table (no 'id' column)")
-    rows: dict[str, dict[str, str]] = {}
-    for line, row in enumerate(reader, start=2):
-        if None in row or any(v is None for v in row.values()):
-            raise PendcliError(f"{where}: line {line} has the wrong number of fields")
-        if row["id"] in rows:
-            raise PendcliError(f"{where}: line {line} repeats id {row['id']!r}")
-        rows[row["id"]] = row
-    return list(reader.fieldnames), rows
+def expected_columns(name: str) -> tuple[str, ...] | None:
+    """The header a regenerated table ``name`` must have (None for a name pendcli never writes)."""
+    if name.endswith("-claims.csv"):
+        return CLAIM_COLUMNS
+    if name.endswith("-formulas.csv"):
+        return FORMULA_COLUMNS
+    return None
+
+
+Table = tuple[tuple[str, ...], dict[str, dict[str, str]]]
+
+
+def read_table(text: str, where: str, columns: tuple[str, ...] | None = None) -> Table:
+    """Parse and validate one regenerated CSV: header ``columns`` (or any starting with ``id``),
+    every row as many fields, a unique non-empty id, numeric columns numbers. Errors name
+    ``where`` and the line."""
+    reader = csv.reader(io.StringIO(text, newline=""), strict=True)
+    try:
+        header = tuple(next(reader, ()))
+        _check_header(header, where, columns)
+        rows: dict[str, dict[str, str]] = {}
+        for fields in reader:
+            if fields:  # a blank line carries nothing
+                row = _check_row(fields, header, f"{where}: line {reader.line_num}", rows)
+                rows[row["id"]] = row
+    except csv.Error as exc:
+        raise PendcliError(f"{where}: line {reader.line_num}: malformed CSV ({exc})") from None
+    return header, rows
+
+
+def _check_header(header: tuple[str, ...], where: str, columns: tuple[str, ...] | None) -> None:
+    wanted = ",".join(columns) if columns else "id,..."
+    if not header:
+        raise PendcliError(f"{where}: empty table; expected the header line {wanted}")
+    if (columns and header != columns) or header[0] != "id" or len(set(header)) != len(header):
+        raise PendcliError(f"{where}: line 1: header {','.join(header)!r}; expected {wanted}")
+
+
+def _check_row(
+    fields: list[str], header: tuple[str, ...], where: str, seen: dict[str, dict[str, str]]
+) -> dict[str, str]:
+    if len(fields) != len(header):
+        raise PendcliError(f"{where} has {len(fields)} fields; expected {len(header)}")
+    row = dict(zip(header, fields, strict=True))
+    if not row["id"]:
+        raise PendcliError(f"{where} has an empty id")
+    if row["id"] in seen:
+        raise PendcliError(f"{where} repeats id {row['id']!r}")
+    for col in header:
+        if TOLERANCES.get(col, ("same", 0.0))[0] != "same":
+            _number(row[col], f"{where}, column {col!r}")
+    return row
 
 
 def _number(text: str, where: str) -> float | None:
+    """A numeric cell: empty (no value) or a float; ``inf``/``nan``/``1e400`` parse, and
+    :func:`_cell_drift` treats them as changes."""
     if text == "":
         return None
     try:
@@ -124,11 +166,12 @@ def _number(text: str, where: str) -> float | None:
         raise PendcliError(f"{where}: {text!r} is not a number") from None
 
 
-def compare_tables(name: str, committed_text: str, now_text: str) -> list[Drift]:
-    """Every drift between a committed table and its regeneration."""
-    where = f"tables/regenerated/{name}"
-    _, then = _read_csv(committed_text, where)
-    columns, now = _read_csv(now_text, f"regenerated {name}")
+def compare_tables(
+    name: str, committed_text: str, now_text: str, where: str | None = None
+) -> list[Drift]:
+    """Every drift between a committed table (read from ``where``) and its regeneration."""
+    columns, now = read_table(now_text, f"regenerated {name}", expected_columns(name))
+    _, then = read_table(committed_text, where or f"tables/regenerated/{name}", columns)
     drifts: list[Drift] = []
     for cid in sorted(set(then) - set(now)):
         drifts.append(
@@ -137,11 +180,10 @@ def compare_tables(name: str, committed_text: str, now_text: str) -> list[Drift]
     for cid in sorted(set(now) - set(then)):
         drifts.append(Drift(name, cid, "(row)", now[cid].get("published", ""), "absent", "new", ""))
     for cid in [c for c in now if c in then]:
-        for col in columns:
-            if col != "id":
-                drift = _cell_drift(name, cid, col, then[cid], now[cid])
-                if drift is not None:
-                    drifts.append(drift)
+        for col in columns[1:]:
+            drift = _cell_drift(name, cid, col, then[cid], now[cid])
+            if drift is not None:
+                drifts.append(drift)
     return drifts
 
 
@@ -150,21 +192,21 @@ def _cell_drift(
 ) -> Drift | None:
     """How one cell moved beyond its column's tolerance (:data:`TOLERANCES`), or None."""
     published = now.get("published", "")
-    if col not in then:
-        return Drift(name, cid, col, published, "(no column)", now[col], "")
     a, b = then[col], now[col]
     kind, tol = TOLERANCES.get(col, ("same", 0.0))
     if kind == "same":
         return Drift(name, cid, col, published, a, b, "changed") if a != b else None
-    x = _number(a, f"tables/regenerated/{name}: {cid!r} column {col!r}")
-    y = _number(b, f"regenerated {name}: {cid!r} column {col!r}")
+    x, y = _number(a, col), _number(b, col)
     if x is None or y is None:
         if (x is None) != (y is None):
             return Drift(name, cid, col, published, a, b, "appeared/vanished")
         return None
+    if not (math.isfinite(x) and math.isfinite(y)):
+        # tol·|inf| would swallow any change: a non-finite value holds only as the same token.
+        return None if a == b else Drift(name, cid, col, published, a, b, "non-finite")
     diff = y - x
     limit = tol * max(abs(x), 1e-300) if kind == "rel" else tol
-    if abs(diff) <= limit and not math.isnan(diff):
+    if abs(diff) <= limit:
         return None
     rel = f" ({diff / x:+.2e} rel)" if x else ""
     return Drift(name, cid, col, published, a, b, f"{diff:+.3e}{rel}")
@@ -181,8 +223,17 @@ def find_drifts(folder: Path, tables: dict[str, str]) -> list[Drift]:
         if not path.is_file():
             drifts.append(Drift(name, "(table)", "(file)", "", "missing", "produced", ""))
             continue
-        drifts.extend(compare_tables(name, path.read_text(encoding="utf-8"), text))
+        drifts.extend(compare_tables(name, _read_committed(path), text, str(path)))
     return drifts
+
+
+def _read_committed(path: Path) -> str:
+    try:
+        return path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise PendcliError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+    except OSError as exc:
+        raise PendcliError(f"cannot read {path}: {exc.strerror or type(exc).__name__}") from None
 
 
 def run_check(update: bool = False, quiet: bool = False, root: Path | None = None) -> int:

@@ -57,6 +57,59 @@ def test_malformed_committed_table_names_the_file(bad):
     assert "t.csv" in str(err.value)
 
 
+@pytest.mark.parametrize(
+    ("bad", "message"),
+    [
+        ("", "empty table; expected the header line id,published,unit"),
+        (HEADER.replace("verdict", "verdicts") + ROW, "line 1: header"),
+        (HEADER.replace("unit,", "") + ROW, "line 1: header"),
+        (HEADER + ROW + "x.b,1\n", "line 3 has 2 fields; expected 8"),
+        (HEADER + ROW.replace("agrees", "agrees,extra"), "line 2 has 9 fields"),
+        (HEADER + ROW + ROW, "line 3 repeats id 'x.a'"),
+        (HEADER + ROW.replace("x.a", ""), "line 2 has an empty id"),
+        (HEADER + ROW + ROW.replace("x.a", "x.b").replace("-0.00085", '"0,1"'), "line 3, column"),
+        (HEADER + ROW.replace('"5,14"', '"5,14'), "malformed CSV"),
+    ],
+)
+def test_committed_table_validation_names_file_and_line(bad, message):
+    with pytest.raises(PendcliError) as err:
+        compare_tables("lecornu-claims.csv", bad, HEADER + ROW, where="tables/x/lecornu-claims.csv")
+    assert str(err.value).startswith("tables/x/lecornu-claims.csv: ")
+    assert message in str(err.value)
+    assert "\n" not in str(err.value)
+
+
+def test_a_formulas_table_needs_the_formula_header():
+    with pytest.raises(PendcliError, match=r"regenerated lecornu-formulas\.csv: line 1: header"):
+        compare_tables("lecornu-formulas.csv", HEADER + ROW, HEADER + ROW)
+
+
+@pytest.mark.parametrize("token", ["inf", "-inf", "nan", "1e400", "-1e400", "Infinity"])
+@pytest.mark.parametrize("column_value", ["5.135622301840683", "-0.00085"])
+def test_a_non_finite_committed_value_is_drift(token, column_value):
+    tampered = ROW.replace(column_value, token)
+    drifts = compare_tables("t.csv", HEADER + tampered, HEADER + ROW)
+    assert [(d.committed, d.difference) for d in drifts] == [(token, "non-finite")]
+    # and the other way round: the code starts producing a non-finite value
+    drifts = compare_tables("t.csv", HEADER + ROW, HEADER + tampered)
+    assert [(d.now, d.difference) for d in drifts] == [(token, "non-finite")]
+
+
+@pytest.mark.parametrize("token", ["inf", "-inf", "nan"])
+def test_the_same_non_finite_token_on_both_sides_is_no_drift(token):
+    row = ROW.replace("-0.00085", token)
+    assert compare_tables("t.csv", HEADER + row, HEADER + row) == []
+    other = {"inf": "1e400", "-inf": "-1e400", "nan": "inf"}[token]
+    assert compare_tables("t.csv", HEADER + row, HEADER + ROW.replace("-0.00085", other))
+
+
+def test_a_huge_finite_change_is_drift():
+    row = ROW.replace("5.135622301840683", "1.7e308")
+    assert compare_tables(
+        "t.csv", HEADER + row, HEADER + ROW.replace("5.135622301840683", "-1.7e308")
+    )
+
+
 def test_every_committed_column_has_an_explicit_tolerance():
     from pendcli.regression import CLAIM_COLUMNS, FORMULA_COLUMNS
 
