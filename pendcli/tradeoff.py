@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import csv
 import importlib
+import io
 import math
 import time
 from collections.abc import Callable, Sequence
@@ -261,19 +262,70 @@ def write_table(points: list[Point], path: Path) -> Path:
 
 
 def read_table(path: Path) -> list[Point]:
-    with path.open(encoding="utf-8") as fh:
-        return [
-            Point(
-                r["family"],
-                r["method"],
-                r["setting"],
-                float(r["seconds"]) if r["seconds"] else math.nan,
-                float(r["error"]) if r["error"] else None,
-                int(r["evaluations"]) if r["evaluations"] else None,
-                r["note"],
+    """The measured points of ``tradeoff/<family>.csv``, validated: the header is
+    :data:`CSV_KEYS`, every row names this family and a method, times are positive, errors
+    non-negative, both finite (both empty for a failed method), evaluations positive integers.
+    Any problem is a :class:`PendcliError` naming the file and the line."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise PendcliError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+    except OSError as exc:
+        raise PendcliError(f"cannot read {path}: {exc.strerror or type(exc).__name__}") from None
+    reader = csv.reader(io.StringIO(text, newline=""), strict=True)
+    try:
+        header = tuple(next(reader, ()))
+        if header != CSV_KEYS:
+            raise PendcliError(
+                f"{path}: line 1: header {','.join(header)!r}; expected {','.join(CSV_KEYS)}"
             )
-            for r in csv.DictReader(fh)
-        ]
+        points = [_table_point(path, reader.line_num, cells) for cells in reader if cells]
+    except csv.Error as exc:
+        raise PendcliError(f"{path}: line {reader.line_num}: malformed CSV ({exc})") from None
+    if not points:
+        raise PendcliError(f"{path}: no measured point (regenerate it: make bench)")
+    return points
+
+
+def _table_point(path: Path, line: int, cells: list[str]) -> Point:
+    where = f"{path}: line {line}"
+    if len(cells) != len(CSV_KEYS):
+        raise PendcliError(f"{where} has {len(cells)} fields; expected {len(CSV_KEYS)}")
+    row = dict(zip(CSV_KEYS, cells, strict=True))
+    if row["family"] != path.stem or not row["method"]:
+        raise PendcliError(f"{where}: family must be {path.stem!r} and method non-empty")
+    seconds = _table_number(where, row, "seconds", lambda v: v > 0, "a positive number")
+    error = _table_number(where, row, "error", lambda v: v >= 0, "a number >= 0")
+    if (seconds is None) != (error is None):
+        raise PendcliError(f"{where}: seconds and error are both given, or both empty (failed)")
+    evaluations = _table_number(
+        where, row, "evaluations", lambda v: v >= 1 and v.is_integer(), "a positive integer"
+    )
+    return Point(
+        row["family"],
+        row["method"],
+        row["setting"],
+        math.nan if seconds is None else seconds,
+        error,
+        None if evaluations is None else int(evaluations),
+        row["note"],
+    )
+
+
+def _table_number(
+    where: str, row: dict[str, str], column: str, valid: Callable[[float], bool], wanted: str
+) -> float | None:
+    """A numeric cell: empty (None) or a finite float meeting ``valid``."""
+    text = row[column]
+    if text == "":
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and valid(value)):
+        raise PendcliError(f"{where}: {column} = {text!r}; expected {wanted} (finite) or empty")
+    return value
 
 
 def choose(family: str, tol: float, points: list[Point] | None = None) -> Point:

@@ -520,7 +520,7 @@ def test_path_figure_series_line_and_ellipses_follow_the_exact_motion(path_axes)
         ex, ey = (np.asarray(v) for v in ellipse.get_data())
         vertex = min(np.hypot(ex[k] - x[120 * j], ey[k] - y[120 * j]) for k in (0, 180))
         assert vertex < 1e-3
-    assert path_axes.get_xlabel() == "x / l" and path_axes.get_ylabel() == "y / l"
+    assert path_axes.get_xlabel().startswith("x / l") and path_axes.get_ylabel() == "y / l"
     assert "θ0 = 30°, θ1 = 15°" in path_axes.get_title()
 
 
@@ -634,3 +634,20 @@ def test_elliptic_method_against_mpmath(angles):
         omega, rel=1e-14 / (math.sin(angles[0]) * math.sin(angles[1]))
     )
     assert m.psi_coeffs == () and m.phi_coeffs == ()
+
+
+def test_path_figure_gap_panel_shows_the_distance_between_the_drawn_paths():
+    # The two paths coincide to the eye; the lower panel must show exactly how far apart the
+    # drawn exact and series lines are, and the title must quote their largest distance.
+    import matplotlib.pyplot as plt
+
+    fig, (ax, gap_ax) = plt.subplots(2, 1)
+    try:
+        figures.draw_path(ax, turns=2, gap_ax=gap_ax)
+        (x, y), (xs, ys) = (np.asarray(line.get_data()) for line in ax.get_lines()[:2])
+        shown = np.asarray(gap_ax.get_lines()[0].get_ydata())
+        assert np.allclose(shown, np.hypot(x - xs, y - ys)[1:], rtol=0, atol=1e-15)
+        assert f"{np.hypot(x - xs, y - ys).max():.1e} l" in ax.get_title()
+        assert gap_ax.get_yscale() == "log" and "l" in gap_ax.get_ylabel()
+    finally:
+        plt.close(fig)

@@ -18,6 +18,14 @@ if TYPE_CHECKING:
 
 __all__ = ["MIN_N_MAX", "draw_table", "figures", "plot_table", "printed_points"]
 
+# The report prints these under the figures (file stem -> caption).
+CAPTIONS = {
+    "charbonnier-In-pi": (
+        "Charbonnier's I_n(π) = ∫₀^π sin^(n+1) x dx against n + 2 (log-log): the printed table "
+        "entries (circles) sit on the recomputed curve, since every printed entry is exact; "
+        "the dotted line is the asymptote √(2π/(n+2)) the large-n entries approach."
+    ),
+}
 MIN_N_MAX = 40  # the curve always reaches n = 40, where the asymptote is visibly close
 
 

@@ -189,6 +189,23 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
     )
 
 
+# The report prints these under the figures (file stem -> caption).
+CAPTIONS = {
+    "lecornu_example_theta": (
+        "Lecornu's example (pendulum 1 m long at t = 0, shortened at 0,35 m/s, g = 9.81 m/s²): "
+        "θ/θ0 of the Bessel solution (10) against time, on a symmetric-log scale. Crosses: the "
+        "printed elongation times and amplitudes; dots: recomputed; the vertical passages from "
+        "the printed lengths against the recomputed ones. The dashed curve starts from rest at "
+        "1 m (the exact column), the solid one is the solution the paper uses."
+    ),
+    "lecornu_printed_minus_recomputed": (
+        "Every number of Lecornu's example, printed minus recomputed, in units of its last "
+        "printed digit: inside the grey band (±½) a number agrees; orange bars round one unit "
+        "away or are truncated; red bars are discrepant (see each row's cause)."
+    ),
+}
+
+
 def figures(outdir: str | Path) -> list[Path]:
     """(1) θ/θ0 of the example against time, published and recomputed elongations and vertical
     passages marked; (2) printed minus recomputed, in units of the printed last digit."""

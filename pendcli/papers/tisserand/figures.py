@@ -34,6 +34,23 @@ __all__ = [
     "series_error_curves",
 ]
 
+# The report prints these under the figures (file stem -> caption).
+CAPTIONS = {
+    "tisserand_path": (
+        "The bob's projection on the horizontal plane over six radial periods, for "
+        "θ0 = 30°, θ1 = 15° (large angles, so that the rotation of the ellipse is visible): the "
+        "exact motion (an ODE integration of the spherical pendulum) and Tisserand's series "
+        "(II)-(VI) coincide to the eye, which is the point; the lower panel gives their "
+        "distance at equal times, in units of the length l. Dotted: the series' ellipse "
+        "(III)-(IV), turned by the rotation (V) at the start of each radial period."
+    ),
+    "tisserand_series_error": (
+        "Relative error of each coefficient of Tisserand's series against the exact motion "
+        "(mpmath quadrature of (1)-(2)), as θ0 grows with θ1 = θ0/2. Straight lines are the "
+        "orders the truncation leaves; the dotted line marks the 30° of the figure above."
+    ),
+}
+
 # label of each curve of the series-error figure (Ω is drawn dashed: see draw_series_error)
 SERIES_ERROR_CURVES = (
     "k'",
@@ -58,11 +75,16 @@ def figures(outdir: str | Path) -> list[Path]:
 
 
 def draw_path(
-    ax: Axes, theta0: float | None = None, theta1: float | None = None, turns: int = 6
+    ax: Axes,
+    theta0: float | None = None,
+    theta1: float | None = None,
+    turns: int = 6,
+    gap_ax: Axes | None = None,
 ) -> None:
     """The bob's projection over ``turns`` radial periods: exact path, series path, ellipses.
 
-    Sampled 120 times per radial period, so sample 120 j falls on the j-th apocentre.
+    Sampled 120 times per radial period, so sample 120 j falls on the j-th apocentre. The two
+    paths coincide to the eye, which is the point; ``gap_ax`` shows how far apart they are.
     """
     import numpy as np
 
@@ -88,14 +110,28 @@ def draw_path(
             label="series ellipse, each radial period" if j == 0 else None,
         )
     ax.set_aspect("equal")
-    ax.set_xlabel("x / l")
+    ax.set_xlabel("x / l (bob's projection on the horizontal plane)")
     ax.set_ylabel("y / l")
+    gap = np.hypot(x - xs, y - ys)
     ax.set_title(
         f"Projected path, θ0 = {math.degrees(theta0):g}°, θ1 = {math.degrees(theta1):g}°, "
-        f"{turns} radial periods"
+        f"{turns} radial periods:\nthe series lies on the exact path (at most {gap.max():.1e} l "
+        "away)",
+        fontsize=10,
     )
+    if gap_ax is not None:
+        _draw_gap(gap_ax, kt / exact.radial_period, gap)
     ax.legend(loc="lower left", fontsize=8)
     ax.grid(True, alpha=0.3)
+
+
+def _draw_gap(ax: Axes, periods: np.ndarray, gap: np.ndarray) -> None:
+    """Distance between the series' bob and the exact one at the same time, in units of l."""
+    ax.semilogy(periods[1:], gap[1:], color="tab:purple", lw=0.9)
+    ax.set_xlabel("time (radial periods)")
+    ax.set_ylabel("|series − exact| / l")
+    ax.set_title("distance between the two paths at equal times", fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
 
 
 def _ellipse(theta0: float, theta1: float) -> tuple[np.ndarray, np.ndarray]:
@@ -112,8 +148,11 @@ def plot_path(
     """:func:`draw_path` written to ``path``."""
     from pendcli.core.plotting import new_figure
 
-    with new_figure(path, size=(6.5, 6.5)) as (_fig, ax):
-        draw_path(ax, theta0, theta1, turns)
+    with new_figure(path, nrows=2, size=(6.5, 8.2)) as (fig, axes):
+        path_ax, gap_ax = axes.flat
+        draw_path(path_ax, theta0, theta1, turns, gap_ax=gap_ax)
+        gap_ax.set_box_aspect(0.3)
+        fig.tight_layout()
     return Path(path)
 
 
