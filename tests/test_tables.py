@@ -204,3 +204,77 @@ def test_bad_cause_or_from_is_refused(tmp_path, cause, sources, message):
         load_paper_table("demo", write(tmp_path, _caused(cause, sources)))
     assert "demo.toml" in str(err.value) and "demo.b" in str(err.value)
     assert message in str(err.value)
+
+
+# ---------------------------------------------------------------------------------------------
+# tables/tradeoff/<family>.csv: what `--tol` chooses from
+
+TRADEOFF_HEADER = "family,method,setting,seconds,error,evaluations,note\n"
+TRADEOFF_ROWS = "demo,fast,n=1,1e-06,0.001,12,\ndemo,exact,,0.0001,0,,\ndemo,naive,,,,,fails: x\n"
+
+
+@pytest.mark.parametrize("name", sorted(p.stem for p in (tables_dir() / "tradeoff").glob("*.csv")))
+def test_shipped_tradeoff_tables_are_valid(name):
+    from pendcli import tradeoff
+
+    points = tradeoff.read_table(tables_dir() / "tradeoff" / f"{name}.csv")
+    assert points and all(p.family == name for p in points)
+
+
+def test_a_valid_tradeoff_table_reads(tmp_path):
+    from pendcli import tradeoff
+
+    path = tmp_path / "demo.csv"
+    path.write_text(TRADEOFF_HEADER + TRADEOFF_ROWS, encoding="utf-8")
+    points = tradeoff.read_table(path)
+    assert [(p.method, p.error, p.evaluations) for p in points] == [
+        ("fast", 0.001, 12),
+        ("exact", 0.0, None),
+        ("naive", None, None),
+    ]
+    assert tradeoff.choose("demo", 0.01, points).method == "fast"
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("", "line 1: header ''"),
+        (TRADEOFF_HEADER.replace("error", "err") + TRADEOFF_ROWS, "line 1: header"),
+        (TRADEOFF_HEADER, "no measured point"),
+        (TRADEOFF_HEADER + "demo,fast,n=1,1e-06\n", "line 2 has 4 fields; expected 7"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("demo,naive", "other,naive"), "line 4: family"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("demo,fast", "demo,"), "method non-empty"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("1e-06", "inf"), "seconds = 'inf'"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("1e-06", "1e400"), "seconds = '1e400'"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("1e-06", "0"), "positive number"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("1e-06", "-1e-06"), "positive number"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("1e-06", "fast"), "seconds = 'fast'"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("0.001", "nan"), "error = 'nan'"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("0.001", "-0.001"), "a number >= 0"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("0.001", ""), "both empty"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace(",12,", ",1.5,"), "positive integer"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace(",12,", ",0,"), "positive integer"),
+        (TRADEOFF_HEADER + TRADEOFF_ROWS.replace("n=1", '"n=1'), "malformed CSV"),
+    ],
+)
+def test_a_bad_tradeoff_table_names_file_and_line(tmp_path, text, message):
+    from pendcli import tradeoff
+
+    path = tmp_path / "demo.csv"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(PendcliError) as err:
+        tradeoff.read_table(path)
+    assert str(err.value).startswith(f"{path}: ")
+    assert message in str(err.value)
+    assert "\n" not in str(err.value)
+
+
+def test_a_tradeoff_table_that_is_not_text_is_an_error(tmp_path):
+    from pendcli import tradeoff
+
+    path = tmp_path / "demo.csv"
+    path.write_bytes(b"\xff\xfe" + TRADEOFF_HEADER.encode())
+    with pytest.raises(PendcliError, match="not UTF-8"):
+        tradeoff.read_table(path)
+    with pytest.raises(PendcliError, match="cannot read"):
+        tradeoff.read_table(tmp_path)  # a folder where the file should be
