@@ -9,25 +9,36 @@ a claim without a computation is a defect, reported as an error, never silently 
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from types import ModuleType
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.tables import PaperTable, PublishedValue, load_paper_table, missing_claim
+from pendcli.core.tables import (
+    CAUSES,
+    PaperTable,
+    PublishedValue,
+    load_paper_table,
+    missing_claim,
+)
 from pendcli.core.verdict import judge
 
 __all__ = [
+    "CAUSES",
     "FORMULA_VERDICTS",
     "PAPERS",
+    "CauseTally",
     "ClaimRow",
     "FormulaRow",
     "Recomputed",
+    "cause_tally",
     "evaluate_paper",
     "paper_module",
     "resolve_papers",
+    "with_causes",
 ]
 
 # Every paper pendcli reproduces, in report order. The module pendcli.<key> holds its claims.
@@ -65,9 +76,13 @@ class ClaimRow:
     exact: float | None
     method: str
     note: str
+    cause: str | None = None  # why it disagrees (one of CAUSES), None when nothing to explain
+    cause_from: tuple[str, ...] = ()  # the rows it inherits its error from ("propagated")
 
     def as_dict(self) -> dict[str, object]:
-        return {k: _json_number(v) for k, v in self.__dict__.items()}
+        out = {k: _json_number(v) for k, v in self.__dict__.items() if k != "cause_from"}
+        out["from"] = list(self.cause_from)
+        return out
 
 
 # A derived formula holds or fails against the numerical solution (pendcli.core.formula_engine).
@@ -88,10 +103,15 @@ class FormulaRow:
     observed_order: float | None
     note: str
     residuals: tuple[tuple[float, float], ...] = field(default=())  # (parameter, |residual|)
+    cause: str | None = None  # why it fails (one of CAUSES), None when it holds
+    cause_from: tuple[str, ...] = ()  # the formula rows it inherits its error from
 
     def as_dict(self) -> dict[str, object]:
-        out = {k: _json_number(v) for k, v in self.__dict__.items() if k != "residuals"}
+        skip = ("residuals", "cause", "cause_from")
+        out = {k: _json_number(v) for k, v in self.__dict__.items() if k not in skip}
         out["residuals"] = [[_json_number(p), _json_number(r)] for p, r in self.residuals]
+        out["cause"] = self.cause
+        out["from"] = list(self.cause_from)
         return out
 
 
@@ -154,6 +174,8 @@ def make_row(entry: PublishedValue, result: Recomputed) -> ClaimRow:
         exact=result.exact,
         method=result.method,
         note=" ".join(notes),
+        cause=entry.cause,
+        cause_from=entry.cause_from,
     )
 
 
@@ -177,3 +199,67 @@ def evaluate_paper(
     table = load_paper_table(key)
     results = (recompute or paper_module(key).recompute)()
     return join_claims(table, results)
+
+
+# A formula's cause: (cause, the ids of the formula rows it inherits from).
+FormulaCause = tuple[str, tuple[str, ...]]
+
+
+def with_causes(rows: Sequence[FormulaRow], causes: Mapping[str, FormulaCause]) -> list[FormulaRow]:
+    """``rows`` with their causes set from ``causes`` (id -> (cause, from)), checked."""
+    ids = {r.id for r in rows}
+    unknown = sorted(set(causes) - ids)
+    if unknown:
+        raise PendcliError(f"cause given for unknown formula row(s) {', '.join(unknown)}")
+    for row_id, (cause, sources) in causes.items():
+        if cause not in CAUSES:
+            raise PendcliError(f"{row_id}: cause {cause!r} is not one of {', '.join(CAUSES)}")
+        if (cause == "propagated") != bool(sources) or not set(sources) <= ids - {row_id}:
+            raise PendcliError(f"{row_id}: 'from' must name other rows iff cause is propagated")
+    return [
+        dataclasses.replace(r, cause=causes[r.id][0], cause_from=causes[r.id][1])
+        if r.id in causes
+        else r
+        for r in rows
+    ]
+
+
+@dataclass(frozen=True)
+class CauseTally:
+    """Root slips apart from what they propagate into, over the rows that do not agree/hold."""
+
+    roots: dict[str, int]  # root cause -> rows (every cause but "propagated", in CAUSES order)
+    propagated: int  # rows that only carry an error from earlier rows
+    unexplained: int  # rows that do not agree or hold and have no cause
+    edges: tuple[tuple[str, str], ...]  # (source id, row id): the row inherits from the source
+
+    @property
+    def root_total(self) -> int:
+        return sum(self.roots.values())
+
+
+def _disagrees(row: ClaimRow | FormulaRow) -> bool:
+    return row.verdict not in ("agrees", "holds")
+
+
+def cause_tally(rows: Iterable[ClaimRow | FormulaRow]) -> CauseTally:
+    """Count the causes of the rows that do not agree (claims) or hold (formulas).
+
+    Every propagated row gives an edge from each of its sources (a source may itself agree,
+    e.g. a rounded zero whose rounding carries into a time), in row order.
+    """
+    roots = {c: 0 for c in CAUSES if c != "propagated"}
+    propagated = unexplained = 0
+    edges: list[tuple[str, str]] = []
+    for row in rows:
+        if row.cause == "propagated":
+            edges += [(source, row.id) for source in row.cause_from]
+        if not _disagrees(row):
+            continue
+        if row.cause is None:
+            unexplained += 1
+        elif row.cause == "propagated":
+            propagated += 1
+        else:
+            roots[row.cause] += 1
+    return CauseTally(roots, propagated, unexplained, tuple(edges))

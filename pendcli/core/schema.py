@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from pendcli.core.claims import FORMULA_VERDICTS, PAPERS
+from pendcli.core.claims import CAUSES, FORMULA_VERDICTS, PAPERS
 from pendcli.core.verdict import CLAIM_VERDICTS
 
 __all__ = ["DOCUMENT", "Field", "RowKind", "check_row", "markdown"]
@@ -32,14 +32,14 @@ class Field:
     name: str
     types: tuple[str, ...]  # JSON type names: "string", "number", "integer", "array", "null"
     meaning: str
-    values: tuple[str, ...] = ()  # the only values a string may take, when listed
+    values: tuple[str, ...] = ()  # the only values a string may take (or null), when listed
 
     def problems(self, value: object) -> list[str]:
         """Why ``value`` (as json.loads gives it) does not fit this field; empty if it does."""
         allowed = tuple(t for name in self.types for t in _PYTHON_TYPES[name])
         if isinstance(value, bool) or not isinstance(value, allowed):
             return [f"{self.name}: {value!r} is not {' or '.join(self.types)}"]
-        if self.values and value not in self.values:
+        if self.values and value is not None and value not in self.values:
             return [f"{self.name}: {value!r} is not one of {', '.join(self.values)}"]
         return []
 
@@ -56,6 +56,11 @@ class RowKind:
 
 
 _TEXT, _NUMBER, _OPTIONAL = ("string",), ("number",), ("number", "null")
+_CAUSE_MEANING = (
+    "why it does not agree or hold, null when nothing needs explaining; every cause but "
+    "propagated is a root"
+)
+_FROM_MEANING = "ids of the rows it inherits its error from when `cause` is propagated, else []"
 
 CLAIMS = RowKind(
     "claims",
@@ -76,6 +81,8 @@ CLAIMS = RowKind(
         Field("exact", _OPTIONAL, "a fuller model's value, where one answers a question"),
         Field("method", _TEXT, "how it was recomputed"),
         Field("note", _TEXT, "OCR corrections, explanations of any disagreement"),
+        Field("cause", ("string", "null"), _CAUSE_MEANING, CAUSES),
+        Field("from", ("array",), _FROM_MEANING),
     ),
 )
 FORMULAS = RowKind(
@@ -92,6 +99,8 @@ FORMULAS = RowKind(
         Field("observed_order", _OPTIONAL, "least-squares slope of log|residual| on log p"),
         Field("note", _TEXT, "the verdict's reason and the residual's convention"),
         Field("residuals", ("array",), "`[p, |residual|]` pairs, p the small parameter"),
+        Field("cause", ("string", "null"), _CAUSE_MEANING, CAUSES),
+        Field("from", ("array",), _FROM_MEANING),
     ),
 )
 STABILITY = RowKind(
