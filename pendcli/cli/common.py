@@ -28,11 +28,17 @@ PlotOption = Annotated[
 
 def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, object]) -> None:
     """Print titled sections of rows (tables) or the whole document (JSON, CSV, Markdown)."""
+    from pendcli.core.console import for_display
     from pendcli.render import render
 
-    sys.stdout.write(render(fmt, sections, document, console=console()))
+    text = render(fmt, sections, document, console=console())
+    # a table is for the eye: "?" keeps its columns; the data formats keep \uXXXX escapes
+    sys.stdout.write(for_display(text) if fmt is OutputFormat.table else text)
 
 
 def say(message: str) -> None:
-    """A status line on stderr (so stdout stays machine-readable)."""
-    console(stderr=True).print(message)
+    """A status line on stderr (so stdout stays machine-readable); nothing under --quiet."""
+    from pendcli.core.console import is_quiet
+
+    if not is_quiet():
+        console(stderr=True).print(message)

@@ -43,10 +43,9 @@ def formulas(
 
 
 def _check_figure_folder(plot: Path | None) -> None:
-    from pendcli.core.errors import PendcliError
+    from pendcli.core.plotting import validate_plot_folder
 
-    if plot is not None and plot.exists() and not plot.is_dir():
-        raise PendcliError(f"--plot {str(plot)!r} is a file; give a folder for the figures")
+    validate_plot_folder(plot)
 
 
 def _sections(results: dict[str, list[FormulaRow]]) -> list[Section]:

@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import contextlib
+import copy
+import functools
 import importlib
 import os
+import re
 import sys
+from collections.abc import Callable
 from pathlib import Path
-from types import ModuleType
-from typing import TYPE_CHECKING, Annotated, NoReturn
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from typer.core import TyperGroup
@@ -15,8 +19,10 @@ from typer.core import TyperGroup
 from pendcli.cli.common import FormatOption, PaperOption, emit
 from pendcli.render import OutputFormat
 
-if TYPE_CHECKING:  # click as typer vendors it; only its types are named here
-    from typer._click import Command, Context, HelpFormatter
+if TYPE_CHECKING:
+    # click's types, as typer vendors it (click itself is not installed); only named for mypy:
+    # at run time pendcli uses typer's public names (typer.TyperException, typer.BadParameter).
+    from typer._click import Command, Context, HelpFormatter, Parameter
 
     from pendcli.reproduce import ReproduceResult
 
@@ -64,6 +70,83 @@ def _load_command(name: str) -> Command:
     return command
 
 
+def summary(command: Command) -> str:
+    """The first line of a command's help, whole: click's short help stops at "eq." or "s.t."."""
+    text = command.short_help or command.help or ""
+    return text.strip().splitlines()[0].strip() if text.strip() else ""
+
+
+# Options that cannot be given together, refused in every command that has both.
+EXCLUSIVE_OPTIONS = (("tol", "method"),)
+
+
+def _excluding(callback: Callable[..., Any], first: str, second: str) -> Callable[..., Any]:
+    @functools.wraps(callback)
+    def checked(**kwargs: Any) -> Any:
+        if kwargs.get(first) is not None and kwargs.get(second) is not None:
+            from pendcli.core.errors import PendcliError
+
+            raise PendcliError(
+                f"--{first} and --{second} exclude each other: --{first} picks the cheapest "
+                f"method meeting the tolerance, --{second} forces one; give one of them"
+            )
+        return callback(**kwargs)
+
+    return checked
+
+
+def _quiet_flag(value: bool) -> bool:
+    from pendcli.core.console import set_quiet
+
+    set_quiet(bool(value))
+    return value
+
+
+# typer reads these annotations by name from the module (`from __future__ import annotations`).
+_QuietFlag = Annotated[
+    bool,
+    typer.Option(
+        "--quiet",
+        "-q",
+        help="No status lines on stderr (method chosen, files written).",
+        callback=_quiet_flag,
+        expose_value=False,
+    ),
+]
+
+
+def _quiet_carrier(quiet: _QuietFlag = False) -> None:
+    """Only carries the option."""
+
+
+@functools.cache
+def _quiet_option() -> Parameter:
+    """A `--quiet/-q` flag that silences `say` (core.console), for commands without their own."""
+    probe = typer.Typer(add_completion=False, rich_markup_mode=None)
+    probe.command()(_quiet_carrier)
+    return typer.main.get_command(probe).params[0]
+
+
+def _adapt(command: Command) -> None:
+    """Every command: its whole first line as summary, `--quiet`, exclusive options refused."""
+    if getattr(command, "pendcli_adapted", False):
+        return
+    command.pendcli_adapted = True  # type: ignore[attr-defined]
+    command.short_help = summary(command) or None
+    subcommands: dict[str, Command] = getattr(command, "commands", {})
+    for sub in subcommands.values():
+        _adapt(sub)
+    if subcommands and not getattr(command, "invoke_without_command", False):
+        return
+    params = command.params
+    if not any(p.name == "quiet" or "-q" in p.opts for p in params):
+        params.append(copy.copy(_quiet_option()))
+    names = {p.name for p in params}
+    for first, second in EXCLUSIVE_OPTIONS:
+        if {first, second} <= names and command.callback is not None:
+            command.callback = _excluding(command.callback, first, second)
+
+
 class LazyGroup(TyperGroup):
     """The top-level group: eager commands first, then the lazily imported ones."""
 
@@ -73,7 +156,10 @@ class LazyGroup(TyperGroup):
     def get_command(self, ctx: Context, cmd_name: str) -> Command | None:
         if cmd_name in LAZY_COMMANDS and cmd_name not in self.commands:
             self.commands[cmd_name] = _load_command(cmd_name)
-        return super().get_command(ctx, cmd_name)
+        command = super().get_command(ctx, cmd_name)
+        if command is not None:
+            _adapt(command)
+        return command
 
     def format_commands(self, ctx: Context, formatter: HelpFormatter) -> None:
         rows = []
@@ -81,7 +167,7 @@ class LazyGroup(TyperGroup):
             if name in LAZY_COMMANDS and name not in self.commands:
                 rows.append((name, LAZY_COMMANDS[name][2]))
             else:
-                rows.append((name, self.commands[name].get_short_help_str(limit=200)))
+                rows.append((name, summary(self.commands[name])))
         with formatter.section("Commands"):
             formatter.write_dl(rows)
 
@@ -95,7 +181,9 @@ app = typer.Typer(
     ),
     no_args_is_help=True,
     pretty_exceptions_enable=False,
-    add_completion=False,
+    # --install-completion / --show-completion; completion asks LazyGroup, which loads a
+    # subcommand's module only when the word being completed needs it.
+    add_completion=True,
     # Plain click help: typer's rich help imports rich.markdown and markdown_it (~130 ms),
     # more than the rest of start-up together.
     rich_markup_mode=None,
@@ -113,7 +201,10 @@ def _version(value: bool) -> None:
 @app.callback()
 def main(
     version: Annotated[
-        bool, typer.Option("--version", callback=_version, is_eager=True, help="Show the version.")
+        bool,
+        typer.Option(
+            "--version", "-V", callback=_version, is_eager=True, help="Show the version and exit."
+        ),
     ] = False,
 ) -> None:
     """Published against recomputed values for Tisserand, Lecornu and Charbonnier."""
@@ -197,43 +288,147 @@ def check(
 
 
 def run() -> None:
-    """Console-script entry: turn every user error into one line and exit code 2."""
-    from pendcli.core.errors import PendcliError
+    """Console-script entry: every user error and OS error one line and exit 2, no traceback."""
+    if sys.stdout is None:  # started with `>&-`: Python leaves no stdout at all
+        _write_error("cannot write standard output: it is closed")
+        sys.exit(2)
+    from pendcli.core.console import protect_streams, set_quiet
 
-    click_exceptions = _click_exceptions()
+    set_quiet(False)
+    original = protect_streams()
+    try:
+        code = _invoke(sys.argv[1:])
+        code = _flush_standard_output(code)
+    finally:
+        sys.stdout = original
+    sys.exit(code)
+
+
+def _invoke(args: list[str]) -> int:
+    """Run the app; turn every way it can end into an exit code and at most one stderr line."""
+    from pendcli.core.errors import PendcliError
+    from pendcli.core.files import describe_os_error
 
     try:
-        code = app(standalone_mode=False)
+        code = app(args=args, standalone_mode=False)
     except PendcliError as exc:
-        _fail(str(exc), 2)
-    except click_exceptions.UsageError as exc:
-        if type(exc).__name__ == "NoArgsIsHelpError":  # help was shown: not an error
-            sys.exit(0)
-        _fail(exc.format_message().replace("\n", " "), 2)
-    except click_exceptions.ClickException as exc:
-        _fail(exc.format_message().replace("\n", " "), 2)
+        return _fail(options_as_typed(str(exc), args), 2)
+    except typer.TyperException as exc:  # click's usage errors: rephrased, one line
+        if type(exc).__name__ == "NoArgsIsHelpError":  # a bare group: its help, as typer does
+            _write_error(exc.format_message(), prefix="")
+            return 2
+        return _fail(usage_message(exc, args), 2)
     except (typer.Abort, KeyboardInterrupt):
-        _fail("aborted", 130)
+        return _fail("aborted", 130)
     except typer.Exit as exc:
-        sys.exit(exc.exit_code)
-    except BrokenPipeError:
-        sys.exit(0)
+        return exc.exit_code
+    except OSError as exc:
+        return _fail(describe_os_error(exc), 2)
     except Exception as exc:  # a bug: still one line, unless PENDCLI_DEBUG asks for the trace
         if os.environ.get("PENDCLI_DEBUG"):
             raise
-        _fail(f"internal error: {type(exc).__name__}: {exc} (set PENDCLI_DEBUG=1 for details)", 3)
-    sys.exit(code if isinstance(code, int) else 0)
+        return _fail(f"internal error: {type(exc).__name__}: {exc} (set PENDCLI_DEBUG=1)", 3)
+    return code if isinstance(code, int) else 0
 
 
-def _click_exceptions() -> ModuleType:
-    """click's exceptions: recent typer vendors click as ``typer._click``, older typer uses it."""
+def _flush_standard_output(code: int) -> int:
+    """Flush stdout now, so a full disk or a closed pipe is reported here, not at shutdown."""
+    from pendcli.core.errors import PendcliError
+
     try:
-        return importlib.import_module("typer._click.exceptions")
-    except ImportError:  # pragma: no cover
-        return importlib.import_module("click.exceptions")
+        sys.stdout.flush()
+    except PendcliError as exc:  # core.console names the stream (standard output)
+        # Python flushes stdout again at exit and would print "Exception ignored ...".
+        with contextlib.suppress(OSError, ValueError):
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, sys.stdout.fileno())
+            os.close(devnull)
+        return code if code >= 2 else _fail(str(exc), 2)  # an earlier error already spoke
+    return code
 
 
-def _fail(message: str, code: int) -> NoReturn:
+def _write_error(message: str, prefix: str = "pendcli: error: ") -> None:
+    if sys.stderr is None:
+        return
+    with contextlib.suppress(OSError, ValueError):
+        sys.stderr.write(f"{prefix}{message.rstrip()}\n")
+        sys.stderr.flush()
+
+
+def _fail(message: str, code: int) -> int:
     first = message.strip().splitlines()[0] if message.strip() else "error"
-    sys.stderr.write(f"pendcli: error: {first}\n")
-    sys.exit(code)
+    _write_error(first)
+    return code
+
+
+def _typed_option(param: Parameter, args: list[str]) -> str:
+    """The option's name as the user typed it (`-f` or `--format`), else its first name."""
+    names = [*param.opts, *param.secondary_opts]
+    for arg in args:
+        for name in names:
+            if arg == name or (name.startswith("--") and arg.startswith(f"{name}=")):
+                return name
+    if param.param_type_name == "argument":
+        return (param.name or "argument").upper()
+    return names[0] if names else (param.name or "value")
+
+
+_EXPECTED = {
+    "float_parsing": ("is not a number", "a real number"),
+    "float_type": ("is not a number", "a real number"),
+    "finite_number": ("is not a finite number", "a finite real number"),
+    "int_parsing": ("is not an integer", "an integer"),
+    "int_type": ("is not an integer", "an integer"),
+    "int_from_float": ("is not an integer", "an integer"),
+}
+
+
+def usage_message(exc: Exception, args: list[str]) -> str:
+    """click's or pydantic's wording of a parse error in pendcli's: the option, the value, why."""
+    param = getattr(exc, "param", None)
+    if param is None or not isinstance(exc, typer.BadParameter):
+        return _format_message(exc)
+    if type(exc).__name__ == "MissingParameter":
+        return _format_message(exc)
+    name = _typed_option(param, args)
+    errors = getattr(exc.__cause__, "errors", None)
+    first = errors()[0] if callable(errors) and errors() else {}
+    value = first.get("input")
+    kind = _EXPECTED.get(str(first.get("type")))
+    help_text = (getattr(param, "help", None) or "").strip()
+    if kind is not None:
+        said, expected = kind
+        detail = f" ({help_text.rstrip('.')})" if help_text else ""
+        return f"{name}: {value!r} {said}; expected {expected}{detail}"
+    message = str(getattr(exc, "message", exc)).removeprefix("Value error, ").rstrip(".")
+    return f"{name}: {message}"
+
+
+def _format_message(exc: Exception) -> str:
+    format_message = getattr(exc, "format_message", None)
+    text = format_message() if callable(format_message) else str(exc)
+    return " ".join(str(text).split())
+
+
+_LEADING_NAME = re.compile(r"^([A-Za-z_]\w*) (?:=|must|is|changes) ")
+
+
+def options_as_typed(message: str, args: list[str]) -> str:
+    """Name the option as typed: ``speed = -1 is out of range`` becomes ``--speed = -1 ...``.
+
+    The models name their inputs (``speed``, ``floor_fraction``); the user typed options
+    (``--speed``, ``--floor``). Only a name the command line holds is rewritten.
+    """
+    match = _LEADING_NAME.match(message)
+    if match is None:
+        return message
+    name = match.group(1)
+    for arg in args:
+        if not arg.startswith("--"):
+            continue
+        typed = arg.split("=", 1)[0]
+        key = typed[2:].replace("-", "_")
+        if key and (key == name or name.startswith(f"{key}_")):
+            pattern = rf"(?<![\w-]){re.escape(name)}(?= (?:=|<|<=|>|>=|must|is|changes) )"
+            return re.sub(pattern, typed, message)
+    return message

@@ -1,13 +1,43 @@
-"""The rich console used for tables and progress: colour only on a terminal, never with NO_COLOR."""
+"""The rich console used for tables and progress: colour only on a terminal, never with NO_COLOR.
+
+Also the standard streams made safe for any locale and any destination: a character the
+stream's encoding lacks is written as a ``\\uXXXX`` escape (still valid inside JSON strings),
+and a failed write to standard output names it, so the CLI can say which "file" failed.
+"""
 
 from __future__ import annotations
 
+import codecs
 import os
 import sys
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, TextIO
 
 if TYPE_CHECKING:
     from rich.console import Console
+
+__all__ = [
+    "ESCAPE_ERRORS",
+    "NamedStream",
+    "console",
+    "for_display",
+    "is_quiet",
+    "protect_streams",
+    "set_quiet",
+]
+
+STANDARD_OUTPUT = "standard output"
+ESCAPE_ERRORS = "pendcli-escape"
+_quiet = False
+
+
+def set_quiet(value: bool) -> None:
+    """Silence status lines (``say``) for the rest of this invocation (``--quiet``)."""
+    global _quiet
+    _quiet = value
+
+
+def is_quiet() -> bool:
+    return _quiet
 
 
 def console(stderr: bool = False) -> Console:
@@ -23,3 +53,79 @@ def console(stderr: bool = False) -> Console:
         width=None if is_tty else 160,
         soft_wrap=False,
     )
+
+
+def _escape_unencodable(exc: UnicodeError) -> tuple[str, int]:
+    """``\\uXXXX`` (UTF-16 pairs beyond the BMP): readable, lossless and valid JSON."""
+    if not isinstance(exc, UnicodeEncodeError):
+        raise exc
+    escaped = []
+    for char in exc.object[exc.start : exc.end]:
+        code = ord(char)
+        if code > 0xFFFF:
+            code -= 0x10000
+            escaped += [f"\\u{0xD800 + (code >> 10):04x}", f"\\u{0xDC00 + (code & 0x3FF):04x}"]
+        else:
+            escaped.append(f"\\u{code:04x}")
+    return "".join(escaped), exc.end
+
+
+codecs.register_error(ESCAPE_ERRORS, _escape_unencodable)
+
+
+class NamedStream:
+    """A text stream whose OS errors become one PendcliError naming it (``standard output``)."""
+
+    def __init__(self, stream: TextIO, name: str) -> None:
+        self._stream = stream
+        self._name = name
+
+    def _error(self, exc: OSError) -> Exception:
+        # A PendcliError, not an OSError: typer swallows EPIPE (exit 1) before pendcli sees it.
+        from pendcli.core.errors import PendcliError
+        from pendcli.core.files import describe_os_error
+
+        return PendcliError(describe_os_error(exc, self._name))
+
+    def write(self, text: str) -> int:
+        try:
+            return self._stream.write(text)
+        except OSError as exc:
+            raise self._error(exc) from None
+
+    def flush(self) -> None:
+        try:
+            self._stream.flush()
+        except OSError as exc:
+            raise self._error(exc) from None
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._stream, name)
+
+
+def _encodes_unicode(stream: TextIO) -> bool:
+    try:
+        return codecs.lookup(stream.encoding or "ascii").name.startswith("utf")
+    except LookupError:
+        return False
+
+
+def for_display(text: str, stream: TextIO | None = None) -> str:
+    """Text for a human on ``stream``: ``?`` for what its encoding lacks, so columns still align."""
+    stream = sys.stdout if stream is None else stream
+    if _encodes_unicode(stream):
+        return text
+    encoding = stream.encoding or "ascii"
+    return text.encode(encoding, "replace").decode(encoding)
+
+
+def protect_streams() -> TextIO:
+    """Make stdout/stderr safe on any locale; wrap stdout; return the stdout to restore."""
+    original = sys.stdout
+    for stream in (sys.stdout, sys.stderr):
+        reconfigure = getattr(stream, "reconfigure", None)
+        if reconfigure is not None and not _encodes_unicode(stream):
+            reconfigure(errors=ESCAPE_ERRORS)
+    if not isinstance(original, NamedStream):
+        sys.stdout = NamedStream(original, STANDARD_OUTPUT)
+    return original

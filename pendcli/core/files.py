@@ -35,11 +35,21 @@ _RENAME_EXCHANGE = 2  # linux/fs.h
 _AT_FDCWD = -100
 
 
-def describe_os_error(exc: OSError, path: Path | str | None = None) -> str:
-    """One line: the path and the cause (``cannot write out/x.csv: No space left on device``)."""
+# Errors that can only come from writing; others (EACCES, ENOENT...) may be a read as well.
+_WRITE_ERRNOS = frozenset({errno.ENOSPC, errno.EFBIG, errno.EROFS, errno.EDQUOT, errno.EPIPE})
+
+
+def describe_os_error(exc: OSError, path: Path | str | None = None, action: str = "") -> str:
+    """One line: the path and the cause (``cannot write out/x.csv: No space left on device``).
+
+    ``action`` defaults to "write" when ``path`` is given (the caller was writing it) or the
+    error can only come from a write, else to "access".
+    """
     where = path if path is not None else (exc.filename or "")
-    cause = exc.strerror or type(exc).__name__
-    return f"cannot write {where}: {cause}" if where else f"I/O error: {cause}"
+    cause = exc.strerror or str(exc) or type(exc).__name__
+    if not action:
+        action = "write" if path is not None or exc.errno in _WRITE_ERRNOS else "access"
+    return f"cannot {action} {where}: {cause}" if where != "" else f"I/O error: {cause}"
 
 
 def _fsync_dir(folder: Path) -> None:

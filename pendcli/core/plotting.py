@@ -45,31 +45,65 @@ def new_figure(
 
 
 def save_figure(fig: Figure, path: str | Path) -> Path:
+    """Write ``fig`` to ``path`` atomically (core.files): a failure never leaves a 0-byte file."""
+    import io
+
+    from pendcli.core.files import atomic_write
+
     path = Path(path)
-    if path.suffix.lower() not in (".png", ".svg", ".pdf"):
+    suffix = path.suffix.lower()
+    if suffix not in FIGURE_SUFFIXES:
         raise PendcliError(f"plot path {str(path)!r} must end in .png, .svg or .pdf")
     try:
+        # Internal callers (the report) write into folders they have not made yet.
         path.parent.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise PendcliError(f"cannot create folder for plot {str(path)!r}: {exc.strerror}") from None
     fig.tight_layout()
-    metadata = {"Software": None} if path.suffix.lower() == ".png" else {"Creator": None}
-    if path.suffix.lower() == ".pdf":
+    metadata: dict[str, str | None] = {"Software": None} if suffix == ".png" else {"Creator": None}
+    if suffix == ".pdf":
         metadata = {"Creator": None, "Producer": None, "CreationDate": None}
-    try:
-        fig.savefig(path, metadata=metadata)
-    except OSError as exc:
-        raise PendcliError(f"cannot write plot {str(path)!r}: {exc.strerror}") from None
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format=suffix[1:], metadata=metadata)
+    atomic_write(path, buffer.getvalue())
     return path
 
 
-def validate_plot_path(path: str | Path | None) -> Path | None:
-    """Check a --plot argument before any computation starts."""
+FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
+
+
+def _existing_folder(option: str, folder: Path) -> None:
+    if not folder.exists():
+        raise PendcliError(f"{option}: folder {folder} does not exist")
+    if not folder.is_dir():
+        raise PendcliError(f"{option}: {folder} is not a folder")
+
+
+def validate_plot_path(path: str | Path | None, option: str = "--plot") -> Path | None:
+    """Check a --plot FILE before any computation starts: suffix, an existing parent folder."""
     if path is None:
         return None
     path = Path(path)
-    if path.suffix.lower() not in (".png", ".svg", ".pdf"):
-        raise PendcliError(f"plot path {str(path)!r} must end in .png, .svg or .pdf")
-    if path.exists() and path.is_dir():
-        raise PendcliError(f"plot path {str(path)!r} is a folder; give a file name ending in .png")
+    if path.suffix.lower() not in FIGURE_SUFFIXES:
+        raise PendcliError(f"{option}: {str(path)!r} must end in .png, .svg or .pdf")
+    if path.is_dir():
+        raise PendcliError(f"{option}: {str(path)!r} is a folder; give a file name ending in .png")
+    _existing_folder(option, path.parent if str(path.parent) else Path("."))
     return path
+
+
+def validate_plot_folder(folder: str | Path | None, option: str = "--plot") -> Path | None:
+    """Check a --plot DIR (several figures) before computing: a folder, its parent existing."""
+    if folder is None:
+        return None
+    folder = Path(folder)
+    if folder.suffix.lower() in FIGURE_SUFFIXES:
+        raise PendcliError(
+            f"{option}: this command draws several figures into a folder; "
+            f"{str(folder)!r} looks like a file name"
+        )
+    if folder.exists():
+        _existing_folder(option, folder)
+    else:
+        _existing_folder(option, folder.parent)
+    return folder
