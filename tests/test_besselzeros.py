@@ -13,7 +13,10 @@ from pendcli.core.errors import PendcliError
 from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     METHODS,
+    ascending_series,
     bessel_zeros,
+    bessel_zeros_at,
+    iter_bessel_zeros,
     series_safe_limit,
 )
 from pendcli.papers.lecornu.model import lecornu_series
@@ -118,3 +121,69 @@ def test_series_refusal_names_the_limit():
         bessel_zeros(2, 7, "series")
     assert 22.0 < limit < 24.0
     assert math.isfinite(series_safe_limit(1))
+
+
+# --- chunks, arbitrary indices, and a numerics module free of any paper -------------------
+
+
+@pytest.mark.parametrize("method", ["auto", "mcmahon", "mcmahon-newton"])
+@pytest.mark.parametrize("order", [1, 2])
+def test_chunks_and_indices_are_bit_for_bit_the_whole_array(order, method):
+    whole = bessel_zeros(order, 5000, method)
+    chunks = list(iter_bessel_zeros(order, 5000, method, chunk=777))
+    assert max(len(c) for c in chunks) == 777
+    assert np.array_equal(np.concatenate(chunks), whole)
+    picks = np.array([4999, 1, 31, 30, 32, 2500])
+    assert np.array_equal(bessel_zeros_at(order, picks, method), whole[picks - 1])
+
+
+def test_zeros_at_large_indices_against_mpmath():
+    s = np.array([10**5, 3 * 10**6, 10**8])  # beyond MAX_COUNT too: McMahon holds there
+    got = bessel_zeros_at(2, s)
+    for k, value in zip(s.tolist(), got.tolist(), strict=True):
+        assert value == float(reference_zero(2, k))
+
+
+def test_zero_indices_are_checked():
+    with pytest.raises(PendcliError, match="valid range is s >= 1"):
+        bessel_zeros_at(1, np.array([0, 3]))
+    with pytest.raises(PendcliError, match="count = 0"):
+        iter_bessel_zeros(1, 0)  # checked at the call, before any chunk
+
+
+@pytest.mark.parametrize("order", [1, 2])
+@pytest.mark.parametrize("z", [0.5, 3.0, 7.5])
+def test_ascending_series_is_bessel(order, z):
+    x = z * z / 4
+    expected = mpmath.sqrt(x) * mpmath.besselj(1, z) if order == 1 else mpmath.besselj(2, z) / x
+    # below z ~ 8 cancellation costs under three digits (series_error_bound)
+    assert float(ascending_series(order, x)) == pytest.approx(float(expected), rel=1e-13, abs=1e-13)
+
+
+def test_numerics_depends_on_no_paper():
+    import pathlib
+
+    import pendcli.numerics
+
+    for path in pathlib.Path(pendcli.numerics.__file__).parent.glob("*.py"):
+        text = path.read_text(encoding="utf-8")
+        assert "from pendcli.papers" not in text and "import pendcli.papers" not in text, path
+
+
+def test_cli_streams_zeros_exactly_in_the_json_layout():
+    import json
+
+    from typer.testing import CliRunner
+
+    from pendcli.cli.lecornu import app
+
+    count = 70_000  # two chunks
+    result = CliRunner().invoke(app, ["zeros", "--order", "1", "--count", str(count), "-f", "json"])
+    assert result.exit_code == 0, result.output
+    doc = json.loads(result.stdout)
+    assert list(doc) == ["order", "method", "method_reason", "zeros"]
+    assert [r["k"] for r in doc["zeros"]] == list(range(1, count + 1))
+    assert np.array_equal([r["zero"] for r in doc["zeros"]], bessel_zeros(1, count))  # repr exact
+    table = CliRunner().invoke(app, ["zeros", "--count", "6000"]).stdout.splitlines()
+    assert table[:2] == ["Zeros of J_2 (auto)", "   k                   j"]  # plain text, aligned
+    assert table[-1] == f"6000  {float(bessel_zeros(2, 6000)[-1])!r:>18}"

@@ -619,7 +619,8 @@ def test_cli_example_csv_and_plot(runner, tmp_path):
         runner, "example", "--speed", "0.5", "--length", "2", "--format", "csv", "--plot", str(plot)
     )
     assert result.exit_code == 0, result.output
-    assert result.output.splitlines()[0].startswith("k,z,length_m,time_s")
+    # several tables in one CSV: the first column names the table of each row (issue 13)
+    assert result.output.splitlines()[0].startswith("table,k,z,length_m,time_s")
     pixels = _png_pixels(plot)
     assert pixels.shape[:2] == (576, 960)
     assert _share_of(pixels, "0.3") > 1e-3  # solution (10) drawn

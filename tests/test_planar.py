@@ -10,6 +10,7 @@ import itertools
 import math
 
 import mpmath
+import numpy as np
 import pytest
 
 from pendcli.core.errors import PendcliError
@@ -121,3 +122,37 @@ def test_agm_ellipk_against_mpmath(amplitude):
     errors = [rel(planar.agm_ellipk(kc, k)[0], exact) for k in (1, 2, 3)]
     for before, after in itertools.pairwise(errors):
         assert after <= max(10 * before**2, 1e-15)  # each step squares the error
+
+
+# --- arrays of amplitudes ------------------------------------------------------------------
+
+ARRAY_SAMPLE = np.concatenate(
+    [np.linspace(-179.5, 179.5, 61), 180 - np.logspace(-13, -1, 7), [0.0, 90.0, 1e-8]]
+)
+
+
+@pytest.mark.parametrize("method", ["agm", "ellipkm1", "ellipk", "series"])
+def test_array_is_the_scalar_path_element_wise(method):
+    got = planar.period_ratio(ARRAY_SAMPLE.reshape(-1, 1), method)
+    assert got.shape == (ARRAY_SAMPLE.size, 1)
+    scalar = [planar.period_ratio(float(a), method) for a in ARRAY_SAMPLE]
+    assert got.ravel().tolist() == scalar
+
+
+@pytest.mark.parametrize("method", ["agm", "ellipkm1"])
+def test_array_against_mpmath(method):
+    got = planar.period_ratio(ARRAY_SAMPLE, method)
+    worst = max(
+        rel(v, ref_ratio(a)) for v, a in zip(got.tolist(), ARRAY_SAMPLE.tolist(), strict=True)
+    )
+    assert worst < 1e-15
+
+
+def test_array_period_and_errors():
+    periods = planar.period(np.array([20.0, 90.0]), 2.0, 9.81)
+    assert periods.tolist() == [planar.period(20.0, 2.0, 9.81), planar.period(90.0, 2.0, 9.81)]
+    assert planar.period_ratio([]).shape == (0,)
+    with pytest.raises(PendcliError, match="180° is the unstable"):
+        planar.period_ratio(np.array([10.0, -180.0]))
+    with pytest.raises(PendcliError, match="valid range"):
+        planar.period_ratio([1.0, float("nan")])

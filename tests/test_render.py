@@ -8,6 +8,7 @@ import csv
 import io
 import json
 
+import numpy as np
 import pytest
 from rich.console import Console
 
@@ -21,6 +22,7 @@ from pendcli.render import (
     to_json,
     to_markdown,
 )
+from pendcli.render.stream import StreamedColumn, StreamedRows, write_stream
 
 ROWS = [
     {"id": "a", "x": 1.5, "verdict": "agrees", "note": "pipe | here"},
@@ -63,8 +65,28 @@ def test_csv_cells_floats_lists_and_non_finite():
 
 
 def test_csv_renderer_writes_the_union_of_keys_in_order_of_appearance():
-    sections = [("A", [{"id": "a", "x": 1}], COLS), ("B", [{"id": "b", "y": 2}], COLS)]
-    assert render(OutputFormat.csv, sections, {}) == "id,x,y\na,1,\nb,,2\n"
+    sections = [("A", [{"id": "a", "x": 1}], COLS), ("B, b", [{"id": "b", "y": 2}], COLS)]
+    # several tables: the first column names the table of each row
+    assert render(OutputFormat.csv, sections, {}) == 'table,id,x,y\nA,a,1,\n"B, b",b,,2\n'
+
+
+def test_csv_of_one_table_has_no_table_column():
+    assert render(OutputFormat.csv, [("A", [{"id": "a"}], COLS)], {}) == "id\na\n"
+
+
+def test_numpy_scalars_are_plain_numbers_in_every_format():
+    rows = [{"id": np.int64(3), "x": np.float64(1.2178), "pair": (np.float64(9.5), 2)}]
+    cols = [Column("id", "id"), Column("x", "x"), Column("pair", "pair")]
+    outputs = {
+        fmt: render(fmt, [("T", rows, cols)], {"rows": rows}, Console(width=80))
+        for fmt in OutputFormat
+    }
+    assert outputs[OutputFormat.csv] == 'id,x,pair\n3,1.2178,"[9.5, 2]"\n'
+    assert json.loads(outputs[OutputFormat.json]) == {
+        "rows": [{"id": 3, "x": 1.2178, "pair": [9.5, 2]}]
+    }
+    assert outputs[OutputFormat.markdown].endswith("| 3 | 1.2178 | [9.5, 2] |\n")
+    assert all("np." not in text for text in outputs.values())
 
 
 def test_json_whole_output():
@@ -143,3 +165,58 @@ def test_every_format_has_a_renderer_returning_text(fmt):
 )
 def test_fmt_float(value, text):
     assert fmt_float(value) == text
+
+
+# --- streamed rows: the same bytes as the list renderers, a chunk at a time ----------------
+
+STREAM_KEYS = ("k", "v")
+
+
+def _streamed(chunks: list[tuple[list[int], list[float]]]) -> StreamedRows:
+    columns = (StreamedColumn("k", "k"), StreamedColumn("v", "value"))
+    length = sum(len(k) for k, _ in chunks)
+    return StreamedRows(
+        "T", columns, length, lambda: [(np.array(k), np.array(v, dtype=float)) for k, v in chunks]
+    )
+
+
+STREAM_CHUNKS = [([1, 2], [0.1 + 0.2, float("nan")]), ([3], [-1e-300]), ([4, 5], [2.5, 1 / 3])]
+
+
+@pytest.mark.parametrize("fmt", [OutputFormat.json, OutputFormat.csv, OutputFormat.markdown])
+def test_stream_writes_what_the_list_renderer_writes(fmt):
+    rows = [{"k": k, "v": v} for ks, vs in STREAM_CHUNKS for k, v in zip(ks, vs, strict=True)]
+    cols = [
+        Column("k", "k", justify="right"),
+        Column("v", "value", fmt=lambda r: _repr(r["v"]), justify="right"),
+    ]
+    document = {"head": 1, "rows": rows, "tail": "z"}
+    out = io.StringIO()
+    write_stream(fmt, _streamed(STREAM_CHUNKS), {"head": 1, "rows": None, "tail": "z"}, "rows", out)
+    assert out.getvalue() == render(fmt, [("T", rows, cols)], document)
+
+
+def _repr(value: float) -> str:
+    return repr(value) if value == value else ""
+
+
+def test_stream_json_floats_round_trip():
+    out = io.StringIO()
+    write_stream(OutputFormat.json, _streamed(STREAM_CHUNKS), {"rows": []}, "rows", out)
+    values = [r["v"] for r in json.loads(out.getvalue())["rows"]]
+    assert values[0] == 0.1 + 0.2 and values[1] is None and values[2] == -1e-300
+
+
+def test_stream_plain_table_whole_output():
+    out = io.StringIO()
+    write_stream(OutputFormat.table, _streamed(STREAM_CHUNKS), {}, "rows", out)
+    assert out.getvalue() == (
+        "T\n"
+        "k                value\n"
+        "-  -------------------\n"
+        "1  0.30000000000000004\n"
+        "2                     \n"
+        "3              -1e-300\n"
+        "4                  2.5\n"
+        "5   0.3333333333333333\n"
+    )

@@ -10,6 +10,10 @@ from pendcli.cli.common import FormatOption, PlotOption, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
+    from collections.abc import Callable, Iterator
+
+    import numpy as np
+
     from pendcli.render import Column
 
 app = typer.Typer(
@@ -103,25 +107,65 @@ def zeros(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """The first K positive zeros of J_1 or J_2 (Lecornu's (15) and the vertical passages)."""
-    from pendcli.numerics.besselzeros import bessel_zeros
-    from pendcli.render import Column
+    from functools import partial
+
+    from pendcli.numerics.besselzeros import check_zeros_request, iter_bessel_zeros
 
     method, reason = _zeros_method(method, tol)
-    values = bessel_zeros(order, count, method)
-    rows = [{"k": k + 1, "zero": float(z)} for k, z in enumerate(values)]
-    columns = [
-        Column("k", "k", justify="right"),
-        Column("zero", "j", fmt=lambda r: repr(r["zero"]), justify="right"),
-    ]
-    emit(
-        fmt,
-        [(f"Zeros of J_{order} ({method})", rows, columns)],
-        {"order": order, "method": method, "method_reason": reason, "zeros": rows},
-    )
+    check_zeros_request(order, count, method)  # a bad request fails before any output
+    title = f"Zeros of J_{order} ({method})"
+    document = {"order": order, "method": method, "method_reason": reason}
+    chunks = partial(iter_bessel_zeros, order, count, method)
+    if fmt is OutputFormat.table and count <= RICH_TABLE_MAX_ROWS:
+        _zeros_rich_table(title, document, [float(z) for c in chunks() for z in c])
+    else:
+        _zeros_streamed(fmt, title, document, chunks, count)
     if fmt is OutputFormat.table:
         from pendcli.cli.common import say
 
         say(f"method: {method} ({reason})")
+
+
+# Above this many rows the table format prints plain aligned text: a rich table holds every
+# cell (and measures it) before drawing.
+RICH_TABLE_MAX_ROWS = 5000
+
+
+def _zeros_rich_table(title: str, document: dict[str, object], values: list[float]) -> None:
+    from pendcli.render import Column
+
+    rows = [{"k": k + 1, "zero": z} for k, z in enumerate(values)]
+    columns = [
+        Column("k", "k", justify="right"),
+        Column("zero", "j", fmt=lambda r: repr(r["zero"]), justify="right"),
+    ]
+    emit(OutputFormat.table, [(title, rows, columns)], {**document, "zeros": rows})
+
+
+def _zeros_streamed(
+    fmt: OutputFormat,
+    title: str,
+    document: dict[str, object],
+    chunks: Callable[[], Iterator[np.ndarray]],
+    count: int,
+) -> None:
+    """The zeros written as they are computed, in the key layout of the list output."""
+    import numpy as np
+
+    from pendcli.render.stream import StreamedColumn, StreamedRows, write_stream
+
+    def numbered() -> Iterator[tuple[np.ndarray, np.ndarray]]:
+        start = 1
+        for zeros in chunks():
+            yield np.arange(start, start + len(zeros)), zeros
+            start += len(zeros)
+
+    columns = (
+        StreamedColumn("k", "k", width=len(str(count))),
+        # 17 significant digits and the point: the longest repr of a zero below 1e16
+        StreamedColumn("zero", "j", width=18),
+    )
+    write_stream(fmt, StreamedRows(title, columns, count, numbered), document, "zeros")
 
 
 def _example_columns() -> tuple[list[Column], list[Column], list[Column]]:

@@ -17,8 +17,9 @@ the zeros for any index up to :data:`MAX_COUNT`, with the method named:
 ``"mpmath"``
     ``mpmath.besseljzero`` at 30 digits, one zero at a time: the slow reference.
 ``"series"``
-    Lecornu's series (10) (order 1) and (13) (order 2) in double precision
-    (:func:`pendcli.papers.lecornu.model.lecornu_series`), with bracketed root finding.
+    the ascending power series of J_1 and J_2 (DLMF 10.2.2) summed in double precision
+    (:func:`ascending_series`; Lecornu's (10) and (13) are these sums), with bracketed root
+    finding.
     Summing an alternating series whose terms reach ~I_ν(z) for a result of size ~J_ν(z) loses
     log10(I_ν/|J_ν'|) digits; the method refuses zeros whose predicted error exceeds
     :data:`SERIES_MAX_ERROR` (see :func:`series_error_bound`).
@@ -28,6 +29,9 @@ the zeros for any index up to :data:`MAX_COUNT`, with the method named:
     (:func:`mcmahon_truncation_bound`; alone it is correctly rounded from s = 16 on).
     Measured: correctly rounded at every index checked against mpmath, up to 10^7.
 
+:func:`bessel_zeros_at` gives the zeros of any array of indices, and :func:`iter_bessel_zeros`
+the first ``count`` in chunks of bounded size (what the CLI streams).
+
 Accuracy and timing are measured in ``tests/test_besselzeros.py`` and
 ``tests/test_lecornu_extremes.py`` against mpmath at 30 digits.
 """
@@ -35,6 +39,7 @@ Accuracy and timing are measured in ``tests/test_besselzeros.py`` and
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from functools import cache
 
 import numpy as np
@@ -47,7 +52,11 @@ __all__ = [
     "METHODS",
     "ORDERS",
     "SERIES_MAX_ERROR",
+    "ascending_series",
     "bessel_zeros",
+    "bessel_zeros_at",
+    "check_zeros_request",
+    "iter_bessel_zeros",
     "mcmahon_truncation_bound",
     "series_error_bound",
     "series_safe_limit",
@@ -65,7 +74,8 @@ _PI_LO = 1.2246467991473532e-16  # π - math.pi (exact to ~1e-32): the second wo
 _SPLIT = 134217729.0  # 2**27 + 1, Dekker's splitter for exact products in double
 
 
-def _check(order: int, count: int, method: str) -> None:
+def check_zeros_request(order: int, count: int, method: str) -> None:
+    """Raise :class:`PendcliError` naming the valid range unless the request is valid."""
     if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or order not in ORDERS:
         raise PendcliError(f"order must be one of {ORDERS}, got {order!r}")
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
@@ -85,7 +95,7 @@ def _check(order: int, count: int, method: str) -> None:
 
 def bessel_zeros(order: int, count: int, method: str = "auto") -> np.ndarray:
     """The first ``count`` positive zeros of J_order (order 1 or 2), as a float64 array."""
-    _check(order, count, method)
+    check_zeros_request(order, count, method)
     order, count = int(order), int(count)
     if method == "scipy":
         from scipy.special import jn_zeros
@@ -104,6 +114,56 @@ def bessel_zeros(order: int, count: int, method: str = "auto") -> np.ndarray:
     head = min(count, AUTO_SWITCH - 1)
     zeros[:head] = _mpmath_head(order)[:head]
     return zeros
+
+
+# Methods whose zero of index s depends on s alone: any slice of indices can be asked for.
+_ELEMENTWISE = ("auto", "mcmahon", "mcmahon-newton")
+CHUNK = 1 << 16  # zeros per chunk of iter_bessel_zeros: ~0.5 MB a temporary array
+
+
+def bessel_zeros_at(order: int, indices: np.ndarray | int, method: str = "auto") -> np.ndarray:
+    """The zeros j_(ν,s) for an array of indices s >= 1 (any shape, any order of indices).
+
+    Bit for bit the values :func:`bessel_zeros` gives at the same indices: the methods
+    ``auto``, ``mcmahon`` and ``mcmahon-newton`` treat each index alone; the others compute
+    the first max(s) zeros and pick.
+    """
+    s = np.asarray(indices)
+    if s.size == 0:
+        return np.empty(s.shape)
+    if not np.issubdtype(s.dtype, np.integer):
+        raise PendcliError(f"zero indices must be integers, got dtype {s.dtype}")
+    top = int(s.max())
+    if int(s.min()) < 1:
+        raise PendcliError(f"zero index {int(s.min())} is out of range; valid range is s >= 1")
+    check_zeros_request(order, min(top, MAX_COUNT) if method in _ELEMENTWISE else top, method)
+    order = int(order)
+    if method not in _ELEMENTWISE:
+        return bessel_zeros(order, top, method)[s - 1]
+    zeros = _mcmahon(order, s.astype(float))
+    if method == "mcmahon-newton":
+        return _halley(order, zeros)
+    if method == "auto":
+        head = s < AUTO_SWITCH
+        zeros[head] = _mpmath_head(order)[s[head] - 1]
+    return zeros
+
+
+def iter_bessel_zeros(
+    order: int, count: int, method: str = "auto", chunk: int = CHUNK
+) -> Iterator[np.ndarray]:
+    """The first ``count`` zeros in consecutive chunks of at most ``chunk``: memory bounded
+    whatever the count for the element-wise methods (the others come as one chunk).
+
+    The request is checked at the call, before any chunk is asked for.
+    """
+    check_zeros_request(order, count, method)
+    if method not in _ELEMENTWISE:
+        return iter([bessel_zeros(order, count, method)])
+    starts = range(1, int(count) + 1, chunk)
+    return (
+        bessel_zeros_at(order, np.arange(a, min(a + chunk, int(count) + 1)), method) for a in starts
+    )
 
 
 @cache
@@ -261,11 +321,8 @@ def _series_zeros(order: int, count: int) -> np.ndarray:
             "(use method 'auto' beyond)"
         )
 
-    # The series is the paper's formula: it lives with the paper (imported only for "series").
-    from pendcli.papers.lecornu.model import lecornu_series
-
     def f(x: float) -> float:
-        return float(lecornu_series(order, x))
+        return float(ascending_series(order, x))
 
     out = np.empty(count)
     for i, z in enumerate(guesses):
@@ -274,3 +331,34 @@ def _series_zeros(order: int, count: int) -> np.ndarray:
         x = brentq(f, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps, maxiter=200)
         out[i] = 2.0 * math.sqrt(x)
     return out
+
+
+def ascending_series(order: int, x: float | np.ndarray) -> np.ndarray:
+    """The ascending series of J_1 or J_2 (DLMF 10.2.2) in double precision, in x = z²/4.
+
+    order 1: Σ_(n>=1) (-1)^(n-1) n x^n/(n!)² = √x J_1(2√x);
+    order 2: Σ_(k>=0) (-1)^k x^k/(k!(k+2)!) = J_2(2√x)/x.
+    Summed term by term until the terms no longer change the sum (at most 400 terms); the
+    cancellation this suffers for large x is what :func:`series_error_bound` predicts.
+    """
+    x = np.asarray(x, dtype=float)
+    if order == 1:
+        term = x.copy()  # n = 1
+        total = term.copy()
+        for n in range(2, 400):
+            # t_n / t_(n-1) = -x n / ((n-1) n²) = -x / ((n-1) n)
+            term = -term * x / ((n - 1) * n)
+            new = total + term
+            if np.all(new == total):
+                break
+            total = new
+        return total
+    term = np.full_like(x, 0.5)  # k = 0: 1/(0! 2!)
+    total = term.copy()
+    for k in range(1, 400):
+        term = -term * x / (k * (k + 2))
+        new = total + term
+        if np.all(new == total):
+            break
+        total = new
+    return total

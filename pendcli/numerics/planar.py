@@ -18,13 +18,22 @@ Methods for K(m), m = k² = sin²(θ0/2), complementary modulus k'² = 1 - m = c
   order 1 keeps k² (error O(k⁴), Lecornu's level).
 
 Amplitudes are in degrees, as in the papers (θ0 = 20°), which also makes 180° exact.
+
+:func:`period_ratio` and :func:`period` also take an array of amplitudes (any shape) and
+return an array: the same arithmetic element-wise in numpy (AGM iterated until every element
+has converged, each stopping where the scalar loop would), so 10^5 periods cost milliseconds.
 """
 
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING, Any, overload
 
 from pendcli.core.errors import PendcliError
+
+if TYPE_CHECKING:
+    import numpy as np
+    from numpy.typing import ArrayLike, NDArray
 
 __all__ = [
     "G_STANDARD",
@@ -106,13 +115,30 @@ def series_period_ratio(amplitude: float, order: int) -> float:
     return total
 
 
+@overload
 def period_ratio(
-    amplitude: float, method: str = "agm", *, order: int = 8, epsrel: float = 1.49e-8
-) -> float:
-    """T/T0 = (2/π) K(sin²(θ0/2)), T0 = 2π√(l/g), by the named method (see module docstring)."""
-    amplitude = _check_amplitude(amplitude)
+    amplitude: float, method: str = ..., *, order: int = ..., epsrel: float = ...
+) -> float: ...
+@overload
+def period_ratio(
+    amplitude: np.ndarray | list[float] | tuple[float, ...],
+    method: str = ...,
+    *,
+    order: int = ...,
+    epsrel: float = ...,
+) -> NDArray[np.float64]: ...
+def period_ratio(
+    amplitude: Any, method: str = "agm", *, order: int = 8, epsrel: float = 1.49e-8
+) -> Any:
+    """T/T0 = (2/π) K(sin²(θ0/2)), T0 = 2π√(l/g), by the named method (see module docstring).
+
+    An array (or list) of amplitudes gives an array of ratios.
+    """
     if method not in METHODS:
         raise PendcliError(f"method = {method!r} is not known; valid methods: {', '.join(METHODS)}")
+    if _is_array(amplitude):
+        return _period_ratio_array(amplitude, method, order, epsrel)
+    amplitude = _check_amplitude(amplitude)
     if amplitude == 0.0:
         return 1.0
     if method == "series":
@@ -148,13 +174,14 @@ def period_ratio(
 
 
 def period(
-    amplitude: float,
+    amplitude: Any,
     length: float = 1.0,
     g: float = G_STANDARD,
     method: str = "agm",
-    **options,
-) -> float:
-    """The exact period T = 4 √(l/g) K(sin²(θ0/2)) in seconds (θ0 in degrees, l in m)."""
+    **options: Any,
+) -> Any:
+    """The exact period T = 4 √(l/g) K(sin²(θ0/2)) in seconds (θ0 in degrees, l in m); an
+    array of amplitudes gives an array of periods."""
     _check_positive("length", length)
     _check_positive("g", g)
     return 2.0 * math.pi * math.sqrt(length / g) * period_ratio(amplitude, method, **options)
@@ -179,3 +206,84 @@ def _check_positive(name: str, value: float) -> None:
         raise PendcliError(f"{name} must be a positive real number, got {value!r}")
     if not (math.isfinite(value) and value > 0):
         raise PendcliError(f"{name} = {value} is out of range; valid range is {name} > 0")
+
+
+# --- arrays of amplitudes ------------------------------------------------------------------
+
+
+def _is_array(value: object) -> bool:
+    return type(value).__module__ == "numpy" or isinstance(value, list | tuple)
+
+
+def _check_amplitudes(amplitudes: ArrayLike) -> NDArray[np.float64]:
+    """|θ0| as a float array, or the scalar check's one-line error for its first bad value."""
+    import numpy as np
+
+    raw = np.asarray(amplitudes)
+    if raw.dtype.kind not in "iuf":
+        raise PendcliError(f"amplitudes must be real numbers of degrees, got dtype {raw.dtype}")
+    values = np.abs(raw.astype(float))
+    bad = ~(values < 180.0)  # NaN, infinities and 180° and beyond
+    if bad.any():
+        _check_amplitude(float(values[bad].flat[0]))  # raises, in the scalar words
+    return values
+
+
+def _period_ratio_array(
+    amplitudes: ArrayLike, method: str, order: int, epsrel: float
+) -> NDArray[np.float64]:
+    """:func:`period_ratio` element-wise, with the scalar path's formulas and accuracy."""
+    import numpy as np
+
+    a = _check_amplitudes(amplitudes)
+    near = a > 90.0
+    # the exact complement 180 - θ0 above 90°, as in complementary_modulus and modulus_squared
+    half = np.radians(np.where(near, 180.0 - a, a)) / 2
+    kc = np.where(near, np.sin(half), np.cos(half))
+    k = np.where(near, np.cos(half), np.sin(half))
+    if method == "agm":
+        k_value = _agm_ellipk_array(kc)
+    elif method == "ellipkm1":
+        from scipy.special import ellipkm1
+
+        k_value = ellipkm1(kc * kc)
+    elif method == "ellipk":
+        from scipy.special import ellipk
+
+        k_value = ellipk(np.sin(np.radians(a) / 2) ** 2)
+    elif method == "series":
+        return _series_array(k * k, order)
+    else:
+        flat = [period_ratio(float(x), "quad", epsrel=epsrel) for x in a.ravel()]
+        return np.asarray(flat).reshape(a.shape)
+    return np.where(a == 0.0, 1.0, 2.0 * k_value / math.pi)
+
+
+def _agm_ellipk_array(kc: NDArray[np.float64]) -> NDArray[np.float64]:
+    """K = π/(2 AGM(1, k')) element-wise; each element stops where :func:`agm_ellipk` would."""
+    import numpy as np
+
+    b = np.array(kc, dtype=float).ravel()
+    a = np.ones_like(b)
+    todo = np.flatnonzero(np.abs(a - b) > 4e-16 * a)
+    for _ in range(60):
+        if todo.size == 0:
+            break
+        at, bt = a[todo], b[todo]
+        at, bt = 0.5 * (at + bt), np.sqrt(at * bt)
+        a[todo], b[todo] = at, bt
+        todo = todo[np.abs(at - bt) > 4e-16 * at]  # only those not yet converged go on
+    return (math.pi / (a + b)).reshape(np.shape(kc))
+
+
+def _series_array(m: NDArray[np.float64], order: int) -> NDArray[np.float64]:
+    import numpy as np
+
+    if isinstance(order, bool) or not isinstance(order, int) or order < 0:
+        raise PendcliError(f"order must be an integer >= 0, got {order!r}")
+    total, coeff, power = np.ones_like(m), 1.0, np.ones_like(m)
+    for j in range(1, order + 1):
+        coeff *= (2 * j - 1) / (2 * j)
+        power = power * m
+        total = total + coeff * coeff * power
+    return total

@@ -33,6 +33,10 @@ class Column:
             return ""
         if isinstance(value, float):
             return fmt_float(value)
+        if isinstance(value, list | tuple):
+            from pendcli.render.json import plain  # json imports this module
+
+            return str(plain(value))
         return str(value)
 
 

@@ -1,17 +1,22 @@
-"""CSV: one header line, one line per row; floats written with ``repr`` so they round-trip."""
+"""CSV: one header line, one line per row; floats written with ``repr`` so they round-trip.
+
+Cells are plain text: numbers as numbers (a numpy scalar as the Python number it holds, never
+``np.float64(...)``), lists as JSON. A command printing several tables writes them under one
+header, the first column ``table`` naming the table (section title) each row belongs to; a
+command with a single table has no such column.
+"""
 
 from __future__ import annotations
 
 import csv
 import io
 import json
-import math
 from collections.abc import Mapping, Sequence
 
 from pendcli.render.columns import Row, Section
 from pendcli.render.json import plain
 
-__all__ = ["CsvRenderer", "to_csv"]
+__all__ = ["TABLE_KEY", "CsvRenderer", "to_csv"]
 
 
 def to_csv(rows: Sequence[Row], keys: Sequence[str] | None = None) -> str:
@@ -26,20 +31,28 @@ def to_csv(rows: Sequence[Row], keys: Sequence[str] | None = None) -> str:
 
 
 def _cell(value: object) -> str:
+    value = plain(value)
     if value is None:
         return ""
     if isinstance(value, float):
-        return repr(value) if math.isfinite(value) else ""
-    if isinstance(value, list | tuple):
-        return json.dumps(plain(value))
+        return repr(value)
+    if isinstance(value, list):
+        return json.dumps(value)
     return str(value)
 
 
+TABLE_KEY = "table"  # the first column when several tables share one CSV
+
+
 class CsvRenderer:
-    """Every row of every section, under the union of their keys in order of appearance."""
+    """Every row of every section, under the union of their keys in order of appearance;
+    with several sections, a first column ``table`` holds each row's section title."""
 
     def __call__(self, sections: Sequence[Section], document: Mapping[str, object]) -> str:
-        rows = [r for _, section_rows, _ in sections for r in section_rows]
+        several = len(sections) > 1
+        rows: list[Row] = []
+        for title, section_rows, _ in sections:
+            rows.extend({TABLE_KEY: title, **r} if several else r for r in section_rows)
         keys: list[str] = []
         for r in rows:
             keys.extend(k for k in r if k not in keys)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import numbers
 from collections.abc import Mapping, Sequence
 
 from pendcli.render.columns import Section
@@ -12,8 +13,17 @@ __all__ = ["JsonRenderer", "plain", "to_json"]
 
 
 def plain(value: object) -> object:
-    """``value`` with tuples as lists and non-finite floats as None (JSON has no NaN)."""
-    if isinstance(value, float):
+    """``value`` with tuples as lists, non-finite floats as None (JSON has no NaN) and numpy
+    scalars and arrays as the Python numbers and lists they hold (a numpy float's repr is
+    ``np.float64(...)``; numpy itself is not imported)."""
+    if type(value).__module__ == "numpy" and hasattr(value, "tolist"):
+        value = value.tolist()
+    if isinstance(value, bool | str) or value is None:
+        return value
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        value = float(value)
         return value if math.isfinite(value) else None
     if isinstance(value, tuple | list):
         return [plain(v) for v in value]

@@ -28,7 +28,7 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.formula_engine import richardson
 from pendcli.core.numbers import PrintedNumber
 from pendcli.core.tables import load_paper_table, paper_constant
-from pendcli.numerics.besselzeros import bessel_zeros
+from pendcli.numerics.besselzeros import ascending_series, bessel_zeros
 from pendcli.numerics.planar import modulus_squared
 
 __all__ = [
@@ -121,29 +121,9 @@ def lecornu_series(order: int, x: float | Array) -> Array:
 
     order 1: eq. (10), φ(x) = Σ_(n>=1) (-1)^(n-1) n x^n/(n!)² = √x J_1(2√x);
     order 2: eq. (13), Σ_(k>=0) (-1)^k x^k/(k!(k+2)!) = J_2(2√x)/x.
-    Summed term by term until the terms no longer change the sum (at most 400 terms).
+    These are the ascending series of J_1 and J_2, summed by the numerics module.
     """
-    x = np.asarray(x, dtype=float)
-    if order == 1:
-        term = x.copy()  # n = 1
-        total = term.copy()
-        for n in range(2, 400):
-            # t_n / t_(n-1) = -x n / ((n-1) n²) = -x / ((n-1) n)
-            term = -term * x / ((n - 1) * n)
-            new = total + term
-            if np.all(new == total):
-                break
-            total = new
-        return total
-    term = np.full_like(x, 0.5)  # k = 0: 1/(0! 2!)
-    total = term.copy()
-    for k in range(1, 400):
-        term = -term * x / (k * (k + 2))
-        new = total + term
-        if np.all(new == total):
-            break
-        total = new
-    return total
+    return ascending_series(order, x)
 
 
 def lecornu_k4(amplitude: float) -> float:
