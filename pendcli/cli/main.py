@@ -50,6 +50,7 @@ LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
         "formulas",
         "Derived formulas against direct numerical solutions: observed order, verdict.",
     ),
+    "equations": ("pendcli.cli.equations", "equations", "The equation ledger: each status."),
     "tradeoff": (
         "pendcli.cli.tradeoff",
         "tradeoff",
@@ -246,11 +247,18 @@ def reproduce(
     formulas: FormulasOption = True,
     stability: StabilityOption = None,
     quiet: QuietOption = False,
+    measure: Annotated[
+        bool, typer.Option("--measure", help="With --out: time the speed families now.")
+    ] = False,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
     from pendcli.core.claims import resolve_papers
     from pendcli.reproduce import reproduce_all
 
+    if out is not None:  # refuse a bad folder before the run, not after
+        from pendcli.report import check_out_folder
+
+        check_out_folder(out)
     result = reproduce_all(
         resolve_papers(paper),
         formulas=formulas,
@@ -259,14 +267,14 @@ def reproduce(
     )
     emit(fmt, result.sections(), result.document())
     if out is not None:
-        _write_report(result, out, quiet)
+        _write_report(result, out, quiet, measure)
 
 
-def _write_report(result: ReproduceResult, out: Path, quiet: bool) -> None:
+def _write_report(result: ReproduceResult, out: Path, quiet: bool, measure: bool) -> None:
     from pendcli.cli.common import say
     from pendcli.report import write_report
 
-    written = write_report(result, out, quiet=quiet)
+    written = write_report(result, out, quiet=quiet, measure=measure)
     if not quiet:
         for key in result.papers:
             say(f"{key}: {result.tally(key)}")

@@ -20,10 +20,13 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
+
+if TYPE_CHECKING:
+    from pendcli.core.claims import FormulaRow
 
 __all__ = [
     "CHECKED_STATUSES",
@@ -31,6 +34,7 @@ __all__ = [
     "Evaluated",
     "Ledger",
     "LedgerRow",
+    "check_from_formula_rows",
     "coverage",
     "equation_rows",
     "evaluate",
@@ -342,3 +346,30 @@ def coverage(rows: Iterable[dict[str, object]]) -> dict[str, dict[str, int]]:
         counts["total"] = sum(counts[s] for s in STATUSES)
         counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
     return table
+
+
+def check_from_formula_rows(rows: Iterable[FormulaRow], ids: Iterable[str]) -> EquationCheck:
+    """One equation checked by existing formula checks (``formulas.py``): it holds when every
+    named row holds; the lowest observed order and the failing rows' corrected forms carry."""
+    by_id = {r.id: r for r in rows}
+    wanted = list(ids)
+    missing = [i for i in wanted if i not in by_id]
+    if missing:
+        raise PendcliError(f"no formula check {', '.join(missing)} (renamed or removed?)")
+    chosen = [by_id[i] for i in wanted]
+    failing = [r for r in chosen if r.verdict != "holds"]
+    orders = [r.observed_order for r in chosen if r.observed_order is not None]
+    claimed = [r.claimed_order for r in chosen if r.claimed_order is not None]
+    parts = [f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen]
+    return EquationCheck(
+        holds=not failing,
+        method="numeric",
+        detail="formula checks: " + "; ".join(parts),
+        observed_order=min(orders) if orders else None,
+        claimed_order=min(claimed) if claimed else None,
+        corrected="; ".join(r.recomputed for r in failing) or None,
+    )
+
+
+def _order(value: float | None) -> str:
+    return "n/a" if value is None else f"{value:.2f}"

@@ -1,0 +1,444 @@
+"""Tisserand (1881): one check per checkable row of ``tables/equations/tisserand.toml``.
+
+Derivation steps are verified exactly with sympy: the differentials (1), (2) against the
+spherical pendulum's two first integrals, the substitution (3) into (4), (5), the expansions
+before (6) and (7) as series in a scale x (u² = x·w, u0² = x·a, u1² = x·b), the three
+integrals, the ellipse (17). The series in ψ and k't ((8), (11), (13), (15), (I), (II), (V))
+are checked by the existing quadrature checks of ``formulas.py`` (observed orders), reused
+through :func:`pendcli.core.ledger.check_from_formula_rows`. sympy is imported lazily.
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from typing import Any
+
+from pendcli.core.ledger import check_from_formula_rows
+from pendcli.core.ledger_check import EquationCheck
+
+ORDER = 3  # series in x kept through x² (fourth order in the angles)
+
+
+@cache
+def _formula_rows() -> tuple[Any, ...]:
+    from pendcli.papers.tisserand.formulas import formula_checks
+
+    return tuple(formula_checks())
+
+
+def _reuse(*ids: str) -> EquationCheck:
+    return check_from_formula_rows(_formula_rows(), [f"tisserand.{i}" for i in ids])
+
+
+def _identity(difference: Any, what: str, method: str = "sympy") -> EquationCheck:
+    import sympy as sp
+
+    zero = sp.simplify(difference) == 0
+    return EquationCheck(
+        holds=bool(zero),
+        method=method,  # type: ignore[arg-type]
+        detail=f"{what}: difference {'simplifies to 0' if zero else 'is not 0'}",
+    )
+
+
+@cache
+def _symbols() -> Any:
+    import sympy as sp
+
+    return sp.symbols("c c0 c1 x w a b psi", real=True)
+
+
+def _energy_theta_dot_sq() -> Any:
+    """θ'² from energy and angular momentum, apsides θ0, θ1 (c = cos θ), k = 1."""
+    c, c0, c1, *_ = _symbols()
+    h2 = 2 * (1 - c0**2) * (1 - c1**2) / (c0 + c1)
+    return 2 * (c - c0) + h2 * (1 / (1 - c0**2) - 1 / (1 - c**2))
+
+
+def _big_p() -> Any:
+    c, c0, c1, *_ = _symbols()
+    return 1 + c * c0 + c * c1 + c0 * c1
+
+
+def eq_1() -> EquationCheck:
+    """(1): k√2 dt = −sinθ √(cosθ0+cosθ1) dθ / √(...): θ'² against the first integrals."""
+    c, c0, c1, *_ = _symbols()
+    printed = 2 * (c - c0) * (c1 - c) * _big_p() / ((1 - c**2) * (c0 + c1))
+    return _identity(printed - _energy_theta_dot_sq(), "(θ')² from (1) − (θ')² from energy")
+
+
+def eq_2() -> EquationCheck:
+    """(2): dφ/dθ squared against h/sin²θ over θ' from the first integrals."""
+    c, c0, c1, *_ = _symbols()
+    h2 = 2 * (1 - c0**2) * (1 - c1**2) / (c0 + c1)
+    exact = h2 / (1 - c**2) ** 2 / _energy_theta_dot_sq()
+    printed = (1 - c0**2) * (1 - c1**2) / ((1 - c**2) * (c - c0) * (c1 - c) * _big_p())
+    return _identity(printed - exact, "(dφ/dθ)² from (2) − from the first integrals")
+
+
+def _substitution_values(theta0: float, theta1: float, psi: float) -> dict[str, Any]:
+    """cos θ, cos θ0, cos θ1 and dθ/dψ (exact derivative of (3)) at one point, 40 digits."""
+    import sympy as sp
+
+    t = sp.Symbol("t")
+    u0, u1 = sp.sin(sp.Rational(str(theta0))), sp.sin(sp.Rational(str(theta1)))
+    theta = sp.asin(sp.sqrt(u0**2 * sp.cos(t) ** 2 + u1**2 * sp.sin(t) ** 2))
+    at = {t: sp.Rational(str(psi))}
+    return {
+        "c": sp.N(sp.cos(theta).subs(at), 40),
+        "c0": sp.N(sp.cos(sp.Rational(str(theta0))), 40),
+        "c1": sp.N(sp.cos(sp.Rational(str(theta1))), 40),
+        "dtheta": sp.N(sp.diff(theta, t).subs(at), 40),
+    }
+
+
+# ψ in the first quarter, where θ falls from θ0: the sign convention of the printed roots.
+POINTS = ((0.7, 0.3, 0.4), (1.1, 0.2, 1.3), (0.05, 0.04, 0.9))
+
+
+def _at_points(printed: Any, exact: Any, what: str) -> EquationCheck:
+    worst = 0.0
+    for point in POINTS:
+        v = _substitution_values(*point)
+        p, e = printed(v), exact(v)
+        worst = max(worst, float(abs(p - e) / abs(e)))
+    return EquationCheck(
+        holds=worst < 1e-30,
+        method="sympy",
+        detail=f"{what}, exact derivative of (3) at 3 points, 40 digits: max rel. {worst:.1e}",
+    )
+
+
+def result_dtheta_dpsi() -> EquationCheck:
+    """dθ/√((cosθ−cosθ0)(cosθ1−cosθ)) = −√((cosθ+cosθ0)(cosθ+cosθ1))/(u√(1−u²)) dψ."""
+    import sympy as sp
+
+    def printed(v: dict[str, Any]) -> Any:
+        c, c0, c1 = v["c"], v["c0"], v["c1"]
+        u = sp.sqrt(1 - c**2)
+        return -sp.sqrt((c + c0) * (c + c1)) / (u * c) * sp.sqrt((c - c0) * (c1 - c))
+
+    return _at_points(printed, lambda v: v["dtheta"], "dθ/dψ printed against (3)")
+
+
+def eq_4() -> EquationCheck:
+    """(4): k√2 dt/dψ from (1) and (3)."""
+    import sympy as sp
+
+    def from_1(v: dict[str, Any]) -> Any:
+        c, c0, c1 = v["c"], v["c0"], v["c1"]
+        root = sp.sqrt((c - c0) * (c1 - c) * (1 + c * c0 + c * c1 + c0 * c1))
+        return -sp.sqrt(1 - c**2) * sp.sqrt(c0 + c1) * v["dtheta"] / root
+
+    def printed(v: dict[str, Any]) -> Any:
+        c, c0, c1 = v["c"], v["c0"], v["c1"]
+        big = sp.sqrt((c + c0) * (c + c1) * (c0 + c1))
+        return big / (c * sp.sqrt(1 + c * c0 + c * c1 + c0 * c1))
+
+    return _at_points(printed, from_1, "k√2 dt/dψ of (4) against (1) with (3)")
+
+
+def eq_5() -> EquationCheck:
+    """(5): dφ/dψ from (2) and (3)."""
+    import sympy as sp
+
+    def from_2(v: dict[str, Any]) -> Any:
+        c, c0, c1 = v["c"], v["c0"], v["c1"]
+        u0u1 = sp.sqrt((1 - c0**2) * (1 - c1**2))
+        root = sp.sqrt((c - c0) * (c1 - c) * (1 + c * c0 + c * c1 + c0 * c1))
+        return -u0u1 * v["dtheta"] / (sp.sqrt(1 - c**2) * root)
+
+    def printed(v: dict[str, Any]) -> Any:
+        c, c0, c1 = v["c"], v["c0"], v["c1"]
+        u0u1 = sp.sqrt((1 - c0**2) * (1 - c1**2))
+        big = sp.sqrt((c + c0) * (c + c1)) / sp.sqrt(1 + c * c0 + c * c1 + c0 * c1)
+        return u0u1 / ((1 - c**2) * c) * big
+
+    return _at_points(printed, from_2, "dφ/dψ of (5) against (2) with (3)")
+
+
+# --- series in the scale x: u² = x w, u0² = x a, u1² = x b -------------------------------
+
+
+def _cosines() -> tuple[Any, Any, Any]:
+    import sympy as sp
+
+    _, _, _, x, w, a, b, _ = _symbols()
+    return sp.sqrt(1 - x * w), sp.sqrt(1 - x * a), sp.sqrt(1 - x * b)
+
+
+def _series(expr: Any, order: int = ORDER) -> Any:
+    import sympy as sp
+
+    x = _symbols()[3]
+    return sp.expand(sp.series(expr, x, 0, order).removeO())
+
+
+def _sum_q_r() -> tuple[Any, Any, Any]:
+    """S = u²+u0²+u1², Q = u⁴+u0⁴+u1⁴, R = u²u0²+u²u1²+u0²u1² in the scale x."""
+    _, _, _, x, w, a, b, _ = _symbols()
+    return x * (w + a + b), x**2 * (w**2 + a**2 + b**2), x**2 * (w * a + w * b + a * b)
+
+
+def _quarter_sum() -> Any:
+    c, c0, c1 = _cosines()
+    return (1 + c * c0 + c * c1 + c0 * c1) / 4
+
+
+def _eighth_product() -> Any:
+    c, c0, c1 = _cosines()
+    return (c + c0) * (c + c1) * (c0 + c1) / 8
+
+
+def result_expansion_sum() -> EquationCheck:
+    """(1/4)(1 + cosθcosθ0 + ...) = 1 − S/4 − Q/16 + R/16 + ..."""
+    s, q, r = _sum_q_r()
+    return _identity(_series(_quarter_sum()) - (1 - s / 4 - q / 16 + r / 16), "series to x²")
+
+
+def result_expansion_product() -> EquationCheck:
+    """(1/8)(cosθ+cosθ0)(cosθ+cosθ1)(cosθ0+cosθ1) = 1 − S/2 − Q/16 + 3R/16 + ..."""
+    s, q, r = _sum_q_r()
+    printed = 1 - s / 2 - q / 16 + 3 * r / 16
+    return _identity(_series(_eighth_product()) - printed, "series to x²")
+
+
+def _square_from_4() -> Any:
+    """(k dt/dψ √(1−u²))², from (4): half of product/sum = eighth product / quarter sum."""
+    return _eighth_product() / _quarter_sum()
+
+
+def result_square_from_4() -> EquationCheck:
+    """« La formule (5) donnera » (k dt/dψ √(1−u²))² = 1 − S/4 − Q/16 − ...: from (4)."""
+    s, q, _ = _sum_q_r()
+    found = _identity(_series(_square_from_4()) - (1 - s / 4 - q / 16), "from (4), to x²")
+    return EquationCheck(
+        holds=found.holds,
+        method="cross-reference",
+        detail=f"(k dt/dψ √(1−u²))² is the square of (4) over 2: {found.detail}; (5) has no dt",
+    )
+
+
+def result_sqrt() -> EquationCheck:
+    """k dt/dψ √(1−u²) = 1 − S/8 − 5Q/128 − R/64 + ..."""
+    import sympy as sp
+
+    s, q, r = _sum_q_r()
+    printed = 1 - s / 8 - 5 * q / 128 - r / 64
+    return _identity(_series(sp.sqrt(_square_from_4())) - printed, "series to x²")
+
+
+def eq_6() -> EquationCheck:
+    """(6): k dt/dψ = 1 − (u0²+u1²)/8 − 5(u0⁴+u1⁴)/128 − u0²u1²/64 + (3/8 − 5(u0²+u1²)/64)u²
+    + 35u⁴/128 + ..."""
+    import sympy as sp
+
+    _, _, _, x, w, a, b, _ = _symbols()
+    c, _, _ = _cosines()
+    exact = sp.sqrt(_square_from_4()) / c
+    printed = (
+        1
+        - x * (a + b) / 8
+        - 5 * x**2 * (a**2 + b**2) / 128
+        - x**2 * a * b / 64
+        + (sp.Rational(3, 8) - 5 * x * (a + b) / 64) * x * w
+        + sp.Rational(35, 128) * x**2 * w**2
+    )
+    return _identity(_series(exact) - printed, "series of (4) to x²")
+
+
+def _dphi_over_u0u1() -> Any:
+    """(1/(u0u1)) dφ/dψ from (5), in the scale x."""
+    import sympy as sp
+
+    x, w = _symbols()[3:5]
+    c, c0, c1 = _cosines()
+    return sp.sqrt((c + c0) * (c + c1)) / (x * w * c * sp.sqrt(4 * _quarter_sum()))
+
+
+def eq_7() -> EquationCheck:
+    """(7): (1/(u0u1)) dφ/dψ = 3/8 − (u0²+u1²)/32 + 1/u² + 35u²/128 + ..."""
+    import sympy as sp
+
+    _, _, _, x, w, a, b, _ = _symbols()
+    printed = sp.Rational(3, 8) - x * (a + b) / 32 + 1 / (x * w) + sp.Rational(35, 128) * x * w
+    regular = _series(_dphi_over_u0u1() - 1 / (x * w), 2)
+    return _identity(regular + 1 / (x * w) - printed, "Laurent series of (5) to x")
+
+
+def result_inverse_square_one() -> EquationCheck:
+    """The coefficient of 1/u² in (7) is 1 to every order: u²·(1/(u0u1)) dφ/dψ → 1 as u → 0."""
+    import sympy as sp
+
+    x, w = _symbols()[3:5]
+    limit = sp.limit(x * w * _dphi_over_u0u1(), w, 0)
+    return _identity(limit - 1, "exact limit of u²·(5)/(u0u1) at u = 0, u0, u1 symbolic")
+
+
+def _integral_check(printed: Any, integrand: Any, what: str) -> EquationCheck:
+    import sympy as sp
+
+    psi = _symbols()[7]
+    derivative = sp.simplify(sp.diff(printed, psi) - integrand)
+    at_zero = sp.simplify(printed.subs(psi, 0))
+    zero = derivative == 0 and at_zero == 0
+    return EquationCheck(
+        holds=bool(zero),
+        method="sympy",
+        detail=f"{what}: d/dψ of the right side minus the integrand = {derivative}, "
+        f"value at ψ = 0: {at_zero}",
+    )
+
+
+def _u2() -> Any:
+    import sympy as sp
+
+    *_, a, b, psi = _symbols()
+    return a * sp.cos(psi) ** 2 + b * sp.sin(psi) ** 2  # a = u0², b = u1²
+
+
+def result_integral_inverse_square() -> EquationCheck:
+    """∫₀^ψ dψ/u² = arctan((u1/u0) tan ψ)/(u0u1)."""
+    import sympy as sp
+
+    *_, a, b, psi = _symbols()
+    u0, u1 = sp.Symbol("u0", positive=True), sp.Symbol("u1", positive=True)
+    printed = sp.atan(u1 / u0 * sp.tan(psi)) / (u0 * u1)
+    integrand = 1 / _u2().subs({a: u0**2, b: u1**2})
+    return _integral_check(printed, integrand, "∫dψ/u²")
+
+
+def result_integral_u2() -> EquationCheck:
+    """∫₀^ψ u² dψ = (u0²+u1²)ψ/2 + (u0²−u1²) sin 2ψ/4."""
+    import sympy as sp
+
+    *_, a, b, psi = _symbols()
+    printed = (a + b) * psi / 2 + (a - b) * sp.sin(2 * psi) / 4
+    return _integral_check(printed, _u2(), "∫u² dψ")
+
+
+def result_integral_u4() -> EquationCheck:
+    """∫₀^ψ u⁴ dψ = (3(u0⁴+u1⁴)+2u0²u1²)ψ/8 + (u0⁴−u1⁴) sin 2ψ/4 + (u0²−u1²)² sin 4ψ/32."""
+    import sympy as sp
+
+    *_, a, b, psi = _symbols()
+    printed = (
+        (3 * (a**2 + b**2) + 2 * a * b) * psi / 8
+        + (a**2 - b**2) * sp.sin(2 * psi) / 4
+        + (a - b) ** 2 * sp.sin(4 * psi) / 32
+    )
+    return _integral_check(printed, _u2() ** 2, "∫u⁴ dψ")
+
+
+def eq_8() -> EquationCheck:
+    """(8): kt and φ as series in ψ (quadrature checks of formulas.py)."""
+    return _reuse("k_prime", "eq8_kt_sin2psi", "eq8_kt_sin4psi", "eq8_phi_psi", "eq8_phi_sin2psi")
+
+
+def eq_11() -> EquationCheck:
+    """(11): φ' = φ − φ1, the non-arctan part of (8)."""
+    return _reuse("eq8_phi_psi", "eq8_phi_sin2psi")
+
+
+def result_psi_before_13() -> EquationCheck:
+    """ψ = k't − (u0²−u1²)(3/32 + 11(u0²+u1²)/256) sin 2ψ − (u0²−u1²)²(35/4096) sin 4ψ."""
+    return _reuse("psi_in_psi_sin4psi")
+
+
+def eq_13() -> EquationCheck:
+    """(13), read with sin 4k't for the printed sin² 4k't (as (II) prints it)."""
+    return _reuse("II_sin2", "II_sin4")
+
+
+def eq_II() -> EquationCheck:
+    """(II): ψ as a series in k't."""
+    return _reuse("II_sin2", "II_sin4")
+
+
+def result_second_approximation() -> EquationCheck:
+    """ψ = k't − (3/32)(u0²−u1²) sin 2k't: the leading terms of (II)."""
+    return _reuse("II_sin2")
+
+
+def eq_14() -> EquationCheck:
+    """(14): k'' = k'(1 + 9(u0²+u1²)/32): the leading terms of (I)'s k''."""
+    return _reuse("k_second")
+
+
+def eq_15() -> EquationCheck:
+    """(15): φ' = (3/8)u0u1k''t + u0u1(u0²−u1²)(17/512) sin 2k't."""
+    return _reuse("k_second", "V_sin2")
+
+
+def eq_V() -> EquationCheck:
+    """(V): the same as (15)."""
+    return _reuse("k_second", "V_sin2")
+
+
+def eq_I() -> EquationCheck:
+    """(I), read with k = √(g/l): k' to sixth order, k'' to fourth (quadrature checks)."""
+    return _reuse("k_prime", "k_second")
+
+
+def eq_10() -> EquationCheck:
+    """(10) with (3) and (16): the projection is (ρ0 cos ψ, ρ1 sin ψ), ψ the eccentric anomaly."""
+    import sympy as sp
+
+    *_, psi = _symbols()
+    r0, r1 = sp.symbols("rho0 rho1", positive=True)
+    rho_sq = r0**2 * sp.cos(psi) ** 2 + r1**2 * sp.sin(psi) ** 2  # (3) times l², (16)
+    tan_phi1 = r1 / r0 * sp.tan(psi)  # (10)
+    cos_sq = 1 / (1 + tan_phi1**2)
+    return _identity(
+        rho_sq * cos_sq - (r0 * sp.cos(psi)) ** 2,
+        "ρ² cos² φ1 − (ρ0 cos ψ)²",
+    )
+
+
+def eq_III() -> EquationCheck:
+    """(III) repeats (10)."""
+    found = eq_10()
+    return EquationCheck(found.holds, "cross-reference", f"(III) is (10): {found.detail}")
+
+
+def _tan_sq_phi1() -> Any:
+    """tan²φ1 = (u1²/u0²)(u0²−u²)/(u²−u1²): (10) squared with the tan²ψ of (3)."""
+    *_, w, a, b, _ = _symbols()
+    return b / a * (a - w) / (w - b)
+
+
+def result_tan_sq_psi() -> EquationCheck:
+    """tan²ψ = (u0²−u²)/(u²−u1²), from (3)."""
+    import sympy as sp
+
+    *_, a, b, psi = _symbols()
+    w = _u2()
+    return _identity((a - w) / (w - b) - sp.tan(psi) ** 2, "(u0²−u²)/(u²−u1²) − tan²ψ")
+
+
+def result_tan_sq_phi1() -> EquationCheck:
+    """tan²φ1, read as (u1²/u0²)(u0²−u²)/(u²−u1²) (the OCR flattens the two fractions)."""
+    import sympy as sp
+
+    *_, a, b, psi = _symbols()
+    w = _u2()
+    exact = (sp.sqrt(b) / sp.sqrt(a) * sp.tan(psi)) ** 2  # (10) squared
+    return _identity(_tan_sq_phi1().subs(_symbols()[4], w) - exact, "reading − (10)²")
+
+
+def result_tan_sq_phi1_rho() -> EquationCheck:
+    """The same in ρ = lu (16): (ρ1²/ρ0²)(ρ0²−ρ²)/(ρ²−ρ1²)."""
+    import sympy as sp
+
+    *_, w, a, b, _ = _symbols()
+    ell = sp.Symbol("l", positive=True)
+    in_rho = (ell**2 * b) / (ell**2 * a) * (ell**2 * a - ell**2 * w) / (ell**2 * w - ell**2 * b)
+    return _identity(in_rho - _tan_sq_phi1(), "the ρ form − the u form")
+
+
+def eq_17() -> EquationCheck:
+    """(17): 1/ρ² = cos²φ1/ρ0² + sin²φ1/ρ1², from tan²φ1 (ρ² = l²u²)."""
+    *_, w, a, b, _ = _symbols()
+    t2 = _tan_sq_phi1()
+    cos_sq, sin_sq = 1 / (1 + t2), t2 / (1 + t2)
+    return _identity(cos_sq / a + sin_sq / b - 1 / w, "cos²φ1/u0² + sin²φ1/u1² − 1/u²")

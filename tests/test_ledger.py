@@ -1,0 +1,202 @@
+"""The equation ledger: coverage computed from the papers' texts, every check consistent with
+its recorded status, the extractor and the validation errors."""
+
+from __future__ import annotations
+
+import hashlib
+import re
+from collections import Counter
+from pathlib import Path
+
+import pytest
+
+from pendcli.core.errors import PendcliError
+from pendcli.core.ledger import (
+    CHECKED_STATUSES,
+    Ledger,
+    LedgerRow,
+    coverage,
+    evaluate,
+    labels_in_text,
+    ledger_papers,
+    load_ledger,
+    parse_ledger,
+    run_check,
+    verify,
+)
+
+ROOT = Path(__file__).resolve().parent.parent
+TABLES = ROOT / "tables"
+# Papers whose ledger this suite requires; lecornu's is checked once it exists.
+REQUIRED = ("tisserand", "charbonnier")
+OPTIONAL = ("lecornu",)
+MIN_CHECKED = 0.80
+
+
+def _papers() -> list[str]:
+    present = [p for p in OPTIONAL if (TABLES / "equations" / f"{p}.toml").is_file()]
+    return [*REQUIRED, *present]
+
+
+def _hashes() -> dict[str, str]:
+    """File -> SHA-256, read from the provenance table in tables/papers/README.md."""
+    text = (TABLES / "papers" / "README.md").read_text(encoding="utf-8")
+    return dict(re.findall(r"^\| `([a-z]+\.txt)` \| `[^`]+` \| `([0-9a-f]{64})` \|", text, re.M))
+
+
+def test_the_provenance_table_names_the_three_texts() -> None:
+    assert sorted(_hashes()) == ["charbonnier.txt", "lecornu.txt", "tisserand.txt"]
+
+
+@pytest.mark.parametrize("name", ["tisserand.txt", "lecornu.txt", "charbonnier.txt"])
+def test_text_is_byte_for_byte_the_one_recorded(name: str) -> None:
+    digest = hashlib.sha256((TABLES / "papers" / name).read_bytes()).hexdigest()
+    assert digest == _hashes()[name]
+
+
+@pytest.mark.parametrize("paper", _papers())
+def test_every_printed_label_has_a_row(paper: str) -> None:
+    ledger = load_ledger(paper, TABLES)
+    printed = Counter(labels_in_text(ledger.text.read_text(encoding="utf-8")))
+    have = ledger.labels()
+    missing = {label: n - have[label] for label, n in printed.items() if have[label] < n}
+    assert not missing, f"{paper}: labels printed but not (or not all) in the ledger: {missing}"
+    extra = sorted(set(have) - set(printed))
+    assert not extra, f"{paper}: ledger labels the text does not print: {extra}"
+
+
+def _rows() -> list[object]:
+    """(paper, row) of every ledger present; a missing required one fails its own test."""
+    present = set(ledger_papers(TABLES))
+    return [
+        pytest.param(row, id=row.id)
+        for paper in _papers()
+        if paper in present
+        for row in load_ledger(paper, TABLES).rows
+    ]
+
+
+@pytest.mark.parametrize("row", _rows())
+def test_check_agrees_with_recorded_status(row: LedgerRow) -> None:
+    problem = verify(row, run_check(row))
+    assert problem is None, f"{row.id}: {problem}"
+
+
+@pytest.mark.parametrize("paper", _papers())
+def test_at_least_80_percent_of_rows_are_checked(paper: str) -> None:
+    counts = coverage(item.as_dict() for item in evaluate(paper, TABLES))[paper]
+    assert counts["checked"] / counts["total"] >= MIN_CHECKED, counts
+
+
+@pytest.mark.parametrize("paper", _papers())
+def test_every_failure_carries_a_computed_correction(paper: str) -> None:
+    for item in evaluate(paper, TABLES):
+        if item.row.status == "fails":
+            assert item.check is not None and item.check.corrected, item.row.id
+
+
+def test_required_ledgers_are_present() -> None:
+    assert set(REQUIRED) <= set(ledger_papers(TABLES))
+
+
+# --- the extractor ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "labels"),
+    [
+        ("$$(1) \\quad a = b,$$", ["(1)"]),
+        ("$$(42') \\quad T = 1$$", ["(42')"]),
+        ("$$(II) \\left\\{ x \\right.$$", ["(II)"]),
+        ("$$\\begin{aligned} a &= b; \\\\ (3) \\quad u^2 = v \\end{aligned}$$", ["(3)"]),
+        ("$$x = y \\tag{7}$$", ["(7)"]),
+        ("$$x = y. \\qquad (12)$$", ["(12)"]),
+        ("$$(p) \\quad \\frac{dM}{dt} = 0.$$", ["(p)"]),
+        ("$$(18) \\quad u$$ text $$(18) \\quad v$$", ["(18)", "(18)"]),
+    ],
+)
+def test_labels_found(text: str, labels: list[str]) -> None:
+    assert labels_in_text(text) == labels
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "la formule (5) donnera ensuite",
+        "tome 5, n° 1 (1881), p. 448-454",
+        "(n° 12, 2°) et (Avril 1908.) 10",
+        "$$\\frac{3x^3}{(1 \\cdot 2 \\cdot 3)^2} + (u_0^2 - u_1^2)$$",
+        "$$k = f(2) + g(x)$$",
+        "On a (3) $$\\nu = k$$",
+    ],
+)
+def test_no_label_in_prose_years_or_formulas(text: str) -> None:
+    assert labels_in_text(text) == []
+
+
+# --- validation ------------------------------------------------------------------------
+
+_GOOD = {
+    "id": "demo.eq.1",
+    "equation": "(1)",
+    "section": "§ 1",
+    "statement": "a = b",
+    "status": "definition",
+    "note": "defines a",
+}
+
+
+def _parse(rows: list[dict[str, object]], header: dict[str, object] | None = None) -> Ledger:
+    raw = {"ledger": header or {"paper": "demo", "text": "tables/papers/demo.txt"}}
+    raw["equation"] = rows  # type: ignore[assignment]
+    return parse_ledger(raw, "demo", Path("demo.toml"), TABLES)
+
+
+def test_a_good_row_parses() -> None:
+    ledger = _parse([_GOOD])
+    assert ledger.rows[0].equation == "(1)"
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        ({"typo": "x"}, "unknown key(s) 'typo'"),
+        ({"status": "ok"}, "unknown status 'ok'"),
+        ({"status": "holds"}, "needs a check"),
+        ({"check": "eq_1"}, "takes no check"),
+        ({"equation": "1"}, "label as printed"),
+        ({"equation": "(2)"}, "does not match the label"),
+        ({"id": "other.eq.1"}, "id must read"),
+        ({"status": "fails", "check": "eq_1"}, "'corrected' is required"),
+        ({"status": "misprint", "check": "eq_1"}, "'reading' is required"),
+        ({"reading": "x"}, "'reading' is required"),
+        ({"note": None}, "needs a note"),
+        ({"section": ""}, "non-empty string"),
+    ],
+)
+def test_a_bad_row_is_refused_naming_file_and_id(change: dict[str, object], message: str) -> None:
+    row = {k: v for k, v in {**_GOOD, **change}.items() if v is not None}
+    with pytest.raises(PendcliError, match=re.escape(message)) as info:
+        _parse([row])
+    assert "demo.toml" in str(info.value)
+    assert str(row.get("id", "")) in str(info.value)
+
+
+def test_duplicate_ids_and_unknown_header_keys_are_refused() -> None:
+    with pytest.raises(PendcliError, match="duplicate id"):
+        _parse([_GOOD, _GOOD])
+    with pytest.raises(PendcliError, match="unknown key"):
+        _parse([_GOOD], {"paper": "demo", "text": "tables/papers/demo.txt", "year": 1})
+    with pytest.raises(PendcliError, match="paper = 'demo'"):
+        _parse([_GOOD], {"paper": "other", "text": "tables/papers/demo.txt"})
+
+
+def test_a_stated_result_has_no_label() -> None:
+    row = {**_GOOD, "id": "demo.result.sum", "equation": ""}
+    assert _parse([row]).rows[0].equation == ""
+    with pytest.raises(PendcliError, match="stated result"):
+        _parse([{**row, "equation": "(1)"}])
+
+
+def test_checked_statuses_are_the_three() -> None:
+    assert CHECKED_STATUSES == ("holds", "fails", "misprint")
