@@ -2,30 +2,30 @@
 
 A claim's ``cause`` (``tables/published/<paper>.toml``, one of :data:`CAUSES`) says why its
 printed value differs from the recomputed one. A cause is a statement about a computation,
-so it can be checked against one. A paper's claims module may expose
+so it is checked against one. A paper's claims module may expose
 ``author_procedures() -> dict[id, Procedure]``: how the author obtained a printed value from
-earlier printed values (his lengths from his rounded zeros, his times from his lengths).
-With it:
+his earlier printed values (his lengths from his rounded zeros, his times from his lengths).
+The error of a printed value P against the recomputation r then splits in two
+(:func:`split_error`), with a = the procedure on his printed inputs:
+
+* *inherited*, a - r: what his inputs carry in;
+* *own*, P - a: what he added; none when a rounds or chops to P (his last digit).
 
 ``propagated`` (``from``: the rows it inherits from)
-    *consistent*: the author's procedure on his printed inputs, each taken anywhere its
-    printed digits allow (rounded or chopped, he may have carried digits he did not print),
-    reaches the printed value; and *corrected*: with the ``from`` sources at their
-    recomputed values (the other inputs as printed) it agrees with the recomputation at the
-    printed precision. A row is not called a slip when its own inputs explain it.
+    the inherited part is the larger (or his own is none), and with the ``from`` sources at
+    their recomputed values (the other inputs as printed) the procedure agrees with r at the
+    printed precision (:func:`corrected_value`): correcting the sources removes the error.
 ``arithmetic-slip``
-    no reading of the author's printed inputs within their printed digits reaches the
-    printed value (a root: nothing before it explains it).
+    his own part is not none and is the larger: his printed inputs do not give P.
 ``rounding`` / ``truncation``
-    the recomputed value rounded / chopped at the printed precision is the printed value.
+    r rounded / chopped at the printed precision is P.
 
+A row with both parts gets the larger as its cause; its note names the other.
 ``misprint``, ``derivation-error`` and ``model-approximation`` are explained in the note.
 """
 
 from __future__ import annotations
 
-import itertools
-import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
@@ -36,19 +36,16 @@ from pendcli.core.verdict import Verdict, judge
 __all__ = [
     "CAUSES",
     "ROOT_CAUSES",
+    "ErrorSplit",
     "Procedure",
-    "author_range",
     "chops_to",
     "corrected_value",
-    "printed_range",
-    "reaches",
     "rounds_to",
+    "split_error",
 ]
 
 # Every cause except "propagated": where an error starts.
 ROOT_CAUSES: tuple[str, ...] = tuple(c for c in CAUSES if c != "propagated")
-_GRID = 5  # samples per input across its printed range (the procedures are smooth)
-_SLACK = 1e-12  # relative widening of range ends (binary representation of decimals)
 
 
 @dataclass(frozen=True)
@@ -56,23 +53,12 @@ class Procedure:
     """How the author computed a printed value from earlier printed values (claim ids)."""
 
     inputs: tuple[str, ...]
-    compute: Callable[[Mapping[str, float]], float]
+    compute: Callable[..., float]  # the inputs' values, in order -> the value
     text: str = ""  # the procedure as the paper does it, e.g. "(1 - l)/0,35"
 
     def __call__(self, values: Mapping[str, float]) -> float:
-        return float(self.compute({i: values[i] for i in self.inputs}))
-
-
-def printed_range(number: PrintedNumber) -> tuple[float, float]:
-    """Every value that prints as ``number`` when rounded or chopped at its last place."""
-    if number.resolution is None:
-        return number.value, number.value
-    u, p = number.resolution, number.value
-    if p > 0:
-        return p - u / 2, p + u
-    if p < 0:
-        return p - u, p + u / 2
-    return -u, u
+        """The procedure on ``values`` (claim id -> value; only the inputs are read)."""
+        return float(self.compute(*(values[i] for i in self.inputs)))
 
 
 def rounds_to(number: PrintedNumber, value: float) -> bool:
@@ -85,29 +71,27 @@ def chops_to(number: PrintedNumber, value: float) -> bool:
     return judge(number, value).verdict is Verdict.TRUNCATED
 
 
-def author_range(procedure: Procedure, inputs: Mapping[str, PrintedNumber]) -> tuple[float, float]:
-    """Least and greatest value of ``procedure`` over its inputs' printed ranges (sampled)."""
-    axes = []
-    for name in procedure.inputs:
-        lo, hi = printed_range(inputs[name])
-        axes.append([lo + (hi - lo) * k / (_GRID - 1) for k in range(_GRID)] if hi > lo else [lo])
-    values = [
-        procedure(dict(zip(procedure.inputs, point, strict=True)))
-        for point in itertools.product(*axes)
-    ]
-    finite = [v for v in values if math.isfinite(v)]
-    return min(finite), max(finite)
+@dataclass(frozen=True)
+class ErrorSplit:
+    """The error P - r of a printed value split at the author's own value a (module doc)."""
+
+    author: float  # a: his procedure on his printed inputs
+    inherited: float  # a - r
+    own: float  # P - a, or 0.0 when a rounds or chops to P
+
+    @property
+    def inherited_dominates(self) -> bool:
+        return abs(self.inherited) > abs(self.own)
 
 
-def reaches(
-    published: PrintedNumber, procedure: Procedure, inputs: Mapping[str, PrintedNumber]
-) -> bool:
-    """Whether the author's procedure, on inputs within their printed digits, can print as
-    ``published``: the two ranges (:func:`printed_range`, :func:`author_range`) meet."""
-    lo, hi = author_range(procedure, inputs)
-    p_lo, p_hi = printed_range(published)
-    slack = _SLACK * max(abs(p_lo), abs(p_hi), abs(lo), abs(hi))
-    return lo <= p_hi + slack and p_lo <= hi + slack
+def split_error(
+    published: PrintedNumber, procedure: Procedure, printed: Mapping[str, float], recomputed: float
+) -> ErrorSplit:
+    """How much of the printed value's error its inputs carry in, and how much is his own."""
+    author = procedure(printed)
+    reproduced = rounds_to(published, author) or chops_to(published, author)
+    own = 0.0 if reproduced else published.value - author
+    return ErrorSplit(author, author - recomputed, own)
 
 
 def corrected_value(

@@ -32,6 +32,7 @@ __all__ = [
     "PAPERS",
     "CauseTally",
     "ClaimRow",
+    "FormulaCause",
     "FormulaRow",
     "Recomputed",
     "cause_tally",

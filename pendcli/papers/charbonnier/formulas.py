@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaRow
+from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
 from pendcli.core.formula_engine import (
     DEFAULT_REFERENCE,
     Reference,
@@ -66,13 +66,24 @@ CLOSED_FORM_N_MAX = 501
 def formula_checks(ref: Reference | None = None) -> list[FormulaRow]:
     """Every Charbonnier formula check: closed forms of I_n(π), then the perturbation formulas."""
     ref = DEFAULT_REFERENCE if ref is None else ref
-    return [
+    rows = [
         *closed_form_rows(),
         e_c_closed_form_row(),
         *general_rows(ref),
         *monomial_rows(ref),
         friction_count_row(),
     ]
+    return with_causes(rows, FORMULA_CAUSES)
+
+
+# Why each failing formula fails (the notes give the corrected terms and the evidence).
+FORMULA_CAUSES: dict[str, FormulaCause] = {
+    # k^(n+1) for k^(n−1): the line above integrates to k^(n−1), and n° 17 uses k^(n−3)
+    "charbonnier.E_c.closed_form": ("misprint", ()),
+    # kt = π/2 in (5) leaves E_s; n° 13 reuses E_c, so the author's, not the printer's
+    "charbonnier.eq9.linear_damping": ("derivation-error", ()),
+    "charbonnier.eq9.periodic_force": ("derivation-error", ()),
+}
 
 
 def figures(outdir: str | Path, rows: list[FormulaRow] | None = None) -> list[Path]:

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from pendcli.core.causes import Procedure
 from pendcli.core.claims import Recomputed
 from pendcli.core.errors import PendcliError
 from pendcli.numerics.besselzeros import bessel_zeros
@@ -35,7 +36,7 @@ from pendcli.papers.lecornu.model import (
     printed_number,
 )
 
-__all__ = ["ExampleInputs", "check_claims_g", "example_inputs", "recompute"]
+__all__ = ["ExampleInputs", "author_procedures", "check_claims_g", "example_inputs", "recompute"]
 
 Claims = dict[str, Recomputed]
 PRINTED_ELONGATIONS = 5  # the example lists five elongations, (15)
@@ -409,4 +410,80 @@ def recompute(g: float | None = None) -> dict[str, Recomputed]:
     out: Claims = {}
     for build in BUILDERS:
         out.update(build(inputs))
+    return out
+
+
+# --- the author's own procedures, from his printed values --------------------------------
+
+
+def _ratio(numerator: str, denominator: str) -> Procedure:
+    return Procedure((numerator, denominator), lambda j, j_first: j / j_first, "J_0 / J_0(17,96)")
+
+
+def _lengths_from_zeros(prefix: str, zeros: list[str]) -> dict[str, Procedure]:
+    """l = 0,00313 z² (16), his coefficient times his printed zero, for each row."""
+    c = "lecornu.coefficient_b2_4g"
+    return {
+        f"{prefix}{k}": Procedure((c, z), lambda coef, zero: coef * zero**2, "0,00313 z²")
+        for k, z in enumerate(zeros, start=1)
+    }
+
+
+def _times_procedures(length: float, speed: float) -> dict[str, Procedure]:
+    """Times (1 m - l)/b from his lengths, and intervals as differences of his times."""
+    out: dict[str, Procedure] = {}
+    times = [f"lecornu.example.time.{k}" for k in range(1, PRINTED_ELONGATIONS + 1)]
+    for k, t in enumerate(times, start=1):
+        lk = f"lecornu.example.length.{k}"
+        out[t] = Procedure(
+            (lk,), lambda printed_length: (length - printed_length) / speed, "(1 m - l)/b"
+        )
+    end = "lecornu.example.time_zero_length"
+    out[end] = Procedure((), lambda: length / speed, "1 m / b")
+    for k, (a, b) in enumerate(zip(times, [*times[1:], end], strict=True), start=1):
+        out[f"lecornu.example.interval.{k}"] = Procedure(
+            (a, b), lambda earlier, later: later - earlier, "difference of his times"
+        )
+    return out
+
+
+def _amplitude_procedures() -> dict[str, Procedure]:
+    """J_0 at his printed zeros, and the deviations as ratios of his J_0."""
+    from scipy.special import j0
+
+    out: dict[str, Procedure] = {}
+    for k in range(1, PRINTED_ELONGATIONS + 1):
+        z = f"lecornu.j2_zeros.{k}"
+        out[f"lecornu.j0_at_j2_zeros.{k}"] = Procedure(
+            (z,), lambda zero: float(j0(zero)), "J_0 at his zero"
+        )
+    first = f"lecornu.j0_at_j2_zeros.{PRINTED_ELONGATIONS}"  # θ0, at z = 17,96
+    for k, zi in enumerate((4, 3, 2, 1), start=2):
+        out[f"lecornu.deviation.{k}"] = _ratio(f"lecornu.j0_at_j2_zeros.{zi}", first)
+    out["lecornu.deviation.zero_length"] = Procedure(
+        (first,), lambda j_first: 1 / j_first, "1 / J_0(17,96)"
+    )
+    return out
+
+
+def author_procedures() -> dict[str, Procedure]:
+    """How Lecornu obtained each derived printed number from his earlier printed ones.
+
+    The inputs are claim ids: evaluated on the printed values these give his own figures
+    (the "Author's procedure" of the notes); on the recomputed values, the recomputation.
+    :mod:`pendcli.core.causes` uses them to check every cause of the table.
+    """
+    descending = [f"lecornu.j2_zeros.{k}" for k in range(PRINTED_ELONGATIONS, 0, -1)]
+    j1 = [f"lecornu.j1_zeros.{k}" for k in range(1, 7)]
+    out = {
+        **_lengths_from_zeros("lecornu.example.length.", descending),
+        **_lengths_from_zeros("lecornu.j1_lengths.", j1),
+        **_times_procedures(constant("length"), constant("speed")),
+        **_amplitude_procedures(),
+    }
+    smallest = "lecornu.j1_zeros.6"
+    out["lecornu.x_bound"] = Procedure((smallest,), lambda zero: zero**2 / 4, "3,83²/4")
+    out["lecornu.mean_pendulum_coefficient"] = Procedure(
+        (), lambda: math.pi * (7 * math.pi**2 - 3) / 32, "π(7π² - 3)/32"
+    )
     return out

@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaRow
+from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
 from pendcli.core.formula_engine import (
     DEFAULT_REFERENCE,
     Reference,
@@ -765,9 +765,26 @@ def finite_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     return [_eq38_row(ref), _eq41_row(ref), *_eq42_rows(ref)]
 
 
+# Why each failing formula fails (the notes give the corrected terms and the evidence).
+FORMULA_CAUSES: dict[str, FormulaCause] = {
+    # 3 - 3τ² - 8τ² + 32τ² is 3 + 21τ², printed 3 - 43τ²: a slip in the last algebraic step
+    "lecornu.eq29": ("derivation-error", ()),
+    # the b² term of π√(l/g) has π³/32, not 7π³/32
+    "lecornu.mean_pendulum": ("derivation-error", ()),
+    # "u cos u" and "u sin u" repeat the trigonometric factor of the term before: typesetting
+    "lecornu.eq52": ("misprint", ()),
+    # the substitution changes the amplitude law at first order
+    "lecornu.compound_pendulum": ("derivation-error", ()),
+    # the pk³ term of (41) is wrong; (42) is obtained from it, (42') from (42)
+    "lecornu.eq41_terms_in_p": ("derivation-error", ()),
+    "lecornu.eq42_terms_in_b": ("propagated", ("lecornu.eq41_terms_in_p",)),
+    "lecornu.eq42prime_terms_in_b": ("propagated", ("lecornu.eq42_terms_in_b",)),
+}
+
+
 def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
-    """Every Lecornu formula check (see the module docstring)."""
-    return [
+    """Every Lecornu formula check (see the module docstring), each failure with its cause."""
+    rows = [
         *table_26_rows(ref),
         *series_rows(ref),
         *amplitude_rows(ref),
@@ -775,6 +792,7 @@ def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
         *fast_shortening_rows(ref),
         *finite_rows(ref),
     ]
+    return with_causes(rows, FORMULA_CAUSES)
 
 
 def figures(outdir: str | Path, rows: list[FormulaRow] | None = None) -> list[Path]:
