@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
+import os
 import platform
+from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
+from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.verdict import CLAIM_VERDICTS
@@ -20,6 +23,9 @@ from pendcli.render.json import to_json
 from pendcli.render.markdown import to_markdown
 from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 from pendcli.reproduce import ReproduceResult
+
+if TYPE_CHECKING:
+    from pendcli.tradeoff import Point
 
 __all__ = ["write_report"]
 
@@ -89,28 +95,54 @@ def disagreement_digest(result: ReproduceResult) -> list[str]:
     return bullets or ["Every printed number and formula holds."]
 
 
-class _Writer:
-    """Writes files under the output folder and remembers every path written (in order)."""
+def check_out_folder(out: Path | str) -> Path:
+    """Refuse an unusable output folder before any computation (one line, exit 2).
 
-    def __init__(self, out: Path | str, quiet: bool) -> None:
-        self.out = Path(out)
+    The folder is replaced as a whole, so it must not be the current folder (or hold it), nor a
+    file, nor a folder of other files; its nearest existing parent must be a writable folder.
+    """
+    text = str(out)
+    if text.strip() in ("", "."):
+        raise PendcliError(
+            f"--out {text!r} is the current folder; give a folder of its own, e.g. --out out"
+        )
+    path = Path(out)
+    if path.exists() and not path.is_dir():
+        raise PendcliError(f"--out {text!r} is a file, not a folder; give a folder name")
+    here = Path.cwd().resolve()
+    if path.resolve() in (here, *here.parents):
+        raise PendcliError(f"--out {text!r} holds the current folder; give a folder of its own")
+    if path.is_dir() and any(path.iterdir()) and not (path / "report.md").is_file():
+        raise PendcliError(
+            f"--out {text!r} is a folder of other files (no report.md) and would be replaced "
+            "as a whole; give a new or empty folder, or an earlier report's"
+        )
+    parent = path.resolve().parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+        problem = "is not a folder" if not parent.is_dir() else "is not writable"
+        raise PendcliError(f"cannot create output folder {text!r}: {parent} {problem}")
+    return path
+
+
+class _Writer:
+    """Writes files under the (temporary) output folder; remembers each one, relative to it."""
+
+    def __init__(self, out: Path, quiet: bool) -> None:
+        self.out = out
         self.quiet = quiet
         self.written: list[Path] = []
-        try:
-            self.out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise PendcliError(
-                f"cannot create output folder {str(self.out)!r}: {exc.strerror}"
-            ) from None
-        if not self.out.is_dir():
-            raise PendcliError(f"--out {str(self.out)!r} is not a folder")
 
     def text(self, name: str, text: str) -> Path:
         path = self.out / name
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text, encoding="utf-8")
-        self.written.append(path)
+        self.written.append(Path(name))
         return path
+
+    def add(self, paths: list[Path]) -> None:
+        self.written += [p.relative_to(self.out) for p in paths]
 
     def status(self, message: str) -> None:
         if not self.quiet:
@@ -123,19 +155,53 @@ class _Writer:
         return [f"![{fig.stem}]({_rel(fig, self.out)})" for fig in figures]
 
 
-def write_report(result: ReproduceResult, out: Path | str, quiet: bool = True) -> list[Path]:
-    """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``."""
+def write_report(
+    result: ReproduceResult,
+    out: Path | str,
+    quiet: bool = True,
+    measure: bool = False,
+    jobs: int | None = None,
+) -> list[Path]:
+    """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``.
+
+    The whole folder is built beside ``out`` and swapped in at the end: files of an earlier
+    report that this one does not write are gone, and a failure leaves the old ``out`` as it
+    was. ``measure`` times the speed/accuracy families now instead of reading the committed
+    work-precision tables; ``jobs`` processes draw the figures (default: up to 2).
+    """
+    from pendcli.core.files import remove_stale, replace_directory
+
+    target = check_out_folder(out)
+    remove_stale(target.resolve().parent, target.name)
+    written: list[Path] = []
+
+    def fill(folder: Path) -> None:
+        written.extend(_fill(result, folder, quiet, measure, jobs))
+
+    replace_directory(target, fill)
+    return [target / p for p in written]
+
+
+def _fill(
+    result: ReproduceResult, folder: Path, quiet: bool, measure: bool, jobs: int | None
+) -> list[Path]:
+    """Every file of the report, written into ``folder``; their paths relative to it."""
     from pendcli.regression import regenerated_tables
 
-    writer = _Writer(out, quiet)
-    writer.text("claims.json", to_json(result.document()))
-    for name, text in regenerated_tables(result).items():
-        writer.text(f"tables/{name}", text)
+    writer = _Writer(folder, quiet)
+    tradeoff = _tradeoff_data(result.papers, measure, writer)  # timings first, alone
+    tasks = _figure_tasks(result, folder, tradeoff)
+    writer.status(f"drawing {len(tasks)} figures")
+    with _Drawing(tasks, jobs) as drawing:
+        writer.text("claims.json", to_json(result.document()))
+        for name, text in regenerated_tables(result).items():
+            writer.text(f"tables/{name}", text)
+        figures = drawing.results()
     lines = _introduction(result)
     for key in result.papers:
-        lines += _paper_section(result, key, writer)
+        lines += _paper_section(result, key, writer, figures.get(key, []))
     lines += _stability_section(result)
-    lines += _tradeoff_section(writer)
+    lines += _tradeoff_section(writer, tradeoff, figures.get("tradeoff", []))
     lines += _environment_section()
     writer.text("report.md", "\n".join(lines))
     return writer.written
@@ -164,7 +230,9 @@ def _introduction(result: ReproduceResult) -> list[str]:
     ]
 
 
-def _paper_section(result: ReproduceResult, key: str, writer: _Writer) -> list[str]:
+def _paper_section(
+    result: ReproduceResult, key: str, writer: _Writer, figures: list[Path]
+) -> list[str]:
     """Citation, assumptions, verdicts, the claim and formula tables, and the figures."""
     from pendcli.core.tables import load_paper_table
 
@@ -180,28 +248,12 @@ def _paper_section(result: ReproduceResult, key: str, writer: _Writer) -> list[s
     frows = [f.as_dict() for f in result.formulas.get(key, [])]
     if frows:
         lines += ["### Derived formulas", "", to_markdown(frows, FORMULA_COLUMNS)]
-    figures = _paper_figures(result, key, writer)
-    writer.written += figures
+    writer.add(figures)
     if figures:
         lines += ["### Figures", ""]
         for link in writer.links(figures):
             lines += [link, ""]
     return lines
-
-
-def _paper_figures(result: ReproduceResult, key: str, writer: _Writer) -> list[Path]:
-    """The paper's claim figures, then its formula figures (from the rows already computed)."""
-    folder = writer.out / "figures" / key
-    figures: list[Path] = []
-    # papers/<key>/figures.py (the layout of issue 11); claims.py until a paper has moved
-    module = _module(f"pendcli.papers.{key}.figures") or _module(f"pendcli.papers.{key}.claims")
-    if module is not None and hasattr(module, "figures"):
-        writer.status(f"drawing the {key} figures")
-        figures += list(module.figures(folder))
-    fmodule = _module(f"pendcli.papers.{key}.formulas")
-    if fmodule is not None and hasattr(fmodule, "figures"):
-        figures += list(fmodule.figures(folder / "formulas", result.formulas.get(key)))
-    return figures
 
 
 def _stability_section(result: ReproduceResult) -> list[str]:
@@ -216,22 +268,18 @@ def _stability_section(result: ReproduceResult) -> list[str]:
     ]
 
 
-def _tradeoff_section(writer: _Writer) -> list[str]:
-    tradeoff = _module("pendcli.tradeoff")
-    if tradeoff is None:
+def _tradeoff_section(writer: _Writer, data: _Tradeoff | None, figures: list[Path]) -> list[str]:
+    if data is None:
         return []
-    writer.status("measuring speed against accuracy (about 10 s)")
-    figs = _tradeoff_figures(tradeoff, writer.out / "tradeoff")
-    writer.written += figs
+    writer.add(figures)
     return [
         "## Speed against accuracy",
         "",
         "Work-precision diagrams: the worst error each method reaches against an "
         "independent reference, against its time per evaluation (`pendcli tradeoff`). "
-        "These are timings on the machine that ran `make reproduce`: unlike every other "
-        "file here, `tradeoff/` changes from run to run.",
+        f"Timings: {data.provenance}.",
         "",
-        *[f"{link}\n" for link in writer.links([f for f in figs if f.suffix == ".png"])],
+        *[f"{link}\n" for link in writer.links([f for f in figures if f.suffix == ".png"])],
     ]
 
 
@@ -245,16 +293,138 @@ def _environment_section() -> list[str]:
     ]
 
 
-def _tradeoff_figures(tradeoff: ModuleType, folder: Path) -> list[Path]:
-    """Measure every available family, write its table and the work-precision diagram."""
-    ready = tradeoff.family_names()
-    points = [p for name in ready for p in tradeoff.measure_family(name)]
-    folder.mkdir(parents=True, exist_ok=True)
-    written = []
-    for name in ready:
-        path = folder / f"{name}.csv"
-        tradeoff.write_table([p for p in points if p.family == name], path)
-        written.append(path)
-    figure = folder / "work-precision.png"
-    tradeoff.plot_tradeoff(points, figure)
-    return [*written, figure]
+@dataclass
+class _Tradeoff:
+    """The work-precision points of the chosen papers and where their timings come from."""
+
+    points: list[Point]
+    provenance: str
+
+
+def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tradeoff | None:
+    """The families' tables, copied from the committed ones or (``measure``) measured now,
+    written under ``tradeoff/``."""
+    tradeoff = _module("pendcli.tradeoff")
+    if tradeoff is None:
+        return None
+    names = tradeoff.family_names(keys)
+    if not names:
+        return None
+    points: list[Point] = []
+    fresh = []
+    for name in names:
+        committed = tradeoff.table_path(name)
+        if measure or not committed.is_file():
+            writer.status(f"measuring {name}")
+            measured = tradeoff.measure_family(name)
+            tradeoff.write_table(measured, writer.out / "tradeoff" / f"{name}.csv")
+            writer.written.append(Path("tradeoff") / f"{name}.csv")
+            points += measured
+            fresh.append(name)
+        else:
+            writer.text(f"tradeoff/{name}.csv", committed.read_text(encoding="utf-8"))
+            points += tradeoff.read_table(committed)
+    return _Tradeoff(points, _provenance(tradeoff, names, fresh))
+
+
+def _provenance(tradeoff: ModuleType, names: list[str], fresh: list[str]) -> str:
+    if len(fresh) == len(names):
+        return "measured now, by this run, on the machine that wrote this report"
+    date = tradeoff.measured_on()
+    when = f"measured {date} by `make bench`" if date else "measured by `make bench`"
+    text = f"committed tables `tables/tradeoff/<family>.csv`, {when}"
+    if fresh:
+        text += f" (measured now: {', '.join(fresh)}, whose committed table is missing)"
+    return text + "; `pendcli reproduce --out DIR --measure` measures them again"
+
+
+# name -> (module, function, arguments): each figure is drawn by one call, in any process
+_Task = tuple[str, str, str, tuple[Any, ...]]
+
+
+def _figure_tasks(result: ReproduceResult, folder: Path, tradeoff: _Tradeoff | None) -> list[_Task]:
+    """Every figure to draw, the costliest first (so two processes finish together)."""
+    tasks: list[_Task] = []
+    for key in result.papers:
+        if key in result.formulas and _has(f"pendcli.papers.{key}.formulas", "figures"):
+            args = (folder / "figures" / key / "formulas", result.formulas[key])
+            tasks.append((key, f"pendcli.papers.{key}.formulas", "figures", args))
+    if tradeoff is not None:
+        path = folder / "tradeoff" / "work-precision.png"
+        tasks.append(("tradeoff", "pendcli.tradeoff", "plot_tradeoff", (tradeoff.points, path)))
+    for key in result.papers:
+        # papers/<key>/figures.py (the layout of issue 11); claims.py until a paper has moved
+        for name in (f"pendcli.papers.{key}.figures", f"pendcli.papers.{key}.claims"):
+            if _has(name, "figures"):
+                tasks.append((key, name, "figures", (folder / "figures" / key,)))
+                break
+    return tasks
+
+
+def _has(module: str, attribute: str) -> bool:
+    found = _module(module)
+    return found is not None and hasattr(found, attribute)
+
+
+def _draw(module: str, function: str, args: tuple[Any, ...]) -> list[Path]:
+    """Draw one task (in a worker process or this one); the files it wrote."""
+    out = getattr(importlib.import_module(module), function)(*args)
+    return [Path(p) for p in out] if isinstance(out, list | tuple) else [Path(out)]
+
+
+class _Drawing:
+    """Draws the tasks in ``jobs`` forked processes (or here, with one job or no fork)."""
+
+    def __init__(self, tasks: list[_Task], jobs: int | None) -> None:
+        self.tasks = tasks
+        self.jobs = _jobs(jobs, len(tasks))
+        self.pool: Any = None
+        self.futures: list[Any] = []
+
+    def __enter__(self) -> _Drawing:
+        if self.jobs > 1:
+            import multiprocessing
+            from concurrent.futures import ProcessPoolExecutor
+
+            _pyplot()  # once, here: the forked workers inherit it
+            context = multiprocessing.get_context("fork")
+            self.pool = ProcessPoolExecutor(self.jobs, mp_context=context)
+            self.futures = [self.pool.submit(_draw, m, f, a) for _, m, f, a in self.tasks]
+        return self
+
+    def results(self) -> dict[str, list[Path]]:
+        """Figures per paper (and "tradeoff"), claim figures before formula figures."""
+        if self.pool is None:
+            drawn = [_draw(m, f, a) for _, m, f, a in self.tasks]
+        else:
+            drawn = [future.result() for future in self.futures]
+        by_key: dict[str, list[Path]] = {}
+        for (key, module, _, _), paths in zip(self.tasks, drawn, strict=True):
+            claims_first = module.endswith((".figures", ".claims"))
+            by_key.setdefault(key, [])
+            by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
+        return by_key
+
+    def __exit__(self, *exc: object) -> None:
+        if self.pool is not None:
+            self.pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _pyplot() -> None:
+    """Load matplotlib (Agg) before forking the workers, rather than once in each."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot
+
+
+def _jobs(jobs: int | None, tasks: int) -> int:
+    import multiprocessing
+
+    if "fork" not in multiprocessing.get_all_start_methods():
+        return 1
+    if jobs is None:  # PENDCLI_JOBS=1 draws in this process (to compare, or to debug)
+        env = os.environ.get("PENDCLI_JOBS", "")
+        jobs = int(env) if env.isdigit() else min(2, os.cpu_count() or 1)
+    wanted = jobs
+    return max(1, min(wanted, tasks))

@@ -115,4 +115,4 @@ def _run_step(result: ReproduceResult, key: str, what: str) -> None:
     else:
         from pendcli.stability import stability_rows
 
-        result.stability = stability_rows()
+        result.stability = stability_rows(result.papers)

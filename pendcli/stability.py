@@ -80,12 +80,16 @@ def worst(
     return worst_ulps, where
 
 
-def stability_rows() -> list[dict[str, str]]:
-    """Per method: accurate range, what fails beyond, and the measurement behind it."""
+def stability_rows(papers: Iterable[str] | None = None) -> list[dict[str, str]]:
+    """Per method: accurate range, what fails beyond, and the measurement behind it.
+
+    Only the rows of ``papers`` (default: every paper), in the order of ``PAPERS``.
+    """
     from pendcli.core.claims import PAPERS
 
+    wanted = PAPERS if papers is None else tuple(papers)
     rows: list[dict[str, str]] = []
-    for key in PAPERS:
+    for key in (k for k in PAPERS if k in wanted):
         name = f"pendcli.papers.{key}.stability"
         if importlib.util.find_spec(name) is not None:  # a paper may declare none
             rows += importlib.import_module(name).stability_rows()

@@ -48,6 +48,7 @@ __all__ = [
     "family",
     "family_names",
     "measure_family",
+    "measured_on",
     "plot_tradeoff",
     "read_table",
     "relative_error",
@@ -105,6 +106,7 @@ class Family:
 
 
 _FAMILIES: dict[str, Family] | None = None
+_PAPER_OF: dict[str, str] = {}  # family name -> the paper that declares it
 
 
 def families() -> dict[str, Family]:
@@ -119,6 +121,7 @@ def families() -> dict[str, Family]:
                 if fam.name in collected:
                     raise PendcliError(f"tradeoff family {fam.name!r} is declared twice")
                 collected[fam.name] = fam
+                _PAPER_OF[fam.name] = key
         _FAMILIES = collected
     return _FAMILIES
 
@@ -129,9 +132,10 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-def family_names() -> list[str]:
-    """The names of every family, in the papers' order (what the reports measure)."""
-    return list(families())
+def family_names(papers: Sequence[str] | None = None) -> list[str]:
+    """The names of every family (or of those the given papers declare), in the papers' order."""
+    names = list(families())
+    return names if papers is None else [n for n in names if _PAPER_OF[n] in papers]
 
 
 def family(name: str) -> Family:
@@ -326,6 +330,19 @@ def _table_number(
     if not (math.isfinite(value) and valid(value)):
         raise PendcliError(f"{where}: {column} = {text!r}; expected {wanted} (finite) or empty")
     return value
+
+
+def measured_on(root: Path | None = None) -> str | None:
+    """When ``make bench`` measured the committed tables (``tradeoff/measured.toml``), or None."""
+    import tomllib
+
+    path = table_path("measured", root).with_suffix(".toml")
+    try:
+        with path.open("rb") as fh:
+            date = tomllib.load(fh).get("date")
+    except (OSError, tomllib.TOMLDecodeError):
+        return None
+    return str(date) if date else None
 
 
 def choose(family: str, tol: float, points: list[Point] | None = None) -> Point:

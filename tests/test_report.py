@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import pytest
+from cli_helpers import invoke
 
+from pendcli import report
 from pendcli.core.claims import ClaimRow, FormulaRow
 from pendcli.core.errors import PendcliError
-from pendcli.report import disagreement_digest, write_report
+from pendcli.report import check_out_folder, disagreement_digest, write_report
 from pendcli.reproduce import ReproduceResult
 
 
@@ -76,7 +78,98 @@ def test_tally_and_summary_count_each_verdict():
 def test_report_refuses_a_file_as_its_folder(tmp_path):
     target = tmp_path / "a_file"
     target.write_text("x", encoding="utf-8")
-    with pytest.raises(PendcliError, match="cannot create output folder") as err:
+    with pytest.raises(PendcliError, match="is a file, not a folder") as err:
         write_report(RESULT, target)
     assert "\n" not in str(err.value)
     assert target.read_text(encoding="utf-8") == "x"
+
+
+@pytest.mark.parametrize("out", ["", ".", "a_file/sub", "others"])
+def test_unusable_out_folders_are_refused_before_any_work(tmp_path, monkeypatch, out):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "a_file").write_text("x", encoding="utf-8")
+    (tmp_path / "others").mkdir()
+    (tmp_path / "others" / "notes.txt").write_text("keep", encoding="utf-8")
+    with pytest.raises(PendcliError) as err:
+        check_out_folder(out)
+    assert "\n" not in str(err.value) and repr(out) in str(err.value)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a_file", "others"]
+    assert (tmp_path / "others" / "notes.txt").read_text(encoding="utf-8") == "keep"
+
+
+def test_cli_refuses_a_file_as_out_with_one_line_and_exit_2(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "a_file").write_text("x", encoding="utf-8")
+    for out in ("a_file", ""):
+        code, stdout, err = invoke("reproduce", "--paper", "charbonnier", "--out", out)
+        assert code == 2 and stdout == "" and len(err.strip().splitlines()) == 1, err
+    assert [p.name for p in tmp_path.iterdir()] == ["a_file"]
+
+
+# The demo rows under a real paper's name: its citation and tradeoff tables exist.
+ONE_PAPER = ReproduceResult(
+    papers=("charbonnier",),
+    claims={"charbonnier": RESULT.claims["demo"]},
+    formulas={"charbonnier": RESULT.formulas["demo"]},
+)
+
+
+def _stub_figures(monkeypatch):
+    """Figures drawn as empty files in this process: the folder logic, not matplotlib."""
+
+    def draw(module, function, args):
+        folder = args[-1] if function == "plot_tradeoff" else args[0]
+        path = folder if function == "plot_tradeoff" else folder / f"{function}.png"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(b"")
+        return [path]
+
+    monkeypatch.setattr(report, "_draw", draw)
+
+
+def test_report_replaces_the_folder_as_a_whole(tmp_path, monkeypatch):
+    _stub_figures(monkeypatch)
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "report.md").write_text("old", encoding="utf-8")
+    (out / "stale.csv").write_text("old", encoding="utf-8")
+    written = write_report(ONE_PAPER, out, jobs=1)
+    assert not (out / "stale.csv").exists()
+    assert sorted(p.relative_to(out).as_posix() for p in written) == sorted(
+        p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file()
+    )
+    assert "# pendcli reproduction report" in (out / "report.md").read_text(encoding="utf-8")
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]  # no temporary folder left
+
+
+def test_a_failure_while_writing_leaves_the_old_folder_intact(tmp_path, monkeypatch):
+    def broken(*_args):
+        raise PendcliError("cannot write figure: disk full")
+
+    monkeypatch.setattr(report, "_draw", broken)
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "report.md").write_text("old report", encoding="utf-8")
+    with pytest.raises(PendcliError, match="disk full"):
+        write_report(ONE_PAPER, out, jobs=1)
+    assert [p.name for p in out.iterdir()] == ["report.md"]
+    assert (out / "report.md").read_text(encoding="utf-8") == "old report"
+    assert [p.name for p in tmp_path.iterdir()] == ["out"]
+
+
+def test_report_of_one_paper_times_only_its_families_from_the_committed_tables(tmp_path):
+    from pendcli import tradeoff
+
+    result = ReproduceResult(papers=("charbonnier",))
+    out = tmp_path / "out"
+    written = write_report(result, out, jobs=2)  # figures drawn in forked workers
+    assert sorted(written) == sorted(p for p in out.rglob("*") if p.is_file())
+    csvs = sorted(p.stem for p in (out / "tradeoff").glob("*.csv"))
+    assert csvs == sorted(tradeoff.family_names(("charbonnier",)))
+    assert set(csvs).isdisjoint(tradeoff.family_names(("lecornu", "tisserand")))
+    for name in csvs:  # copied byte for byte, not measured again
+        committed = tradeoff.table_path(name).read_bytes()
+        assert (out / "tradeoff" / f"{name}.csv").read_bytes() == committed
+    text = (out / "report.md").read_text(encoding="utf-8")
+    assert "committed tables" in text and "by `make bench`" in text
+    assert not (out / "figures" / "lecornu").exists()
