@@ -213,6 +213,13 @@ def test_lecornu_coefficient_is_his_value_of_g():
     assert abs(float(g_max) / load_paper_table("lecornu").constant("g") - 1) < 2e-3
 
 
+@pytest.mark.parametrize("key", PAPERS)
+def test_a_misprinted_or_misderived_formula_comes_with_the_right_one(formulas, key):
+    """A misprint or a derivation error is a claim that a corrected formula was found."""
+    rows = [r for r in formulas[key].values() if r.cause in ("misprint", "derivation-error")]
+    assert [r.id for r in rows if r.recomputed == r.published] == []
+
+
 # --- formulas: (42) inherits the pk³ term of (41) --------------------------------------------
 
 
