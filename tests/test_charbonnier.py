@@ -7,6 +7,7 @@ numbers from mpmath, the log-gamma function of mpmath.
 
 from __future__ import annotations
 
+import json
 import math
 from fractions import Fraction
 
@@ -80,10 +81,105 @@ def test_recompute_covers_exactly_the_printed_claims_with_the_exact_value():
 # ----------------------------------------------------------------------------- I_n(π)
 
 
-@pytest.mark.parametrize("n", [-1, 0, 1, 2, 7, 58, 59, 60, 61, 150, 1001, 10**5, 10**9, 10**12])
+@pytest.mark.parametrize("n", [-1, 0, 1, 2, 7, 59, 199, 200, 201, 1837, 10**5, 10**12, 10**15])
 def test_integral_pi_against_mpmath_beta(n):
     ref = mp_beta_pi(n)
-    assert float(abs(model.integral_pi(n) - ref) / ref) < 4 * 2.3e-16
+    assert float(abs(model.integral_pi(n) - ref) / ref) < 1.2e-16  # half an ulp, at most
+
+
+def ulps_from(value: float, reference: mpmath.mpf) -> float:
+    with mpmath.workdps(50):
+        return float(abs(mpmath.mpf(value) - reference) / math.ulp(float(reference)))
+
+
+def wallis_50_digits(n: int) -> mpmath.mpf:
+    """I_n(π) from Wallis' binomial forms, π and the division by mpmath at 50 digits."""
+    q, p = wallis(n) if n >= 0 else (Fraction(1), 1)
+    with mpmath.workdps(50):
+        return mpmath.mpf(q.numerator) / q.denominator * (mpmath.pi if p else 1)
+
+
+LOG_SAMPLE = sorted({int(v) for v in np.logspace(np.log10(3000), 15, 2000)})
+
+
+def test_integral_pi_correctly_rounded_for_every_n_below_3000():
+    """≤ 0.5 ulp (+1e-3 for the reference's own rounding) against the exact rationals."""
+    bad = {}
+    for n in range(-1, 3000):
+        err = ulps_from(model.integral_pi(n), wallis_50_digits(n))
+        if err > 0.5 + 1e-3:
+            bad[n] = err
+    assert not bad, bad
+
+
+def test_integral_pi_correctly_rounded_log_sample_to_1e15():
+    """2,000 n log-spaced from 3000 to 10^15 against mpmath's beta function at 50 digits."""
+    bad = {}
+    for n in LOG_SAMPLE:
+        err = ulps_from(model.integral_pi(n), mp_beta_pi(n))
+        if err > 0.5 + 1e-3:
+            bad[n] = err
+    assert len(LOG_SAMPLE) > 1900 and not bad, bad
+
+
+def test_integral_pi_array_equals_the_scalar_path():
+    ns = np.array([-1, 0, 1, 5, 199, 200, 201, 1837, *LOG_SAMPLE[::20]], dtype=np.int64)
+    values = model.integral_pi_array(ns)
+    assert values.dtype == np.float64 and values.shape == ns.shape
+    assert values.tolist() == [model.integral_pi(int(n)) for n in ns]
+    square = model.integral_pi_array(ns[:6].reshape(2, 3))
+    assert square.shape == (2, 3) and square.ravel().tolist() == values[:6].tolist()
+    assert model.integral_pi_array(np.array([], dtype=int)).size == 0
+
+
+@pytest.mark.parametrize(
+    ("ns", "match"),
+    [([1.5, 2.0], "integers"), ([True], "integers"), ([-2, 3], "n = -2"),
+     ([3, 10**16], "n = 10000000000000000")],
+)  # fmt: skip
+def test_integral_pi_array_refuses_bad_input(ns, match):
+    with pytest.raises(PendcliError, match=match) as err:
+        model.integral_pi_array(np.array(ns))
+    assert "\n" not in str(err.value)
+
+
+def test_undecided_rounding_falls_back_to_mpmath(monkeypatch):
+    """With Ziv's bound made huge every series value is undecided: mpmath then decides."""
+    from pendcli.papers.charbonnier import wallis
+
+    monkeypatch.setattr(wallis, "DD_BOUND", 1e-3)
+    ns = [200, 1001, 1837, 10**9]
+    values = [wallis.integral_pi(n) for n in ns]
+    assert values == wallis.integral_pi_array(np.array(ns)).tolist()
+    for n, v in zip(ns, values, strict=True):
+        assert ulps_from(v, mp_beta_pi(n)) <= 0.5 + 1e-3
+
+
+def test_double_double_series_far_below_its_bound():
+    """The double-double value itself (before rounding) is within 2^-78, the bound is 2^-72."""
+    from pendcli.papers.charbonnier import wallis
+
+    ns = np.array([200, 201, 210, 300, 1837, 10**4, 10**7, 10**12, 10**15])
+    hi, lo = wallis._series_dd((ns + 2) / 2.0, np.sqrt)
+    for n, h, low in zip(ns, hi, lo, strict=True):
+        with mpmath.workdps(50):
+            ref = mp_beta_pi(int(n))
+            assert abs((mpmath.mpf(h) + mpmath.mpf(low) - ref) / ref) < 2.0**-78
+    assert wallis.DD_BOUND == 2.0**-72
+
+
+def test_pi_bounds_enclose_mpmath_pi():
+    from pendcli.papers.charbonnier import wallis
+
+    lo, hi = wallis.pi_bounds()
+    with mpmath.workdps(100):
+        pi = mpmath.pi
+        assert (
+            mpmath.mpf(lo.numerator) / lo.denominator
+            < pi
+            < mpmath.mpf(hi.numerator) / hi.denominator
+        )
+    assert hi - lo < Fraction(1, 2**250)
 
 
 def test_exact_rationals_equal_wallis():
@@ -94,6 +190,21 @@ def test_exact_rationals_equal_wallis():
         assert model.integral_pi_rational(n) == expected, n
         assert model.integral_pi_exact(n) == expected, n
         assert model.printed_closed_form(n) == expected, n
+
+
+def test_row_by_row_sequences_equal_the_restarting_forms():
+    """One step per row gives what restarting from n = 0 gives, exactly (floats bit for bit)."""
+    exact = list(model.integral_pi_sequence(400))
+    closed = list(model.printed_closed_form_sequence(400))
+    assert [n for n, _, _ in exact] == list(range(-1, 401))
+    assert exact[0] == (-1, Fraction(1), 1)
+    for (n, q, p), (m, num, den, cp) in zip(exact[1:], closed[1:], strict=True):
+        assert n == m and (q, p) == wallis(n), n
+        assert (Fraction(num, den), cp) == model.printed_closed_form(n), n
+    for x in (math.pi, 0.7, 2.5, -1.0):
+        seq = model.integral_recurrence_sequence(300, x)
+        assert seq == [model.integral_recurrence(n, x) for n in range(-1, 301)]
+    assert model.integral_recurrence_sequence(-1) == [math.pi]
 
 
 def test_integral_pi_rational_is_uncached_and_exact_cached():
@@ -172,7 +283,8 @@ def test_recurrence_in_floating_point_is_exact_at_pi_but_not_at_small_x():
 @pytest.mark.parametrize(
     ("n", "x", "branch"),
     [(-1, 2.0, "I_(-1)(x) = x"), (0, 2.0, "I_0(x) = 2 sin²(x/2)"),
-     (5, math.pi, "I_n(π): exact rational"), (60, math.pi, "asymptotic series"),
+     (5, math.pi, "I_n(π): exact Wallis rational"), (199, math.pi, "exact Wallis rational"),
+     (200, math.pi, "asymptotic series"),
      (5, 2.0, "incomplete beta"), (5, 10.0, "exact reduction to [0, π], then incomplete")],
 )  # fmt: skip
 def test_integral_method_names_the_branch(n, x, branch):
@@ -180,7 +292,7 @@ def test_integral_method_names_the_branch(n, x, branch):
 
 
 @pytest.mark.parametrize(
-    ("n", "x"), [(-2, 1.0), (10**13, 1.0), (1.5, 1.0), (3, math.nan), (3, math.inf), (3, 2e6)]
+    ("n", "x"), [(-2, 1.0), (10**15 + 1, 1.0), (1.5, 1.0), (3, math.nan), (3, math.inf), (3, 2e6)]
 )
 def test_bad_inputs_raise_clear_errors(n, x):
     with pytest.raises(PendcliError) as err:
@@ -203,8 +315,19 @@ def test_table_rows_against_independent_values():
         assert r["published"] == printed.get(n, "")
         assert r["closed_form_matches_recurrence"] is True
         ref = float(mp_beta_pi(n))
-        assert r["beta"] == pytest.approx(ref, rel=5e-16)
+        assert r["beta"] == ref  # correctly rounded
         assert r["recurrence_float"] == pytest.approx(ref, rel=1e-14)
+
+
+def test_table_rows_linear_form_against_wallis_at_large_n():
+    rows = explore.table_rows(2500)
+    assert [r["n"] for r in rows] == list(range(-1, 2501))
+    for r in rows[1::97] + rows[-3:]:
+        n = r["n"]
+        assert r["exact"] == model.exact_text(*wallis(n))
+        assert r["closed_form_matches_recurrence"] is True
+        assert ulps_from(r["beta"], wallis_50_digits(n)) <= 0.5 + 1e-3
+        assert r["recurrence_float"] == model.integral_recurrence(n, math.pi)
 
 
 @pytest.mark.parametrize("n_max", [-2, 10_001, True, 2.0])
@@ -221,7 +344,8 @@ def test_integral_row_value_and_exact():
     row = explore.integral_row(5, 1.0)
     assert "exact" not in row
     assert row["value"] == pytest.approx(float(mp_integral(5, 1.0)), rel=1e-15)
-    assert "exact" not in explore.integral_row(model.MAX_EXACT_N + 1, math.pi)
+    assert "exact" not in explore.integral_row(explore.TABLE_N_MAX + 1, math.pi)
+    assert "exact" in explore.integral_row(explore.TABLE_N_MAX, math.pi)
 
 
 # ----------------------------------------------------------------------------- the figure
@@ -323,3 +447,77 @@ def test_check_pendulum_is_read_from_the_table():
         assert getattr(p, name) == constant.value
     assert p.k == pytest.approx(math.sqrt(9.81 / 1.5), rel=1e-15)
     assert p.half * p.k == pytest.approx(math.pi, rel=1e-15)
+
+
+# ----------------------------------------------------------------------------- the CLI's domains
+
+
+def _run_cli(*args: str) -> tuple[int, str, str, float]:
+    """`pendcli ARGS` in a fresh process under a 60 s deadline: (code, stdout, stderr, seconds)."""
+    import subprocess
+    import sys
+    import time
+
+    start = time.perf_counter()
+    done = subprocess.run(
+        [sys.executable, "-m", "pendcli", *args], capture_output=True, text=True, timeout=60
+    )
+    return done.returncode, done.stdout, done.stderr, time.perf_counter() - start
+
+
+@pytest.mark.parametrize(
+    ("args", "valid"),
+    [(("300", "--method", "products"), "-1 <= n <= 299"),
+     (("1000000000000", "--method", "products"), "-1 <= n <= 299"),
+     (("100000", "--method", "quad"), "-1 <= n <= 3e+04"),
+     (("1000000000000000000", "--method", "pendcli"), "-1 <= n <= 1e+15")],
+)  # fmt: skip
+def test_methods_refuse_inputs_outside_their_measured_domain(args, valid):
+    code, out, err, seconds = _run_cli("charbonnier", "integral", *args)
+    assert code == 2 and not out, err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
+    assert err.startswith("pendcli: error: ") and valid in err
+    assert "measured" in err or "1e+15" in err
+    assert seconds < 20  # refused before any computation (once: never ended)
+
+
+@pytest.mark.parametrize(
+    ("args", "warned"),
+    [(("100", "-x", "0.5", "--method", "recurrence"), "not even the sign"),
+     (("10", "-x", "0.1", "--method", "recurrence"), "estimated relative error"),
+     (("1000000000000", "--method", "gammaln"), "gammaln(m) - gammaln(m+½) cancels"),
+     (("0", "--method", "asymptotic"), "truncated too early"),
+     (("100", "-x", "2.0", "--method", "recurrence"), None),
+     (("300", "--method", "gammaln"), None)],
+)  # fmt: skip
+def test_unstable_methods_warn_on_stderr_and_still_answer(args, warned):
+    from cli_helpers import invoke
+
+    code, out, err = invoke("charbonnier", "integral", *args, "-f", "json")
+    assert code == 0 and "Traceback" not in err
+    row = json.loads(out)["integral"]
+    if warned is None:
+        assert not err and "warning" not in row
+        return
+    assert err.startswith("pendcli: warning: method ") and warned in err
+    assert len(err.strip().splitlines()) == 1 and row["warning"] in err
+
+
+def test_recurrence_warning_is_right_about_the_value():
+    """The warned value really is wrong: I_100(0.5) > 0, the recurrence returns < 0 there."""
+    from pendcli.papers.charbonnier.speed import integral_by_method_checked
+
+    value, warning = integral_by_method_checked(100, 0.5, "recurrence")
+    assert mp_integral(100, 0.5) > 0 and value < 0 and warning is not None
+
+
+def test_short_option_x_is_accepted():
+    """Issue 13: `charbonnier integral 3 -x 1` was refused as an unexpected extra argument."""
+    from cli_helpers import invoke
+
+    code, out, err = invoke("charbonnier", "integral", "3", "-x", "1", "-f", "json")
+    assert code == 0, err
+    row = json.loads(out)["integral"]
+    assert row["x"] == 1.0 and row["value"] == pytest.approx(float(mp_integral(3, 1.0)), rel=1e-15)
+    code, out, err = invoke("charbonnier", "integral", "-1", "-x", "-2", "-f", "json")
+    assert code == 0 and json.loads(out)["integral"]["value"] == -2.0, err

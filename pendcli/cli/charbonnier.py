@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import sys
 from typing import TYPE_CHECKING, Annotated
 
 import typer
@@ -83,8 +84,10 @@ def _table_columns() -> tuple[Column, ...]:
 
 @app.command("integral", context_settings={"ignore_unknown_options": True})
 def integral(
-    n: Annotated[int, typer.Argument(help="Order n: integer, -1 <= n <= 10^12.")],
-    x: Annotated[float, typer.Option("--x", help="Upper limit x (real, |x| <= 1e6).")] = math.pi,
+    n: Annotated[int, typer.Argument(help="Order n: integer, -1 <= n <= 10^15.")],
+    x: Annotated[
+        float, typer.Option("--x", "-x", help="Upper limit x (real, |x| <= 1e6).")
+    ] = math.pi,
     tol: Annotated[
         float | None,
         typer.Option(
@@ -106,6 +109,8 @@ def integral(
     from pendcli.render import Column, fmt_float
 
     row = integral_row(n, x, tol=tol, method=method)
+    if "warning" in row:  # on stderr, so stdout stays the value (JSON keeps it in the row)
+        sys.stderr.write(f"pendcli: warning: {row['warning']}\n")
     columns = [
         Column("n", "n", justify="right"),
         Column("x", "x", fmt=lambda r: fmt_float(r["x"], 17), justify="right"),

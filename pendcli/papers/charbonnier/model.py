@@ -3,9 +3,9 @@
 * :func:`integral_pi_rational` / :func:`integral_pi_exact`: Charbonnier's recurrence at x = π
   in exact rational arithmetic, I_n(π) = q·2 or q·π with q rational (uncached / cached).
 * :func:`printed_closed_form`: the printed products of evens over odds, as printed.
-* :func:`integral_pi`: I_n(π) = B(½, (n+2)/2) in double precision, to a few ulp for every
-  n >= -1 up to 10^12: the exact rational for n < 60, else √(π/m)·exp(-S(m)), m = (n+2)/2,
-  with S the asymptotic series of log Γ(m+½)/Γ(m) (:func:`log_gamma_ratio_coefficients`).
+* :func:`integral_pi` / :func:`integral_pi_array`: I_n(π) = B(½, (n+2)/2) correctly rounded
+  for every n from -1 to 10^15 (:mod:`.wallis`: exact Wallis rationals for n < 200, else the
+  asymptotic series of log Γ(m+½)/Γ(m) in double-double arithmetic, m = (n+2)/2).
   (scipy.special.beta(0.5, m) loses up to 6 digits for m ~ 10^3..10^6.)
 * :func:`integral`: I_n(x) for any real x, by exact reduction to [0, π] (the remainder kept as
   a double-double) and the incomplete beta function ½ B(sin²x; (n+2)/2, ½) at 40 digits, since
@@ -22,10 +22,19 @@ No value of g or unit enters: these are pure numbers.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from fractions import Fraction
 from functools import cache
 
 from pendcli.core.errors import PendcliError
+from pendcli.papers.charbonnier.wallis import (
+    MAX_N,
+    SERIES_FROM,
+    bernoulli,
+    integral_pi,
+    integral_pi_array,
+    log_gamma_ratio_fractions,
+)
 
 __all__ = [
     "EXACT_BELOW",
@@ -37,6 +46,7 @@ __all__ = [
     "integral_fast",
     "integral_method",
     "integral_pi",
+    "integral_pi_array",
     "integral_pi_exact",
     "integral_pi_rational",
     "integral_recurrence",
@@ -44,10 +54,10 @@ __all__ = [
     "printed_closed_form",
 ]
 
-MAX_N = 10**12  # beyond this m**-1 terms are below 1e-12 ulp anyway, but n must stay an exact int
+RECURRENCE_MAX_N = 10**7  # n/2 Python steps: about a second at the limit
 MAX_X = 1.0e6  # |x| accepted by integral(); reduction mod π is exact, the cost is the count q
 MAX_EXACT_N = 100_000  # exact rationals beyond this cost seconds and megabytes
-EXACT_BELOW = 60  # n below which integral_pi is the exact rational, correctly rounded
+EXACT_BELOW = SERIES_FROM  # n below which integral_pi rounds the exact Wallis rational
 _PI_LOW = math.sin(math.pi)  # π - math.pi: the part of π a double cannot hold (~1.22e-16)
 _MP_DIGITS = 40  # working digits of the general-x path; measured < 0.5 ulp for n <= 10^4
 _LOG_TINY = -1075 * math.log(2.0)  # log of half the smallest subnormal: below it, 0
@@ -112,6 +122,38 @@ def printed_closed_form(n: int) -> tuple[Fraction, int]:
     return Fraction(num, den), 1
 
 
+def integral_pi_sequence(n_max: int) -> Iterator[tuple[int, Fraction, int]]:
+    """(n, q, p) with I_n(π) = q·π**p exactly, n = -1..n_max: one recurrence step per n.
+
+    Both parities' exact states are carried from row to row (:func:`integral_pi_rational`
+    restarts from n = 0 for each n, O(n²) in all).
+    """
+    _check_n(n_max)
+    state = [Fraction(2), Fraction(1)]  # I_0(π) = 2, I_(-1)(π) = π: the even and odd chains
+    yield -1, state[1], 1
+    for n in range(n_max + 1):
+        if n > 0:
+            state[n % 2] *= Fraction(n, n + 1)
+        yield n, state[n % 2], n % 2
+
+
+def printed_closed_form_sequence(n_max: int) -> Iterator[tuple[int, int, int, int]]:
+    """(n, numerator, denominator, p) of the printed products, unreduced, n = -1..n_max.
+
+    I_n(π) = (numerator/denominator)·π**p; each product gains one factor per row.
+    """
+    _check_n(n_max)
+    yield -1, 1, 1, 1
+    even = [2, 1]  # 2·(2·4…n), 1·3·5…(n+1)
+    odd = [1, 1]  # 1·3·5…n, 2·4·6…(n+1)
+    for n in range(n_max + 1):
+        products = odd if n % 2 else even
+        if n > 0:
+            products[0] *= n
+        products[1] *= n + 1
+        yield n, products[0], products[1], n % 2
+
+
 def exact_text(q: Fraction, p: int) -> str:
     """q·π**p as text: ``2``, ``π/2``, ``16/15``, ``3π/8``."""
     base = "π" if p else ""
@@ -122,44 +164,10 @@ def exact_text(q: Fraction, p: int) -> str:
 # ----------------------------------------------------------------- I_n(π) in floating point
 
 
-def bernoulli(count: int) -> list[Fraction]:
-    """B_0..B_count (B_1 = -1/2), from the standard recurrence."""
-    b = [Fraction(1)]
-    for m in range(1, count + 1):
-        total = sum((math.comb(m + 1, k) * b[k] for k in range(m)), Fraction(0))
-        b.append(-total / (m + 1))
-    return b
-
-
 @cache
 def log_gamma_ratio_coefficients(terms: int = 12) -> tuple[float, ...]:
-    """Coefficients c_k of log Γ(m+½)/Γ(m) = ½ log m + Σ c_k m^(-k), k = 1, 3, 5, ...
-
-    From log Γ(z+a) ~ (z+a-½)log z - z + ½ log 2π + Σ (-1)^(k+1) B_(k+1)(a) / (k(k+1) z^k)
-    with B_j(½) = (2^(1-j) - 1) B_j: c_k = (2^-k - 2) B_(k+1) / (k(k+1)) for odd k.
-    """
-    bern = bernoulli(2 * terms + 1)
-    coeffs = []
-    for k in range(1, 2 * terms, 2):
-        coeffs.append(float((Fraction(1, 2**k) - 2) * bern[k + 1] / (k * (k + 1))))
-    return tuple(coeffs)
-
-
-def integral_pi(n: int) -> float:
-    """I_n(π) = ∫_0^π sin^(n+1) t dt = B(½, (n+2)/2), to a few ulp for -1 <= n <= 10^12."""
-    _check_n(n)
-    if n < EXACT_BELOW:
-        q, p = integral_pi_exact(n)
-        return float(q) * math.pi if p else float(q)
-    m = (n + 2) / 2
-    inv = 1.0 / m
-    inv2 = inv * inv
-    # S = Σ c_k m^-k over odd k, summed from the smallest term; m >= 30.5 makes 12 terms ample.
-    s = 0.0
-    for c in reversed(log_gamma_ratio_coefficients()):
-        s = s * inv2 + c
-    s *= inv
-    return math.sqrt(math.pi * inv) * math.exp(-s)
+    """:func:`.wallis.log_gamma_ratio_fractions` rounded to doubles (c_1, c_3, c_5, ...)."""
+    return tuple(float(c) for c in log_gamma_ratio_fractions(terms))
 
 
 # ----------------------------------------------------------------- I_n(x), 0 <= x <= π
@@ -349,7 +357,11 @@ def integral_method(n: int, x: float) -> str:
         return "I_0(x) = 2 sin²(x/2)"
     reduced = "" if 0 <= x <= math.pi else "exact reduction to [0, π], then "
     if x == math.pi or (x > 0 and x % math.pi == 0):
-        inner = "exact rational" if n < EXACT_BELOW else "asymptotic series of Γ(m+½)/Γ(m)"
+        inner = (
+            "exact Wallis rational, correctly rounded"
+            if n < EXACT_BELOW
+            else "asymptotic series of Γ(m+½)/Γ(m) in double-double, correctly rounded"
+        )
         return reduced + f"I_n(π): {inner}"
     return reduced + "incomplete beta ½ B(sin²x; (n+2)/2, ½) at 40 digits (mpmath)"
 
@@ -357,11 +369,18 @@ def integral_method(n: int, x: float) -> str:
 # ----------------------------------------------------------------- the printed recurrence
 
 
+def _recurrence_too_long(n: int) -> PendcliError:
+    return PendcliError(
+        f"n = {n} is out of range for the recurrence (n/2 steps); valid range is "
+        f"-1 <= n <= {RECURRENCE_MAX_N:.0e}"
+    )
+
+
 def integral_recurrence(n: int, x: float = math.pi) -> float:
     """Charbonnier's recurrence in double precision, exactly as printed (I_0 = 1 - cos x)."""
     _check_n(n)
-    if n > 10**7:
-        raise PendcliError(f"the recurrence costs n/2 steps; n = {n} is over the limit 10^7")
+    if n > RECURRENCE_MAX_N:
+        raise _recurrence_too_long(n)
     c, s = math.cos(x), math.sin(x)
     if n == -1:
         return x
@@ -371,3 +390,45 @@ def integral_recurrence(n: int, x: float = math.pi) -> float:
         k += 2
         prev = (-c * s**k + k * prev) / (k + 1)
     return prev
+
+
+def integral_recurrence_sequence(n_max: int, x: float = math.pi) -> list[float]:
+    """:func:`integral_recurrence` for n = -1..n_max at once (index n + 1), the same operations.
+
+    Both parity chains are carried from row to row: n_max/2 steps each, not n²/4 in all.
+    """
+    _check_n(n_max)
+    if n_max > RECURRENCE_MAX_N:
+        raise _recurrence_too_long(n_max)
+    c, s = math.cos(x), math.sin(x)
+    chains = [1.0 - c, x]  # I_0, I_(-1)
+    out = [x, chains[0]][: n_max + 2]
+    for k in range(1, n_max + 1):
+        chains[k % 2] = (-c * s**k + k * chains[k % 2]) / (k + 1)
+        out.append(chains[k % 2])
+    return out
+
+
+def integral_recurrence_with_error(n: int, x: float = math.pi) -> tuple[float, float]:
+    """(:func:`integral_recurrence`, a running bound on its absolute rounding error).
+
+    Each step adds a few roundings of its two terms, and the bound carried from I_(n-2) is
+    scaled by n/(n+1) as the value is; I_0 = 1 - cos x starts with cos x's rounding, all of
+    which remains when I_n(x) is tiny (small x): the bound then exceeds the value itself.
+    """
+    _check_n(n)
+    if n > RECURRENCE_MAX_N:
+        raise _recurrence_too_long(n)
+    eps = 2.0**-53
+    c, s = math.cos(x), math.sin(x)
+    if n == -1:
+        return x, 0.0
+    prev, err = (1.0 - c, 2 * eps) if n % 2 == 0 else (x, 0.0)
+    k = 0 if n % 2 == 0 else -1
+    while k < n:
+        k += 2
+        term = c * s**k
+        prev = (-term + k * prev) / (k + 1)
+        # cos x, sin x rounded (s**k then carries k of them), then 4 roundings of the step
+        err = (k * err + eps * ((k + 3) * abs(term) + 4 * k * abs(prev))) / (k + 1)
+    return prev, err

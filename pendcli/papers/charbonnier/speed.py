@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from functools import partial
+from functools import cache, partial
 from typing import Any
 
 from pendcli.core.errors import PendcliError
@@ -24,13 +24,18 @@ from pendcli.tradeoff import Candidate, Family, choose
 __all__ = [
     "FAMILIES",
     "INTEGRAL_METHODS",
+    "QUAD_MAX_N",
+    "WARN_ABOVE",
     "asymptotic_pi",
     "exact_rational",
     "gammaln_ratio",
     "integral_by_method",
+    "integral_by_method_checked",
     "integral_with_choice",
+    "integral_with_choice_checked",
     "naive_betainc",
     "printed_products",
+    "products_max_n",
     "quad_power",
     "reference_integral_pi",
     "reference_integral_x",
@@ -200,60 +205,161 @@ def _unknown_method(method: str) -> PendcliError:
     return PendcliError(f"method = {method!r} is not known; valid: {', '.join(INTEGRAL_METHODS)}")
 
 
-def integral_by_method(n: int, x: float, method: str, setting: str = "") -> float:
-    """I_n(x) by a named method of the tradeoff tables (what ``--method`` selects)."""
+# Domains measured against mpmath at 50 digits (tests/test_charbonnier_extremes.py re-measures
+# them): adaptive quadrature (epsrel 1e-10) keeps a relative error <= 2e-10 up to n = 7e4 on
+# 4000 x in (π/2, π]; from n = 1e5 it misses the peak of width ~1/√n at some x (1.87, 2.39,
+# 2.77) and returns 0, at x = π from n = 1e7.  The limit keeps a factor 3 below the first
+# failure.
+QUAD_MAX_N = 3 * 10**4
+WARN_ABOVE = 1e-10  # an estimated relative error above this is reported on stderr
+
+
+@cache
+def products_max_n() -> int:
+    """The largest n for which the printed products as floats (and every smaller n's) work.
+
+    Measured by calling :func:`printed_products` upward until float() of a product overflows.
+    """
+    n = 0
+    while True:
+        try:
+            printed_products(n + 1)
+        except OverflowError:
+            return n
+        n += 1
+
+
+def _refuse_outside_domain(n: int, x: float, method: str) -> None:
+    """PendcliError for an input where the method is known to fail (not merely lose digits)."""
+    if method == "products" and n > products_max_n():
+        raise PendcliError(
+            f"n = {n} is out of range for method products; valid range is -1 <= n <= "
+            f"{products_max_n()} (measured: beyond, the integer products overflow a double)"
+        )
+    if method == "quad" and n > QUAD_MAX_N:
+        raise PendcliError(
+            f"n = {n} is out of range for method quad; valid range is -1 <= n <= "
+            f"{QUAD_MAX_N:.0e} (measured: beyond, it misses the peak of sin^(n+1) and returns ~0)"
+        )
+
+
+def _estimated_error(n: int, x: float, method: str, setting: str) -> tuple[float, float]:
+    """(value, estimated relative error) for the methods whose error can be estimated."""
+    from scipy.special import gammaln
+
     from pendcli.papers.charbonnier import model
 
-    opts = dict(kv.split("=", 1) for kv in setting.split(",") if "=" in kv)
     if method == "recurrence":
-        return model.integral_recurrence(n, x)
+        value, bound = model.integral_recurrence_with_error(n, x)
+        # a bound as large as the value leaves no digit, not even the sign: say so (inf)
+        return value, bound / abs(value) if bound < abs(value) else math.inf
+    if method == "gammaln":  # exp of a difference of two rounded values of size ~m log m
+        m = (n + 2) / 2
+        return gammaln_ratio(n), 2.0**-53 * (abs(gammaln(m)) + abs(gammaln(m + 0.5)))
+    terms = int(dict(kv.split("=", 1) for kv in setting.split(",") if "=" in kv).get("terms", 12))
+    # asymptotic: the first omitted term of S (exp(-S) ~ 1, so it is a relative error)
+    omitted = model.log_gamma_ratio_coefficients(terms + 1)[terms]
+    return asymptotic_pi(n, terms), abs(omitted) * ((n + 2) / 2) ** -(2 * terms + 1)
+
+
+def _warning(n: int, x: float, method: str, error: float) -> str | None:
+    if not error > WARN_ABOVE:  # also catches nan
+        return None
+    why = {
+        "recurrence": "the printed recurrence subtracts nearly equal numbers at this x",
+        "gammaln": "gammaln(m) - gammaln(m+½) cancels at large m",
+        "asymptotic": "the asymptotic series is truncated too early at this n",
+    }[method]
+    size = (
+        "its estimated rounding error exceeds the value itself, so no digit (not even the sign)"
+        " can be trusted"
+        if math.isinf(error)
+        else f"estimated relative error {error:.1e}"
+    )
+    return (
+        f"method {method} is unreliable at (n, x) = ({n}, {x:g}): {size} ({why}); "
+        "the default method (no --method) is accurate here"
+    )
+
+
+def integral_by_method(n: int, x: float, method: str, setting: str = "") -> float:
+    """I_n(x) by a named method of the tradeoff tables (what ``--method`` selects)."""
+    return integral_by_method_checked(n, x, method, setting)[0]
+
+
+def integral_by_method_checked(
+    n: int, x: float, method: str, setting: str = ""
+) -> tuple[float, str | None]:
+    """(I_n(x), a warning or None) by a named method, refused outside its measured domain."""
+    from pendcli.papers.charbonnier import model
+
+    _refuse_outside_domain(n, x, method)
+    opts = dict(kv.split("=", 1) for kv in setting.split(",") if "=" in kv)
+    if method in ("recurrence", "gammaln", "asymptotic"):
+        if method != "recurrence" and x != math.pi:
+            raise PendcliError(f"method {method!r} computes I_n(π) only; got x = {x}")
+        value, error = _estimated_error(n, x, method, setting)
+        return value, _warning(n, x, method, error)
     if method == "quad":
         if not 0.0 <= x <= math.pi:
             raise PendcliError(f"x = {x}: method quad takes 0 <= x <= π")
-        return quad_power(n, x, float(opts.get("epsrel", "1e-10")))[0]
+        return quad_power(n, x, float(opts.get("epsrel", "1e-10")))[0], None
     if method == "fast":
-        return model.integral_fast(n, x)
+        return model.integral_fast(n, x), None
     if method in ("mpmath-40", "pendcli"):
-        return model.integral(n, x)
+        return model.integral(n, x), None
     if method in _PI_ONLY:
         if x != math.pi:
             raise PendcliError(f"method {method!r} computes I_n(π) only; got x = {x}")
-        return _PI_ONLY[method](n, opts)
+        return _PI_ONLY[method](n, opts), None
     if method == "betainc":
-        return naive_betainc(n, x)
+        return naive_betainc(n, x), None
     raise _unknown_method(method)
 
 
 def integral_with_choice(
     n: int, x: float, tol: float | None = None, method: str | None = None
 ) -> tuple[float, str]:
-    """I_n(x) by a forced ``method`` or by the cheapest one meeting ``tol``; (value, label).
+    """(value, label) of :func:`integral_with_choice_checked`, its warning dropped."""
+    value, label, _ = integral_with_choice_checked(n, x, tol=tol, method=method)
+    return value, label
 
-    The choice reads the published table of family integral_pi (x = π) or integral_x; outside
-    the range that table measured (n beyond its largest n, x outside [0, π]) the measured
-    errors say nothing, so the default Charbonnier ``integral`` is used and the label says
-    why.
+
+def integral_with_choice_checked(
+    n: int, x: float, tol: float | None = None, method: str | None = None
+) -> tuple[float, str, str | None]:
+    """I_n(x) by a forced ``method`` or by the cheapest one meeting ``tol``.
+
+    Returns (value, label, warning or None).  The choice reads the published table of family
+    integral_pi (x = π) or integral_x; outside the range that table measured (n beyond its
+    largest n, x outside [0, π]) the measured errors say nothing, so the default Charbonnier
+    ``integral`` is used and the label says why.
     """
     from pendcli.papers.charbonnier import model
 
     if method is not None:
         if method not in INTEGRAL_METHODS:
             raise _unknown_method(method)
-        return integral_by_method(n, x, method), f"{method} (forced by --method)"
+        value, warning = integral_by_method_checked(n, x, method)
+        return value, f"{method} (forced by --method)", warning
     if tol is None:
         raise PendcliError("give --tol or --method")
     name = "integral_pi" if x == math.pi else "integral_x"
     chosen = choose(name, tol)
     n_max = max(p if isinstance(p, int) else p[0] for p in _BY_NAME[name].problems)
     if n > n_max or not 0.0 <= x <= math.pi:
-        return model.integral(n, x), (
+        return (
+            model.integral(n, x),
             f"{model.integral_method(n, x)} (default: (n, x) outside the range measured in "
-            f"tables/tradeoff/{name}.csv, n <= {n_max}, 0 <= x <= π)"
+            f"tables/tradeoff/{name}.csv, n <= {n_max}, 0 <= x <= π)",
+            None,
         )
-    value = integral_by_method(n, x, chosen.method, chosen.setting)
-    return value, (
+    value, warning = integral_by_method_checked(n, x, chosen.method, chosen.setting)
+    return (
+        value,
         f"{chosen.method} ({chosen.setting}): cheapest with measured worst error "
-        f"{chosen.error:.1e} <= tol {tol:g} in {name}, {chosen.seconds:.1e} s/evaluation"
+        f"{chosen.error:.1e} <= tol {tol:g} in {name}, {chosen.seconds:.1e} s/evaluation",
+        warning,
     )
 
 
@@ -268,7 +374,7 @@ def _epsrels(quick: bool) -> tuple[float, ...]:
 def _integral_pi_candidates(quick: bool) -> list[Candidate]:
     terms = (0, 1, 3) if quick else (0, 1, 2, 3, 4, 6)
     out = [
-        Candidate("integral_pi", "exact n<60, else asymptotic 12 terms", _integral_pi),
+        Candidate("integral_pi", "Wallis n<200, else double-double series", _integral_pi),
         Candidate("exact-rational", "Fraction, recurrence", exact_rational),
         Candidate("recurrence", "double, x = π: the Wallis-type product", _recurrence_pi),
         Candidate("products", "evens/odds as floats", printed_products),

@@ -17,6 +17,7 @@ from pendcli.papers.charbonnier.speed import (
     gammaln_ratio,
     naive_betainc,
     printed_products,
+    products_max_n,
     reference_integral_pi,
     reference_integral_x,
     scipy_beta,
@@ -27,7 +28,7 @@ __all__ = ["integral_rows", "resistance_rows", "stability_rows"]
 
 FAMILY = "I_n = ∫ sin^(n+1)"
 LOSS_FAMILY = "Charbonnier Δα, b_n v^n"
-N_PI = (-1, 0, 1, 2, 5, 17, 59, 60, 61, 100, 1001, 10**4, 10**6, 10**9, 10**12)
+N_PI = (-1, 0, 1, 2, 5, 17, 59, 60, 61, 100, 1001, 1837, 10**4, 10**6, 10**9, 10**12, 10**15)
 GRID_X = (0.01, 0.3, 1.0, 1.4, 2.0, 3.0)
 GRID_N = (1, 10, 100, 1000, 10**4)
 RECURRENCE_X = (0.1, 0.2, 0.5, 1.0, 2.0, 2.5, 3.0)
@@ -49,18 +50,31 @@ def _ref_beta_80(n: int, x: float) -> Any:
         return part if 2 * x <= math.pi else mpmath.beta(a, 0.5) - part
 
 
-def _integral_pi_row() -> dict[str, str]:
-    from pendcli.papers.charbonnier.model import MAX_N, integral_pi
+def _integral_pi_points() -> list[tuple[int]]:
+    """Every n below the series threshold and 60 past it, N_PI, and 200 n log-spaced to 1e15."""
+    from pendcli.papers.charbonnier.wallis import MAX_N, SERIES_FROM
 
-    points = [(n,) for n in N_PI]
+    ns = set(range(-1, SERIES_FROM + 60)) | set(N_PI)
+    ns |= {
+        round(10 ** (math.log10(SERIES_FROM) + k * math.log10(MAX_N / SERIES_FROM) / 199))
+        for k in range(200)
+    }
+    return [(n,) for n in sorted(ns)]
+
+
+def _integral_pi_row() -> dict[str, str]:
+    from pendcli.papers.charbonnier.model import integral_pi
+    from pendcli.papers.charbonnier.wallis import MAX_N, SERIES_FROM
+
+    points = _integral_pi_points()
     bad, where = worst(points, integral_pi, reference_integral_pi)
     assert where is not None
     return row(
         FAMILY,
-        "integral_pi (exact rational n<60, Γ-ratio series beyond)",
-        f"x = π, -1 <= n <= {MAX_N:.0e}",
+        f"integral_pi (Wallis rationals n < {SERIES_FROM}, double-double Γ-ratio series beyond)",
+        f"x = π, -1 <= n <= {MAX_N:.0e}: correctly rounded",
         f"n > {MAX_N:.0e}: refused (PendcliError)",
-        f"max {bad:.2f} ulp over {len(points)} n up to 1e12 (worst at n = {where[0]})",
+        f"max {bad:.3f} ulp over {len(points)} n up to {MAX_N:.0e} (worst at n = {where[0]})",
     )
 
 
@@ -148,22 +162,16 @@ def _recurrence_row() -> dict[str, str]:
 
 def _products_row() -> dict[str, str]:
     """The printed products evaluated in floats: exact enough until they overflow."""
-    overflow_at = None
-    for n in range(2, 2000, 2):
-        try:
-            printed_products(n)
-        except OverflowError:
-            overflow_at = n
-            break
+    first = products_max_n() + 1  # measured by forming them (speed.products_max_n)
     bad, _ = worst(
-        [(n,) for n in (1, 2, 10, 50, 100, 150)], printed_products, reference_integral_pi
+        [(n,) for n in (1, 2, 10, 50, 100, 150, first - 1)], printed_products, reference_integral_pi
     )
     return row(
         FAMILY,
         "printed products 2·4…n / 1·3…(n+1) as floats",
-        f"n < {overflow_at}",
-        f"n >= {overflow_at}: OverflowError (the products exceed 1.8e308)",
-        f"max {bad:.1f} ulp for n <= 150",
+        f"n < {first}",
+        f"n >= {first}: OverflowError (the products exceed 1.8e308); --method refuses them",
+        f"max {bad:.1f} ulp for n < {first}",
     )
 
 
