@@ -1,0 +1,39 @@
+"""Lecornu's equation ledger: every label the text prints has a row, and every row's check
+runs and agrees with the status the row records."""
+
+from __future__ import annotations
+
+from collections import Counter
+
+import pytest
+
+from pendcli.core.ledger import CHECKED_STATUSES, labels_in_text, load_ledger, run_check, verify
+
+LEDGER = load_ledger("lecornu")
+CHECKED = [r for r in LEDGER.rows if r.status in CHECKED_STATUSES]
+
+
+def test_every_printed_label_has_a_row() -> None:
+    printed = Counter(labels_in_text(LEDGER.text.read_text(encoding="utf-8")))
+    rows = LEDGER.labels()
+    missing = {label: n for label, n in printed.items() if rows[label] < n}
+    assert not missing, f"labels printed more often than the ledger has rows: {missing}"
+    assert len(printed) >= 55  # (1)-(52), (17'), (21'), (42')
+
+
+def test_labels_one_to_fifty_two() -> None:
+    rows = LEDGER.labels()
+    assert all(rows[f"({n})"] >= 1 for n in range(1, 53))
+    assert all(rows[f"({n})"] == 2 for n in (18, 19, 20, 21, 22))  # re-used in section II
+
+
+def test_most_rows_are_checked() -> None:
+    assert len(CHECKED) >= 0.8 * len(LEDGER.rows)
+
+
+@pytest.mark.parametrize("row", CHECKED, ids=[r.id for r in CHECKED])
+def test_check_agrees_with_status(row) -> None:  # type: ignore[no-untyped-def]
+    check = run_check(row)
+    assert verify(row, check) is None, verify(row, check)
+    if row.status == "fails":
+        assert check is not None and check.corrected
