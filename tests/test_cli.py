@@ -2,19 +2,27 @@
 
 from __future__ import annotations
 
+import contextlib
+import errno
+import io
 import json
+import os
+import subprocess
+import sys
 
 import pytest
 from cli_helpers import assert_clean_error, invoke
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
+
+from pendcli.cli.main import run
 
 
 def test_help_and_version():
     code, out, _ = invoke("--help")
     assert code == 0 and "reproduce" in out and "charbonnier" in out
-    code, out, _ = invoke("--version")
-    assert code == 0 and out.startswith("pendcli ")
+    assert "--install-completion" in out and "-V, --version" in out
+    for flag in ("--version", "-V"):
+        code, out, _ = invoke(flag)
+        assert code == 0 and out.startswith("pendcli ")
 
 
 def test_charbonnier_table_json_schema():
@@ -99,58 +107,6 @@ def test_bad_input_gives_one_line_and_exit_2(args):
     assert_clean_error(code, err)
 
 
-BAD_VALUES = [
-    "-1",
-    "0",
-    "-0",
-    "nan",
-    "inf",
-    "-inf",
-    "1e400",
-    "abc",
-    "",
-    "3.5",
-    "1e9",
-    "-1e-300",
-    "91°",
-    "30'",
-    "-5deg",
-    "1e9rad",
-    "2x",
-]
-COMMANDS = [
-    ["lecornu", "example", "--speed"],
-    ["lecornu", "example", "--length"],
-    ["lecornu", "example", "--g"],
-    ["lecornu", "zeros", "--order"],
-    ["lecornu", "zeros", "--order", "1", "--count"],
-    ["lecornu", "claims", "--g"],
-    ["tisserand", "example", "--theta0"],
-    ["tisserand", "example", "--theta1"],
-    ["tisserand", "example", "--length"],
-    ["charbonnier", "integral"],
-    ["charbonnier", "table", "--n-max"],
-    ["charbonnier", "integral", "3", "--x"],
-    ["list", "--paper"],
-    ["reproduce", "--paper"],
-    ["charbonnier", "table", "--format"],
-]
-
-
-@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(
-    command=st.sampled_from(COMMANDS),
-    value=st.one_of(st.sampled_from(BAD_VALUES), st.text(max_size=6)),
-    extra=st.lists(st.sampled_from([*BAD_VALUES, "--format", "--x", "json"]), max_size=2),
-)
-def test_fuzz_cli_never_tracebacks(command, value, extra):
-    code, _, err = invoke(*command, value, *extra)
-    assert "Traceback" not in err
-    assert code in (0, 2), err
-    if code == 2:
-        assert_clean_error(code, err)
-
-
 def test_tol_picks_a_measured_method_and_says_which():
     code, out, _ = invoke("lecornu", "zeros", "--tol", "1e-12", "--count", "3", "--format", "json")
     assert code == 0
@@ -161,3 +117,220 @@ def test_tol_picks_a_measured_method_and_says_which():
     code, _, err = invoke("lecornu", "zeros", "--tol", "1e-30")
     assert_clean_error(code, err)
     assert "out of reach" in err
+
+
+# --- issue 13: the command line as a new user meets it -------------------------------------
+
+
+@pytest.mark.parametrize("group", [(), ("lecornu",), ("tisserand",), ("charbonnier",)])
+def test_bare_command_prints_its_help(group):
+    """As typer's no_args_is_help does: the help on stderr, exit 2, nothing on stdout."""
+    code, out, err = invoke(*group)
+    assert code == 2 and out == ""
+    assert err.startswith(f"Usage: pendcli {' '.join(group)}".rstrip()) and "Commands:" in err
+
+
+def test_help_summaries_are_whole_sentences():
+    """click's short help stops at the first period ("... on eq."): pendcli gives the line."""
+    code, out, _ = invoke("lecornu", "--help")
+    assert code == 0
+    assert "solve_ivp on eq. (3), linear" in " ".join(out.split())
+
+
+@pytest.mark.parametrize(
+    ("args", "expected"),
+    [
+        (("lecornu", "claims", "--g", "abc"), "--g: 'abc' is not a number; expected a real"),
+        (("lecornu", "zeros", "--count", "2.5"), "--count: '2.5' is not an integer"),
+        (("charbonnier", "integral", "abc"), "N: 'abc' is not an integer"),
+        (("charbonnier", "table", "-f", "xml"), "-f: 'xml' is not one of"),
+        (("charbonnier", "table", "--format", "xml"), "--format: 'xml' is not one of"),
+        (("lecornu", "example", "--speed", "-1"), "--speed = -1.0 is out of range"),
+        (("lecornu", "ode-check", "--floor", "0.9"), "--floor = 0.9 is out of range"),
+        (("lecornu", "example", "--speed=-1"), "--speed = -1.0 is out of range"),
+    ],
+)
+def test_errors_name_the_option_as_typed(args, expected):
+    code, _, err = invoke(*args)
+    assert_clean_error(code, err)
+    assert err.startswith(f"pendcli: error: {expected}"), err
+    assert "Input should be" not in err and "Value error" not in err
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("lecornu", "zeros", "--tol", "1e-9", "--method", "scipy"),
+        ("charbonnier", "integral", "3", "--method", "quad", "--tol", "1e-9"),
+    ],
+)
+def test_tol_and_method_exclude_each_other(args):
+    code, _, err = invoke(*args)
+    assert_clean_error(code, err)
+    assert "--tol and --method exclude each other" in err
+
+
+def test_quiet_is_accepted_everywhere_and_silences_status():
+    code, _, err = invoke("lecornu", "zeros", "--count", "2")
+    assert code == 0 and "method:" in err
+    code, _, err = invoke("lecornu", "zeros", "--count", "2", "--quiet")
+    assert code == 0 and err == ""
+    assert invoke("list", "-q", "-p", "lecornu")[0] == 0
+    for command in (
+        ("list",),
+        ("reproduce",),
+        ("check",),
+        ("formulas",),
+        ("tradeoff",),
+        ("charbonnier", "integral"),
+        ("tisserand", "series"),
+        ("lecornu", "ode-check"),
+    ):
+        code, out, _ = invoke(*command, "--help")
+        assert code == 0 and "--quiet" in out, command
+
+
+def test_plot_refuses_a_missing_folder_and_creates_none(tmp_path):
+    target = tmp_path / "missing" / "dir" / "f.png"
+    code, _, err = invoke("charbonnier", "table", "--plot", str(target))
+    assert_clean_error(code, err)
+    assert f"--plot: folder {target.parent} does not exist" in err
+    assert not (tmp_path / "missing").exists()
+
+
+def test_formulas_plot_refuses_a_file_name(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    code, _, err = invoke("formulas", "-p", "charbonnier", "--plot", "x.png")
+    assert_clean_error(code, err)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_shell_completion_sees_lazy_commands():
+    env = {
+        **os.environ,
+        "_PENDCLI_COMPLETE": "complete_bash",
+        "COMP_WORDS": "pendcli lecornu ze",
+        "COMP_CWORD": "2",
+    }
+    proc = subprocess.run(PENDCLI, env=env, capture_output=True, text=True, check=False)
+    assert proc.returncode == 0 and set(proc.stdout.split()) == {"zeros", "zero-length"}
+    env |= {"COMP_WORDS": "pendcli ", "COMP_CWORD": "1"}
+    proc = subprocess.run(PENDCLI, env=env, capture_output=True, text=True, check=False)
+    assert {"reproduce", "lecornu", "tradeoff"} <= set(proc.stdout.split())
+    proc = subprocess.run([*PENDCLI, "--show-completion", "bash"], capture_output=True, text=True)
+    assert proc.returncode == 0 and "_PENDCLI_COMPLETE=complete_bash" in proc.stdout
+
+
+# --- issue 15: every OS error one line naming the path, exit 2; any locale -----------------
+
+PENDCLI = [sys.executable, "-c", "from pendcli.cli.main import run; run()"]
+
+
+def _pendcli(*args, **kwargs):
+    return subprocess.run([*PENDCLI, *args], capture_output=True, text=True, check=False, **kwargs)
+
+
+def _one_line(proc, expected: str) -> None:
+    assert proc.returncode == 2, proc.stderr
+    assert proc.stderr == f"pendcli: error: {expected}\n", proc.stderr
+
+
+@pytest.mark.parametrize("args", [("list",), ("--help",), ("-V",), ("list", "-f", "json")])
+def test_full_disk_on_stdout(args):
+    with open("/dev/full", "w") as full:
+        proc = subprocess.run(
+            [*PENDCLI, *args], stdout=full, stderr=subprocess.PIPE, text=True, check=False
+        )
+    _one_line(proc, "cannot write standard output: No space left on device")
+
+
+def test_closed_stdout():
+    proc = subprocess.run(
+        [*PENDCLI, "list"],
+        stderr=subprocess.PIPE,
+        text=True,
+        check=False,
+        close_fds=False,
+        preexec_fn=lambda: os.close(1),
+    )
+    _one_line(proc, "cannot write standard output: it is closed")
+
+
+def test_broken_pipe_is_one_line_without_exception_ignored():
+    read, write = os.pipe()
+    os.close(read)  # nobody will read: the first write fails with EPIPE
+    proc = subprocess.run(
+        [*PENDCLI, "list", "-f", "json"], stdout=write, stderr=subprocess.PIPE, text=True
+    )
+    os.close(write)
+    _one_line(proc, "cannot write standard output: Broken pipe")
+
+
+def test_file_size_limit_names_the_plot_and_leaves_no_file(tmp_path):
+    import resource
+
+    target = tmp_path / "f.png"
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (2048, 2048))
+
+    proc = _pendcli("charbonnier", "table", "--plot", str(target), "-f", "json", preexec_fn=limit)
+    _one_line(proc, f"cannot write {target}: File too large")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_os_error_in_a_command_names_the_file(tmp_path, monkeypatch):
+    """An OSError escaping a command (here a plot into /dev/full/...) is one line, exit 2."""
+    code, _, err = invoke("charbonnier", "table", "--plot", "/dev/full/x.png")
+    assert_clean_error(code, err)
+    assert "/dev/full" in err
+
+
+ASCII = {**os.environ, "LC_ALL": "C", "PYTHONIOENCODING": "ascii"}
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("list",),
+        ("list", "-f", "markdown"),
+        ("list", "-f", "csv"),
+        ("tisserand", "claims"),
+        ("reproduce", "-p", "tisserand", "--no-formulas"),
+        ("lecornu", "claims", "--g", "abc"),
+    ],
+)
+def test_ascii_only_locale(args):
+    proc = _pendcli(*args, env=ASCII)
+    assert proc.returncode in (0, 2), proc.stderr
+    assert "Traceback" not in proc.stderr and "internal error" not in proc.stderr
+    proc.stdout.encode("ascii")  # nothing but ASCII reached the stream
+
+
+def test_ascii_only_json_is_the_same_document():
+    """The escapes are JSON's own (\\uXXXX): the document parses to the UTF-8 one."""
+    plain = _pendcli("list", "-f", "json")
+    ascii_only = _pendcli("list", "-f", "json", env=ASCII)
+    assert ascii_only.returncode == 0
+    assert json.loads(ascii_only.stdout) == json.loads(plain.stdout)
+    assert "\\u03b8" in ascii_only.stdout  # θ
+
+
+def test_stdout_write_failure_in_process(monkeypatch):
+    """The same path in-process: a stdout that fails like a full disk."""
+
+    class Full(io.StringIO):
+        def write(self, text):
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(sys, "argv", ["pendcli", "list"])
+    err = io.StringIO()
+    with (
+        contextlib.redirect_stdout(Full()),
+        contextlib.redirect_stderr(err),
+        pytest.raises(SystemExit) as exit_info,
+    ):
+        run()
+    assert exit_info.value.code == 2
+    full_disk = "cannot write standard output: No space left on device"
+    assert err.getvalue() == f"pendcli: error: {full_disk}\n"

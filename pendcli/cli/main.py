@@ -318,7 +318,9 @@ def _invoke(args: list[str]) -> int:
     from pendcli.core.files import describe_os_error
 
     try:
-        code = app(args=args, standalone_mode=False)
+        # prog_name fixed: the usage line and the completion variable (_PENDCLI_COMPLETE)
+        # must not depend on how Python was started (`python -m pendcli`, a test runner).
+        code = app(args=args, prog_name="pendcli", standalone_mode=False)
     except PendcliError as exc:
         return _fail(options_as_typed(str(exc), args), 2)
     except typer.TyperException as exc:  # click's usage errors: rephrased, one line
