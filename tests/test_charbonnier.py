@@ -330,6 +330,24 @@ def test_table_rows_linear_form_against_wallis_at_large_n():
         assert r["recurrence_float"] == model.integral_recurrence(n, math.pi)
 
 
+@pytest.mark.parametrize("wrong", ["numerator", "twos", "parity"])
+def test_table_column_says_no_when_the_closed_form_differs(monkeypatch, wrong):
+    """The cross-multiplied comparison can fail: one altered row of the products shows NO."""
+    real = model.printed_closed_form_sequence
+
+    def altered(n_max):
+        for n, num, den, p in real(n_max):
+            if n == 40:
+                num, p = {"numerator": (num + 2, p), "twos": (2 * num, p), "parity": (num, 1)}[
+                    wrong
+                ]
+            yield n, num, den, p
+
+    monkeypatch.setattr(explore, "printed_closed_form_sequence", altered)
+    flags = {r["n"]: r["closed_form_matches_recurrence"] for r in explore.table_rows(60)}
+    assert [n for n, ok in flags.items() if not ok] == [40]
+
+
 @pytest.mark.parametrize("n_max", [-2, 10_001, True, 2.0])
 def test_table_rows_refuses_bad_n_max(n_max):
     with pytest.raises(PendcliError, match="--n-max") as err:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from typing import Any
 
 from pendcli.core.errors import PendcliError
@@ -47,14 +48,29 @@ def table_rows(n_max: int = 5) -> list[dict[str, Any]]:
                 "n": n,
                 "published": entry.published if entry else "",
                 "exact": exact_text(q, p),
-                # equal as numbers: cross-multiplied, the products are never reduced
-                "closed_form_matches_recurrence": closed_p == p
-                and q.numerator * den == num * q.denominator,
+                "closed_form_matches_recurrence": closed_p == p and _same_ratio(num, den, q),
                 "recurrence_float": recurrence[n + 1],
                 "beta": beta[n + 1],
             }
         )
     return rows
+
+
+def _odd_part(k: int) -> tuple[int, int]:
+    """(k without its factors 2, how many there were), k > 0."""
+    twos = (k & -k).bit_length() - 1
+    return k >> twos, twos
+
+
+def _same_ratio(num: int, den: int, q: Fraction) -> bool:
+    """num/den == q exactly, the unreduced products never divided: num·q.den == den·q.num.
+
+    Powers of two compared apart: one side's odd part is then 1 (Wallis' rationals have a
+    power of two above or below), which halves the big multiplications of a long table.
+    """
+    (a, i), (b, j) = _odd_part(num), _odd_part(q.denominator)
+    (c, k), (d, m) = _odd_part(den), _odd_part(q.numerator)
+    return i + j == k + m and a * b == c * d
 
 
 def integral_row(

@@ -14,7 +14,11 @@
 * :func:`integral_fast`: the same in double precision with scipy's betainc plus a first-order
   correction for the rounding of sin²x (~10 µs; scipy's own betainc error remains).
 * :func:`integral_recurrence`: the printed recurrence in floating point, as Charbonnier
-  would compute it. Exact at x = π; at small x it subtracts nearly equal numbers.
+  would compute it. Exact at x = π; at small x it subtracts nearly equal numbers
+  (:func:`integral_recurrence_with_error` carries a bound on the damage).
+* :func:`integral_pi_sequence`, :func:`printed_closed_form_sequence`,
+  :func:`integral_recurrence_sequence`: the same for n = -1..N in one pass, one step per n
+  (what ``charbonnier table`` shows; restarting each row from n = 0 cost O(N²)).
 
 No value of g or unit enters: these are pure numbers.
 """
@@ -38,8 +42,10 @@ from pendcli.papers.charbonnier.wallis import (
 
 __all__ = [
     "EXACT_BELOW",
+    "MAX_EXACT_N",
     "MAX_N",
     "MAX_X",
+    "RECURRENCE_MAX_N",
     "bernoulli",
     "exact_text",
     "integral",
@@ -49,9 +55,14 @@ __all__ = [
     "integral_pi_array",
     "integral_pi_exact",
     "integral_pi_rational",
+    "integral_pi_sequence",
     "integral_recurrence",
+    "integral_recurrence_sequence",
+    "integral_recurrence_with_error",
     "log_gamma_ratio_coefficients",
+    "log_gamma_ratio_fractions",
     "printed_closed_form",
+    "printed_closed_form_sequence",
 ]
 
 RECURRENCE_MAX_N = 10**7  # n/2 Python steps: about a second at the limit

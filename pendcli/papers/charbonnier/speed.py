@@ -7,8 +7,12 @@ at 40 digits.  The methods measured are pendcli's own (:mod:`pendcli.papers.char
 and the textbook ones a reader might try instead (the printed products as floats, scipy's
 beta and gammaln, the naive betainc call, adaptive quadrature).
 
-:func:`integral_with_choice` is what ``pendcli charbonnier integral --tol/--method`` runs: the
-cheapest method the published table ``tables/tradeoff/integral_{pi,x}.csv`` says meets ``tol``.
+:func:`integral_with_choice_checked` is what ``pendcli charbonnier integral --tol/--method``
+runs: the cheapest method the published table ``tables/tradeoff/integral_{pi,x}.csv`` says
+meets ``tol``, or the forced one.  A forced method is refused outside its measured domain
+(the products beyond their overflow, quadrature beyond :data:`QUAD_MAX_N`) and carries a
+warning where its estimated error exceeds :data:`WARN_ABOVE` (the recurrence's running
+rounding-error bound, gammaln's cancellation, the asymptotic series' first omitted term).
 """
 
 from __future__ import annotations
