@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import tomllib
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -110,8 +111,11 @@ class PaperTable:
                 return c
         raise missing_claim(self.where, claim_id, needed_for)
 
-    def claim_ids(self) -> tuple[str, ...]:
-        return tuple(c.id for c in self.claims)
+    def claims_by_id(
+        self, claim_ids: Iterable[str], needed_for: str = ""
+    ) -> dict[str, PublishedValue]:
+        """The entries ``claim_ids``, by id; a missing one is a :func:`missing_claim` error."""
+        return {cid: self.claim(cid, needed_for) for cid in claim_ids}
 
 
 def missing_claim(where: str, claim_id: str, needed_for: str = "") -> PendcliError:

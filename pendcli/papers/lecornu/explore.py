@@ -297,7 +297,7 @@ def g_sensitivity(gs: tuple[float, ...] | None = None) -> list[Row]:
     from pendcli.core.verdict import judge
 
     gs = g_grid() if gs is None else gs
-    table = {c.id: c for c in load_paper_table("lecornu").claims}
+    table = load_paper_table("lecornu").claims_by_id(g_dependent_ids(), "lecornu g-sensitivity")
     per_g = {g: g_values(g) for g in gs}
     g0, h = constant("g"), 1e-4
     up, down = g_values(g0 + h), g_values(g0 - h)
@@ -336,8 +336,8 @@ def best_g(lo: float = 9.70, hi: float = 9.90, step: float = 0.0005) -> dict[str
     """
     from pendcli.core.tables import load_paper_table
 
-    table = {c.id: c for c in load_paper_table("lecornu").claims}
     ids = g_dependent_ids()
+    table = load_paper_table("lecornu").claims_by_id(ids, "the best-fitting g")
     gs = np.round(np.arange(lo, hi + step / 2, step), 6)
     results = [_score_and_agreeing(float(g), table, ids) for g in gs]
     scores = np.array([r[0] for r in results])
