@@ -27,7 +27,16 @@ sys.stderr.write("LOADED=" + ",".join(loaded) + "\\n")
 
 @pytest.mark.parametrize(
     "args",
-    [["--help"], ["list"], ["tradeoff", "--help"], ["charbonnier", "integral", "--help"]],
+    [
+        ["--help"],
+        ["-V"],
+        ["list"],
+        ["lecornu"],  # a bare group prints its help
+        ["lecornu", "--help"],
+        ["tradeoff", "--help"],
+        ["charbonnier", "integral", "--help"],
+        ["--show-completion", "bash"],
+    ],
     ids=lambda a: " ".join(a),
 )
 def test_light_commands_do_not_import_scipy_or_matplotlib(args):
