@@ -576,7 +576,9 @@ def test_figures_written(tmp_path):
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert _ink(path) > 0.02 and _ink(errors) > 0.02  # curves drawn, not a blank canvas
     assert _ink(path, (0.839, 0.153, 0.157)) > 1e-3  # the series path, tab:red
-    assert _ink(path, (0.122, 0.467, 0.706)) > 1e-3  # the exact path, tab:blue
+    # the exact path, tab:blue, mostly under the red dashes and now on the upper panel only
+    assert _ink(path, (0.122, 0.467, 0.706)) > 5e-4
+    assert _ink(path, (0.580, 0.404, 0.741)) > 1e-4  # the distance curve, tab:purple
 
 
 def test_example_rows_published_only_for_the_example():
