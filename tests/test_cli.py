@@ -334,3 +334,28 @@ def test_stdout_write_failure_in_process(monkeypatch):
     assert exit_info.value.code == 2
     full_disk = "cannot write standard output: No space left on device"
     assert err.getvalue() == f"pendcli: error: {full_disk}\n"
+
+
+def test_file_size_limit_during_out_names_the_final_path(tmp_path):
+    """`--out` is built in a temporary folder: the error names the file under DIR, leaves none."""
+    import resource
+
+    out = tmp_path / "out"
+
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
+
+    proc = _pendcli(
+        "reproduce",
+        "-p",
+        "charbonnier",
+        "--no-formulas",
+        "--out",
+        str(out),
+        "-q",
+        preexec_fn=limit,
+    )
+    assert proc.returncode == 2, proc.stderr
+    assert proc.stderr.startswith(f"pendcli: error: cannot write {out}"), proc.stderr
+    assert proc.stderr.endswith(": File too large\n") and ".new-" not in proc.stderr
+    assert list(tmp_path.iterdir()) == []

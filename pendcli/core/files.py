@@ -145,13 +145,22 @@ def replace_directory(target: Path | str, fill: Callable[[Path], object]) -> Pat
         _fsync_dir(parent)
     except OSError as exc:
         shutil.rmtree(new, ignore_errors=True)
-        raise PendcliError(describe_os_error(exc, target)) from None
+        where = _as_target(str(exc.filename), new, target) if exc.filename else target
+        raise PendcliError(describe_os_error(exc, where)) from None
+    except PendcliError as exc:
+        shutil.rmtree(new, ignore_errors=True)
+        raise PendcliError(_as_target(str(exc), new, target)) from None
     except BaseException:
         shutil.rmtree(new, ignore_errors=True)
         raise
     if old is not None:
         shutil.rmtree(old, ignore_errors=True)
     return target
+
+
+def _as_target(text: str, new: Path, target: Path) -> str:
+    """A message about a file of the temporary folder, naming it where the user will look."""
+    return text.replace(str(new), str(target))
 
 
 def remove_stale(parent: Path | str, name: str) -> None:
