@@ -338,13 +338,6 @@ KNOWN_CRASHES = [
         ),
         id="tisserand-example-tiny-equal-angles",
     ),
-    pytest.param(
-        ("charbonnier", "integral", "-1", "--x", "inf", "--method", "recurrence"),
-        marks=pytest.mark.xfail(
-            strict=True, reason="--method path skips the |x| <= 1e6 check: math.cos(inf)"
-        ),
-        id="charbonnier-integral-method-x-inf",
-    ),
 ]
 
 

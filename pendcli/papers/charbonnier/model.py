@@ -47,6 +47,7 @@ __all__ = [
     "MAX_X",
     "RECURRENCE_MAX_N",
     "bernoulli",
+    "check_inputs",
     "exact_text",
     "integral",
     "integral_fast",
@@ -72,6 +73,11 @@ EXACT_BELOW = SERIES_FROM  # n below which integral_pi rounds the exact Wallis r
 _PI_LOW = math.sin(math.pi)  # π - math.pi: the part of π a double cannot hold (~1.22e-16)
 _MP_DIGITS = 40  # working digits of the general-x path; measured < 0.5 ulp for n <= 10^4
 _LOG_TINY = -1075 * math.log(2.0)  # log of half the smallest subnormal: below it, 0
+
+
+def check_inputs(n: int, x: float) -> tuple[int, float]:
+    """(n, float(x)) if -1 <= n <= MAX_N is an integer and x is real with |x| <= MAX_X."""
+    return _check_n(n), _check_x(x)
 
 
 def _check_n(n: int) -> int:

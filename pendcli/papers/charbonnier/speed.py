@@ -297,6 +297,7 @@ def integral_by_method_checked(
     """(I_n(x), a warning or None) by a named method, refused outside its measured domain."""
     from pendcli.papers.charbonnier import model
 
+    n, x = model.check_inputs(n, x)  # what the default method accepts, every method accepts
     _refuse_outside_domain(n, x, method)
     opts = dict(kv.split("=", 1) for kv in setting.split(",") if "=" in kv)
     if method in ("recurrence", "gammaln", "asymptotic"):
