@@ -187,3 +187,19 @@ def test_cli_streams_zeros_exactly_in_the_json_layout():
     table = CliRunner().invoke(app, ["zeros", "--count", "6000"]).stdout.splitlines()
     assert table[:2] == ["Zeros of J_2 (auto)", "   k                   j"]  # plain text, aligned
     assert table[-1] == f"6000  {float(bessel_zeros(2, 6000)[-1])!r:>18}"
+
+
+def test_mpmath_method_refuses_counts_that_would_run_for_minutes():
+    # 20,000 mpmath zeros took 73 s here: refused at once with the valid range, exit 2.
+    import time
+
+    from cli_helpers import assert_clean_error, invoke
+
+    from pendcli.numerics.besselzeros import MPMATH_MAX_COUNT
+
+    start = time.perf_counter()
+    count = str(MPMATH_MAX_COUNT + 1)
+    code, _out, err = invoke("lecornu", "zeros", "--method", "mpmath", "--count", count)
+    assert time.perf_counter() - start < 5
+    assert_clean_error(code, err)
+    assert f"count <= {MPMATH_MAX_COUNT}" in err
