@@ -18,8 +18,9 @@ $(STAMP): pyproject.toml
 reproduce: $(STAMP)
 	$(BIN)/pendcli reproduce --out $(OUT) --format json > /dev/null
 
+# Two workers (this project's machines have 2 cores); tests use tmp_path, never shared paths.
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n 2 --dist worksteal
 
 check: $(STAMP)
 	$(BIN)/pendcli check

@@ -1,8 +1,13 @@
 """Write the reproduction report: ``out/report.md`` plus its tables and figures.
 
 Everything written here is byte-identical run to run on the same machine (no timestamps,
-fixed plot metadata), except the work-precision diagrams under ``out/tradeoff/``, which
-are timings and vary by nature; the report says so where it links them.
+fixed plot metadata): the work-precision tables under ``out/tradeoff/`` are copies of the
+committed ``tables/tradeoff/*.csv`` (measured by ``make bench``, on the date the report names)
+unless ``--measure`` times them now, which the report then says.
+
+The folder is built beside ``out`` and swapped in whole (:func:`pendcli.core.files.
+replace_directory`); the figures are drawn in two forked processes where two cores exist
+(``PENDCLI_JOBS=1`` draws them here), the costliest first.
 """
 
 from __future__ import annotations

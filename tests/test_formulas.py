@@ -243,7 +243,7 @@ def test_draw_study_shows_the_residuals_and_the_claimed_slope():
         # claimed slope 3 through the smallest parameter's residual: 6e-6 · (p/0.0125)³
         expected = [6e-6 * (p / 0.0125) ** 3 for p, _ in residuals]
         np.testing.assert_allclose(slope.get_ydata(), expected, rtol=1e-14)
-        assert ax.get_title() == "eq1 (1)\nfails, observed 2.71"
+        assert ax.get_title() == "eq1 (1)\nfails, observed 2.71 (claimed 3: dashed)"
         assert ax.get_xscale() == ax.get_yscale() == "log"
     finally:
         plt.close(fig)
