@@ -53,8 +53,10 @@ CLAIM_COLUMNS = (
     "abs_diff",
     "rel_diff",
     "verdict",
+    "cause",
+    "from",
 )
-FORMULA_COLUMNS = ("id", "source", "claimed_order", "observed_order", "verdict")
+FORMULA_COLUMNS = ("id", "source", "claimed_order", "observed_order", "verdict", "cause", "from")
 
 # column -> (kind, tolerance). "rel": |now - then| <= tol * max(|then|, tiny);
 # "abs": |now - then| <= tol; "same": must be identical text.
@@ -63,6 +65,8 @@ TOLERANCES: dict[str, tuple[str, float]] = {
     "unit": ("same", 0.0),
     "source": ("same", 0.0),
     "verdict": ("same", 0.0),
+    "cause": ("same", 0.0),  # why a row disagrees, and the rows it inherits from
+    "from": ("same", 0.0),
     "recomputed": ("rel", 1e-9),  # closed forms, special functions: last-bit noise only
     "exact": ("rel", 1e-7),  # fuller models (quadrature, ODE at tight tolerance)
     "abs_diff": ("abs", 1e-9),
@@ -83,12 +87,20 @@ class Drift:
     difference: str
 
 
+def _cells(row: dict[str, object], columns: tuple[str, ...]) -> dict[str, object]:
+    """A row's cells for the CSV: ``from`` (a list of ids) as one space-separated cell."""
+    cells = {k: row[k] for k in columns}
+    cells["from"] = " ".join(str(i) for i in row["from"])  # type: ignore[attr-defined]
+    cells["cause"] = row["cause"] or ""
+    return cells
+
+
 def _claim_rows(result: ReproduceResult, key: str) -> list[dict[str, object]]:
-    return [{k: r.as_dict()[k] for k in CLAIM_COLUMNS} for r in result.claims.get(key, [])]
+    return [_cells(r.as_dict(), CLAIM_COLUMNS) for r in result.claims.get(key, [])]
 
 
 def _formula_rows(result: ReproduceResult, key: str) -> list[dict[str, object]]:
-    return [{k: r.as_dict()[k] for k in FORMULA_COLUMNS} for r in result.formulas.get(key, [])]
+    return [_cells(r.as_dict(), FORMULA_COLUMNS) for r in result.formulas.get(key, [])]
 
 
 def regenerated_tables(result: ReproduceResult) -> dict[str, str]:
@@ -128,6 +140,10 @@ def read_table(text: str, where: str, columns: tuple[str, ...] | None = None) ->
                 rows[row["id"]] = row
     except csv.Error as exc:
         raise PendcliError(f"{where}: line {reader.line_num}: malformed CSV ({exc})") from None
+    if not text.endswith("\n"):  # pendcli ends every table with one: a cut file may still parse
+        raise PendcliError(
+            f"{where}: line {reader.line_num} ends without a newline; the table was cut short"
+        )
     return header, rows
 
 
