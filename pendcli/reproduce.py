@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
+from typing import Any
 
 from pendcli.core.claims import FORMULA_VERDICTS, ClaimRow, FormulaRow, evaluate_paper
 from pendcli.core.verdict import CLAIM_VERDICTS
@@ -83,36 +86,142 @@ class ReproduceResult:
 
 
 def reproduce_all(
-    keys: tuple[str, ...], formulas: bool = True, quiet: bool = True, stability: bool = False
+    keys: tuple[str, ...],
+    formulas: bool = True,
+    quiet: bool = True,
+    stability: bool = False,
+    jobs: int | None = None,
 ) -> ReproduceResult:
     """Evaluate the claims (and, if asked, the formula checks and the stability measurements).
 
-    A progress bar on stderr shows the step running, only on a terminal and when not ``quiet``.
+    With two cores the steps are split into two lanes of about equal cost, one run in a forked
+    process (``jobs=1`` or ``PENDCLI_JOBS=1``: all here). A progress bar on stderr shows the
+    step running, only on a terminal and when not ``quiet``.
     """
+    steps = [(k, "claims") for k in keys] + ([(k, "formulas") for k in keys] if formulas else [])
+    if stability:
+        steps.append(("all", "stability"))
+    here, there = _lanes(steps, _jobs(jobs))
+    result = ReproduceResult(papers=keys)
+    with _Lane(there, keys) as other, _progress(quiet, len(steps)) as advance:
+        for key, what in here:
+            advance(f"{key}: {what}", 0)
+            _store(result, key, what, _run_step(key, what, keys))
+            advance(f"{key}: {what}", 1)
+        for key, what, value in other.results():
+            _store(result, key, what, value)
+            advance(f"{key}: {what}", 1)
+    return result
+
+
+@contextmanager
+def _progress(quiet: bool, total: int) -> Iterator[Callable[[str, int], None]]:
+    """A progress bar on stderr, only on a terminal and when not quiet (rich loads only then)."""
+    if quiet or not sys.stderr.isatty():
+        yield lambda _description, _steps: None
+        return
     from rich.progress import Progress
 
     from pendcli.core.console import console
 
-    steps = [(k, "claims") for k in keys] + ([(k, "formulas") for k in keys] if formulas else [])
-    if stability:
-        steps.append(("all", "stability"))
-    result = ReproduceResult(papers=keys)
-    hidden = quiet or not sys.stderr.isatty()
-    with Progress(console=console(stderr=True), transient=True, disable=hidden) as progress:
-        task = progress.add_task("reproducing", total=len(steps))
-        for key, what in steps:
-            progress.update(task, description=f"{key}: {what}")
-            _run_step(result, key, what)
-            progress.advance(task)
-    return result
+    with Progress(console=console(stderr=True), transient=True) as progress:
+        task = progress.add_task("reproducing", total=total)
+        yield lambda description, steps: progress.update(
+            task, description=description, advance=steps
+        )
 
 
-def _run_step(result: ReproduceResult, key: str, what: str) -> None:
+Step = tuple[str, str]
+# Measured cost of a step (hundredths of a second, one core): enough to balance two lanes.
+_COST = {
+    ("lecornu", "claims"): 5,
+    ("lecornu", "formulas"): 10,
+    ("charbonnier", "formulas"): 7,
+    ("all", "stability"): 70,
+}
+
+
+def _jobs(jobs: int | None) -> int:
+    import multiprocessing
+    import os
+
+    if "fork" not in multiprocessing.get_all_start_methods():
+        return 1
+    if jobs is None:
+        env = os.environ.get("PENDCLI_JOBS", "")
+        jobs = int(env) if env.isdigit() else min(2, os.cpu_count() or 1)
+    return max(1, jobs)
+
+
+def _lanes(steps: list[Step], jobs: int) -> tuple[list[Step], list[Step]]:
+    """(steps run here, steps run in the other process): the costliest first, greedily."""
+    if jobs < 2 or len(steps) < 2:
+        return steps, []
+    here: list[Step] = []
+    there: list[Step] = []
+    for step in sorted(steps, key=lambda s: -_COST.get(s, 1)):
+        cost_here = sum(_COST.get(s, 1) for s in here)
+        (there if cost_here > sum(_COST.get(s, 1) for s in there) else here).append(step)
+    order = {s: i for i, s in enumerate(steps)}
+    return sorted(here, key=order.__getitem__), sorted(there, key=order.__getitem__)
+
+
+class _Lane:
+    """Steps run in one forked process while this one runs its own."""
+
+    def __init__(self, steps: list[Step], papers: tuple[str, ...]) -> None:
+        self.steps = steps
+        self.papers = papers
+        self.pool: Any = None
+        self.future: Any = None
+
+    def __enter__(self) -> _Lane:
+        if self.steps:
+            import multiprocessing
+            from concurrent.futures import ProcessPoolExecutor
+
+            for key, _ in self.steps:  # imported once, here, rather than in both processes
+                _paper_modules(key)
+            self.pool = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"))
+            self.future = self.pool.submit(_run_lane, self.steps, self.papers)
+        return self
+
+    def results(self) -> list[tuple[str, str, Any]]:
+        return self.future.result() if self.future is not None else []
+
+    def __exit__(self, *exc: object) -> None:
+        if self.pool is not None:
+            self.pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _paper_modules(key: str) -> None:
+    import importlib
+    import importlib.util
+
+    for part in ("claims", "formulas"):
+        name = f"pendcli.papers.{key}.{part}"
+        if key != "all" and importlib.util.find_spec(name) is not None:
+            importlib.import_module(name)
+
+
+def _run_lane(steps: list[Step], papers: tuple[str, ...]) -> list[tuple[str, str, Any]]:
+    return [(key, what, _run_step(key, what, papers)) for key, what in steps]
+
+
+def _run_step(key: str, what: str, papers: tuple[str, ...]) -> Any:
     if what == "claims":
-        result.claims[key] = evaluate_paper(key)
-    elif what == "formulas":
-        result.formulas[key] = formula_checks(key)
-    else:
-        from pendcli.stability import stability_rows
+        return evaluate_paper(key)
+    if what == "formulas":
+        return formula_checks(key)
+    from pendcli.stability import stability_rows
 
-        result.stability = stability_rows(result.papers)
+    return stability_rows(papers)
+
+
+def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
+    if what == "claims":
+        result.claims[key] = value
+    elif what == "formulas":
+        result.formulas[key] = value
+    else:
+        result.stability = value
