@@ -328,19 +328,17 @@ def test_parser_level_garbage(command: list[str], value: str, extra: list[str]) 
         assert "Input should be" not in err, err  # pydantic's words, rephrased by cli.main
 
 
-# Found by PENDCLI_FUZZ_SCALE=8 runs; each in a module this test file does not own. Strict: once
-# fixed, the xfail fails and the mark goes.
-KNOWN_CRASHES = [
-    pytest.param(
-        ("tisserand", "example", "--theta0", "1e-217°", "--theta1", "1e-217°"),
-        marks=pytest.mark.xfail(
-            strict=True, reason="numerics/spherical.py _elliptic: w0 underflows to 0, 1/0"
-        ),
-        id="tisserand-example-tiny-equal-angles",
-    ),
+# Found by PENDCLI_FUZZ_SCALE=8 runs, then fixed: each must stay a clean one-line outcome.
+FOUND_CRASHES = [
+    # numerics/spherical.py: w0 = sin²θ0/(1 + cos θ0) underflowed to 0 in the elliptic form
+    ("tisserand", "example", "--theta0", "1e-217°", "--theta1", "1e-217°"),
+    ("tisserand", "example", "--theta0", "6.859842724385233e-217°", "--length", "1e-06"),
+    # charbonnier: math.cos(inf) on the recurrence path
+    ("charbonnier", "integral", "-1", "--x", "inf", "--method", "recurrence"),
 ]
 
 
-@pytest.mark.parametrize("args", KNOWN_CRASHES)
-def test_known_crashes(args: tuple[str, ...]) -> None:
-    well_behaved(*args)
+@pytest.mark.parametrize("args", FOUND_CRASHES)
+def test_found_crashes_stay_fixed(args: tuple[str, ...]) -> None:
+    code, _, err = well_behaved(*args)
+    assert code == 2 and ("out of range" in err or "not finite" in err), err

@@ -121,7 +121,7 @@ def test_too_close_to_horizontal_is_refused():
         exact_conical(math.radians(89.9999), math.radians(30))
     with pytest.raises(PendcliError, match=r"theta0 <= 89\.99°"):
         exact_conical(math.radians(89.995), math.radians(30), method="ode")
-    with pytest.raises(PendcliError, match="0 < theta0 < 90°"):
+    with pytest.raises(PendcliError, match="<= theta0 < 90°"):
         exact_conical(math.pi / 2, 0.3)
 
 

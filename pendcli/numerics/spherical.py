@@ -107,18 +107,23 @@ class ConicalMotion:
         return self.precession * self.k1
 
 
+# Below this θ0 (radians) sin²θ0 heads for the subnormal range and the elliptic form divides
+# by zero (found by the fuzz test at 1e-217°); no pendulum question lives down there.
+THETA0_MIN = 1e-100
+
+
 def check_amplitudes(theta0: float, theta1: float) -> tuple[float, float]:
-    """Validate θ0, θ1 in radians: 0 < θ0 < π/2 and 0 <= θ1 <= θ0 (one-line errors)."""
+    """Validate θ0, θ1 in radians: 1e-100 <= θ0 < π/2 and 0 <= θ1 <= θ0 (one-line errors)."""
     for name, value in (("theta0", theta0), ("theta1", theta1)):
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise PendcliError(f"{name} must be a real angle in radians, got {value!r}")
         if not math.isfinite(value):
             raise PendcliError(f"{name} = {value} is not finite; valid range is 0 < theta0 < 90°")
     theta0, theta1 = float(theta0), float(theta1)
-    if not 0.0 < theta0 < 0.5 * math.pi:
+    if not THETA0_MIN <= theta0 < 0.5 * math.pi:
         raise PendcliError(
             f"theta0 = {math.degrees(theta0):.10g}° is out of range; "
-            "valid range is 0 < theta0 < 90°"
+            f"valid range is {math.degrees(THETA0_MIN):.2g}° ({THETA0_MIN:g} rad) <= theta0 < 90°"
         )
     if not 0.0 <= theta1 <= theta0:
         raise PendcliError(
