@@ -382,7 +382,7 @@ def test_parse_length_errors(value, message):
 @pytest.mark.parametrize(
     ("theta0", "theta1", "message"),
     [
-        ("90deg", "10deg", "<= theta0 < 90"),
+        ("90deg", "10deg", "theta0 < 90"),
         ("0deg", "0deg", "0 < theta0"),
         ("10deg", "11deg", "theta1"),
     ],
