@@ -451,8 +451,16 @@ def run(
     }
     peers = peer_ratios(quick)
     sized = growth_rows(quick) if growth else []
-    measured = regenerate_tables(quick=quick, root=root) if tables else {}
+    measured = regenerate_tables(quick=quick, root=root) if tables else committed_tables(root)
     return section(times, costs, measured, runs, peers, sized)
+
+
+def committed_tables(root: Path | None = None) -> dict[str, list[Point]]:
+    """The work-precision tables as committed (``--no-tables``: choices from them, unchanged)."""
+    from pendcli import tradeoff
+
+    paths = {name: tradeoff.table_path(name, root) for name in tradeoff.family_names()}
+    return {name: tradeoff.read_table(path) for name, path in paths.items() if path.is_file()}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -461,7 +469,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--runs", type=int, default=7, help="runs per command (median)")
     parser.add_argument("--quick", action="store_true", help="tiny configuration (smoke test)")
     parser.add_argument(
-        "--no-tables", action="store_true", help="do not regenerate tables/tradeoff"
+        "--no-tables",
+        action="store_true",
+        help="keep tables/tradeoff as committed (the README's choices are read from them)",
     )
     parser.add_argument("--tables-root", type=Path, help="tables folder (default: the package's)")
     parser.add_argument("--no-growth", action="store_true", help="skip the cost-growth table")
