@@ -173,3 +173,12 @@ def test_report_of_one_paper_times_only_its_families_from_the_committed_tables(t
     text = (out / "report.md").read_text(encoding="utf-8")
     assert "committed tables" in text and "by `make bench`" in text
     assert not (out / "figures" / "lecornu").exists()
+
+
+def test_the_two_lanes_give_what_one_process_gives():
+    from pendcli.reproduce import reproduce_all
+
+    keys = ("tisserand", "charbonnier")
+    forked, alone = reproduce_all(keys, jobs=2), reproduce_all(keys, jobs=1)
+    assert forked.document() == alone.document() and forked.papers == keys
+    assert set(forked.claims) == set(forked.formulas) == set(keys)
