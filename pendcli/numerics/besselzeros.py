@@ -24,9 +24,9 @@ the zeros for any index up to :data:`MAX_COUNT`, with the method named:
     log10(I_ν/|J_ν'|) digits; the method refuses zeros whose predicted error exceeds
     :data:`SERIES_MAX_ERROR` (see :func:`series_error_bound`).
 ``"auto"``
-    the first :data:`AUTO_SWITCH` - 1 zeros from mpmath (computed once per order and
-    cached: about 0.07 s), ``mcmahon`` above, where its truncation error is below 2e-6 ulp
-    (:func:`mcmahon_truncation_bound`; alone it is correctly rounded from s = 16 on).
+    the first :data:`AUTO_SWITCH` - 1 zeros from mpmath (each computed once, when first
+    asked for: about 0.45 ms a zero), ``mcmahon`` above, where its truncation error is below
+    2e-6 ulp (:func:`mcmahon_truncation_bound`; alone it is correctly rounded from s = 16 on).
     Measured: correctly rounded at every index checked against mpmath, up to 10^7.
 
 :func:`bessel_zeros_at` gives the zeros of any array of indices, and :func:`iter_bessel_zeros`
@@ -40,7 +40,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from functools import cache
 
 import numpy as np
 
@@ -116,7 +115,7 @@ def bessel_zeros(order: int, count: int, method: str = "auto") -> np.ndarray:
     # auto
     zeros = _mcmahon(order, np.arange(1, count + 1, dtype=float))
     head = min(count, AUTO_SWITCH - 1)
-    zeros[:head] = _mpmath_head(order)[:head]
+    zeros[:head] = _mpmath_head(order, head)
     return zeros
 
 
@@ -149,7 +148,8 @@ def bessel_zeros_at(order: int, indices: np.ndarray | int, method: str = "auto")
         return _halley(order, zeros)
     if method == "auto":
         head = s < AUTO_SWITCH
-        zeros[head] = _mpmath_head(order)[s[head] - 1]
+        if head.any():
+            zeros[head] = _mpmath_head(order, int(s[head].max()))[s[head] - 1]
     return zeros
 
 
@@ -170,16 +170,26 @@ def iter_bessel_zeros(
     )
 
 
-@cache
-def _mpmath_head(order: int) -> np.ndarray:
-    """The first AUTO_SWITCH - 1 zeros, correctly rounded (mpmath, 30 digits), computed once.
+# order -> the zeros j_(order,1..k) computed so far by _mpmath_head (k < AUTO_SWITCH)
+_HEAD: dict[int, np.ndarray] = {}
+
+
+def _mpmath_head(order: int, upto: int = AUTO_SWITCH - 1) -> np.ndarray:
+    """The first ``upto`` (< AUTO_SWITCH) zeros, correctly rounded (mpmath, 30 digits).
 
     Halley on scipy's jv is only faithful there (up to 1.1 ulp measured: jv's own error near
-    a zero), and McMahon's truncation error exceeds half an ulp below s ~ 16.
+    a zero), and McMahon's truncation error exceeds half an ulp below s ~ 16. Each zero is
+    computed once per process and only when an index up to it is asked for: the claims need
+    the first seven, and mpmath takes ~0.45 ms a zero (plus ~0.015 s to import).
     """
-    head = _mpmath_zeros(order, AUTO_SWITCH - 1)
-    head.flags.writeable = False
-    return head
+    upto = min(upto, AUTO_SWITCH - 1)
+    known = _HEAD.get(order, np.empty(0))
+    if known.size < upto:
+        more = _mpmath_zeros(order, upto, start=known.size + 1)
+        known = np.concatenate([known, more])
+        known.flags.writeable = False
+        _HEAD[order] = known
+    return known[:upto]
 
 
 # --- McMahon ---------------------------------------------------------------------------
@@ -283,11 +293,12 @@ def _halley(order: int, x: np.ndarray, steps: int = 3) -> np.ndarray:
 # --- mpmath reference ------------------------------------------------------------------
 
 
-def _mpmath_zeros(order: int, count: int, dps: int = 30) -> np.ndarray:
+def _mpmath_zeros(order: int, count: int, dps: int = 30, start: int = 1) -> np.ndarray:
+    """The zeros of indices ``start`` to ``count`` (each found alone by mpmath.besseljzero)."""
     import mpmath
 
     with mpmath.workdps(dps):
-        return np.array([float(mpmath.besseljzero(order, k)) for k in range(1, count + 1)])
+        return np.array([float(mpmath.besseljzero(order, k)) for k in range(start, count + 1)])
 
 
 def series_error_bound(order: int, z: float | np.ndarray) -> np.ndarray:
