@@ -12,6 +12,7 @@ from pendcli.core.claims import FORMULA_VERDICTS, ClaimRow, FormulaRow, evaluate
 from pendcli.core.verdict import CLAIM_VERDICTS
 from pendcli.papers import formula_checks
 from pendcli.render.columns import Column, Row, Section
+from pendcli.summary import disagrees
 
 __all__ = ["ReproduceResult", "reproduce_all"]
 
@@ -22,35 +23,86 @@ class ReproduceResult:
     claims: dict[str, list[ClaimRow]] = field(default_factory=dict)
     formulas: dict[str, list[FormulaRow]] = field(default_factory=dict)
     stability: list[dict[str, str]] = field(default_factory=list)
+    equations: dict[str, list[dict[str, object]]] = field(default_factory=dict)
 
-    def claim_dicts(self) -> list[dict[str, object]]:
-        return [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
+    def claim_dicts(self, only_failing: bool = False) -> list[dict[str, object]]:
+        rows = [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
+        return [r for r in rows if disagrees(r)] if only_failing else rows
 
-    def formula_dicts(self) -> list[dict[str, object]]:
-        return [r.as_dict() for key in self.papers for r in self.formulas.get(key, [])]
+    def formula_dicts(self, only_failing: bool = False) -> list[dict[str, object]]:
+        rows = [r.as_dict() for key in self.papers for r in self.formulas.get(key, [])]
+        return [r for r in rows if disagrees(r)] if only_failing else rows
 
-    def document(self) -> dict[str, object]:
+    def equation_dicts(self, only_failing: bool = False) -> list[dict[str, object]]:
+        rows = [r for key in self.papers for r in self.equations.get(key, [])]
+        return [r for r in rows if disagrees(r)] if only_failing else rows
+
+    def document(self, only_failing: bool = False) -> dict[str, object]:
         """What `--format json` prints (keys described in :mod:`pendcli.core.schema`)."""
-        doc: dict[str, object] = {"claims": self.claim_dicts(), "formulas": self.formula_dicts()}
+        doc: dict[str, object] = {
+            "claims": self.claim_dicts(only_failing),
+            "formulas": self.formula_dicts(only_failing),
+        }
+        if self.equations:
+            doc["equations"] = self.equation_dicts(only_failing)
         if self.stability:
             doc["stability"] = self.stability
         return doc
 
-    def sections(self) -> list[Section]:
-        """Titled sections for the table and Markdown outputs: claims, formulas, stability."""
-        from pendcli.render.views import FORMULA_COLUMNS, claim_columns
-
+    def sections(self, compact: bool = False, only_failing: bool = False) -> list[Section]:
+        """Titled sections for the table and Markdown outputs: claims, formulas, equations,
+        stability, then the summary. ``compact``: the 80-column terminal view (no notes)."""
         out: list[Section] = []
         for key in self.papers:
-            rows = [r.as_dict() for r in self.claims.get(key, [])]
-            if rows:
-                out.append((f"{key.capitalize()}: claims", rows, claim_columns(rows)))
-            frows = [r.as_dict() for r in self.formulas.get(key, [])]
-            if frows:
-                out.append((f"{key.capitalize()}: derived formulas", frows, FORMULA_COLUMNS))
-        if self.stability:
+            out += self._paper_sections(key, compact, only_failing)
+        if self.stability and not compact:
             cols = [Column(k, k) for k in self.stability[0]]
             out.append(("Numerical stability: where each method is accurate", self.stability, cols))
+        return out + self.summary_sections()
+
+    def _paper_sections(self, key: str, compact: bool, only_failing: bool) -> list[Section]:
+        from pendcli.render.views import FORMULA_COLUMNS, claim_columns
+        from pendcli.summary import (
+            compact_claim_columns,
+            compact_equation_columns,
+            compact_formula_columns,
+        )
+
+        name = key.capitalize()
+        rows = [r.as_dict() for r in self.claims.get(key, [])]
+        frows = [r.as_dict() for r in self.formulas.get(key, [])]
+        eqs = self.equations.get(key, [])
+        if only_failing or compact:  # the terminal lists equations that fail or are misprinted
+            eqs = [r for r in eqs if disagrees(r)]
+        if only_failing:
+            rows, frows = [r for r in rows if disagrees(r)], [r for r in frows if disagrees(r)]
+        out: list[Section] = []
+        if rows:
+            cols = compact_claim_columns() if compact else claim_columns(rows)
+            out.append((f"{name}: printed numbers", rows, cols))
+        if frows:
+            fcols = compact_formula_columns() if compact else FORMULA_COLUMNS
+            out.append((f"{name}: derived formulas", frows, fcols))
+        if eqs:
+            ecols = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
+            what = "equations that fail or are misprinted" if compact else "equation ledger"
+            out.append((f"{name}: {what}", eqs, ecols))
+        return out
+
+    def summary_sections(self) -> list[Section]:
+        """Counts per paper (verdicts, causes, equations), then the propagation tree."""
+        from pendcli.summary import propagation_tree
+
+        summary = self.summary_rows()
+        out: list[Section] = [("Summary: printed numbers", summary, _NUMBER_SUMMARY)]
+        columns = _FORMULA_SUMMARY + (_EQUATION_SUMMARY if self.equations else ())
+        out.append(("Summary: formulas and equations", summary, columns))
+        rows = [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
+        rows += [r.as_dict() for key in self.papers for r in self.formulas.get(key, [])]
+        tree = propagation_tree(rows)
+        if tree:
+            title = "Where errors enter, and the rows that carry them"
+            out.append((title, [{"tree": line} for line in tree], [Column("tree", "row (cause)")]))
         return out
 
     def verdict_counts(self) -> dict[str, dict[str, int]]:
@@ -66,17 +118,29 @@ class ReproduceResult:
         return counts
 
     def summary_rows(self) -> list[Row]:
-        """One row per paper: how many claims reach each verdict, formulas holding/failing."""
+        """One row per paper: claims by verdict, root causes apart from propagated rows,
+        formulas holding/failing, and equations checked (when the ledger was run)."""
+        from pendcli.core.claims import cause_tally
+
         counts = self.verdict_counts()
-        return [
-            {
+        out: list[Row] = []
+        for key in self.papers:
+            tally = cause_tally(self.claims.get(key, []))
+            row: dict[str, object] = {
                 "paper": key,
                 **{v: counts[key].get(v, 0) for v in CLAIM_VERDICTS},
                 "formulas holding": counts[key].get("formula holds", 0),
                 "formulas failing": counts[key].get("formula fails", 0),
+                "root causes": tally.root_total,
+                "propagated": tally.propagated,
             }
-            for key in self.papers
-        ]
+            if self.equations:
+                eqs = self.equations.get(key, [])
+                row["equations"] = len(eqs)
+                for status in ("holds", "fails", "misprint"):
+                    row[f"equations {status}"] = sum(r["status"] == status for r in eqs)
+            out.append(row)
+        return out
 
     def tally(self, key: str) -> str:
         """``"12 agrees, 1 truncated, 5 formula holds"``: the verdicts a paper reached."""
@@ -85,20 +149,49 @@ class ReproduceResult:
         return ", ".join(f"{counts[v]} {v}" for v in order if v in counts)
 
 
+EQUATION_KEYS = ("id", "equation", "section", "status", "check", "observed_order", "note")
+
+
+def _counts(*pairs: tuple[str, str]) -> tuple[Column, ...]:
+    return tuple(Column(k, h, justify="left" if k == "paper" else "right") for k, h in pairs)
+
+
+# The terminal summary, in two tables that each fit 80 columns.
+_NUMBER_SUMMARY = _counts(
+    ("paper", "paper"),
+    *((v, v) for v in CLAIM_VERDICTS),
+    ("root causes", "roots"),
+    ("propagated", "carried"),
+)
+_FORMULA_SUMMARY = _counts(
+    ("paper", "paper"), ("formulas holding", "formulas hold"), ("formulas failing", "fail")
+)
+_EQUATION_SUMMARY = _counts(
+    ("equations", "equations"),
+    ("equations holds", "hold"),
+    ("equations fails", "fail"),
+    ("equations misprint", "misprint"),
+)
+
+
 def reproduce_all(
     keys: tuple[str, ...],
     formulas: bool = True,
     quiet: bool = True,
     stability: bool = False,
     jobs: int | None = None,
+    equations: bool = False,
 ) -> ReproduceResult:
-    """Evaluate the claims (and, if asked, the formula checks and the stability measurements).
+    """Evaluate the claims (and, if asked, the formula checks, the equation ledger and the
+    stability measurements).
 
     With two cores the steps are split into two lanes of about equal cost, one run in a forked
     process (``jobs=1`` or ``PENDCLI_JOBS=1``: all here). A progress bar on stderr shows the
     step running, only on a terminal and when not ``quiet``.
     """
     steps = [(k, "claims") for k in keys] + ([(k, "formulas") for k in keys] if formulas else [])
+    if equations:
+        steps += [(k, "equations") for k in keys]
     if stability:
         steps.append(("all", "stability"))
     here, there = _lanes(steps, _jobs(jobs))
@@ -138,6 +231,9 @@ _COST = {
     ("lecornu", "formulas"): 10,
     ("charbonnier", "formulas"): 7,
     ("all", "stability"): 70,
+    ("tisserand", "equations"): 530,  # sympy derivations (one process, no cache)
+    ("lecornu", "equations"): 580,
+    ("charbonnier", "equations"): 90,
 }
 
 
@@ -213,6 +309,10 @@ def _run_step(key: str, what: str, papers: tuple[str, ...]) -> Any:
         return evaluate_paper(key)
     if what == "formulas":
         return formula_checks(key)
+    if what == "equations":
+        from pendcli.core.ledger import equation_rows
+
+        return equation_rows([key])
     from pendcli.stability import stability_rows
 
     return stability_rows(papers)
@@ -223,5 +323,7 @@ def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
         result.claims[key] = value
     elif what == "formulas":
         result.formulas[key] = value
+    elif what == "equations":
+        result.equations[key] = value
     else:
         result.stability = value

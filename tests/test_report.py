@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 from cli_helpers import invoke
 
@@ -41,7 +43,10 @@ RESULT = ReproduceResult(
     claims={
         "demo": [
             _claim("demo.a", "agrees"),
-            _claim("demo.b", "truncated", "OCR: read 8,41. Chopped, not rounded. More."),
+            replace(
+                _claim("demo.b", "truncated", "OCR: read 8,41. Chopped, not rounded. More."),
+                cause="truncation",
+            ),
         ]
     },
     formulas={"demo": [_formula("demo.f", "holds"), _formula("demo.g", "fails")]},
@@ -71,6 +76,8 @@ def test_tally_and_summary_count_each_verdict():
             "discrepant": 0,
             "formulas holding": 1,
             "formulas failing": 1,
+            "root causes": 1,
+            "propagated": 0,
         }
     ]
 

@@ -321,13 +321,31 @@ StabilityOption = Annotated[
 QuietOption = Annotated[bool, typer.Option("--quiet", "-q", help="No progress or status lines.")]
 
 
+EquationsOption = Annotated[
+    bool | None,
+    typer.Option(
+        "--equations/--no-equations",
+        help="Check every numbered equation too (the ledger; about 12 s of sympy and ODE "
+        "work). Default: only with --out.",
+    ),
+]
+
+
 @app.command("reproduce")
 def reproduce(
     paper: PaperOption = None,
     fmt: FormatOption = OutputFormat.table,
     out: OutOption = None,
     formulas: FormulasOption = True,
+    equations: EquationsOption = None,
     stability: StabilityOption = None,
+    notes: Annotated[
+        bool, typer.Option("--notes", help="Table format: every column, notes included.")
+    ] = False,
+    only_failing: Annotated[
+        bool,
+        typer.Option("--only-failing", help="Only the rows that do not agree, hold or check."),
+    ] = False,
     quiet: QuietOption = False,
     measure: Annotated[
         bool, typer.Option("--measure", help="With --out: time the speed families now.")
@@ -335,8 +353,11 @@ def reproduce(
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
     from pendcli.core.claims import resolve_papers
+    from pendcli.core.errors import PendcliError
     from pendcli.reproduce import reproduce_all
 
+    if measure and out is None:
+        raise PendcliError("--measure needs --out (it re-times the report's speed families)")
     if out is not None:  # refuse a bad folder before the run, not after
         from pendcli.report import check_out_folder
 
@@ -345,9 +366,15 @@ def reproduce(
         resolve_papers(paper),
         formulas=formulas,
         stability=(out is not None) if stability is None else stability,
+        equations=(out is not None) if equations is None else equations,
         quiet=quiet or fmt is not OutputFormat.table,
     )
-    emit(fmt, result.sections(), result.document())
+    compact = fmt is OutputFormat.table and not notes
+    emit(fmt, result.sections(compact, only_failing), result.document(only_failing))
+    if compact:
+        from pendcli.summary import CAUSE_LEGEND
+
+        print(CAUSE_LEGEND)
     if out is not None:
         _write_report(result, out, quiet, measure)
 

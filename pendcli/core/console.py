@@ -40,6 +40,12 @@ def is_quiet() -> bool:
     return _quiet
 
 
+def _pipe_width() -> int:
+    """Width of tables written to a file or pipe: $COLUMNS when set, else 160."""
+    columns = os.environ.get("COLUMNS", "")
+    return int(columns) if columns.isdigit() and int(columns) >= 40 else 160
+
+
 def console(stderr: bool = False) -> Console:
     """A rich console: colour only on a terminal and never when NO_COLOR is set."""
     from rich.console import Console
@@ -50,7 +56,7 @@ def console(stderr: bool = False) -> Console:
         file=stream,
         no_color=bool(os.environ.get("NO_COLOR")) or not is_tty,
         highlight=False,
-        width=None if is_tty else 160,
+        width=None if is_tty else _pipe_width(),
         soft_wrap=False,
     )
 

@@ -32,9 +32,18 @@ def _cell(column: Column, row: Row) -> str:
 def to_rich_table(
     rows: Sequence[Row], columns: Sequence[Column], title: str | None = None
 ) -> Table:
+    from rich import box
     from rich.table import Table
 
-    table = Table(title=title, show_lines=False, header_style="bold")
+    # No vertical rules: two spaces between columns leave the width to the data.
+    table = Table(
+        title=title,
+        show_lines=False,
+        header_style="bold",
+        box=box.SIMPLE_HEAD,
+        show_edge=False,
+        padding=(0, 1, 0, 0),
+    )
     for c in columns:
         table.add_column(c.header, justify=c.justify, overflow="fold")
     for r in rows:

@@ -1,0 +1,147 @@
+"""What `pendcli reproduce` prints at a terminal: compact tables, then the summary.
+
+The compact tables fit 80 columns without breaking a token: the paper's name leaves the ids
+(the table's title carries it), notes and sources stay in ``--notes`` and the data formats,
+and the causes take short labels (explained under the table). The summary counts verdicts,
+separates root causes from the rows that only carry them, and draws the propagation as a
+tree: each root with the rows that inherit from it, indented under it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+from pendcli.render.columns import Column, Row
+from pendcli.render.views import VERDICT_STYLES, format_like_printed
+
+__all__ = [
+    "CAUSE_LABELS",
+    "compact_claim_columns",
+    "compact_equation_columns",
+    "compact_formula_columns",
+    "disagrees",
+    "propagation_tree",
+]
+
+# The table's short label of each cause (the full word is in JSON, CSV and --notes).
+CAUSE_LABELS = {
+    "rounding": "rounding",
+    "truncation": "truncation",
+    "propagated": "propagated",
+    "arithmetic-slip": "slip",
+    "misprint": "misprint",
+    "derivation-error": "derivation",
+    "model-approximation": "model",
+}
+CAUSE_LEGEND = (
+    "cause: slip = arithmetic slip, derivation = derivation error, model = model\n"
+    "approximation, propagated = carries an earlier row's error (see the tree).\n"
+    "Notes and sources: --notes; only what does not hold: --only-failing."
+)
+
+
+def _short_id(row: Row) -> str:
+    return str(row["id"]).split(".", 1)[-1]
+
+
+def _cause(row: Row) -> str:
+    cause = row.get("cause")
+    if not cause or not disagrees(row):  # a source that agrees keeps its cause out of sight
+        return ""
+    return CAUSE_LABELS.get(str(cause), str(cause))
+
+
+def _recomputed(row: Row) -> str:
+    """Three digits beyond the printed precision, in at most ten characters."""
+    value, published = row.get("recomputed"), str(row["published"])
+    text = format_like_printed(value if isinstance(value, float | int) else None, published)
+    if len(text) > 10 and isinstance(value, float | int):  # ten characters at most
+        text = f"{value:.6g}"
+        return text if len(text) <= 10 else f"{value:.3e}"
+    return text
+
+
+def _style(text: str) -> str | None:
+    return VERDICT_STYLES.get(text)
+
+
+def _order(row: Row) -> str:
+    observed, claimed = row.get("observed_order"), row.get("claimed_order")
+    if observed is None:
+        return ""
+    return f"{observed:.2f}/{claimed:g}" if isinstance(claimed, int | float) else f"{observed:.2f}"
+
+
+def disagrees(row: Row) -> bool:
+    """A claim that does not agree, a formula that fails, an equation failing or misprinted."""
+    return row.get("verdict", row.get("status")) in (
+        "truncated",
+        "last-digit",
+        "discrepant",
+        "fails",
+        "misprint",
+    )
+
+
+def compact_claim_columns() -> tuple[Column, ...]:
+    return (
+        Column("id", "claim", fmt=_short_id),
+        Column("published", "printed", justify="right"),
+        Column("recomputed", "recomputed", fmt=_recomputed, justify="right"),
+        Column("verdict", "verdict", style=_style),
+        Column("cause", "cause", fmt=_cause),
+    )
+
+
+def compact_formula_columns() -> tuple[Column, ...]:
+    return (
+        Column("id", "formula", fmt=_short_id),
+        Column("verdict", "verdict", style=_style),
+        Column("observed_order", "seen/claimed order", fmt=_order, justify="right"),
+        Column("cause", "cause", fmt=_cause),
+    )
+
+
+def _sources(row: Row) -> list[str]:
+    value = row.get("from")
+    return [str(s) for s in value] if isinstance(value, list | tuple) else []
+
+
+def compact_equation_columns() -> tuple[Column, ...]:
+    return (
+        Column("id", "row", fmt=_short_id),
+        Column("equation", "label"),
+        Column("status", "status", style=lambda t: VERDICT_STYLES.get(t, "yellow")),
+    )
+
+
+def propagation_tree(rows: Sequence[Row]) -> list[str]:
+    """Each root cause with the rows that inherit from it, indented, as text lines.
+
+    A root is a row with a cause that a propagated row names in ``from`` (a source may agree:
+    a rounded value whose rounding carries on). A row reached from two roots is drawn under
+    each, its own descendants only the first time.
+    """
+    children: dict[str, list[str]] = {}
+    for row in rows:
+        for source in _sources(row):
+            children.setdefault(str(source), []).append(str(row["id"]))
+    by_id: Mapping[str, Row] = {str(r["id"]): r for r in rows}
+    roots = [i for i in children if by_id.get(i, {}).get("cause") != "propagated"]
+    lines: list[str] = []
+    drawn: set[str] = set()
+
+    def walk(node: str, depth: int) -> None:
+        row = by_id.get(node, {})
+        label = f"{node.split('.', 1)[-1]} ({row.get('cause') or 'no cause'})"
+        again = node in drawn and node in children
+        lines.append("  " * depth + ("└ " if depth else "") + label + (" …" if again else ""))
+        if again:
+            return
+        drawn.add(node)
+        for child in children.get(node, []):
+            walk(child, depth + 1)
+
+    for root in roots:
+        walk(root, 0)
+    return lines

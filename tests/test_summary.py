@@ -1,0 +1,72 @@
+"""The terminal view of `reproduce`: 80 columns, no broken token, the propagation tree."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+from pendcli.summary import disagrees, propagation_tree
+
+
+def test_tree_draws_each_root_with_what_inherits_from_it():
+    rows = [
+        {"id": "p.a", "cause": "arithmetic-slip", "from": []},
+        {"id": "p.b", "cause": "propagated", "from": ["p.a"]},
+        {"id": "p.c", "cause": "propagated", "from": ["p.b", "p.d"]},
+        {"id": "p.d", "cause": "rounding", "from": []},
+        {"id": "p.e", "cause": None, "from": []},
+    ]
+    assert propagation_tree(rows) == [
+        "a (arithmetic-slip)",
+        "  └ b (propagated)",
+        "    └ c (propagated)",
+        "d (rounding)",
+        "  └ c (propagated)",
+    ]
+
+
+def test_disagrees_covers_claims_formulas_and_equations():
+    assert [disagrees({"verdict": v}) for v in ("agrees", "last-digit", "holds", "fails")] == [
+        False,
+        True,
+        False,
+        True,
+    ]
+    assert disagrees({"status": "misprint"}) and not disagrees({"status": "definition"})
+
+
+def _reproduce(*args: str) -> str:
+    env = {**os.environ, "COLUMNS": "80", "PENDCLI_JOBS": "1"}
+    done = subprocess.run(
+        [sys.executable, "-m", "pendcli", "reproduce", *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        check=True,
+    )
+    return done.stdout
+
+
+def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary():
+    from pendcli.core.claims import PAPERS
+    from pendcli.reproduce import reproduce_all
+
+    text = _reproduce()
+    lines = text.splitlines()
+    assert max(len(line) for line in lines) <= 80
+    result = reproduce_all(PAPERS, jobs=1)
+    words = set(text.split())
+    for row in [*result.claim_dicts(), *result.formula_dicts()]:
+        assert str(row["id"]).split(".", 1)[1] in words  # whole, not folded over two lines
+    assert "Summary: printed numbers" in text and "--notes" in lines[-1]
+    # the root slips of the tree are the rows the causes name, each once per descendant chain
+    assert "example.time.2 (arithmetic-slip)" in text
+    assert "└ example.interval.1 (propagated)" in text
+    assert len(lines) < 260  # no notes: 3,336 lines before issue 13
+
+
+def test_only_failing_keeps_just_what_does_not_hold():
+    text = _reproduce("--only-failing", "--paper", "tisserand")
+    assert "Tisserand: printed numbers" not in text  # all five agree
+    assert "Summary: printed numbers" in text
