@@ -115,3 +115,14 @@ def test_every_disagreement_is_explained():
         if row["verdict"] == "fails":
             assert row["recomputed"] != row["published"], row["id"]
             assert len(str(row["note"])) > 20, row["id"]
+
+
+def test_reproduce_equations_json_matches_the_schema():
+    # Charbonnier's ledger is the cheapest to run (under a second); the keys are the same.
+    code, out, err = invoke("reproduce", "-f", "json", "--equations", "--paper", "charbonnier")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert set(doc) == {"claims", "formulas", "equations"}
+    assert doc["equations"] and _problems(schema.DOCUMENT["equations"], doc["equations"]) == []
+    labels = {row["equation"] for row in doc["equations"]}
+    assert {f"({n})" for n in range(1, 10)} <= labels

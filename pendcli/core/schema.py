@@ -13,6 +13,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 from pendcli.core.claims import CAUSES, FORMULA_VERDICTS, PAPERS
+from pendcli.core.ledger_check import STATUSES
 from pendcli.core.verdict import CLAIM_VERDICTS
 
 __all__ = ["DOCUMENT", "Field", "RowKind", "check_row", "markdown"]
@@ -103,6 +104,35 @@ FORMULAS = RowKind(
         Field("from", ("array",), _FROM_MEANING),
     ),
 )
+EQUATIONS = RowKind(
+    "equations",
+    "with `--equations` or `--out` (`pendcli equations` prints the same rows)",
+    (
+        Field("id", _TEXT, "`<paper>.eq.<label>` or `<paper>.result.<name>`, unique"),
+        Field("paper", _TEXT, "the paper", PAPERS),
+        Field(
+            "equation",
+            _TEXT,
+            "the label as printed, e.g. `(41)`, `(II)`, `(42')`; empty "
+            "for a result stated in the text",
+        ),
+        Field("section", _TEXT, "where the paper states it"),
+        Field("statement", _TEXT, "what it states, in linear notation"),
+        Field("status", _TEXT, "what the check found", STATUSES),
+        Field(
+            "check",
+            _TEXT,
+            "`sympy:`, `numeric:` or `cross-reference:` and what was "
+            "compared; empty for a definition",
+        ),
+        Field("observed_order", _OPTIONAL, "for a truncated series: the residual's slope"),
+        Field(
+            "note",
+            _TEXT,
+            "the reading of a misprint, the corrected form of a failure, what a definition defines",
+        ),
+    ),
+)
 STABILITY = RowKind(
     "stability",
     "with `--stability` or `--out`",
@@ -129,7 +159,9 @@ TRADEOFF_ROWS = RowKind(
 )
 
 # Every kind of row pendcli prints, by the document key that holds them.
-DOCUMENT: dict[str, RowKind] = {k.key: k for k in (CLAIMS, FORMULAS, STABILITY, TRADEOFF_ROWS)}
+DOCUMENT: dict[str, RowKind] = {
+    k.key: k for k in (CLAIMS, FORMULAS, EQUATIONS, STABILITY, TRADEOFF_ROWS)
+}
 
 
 def check_row(kind: RowKind, row: Mapping[str, object]) -> list[str]:
