@@ -37,7 +37,9 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
 __all__ = [
+    "CAPTION",
     "CSV_KEYS",
+    "ERROR_RANGE",
     "Candidate",
     "Family",
     "Point",
@@ -47,6 +49,7 @@ __all__ = [
     "families",
     "family",
     "family_names",
+    "family_title",
     "measure_family",
     "measured_on",
     "plot_tradeoff",
@@ -58,7 +61,6 @@ __all__ = [
 ]
 
 CSV_KEYS = ("family", "method", "setting", "seconds", "error", "evaluations", "note")
-ERROR_FLOOR = 1e-18  # errors plotted on a log axis: an exact result is drawn at this floor
 
 
 @dataclass
@@ -371,26 +373,104 @@ def choose_method(family: str, tol: float) -> str:
 # Work-precision diagrams
 
 
+#: the error axis of a work-precision panel; errors outside are drawn on its edge as ▲ / ▼
+ERROR_RANGE = (1e-17, 1.0)
+CAPTION = (
+    "Work-precision diagrams, one panel per family of computations the papers need: the "
+    "worst relative error over the family's problems against the time per evaluation, one "
+    "line per method, its points the method's settings (terms, tolerances, iterations). "
+    "Errors are against an independent reference (mpmath at 50 digits or a closed form). "
+    f"The error axis is cut to [{ERROR_RANGE[0]:.0e}, {ERROR_RANGE[1]:g}]: a ▲ on the top edge "
+    "is a method whose error exceeds 1 (it diverges there), a ▼ on the bottom edge an error "
+    "below 1e-17 (exact to double precision). The dotted line is double rounding, 1.1e-16. "
+    "Timings are those of the machine that ran the report."
+)
+
+
+def family_title(name: str) -> str:
+    """The panel title of a family: its declared title, wrapped (the name if undeclared)."""
+    import textwrap
+
+    title = families()[name].title if name in families() else name
+    return textwrap.fill(title, 56)
+
+
+def _on_scale(error: float) -> tuple[float, str]:
+    """(where an error is drawn, "" inside ERROR_RANGE or the edge marker ▲ / ▼ outside)."""
+    low, high = ERROR_RANGE
+    if error > high:
+        return high, "^"
+    if error < low:
+        return low, "v"
+    return error, ""
+
+
 def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
-    """One panel: log error against log time, one line per method (failed points left out)."""
+    """One panel: log error against log time, one line per method (failed points left out);
+    errors outside ERROR_RANGE sit on its edge as ▲ (above) or ▼ (below, exact)."""
     rows = [p for p in points if p.family == name and p.error is not None]
+    edges: set[str] = set()
     for method in dict.fromkeys(p.method for p in rows):
         pts = [p for p in rows if p.method == method]  # in order of the setting
-        ax.plot(
+        drawn = [_on_scale(p.error or 0.0) for p in pts]
+        inside = [i for i, (_, edge) in enumerate(drawn) if not edge]
+        (line,) = ax.plot(
             [p.seconds for p in pts],
-            [max(p.error or 0.0, ERROR_FLOOR) for p in pts],
+            [y for y, _ in drawn],
             "o-" if len(pts) > 1 else "s",
             ms=4,
+            markevery=inside,
             label=method,
         )
+        for marker in ("^", "v"):
+            off = [
+                (p.seconds, y) for p, (y, edge) in zip(pts, drawn, strict=True) if edge == marker
+            ]
+            if off:
+                edges.add(marker)
+                ax.plot(
+                    *zip(*off, strict=True),
+                    marker,
+                    ms=8,
+                    color=line.get_color(),
+                    clip_on=False,
+                    label=f"_{method} off scale",
+                )
+    _family_axes(ax, name, edges)
+
+
+def _family_axes(ax: Axes, name: str, edges: set[str]) -> None:
+    """Scales, the cut error range, labels, and a legend outside the data (with the edges')."""
+    from matplotlib.lines import Line2D
+    from matplotlib.ticker import LogLocator, NullFormatter
+
     ax.set_xscale("log")
     ax.set_yscale("log")
+    low, high = ERROR_RANGE
+    ax.set_ylim(low / 3, high * 3)
     ax.axhline(1.1e-16, color="gray", lw=0.6, ls=":")
-    ax.set_title(name)
+    # below a few decades matplotlib labels the minor ticks too, printing them on each other
+    ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+    ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.yaxis.set_major_locator(LogLocator(numticks=10))
+    ax.set_title(family_title(name), fontsize=9)
     ax.set_xlabel("seconds per evaluation")
-    ax.set_ylabel(f"worst relative error (floored at {ERROR_FLOOR:.0e})")
+    ax.set_ylabel("worst relative error")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
+    handles, _ = ax.get_legend_handles_labels()
+    notes = {"^": f"error > {high:g}, off scale", "v": f"error < {low:.0e}, off scale"}
+    extra = [
+        Line2D([], [], color="gray", ls="", marker=m, ms=7, label=notes[m])
+        for m in ("^", "v")
+        if m in edges
+    ]
+    ax.legend(
+        handles=[*handles, *extra],
+        fontsize=8,
+        loc="upper left",
+        bbox_to_anchor=(1.01, 1.0),
+        borderaxespad=0,
+    )
 
 
 def plot_tradeoff(points: list[Point], path: str | Path) -> Path:
@@ -400,7 +480,7 @@ def plot_tradeoff(points: list[Point], path: str | Path) -> Path:
     names = list(dict.fromkeys(p.family for p in points))
     ncols = 2 if len(names) > 1 else 1
     nrows = max(1, math.ceil(len(names) / ncols))
-    size = (6.0 * ncols, 4.2 * nrows)
+    size = (7.5 * ncols, 4.4 * nrows)  # each panel's legend sits to its right
     with new_figure(path, nrows=nrows, ncols=ncols, size=size) as (_fig, axes):
         flat = [ax for row in axes for ax in row] if nrows * ncols > 1 else [axes]
         for ax, name in zip(flat, names, strict=False):

@@ -224,6 +224,9 @@ def _row(verdict: str, residuals, claimed=2.0, observed=2.0):
     )
 
 
+_LABELS = engine.PanelLabels("demo quantity", "p (rad)", "rad")
+
+
 def test_draw_study_shows_the_residuals_and_the_claimed_slope():
     import matplotlib
 
@@ -234,7 +237,7 @@ def test_draw_study_shows_the_residuals_and_the_claimed_slope():
     residuals = [(0.1, 3e-3), (0.05, 4e-4), (0.025, 0.0), (0.0125, 6e-6)]
     fig, ax = plt.subplots()
     try:
-        engine.draw_study(ax, _row("fails", residuals, claimed=3.0, observed=2.71))
+        engine.draw_study(ax, _row("fails", residuals, claimed=3.0, observed=2.71), _LABELS)
         data, slope = ax.get_lines()
         # the zero residual cannot sit on a log axis: three points drawn, red for "fails"
         assert list(data.get_xdata()) == [0.1, 0.05, 0.0125]
@@ -243,30 +246,99 @@ def test_draw_study_shows_the_residuals_and_the_claimed_slope():
         # claimed slope 3 through the smallest parameter's residual: 6e-6 · (p/0.0125)³
         expected = [6e-6 * (p / 0.0125) ** 3 for p, _ in residuals]
         np.testing.assert_allclose(slope.get_ydata(), expected, rtol=1e-14)
-        assert ax.get_title() == "eq1 (1)\nfails, observed 2.71 (claimed 3: dashed)"
+        assert ax.get_title() == "(1)  demo quantity\nfails: order 2.71 observed, 3 claimed"
+        assert ax.get_xlabel() == "p (rad)"
+        assert ax.get_ylabel() == "|reference − formula| (rad)"
         assert ax.get_xscale() == ax.get_yscale() == "log"
+        # the sweep's ends are labelled ticks (a sweep under two decades may hold no decade)
+        ticks = dict(
+            zip(ax.get_xticks(), [t.get_text() for t in ax.get_xticklabels()], strict=True)
+        )
+        assert ticks[0.0125] == "0.0125" and ticks[0.1] == "0.1"
     finally:
         plt.close(fig)
 
 
-def test_plot_studies_draws_one_panel_per_ordered_row(tmp_path):
-    import matplotlib.image as mpimg
+def test_draw_study_of_a_residual_at_the_reference_error_says_so():
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    try:
+        row = _row("holds", [(0.1, 2e-12), (0.05, 2e-12)], claimed=2.0, observed=None)
+        engine.draw_study(ax, row, _LABELS)
+        assert ax.get_title().endswith("holds: residual at the reference's error (claimed order 2)")
+    finally:
+        plt.close(fig)
+
+
+def _grid_figure(monkeypatch, rows, labels):
+    """Run plot_studies, keeping the figure it draws instead of only its PNG."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+
+    from pendcli.core import plotting
+
+    kept = []
+    monkeypatch.setattr(plotting, "save_figure", lambda fig, path: kept.append(fig))
+    monkeypatch.setattr(plt, "close", lambda fig: None)
+    engine.plot_studies("unused.png", rows, "Demo", labels, ncols=2)
+    (fig,) = kept
+    return fig
+
+
+def test_plot_studies_draws_one_labelled_panel_per_ordered_row(monkeypatch):
+    from matplotlib.colors import to_rgba
 
     rows = [
         _row("holds", [(0.1, 1e-2), (0.05, 2.5e-3), (0.025, 6.25e-4)]),
         _row("fails", [(0.1, 1e-1), (0.05, 5e-2), (0.025, 2.5e-2)]),
         _row("holds", [], claimed=None, observed=None),  # an identity: not drawn
     ]
-    path = tmp_path / "studies.png"
-    engine.plot_studies(path, rows, "Demo", ncols=2)
-    image = mpimg.imread(path)[:, :, :3]
-    green = np.all(np.abs(image - np.array([44, 160, 44]) / 255) < 0.05, axis=-1)
-    red = np.all(np.abs(image - np.array([214, 39, 40]) / 255) < 0.05, axis=-1)
-    left, right = np.hsplit(image, 2)[0].shape[1], image.shape[1]
-    # tab:green markers in the left panel (holds), tab:red in the right one (fails)
-    assert green[:, :left].sum() > 100 and green[:, left:].sum() == 0
-    assert red[:, left:].sum() > 100 and red[:, :left].sum() == 0
-    assert right == 2 * left
+    fig = _grid_figure(monkeypatch, rows, {"demo.eq1": _LABELS})
+    visible = [ax for ax in fig.get_axes() if ax.get_visible()]
+    assert len(visible) == 2  # one panel per row with a claimed order
+    colours = [to_rgba(ax.get_lines()[0].get_color()) for ax in visible]
+    assert colours == [to_rgba("tab:green"), to_rgba("tab:red")]
+    for ax in visible:
+        assert ax.get_xlabel() == "p (rad)" and "formula|" in ax.get_ylabel()
+        texts = [ax.title, ax.xaxis.label, ax.yaxis.label, *ax.get_xticklabels()]
+        assert min(t.get_fontsize() for t in texts) >= 8
+    assert fig.get_suptitle() == "Demo"
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert legend == [
+        "|residual|, formula holds",
+        "|residual|, formula fails",
+        "claimed order (slope)",
+    ]
+
+
+def test_plot_studies_refuses_a_row_without_labels(tmp_path):
+    rows = [_row("holds", [(0.1, 1e-2), (0.05, 2.5e-3), (0.025, 6.25e-4)])]
+    with pytest.raises(ValueError, match=r"no panel labels for demo\.eq1"):
+        engine.plot_studies(tmp_path / "x.png", rows, "Demo", {})
+
+
+@pytest.mark.parametrize("paper", ["tisserand", "lecornu", "charbonnier"])
+def test_every_drawn_formula_names_its_parameter_and_unit(paper, rows):
+    """Each paper's panel labels cover exactly the rows its grid draws, none generic."""
+    import importlib
+
+    module = importlib.import_module(f"pendcli.papers.{paper}.formulas")
+    labels = module.panels() if paper == "charbonnier" else module.PANELS
+    drawn = {r.id for r in rows[paper] if r.residuals and r.claimed_order is not None}
+    assert set(labels) == drawn
+    for label in labels.values():
+        assert label.name and label.residual
+        assert "see note" not in label.parameter
+        # the parameter's symbol and its unit (or that it has none)
+        assert any(u in label.parameter for u in ("rad", "dimensionless", "δ"))
+    caption = module.CAPTIONS[f"formulas_{paper}"]
+    assert "|reference − formula|" in caption and "Reference:" in caption
 
 
 # ----------------------------------------------------------------------------- Lecornu
@@ -481,13 +553,9 @@ def test_cli_formulas_json_and_plot(tmp_path):
     assert {r["id"] for r in doc["formulas"]} == {k for k in EXPECTED if k.startswith("tiss")}
     code, out, err = invoke("formulas", "-p", "tisserand", "--plot", str(tmp_path / "figs"))
     assert code == 0, err
-    import matplotlib.image as mpimg
-
-    image = mpimg.imread(tmp_path / "figs" / "formulas_tisserand.png")[:, :, :3]
-    green = np.all(np.abs(image - np.array([44, 160, 44]) / 255) < 0.05, axis=-1).sum()
-    red = np.all(np.abs(image - np.array([214, 39, 40]) / 255) < 0.05, axis=-1).sum()
-    # every Tisserand formula holds: residuals drawn in tab:green, none in tab:red
-    assert green > 1000 and red == 0
+    # what the panels show is tested on the Axes above; here: a PNG of the grid was written
+    png = (tmp_path / "figs" / "formulas_tisserand.png").read_bytes()
+    assert png.startswith(b"\x89PNG")
 
 
 def test_cli_formulas_bad_input(tmp_path):

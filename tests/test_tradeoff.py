@@ -272,47 +272,92 @@ def _hand_points():
     return [
         tradeoff.Point("a", "m1", "s=1", 1e-6, 1e-3),
         tradeoff.Point("a", "m1", "s=2", 1e-5, 1e-9),
-        tradeoff.Point("a", "m2", "", 1e-4, 0.0),  # exact: drawn at the floor
+        tradeoff.Point("a", "m2", "", 1e-4, 0.0),  # exact: drawn on the bottom edge
         tradeoff.Point("a", "m3", "", math.nan, None, note="fails"),  # not drawn
+        tradeoff.Point("a", "m5", "n=1", 3e-6, 1e-2),
+        tradeoff.Point("a", "m5", "n=2", 4e-6, 1e37),  # diverges: drawn on the top edge
         tradeoff.Point("b", "m4", "", 2e-6, 1e-12),
     ]
 
 
-def test_draw_family_shows_one_line_per_method():
+def test_draw_family_shows_one_line_per_method_within_the_error_range():
     import matplotlib.pyplot as plt
 
+    low, high = tradeoff.ERROR_RANGE
     fig, ax = plt.subplots()
     try:
         tradeoff.draw_family(ax, "a", _hand_points())
         lines = {line.get_label(): line for line in ax.get_lines() if line.get_label()[0] != "_"}
-        assert set(lines) == {"m1", "m2"}
+        assert set(lines) == {"m1", "m2", "m5"}
         assert list(lines["m1"].get_xdata()) == [1e-6, 1e-5]
         assert list(lines["m1"].get_ydata()) == [1e-3, 1e-9]
-        assert list(lines["m2"].get_ydata()) == [tradeoff.ERROR_FLOOR]
+        # off-scale errors sit on the range's edges, with ▼ / ▲ markers there, not dots
+        assert list(lines["m2"].get_ydata()) == [low]
+        assert list(lines["m5"].get_ydata()) == [1e-2, high]
+        assert list(lines["m5"].get_markevery()) == [0]
+        edges = {
+            line.get_marker(): line for line in ax.get_lines() if "off scale" in line.get_label()
+        }
+        assert list(edges["^"].get_ydata()) == [high] and list(edges["^"].get_xdata()) == [4e-6]
+        assert edges["^"].get_color() == lines["m5"].get_color()
+        assert list(edges["v"].get_ydata()) == [low]
+        # the axis stays readable: the diverging 1e37 does not stretch it
+        bottom, top = ax.get_ylim()
+        assert low / 10 < bottom < low and high < top < high * 10
         assert ax.get_xscale() == "log" and ax.get_yscale() == "log"
-        assert ax.get_title() == "a"
+        assert ax.get_title() == "a"  # not a declared family: its name
         assert ax.get_xlabel() == "seconds per evaluation"
-        assert "worst relative error" in ax.get_ylabel()
-        legend = [t.get_text() for t in ax.get_legend().get_texts()]
-        assert legend == ["m1", "m2"]
+        assert ax.get_ylabel() == "worst relative error"
+        legend = ax.get_legend()
+        assert [t.get_text() for t in legend.get_texts()] == [
+            "m1",
+            "m2",
+            "m5",
+            "error > 1, off scale",
+            "error < 1e-17, off scale",
+        ]
+        # the legend sits right of the panel, over no data
+        fig.canvas.draw()
+        box, panel = legend.get_window_extent(), ax.get_window_extent()
+        assert box.x0 >= panel.x1
     finally:
         plt.close(fig)
 
 
-def test_plot_tradeoff_draws_one_panel_per_family(tmp_path):
-    """Two families side by side: the image is two panels wide and both hold data."""
-    from matplotlib.image import imread
+def test_draw_family_titles_a_declared_family_by_its_title():
+    import matplotlib.pyplot as plt
 
-    path = tradeoff.plot_tradeoff(_hand_points(), tmp_path / "wp.png")
-    image = imread(path)
-    height, width = image.shape[:2]
-    assert width / height == pytest.approx(12.0 / 4.2, rel=0.02)
-    dark = image[..., :3].mean(axis=2) < 0.9  # anything not white: axes, lines, text
-    left, right = dark[:, : width // 2], dark[:, width // 2 :]
-    assert left.mean() > 0.01 and right.mean() > 0.01
-    # the coloured markers of the first method (matplotlib's first colour, C0 blue)
-    blue = (image[..., 2] > 0.6) & (image[..., 0] < 0.3)
-    assert blue[:, : width // 2].sum() > 20
+    fig, ax = plt.subplots()
+    try:
+        points = [tradeoff.Point("integral_pi", "m", "", 1e-6, 1e-10)]
+        tradeoff.draw_family(ax, "integral_pi", points)
+        title = ax.get_title()
+        assert title.replace("\n", " ") == tradeoff.family("integral_pi").title
+        assert "I_n(π)" in title and all(len(line) <= 56 for line in title.split("\n"))
+    finally:
+        plt.close(fig)
+
+
+def test_plot_tradeoff_draws_one_panel_per_family(tmp_path, monkeypatch):
+    """Two families side by side, each panel with its family's lines."""
+    import matplotlib.pyplot as plt
+
+    from pendcli.core import plotting
+
+    kept = []
+    monkeypatch.setattr(plotting, "save_figure", lambda fig, path: kept.append(fig))
+    monkeypatch.setattr(plt, "close", lambda fig: None)
+    tradeoff.plot_tradeoff(_hand_points(), tmp_path / "wp.png")
+    (fig,) = kept
+    left, right = fig.get_axes()
+    assert (left.get_title(), right.get_title()) == ("a", "b")
+    assert [line.get_label() for line in right.get_lines() if line.get_label()[0] != "_"] == ["m4"]
+    assert fig.get_size_inches()[0] > 2 * fig.get_size_inches()[1]  # two panels wide
+    plt.close(fig)
+
+
+def test_caption_names_the_error_range():
+    assert "[1e-17, 1]" in tradeoff.CAPTION and "▲" in tradeoff.CAPTION
 
 
 # ---------------------------------------------------------------------------------------------

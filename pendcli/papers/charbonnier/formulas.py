@@ -25,8 +25,10 @@ import numpy as np
 from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
 from pendcli.core.formula_engine import (
     DEFAULT_REFERENCE,
+    PanelLabels,
     Reference,
     Study,
+    grid_caption,
     judge,
     leading_coefficient,
     make_row,
@@ -44,6 +46,7 @@ from pendcli.papers.charbonnier.perturbation import (
 )
 
 __all__ = [
+    "CAPTIONS",
     "CLOSED_FORM_N_MAX",
     "DELTA_PARAM",
     "DELTA_SWEEP",
@@ -54,6 +57,7 @@ __all__ = [
     "friction_count_row",
     "general_rows",
     "monomial_rows",
+    "panels",
 ]
 
 DELTA_SWEEP = (0.04, 0.02, 0.01, 0.005, 0.0025)
@@ -86,11 +90,66 @@ FORMULA_CAUSES: dict[str, FormulaCause] = {
 }
 
 
+# What each residual panel shows; residuals are made dimensionless with α, k and l0.
+_PERTURBATIONS = (
+    ("linear_damping", "linear damping", "δ = ε/k, resistance εθ′"),
+    ("periodic_force", "periodic force", "δ = ε, force εk²α cos 0.6kt"),
+    ("friction", "friction", "δ = ε, friction εk²α"),
+)
+_GENERAL = (
+    ("eq4_5", "θ, θ′ over a half-swing", "÷ α and ÷ kα"),
+    ("eq6", "ΔT", "k·ΔT, dimensionless"),
+    ("eq7", "Δα", "Δα ÷ α"),
+    ("eq8", "ΔT½", "k·ΔT½, dimensionless"),
+    ("eq9", "Δθ′ at the lowest point", "Δθ′m ÷ kα"),
+)
+_RESISTANCE = "δ, resistance b_n vⁿ"
+_MONOMIALS = (
+    ("delta_T_zero", "ΔT = 0 for b_n vⁿ, n = 0…5", "k·ΔT, largest over n"),
+    ("delta_T_half", "ΔT½ for b_n vⁿ, n = 0…5", "k·ΔT½, largest over n"),
+    ("delta_v_m", "Δv_m = (k/2) l0 Δα, n = 0…5", "÷ k·l0·α, largest over n"),
+)
+
+
+def panels() -> dict[str, PanelLabels]:
+    """Row id -> what its residual panel names (every row of the δ sweep and the count P)."""
+    out = {
+        f"charbonnier.{eq}.{kind}": PanelLabels(f"{name}, {label}", parameter, unit)
+        for kind, label, parameter in _PERTURBATIONS
+        # friction is checked on (4)-(5) only (general_rows)
+        for eq, name, unit in (_GENERAL[:1] if kind == "friction" else _GENERAL)
+    }
+    for n in range(6):
+        out[f"charbonnier.delta_alpha.n{n}"] = PanelLabels(
+            f"Δα for b_n vⁿ, n = {n}", f"{_RESISTANCE}, n = {n}", "Δα ÷ α"
+        )
+    for id_, name, unit in _MONOMIALS:
+        out[f"charbonnier.{id_}"] = PanelLabels(name, f"{_RESISTANCE}, n = 0…5", unit)
+    out["charbonnier.friction_count"] = PanelLabels(
+        "number of swings P", "1/P = 2b0/(αg), dimensionless", "relative"
+    )
+    return out
+
+
+# The report prints these under the figures (file stem -> caption).
+CAPTIONS = {
+    "formulas_charbonnier": grid_caption(
+        "Charbonnier",
+        "Reference: solve_ivp (DOP853, rtol 1e-12) on θ'' + k²θ + εφ = 0 for each "
+        "perturbation φ (the friction count: the exact piecewise solution); the small "
+        "parameter δ is the perturbation's size relative to the swing.",
+    ),
+}
+
+
 def figures(outdir: str | Path, rows: list[FormulaRow] | None = None) -> list[Path]:
     """One PNG: residual against parameter for every Charbonnier formula (log-log)."""
     path = Path(outdir) / "formulas_charbonnier.png"
     plot_studies(
-        path, rows if rows is not None else formula_checks(), "Charbonnier: derived formulas"
+        path,
+        rows if rows is not None else formula_checks(),
+        "Charbonnier (1908): derived formulas against direct integration",
+        panels(),
     )
     return [path]
 

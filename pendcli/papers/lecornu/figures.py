@@ -70,7 +70,7 @@ def draw_example(ax: Axes, m: ExampleModel) -> None:
     ax.set_yscale("symlog", linthresh=1.0)
     ax.set_xlabel(f"t (s), L = {m.length:g} m at t = 0, shortening at {m.speed:g} m/s, g = {m.g:g}")
     ax.set_ylabel("θ/θ0 (symlog)")
-    ax.legend(fontsize=7, loc="lower left")
+    ax.legend(fontsize=8, loc="lower left")
 
 
 def plot_example(
@@ -142,7 +142,7 @@ def draw_example_claims(ax: Axes, m: ExampleModel, rows: dict[str, ClaimRow]) ->
     ax.set_ylabel("θ/θ0 (symlog)")
     ax.set_title("Lecornu's example: elongations and vertical passages")
     ax.axhline(0, color="0.8", lw=0.5)
-    ax.legend(fontsize=7, loc="lower left")
+    ax.legend(fontsize=8, loc="lower left")
 
 
 Bar = tuple[int, float, str, str]  # x, (printed - recomputed)/unit, verdict, tick label
@@ -179,7 +179,7 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
     for name, start, end in spans:
         ax.text((start + end) / 2, top - 0.8, name, ha="center", fontsize=8)
     ax.axhspan(-0.5, 0.5, color="0.9", zorder=0)
-    ax.set_xticks([b[0] for b in bars], [b[3] for b in bars], rotation=90, fontsize=7)
+    ax.set_xticks([b[0] for b in bars], [b[3] for b in bars], rotation=90, fontsize=8)
     ax.set_ylabel("(printed - recomputed) / last printed unit")
     ax.set_ylim(bottom, top)
     ax.set_title(

@@ -31,10 +31,12 @@ import numpy as np
 from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
 from pendcli.core.formula_engine import (
     DEFAULT_REFERENCE,
+    PanelLabels,
     Reference,
     Study,
     crossings,
     fit_basis,
+    grid_caption,
     identify_combination,
     judge,
     leading_coefficient,
@@ -43,6 +45,8 @@ from pendcli.core.formula_engine import (
 )
 
 __all__ = [
+    "CAPTIONS",
+    "PANELS",
     "P_SWEEP",
     "amplitude_rows",
     "compound_rows",
@@ -795,8 +799,52 @@ def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     return with_causes(rows, FORMULA_CAUSES)
 
 
+# What each residual panel shows. Times are in units of √(a/g) (the reduced time τ = γt);
+# angles of the small oscillations are divided by their amplitude (ρ, θ0 or u's, set to 1).
+_P, _K = "p = b/√(ga), dimensionless", "k = sin(θ0/2), dimensionless"
+_TIME, _AMPLITUDE = "units of √(a/g)", "÷ amplitude"
+_PANELS: tuple[tuple[str, str, str, str], ...] = (
+    ("table26.first_elongation", "time of the first elongation", _P, _TIME),
+    ("table26.second_vertical", "time of the 2nd vertical passage", _P, _TIME),
+    ("table26.first_negative_elongation", "time of the 2nd elongation", _P, _TIME),
+    ("table26.third_vertical", "time of the 3rd vertical passage", _P, _TIME),
+    ("oscillation_time_increase", "oscillation time increase", _P, _TIME),
+    ("eq26", "θ(t) to first order in p", _P, _AMPLITUDE),
+    ("eq28", "u = θl/a to second order in p", _P, _AMPLITUDE),
+    ("eq29", "θ(t) to second order in p", _P, _AMPLITUDE),
+    ("period_second_order", "period to second order in p", _P, _TIME),
+    ("mean_pendulum", "lag behind the mean pendulum", _P, _TIME),
+    ("elongation_ratio", "ratio of successive elongations", _P, "ratio, dimensionless"),
+    ("eq52", "conical pendulum θ1, θ2", _P, _AMPLITUDE),
+    ("homothety_ratio", "homothety ratio, half a turn", _P, "ratio, dimensionless"),
+    ("compound_pendulum", "compound as simple pendulum", f"{_P}; R/a = 0.5", "÷ θ0"),
+    ("eq31", "fast shortening θ(z)", "s·z0 = ga/b², dimensionless", "rad; α = 0.5 rad"),
+    ("eq38", "finite oscillations θ(u)", _K, "rad"),
+    ("eq41_terms_in_p", "∂θ/∂p at p = 0", _K, "rad"),
+    ("eq42_terms_in_b", "∂T/∂p of the quarter period", _K, _TIME),
+    ("eq42prime_terms_in_b", "(42) with k = θ0/2", "θ0 (rad)", _TIME),
+)
+PANELS: dict[str, PanelLabels] = {
+    f"{PAPER}.{id_}": PanelLabels(name, parameter, unit) for id_, name, parameter, unit in _PANELS
+}
+
+# The report prints these under the figures (file stem -> caption).
+CAPTIONS = {
+    "formulas_lecornu": grid_caption(
+        "Lecornu",
+        "Reference: solve_ivp (DOP853, rtol 1e-12) on Lecornu's own equations in his reduced "
+        "variables τ = t√(g/a), p = b/√(ga); times in units of √(a/g).",
+    ),
+}
+
+
 def figures(outdir: str | Path, rows: list[FormulaRow] | None = None) -> list[Path]:
     """One PNG: residual against parameter for every Lecornu formula (log-log)."""
     path = Path(outdir) / "formulas_lecornu.png"
-    plot_studies(path, rows if rows is not None else formula_checks(), "Lecornu: derived formulas")
+    plot_studies(
+        path,
+        rows if rows is not None else formula_checks(),
+        "Lecornu (1894): derived formulas against direct integration",
+        PANELS,
+    )
     return [path]

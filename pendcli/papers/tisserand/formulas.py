@@ -28,8 +28,10 @@ import numpy as np
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.formula_engine import (
+    PanelLabels,
     Study,
     extrapolate_to_zero,
+    grid_caption,
     identify,
     judge,
     make_row,
@@ -38,6 +40,8 @@ from pendcli.core.formula_engine import (
 
 __all__ = [
     "BUILDERS",
+    "CAPTIONS",
+    "PANELS",
     "QuadratureReference",
     "Sample",
     "figures",
@@ -371,10 +375,41 @@ def formula_checks(ref: QuadratureReference = DEFAULT) -> list[FormulaRow]:
     return [row for builder in BUILDERS for row in builder(points, ref)]
 
 
+_THETA0 = "θ0 (rad), θ1 = θ0/2"
+# What each residual panel shows: kt, ψ and φ are angles (rad), k/k' and k''/k' ratios.
+PANELS: dict[str, PanelLabels] = {
+    f"{PAPER}.{id_}": PanelLabels(name, _THETA0, unit)
+    for id_, name, unit in (
+        ("k_prime", "k/k′ to the sixth order", "k/k′, dimensionless"),
+        ("k_second", "k″/k′ to the fourth order", "k″/k′, dimensionless"),
+        ("eq8_kt_sin2psi", "kt: coefficient of sin 2ψ", "rad"),
+        ("eq8_kt_sin4psi", "kt: coefficient of sin 4ψ", "rad"),
+        ("eq8_phi_psi", "φ: coefficient of ψ", "dimensionless"),
+        ("eq8_phi_sin2psi", "φ: coefficient of sin 2ψ", "rad"),
+        ("psi_in_psi_sin4psi", "ψ(ψ): sin 2ψ, sin 4ψ terms", "rad, larger of two"),
+        ("II_sin2", "ψ: coefficient of sin 2k′t", "rad"),
+        ("II_sin4", "ψ: coefficient of sin 4k′t", "rad"),
+        ("V_sin2", "φ′: coefficient of sin 2k′t", "rad"),
+    )
+}
+
+# The report prints these under the figures (file stem -> caption).
+CAPTIONS = {
+    "formulas_tisserand": grid_caption(
+        "Tisserand",
+        "Reference: Fourier analysis of Tisserand's exact differentials (4)-(5) by the "
+        "trapezoidal rule (exact to rounding); amplitudes θ0 = 0.4 … 0.1 rad with θ1 = θ0/2.",
+    ),
+}
+
+
 def figures(outdir: str | Path, rows: list[FormulaRow] | None = None) -> list[Path]:
     """One PNG: residual against θ0 for every Tisserand formula (log-log)."""
     path = Path(outdir) / "formulas_tisserand.png"
     plot_studies(
-        path, rows if rows is not None else formula_checks(), "Tisserand: derived formulas"
+        path,
+        rows if rows is not None else formula_checks(),
+        "Tisserand (1881): derived formulas against exact quadrature",
+        PANELS,
     )
     return [path]
