@@ -334,10 +334,13 @@ def propagation_svg(rows: Sequence[Row]) -> str:
     columns: dict[int, list[str]] = {}
     for node in sorted(nodes):
         columns.setdefault(depth[node], []).append(node)
-    pos = {n: (20 + 300 * d, 24 + 26 * i) for d, col in columns.items() for i, n in enumerate(col)}
+    pos: dict[str, tuple[int, int]] = {}
+    for d in sorted(columns):  # each row beside the mean height of its sources: few crossings
+        col = sorted(columns[d], key=lambda n: _mean_y(pos, _sources(by_id[n])))
+        pos.update({n: (20 + 300 * d, 24 + 26 * i) for i, n in enumerate(col)})
     height = 40 + 26 * max(len(c) for c in columns.values())
     edges = [
-        f'<line x1="{pos[s][0] + 240}" y1="{pos[s][1] - 4}" x2="{pos[n][0] - 4}" '
+        f'<line x1="{pos[s][0] + 7 * len(s) + 4}" y1="{pos[s][1] - 4}" x2="{pos[n][0] - 4}" '
         f'y2="{pos[n][1] - 4}" stroke="#888" marker-end="url(#arrow)"/>'
         for n in nodes
         for s in _sources(by_id[n])
@@ -356,6 +359,11 @@ def propagation_svg(rows: Sequence[Row]) -> str:
         'orient="auto"><path d="M0,0L10,5L0,10z" fill="#888"/></marker></defs>'
         f"{''.join(edges)}{''.join(labels)}</svg>"
     )
+
+
+def _mean_y(pos: Mapping[str, tuple[int, int]], sources: list[str]) -> float:
+    ys = [pos[s][1] for s in sources if s in pos]
+    return sum(ys) / len(ys) if ys else 0.0
 
 
 def _is_source(row_id: str, rows: Sequence[Row]) -> bool:
@@ -380,6 +388,10 @@ def _disagreements(claims: Sequence[Row], formulas: Sequence[Row], eqs: Sequence
     ]
     head = "<tr><th>row</th><th>verdict / status</th><th>cause</th><th>note</th></tr>"
     return f"<table>{head}{''.join(body)}</table>"
+
+
+def _disagrees(row: Row) -> bool:
+    return row.get("verdict", row.get("status")) not in ("agrees", "holds")
 
 
 def _counts_table(counts: Mapping[str, Mapping[str, int]], keys: Sequence[str]) -> str:
@@ -412,7 +424,10 @@ def report_page(
     every_claim = [r for p in papers for r in claims.get(p, [])]
     every_formula = [r for p in papers for r in formulas.get(p, [])]
     every_eq = [r for p in papers for r in equations.get(p, [])]
-    causes = {p: _tally((r for r in claims.get(p, []) if r.get("cause")), "cause") for p in papers}
+    causes = {
+        p: _tally((r for r in claims.get(p, []) if r.get("cause") and _disagrees(r)), "cause")
+        for p in papers
+    }
     cause_keys = sorted({c for t in causes.values() for c in t})
     parts = [
         "<h1>pendcli reproduction report</h1>",
@@ -421,7 +436,10 @@ def report_page(
         "<h2>Printed numbers by verdict</h2>",
         _counts_table({p: _tally(claims.get(p, []), "verdict") for p in papers}, VERDICT_CLASSES),
         "<h2>Causes of what does not agree</h2>",
-        "<p>Root slips are where an error enters; <i>propagated</i> rows only carry one.</p>",
+        "<p>Counted over the numbers that do not agree. Every cause but <i>propagated</i> is a "
+        "root, where an error enters; <i>propagated</i> rows only carry the error of the rows "
+        "they come from. In the graph, red rows are roots (an agreeing row can be one: its "
+        "rounding carries on), each arrow points to a row that inherits its error.</p>",
         _counts_table(causes, cause_keys) if cause_keys else "<p>No causes recorded.</p>",
         propagation_svg(every_claim),
     ]
@@ -484,9 +502,9 @@ def write_for_result(
 
     claims: dict[str, list[Row]] = {}
     for key in result.papers:
-        table = load_paper_table(key)
+        printed = {c.id: c.as_printed for c in load_paper_table(key).claims}
         claims[key] = [
-            {**row.as_dict(), "as_printed": table.claim(row.id).as_printed}
+            {**row.as_dict(), "as_printed": printed.get(row.id, "")}
             for row in result.claims.get(key, [])
         ]
     return write_html_report(

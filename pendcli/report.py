@@ -16,6 +16,7 @@ import importlib
 import importlib.util
 import os
 import platform
+import re
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -23,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.verdict import CLAIM_VERDICTS
-from pendcli.render.columns import Column
+from pendcli.render.columns import Column, Row
 from pendcli.render.json import to_json
 from pendcli.render.markdown import to_markdown
 from pendcli.render.views import FORMULA_COLUMNS, claim_columns
@@ -50,7 +51,14 @@ second of arc, `2·2/(1·3)` is exact. With `u` the unit of the last printed pla
 An exact printed value agrees only if equal to floating-point accuracy. A claim "at most
 p" agrees when the recomputed value, rounded to the printed precision, is ≤ p. A derived
 formula `holds` when its residual against a numerical solution vanishes at the claimed
-order, and `fails` otherwise.
+order, and `fails` otherwise: residual = reference − formula over the row's small parameter,
+claimed order its exponent, `holds` iff the observed order is at least the claimed one minus
+0.3 and the residuals stand at least 10 times above the reference's error.
+
+Every row that does not agree or hold has a cause: `rounding`, `truncation`, `misprint`,
+`arithmetic-slip`, `derivation-error` and `model-approximation` are roots (where an error
+enters); `propagated` rows only carry the error of the rows named after it (*from*), and
+agree once those are replaced by their recomputed values (`tests/test_causes.py`).
 """
 
 
@@ -82,22 +90,44 @@ def _first_sentence(text: str, limit: int = 220) -> str:
     return sentence if len(sentence) <= limit else sentence[: limit - 1].rstrip() + "…"
 
 
+def _cause_text(cause: str | None, sources: tuple[str, ...]) -> str:
+    if cause is None:
+        return ""
+    return f" ({cause} from {', '.join(sources)})" if sources else f" ({cause})"
+
+
 def disagreement_digest(result: ReproduceResult) -> list[str]:
-    """One bullet per printed number that is not `agrees` and per formula that `fails`."""
+    """One bullet per printed number that is not `agrees` and per formula that `fails`,
+    each with its cause (and, for a carried error, the rows it comes from)."""
     bullets = []
     for key in result.papers:
         for r in result.claims.get(key, []):
             if r.verdict != "agrees":
                 bullets.append(
                     f"- **{r.id}** ({r.source}): printed `{r.published}`, recomputed "
-                    f"{r.recomputed:.6g}: **{r.verdict}**. {_first_sentence(r.note)}"
+                    f"{r.recomputed:.6g}: **{r.verdict}**{_cause_text(r.cause, r.cause_from)}. "
+                    f"{_first_sentence(r.note)}"
                 )
         for f in result.formulas.get(key, []):
             if f.verdict != "holds":
                 bullets.append(
-                    f"- **{f.id}** {f.source}: `{f.published}` fails; found `{f.recomputed}`."
+                    f"- **{f.id}** {f.source}: `{f.published}` fails"
+                    f"{_cause_text(f.cause, f.cause_from)}; found `{f.recomputed}`."
                 )
     return bullets or ["Every printed number and formula holds."]
+
+
+# The convention every formula note ends with: stated once in the report, not per row.
+_CONVENTION = re.compile(
+    r"Residual = reference − formula over (?P<parameter>.+?) \(claimed order.*?\)\. "
+    r"Reference: (?P<reference>.+?)\.$"
+)
+
+
+def _short_formula_note(row: Row) -> str:
+    """The note without the residual convention, keeping its small parameter and reference."""
+    note = str(row.get("note", ""))
+    return _CONVENTION.sub(r"Small parameter: \g<parameter>; reference: \g<reference>.", note)
 
 
 def check_out_folder(out: Path | str) -> Path:
@@ -155,9 +185,13 @@ class _Writer:
 
             console(stderr=True).print(f"report: {message}")
 
-    def links(self, figures: list[Path]) -> list[str]:
-        """Markdown image links to figures already written, relative to the report."""
-        return [f"![{fig.stem}]({_rel(fig, self.out)})" for fig in figures]
+    def figure_lines(self, figures: list[Path]) -> list[str]:
+        """Each figure already written: its image (relative to the report), its caption."""
+        lines = []
+        for figure in figures:
+            caption = figure_caption(figure)
+            lines += [f"![{caption}]({_rel(figure, self.out)})", "", f"*{caption}*", ""]
+        return lines
 
 
 def write_report(
@@ -209,22 +243,55 @@ def _fill(
     lines += _tradeoff_section(writer, tradeoff, figures.get("tradeoff", []))
     lines += _environment_section()
     writer.text("report.md", "\n".join(lines))
+    writer.add(_html_pages(result, folder, figures))
     return writer.written
 
 
+def _html_pages(
+    result: ReproduceResult, folder: Path, figures: dict[str, list[Path]]
+) -> list[Path]:
+    """report.html and one annotated page per paper, figures embedded with their captions."""
+    from pendcli.html_report import Figure, write_for_result
+
+    captioned = {
+        ("" if key == "tradeoff" else key): [
+            Figure(p, figure_caption(p)) for p in paths if p.suffix == ".png"
+        ]
+        for key, paths in figures.items()
+    }
+    return write_for_result(result, folder, captioned, result.equations)
+
+
 def _introduction(result: ReproduceResult) -> list[str]:
+    from pendcli.summary import propagation_tree
+
     summary = result.summary_rows()
-    return [
+    rows = [*result.claim_dicts(), *result.formula_dicts()]
+    tree = propagation_tree(rows)
+    lines = [
         "# pendcli reproduction report",
         "",
         "Every numerical claim of three papers on the pendulum, as printed, against its "
         "recomputation with the author's own model (and, where it answers a question about "
         "the claim, a fuller model). Regenerate with `make reproduce`; the same data is in "
-        "`claims.json` and `tables/`.",
+        "`claims.json` and `tables/`, and `report.html` shows each paper's text with every "
+        "number coloured by its verdict.",
         "",
         "## Summary",
         "",
         to_markdown(summary, [Column(k, k) for k in summary[0]]) if summary else "",
+    ]
+    if tree:
+        lines += [
+            "Where errors enter (roots, with their cause) and the rows that carry them:",
+            "",
+            "```",
+            *tree,
+            "```",
+            "",
+        ]
+    return [
+        *lines,
         "## What does not hold",
         "",
         *disagreement_digest(result),
@@ -238,12 +305,13 @@ def _introduction(result: ReproduceResult) -> list[str]:
 def _paper_section(
     result: ReproduceResult, key: str, writer: _Writer, figures: list[Path]
 ) -> list[str]:
-    """Citation, assumptions, verdicts, the claim and formula tables, and the figures."""
+    """Citation, assumptions, verdicts, the claim, formula and equation tables, the figures."""
     from pendcli.core.tables import load_paper_table
 
     table = load_paper_table(key)
     rows = [r.as_dict() for r in result.claims.get(key, [])]
-    lines = [f"## {key.capitalize()}", "", f"*{table.citation}* (seed `{table.seed}`).", ""]
+    text = f"tables/papers/{key}.txt"
+    lines = [f"## {key.capitalize()}", "", f"*{table.citation}* (text: `{text}`).", ""]
     if table.assumptions:
         lines += ["Assumptions:", ""] + [f"- {a}" for a in table.assumptions] + [""]
     counts = result.verdict_counts().get(key, {})
@@ -252,13 +320,68 @@ def _paper_section(
     lines += ["", "### Claims", "", to_markdown(rows, claim_columns(rows))]
     frows = [f.as_dict() for f in result.formulas.get(key, [])]
     if frows:
-        lines += ["### Derived formulas", "", to_markdown(frows, FORMULA_COLUMNS)]
+        columns = [
+            Column("note", "note", fmt=_short_formula_note) if c.key == "note" else c
+            for c in FORMULA_COLUMNS
+        ]
+        lines += ["### Derived formulas", "", to_markdown(frows, columns)]
+    lines += _equation_section(result.equations.get(key, []))
     writer.add(figures)
     if figures:
-        lines += ["### Figures", ""]
-        for link in writer.links(figures):
-            lines += [link, ""]
+        lines += ["### Figures", "", *writer.figure_lines(figures)]
     return lines
+
+
+def _equation_section(rows: list[dict[str, object]]) -> list[str]:
+    """Coverage of the ledger by status, then every equation that fails or is misprinted."""
+    if not rows:
+        return []
+    from pendcli.core.ledger import coverage
+    from pendcli.core.ledger_check import STATUSES
+
+    counts = [{"paper": p, **c} for p, c in coverage(rows).items()]
+    keys = ("paper", *STATUSES, "total", "checked")
+    wrong = [r for r in rows if r["status"] in ("fails", "misprint")]
+    columns = [Column(k, k) for k in ("equation", "section", "statement", "status", "note")]
+    return [
+        "### Equation ledger",
+        "",
+        "Every numbered equation and stated result, checked (`pendcli equations`):",
+        "",
+        to_markdown(counts, [Column(k, k) for k in keys]),
+        "Those that fail (with the corrected form the computation found) or are misprinted "
+        "(with the evident reading, which then holds):",
+        "",
+        to_markdown(wrong, columns) if wrong else "None.\n",
+    ]
+
+
+def figure_caption(path: Path) -> str:
+    """The caption of a report figure: from its paper's ``CAPTIONS``, else by its kind."""
+    for module in ("figures", "formulas"):
+        for key in ("tisserand", "lecornu", "charbonnier"):
+            found = _module(f"pendcli.papers.{key}.{module}")
+            captions = getattr(found, "CAPTIONS", {}) if found is not None else {}
+            if path.stem in captions:
+                return str(captions[path.stem])
+    tradeoff = _module("pendcli.tradeoff")
+    captions = getattr(tradeoff, "CAPTIONS", {}) if tradeoff is not None else {}
+    if path.stem in captions:
+        return str(captions[path.stem])
+    if path.stem.startswith("formulas_"):
+        paper = path.stem.removeprefix("formulas_").capitalize()
+        return (
+            f"{paper}'s derived formulas: |reference − formula| against the small parameter "
+            "(log-log), each panel one formula; green holds, red fails; dashed, the slope the "
+            "paper's derivation claims."
+        )
+    if path.stem == "work-precision":
+        return (
+            "Speed against accuracy: for each method, the worst relative error against an "
+            "independent reference (mpmath or closed forms) against the time per evaluation; "
+            "lower left is better. Timings come from the machine named in the text."
+        )
+    return path.stem.replace("_", " ")
 
 
 def _stability_section(result: ReproduceResult) -> list[str]:
@@ -284,7 +407,7 @@ def _tradeoff_section(writer: _Writer, data: _Tradeoff | None, figures: list[Pat
         "independent reference, against its time per evaluation (`pendcli tradeoff`). "
         f"Timings: {data.provenance}.",
         "",
-        *[f"{link}\n" for link in writer.links([f for f in figures if f.suffix == ".png"])],
+        *writer.figure_lines([f for f in figures if f.suffix == ".png"]),
     ]
 
 

@@ -55,7 +55,7 @@ RESULT = ReproduceResult(
 
 def test_digest_lists_each_claim_and_formula_that_does_not_hold():
     assert disagreement_digest(RESULT) == [
-        "- **demo.b** (p. 1): printed `8,41`, recomputed 8.4172: **truncated**. read 8,41.",
+        "- **demo.b** (p. 1): printed `8,41`, recomputed 8.4172: **truncated** (truncation). read 8,41.",
         "- **demo.g** (9): `a + b` fails; found `a − b`.",
     ]
 
@@ -189,3 +189,44 @@ def test_the_two_lanes_give_what_one_process_gives():
     forked, alone = reproduce_all(keys, jobs=2), reproduce_all(keys, jobs=1)
     assert forked.document() == alone.document() and forked.papers == keys
     assert set(forked.claims) == set(forked.formulas) == set(keys)
+
+
+@pytest.fixture(scope="module")
+def charbonnier_report(tmp_path_factory):
+    from pendcli.reproduce import reproduce_all
+
+    out = tmp_path_factory.mktemp("report") / "out"
+    result = reproduce_all(("charbonnier",), equations=True, jobs=1)
+    write_report(result, out, jobs=1)
+    return result, out
+
+
+def test_report_has_the_ledger_coverage_and_every_failing_equation(charbonnier_report):
+    result, out = charbonnier_report
+    text = (out / "report.md").read_text("utf-8")
+    assert "### Equation ledger" in text
+    wrong = [r for r in result.equations["charbonnier"] if r["status"] in ("fails", "misprint")]
+    assert wrong  # Charbonnier (9) fails
+    for row in wrong:
+        assert str(row["statement"]) in text
+    assert "seed `" not in text and "tables/papers/charbonnier.txt" in text
+
+
+def test_every_report_figure_has_a_written_caption(charbonnier_report):
+    import re
+
+    _, out = charbonnier_report
+    text = (out / "report.md").read_text("utf-8")
+    images = re.findall(r"!\[(.*?)\]\((.*?)\)", text)
+    assert images
+    for caption, path in images:
+        assert (out / path).is_file()
+        assert len(caption) > 60 and f"*{caption}*" in text  # a sentence, printed under it
+
+
+def test_report_html_pages_are_written_with_the_report(charbonnier_report):
+    _, out = charbonnier_report
+    page = (out / "papers" / "charbonnier.html").read_text("utf-8")
+    assert 'id="row-charbonnier.eq.9"' in page and 'class="hl s-fails"' in page
+    assert "data:image/png;base64," in page  # figures embedded: the page stands alone
+    assert 'href="papers/charbonnier.html' in (out / "report.html").read_text("utf-8")
