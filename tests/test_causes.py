@@ -225,17 +225,19 @@ def test_a_misprinted_or_misderived_formula_comes_with_the_right_one(formulas, k
 
 def _quarter_period_coefficients(delta):
     """(c0, c2) in ∂T/∂p = c0 + c2 k², T the time from the elongation to the vertical, from
-    θ = 2k cos u + k³θ3 (38) and ∂θ/∂p = kβ + k³δ (41): ∂T/∂p = −ε(K)/θ'(K)."""
+    θ = 2k cos u + k³θ3 (38) and ∂θ/∂p = kβ + k³δ (41): ∂T/∂p = −ε(K)/θ'(K).
+
+    θ' is k times (−2 sin u + k²θ3'), and K = π/2 (1 + k²/4): ∂T/∂p is a function G of
+    x = k², so c0 = G(0) and c2 = G'(0), both exact (sympy differentiation)."""
     import sympy as sp
 
-    u, k = sp.symbols("u k", real=True)
+    u, x = sp.symbols("u x", real=True)
     theta3 = (9 * sp.cos(u) + 12 * u * sp.sin(u) - sp.cos(3 * u)) / 24
     beta = (u**2 * sp.sin(u) - 3 * u * sp.cos(u) + 3 * sp.sin(u)) / 2
-    quarter = sp.pi / 2 * (1 + k**2 / 4)
-    slope = sp.diff(2 * k * sp.cos(u) + k**3 * theta3, u)
-    expr = -((k * beta + k**3 * delta(u, beta, theta3)) / slope).subs(u, quarter)
-    series = sp.series(expr, k, 0, 3).removeO()
-    return sp.simplify(series.coeff(k, 0)), sp.simplify(series.coeff(k, 2))
+    slope_over_k = -2 * sp.sin(u) + x * sp.diff(theta3, u)
+    quarter = sp.pi / 2 * (1 + x / 4)
+    g = (-(beta + x * delta(u, beta, theta3)) / slope_over_k).subs(u, quarter)
+    return sp.simplify(g.subs(x, 0)), sp.simplify(sp.diff(g, x).subs(x, 0))
 
 
 def _printed_delta(u, beta, theta3):
@@ -247,16 +249,28 @@ def _printed_delta(u, beta, theta3):
 
 
 def _solved_delta(u, beta, theta3):
-    """δ from the variational equation ε'' + cos θ ε = −(uθ'' + 2θ') at order k³, at rest."""
+    """δ from the variational equation ε'' + cos θ ε = −(uθ'' + 2θ') at order k³, at rest.
+
+    Solved exactly by undetermined coefficients: the forcing is a sum of uⁿ sin(mu), uⁿ cos(mu)
+    (m = 1, 3; after product-to-sum), so δ = Σ (a uⁿ sin mu + b uⁿ cos mu), n ≤ 4; the residual's
+    coefficients and the two initial conditions are linear in a, b (sympy linsolve). The
+    solution of the initial-value problem is unique, so any δ found this way is the one."""
     import sympy as sp
+    from sympy.simplify.fu import TR8
 
-    f = sp.Function("f")
     forcing = 2 * sp.cos(u) ** 2 * beta - (u * sp.diff(theta3, u, 2) + 2 * sp.diff(theta3, u))
-    ics = {f(0): 0, f(u).diff(u).subs(u, 0): 0}
-    return sp.dsolve(sp.Eq(f(u).diff(u, 2) + f(u), sp.expand(forcing)), f(u), ics=ics).rhs
+    waves = (sp.sin(u), sp.cos(u), sp.sin(3 * u), sp.cos(3 * u))
+    unknowns = sp.symbols("a0:20")
+    trial = sum(a * u ** (i % 5) * waves[i // 5] for i, a in enumerate(unknowns))
+    residual = sp.expand(TR8(sp.diff(trial, u, 2) + trial - forcing))
+    equations = [*sp.Poly(residual, u, *waves).coeffs(), trial.subs(u, 0)]
+    equations.append(sp.diff(trial, u).subs(u, 0))
+    (solution,) = sp.linsolve(equations, unknowns)
+    delta = trial.subs(dict(zip(unknowns, solution, strict=True)))
+    assert delta.free_symbols == {u}, "the initial-value problem left a coefficient free"
+    return delta
 
 
-@pytest.mark.slow
 def test_eq42_inherits_eq41(formulas):
     """From the printed (41), (42)'s printed (2π² + 1)/16 follows (the author was consistent);
     from the solved (41), the coefficient the numerical solution found."""

@@ -14,13 +14,13 @@ def test_9_as_printed_fails_and_its_correction_is_computed() -> None:
 
 
 def test_the_derivative_of_4_has_the_minus_sign_of_5() -> None:
-    t, k, _phi, e_s, e_c, theta1 = eq._variation()
+    t, k, _phi, e_s, e_c, theta1 = eq.variation_of_constants()
     wrong = e_s * sp.sin(k * t) + e_c * sp.cos(k * t)
     assert sp.simplify(sp.diff(theta1, t) - wrong) != 0
 
 
 def test_4_with_the_bracket_signs_swapped_does_not_solve_the_equation() -> None:
-    t, k, phi, e_s, e_c, _ = eq._variation()
+    t, k, phi, e_s, e_c, _ = eq.variation_of_constants()
     swapped = (e_c * sp.cos(k * t) - e_s * sp.sin(k * t)) / k
     residual = sp.diff(swapped, t, 2) + k**2 * swapped + phi(t)
     assert sp.simplify(residual) != 0

@@ -8,7 +8,7 @@ from pendcli.papers.tisserand import equations as eq
 
 
 def test_the_tan_sq_phi1_as_the_ocr_prints_it_is_not_the_squared_10() -> None:
-    *_, w, a, b, psi = eq._symbols()
+    *_, w, a, b, psi = eq.symbols()
     printed = (b * a - w) / (a * w - b)  # the flattened fraction
     exact = b / a * sp.tan(psi) ** 2
     u2 = a * sp.cos(psi) ** 2 + b * sp.sin(psi) ** 2
@@ -16,25 +16,25 @@ def test_the_tan_sq_phi1_as_the_ocr_prints_it_is_not_the_squared_10() -> None:
 
 
 def test_formula_5_alone_has_no_dt_so_the_cross_reference_needs_4() -> None:
-    x, w = eq._symbols()[3:5]
+    x, w = eq.symbols()[3:5]
     # (5) squared, times u⁴: not the series printed after « La formule (5) donnera ».
-    from_5 = (eq._dphi_over_u0u1() * x * w) ** 2
-    s, q, _ = eq._sum_q_r()
-    assert sp.simplify(eq._series(from_5) - (1 - s / 4 - q / 16)) != 0
+    from_5 = (eq.dphi_over_u0u1() * x * w) ** 2
+    s, q, _ = eq.sum_q_r()
+    assert sp.simplify(eq.series_in_x(from_5) - (1 - s / 4 - q / 16)) != 0
 
 
 def test_an_altered_coefficient_of_6_is_refuted() -> None:
-    _, _, _, x, w, a, b, _ = eq._symbols()
-    c, _, _ = eq._cosines()
-    exact = sp.sqrt(eq._square_from_4()) / c
+    _, _, _, x, w, a, b, _ = eq.symbols()
+    c, _, _ = eq.cosines()
+    exact = sp.sqrt(eq.square_from_4()) / c
     altered = 1 - x * (a + b) / 8 + sp.Rational(3, 8) * x * w + sp.Rational(36, 128) * x**2 * w**2
-    assert not eq._identity(eq._series(exact) - altered, "altered").holds
+    assert not eq.identity_check(eq.series_in_x(exact) - altered, "altered").holds
 
 
 def test_the_first_integrals_match_a_direct_spherical_pendulum() -> None:
     """θ'² of (1) at the apsides is zero and positive between (k = 1)."""
-    c, c0, c1, *_ = eq._symbols()
-    v = eq._energy_theta_dot_sq()
+    c, c0, c1, *_ = eq.symbols()
+    v = eq.energy_theta_dot_sq()
     values = {c0: sp.Rational(7, 10), c1: sp.Rational(9, 10)}
     assert v.subs({**values, c: values[c0]}) == 0
     assert sp.simplify(v.subs({**values, c: values[c1]})) == 0

@@ -77,7 +77,7 @@ def eq_3() -> EquationCheck:
     return _identity(residual**2 + rest**2 + start, "ODE, derivative and initial values")
 
 
-def _variation() -> tuple[Any, ...]:
+def variation_of_constants() -> tuple[Any, ...]:
     """θ1 = M cos kt + N sin kt with M, N from the paper's integrals, φ generic."""
     import sympy as sp
 
@@ -106,7 +106,7 @@ def eq_4() -> EquationCheck:
     """(4): θ1 = (E_s cos kt − E_c sin kt)/k solves θ1'' + k²θ1 + φ(t) = 0, θ1(0) = θ1'(0) = 0."""
     import sympy as sp
 
-    t, k, phi, *_, theta1 = _variation()
+    t, k, phi, *_, theta1 = variation_of_constants()
     residual = sp.diff(theta1, t, 2) + k**2 * theta1 + phi(t)
     start = theta1.subs(t, 0) ** 2 + sp.diff(theta1, t).subs(t, 0) ** 2
     return _identity(residual + start, "first-order equation for θ1, φ generic")
@@ -116,7 +116,7 @@ def eq_5() -> EquationCheck:
     """(5), read with kα for the printed kx: θ' is the derivative of (4)."""
     import sympy as sp
 
-    t, k, _phi, e_s, e_c, theta1 = _variation()
+    t, k, _phi, e_s, e_c, theta1 = variation_of_constants()
     reading = -(e_s * sp.sin(k * t) + e_c * sp.cos(k * t))
     return _identity(sp.diff(theta1, t) - reading, "d/dt of (4)'s bracket − (5)'s bracket")
 

@@ -30,7 +30,8 @@ def _reuse(*ids: str) -> EquationCheck:
     return check_from_formula_rows(_formula_rows(), [f"tisserand.{i}" for i in ids])
 
 
-def _identity(difference: Any, what: str, method: str = "sympy") -> EquationCheck:
+def identity_check(difference: Any, what: str, method: str = "sympy") -> EquationCheck:
+    """Holds when the difference simplifies to 0 (sympy)."""
     import sympy as sp
 
     zero = sp.simplify(difference) == 0
@@ -42,38 +43,40 @@ def _identity(difference: Any, what: str, method: str = "sympy") -> EquationChec
 
 
 @cache
-def _symbols() -> Any:
+def symbols() -> Any:
+    """c, c0, c1 (cos θ, cos θ0, cos θ1), the scale x, w, a, b (u² = xw, u0² = xa, u1² = xb),
+    ψ: the real sympy symbols every check here shares."""
     import sympy as sp
 
     return sp.symbols("c c0 c1 x w a b psi", real=True)
 
 
-def _energy_theta_dot_sq() -> Any:
+def energy_theta_dot_sq() -> Any:
     """θ'² from energy and angular momentum, apsides θ0, θ1 (c = cos θ), k = 1."""
-    c, c0, c1, *_ = _symbols()
+    c, c0, c1, *_ = symbols()
     h2 = 2 * (1 - c0**2) * (1 - c1**2) / (c0 + c1)
     return 2 * (c - c0) + h2 * (1 / (1 - c0**2) - 1 / (1 - c**2))
 
 
 def _big_p() -> Any:
-    c, c0, c1, *_ = _symbols()
+    c, c0, c1, *_ = symbols()
     return 1 + c * c0 + c * c1 + c0 * c1
 
 
 def eq_1() -> EquationCheck:
     """(1): k√2 dt = −sinθ √(cosθ0+cosθ1) dθ / √(...): θ'² against the first integrals."""
-    c, c0, c1, *_ = _symbols()
+    c, c0, c1, *_ = symbols()
     printed = 2 * (c - c0) * (c1 - c) * _big_p() / ((1 - c**2) * (c0 + c1))
-    return _identity(printed - _energy_theta_dot_sq(), "(θ')² from (1) − (θ')² from energy")
+    return identity_check(printed - energy_theta_dot_sq(), "(θ')² from (1) − (θ')² from energy")
 
 
 def eq_2() -> EquationCheck:
     """(2): dφ/dθ squared against h/sin²θ over θ' from the first integrals."""
-    c, c0, c1, *_ = _symbols()
+    c, c0, c1, *_ = symbols()
     h2 = 2 * (1 - c0**2) * (1 - c1**2) / (c0 + c1)
-    exact = h2 / (1 - c**2) ** 2 / _energy_theta_dot_sq()
+    exact = h2 / (1 - c**2) ** 2 / energy_theta_dot_sq()
     printed = (1 - c0**2) * (1 - c1**2) / ((1 - c**2) * (c - c0) * (c1 - c) * _big_p())
-    return _identity(printed - exact, "(dφ/dθ)² from (2) − from the first integrals")
+    return identity_check(printed - exact, "(dφ/dθ)² from (2) − from the first integrals")
 
 
 def _substitution_values(theta0: float, theta1: float, psi: float) -> dict[str, Any]:
@@ -160,58 +163,62 @@ def eq_5() -> EquationCheck:
 # --- series in the scale x: u² = x w, u0² = x a, u1² = x b -------------------------------
 
 
-def _cosines() -> tuple[Any, Any, Any]:
+def cosines() -> tuple[Any, Any, Any]:
+    """cos θ, cos θ0, cos θ1 in the scale x: √(1 − xw), √(1 − xa), √(1 − xb)."""
     import sympy as sp
 
-    _, _, _, x, w, a, b, _ = _symbols()
+    _, _, _, x, w, a, b, _ = symbols()
     return sp.sqrt(1 - x * w), sp.sqrt(1 - x * a), sp.sqrt(1 - x * b)
 
 
-def _series(expr: Any, order: int = ORDER) -> Any:
+def series_in_x(expr: Any, order: int = ORDER) -> Any:
+    """expr's series in the scale x about 0, through x^(order − 1), expanded."""
     import sympy as sp
 
-    x = _symbols()[3]
+    x = symbols()[3]
     return sp.expand(sp.series(expr, x, 0, order).removeO())
 
 
-def _sum_q_r() -> tuple[Any, Any, Any]:
+def sum_q_r() -> tuple[Any, Any, Any]:
     """S = u²+u0²+u1², Q = u⁴+u0⁴+u1⁴, R = u²u0²+u²u1²+u0²u1² in the scale x."""
-    _, _, _, x, w, a, b, _ = _symbols()
+    _, _, _, x, w, a, b, _ = symbols()
     return x * (w + a + b), x**2 * (w**2 + a**2 + b**2), x**2 * (w * a + w * b + a * b)
 
 
 def _quarter_sum() -> Any:
-    c, c0, c1 = _cosines()
+    c, c0, c1 = cosines()
     return (1 + c * c0 + c * c1 + c0 * c1) / 4
 
 
 def _eighth_product() -> Any:
-    c, c0, c1 = _cosines()
+    c, c0, c1 = cosines()
     return (c + c0) * (c + c1) * (c0 + c1) / 8
 
 
 def result_expansion_sum() -> EquationCheck:
     """(1/4)(1 + cosθcosθ0 + ...) = 1 − S/4 − Q/16 + R/16 + ..."""
-    s, q, r = _sum_q_r()
-    return _identity(_series(_quarter_sum()) - (1 - s / 4 - q / 16 + r / 16), "series to x²")
+    s, q, r = sum_q_r()
+    return identity_check(
+        series_in_x(_quarter_sum()) - (1 - s / 4 - q / 16 + r / 16), "series to x²"
+    )
 
 
 def result_expansion_product() -> EquationCheck:
     """(1/8)(cosθ+cosθ0)(cosθ+cosθ1)(cosθ0+cosθ1) = 1 − S/2 − Q/16 + 3R/16 + ..."""
-    s, q, r = _sum_q_r()
+    s, q, r = sum_q_r()
     printed = 1 - s / 2 - q / 16 + 3 * r / 16
-    return _identity(_series(_eighth_product()) - printed, "series to x²")
+    return identity_check(series_in_x(_eighth_product()) - printed, "series to x²")
 
 
-def _square_from_4() -> Any:
+def square_from_4() -> Any:
     """(k dt/dψ √(1−u²))², from (4): half of product/sum = eighth product / quarter sum."""
     return _eighth_product() / _quarter_sum()
 
 
 def result_square_from_4() -> EquationCheck:
     """« La formule (5) donnera » (k dt/dψ √(1−u²))² = 1 − S/4 − Q/16 − ...: from (4)."""
-    s, q, _ = _sum_q_r()
-    found = _identity(_series(_square_from_4()) - (1 - s / 4 - q / 16), "from (4), to x²")
+    s, q, _ = sum_q_r()
+    found = identity_check(series_in_x(square_from_4()) - (1 - s / 4 - q / 16), "from (4), to x²")
     return EquationCheck(
         holds=found.holds,
         method="cross-reference",
@@ -223,9 +230,9 @@ def result_sqrt() -> EquationCheck:
     """k dt/dψ √(1−u²) = 1 − S/8 − 5Q/128 − R/64 + ..."""
     import sympy as sp
 
-    s, q, r = _sum_q_r()
+    s, q, r = sum_q_r()
     printed = 1 - s / 8 - 5 * q / 128 - r / 64
-    return _identity(_series(sp.sqrt(_square_from_4())) - printed, "series to x²")
+    return identity_check(series_in_x(sp.sqrt(square_from_4())) - printed, "series to x²")
 
 
 def eq_6() -> EquationCheck:
@@ -233,9 +240,9 @@ def eq_6() -> EquationCheck:
     + 35u⁴/128 + ..."""
     import sympy as sp
 
-    _, _, _, x, w, a, b, _ = _symbols()
-    c, _, _ = _cosines()
-    exact = sp.sqrt(_square_from_4()) / c
+    _, _, _, x, w, a, b, _ = symbols()
+    c, _, _ = cosines()
+    exact = sp.sqrt(square_from_4()) / c
     printed = (
         1
         - x * (a + b) / 8
@@ -244,15 +251,15 @@ def eq_6() -> EquationCheck:
         + (sp.Rational(3, 8) - 5 * x * (a + b) / 64) * x * w
         + sp.Rational(35, 128) * x**2 * w**2
     )
-    return _identity(_series(exact) - printed, "series of (4) to x²")
+    return identity_check(series_in_x(exact) - printed, "series of (4) to x²")
 
 
-def _dphi_over_u0u1() -> Any:
+def dphi_over_u0u1() -> Any:
     """(1/(u0u1)) dφ/dψ from (5), in the scale x."""
     import sympy as sp
 
-    x, w = _symbols()[3:5]
-    c, c0, c1 = _cosines()
+    x, w = symbols()[3:5]
+    c, c0, c1 = cosines()
     return sp.sqrt((c + c0) * (c + c1)) / (x * w * c * sp.sqrt(4 * _quarter_sum()))
 
 
@@ -260,25 +267,25 @@ def eq_7() -> EquationCheck:
     """(7): (1/(u0u1)) dφ/dψ = 3/8 − (u0²+u1²)/32 + 1/u² + 35u²/128 + ..."""
     import sympy as sp
 
-    _, _, _, x, w, a, b, _ = _symbols()
+    _, _, _, x, w, a, b, _ = symbols()
     printed = sp.Rational(3, 8) - x * (a + b) / 32 + 1 / (x * w) + sp.Rational(35, 128) * x * w
-    regular = _series(_dphi_over_u0u1() - 1 / (x * w), 2)
-    return _identity(regular + 1 / (x * w) - printed, "Laurent series of (5) to x")
+    regular = series_in_x(dphi_over_u0u1() - 1 / (x * w), 2)
+    return identity_check(regular + 1 / (x * w) - printed, "Laurent series of (5) to x")
 
 
 def result_inverse_square_one() -> EquationCheck:
     """The coefficient of 1/u² in (7) is 1 to every order: u²·(1/(u0u1)) dφ/dψ → 1 as u → 0."""
     import sympy as sp
 
-    x, w = _symbols()[3:5]
-    limit = sp.limit(x * w * _dphi_over_u0u1(), w, 0)
-    return _identity(limit - 1, "exact limit of u²·(5)/(u0u1) at u = 0, u0, u1 symbolic")
+    x, w = symbols()[3:5]
+    limit = sp.limit(x * w * dphi_over_u0u1(), w, 0)
+    return identity_check(limit - 1, "exact limit of u²·(5)/(u0u1) at u = 0, u0, u1 symbolic")
 
 
 def _integral_check(printed: Any, integrand: Any, what: str) -> EquationCheck:
     import sympy as sp
 
-    psi = _symbols()[7]
+    psi = symbols()[7]
     derivative = sp.simplify(sp.diff(printed, psi) - integrand)
     at_zero = sp.simplify(printed.subs(psi, 0))
     zero = derivative == 0 and at_zero == 0
@@ -293,7 +300,7 @@ def _integral_check(printed: Any, integrand: Any, what: str) -> EquationCheck:
 def _u2() -> Any:
     import sympy as sp
 
-    *_, a, b, psi = _symbols()
+    *_, a, b, psi = symbols()
     return a * sp.cos(psi) ** 2 + b * sp.sin(psi) ** 2  # a = u0², b = u1²
 
 
@@ -301,7 +308,7 @@ def result_integral_inverse_square() -> EquationCheck:
     """∫₀^ψ dψ/u² = arctan((u1/u0) tan ψ)/(u0u1)."""
     import sympy as sp
 
-    *_, a, b, psi = _symbols()
+    *_, a, b, psi = symbols()
     u0, u1 = sp.Symbol("u0", positive=True), sp.Symbol("u1", positive=True)
     printed = sp.atan(u1 / u0 * sp.tan(psi)) / (u0 * u1)
     integrand = 1 / _u2().subs({a: u0**2, b: u1**2})
@@ -312,7 +319,7 @@ def result_integral_u2() -> EquationCheck:
     """∫₀^ψ u² dψ = (u0²+u1²)ψ/2 + (u0²−u1²) sin 2ψ/4."""
     import sympy as sp
 
-    *_, a, b, psi = _symbols()
+    *_, a, b, psi = symbols()
     printed = (a + b) * psi / 2 + (a - b) * sp.sin(2 * psi) / 4
     return _integral_check(printed, _u2(), "∫u² dψ")
 
@@ -321,7 +328,7 @@ def result_integral_u4() -> EquationCheck:
     """∫₀^ψ u⁴ dψ = (3(u0⁴+u1⁴)+2u0²u1²)ψ/8 + (u0⁴−u1⁴) sin 2ψ/4 + (u0²−u1²)² sin 4ψ/32."""
     import sympy as sp
 
-    *_, a, b, psi = _symbols()
+    *_, a, b, psi = symbols()
     printed = (
         (3 * (a**2 + b**2) + 2 * a * b) * psi / 8
         + (a**2 - b**2) * sp.sin(2 * psi) / 4
@@ -384,12 +391,12 @@ def eq_10() -> EquationCheck:
     """(10) with (3) and (16): the projection is (ρ0 cos ψ, ρ1 sin ψ), ψ the eccentric anomaly."""
     import sympy as sp
 
-    *_, psi = _symbols()
+    *_, psi = symbols()
     r0, r1 = sp.symbols("rho0 rho1", positive=True)
     rho_sq = r0**2 * sp.cos(psi) ** 2 + r1**2 * sp.sin(psi) ** 2  # (3) times l², (16)
     tan_phi1 = r1 / r0 * sp.tan(psi)  # (10)
     cos_sq = 1 / (1 + tan_phi1**2)
-    return _identity(
+    return identity_check(
         rho_sq * cos_sq - (r0 * sp.cos(psi)) ** 2,
         "ρ² cos² φ1 − (ρ0 cos ψ)²",
     )
@@ -403,7 +410,7 @@ def eq_III() -> EquationCheck:
 
 def _tan_sq_phi1() -> Any:
     """tan²φ1 = (u1²/u0²)(u0²−u²)/(u²−u1²): (10) squared with the tan²ψ of (3)."""
-    *_, w, a, b, _ = _symbols()
+    *_, w, a, b, _ = symbols()
     return b / a * (a - w) / (w - b)
 
 
@@ -411,34 +418,34 @@ def result_tan_sq_psi() -> EquationCheck:
     """tan²ψ = (u0²−u²)/(u²−u1²), from (3)."""
     import sympy as sp
 
-    *_, a, b, psi = _symbols()
+    *_, a, b, psi = symbols()
     w = _u2()
-    return _identity((a - w) / (w - b) - sp.tan(psi) ** 2, "(u0²−u²)/(u²−u1²) − tan²ψ")
+    return identity_check((a - w) / (w - b) - sp.tan(psi) ** 2, "(u0²−u²)/(u²−u1²) − tan²ψ")
 
 
 def result_tan_sq_phi1() -> EquationCheck:
     """tan²φ1, read as (u1²/u0²)(u0²−u²)/(u²−u1²) (the OCR flattens the two fractions)."""
     import sympy as sp
 
-    *_, a, b, psi = _symbols()
+    *_, a, b, psi = symbols()
     w = _u2()
     exact = (sp.sqrt(b) / sp.sqrt(a) * sp.tan(psi)) ** 2  # (10) squared
-    return _identity(_tan_sq_phi1().subs(_symbols()[4], w) - exact, "reading − (10)²")
+    return identity_check(_tan_sq_phi1().subs(symbols()[4], w) - exact, "reading − (10)²")
 
 
 def result_tan_sq_phi1_rho() -> EquationCheck:
     """The same in ρ = lu (16): (ρ1²/ρ0²)(ρ0²−ρ²)/(ρ²−ρ1²)."""
     import sympy as sp
 
-    *_, w, a, b, _ = _symbols()
+    *_, w, a, b, _ = symbols()
     ell = sp.Symbol("l", positive=True)
     in_rho = (ell**2 * b) / (ell**2 * a) * (ell**2 * a - ell**2 * w) / (ell**2 * w - ell**2 * b)
-    return _identity(in_rho - _tan_sq_phi1(), "the ρ form − the u form")
+    return identity_check(in_rho - _tan_sq_phi1(), "the ρ form − the u form")
 
 
 def eq_17() -> EquationCheck:
     """(17): 1/ρ² = cos²φ1/ρ0² + sin²φ1/ρ1², from tan²φ1 (ρ² = l²u²)."""
-    *_, w, a, b, _ = _symbols()
+    *_, w, a, b, _ = symbols()
     t2 = _tan_sq_phi1()
     cos_sq, sin_sq = 1 / (1 + t2), t2 / (1 + t2)
-    return _identity(cos_sq / a + sin_sq / b - 1 / w, "cos²φ1/u0² + sin²φ1/u1² − 1/u²")
+    return identity_check(cos_sq / a + sin_sq / b - 1 / w, "cos²φ1/u0² + sin²φ1/u1² − 1/u²")
