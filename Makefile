@@ -5,7 +5,7 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 OUT ?= out
 
-.PHONY: install reproduce test check regen lint bench clean
+.PHONY: install reproduce test test-browser check regen lint bench clean
 
 install: $(STAMP)
 
@@ -23,6 +23,10 @@ reproduce: $(STAMP)
 # (tests/test_report.py runs the forked paths explicitly).
 test: $(STAMP)
 	PENDCLI_JOBS=1 $(BIN)/python -m pytest -q -n 2 --dist worksteal
+
+# The HTML report in headless Chromium (Debian package chromium); skipped where it is absent.
+test-browser: $(STAMP)
+	$(BIN)/python -m pytest -q -m browser
 
 check: $(STAMP)
 	$(BIN)/pendcli check
