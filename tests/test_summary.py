@@ -70,3 +70,20 @@ def test_only_failing_keeps_just_what_does_not_hold():
     text = _reproduce("--only-failing", "--paper", "tisserand")
     assert "Tisserand: printed numbers" not in text  # all five agree
     assert "Summary: printed numbers" in text
+
+
+def test_equations_command_lists_each_label_and_filters_by_status():
+    import json
+
+    from cli_helpers import assert_clean_error, invoke
+
+    code, out, err = invoke("equations", "--paper", "charbonnier")
+    assert code == 0, err
+    for label in [f"({n})" for n in range(1, 10)] + ["(p)", "(q)"]:
+        assert label in out.split()
+    args = ("equations", "--paper", "charbonnier", "--status", "fails", "-f", "json")
+    code, out, err = invoke(*args)
+    rows = json.loads(out)["equations"]
+    assert rows and {r["status"] for r in rows} == {"fails"}
+    assert all("corrected:" in r["note"] for r in rows)  # each failure with its correction
+    assert_clean_error(*invoke("equations", "--status", "wrong")[::2])

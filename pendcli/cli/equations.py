@@ -19,8 +19,16 @@ StatusOption = Annotated[
 ]
 
 
+NotesOption = Annotated[
+    bool, typer.Option("--notes", help="Table format: every column (statement, check, note).")
+]
+
+
 def equations(
-    paper: PaperOption = None, status: StatusOption = None, fmt: FormatOption = OutputFormat.table
+    paper: PaperOption = None,
+    status: StatusOption = None,
+    notes: NotesOption = False,
+    fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
     from pendcli.core.claims import resolve_papers
@@ -28,19 +36,25 @@ def equations(
     from pendcli.core.ledger import coverage, equation_rows
     from pendcli.core.ledger_check import STATUSES
     from pendcli.render import Column
+    from pendcli.reproduce import EQUATION_KEYS
+    from pendcli.summary import compact_equation_columns
 
     if status is not None and status not in STATUSES:
         raise PendcliError(f"unknown status {status!r}; choose one of {', '.join(STATUSES)}")
     rows = equation_rows(resolve_papers(paper))
     counts = coverage(rows)
     shown = [r for r in rows if status is None or r["status"] == status]
-    cut = {"check": 60, "note": 60, "section": 24}
-    keys = ("id", "equation", "section", "status", "check", "observed_order", "note")
-    columns = [Column(k, k, table_max=cut.get(k)) for k in keys]
+    compact = fmt is OutputFormat.table and not notes
+    columns = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
     tally = [{"paper": p, **c} for p, c in counts.items()]
     count_columns = [Column(k, k) for k in ("paper", *STATUSES, "total", "checked")]
+    hint = " (--notes: what each states, how it is checked)" if compact else ""
+    sections = [
+        (f"{key.capitalize()}: equations{hint}", [r for r in shown if r["paper"] == key], columns)
+        for key in counts
+    ]
     emit(
         fmt,
-        [("equations", shown, columns), ("coverage", tally, count_columns)],
+        [*(s for s in sections if s[1]), ("coverage", tally, count_columns)],
         {"equations": shown, "coverage": counts},
     )
