@@ -357,30 +357,15 @@ def _equation_section(rows: list[dict[str, object]]) -> list[str]:
 
 
 def figure_caption(path: Path) -> str:
-    """The caption of a report figure: from its paper's ``CAPTIONS``, else by its kind."""
+    """The caption of a report figure: its paper's ``CAPTIONS``, or the tradeoff's ``CAPTION``."""
     for module in ("figures", "formulas"):
         for key in ("tisserand", "lecornu", "charbonnier"):
             found = _module(f"pendcli.papers.{key}.{module}")
             captions = getattr(found, "CAPTIONS", {}) if found is not None else {}
             if path.stem in captions:
                 return str(captions[path.stem])
-    tradeoff = _module("pendcli.tradeoff")
-    captions = getattr(tradeoff, "CAPTIONS", {}) if tradeoff is not None else {}
-    if path.stem in captions:
-        return str(captions[path.stem])
-    if path.stem.startswith("formulas_"):
-        paper = path.stem.removeprefix("formulas_").capitalize()
-        return (
-            f"{paper}'s derived formulas: |reference − formula| against the small parameter "
-            "(log-log), each panel one formula; green holds, red fails; dashed, the slope the "
-            "paper's derivation claims."
-        )
     if path.stem == "work-precision":
-        return (
-            "Speed against accuracy: for each method, the worst relative error against an "
-            "independent reference (mpmath or closed forms) against the time per evaluation; "
-            "lower left is better. Timings come from the machine named in the text."
-        )
+        return str(importlib.import_module("pendcli.tradeoff").CAPTION)
     return path.stem.replace("_", " ")
 
 

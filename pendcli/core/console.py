@@ -8,7 +8,9 @@ and a failed write to standard output names it, so the CLI can say which "file" 
 from __future__ import annotations
 
 import codecs
+import errno
 import os
+import signal
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
@@ -86,7 +88,12 @@ class NamedStream:
         self._stream = stream
         self._name = name
 
-    def _error(self, exc: OSError) -> Exception:
+    def _error(self, exc: OSError) -> BaseException:
+        # A reader that stops early (`pendcli reproduce | head`) is no fault: leave quietly
+        # with the status a shell gives a process killed by SIGPIPE, as other tools do.
+        if exc.errno == errno.EPIPE:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), self._stream.fileno())
+            return SystemExit(128 + signal.SIGPIPE)
         # A PendcliError, not an OSError: typer swallows EPIPE (exit 1) before pendcli sees it.
         from pendcli.core.errors import PendcliError
         from pendcli.core.files import describe_os_error
