@@ -55,7 +55,8 @@ RESULT = ReproduceResult(
 
 def test_digest_lists_each_claim_and_formula_that_does_not_hold():
     assert disagreement_digest(RESULT) == [
-        "- **demo.b** (p. 1): printed `8,41`, recomputed 8.4172: **truncated** (truncation). read 8,41.",
+        "- **demo.b** (p. 1): printed `8,41`, recomputed 8.4172: **truncated** (truncation). "
+        "read 8,41.",
         "- **demo.g** (9): `a + b` fails; found `a − b`.",
     ]
 
