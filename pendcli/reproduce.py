@@ -273,11 +273,15 @@ class _Lane:
 
     def __enter__(self) -> _Lane:
         if self.steps:
+            import importlib
             import multiprocessing
             from concurrent.futures import ProcessPoolExecutor
 
             for key, _ in self.steps:  # imported once, here, rather than in both processes
                 _paper_modules(key)
+            # scipy too (~0.3 s, both lanes need it): after the fork it would load twice.
+            for name in ("scipy.integrate", "scipy.special"):
+                importlib.import_module(name)
             self.pool = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"))
             self.future = self.pool.submit(_run_lane, self.steps, self.papers)
         return self
