@@ -213,12 +213,14 @@ def test_shell_completion_sees_lazy_commands():
         "COMP_CWORD": "2",
     }
     proc = subprocess.run(PENDCLI, env=env, capture_output=True, text=True, check=False)
-    assert proc.returncode == 0 and set(proc.stdout.split()) == {"zeros", "zero-length"}
+    assert proc.returncode == 0, proc.stderr
+    assert set(proc.stdout.split()) == {"zeros", "zero-length"}
     env |= {"COMP_WORDS": "pendcli ", "COMP_CWORD": "1"}
     proc = subprocess.run(PENDCLI, env=env, capture_output=True, text=True, check=False)
     assert {"reproduce", "lecornu", "tradeoff"} <= set(proc.stdout.split())
     proc = subprocess.run([*PENDCLI, "--show-completion", "bash"], capture_output=True, text=True)
-    assert proc.returncode == 0 and "_PENDCLI_COMPLETE=complete_bash" in proc.stdout
+    assert proc.returncode == 0, proc.stderr
+    assert "_PENDCLI_COMPLETE=complete_bash" in proc.stdout
 
 
 # --- issue 15: every OS error one line naming the path, exit 2; any locale -----------------
