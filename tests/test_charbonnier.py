@@ -160,7 +160,7 @@ def test_double_double_series_far_below_its_bound():
     from pendcli.papers.charbonnier import wallis
 
     ns = np.array([200, 201, 210, 300, 1837, 10**4, 10**7, 10**12, 10**15])
-    hi, lo = wallis._series_dd((ns + 2) / 2.0, np.sqrt)
+    hi, lo = wallis.series_dd((ns + 2) / 2.0, np.sqrt)
     for n, h, low in zip(ns, hi, lo, strict=True):
         with mpmath.workdps(50):
             ref = mp_beta_pi(int(n))

@@ -39,6 +39,7 @@ __all__ = [
     "log_gamma_ratio_fractions",
     "pi_bounds",
     "round_exact",
+    "series_dd",
     "wallis_rational",
 ]
 
@@ -180,7 +181,7 @@ def _constants() -> tuple[float, float, float, float, tuple[float, ...]]:
     return sqrt_pi_hi, float(root - Fraction(sqrt_pi_hi)), c3_hi, float(coeffs[1] - c3_hi), rest
 
 
-def _series_dd(m: Any, sqrt: Callable[[Any], Any]) -> tuple[Any, Any]:
+def series_dd(m: Any, sqrt: Callable[[Any], Any]) -> tuple[Any, Any]:
     """√π Γ(m)/Γ(m+½) = √(π/m) exp(-S(m)) as a double-double, m >= SERIES_FROM/2 + 1."""
     sp_hi, sp_lo, c3_hi, c3_lo, rest = _constants()
     inv_hi = 1.0 / m
@@ -253,7 +254,7 @@ def integral_pi(n: int) -> float:
     _check_n(n)
     if n < SERIES_FROM:
         return _small_table()[n + 1]
-    hi, lo = _series_dd((n + 2) / 2, math.sqrt)
+    hi, lo = series_dd((n + 2) / 2, math.sqrt)
     return hi if _rounds_alike(hi, lo) else _mpmath_rounded(n)
 
 
@@ -273,7 +274,7 @@ def integral_pi_array(ns: npt.ArrayLike) -> np.ndarray:
     out[small] = np.asarray(_small_table())[flat[small] + 1]
     large = np.flatnonzero(~small)
     if large.size:
-        hi, lo = _series_dd((flat[large] + 2) / 2.0, np.sqrt)
+        hi, lo = series_dd((flat[large] + 2) / 2.0, np.sqrt)
         out[large] = hi
         for i in np.flatnonzero(~_rounds_alike(hi, lo)):
             out[large[i]] = _mpmath_rounded(int(flat[large[i]]))
