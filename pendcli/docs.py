@@ -92,7 +92,9 @@ def main(argv: list[str]) -> int:
             print(f"{path}: a generated section is stale; run `make regen`", file=sys.stderr)
             return 1
         return 0
-    path.write_text(new, encoding="utf-8")
+    from pendcli.core.files import atomic_write
+
+    atomic_write(path, new)  # the README is committed: never half written
     return 0
 
 

@@ -259,12 +259,15 @@ def _csv_cells(p: Point) -> list[object]:
 
 
 def write_table(points: list[Point], path: Path) -> Path:
+    """The family's table, written atomically (``tables/tradeoff/*.csv`` are committed)."""
+    from pendcli.core.files import atomic_write
+
+    buffer = io.StringIO(newline="")
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(CSV_KEYS)
+    writer.writerows(_csv_cells(p) for p in points)
     path.parent.mkdir(parents=True, exist_ok=True)
-    with path.open("w", newline="", encoding="utf-8") as fh:
-        writer = csv.writer(fh, lineterminator="\n")
-        writer.writerow(CSV_KEYS)
-        writer.writerows(_csv_cells(p) for p in points)
-    return path
+    return atomic_write(path, buffer.getvalue())
 
 
 def read_table(path: Path) -> list[Point]:
