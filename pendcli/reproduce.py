@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -189,11 +189,7 @@ def reproduce_all(
     process (``jobs=1`` or ``PENDCLI_JOBS=1``: all here). A progress bar on stderr shows the
     step running, only on a terminal and when not ``quiet``.
     """
-    steps = [(k, "claims") for k in keys] + ([(k, "formulas") for k in keys] if formulas else [])
-    if equations:
-        steps += [(k, "equations") for k in keys]
-    if stability:
-        steps.append(("all", "stability"))
+    steps = _steps(keys, formulas, equations, stability)
     here, there = _lanes(steps, _jobs(jobs))
     result = ReproduceResult(papers=keys)
     with _Lane(there, keys) as other, _progress(quiet, len(steps)) as advance:
@@ -204,7 +200,23 @@ def reproduce_all(
         for key, what, value in other.results():
             _store(result, key, what, value)
             advance(f"{key}: {what}", 1)
+    for key, rows in result.equations.items():  # the ledger's halves, back in its order
+        rows.sort(key=lambda row: int(str(row["_order"])))
+        result.equations[key] = [{k: v for k, v in r.items() if k != "_order"} for r in rows]
     return result
+
+
+def _steps(keys: tuple[str, ...], formulas: bool, equations: bool, stability: bool) -> list[Step]:
+    """The steps of a run. The ledger is cut in two halves that two processes can share; the
+    first goes with the formula checks, whose rows it re-reads, so they are computed once."""
+    steps = [(k, "claims") for k in keys]
+    if formulas:
+        steps += [(k, "formulas+equations 0/2" if equations else "formulas") for k in keys]
+    if equations:
+        steps += [(k, f"equations {i}/2") for k in keys for i in ((1,) if formulas else (0, 1))]
+    if stability:
+        steps.append(("all", "stability"))
+    return steps
 
 
 @contextmanager
@@ -231,9 +243,13 @@ _COST = {
     ("lecornu", "formulas"): 10,
     ("charbonnier", "formulas"): 7,
     ("all", "stability"): 70,
-    ("tisserand", "equations"): 530,  # sympy derivations (one process, no cache)
-    ("lecornu", "equations"): 580,
-    ("charbonnier", "equations"): 90,
+    # the ledgers' halves: sympy derivations and ODE checks (measured, one core)
+    ("tisserand", "formulas+equations 0/2"): 100,
+    ("tisserand", "equations 1/2"): 30,
+    ("lecornu", "formulas+equations 0/2"): 160,
+    ("lecornu", "equations 1/2"): 280,
+    ("charbonnier", "formulas+equations 0/2"): 35,
+    ("charbonnier", "equations 1/2"): 10,
 }
 
 
@@ -279,8 +295,16 @@ class _Lane:
 
             for key, _ in self.steps:  # imported once, here, rather than in both processes
                 _paper_modules(key)
-            # scipy too (~0.3 s, both lanes need it): after the fork it would load twice.
-            for name in ("scipy.integrate", "scipy.special"):
+            # scipy too (~0.3 s, both lanes need it): after the fork it would load twice; and
+            # sympy with mpmath when both lanes check parts of the equation ledger.
+            names = ["scipy.integrate", "scipy.special"]
+            if any("equations" in what for _, what in self.steps):
+                names += [
+                    "sympy",
+                    "mpmath",
+                    *(f"pendcli.papers.{k}.equations" for k in self.papers),
+                ]
+            for name in names:
                 importlib.import_module(name)
             self.pool = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"))
             self.future = self.pool.submit(_run_lane, self.steps, self.papers)
@@ -313,13 +337,25 @@ def _run_step(key: str, what: str, papers: tuple[str, ...]) -> Any:
         return evaluate_paper(key)
     if what == "formulas":
         return formula_checks(key)
-    if what == "equations":
-        from pendcli.core.ledger import equation_rows
-
-        return equation_rows([key])
+    if what.startswith(("equations", "formulas+equations")):
+        return _ledger_step(key, what)
     from pendcli.stability import stability_rows
 
     return stability_rows(papers)
+
+
+def _ledger_step(key: str, what: str) -> Any:
+    """``equations i/n``: that part of the ledger, each row with its place (``_order``);
+    ``formulas+equations i/n``: the formula checks too, lent to the ledger's checks."""
+    from pendcli.core.ledger import equation_rows
+    from pendcli.papers import sharing_formula_rows
+
+    index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
+    rows = formula_checks(key) if what.startswith("formulas") else None
+    with sharing_formula_rows(key, rows) if rows is not None else nullcontext():
+        part = equation_rows([key], part=(index, count))
+    ordered = [{**row, "_order": index * 10_000 + i} for i, row in enumerate(part)]
+    return (rows, ordered) if rows is not None else ordered
 
 
 def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
@@ -327,7 +363,10 @@ def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
         result.claims[key] = value
     elif what == "formulas":
         result.formulas[key] = value
-    elif what == "equations":
-        result.equations[key] = value
+    elif what.startswith("equations"):
+        result.equations.setdefault(key, []).extend(value)
+    elif what.startswith("formulas+equations"):
+        result.formulas[key], rows = value
+        result.equations.setdefault(key, []).extend(rows)
     else:
         result.stability = value

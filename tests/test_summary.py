@@ -87,3 +87,23 @@ def test_equations_command_lists_each_label_and_filters_by_status():
     assert rows and {r["status"] for r in rows} == {"fails"}
     assert all("corrected:" in r["note"] for r in rows)  # each failure with its correction
     assert_clean_error(*invoke("equations", "--status", "wrong")[::2])
+
+
+def test_ledger_halves_in_two_processes_give_the_ledger_in_order():
+    # reproduce cuts each ledger in two halves run in two processes; the rows must come back
+    # whole and in the ledger's order, equal to one direct evaluation.
+    from pendcli.core.ledger import equation_rows
+    from pendcli.reproduce import reproduce_all
+
+    direct = equation_rows(["charbonnier"])
+    for jobs in (1, 2):
+        result = reproduce_all(("charbonnier",), equations=True, jobs=jobs)
+        assert result.equations["charbonnier"] == direct
+
+
+def test_formula_rows_are_shared_only_inside_the_block():
+    from pendcli.papers import formula_checks, sharing_formula_rows
+
+    with sharing_formula_rows("tisserand", []):
+        assert formula_checks("tisserand") == []
+    assert formula_checks("charbonnier")  # computed again once the block is left

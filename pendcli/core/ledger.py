@@ -309,25 +309,36 @@ class Evaluated:
         }
 
 
-def evaluate(paper: str, root: Path | None = None) -> list[Evaluated]:
-    """Every row of the paper's ledger with its check run and its consistency verified."""
+# (i, n): the i-th of n contiguous slices of a ledger's rows, so that two processes can
+# share a long ledger; (0, 1) is the whole ledger.
+Part = tuple[int, int]
+
+
+def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
+    """Every row of the paper's ledger (or of ``part`` of it) with its check run and its
+    consistency verified."""
+    rows = load_ledger(paper, root).rows
+    index, count = part
+    start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
     out = []
-    for row in load_ledger(paper, root).rows:
+    for row in rows[start:stop]:
         check = run_check(row)
         out.append(Evaluated(row, check, verify(row, check)))
     return out
 
 
-def equation_rows(papers: Iterable[str], root: Path | None = None) -> list[dict[str, object]]:
+def equation_rows(
+    papers: Iterable[str], root: Path | None = None, part: Part = (0, 1)
+) -> list[dict[str, object]]:
     """The rows of ``reproduce --format json`` under "equations", for the papers that have a
-    ledger; raises PendcliError if a check contradicts the status its row records."""
+    ledger (``part`` of each); raises PendcliError if a check contradicts its row's status."""
     available = set(ledger_papers(root))
     rows = []
     problems = []
     for paper in papers:
         if paper not in available:
             continue
-        for item in evaluate(paper, root):
+        for item in evaluate(paper, root, part):
             rows.append(item.as_dict())
             if item.problem:
                 problems.append(f"{item.row.id}: {item.problem}")

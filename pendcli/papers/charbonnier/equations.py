@@ -18,9 +18,9 @@ from pendcli.core.ledger_check import EquationCheck
 
 @cache
 def _formula_rows() -> tuple[Any, ...]:
-    from pendcli.papers.charbonnier.formulas import formula_checks
+    from pendcli.papers import formula_checks
 
-    return tuple(formula_checks())
+    return tuple(formula_checks("charbonnier"))
 
 
 def _reuse(*ids: str) -> EquationCheck:

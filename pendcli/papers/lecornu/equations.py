@@ -128,9 +128,9 @@ def _trig_text(form: dict[tuple[int, str, int], Any]) -> str:
 
 @cache
 def _formula_rows() -> dict[str, Any]:
-    from pendcli.papers.lecornu.formulas import formula_checks
+    from pendcli.papers import formula_checks
 
-    return {r.id: r for r in formula_checks()}
+    return {r.id: r for r in formula_checks("lecornu")}
 
 
 def _from_formulas(*ids: str) -> EquationCheck:

@@ -21,9 +21,9 @@ ORDER = 3  # series in x kept through x² (fourth order in the angles)
 
 @cache
 def _formula_rows() -> tuple[Any, ...]:
-    from pendcli.papers.tisserand.formulas import formula_checks
+    from pendcli.papers import formula_checks
 
-    return tuple(formula_checks())
+    return tuple(formula_checks("tisserand"))
 
 
 def _reuse(*ids: str) -> EquationCheck:
