@@ -4,7 +4,8 @@ The README shows real output and the real JSON schema; this module produces both
 there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
 (``<!-- sample:start -->`` ... ``<!-- sample:end -->`` for the sample output,
 ``<!-- schema:start -->`` ... ``<!-- schema:end -->`` for the JSON schema from
-:mod:`pendcli.core.schema`); ``--check`` exits 1 if either is stale.
+:mod:`pendcli.core.schema`, ``<!-- ledger:start -->`` ... for the equation ledgers'
+coverage); ``--check`` exits 1 if one is stale.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from pathlib import Path
 from pendcli.render.columns import Column, Row
 from pendcli.render.markdown import to_markdown
 
-__all__ = ["SECTIONS", "main", "sample_section", "schema_section", "splice"]
+__all__ = ["SECTIONS", "ledger_section", "main", "sample_section", "schema_section", "splice"]
 
 
 def sample_section() -> str:
@@ -68,7 +69,35 @@ def schema_section() -> str:
 
 
 # marker name -> what goes between <!-- name:start --> and <!-- name:end -->
-SECTIONS: dict[str, Callable[[], str]] = {"sample": sample_section, "schema": schema_section}
+def ledger_section() -> str:
+    """Coverage of the equation ledgers: the labels each text prints, rows by status."""
+    from pendcli.core.claims import PAPERS
+    from pendcli.core.ledger import coverage, equation_rows, labels_in_text
+    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.tables import tables_dir
+
+    counts = coverage(equation_rows(PAPERS))
+    rows: list[Row] = []
+    for key in PAPERS:
+        text = (tables_dir() / "papers" / f"{key}.txt").read_text("utf-8")
+        c = counts[key]
+        rows.append(
+            {
+                "paper": key,
+                "labels in the text": len(labels_in_text(text)),
+                "rows": c["total"],
+                **{status: c[status] for status in STATUSES},
+                "checked": f"{round(100 * c['checked'] / c['total'])} %",
+            }
+        )
+    return to_markdown(rows, [Column(k, k) for k in rows[0]])
+
+
+SECTIONS: dict[str, Callable[[], str]] = {
+    "sample": sample_section,
+    "schema": schema_section,
+    "ledger": ledger_section,
+}
 
 
 def splice(readme: str, section: str, name: str = "sample") -> str:
