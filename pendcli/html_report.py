@@ -294,10 +294,8 @@ def paper_page(
         '<nav><a href="../report.html">← report</a></nav>',
         f"<h1>{_e(paper.capitalize())}</h1><p><i>{_e(citation)}</i></p>",
         _legend(),
-        f"<p>{len([c for c in claims if c['id'] in located])} of {len(claims)} printed numbers "
-        f"and {len([q for q in equations if q['id'] in located])} of {len(equations)} equation "
-        "labels located in the OCR text; click one to reach its row, click a row's id to go "
-        "back.</p>",
+        _located_text(claims, equations, located),
+        _jump_list([*claims, *formulas, *equations]),
         f'<pre class="paper">{annotate(text, marks)}</pre>',
         "<h2>Printed numbers</h2>",
         _claim_table(claims, located),
@@ -309,6 +307,25 @@ def paper_page(
     if figures:
         parts += ['<h2 id="figures">Figures</h2>', *(_figure_html(f) for f in figures)]
     return _page(f"pendcli: {paper}", "\n".join(parts))
+
+
+def _located_text(claims: Sequence[Row], equations: Sequence[Row], located: set[str]) -> str:
+    labelled = [q for q in equations if q.get("equation")]
+    return (
+        f"<p>{sum(c['id'] in located for c in claims)} of {len(claims)} printed numbers and "
+        f"{sum(q['id'] in located for q in labelled)} of {len(labelled)} equation labels "
+        "located in the OCR text (results stated in prose are in the ledger below); click a "
+        "mark to reach its row, a row's id to come back.</p>"
+    )
+
+
+def _jump_list(rows: Sequence[Row]) -> str:
+    """Links to every row that does not agree or hold, at the top of the page."""
+    wrong = [r for r in rows if _disagrees(r)]
+    if not wrong:
+        return "<p>Everything on this page agrees or holds.</p>"
+    links = ", ".join(f'<a href="#row-{_e(r["id"])}">{_e(r["id"])}</a>' for r in wrong)
+    return f"<p><strong>Does not agree or hold ({len(wrong)}):</strong> {links}</p>"
 
 
 # --- the overview page ----------------------------------------------------------------------
@@ -391,7 +408,9 @@ def _disagreements(claims: Sequence[Row], formulas: Sequence[Row], eqs: Sequence
 
 
 def _disagrees(row: Row) -> bool:
-    return row.get("verdict", row.get("status")) not in ("agrees", "holds")
+    from pendcli.summary import disagrees
+
+    return disagrees(row)
 
 
 def _counts_table(counts: Mapping[str, Mapping[str, int]], keys: Sequence[str]) -> str:
