@@ -35,6 +35,7 @@ from pendcli.papers.charbonnier.wallis import (
     MAX_N,
     SERIES_FROM,
     bernoulli,
+    check_n,
     integral_pi,
     integral_pi_array,
     log_gamma_ratio_fractions,
@@ -77,15 +78,7 @@ _LOG_TINY = -1075 * math.log(2.0)  # log of half the smallest subnormal: below i
 
 def check_inputs(n: int, x: float) -> tuple[int, float]:
     """(n, float(x)) if -1 <= n <= MAX_N is an integer and x is real with |x| <= MAX_X."""
-    return _check_n(n), _check_x(x)
-
-
-def _check_n(n: int) -> int:
-    if isinstance(n, bool) or not isinstance(n, int):
-        raise PendcliError(f"n must be an integer >= -1, got {n!r}")
-    if not -1 <= n <= MAX_N:
-        raise PendcliError(f"n = {n} is out of range; valid range is -1 <= n <= {MAX_N:.0e}")
-    return n
+    return check_n(n), _check_x(x)
 
 
 def _check_x(x: float) -> float:
@@ -107,7 +100,7 @@ def integral_pi_rational(n: int) -> tuple[Fraction, int]:
 
     Uncached (O(n) Fraction steps each call): :func:`integral_pi_exact` is the cached form.
     """
-    _check_n(n)
+    check_n(n)
     if n > MAX_EXACT_N:
         raise PendcliError(
             f"exact I_n(π) is limited to n <= {MAX_EXACT_N} (got {n}); use integral_pi"
@@ -127,7 +120,7 @@ def integral_pi_exact(n: int) -> tuple[Fraction, int]:
 
 def printed_closed_form(n: int) -> tuple[Fraction, int]:
     """The printed general formula as printed: products of evens over odds (no recurrence)."""
-    _check_n(n)
+    check_n(n)
     if n == -1:
         return Fraction(1), 1
     if n % 2 == 0:  # 2·(2·4…n)/(1·3·5…(n+1))
@@ -145,7 +138,7 @@ def integral_pi_sequence(n_max: int) -> Iterator[tuple[int, Fraction, int]]:
     Both parities' exact states are carried from row to row (:func:`integral_pi_rational`
     restarts from n = 0 for each n, O(n²) in all).
     """
-    _check_n(n_max)
+    check_n(n_max)
     state = [Fraction(2), Fraction(1)]  # I_0(π) = 2, I_(-1)(π) = π: the even and odd chains
     yield -1, state[1], 1
     for n in range(n_max + 1):
@@ -159,7 +152,7 @@ def printed_closed_form_sequence(n_max: int) -> Iterator[tuple[int, int, int, in
 
     I_n(π) = (numerator/denominator)·π**p; each product gains one factor per row.
     """
-    _check_n(n_max)
+    check_n(n_max)
     yield -1, 1, 1, 1
     even = [2, 1]  # 2·(2·4…n), 1·3·5…(n+1)
     odd = [1, 1]  # 1·3·5…n, 2·4·6…(n+1)
@@ -286,7 +279,7 @@ def integral_fast(n: int, x: float) -> float:
     ½ u^(a-1) (1-u)^(-½)) removes the a-fold amplification of the rounding of sin²x; what
     remains is scipy.special.betainc's own error (up to ~200 ulp at n ~ 1000, measured).
     """
-    _check_n(n)
+    check_n(n)
     x = float(x)
     if not 0.0 <= x <= math.pi:
         raise PendcliError(f"x = {x} is out of range for integral_fast; valid range is 0 <= x <= π")
@@ -325,7 +318,7 @@ def _fast_half(n: int, x: float, x_lo: float, full: float) -> float:
 
 def integral(n: int, x: float = math.pi) -> float:
     """I_n(x) = ∫_0^x sin^(n+1) t dt for integer n >= -1 and real |x| <= 1e6."""
-    _check_n(n)
+    check_n(n)
     x = _check_x(x)
     if n == -1:
         return x
@@ -395,7 +388,7 @@ def _recurrence_too_long(n: int) -> PendcliError:
 
 def integral_recurrence(n: int, x: float = math.pi) -> float:
     """Charbonnier's recurrence in double precision, exactly as printed (I_0 = 1 - cos x)."""
-    _check_n(n)
+    check_n(n)
     if n > RECURRENCE_MAX_N:
         raise _recurrence_too_long(n)
     c, s = math.cos(x), math.sin(x)
@@ -414,7 +407,7 @@ def integral_recurrence_sequence(n_max: int, x: float = math.pi) -> list[float]:
 
     Both parity chains are carried from row to row: n_max/2 steps each, not n²/4 in all.
     """
-    _check_n(n_max)
+    check_n(n_max)
     if n_max > RECURRENCE_MAX_N:
         raise _recurrence_too_long(n_max)
     c, s = math.cos(x), math.sin(x)
@@ -433,7 +426,7 @@ def integral_recurrence_with_error(n: int, x: float = math.pi) -> tuple[float, f
     scaled by n/(n+1) as the value is; I_0 = 1 - cos x starts with cos x's rounding, all of
     which remains when I_n(x) is tiny (small x): the bound then exceeds the value itself.
     """
-    _check_n(n)
+    check_n(n)
     if n > RECURRENCE_MAX_N:
         raise _recurrence_too_long(n)
     eps = 2.0**-53

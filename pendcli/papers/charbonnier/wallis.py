@@ -34,6 +34,7 @@ __all__ = [
     "MAX_N",
     "SERIES_FROM",
     "bernoulli",
+    "check_n",
     "integral_pi",
     "integral_pi_array",
     "log_gamma_ratio_fractions",
@@ -241,7 +242,8 @@ def _mpmath_rounded(n: int) -> float:
 # ----------------------------------------------------------------- entry points
 
 
-def _check_n(n: int) -> int:
+def check_n(n: int) -> int:
+    """``n`` if it is an integer with -1 <= n <= MAX_N, else a one-line PendcliError."""
     if isinstance(n, bool) or not isinstance(n, int):
         raise PendcliError(f"n must be an integer >= -1, got {n!r}")
     if not -1 <= n <= MAX_N:
@@ -251,7 +253,7 @@ def _check_n(n: int) -> int:
 
 def integral_pi(n: int) -> float:
     """I_n(π) = B(½, (n+2)/2), correctly rounded, for integer -1 <= n <= 10^15 (~1-10 µs)."""
-    _check_n(n)
+    check_n(n)
     if n < SERIES_FROM:
         return _small_table()[n + 1]
     hi, lo = series_dd((n + 2) / 2, math.sqrt)
