@@ -53,7 +53,11 @@ LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
         "formulas",
         "Derived formulas against direct numerical solutions: observed order, verdict.",
     ),
-    "equations": ("pendcli.cli.equations", "equations", "The equation ledger: each status."),
+    "equations": (
+        "pendcli.cli.equations",
+        "equations",
+        "Every numbered equation and stated result, checked: holds, fails, misprint, ...",
+    ),
     "tradeoff": (
         "pendcli.cli.tradeoff",
         "tradeoff",
