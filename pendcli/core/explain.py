@@ -40,6 +40,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
+from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber
 from pendcli.core.tables import PublishedValue
 
@@ -58,23 +59,23 @@ __all__ = [
     "Step",
     "Target",
     "axis",
+    "bessel_axis",
+    "bessel_exact",
     "chop",
     "coincidence_rate",
     "constant_axis",
     "decimal_target",
     "digit_slips",
     "explain",
-    "printed_fraction",
-    "target_of",
-    "table_zero",
-    "bessel_axis",
-    "bessel_exact",
     "fraction_text",
+    "printed_fraction",
     "random_targets",
     "round_half_up",
     "rounding_axis",
     "scan",
     "significant_round",
+    "table_zero",
+    "target_of",
 ]
 
 COINCIDENCE_THRESHOLD = 0.05  # explained: fewer than 1 random target in 20 reproduced as simply
@@ -220,6 +221,7 @@ class Target:
     units: int  # the printed value / unit, exactly
     unit: Fraction  # the value of one unit of the last printed place (0,01; 1'')
     bound: bool = False  # an upper bound: the finish rounds up
+    exact: bool = False  # an exact printed value (a fraction): reproduced only if equal
 
     @property
     def value(self) -> Fraction:
@@ -301,6 +303,10 @@ class Chain:
 
 def _finishes(target: Target, value: Fraction, chop_allowed: bool) -> Iterator[tuple[Step, int]]:
     q = value / target.unit
+    if target.exact:  # a printed fraction: equal or nothing, no rounding
+        if q.denominator == 1:
+            yield Step("finish", "exactly", 0), int(q)
+        return
     if target.bound:  # « au plus »: the bound is the value rounded up at the printed place
         yield Step("finish", "rounded up (a bound)", 0), math.ceil(q)
         return
@@ -497,7 +503,8 @@ class TableReading:
             "linear": "linear interpolation",
             "reversed": "interpolation with the correction's sign reversed",
         }[self.mode]
-        return f"{what} from a table at step {fraction_text(self.step)}, {self.decimals} decimals, {words}"
+        step = fraction_text(self.step)
+        return f"{what} from a table at step {step}, {self.decimals} decimals, {words}"
 
     def read(self, order: int, z: Fraction) -> Fraction:
         below = math.floor(z / self.step) * self.step
@@ -578,3 +585,99 @@ def target_of(entry: PublishedValue) -> Target:
         unit = Fraction(1, 3600)
         return Target(entry.published, int(printed_fraction(number) / unit), unit, bound)
     raise ValueError(f"{entry.id}: {number.text!r} has no last printed place")
+
+
+# --- a paper's explanations ----------------------------------------------------------------
+
+Builders = Mapping[str, Callable[[], Computation]]
+
+
+@dataclass(frozen=True)
+class Declared:
+    """What a paper's explain module declares: computations by claim id, and their targets."""
+
+    computations: Builders
+    targets: Mapping[str, Target]
+
+
+def declared(key: str) -> Declared:
+    """The declarations of paper ``key`` (explicit imports: no module found by its name)."""
+    if key == "tisserand":
+        from pendcli.papers.tisserand import explain as tisserand
+
+        return Declared(tisserand.computations(), tisserand.targets())
+    if key == "lecornu":
+        from pendcli.papers.lecornu import explain as lecornu
+
+        return Declared(lecornu.computations(), lecornu.targets())
+    if key == "charbonnier":
+        from pendcli.papers.charbonnier import explain as charbonnier
+
+        return Declared(charbonnier.computations(), charbonnier.targets())
+    raise PendcliError(f"unknown paper {key!r}; choose one of tisserand, lecornu, charbonnier")
+
+
+@dataclass(frozen=True)
+class ExplainedRow:
+    """One printed number: its verdict and cause, and what the search found (or did not)."""
+
+    id: str
+    paper: str
+    printed: str
+    verdict: str
+    cause: str | None  # the table's cause (one of CAUSES), None for a row that agrees
+    explanation: Explanation | None  # None: no computation declared for it
+
+    @property
+    def explained(self) -> bool:
+        return self.explanation is not None and self.explanation.explained
+
+    @property
+    def cause_with_mechanism(self) -> str:
+        """The cause and its mechanism where one is found below the threshold, else
+        "unexplained" (a row that agrees: its verdict, with the mechanism if any)."""
+        base = self.cause or self.verdict
+        if self.explanation is None or not self.explanation.explained:
+            return f"{base}; mechanism unexplained"
+        return f"{base}: {self.explanation.mechanism}"
+
+    def as_dict(self) -> dict[str, object]:
+        if self.explanation is not None:
+            out = self.explanation.as_dict()
+        else:
+            out = {"id": self.id, "printed": self.printed, "mechanism": None, "steps": []}
+            out |= {"cost": None, "coincidence": None, "coincidence_near": None}
+            out |= {"explained": False, "searched": "nothing: no computation declared"}
+            out["note"] = ""
+        return {
+            **out,
+            "paper": self.paper,
+            "verdict": self.verdict,
+            "cause": self.cause_with_mechanism,
+        }
+
+
+def explain_rows(
+    key: str,
+    verdicts: Mapping[str, tuple[str, str | None, str]],
+    claim_id: str | None = None,
+    progress: Callable[[str], None] | None = None,
+) -> list[ExplainedRow]:
+    """Explain every printed number of ``key`` that does not agree, and every one its module
+    declares (``verdicts``: id -> (verdict, cause, printed), in table order); only ``claim_id`` if
+    given. A row that does not agree and has no declared computation is kept, unexplained."""
+    found = declared(key)
+    wanted = [
+        cid
+        for cid, (verdict, _, _) in verdicts.items()
+        if (verdict != "agrees" or cid in found.computations) and claim_id in (None, cid)
+    ]
+    rows = []
+    for cid in wanted:
+        if progress is not None:
+            progress(cid)
+        verdict, cause, printed = verdicts[cid]
+        build = found.computations.get(cid)
+        explanation = None if build is None else explain(cid, build(), found.targets[cid])
+        rows.append(ExplainedRow(cid, key, printed, verdict, cause, explanation))
+    return rows

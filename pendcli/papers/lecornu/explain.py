@@ -33,6 +33,7 @@ from pendcli.core.explain import (
     Axis,
     Computation,
     Option,
+    Target,
     axis,
     bessel_axis,
     constant_axis,
@@ -40,10 +41,11 @@ from pendcli.core.explain import (
     printed_fraction,
     rounding_axis,
     table_zero,
+    target_of,
 )
 from pendcli.core.tables import load_paper_table
 
-__all__ = ["computations"]
+__all__ = ["computations", "targets"]
 
 PAPER = "lecornu"
 ELONGATIONS = 5
@@ -308,3 +310,9 @@ def computations() -> dict[str, Callable[[], Computation]]:
     """Claim id -> a builder of the author's computation of that printed number (built only
     when asked: a Bessel table is read lazily)."""
     return _builders()
+
+
+def targets() -> dict[str, Target]:
+    """The printed number of every declared claim, at its printed precision."""
+    table = load_paper_table(PAPER)
+    return {cid: target_of(table.claim(cid)) for cid in _builders()}
