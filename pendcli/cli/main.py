@@ -58,6 +58,7 @@ LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
         "equations",
         "Every numbered equation and stated result, checked: holds, fails, misprint, ...",
     ),
+    "explain": ("pendcli.cli.explain", "explain", "How he got each wrong digit, and the odds."),
     "tradeoff": (
         "pendcli.cli.tradeoff",
         "tradeoff",

@@ -1,0 +1,123 @@
+"""`pendcli explain`: how the author got each printed number that does not agree (issue 24)."""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Annotated
+
+import typer
+
+from pendcli.cli.common import FormatOption, PaperOption, emit
+from pendcli.render import OutputFormat
+
+if TYPE_CHECKING:
+    from pendcli.core.explain import ExplainedRow
+
+ClaimArgument = Annotated[
+    str | None,
+    typer.Argument(help="One claim id (pendcli list shows them); default: every row."),
+]
+
+
+def explain(
+    claim: ClaimArgument = None,
+    paper: PaperOption = None,
+    fmt: FormatOption = OutputFormat.table,
+) -> None:
+    """The author's hand computation behind each wrong digit, with the odds of a coincidence."""
+    from pendcli.core.claims import resolve_papers
+
+    keys = _papers_for(claim, paper) if claim else resolve_papers(paper)
+    rows = [r for key in keys for r in _explained(key, claim)]
+    if claim and not rows:
+        raise _nothing_to_explain(claim)
+    emit(fmt, _sections(rows, keys), {"explanations": [r.as_dict() for r in rows]})
+
+
+def _papers_for(claim: str, paper: str | None) -> tuple[str, ...]:
+    """The paper holding ``claim`` (its id's first part), checked against --paper."""
+    from pendcli.core.claims import PAPERS, resolve_papers
+    from pendcli.core.errors import PendcliError
+    from pendcli.core.tables import load_paper_table
+
+    key = claim.split(".", 1)[0]
+    known = key in PAPERS and any(c.id == claim for c in load_paper_table(key).claims)
+    if not known:
+        raise PendcliError(
+            f"unknown claim {claim!r}; `pendcli list` shows every claim id "
+            f"(ids start with {', '.join(p + '.' for p in PAPERS)})"
+        )
+    if paper is not None and resolve_papers(paper) != (key,):
+        raise PendcliError(f"claim {claim!r} belongs to {key}, not to --paper {paper}")
+    return (key,)
+
+
+def _nothing_to_explain(claim: str) -> Exception:
+    from pendcli.core.errors import PendcliError
+
+    return PendcliError(
+        f"claim {claim!r} agrees with its recomputation and declares no hand computation: "
+        "nothing to explain (`pendcli explain` lists the rows it explains)"
+    )
+
+
+def _explained(key: str, claim: str | None) -> list[ExplainedRow]:
+    from pendcli.core.claims import evaluate_paper
+    from pendcli.core.explain import explain_rows
+
+    verdicts = {r.id: (r.verdict, r.cause, r.published) for r in evaluate_paper(key)}
+    return explain_rows(key, verdicts, claim, progress=_progress(key))
+
+
+def _progress(key: str) -> Callable[[str], None] | None:
+    """A one-line status on a terminal's stderr (nothing in a pipe or under --quiet)."""
+    from pendcli.core.console import is_quiet
+
+    if is_quiet() or not sys.stderr.isatty():
+        return None
+
+    def show(claim_id: str) -> None:
+        sys.stderr.write(f"\r\033[Kexplain {key}: searching {claim_id}")
+        sys.stderr.flush()
+
+    return show
+
+
+def _clear_progress() -> None:
+    if sys.stderr.isatty():
+        sys.stderr.write("\r\033[K")
+        sys.stderr.flush()
+
+
+def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[object]:
+    from pendcli.render import Column
+
+    _clear_progress()
+    columns = [
+        Column("id", "claim"),
+        Column("printed", "printed"),
+        Column("verdict", "verdict"),
+        Column("cause", "cause and mechanism"),
+        Column("cost", "steps", justify="right"),
+        Column("coincidence", "coincidence", fmt=_rate("coincidence"), justify="right"),
+        Column("coincidence_near", "near", fmt=_rate("coincidence_near"), justify="right"),
+    ]
+    return [
+        (
+            f"{key.capitalize()}: how the printed digits were got (coincidence: share of "
+            "random targets of the same size the search reproduces as simply)",
+            [r.as_dict() for r in rows if r.paper == key],
+            columns,
+        )
+        for key in keys
+        if any(r.paper == key for r in rows)
+    ]
+
+
+def _rate(key: str) -> Callable[[dict[str, object]], str]:
+    def text(row: dict[str, object]) -> str:
+        value = row.get(key)
+        return "-" if not isinstance(value, float) else f"{value:.1%}"
+
+    return text
