@@ -117,6 +117,47 @@ def disagreement_digest(result: ReproduceResult) -> list[str]:
     return bullets or ["Every printed number and formula holds."]
 
 
+def explanation_section(result: ReproduceResult) -> list[str]:
+    """ "Explanations": how the author got each printed number that does not agree (the
+    search of :mod:`pendcli.core.explain`), with its coincidence rate, or the space searched."""
+    from pendcli.core.explain import COINCIDENCE_THRESHOLD, explain_rows
+
+    lines = [
+        "## Explanations",
+        "",
+        "For each printed number that does not agree, the simplest hand computation (fewest "
+        "steps away from his own procedure) that gives his digits exactly, and the share of "
+        "random targets of the same precision and size the same search reproduces as simply "
+        f"(explained at most {COINCIDENCE_THRESHOLD:.0%}; *near*: targets within 10 % of "
+        "the printed value). `pendcli explain` prints every step.",
+        "",
+    ]
+    for key in result.papers:
+        verdicts = {r.id: (r.verdict, r.cause, r.published) for r in result.claims.get(key, [])}
+        for row in explain_rows(key, verdicts):
+            if row.verdict == "agrees":
+                continue
+            d = row.as_dict()
+            if row.explained:
+                steps = " → ".join(d["steps"][0])  # type: ignore[index]
+                odds = f"coincidence {d['coincidence']:.1%}, near {d['coincidence_near']:.1%}"
+                lines.append(
+                    f"- **{row.id}** `{row.printed}`: {row.cause_with_mechanism} ({odds}). {steps}."
+                )
+            elif d["mechanism"] is not None:
+                odds = f"{d['coincidence']:.1%} of random targets"
+                lines.append(
+                    f"- **{row.id}** `{row.printed}`: **unexplained** ({row.cause}): "
+                    f"{d['mechanism']} reproduces it, and as simply {odds}."
+                )
+            else:
+                lines.append(
+                    f"- **{row.id}** `{row.printed}`: **unexplained** ({row.cause}); searched: "
+                    f"{d['searched']}."
+                )
+    return [*lines, ""]
+
+
 # The convention every formula note ends with: stated once in the report, not per row.
 _CONVENTION = re.compile(
     r"Residual = reference − formula over (?P<parameter>.+?) \(claimed order.*?\)\. "
@@ -296,6 +337,7 @@ def _introduction(result: ReproduceResult) -> list[str]:
         "",
         *disagreement_digest(result),
         "",
+        *explanation_section(result),
         "## How verdicts are decided",
         "",
         _VERDICT_RULES,

@@ -155,6 +155,12 @@ class Axis:
 
     name: str
     options: tuple[Option, ...]
+    summary: str = ""  # the options in a few words, where listing them all would be long
+
+    def describe(self) -> str:
+        if self.summary:
+            return f"{self.name}: {self.summary} ({len(self.options)} options)"
+        return f"{self.name}: {' | '.join(o.label for o in self.options)}"
 
 
 def axis(name: str, plain: tuple[str, Any], *others: tuple[str, Any], cost: int = 1) -> Axis:
@@ -186,7 +192,17 @@ def rounding_axis(name: str, figures: Sequence[int] = (2, 3, 4, 5)) -> Axis:
     options = [Option(f"{name} kept in full", Rounding(), 0)]
     for mode, word in (("round", "rounded"), ("chop", "chopped")):
         options += [Option(f"{name} {word} to {k} figures", Rounding(mode, k)) for k in figures]
-    return Axis(name, tuple(options))
+    return Axis(
+        name, tuple(options), f"kept in full, rounded or chopped to {_figures(figures)} figures"
+    )
+
+
+def _figures(figures: Sequence[int]) -> str:
+    return (
+        ", ".join(map(str, figures[:-1])) + f" or {figures[-1]}"
+        if len(figures) > 1
+        else str(figures[0])
+    )
 
 
 @dataclass(frozen=True)
@@ -206,7 +222,7 @@ class Computation:
 
     def describe(self) -> str:
         """What the search tries, in words: the formula, each axis and its options."""
-        parts = [f"{a.name}: {' | '.join(o.label for o in a.options)}" for a in self.axes]
+        parts = [a.describe() for a in self.axes]
         finish = "round half up" + (" | chop" if self.chop_allowed else "")
         slips = "; one slip on the result (carry, transposition, 6↔9, dropped/doubled digit, "
         slips += "sign)" if self.slips else ""
@@ -458,6 +474,10 @@ def explain(claim_id: str, computation: Computation, target: Target, note: str =
 TABLE_STEPS = (Fraction(1, 10), Fraction(1, 100))  # argument step of a Bessel table
 TABLE_DECIMALS = (3, 4)  # tabulated to 3 or 4 decimals
 TABLE_END = 20  # « les tables ne vont pas plus loin »
+TABLE_SUMMARY = (
+    "exact, or read from a table to 20 at step 0,1 or 0,01, 3 or 4 decimals: nearest or "
+    "preceding entry, linear interpolation, or the interpolation's sign reversed (a slip)"
+)
 
 
 def bessel_exact(order: int, z: Fraction) -> Fraction:
@@ -533,7 +553,7 @@ def bessel_axis(name: str, order: int, what: str) -> Axis:
         options.append(Option(r.label(what), lambda z, r=r: r.read(order, z), 1))
     for r in table_readings(("reversed",)):
         options.append(Option(r.label(what), lambda z, r=r: r.read(order, z), 2))
-    return Axis(name, tuple(options))
+    return Axis(name, tuple(options), TABLE_SUMMARY)
 
 
 def _table_f(kind: int, x: Fraction, decimals: int) -> Fraction:

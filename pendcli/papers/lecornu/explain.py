@@ -30,6 +30,7 @@ from pendcli.core.explain import (
     PI_READINGS,
     TABLE_DECIMALS,
     TABLE_STEPS,
+    TABLE_SUMMARY,
     Axis,
     Computation,
     Option,
@@ -199,7 +200,7 @@ def _j0_value_axis(name: str, k: int) -> Axis:
     options = [Option(f"his printed {name} = {_text(claim)}", _printed(claim), 0)]
     for option in bessel_axis(name, 0, f"{name} at z = {_text(f'lecornu.j2_zeros.{k}')}").options:
         options.append(Option(option.label, option.value(z), max(1, option.steps)))
-    return Axis(name, tuple(options))
+    return Axis(name, tuple(options), f"his printed value, or {TABLE_SUMMARY}")
 
 
 def _deviation_computation(k: int | None) -> Computation:
