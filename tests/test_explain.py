@@ -122,7 +122,11 @@ def test_time_094_is_a_borrow_slip_but_not_beyond_coincidence(rows):
     assert _decimal((1 - length) / F(35, 100), 2, ROUND_HALF_UP) == F(91, 100)
     row = rows["lecornu.example.time.2"]
     assert "borrow slip" in row.explanation.mechanism
-    assert not row.explained and row.cause_with_mechanism.endswith("mechanism unexplained")
+    assert not row.explained
+    assert row.cause_with_mechanism == (
+        f"arithmetic-slip; mechanism unexplained ({row.explanation.coincidence:.0%} of random "
+        "targets fit)"
+    )
 
 
 def test_length_121_from_a_square_kept_to_three_figures(rows):
@@ -319,3 +323,20 @@ def test_cli_one_claim_and_formats():
 def test_cli_bad_claim_is_one_line(args):
     code, _, err = invoke(*args)
     assert_clean_error(code, err)
+
+
+# --- the README says what the search finds -------------------------------------------------
+
+
+def test_readme_paragraph_matches_the_search(rows):
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "README.md").read_text(encoding="utf-8")
+    paragraph = " ".join(text.split("**How he got his digits**", 1)[1].split("\n\n", 1)[0].split())
+    lecornu = [r for r in rows.values() if r.paper == "lecornu" and r.verdict != "agrees"]
+    explained = sum(r.explained for r in lecornu)
+    assert f"Of Lecornu's {len(lecornu)}, {explained} are" in paragraph
+    unexplained = [r.printed for r in lecornu if not r.explained]
+    assert f"{len(unexplained)} stay unexplained" in paragraph.replace("Four", "4")
+    six = rows["lecornu.mean_pendulum_coefficient"].explanation
+    assert f"({six.coincidence:.1%}".replace(".", ",").replace("%", " %") in paragraph

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Callable
-from typing import TYPE_CHECKING, Annotated
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
@@ -13,6 +13,7 @@ from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.core.explain import ExplainedRow
+    from pendcli.render import Section
 
 ClaimArgument = Annotated[
     str | None,
@@ -90,7 +91,7 @@ def _clear_progress() -> None:
         sys.stderr.flush()
 
 
-def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[object]:
+def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[Section]:
     from pendcli.render import Column
 
     _clear_progress()
@@ -115,8 +116,8 @@ def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[object]:
     ]
 
 
-def _rate(key: str) -> Callable[[dict[str, object]], str]:
-    def text(row: dict[str, object]) -> str:
+def _rate(key: str) -> Callable[[Mapping[str, Any]], str]:
+    def text(row: Mapping[str, Any]) -> str:
         value = row.get(key)
         return "-" if not isinstance(value, float) else f"{value:.1%}"
 

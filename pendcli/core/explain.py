@@ -656,10 +656,12 @@ class ExplainedRow:
     def cause_with_mechanism(self) -> str:
         """The cause and its mechanism where one is found below the threshold, else
         "unexplained" (a row that agrees: its verdict, with the mechanism if any)."""
-        base = self.cause or self.verdict
-        if self.explanation is None or not self.explanation.explained:
+        base, e = self.cause or self.verdict, self.explanation
+        if e is None or e.coincidence is None:
             return f"{base}; mechanism unexplained"
-        return f"{base}: {self.explanation.mechanism}"
+        if not e.explained:  # reproduced, but no better than chance
+            return f"{base}; mechanism unexplained ({e.coincidence:.0%} of random targets fit)"
+        return f"{base}: {e.mechanism}"
 
     def as_dict(self) -> dict[str, object]:
         if self.explanation is not None:

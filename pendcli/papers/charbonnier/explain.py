@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from fractions import Fraction
+from functools import partial
 from typing import Any
 
 from pendcli.core.explain import Axis, Computation, Option, Target
@@ -77,4 +78,4 @@ def targets() -> dict[str, Target]:
 
 def computations() -> dict[str, Callable[[], Computation]]:
     """Claim id -> a builder of Charbonnier's computation of that printed value."""
-    return {f"{PAPER}.I_pi.n{n}": (lambda n=n: _computation(n)) for n in PRINTED_N}
+    return {f"{PAPER}.I_pi.n{n}": partial(_computation, n) for n in PRINTED_N}

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from fractions import Fraction
-from functools import cache
+from functools import cache, partial
 from typing import Any
 
 from pendcli.core.explain import (
@@ -290,13 +290,10 @@ def _builders() -> dict[str, Callable[[], Computation]]:
     return {
         "lecornu.j2_zeros.2": lambda: _zero_computation(2, 2),
         "lecornu.coefficient_b2_4g": _coefficient_computation,
-        **{f"{ex}time.{k}": (lambda k=k: _time_computation(k)) for k in (2, 3, 5)},
-        **{f"{ex}interval.{k}": (lambda k=k: _interval_computation(k)) for k in (1, 2, 5)},
-        **{f"lecornu.j0_at_j2_zeros.{k}": (lambda k=k: _j0_computation(k)) for k in (1, 2, 4)},
-        **{
-            f"lecornu.deviation.{k}": (lambda k=k: _deviation_computation(6 - k))
-            for k in (2, 3, 4, 5)
-        },
+        **{f"{ex}time.{k}": partial(_time_computation, k) for k in (2, 3, 5)},
+        **{f"{ex}interval.{k}": partial(_interval_computation, k) for k in (1, 2, 5)},
+        **{f"lecornu.j0_at_j2_zeros.{k}": partial(_j0_computation, k) for k in (1, 2, 4)},
+        **{f"lecornu.deviation.{k}": partial(_deviation_computation, 6 - k) for k in (2, 3, 4, 5)},
         "lecornu.deviation.zero_length": lambda: _deviation_computation(None),
         "lecornu.j1_zeros.1": lambda: _zero_computation(1, 6),
         "lecornu.j1_zeros.5": lambda: _zero_computation(1, 2),

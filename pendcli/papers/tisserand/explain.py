@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from fractions import Fraction
-from functools import cache
+from functools import cache, partial
 from typing import Any
 
 from pendcli.core.explain import (
@@ -193,8 +193,7 @@ def targets() -> dict[str, Target]:
 def computations() -> dict[str, Callable[[], Computation]]:
     """Claim id -> a builder of Tisserand's computation of that printed number."""
     out: dict[str, Callable[[], Computation]] = {
-        f"{PAPER}.example.{kind}": (lambda kind=kind: _coefficient_computation(kind))
-        for kind in FORMULAS
+        f"{PAPER}.example.{kind}": partial(_coefficient_computation, kind) for kind in FORMULAS
     }
     out[f"{PAPER}.example.displacement"] = _displacement_computation
     return out
