@@ -31,6 +31,7 @@ def explain(
 
     keys = _papers_for(claim, paper) if claim else resolve_papers(paper)
     rows = [r for key in keys for r in _explained(key, claim)]
+    _clear_progress()
     if claim and not rows:
         raise _nothing_to_explain(claim)
     emit(fmt, _sections(rows, keys), {"explanations": [r.as_dict() for r in rows]})
@@ -86,7 +87,9 @@ def _progress(key: str) -> Callable[[str], None] | None:
 
 
 def _clear_progress() -> None:
-    if sys.stderr.isatty():
+    from pendcli.core.console import is_quiet
+
+    if not is_quiet() and sys.stderr.isatty():
         sys.stderr.write("\r\033[K")
         sys.stderr.flush()
 
@@ -94,7 +97,6 @@ def _clear_progress() -> None:
 def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[Section]:
     from pendcli.render import Column
 
-    _clear_progress()
     columns = [
         Column("id", "claim"),
         Column("printed", "printed"),
