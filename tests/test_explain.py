@@ -340,3 +340,41 @@ def test_readme_paragraph_matches_the_search(rows):
     assert f"{len(unexplained)} stay unexplained" in paragraph.replace("Four", "4")
     six = rows["lecornu.mean_pendulum_coefficient"].explanation
     assert f"({six.coincidence:.1%}".replace(".", ",").replace("%", " %") in paragraph
+
+
+# --- the plain procedures and the chops, against the claims' own procedures and mpmath ------
+
+PLAIN = [
+    "lecornu.example.time.3",
+    "lecornu.example.time.5",
+    "lecornu.example.interval.1",
+    "lecornu.example.interval.2",
+    "lecornu.example.interval.5",
+    "lecornu.deviation.5",
+    "lecornu.deviation.zero_length",
+]
+
+
+@pytest.mark.parametrize("claim_id", PLAIN)
+def test_plain_procedure_rows_match_the_claims_procedures(rows, claim_id):
+    """'his plain procedure' must be what pendcli.papers.lecornu.claims says he did, on his
+    printed values (a second implementation, in floating point), rounded at his precision."""
+    from pendcli.core.causes import rounds_to
+    from pendcli.papers.lecornu.claims import author_procedures
+
+    table = load_paper_table("lecornu")
+    printed = {c.id: c.number.value for c in table.claims}
+    assert rows[claim_id].explanation.mechanism == "his plain procedure (no departure)"
+    assert rounds_to(table.claim(claim_id).number, author_procedures()[claim_id](printed))
+
+
+@pytest.mark.parametrize(
+    ("claim_id", "order", "k"),
+    [("lecornu.j2_zeros.2", 2, 2), ("lecornu.j1_zeros.1", 1, 6), ("lecornu.j1_zeros.5", 1, 2)],
+)
+def test_chopped_zeros_against_mpmath(rows, claim_id, order, k):
+    with mpmath.workdps(50):
+        zero = Fraction(mpmath.nstr(mpmath.besseljzero(order, k), 40))
+    printed = _printed("lecornu", claim_id)
+    assert _decimal(zero, 2, ROUND_DOWN) == printed != _decimal(zero, 2, ROUND_HALF_UP)
+    assert rows[claim_id].explanation.mechanism == "chopped (decimals dropped)"
