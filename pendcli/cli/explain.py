@@ -34,7 +34,8 @@ def explain(
     _clear_progress()
     if claim and not rows:
         raise _nothing_to_explain(claim)
-    emit(fmt, _sections(rows, keys), {"explanations": [r.as_dict() for r in rows]})
+    sections = _sections(rows, keys) + (_steps_sections(rows[0]) if claim else [])
+    emit(fmt, sections, {"explanations": [r.as_dict() for r in rows]})
 
 
 def _papers_for(claim: str, paper: str | None) -> tuple[str, ...]:
@@ -115,6 +116,25 @@ def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[Section]:
         )
         for key in keys
         if any(r.paper == key for r in rows)
+    ]
+
+
+def _steps_sections(row: ExplainedRow) -> list[Section]:
+    """One claim: every step of its simplest chains, and the space searched."""
+    from pendcli.render import Column
+
+    d = row.as_dict()
+    chains = d["steps"] if isinstance(d["steps"], list) else []
+    steps = [
+        {"chain": n, "step": k, "what": label}
+        for n, chain in enumerate(chains, start=1)
+        for k, label in enumerate(chain, start=1)
+    ]
+    step_columns = [Column("chain", "chain"), Column("step", "step"), Column("what", "what")]
+    searched = [{"searched": d["searched"], "note": d.get("note", "")}]
+    return [
+        (f"{row.id}: the simplest chains, step by step", steps, step_columns),
+        ("what was searched", searched, [Column("searched", "searched")]),
     ]
 
 
