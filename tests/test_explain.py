@@ -378,3 +378,10 @@ def test_chopped_zeros_against_mpmath(rows, claim_id, order, k):
     printed = _printed("lecornu", claim_id)
     assert _decimal(zero, 2, ROUND_DOWN) == printed != _decimal(zero, 2, ROUND_HALF_UP)
     assert rows[claim_id].explanation.mechanism == "chopped (decimals dropped)"
+
+
+def test_the_space_searched_names_its_slips():
+    with_slips = ex.Computation("x", (), lambda c: F(1), slips=True).describe()
+    without = ex.Computation("x", (), lambda c: F(1), slips=False).describe()
+    assert with_slips.endswith("dropped/doubled digit, sign)")
+    assert without.endswith("no slip on the result")

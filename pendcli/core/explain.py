@@ -220,12 +220,17 @@ class Computation:
         """Number of combinations of the choices (before finish and slips)."""
         return math.prod(len(a.options) for a in self.axes)
 
-    def describe(self) -> str:
+    def describe(self, target: Target | None = None) -> str:
         """What the search tries, in words: the formula, each axis and its options."""
         parts = [a.describe() for a in self.axes]
         finish = "round half up" + (" | chop" if self.chop_allowed else "")
-        slips = "; one slip on the result (carry, transposition, 6↔9, dropped/doubled digit, "
-        slips += "sign)" if self.slips else ""
+        if target is not None and (target.bound or target.exact):
+            finish = "rounded up (a bound)" if target.bound else "exactly equal"
+        slips = (
+            "; one slip on the result (carry, transposition, 6↔9, dropped/doubled digit, sign)"
+            if self.slips
+            else "; no slip on the result"
+        )
         return f"{self.text}; " + "; ".join(parts) + f"; finish: {finish}{slips}"
 
 
@@ -435,7 +440,8 @@ class Explanation:
     @property
     def searched(self) -> str:
         return (
-            f"{self.computation.describe()} ({self.scan.combinations} chains; coincidence: "
+            f"{self.computation.describe(self.scan.target)} ({self.scan.combinations} chains; "
+            "coincidence: "
             f"{RANDOM_TARGETS} random targets of the same precision and size)"
         )
 
