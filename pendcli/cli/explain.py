@@ -131,7 +131,7 @@ def _steps_sections(row: ExplainedRow) -> list[Section]:
         for k, label in enumerate(chain, start=1)
     ]
     step_columns = [Column("chain", "chain"), Column("step", "step"), Column("what", "what")]
-    searched = [{"searched": d["searched"], "note": d.get("note", "")}]
+    searched = [{"searched": d["searched"]}]
     return [
         (f"{row.id}: the simplest chains, step by step", steps, step_columns),
         ("what was searched", searched, [Column("searched", "searched")]),

@@ -422,7 +422,6 @@ class Explanation:
     scan: Scan
     coincidence: float | None  # share of random targets reproduced as simply (None: no match)
     coincidence_near: float | None  # the same, targets within 10 % of the printed value
-    note: str = ""
     chains: tuple[Chain, ...] = field(default=())
 
     @property
@@ -457,11 +456,10 @@ class Explanation:
             "coincidence_near": self.coincidence_near,
             "explained": self.explained,
             "searched": self.searched,
-            "note": self.note,
         }
 
 
-def explain(claim_id: str, computation: Computation, target: Target, note: str = "") -> Explanation:
+def explain(claim_id: str, computation: Computation, target: Target) -> Explanation:
     """Search ``computation`` for ``target`` and measure the coincidence rate of what it finds."""
     found = scan(computation, target)
     cost = found.best_cost
@@ -472,7 +470,7 @@ def explain(claim_id: str, computation: Computation, target: Target, note: str =
         drawn = random_targets(target, RANDOM_TARGETS, seed, near=True)
         near = coincidence_rate(found.costs, drawn, cost)
     simplest = tuple(c for c in found.matches if c.cost == cost)[:SIMPLEST_SHOWN]
-    return Explanation(claim_id, target.text, computation, found, rate, near, note, simplest)
+    return Explanation(claim_id, target.text, computation, found, rate, near, simplest)
 
 
 # --- values from the tables he used ------------------------------------------------------
@@ -676,7 +674,6 @@ class ExplainedRow:
             out = {"id": self.id, "printed": self.printed, "mechanism": None, "steps": []}
             out |= {"cost": None, "coincidence": None, "coincidence_near": None}
             out |= {"explained": False, "searched": "nothing: no computation declared"}
-            out["note"] = ""
         return {
             **out,
             "paper": self.paper,
