@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 
 from pendcli.core.claims import PAPERS
 from pendcli.core.errors import PendcliError
-from pendcli.core.files import locked, remove_stale, replace_directory
+from pendcli.core.files import lock_file, locked, replace_owned_folder, write_through
 from pendcli.core.tables import tables_dir
 from pendcli.render.columns import Column
 from pendcli.render.csv import to_csv
@@ -286,15 +286,18 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
 
 
 def _lock_file(folder: Path) -> Path:
-    return folder.parent / f".{folder.name}.lock"
+    return lock_file(write_through(folder, "tables/regenerated"))
 
 
 def _rewrite(folder: Path, tables: dict[str, str]) -> list[str]:
     """``pendcli check --update``: the committed tables become the regenerated ones.
 
     The whole set is written beside the folder and swapped in at once under an exclusive
-    lock, so a crash leaves the old set or the new one, never a mix or a cut table.
-    Returns the names of the tables that are no longer produced (removed by the swap).
+    lock (a second writer waits), so a crash leaves the old set or the new one, never a mix
+    or a cut table. A file that is not a table pendcli writes (``<paper>-claims.csv``,
+    ``<paper>-formulas.csv``) makes it refuse rather than delete it; a symlinked folder is
+    written through. Returns the names of the tables that are no longer produced (removed by
+    the swap).
     """
 
     def fill(tmp: Path) -> None:
@@ -302,9 +305,13 @@ def _rewrite(folder: Path, tables: dict[str, str]) -> list[str]:
             (tmp / name).write_text(text, encoding="utf-8")
 
     removed = sorted(p.name for p in folder.glob("*.csv") if p.name not in tables)
-    with locked(_lock_file(folder)):
-        remove_stale(folder.parent, folder.name)
-        replace_directory(folder, fill)
+    replace_owned_folder(
+        folder,
+        fill,
+        "tables/regenerated",
+        known=lambda n: expected_columns(n) is not None,
+        wait=True,
+    )
     return removed
 
 

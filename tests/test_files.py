@@ -193,13 +193,13 @@ def test_check_update_swaps_the_whole_set(tmp_path: Path) -> None:
     root = Path(__file__).resolve().parent.parent / "tables"
     copy = tmp_path / "tables"
     shutil.copytree(root, copy)
-    (copy / "regenerated" / "extra.csv").write_text("id\n")
+    (copy / "regenerated" / "retired-claims.csv").write_text("id\n")
     (copy / "regenerated" / "lecornu-claims.csv").write_text("id\ncut mid-r")  # a cut table
     env = {**os.environ, "PENDCLI_TABLES": str(copy)}
     cmd = [sys.executable, "-m", "pendcli", "check", "--update"]
     out = subprocess.run(cmd, capture_output=True, text=True, env=env)
     assert out.returncode == 0, out.stderr
-    assert "removed 1 table(s) no longer produced: extra.csv" in out.stdout
+    assert "removed 1 table(s) no longer produced: retired-claims.csv" in out.stdout
     names = sorted(p.name for p in (copy / "regenerated").iterdir())
     assert names == sorted(p.name for p in (root / "regenerated").iterdir())
     assert (copy / "regenerated" / "lecornu-claims.csv").read_text().startswith("id,published")
