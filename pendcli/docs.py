@@ -74,12 +74,12 @@ def ledger_section() -> str:
     from pendcli.core.claims import PAPERS
     from pendcli.core.ledger import coverage, equation_rows, labels_in_text
     from pendcli.core.ledger_check import STATUSES
-    from pendcli.core.tables import tables_dir
+    from pendcli.core.tables import paper_text
 
     counts = coverage(equation_rows(PAPERS))
     rows: list[Row] = []
     for key in PAPERS:
-        text = (tables_dir() / "papers" / f"{key}.txt").read_text("utf-8")
+        text = paper_text(key)
         c = counts[key]
         rows.append(
             {

@@ -258,6 +258,7 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     from pendcli.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"
+    _load_ledgers(root)
     result = reproduce_all(PAPERS, formulas=True, quiet=quiet)
     tables = regenerated_tables(result)
     out = console()
@@ -283,6 +284,15 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
             f"tables/regenerated within tolerance"
         )
     return 0
+
+
+def _load_ledgers(root: Path | None) -> None:
+    """Every paper's equation ledger and text, read and validated (not checked: that is
+    ``pendcli equations``): a missing or empty one fails ``check`` instead of passing unseen."""
+    from pendcli.core.ledger import load_ledger
+
+    for key in PAPERS:
+        load_ledger(key, root)
 
 
 def _lock_file(folder: Path) -> Path:

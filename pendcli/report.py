@@ -212,8 +212,11 @@ def write_report(
     work-precision tables; ``jobs`` processes draw the figures (default: up to 2).
     """
     from pendcli.core.files import MANIFEST, replace_owned_folder
+    from pendcli.core.tables import paper_text
 
     target = check_out_folder(out)
+    for key in result.papers:  # the HTML pages show them: missing or empty is an error
+        paper_text(key)
     written: list[Path] = []
 
     def fill(folder: Path) -> None:
@@ -436,9 +439,9 @@ def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tr
             writer.written.append(Path("tradeoff") / f"{name}.csv")
             points += measured
             fresh.append(name)
-        else:
-            writer.text(f"tradeoff/{name}.csv", committed.read_text(encoding="utf-8"))
+        else:  # validated (UTF-8, every cell) before it is copied
             points += tradeoff.read_table(committed)
+            writer.text(f"tradeoff/{name}.csv", committed.read_text(encoding="utf-8"))
     return _Tradeoff(points, _provenance(tradeoff, names, fresh))
 
 

@@ -338,16 +338,17 @@ def _table_number(
 
 
 def measured_on(root: Path | None = None) -> str | None:
-    """When ``make bench`` measured the committed tables (``tradeoff/measured.toml``), or None."""
-    import tomllib
+    """When ``make bench`` measured the committed tables (``tradeoff/measured.toml``), or None
+    without that file; a file that is not valid UTF-8 TOML with a string date is an error."""
+    from pendcli.core.tables import read_toml
 
     path = table_path("measured", root).with_suffix(".toml")
-    try:
-        with path.open("rb") as fh:
-            date = tomllib.load(fh).get("date")
-    except (OSError, tomllib.TOMLDecodeError):
+    if not path.exists():
         return None
-    return str(date) if date else None
+    date = read_toml(path, "measurement record").get("date")
+    if not isinstance(date, str) or not date:
+        raise PendcliError(f"measurement record {path}: date must be a non-empty string")
+    return date
 
 
 def choose(family: str, tol: float, points: list[Point] | None = None) -> Point:
