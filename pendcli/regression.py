@@ -41,6 +41,7 @@ __all__ = [
     "compare_tables",
     "find_drifts",
     "regenerated_tables",
+    "rewrite_with",
     "run_check",
 ]
 
@@ -322,6 +323,26 @@ def _rewrite(folder: Path, tables: dict[str, str]) -> list[str]:
         known=lambda n: expected_columns(n) is not None,
         wait=True,
     )
+    return removed
+
+
+def rewrite_with(
+    tables: dict[str, str], others: dict[Path, str], root: Path | None = None
+) -> list[str]:
+    """``make regen``: the committed tables and ``others`` (the README) rewritten as one set
+    (:func:`pendcli.core.files.write_set`: all written first, then renamed in one short loop
+    that Ctrl-C or TERM cannot split), under the tables' lock. Returns the tables removed."""
+    from pendcli.core.files import check_owned, write_set
+
+    folder = write_through((root or tables_dir()).resolve() / "regenerated", "tables/regenerated")
+    folder.mkdir(parents=True, exist_ok=True)
+    with locked(_lock_file(folder)):
+        check_owned(folder, "tables/regenerated", lambda n: expected_columns(n) is not None)
+        removed = sorted(p.name for p in folder.glob("*.csv") if p.name not in tables)
+        changes: dict[Path, str | bytes | None] = {folder / n: t for n, t in tables.items()}
+        changes.update({folder / name: None for name in removed})
+        changes.update(others)
+        write_set(changes)
     return removed
 
 

@@ -258,16 +258,21 @@ def _csv_cells(p: Point) -> list[object]:
     ]
 
 
-def write_table(points: list[Point], path: Path) -> Path:
-    """The family's table, written atomically (``tables/tradeoff/*.csv`` are committed)."""
-    from pendcli.core.files import atomic_write
-
+def table_text(points: list[Point]) -> str:
+    """The family's table as CSV text (what :func:`write_table` writes)."""
     buffer = io.StringIO(newline="")
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(CSV_KEYS)
     writer.writerows(_csv_cells(p) for p in points)
+    return buffer.getvalue()
+
+
+def write_table(points: list[Point], path: Path) -> Path:
+    """The family's table, written atomically (``tables/tradeoff/*.csv`` are committed)."""
+    from pendcli.core.files import atomic_write
+
     path.parent.mkdir(parents=True, exist_ok=True)
-    return atomic_write(path, buffer.getvalue())
+    return atomic_write(path, table_text(points))
 
 
 def read_table(path: Path) -> list[Point]:

@@ -52,6 +52,7 @@ __all__ = [
     "remove_stale",
     "replace_directory",
     "replace_owned_folder",
+    "write_set",
     "write_through",
 ]
 
@@ -93,26 +94,13 @@ def atomic_write(path: Path | str, data: str | bytes, encoding: str = "utf-8") -
     leftovers of a killed earlier write of the same file (dead writer) are removed first.
     """
     target = Path(path)
-    payload = data.encode(encoding) if isinstance(data, str) else data
-    tmp: str | None = None
+    tmp = _write_temporary(target, data.encode(encoding) if isinstance(data, str) else data)
     try:
-        _remove_dead_temporaries(target.parent, target.name)
-        mode = _mode_for(target, 0o666)
-        prefix = _temp_prefix(target.name)
-        fd, tmp = tempfile.mkstemp(prefix=prefix, suffix=".tmp", dir=target.parent)
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(payload)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.chmod(tmp, mode)
         os.replace(tmp, target)
-        tmp = None
     except OSError as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
         raise PendcliError(describe_os_error(exc, target)) from None
-    finally:
-        if tmp is not None:
-            with contextlib.suppress(OSError):
-                os.unlink(tmp)
     _fsync_dir(target.parent)
     return target
 
@@ -476,3 +464,73 @@ def probe_lock(target: Path, what: str) -> None:
         )
         with locked(path, busy=busy):
             pass
+
+
+# The signals a user or a supervisor sends to stop a run: held back during a set's renames.
+_STOP_SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT")
+
+
+def write_set(changes: dict[Path, str | bytes | None]) -> None:
+    """Write a set of files in different places (``None``: remove that file) as nearly at
+    once as POSIX allows.
+
+    There is no atomic rename of several files. So every new file is first written in full to
+    a temporary beside its target and synced; only then does one short loop rename them over
+    their targets (and remove the dropped ones), with the stopping signals blocked, so Ctrl-C
+    or a TERM arriving mid-way takes effect after the whole set. Only a SIGKILL or a power
+    cut within that loop (a few renames) can leave it part new. A failure before the loop
+    leaves every target untouched.
+    """
+    import signal
+
+    temporaries: dict[Path, str] = {}
+    try:
+        for path, data in changes.items():
+            if data is not None:
+                temporaries[path] = _write_temporary(path, data)
+        stops = {getattr(signal, name) for name in _STOP_SIGNALS if hasattr(signal, name)}
+        held = signal.pthread_sigmask(signal.SIG_BLOCK, stops)
+        try:
+            for path, data in changes.items():
+                if data is None:
+                    with contextlib.suppress(FileNotFoundError):
+                        os.unlink(path)
+                else:
+                    os.replace(temporaries.pop(path), path)
+            for folder in {path.parent for path in changes}:
+                _fsync_dir(folder)
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, held)
+    except OSError as exc:
+        raise PendcliError(describe_os_error(exc)) from None
+    finally:
+        for tmp in temporaries.values():
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+
+
+def _write_temporary(target: Path, data: str | bytes) -> str:
+    """``data`` in a synced temporary file beside ``target``, with the mode ``target`` will
+    have; its path."""
+    payload = data.encode("utf-8") if isinstance(data, str) else data
+    try:
+        _remove_dead_temporaries(target.parent, target.name)
+        mode = _mode_for(target, 0o666)
+        fd, tmp = tempfile.mkstemp(
+            prefix=_temp_prefix(target.name), suffix=".tmp", dir=target.parent
+        )
+    except OSError as exc:
+        raise PendcliError(describe_os_error(exc, target)) from None
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(payload)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.chmod(tmp, mode)
+    except BaseException as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        if isinstance(exc, OSError):
+            raise PendcliError(describe_os_error(exc, target)) from None
+        raise
+    return tmp
