@@ -524,4 +524,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from pendcli.core.interrupts import run_entry
+
+    sys.exit(run_entry(main, "python -m pendcli.bench"))

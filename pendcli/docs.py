@@ -151,4 +151,6 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    from pendcli.core.interrupts import run_entry
+
+    sys.exit(run_entry(lambda: main(sys.argv[1:]), "python -m pendcli.docs"))
