@@ -46,7 +46,10 @@ def _quiet_in_child() -> None:
 
 # A signal that lands in code whose exceptions Python ignores (an at-fork hook of logging, a
 # __del__) would be lost there, printed as "Exception ignored in ...", and the run would go
-# on: it is raised again, to land in ordinary code. Bounded, in case it keeps landing there.
+# on: it is sent again a moment later, from a timer thread (raised or sent at once, it would be
+# handled inside this hook, and lost again), to land in ordinary code. Bounded, in case it
+# keeps landing there.
+_AGAIN_AFTER = 0.05  # seconds: long enough to leave the hook, short beside any run
 _REDELIVERIES = 50
 _redelivered = 0
 _installed = False
@@ -55,8 +58,12 @@ _installed = False
 def _unraisable(info: sys.UnraisableHookArgs) -> None:
     global _redelivered
     if isinstance(info.exc_value, Interrupted) and _redelivered < _REDELIVERIES:
+        import threading
+
         _redelivered += 1
-        signal.raise_signal(info.exc_value.signum)
+        again = threading.Timer(_AGAIN_AFTER, os.kill, (os.getpid(), info.exc_value.signum))
+        again.daemon = True
+        again.start()
         return
     sys.__unraisablehook__(info)
 
