@@ -56,6 +56,9 @@ __all__ = [
     "write_through",
 ]
 
+# The signals a user or a supervisor sends to stop a run: held back while a lock is taken or
+# released and during a set's renames.
+_STOP_SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT")
 _RENAME_EXCHANGE = 2  # linux/fs.h
 _AT_FDCWD = -100
 
@@ -283,51 +286,80 @@ def locked(lock_file: Path | str, shared: bool = False, busy: str | None = None)
 
     With ``busy`` (a message), a lock another process holds is refused with that message
     instead of waited for. An exclusive holder removes the lock file when done; a waiter that
-    then holds a removed file's lock tries again on the current one.
+    then holds a removed file's lock tries again on the current one. The file is created and
+    locked with the stopping signals held back, so an interrupt never leaves a lock file that
+    no one holds.
     """
     path = Path(lock_file)
-    while True:
-        try:
-            fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
-        except OSError as exc:
-            # A read-only tree can still be read: without a lock file there is no writer either.
-            if shared:
-                yield
-                return
-            raise PendcliError(describe_os_error(exc, path)) from None
-        if _lock(fd, shared, busy, path):
-            break
+    fd, held = -1, False
+    try:
+        while not held:
+            with _signals_held():  # an interrupt lands after, inside this try
+                fd = _open_lock_file(path, shared)
+                got = fd < 0 or _lock(fd, shared, path, wait=False)
+                held = got is True
+            if fd < 0:  # a read-only tree can still be read: no lock file, no writer either
+                break
+            if got is None:
+                if busy:
+                    raise PendcliError(busy)
+                held = _lock(fd, shared, path, wait=True) is True  # the holder removes it
+            if not held:
+                fd = _closed(fd)
+        yield
+    finally:
+        with _signals_held():
+            if held and not shared:
+                with contextlib.suppress(OSError):
+                    os.unlink(path)
+            _closed(fd)
+
+
+def _open_lock_file(path: Path, shared: bool) -> int:
+    """The lock file's descriptor; -1 for a reader where it cannot be created (read-only)."""
+    try:
+        return os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+    except OSError as exc:
+        if shared:
+            return -1
+        raise PendcliError(describe_os_error(exc, path)) from None
+
+
+def _closed(fd: int) -> int:
+    if fd >= 0:
+        with contextlib.suppress(OSError):
+            os.close(fd)
+    return -1
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """Hold back SIGINT, SIGTERM, SIGHUP, SIGQUIT (delivered on leaving)."""
+    import signal
+
+    stops = {getattr(signal, name) for name in _STOP_SIGNALS if hasattr(signal, name)}
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, stops)
     try:
         yield
     finally:
-        if not shared:
-            with contextlib.suppress(OSError):
-                os.unlink(path)
-        os.close(fd)
+        signal.pthread_sigmask(signal.SIG_SETMASK, held)
 
 
-def _lock(fd: int, shared: bool, busy: str | None, path: Path) -> bool:
-    """Lock ``fd``; False (``fd`` closed) when ``path`` no longer names the file locked."""
+def _lock(fd: int, shared: bool, path: Path, wait: bool) -> bool | None:
+    """Lock ``fd``: True when held; None when another process holds it (``wait`` False);
+    False when ``path`` no longer names the file locked (its holder removed it)."""
     import fcntl
 
     kind = fcntl.LOCK_SH if shared else fcntl.LOCK_EX
     try:
-        fcntl.flock(fd, kind | (fcntl.LOCK_NB if busy else 0))
+        fcntl.flock(fd, kind | (0 if wait else fcntl.LOCK_NB))
         current = os.stat(path)
     except BlockingIOError:
-        os.close(fd)
-        raise PendcliError(str(busy)) from None
+        return None
     except FileNotFoundError:
-        os.close(fd)
         return False
-    except BaseException:
-        os.close(fd)
-        raise
     mine = os.fstat(fd)
-    if (mine.st_dev, mine.st_ino) != (current.st_dev, current.st_ino):
-        os.close(fd)
-        return False
-    return True
+    return (mine.st_dev, mine.st_ino) == (current.st_dev, current.st_ino)
 
 
 # Written into every folder pendcli makes as a whole (``reproduce --out``): the files it
@@ -466,10 +498,6 @@ def probe_lock(target: Path, what: str) -> None:
             pass
 
 
-# The signals a user or a supervisor sends to stop a run: held back during a set's renames.
-_STOP_SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT")
-
-
 def write_set(changes: dict[Path, str | bytes | None]) -> None:
     """Write a set of files in different places (``None``: remove that file) as nearly at
     once as POSIX allows.
@@ -481,16 +509,13 @@ def write_set(changes: dict[Path, str | bytes | None]) -> None:
     cut within that loop (a few renames) can leave it part new. A failure before the loop
     leaves every target untouched.
     """
-    import signal
 
     temporaries: dict[Path, str] = {}
     try:
         for path, data in changes.items():
             if data is not None:
                 temporaries[path] = _write_temporary(path, data)
-        stops = {getattr(signal, name) for name in _STOP_SIGNALS if hasattr(signal, name)}
-        held = signal.pthread_sigmask(signal.SIG_BLOCK, stops)
-        try:
+        with _signals_held():
             for path, data in changes.items():
                 if data is None:
                     with contextlib.suppress(FileNotFoundError):
@@ -499,8 +524,6 @@ def write_set(changes: dict[Path, str | bytes | None]) -> None:
                     os.replace(temporaries.pop(path), path)
             for folder in {path.parent for path in changes}:
                 _fsync_dir(folder)
-        finally:
-            signal.pthread_sigmask(signal.SIG_SETMASK, held)
     except OSError as exc:
         raise PendcliError(describe_os_error(exc)) from None
     finally:
