@@ -10,6 +10,7 @@ a bounded number of times, never a clock. The CLI runs are subprocesses of the i
 from __future__ import annotations
 
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -221,3 +222,69 @@ def test_a_set_interrupted_is_all_old_or_all_new(
     assert text == f"{first}\n" * 20_000  # whole, not cut
     leftovers = [p.name for sub in ("a", "b", ".") for p in (tmp_path / sub).glob(".*.tmp")]
     assert leftovers == []
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("signum", [signal.SIGKILL, signal.SIGTERM])
+def test_a_signal_while_a_plot_is_written_leaves_no_cut_file_and_no_lasting_leftover(
+    tmp_path: Path, signum: signal.Signals
+) -> None:
+    """Stopped while its temporary exists: no ``p.png`` or a whole one; TERM removes the
+    temporary on the way out, and a SIGKILL's is removed by the next write of that file."""
+    from pendcli.core.files import atomic_write
+
+    proc = subprocess.Popen(
+        [str(PENDCLI), "tisserand", "example", "--plot", "p.png", "-q"],
+        cwd=tmp_path,
+        env=child_env(),
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+    )
+    wait_for(proc, lambda: any(p.suffix == ".tmp" for p in tmp_path.iterdir()))
+    if proc.poll() is None:
+        os.killpg(proc.pid, signum)
+    _, err = proc.communicate()
+    assert "Traceback" not in err.decode(), err
+    plot = tmp_path / "p.png"
+    assert not plot.exists() or plot.read_bytes().startswith(b"\x89PNG")
+    if proc.returncode == 128 + signal.SIGTERM:
+        assert err.decode() == "pendcli: error: interrupted by SIGTERM\n"
+        assert [p.name for p in tmp_path.iterdir() if p.name != "p.png"] == []
+    atomic_write(plot, b"\x89PNG next")  # the next write of the plot
+    assert [p.name for p in tmp_path.iterdir()] == ["p.png"]
+
+
+def handles(pid: int, signum: int) -> bool:
+    """Whether process ``pid`` has installed a handler for ``signum`` (/proc's SigCgt)."""
+    status = Path(f"/proc/{pid}/status").read_text(encoding="ascii")
+    caught = int(re.search(r"^SigCgt:\s*([0-9a-f]+)$", status, re.M).group(1), 16)  # type: ignore[union-attr]
+    return bool(caught >> (signum - 1) & 1)
+
+
+@pytest.mark.parametrize("module", ["pendcli.docs", "pendcli.bench"])
+def test_ctrl_c_in_make_regen_or_make_bench_is_one_line_130_and_changes_nothing(
+    tmp_path: Path, module: str
+) -> None:
+    """Stopped during their (long) computation, before anything is written: status 130, one
+    line, every file of the set as it was."""
+    readme = tmp_path / "README.md"
+    readme.write_text("# x\n<!-- bench:start -->\nold\n<!-- bench:end -->\n", encoding="utf-8")
+    args = ["--tables", "--readme", str(readme)] if module == "pendcli.docs" else []
+    if module == "pendcli.bench":
+        args = ["--write", str(readme), "--runs", "1", "--quick", "--tables-root", str(tmp_path)]
+    proc = subprocess.Popen(
+        [sys.executable, "-m", module, *args],
+        cwd=tmp_path,
+        env=child_env(),
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+    )
+    wait_for(proc, lambda: handles(proc.pid, signal.SIGTERM))  # pendcli's handler is in place
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate()
+    assert proc.returncode == 130, err
+    assert err.decode() == f"python -m {module}: interrupted by SIGINT\n"
+    assert readme.read_text(encoding="utf-8").count("old") == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["README.md"]
