@@ -32,9 +32,10 @@ check: $(STAMP)
 	$(BIN)/pendcli check
 	$(BIN)/python -m pendcli.docs --check
 
+# One process, one run: the regenerated tables and the README's sections written as one set
+# (pendcli.core.files.write_set), so an interrupt leaves all old or all new.
 regen: $(STAMP)
-	$(BIN)/pendcli check --update
-	$(BIN)/python -m pendcli.docs
+	$(BIN)/python -m pendcli.docs --tables
 
 lint: $(STAMP)
 	$(BIN)/ruff check pendcli tests

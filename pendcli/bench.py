@@ -127,30 +127,42 @@ def machine() -> dict[str, str]:
 
 
 def regenerate_tables(quick: bool = False, root: Path | None = None) -> dict[str, list[Point]]:
-    """Measure every family, write ``<root>/tradeoff/<family>.csv`` and the date measured."""
+    """Measure every family, write ``<root>/tradeoff/<family>.csv`` and the date measured
+    (all at once, :func:`table_files`)."""
+    from pendcli.core.files import write_set
+
+    measured = measure_tables(quick)
+    write_set(table_files(measured, root))
+    return measured
+
+
+def measure_tables(quick: bool = False) -> dict[str, list[Point]]:
+    """Every family's work-precision points, measured now (nothing written)."""
+    from pendcli import tradeoff
+
+    return {name: tradeoff.measure_family(name, quick=quick) for name in tradeoff.family_names()}
+
+
+def table_files(
+    measured: dict[str, list[Point]], root: Path | None = None
+) -> dict[Path, str | bytes | None]:
+    """The files ``measured`` makes: each family's CSV and ``measured.toml`` with today's date."""
     import datetime
 
     from pendcli import tradeoff
-    from pendcli.core.files import atomic_write
 
-    out = {}
-    for name in tradeoff.family_names():
-        points = tradeoff.measure_family(name, quick=quick)
-        path = tradeoff.table_path(name, root)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_name(f".{path.name}.bench")
-        tradeoff.write_table(points, tmp)
-        atomic_write(path, tmp.read_bytes())
-        tmp.unlink()
-        out[name] = points
+    files: dict[Path, str | bytes | None] = {}
+    for name, points in measured.items():
+        files[tradeoff.table_path(name, root)] = tradeoff.table_text(points)
     today = datetime.date.today().isoformat()
-    atomic_write(
-        tradeoff.table_path("measured", root).with_suffix(".toml"),
+    files[tradeoff.table_path("measured", root).with_suffix(".toml")] = (
         "# When the work-precision tables beside this file were measured; rewritten by "
         "`make bench`\n# (python -m pendcli.bench). `pendcli reproduce --out DIR` names this "
-        f'date in its report.\ndate = "{today}"\nby = "make bench"\n',
+        f'date in its report.\ndate = "{today}"\nby = "make bench"\n'
     )
-    return out
+    for path in files:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    return files
 
 
 # ---------------------------------------------------------------------------------------------
@@ -417,18 +429,26 @@ def section(
     return "\n".join(lines)
 
 
-def write_section(readme: Path, text: str) -> bool:
-    """Replace the text between the markers; False (nothing written) if they are absent."""
+def with_section(readme: Path, text: str) -> str | None:
+    """The README with ``text`` between the markers (None if the file or markers are absent)."""
     if not readme.exists():
-        return False
+        return None
     content = readme.read_text(encoding="utf-8")
     if START not in content or END not in content:
-        return False
+        return None
     head, rest = content.split(START, 1)
     _old, tail = rest.split(END, 1)
+    return f"{head}{START}\n{text}\n{END}{tail}"
+
+
+def write_section(readme: Path, text: str) -> bool:
+    """Replace the text between the markers; False (nothing written) if they are absent."""
+    new = with_section(readme, text)
+    if new is None:
+        return False
     from pendcli.core.files import atomic_write
 
-    atomic_write(readme, f"{head}{START}\n{text}\n{END}{tail}")
+    atomic_write(readme, new)
     return True
 
 
@@ -438,11 +458,17 @@ def run(
     tables: bool = True,
     root: Path | None = None,
     growth: bool | None = None,
+    readme: Path | None = None,
 ) -> str:
     """Every measurement, one after the other (never two at once), as the README section.
 
-    The cost-growth table (minutes) is left out of a ``quick`` run unless ``growth`` asks.
+    The measured tables, their date and (``readme``, when it has the markers) the README are
+    written together at the end (:func:`pendcli.core.files.write_set`): a run stopped before
+    leaves all of them as they were. The cost-growth table (minutes) is left out of a
+    ``quick`` run unless ``growth`` asks.
     """
+    from pendcli.core.files import write_set
+
     growth = not quick if growth is None else growth
     times = startup_times(runs)
     costs = {
@@ -451,8 +477,14 @@ def run(
     }
     peers = peer_ratios(quick)
     sized = growth_rows(quick) if growth else []
-    measured = regenerate_tables(quick=quick, root=root) if tables else committed_tables(root)
-    return section(times, costs, measured, runs, peers, sized)
+    measured = measure_tables(quick) if tables else committed_tables(root)
+    text = section(times, costs, measured, runs, peers, sized)
+    files: dict[Path, str | bytes | None] = {**table_files(measured, root)} if tables else {}
+    new_readme = with_section(readme, text) if readme is not None else None
+    if new_readme is not None and readme is not None:
+        files[readme] = new_readme
+    write_set(files)
+    return text
 
 
 def committed_tables(root: Path | None = None) -> dict[str, list[Point]]:
@@ -477,8 +509,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-growth", action="store_true", help="skip the cost-growth table")
     args = parser.parse_args(argv)
     growth = False if args.no_growth else None
-    text = run(args.runs, args.quick, not args.no_tables, args.tables_root, growth)
-    if args.write is not None and write_section(args.write, text):
+    text = run(args.runs, args.quick, not args.no_tables, args.tables_root, growth, args.write)
+    if args.write is not None and with_section(args.write, text) is not None:
         print(f"bench: updated {args.write}", file=sys.stderr)
     else:
         if args.write is not None:
@@ -492,4 +524,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from pendcli.core.interrupts import run_entry
+
+    sys.exit(run_entry(main, "python -m pendcli.bench"))

@@ -13,19 +13,28 @@ from __future__ import annotations
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from pendcli.render.columns import Column, Row
 from pendcli.render.markdown import to_markdown
 
+if TYPE_CHECKING:
+    from pendcli.reproduce import ReproduceResult
+
 __all__ = ["SECTIONS", "ledger_section", "main", "sample_section", "schema_section", "splice"]
 
 
-def sample_section() -> str:
+def _reproduce_all() -> ReproduceResult:
     from pendcli.core.claims import PAPERS
-    from pendcli.render.views import claim_columns
     from pendcli.reproduce import reproduce_all
 
-    result = reproduce_all(PAPERS, formulas=True, quiet=True)
+    return reproduce_all(PAPERS, formulas=True, quiet=True)
+
+
+def sample_section(result: ReproduceResult | None = None) -> str:
+    from pendcli.render.views import claim_columns
+
+    result = result if result is not None else _reproduce_all()
     summary = result.summary_rows()
     sample = _one_row_of_each_verdict(result.claim_dicts())
     columns = [c for c in claim_columns(sample, with_note=False) if c.key != "source"]
@@ -74,12 +83,12 @@ def ledger_section() -> str:
     from pendcli.core.claims import PAPERS
     from pendcli.core.ledger import coverage, equation_rows, labels_in_text
     from pendcli.core.ledger_check import STATUSES
-    from pendcli.core.tables import tables_dir
+    from pendcli.core.tables import paper_text
 
     counts = coverage(equation_rows(PAPERS))
     rows: list[Row] = []
     for key in PAPERS:
-        text = (tables_dir() / "papers" / f"{key}.txt").read_text("utf-8")
+        text = paper_text(key)
         c = counts[key]
         rows.append(
             {
@@ -111,15 +120,29 @@ def splice(readme: str, section: str, name: str = "sample") -> str:
 
 
 def main(argv: list[str]) -> int:
+    """Rewrite (``--check``: compare) the README's sections; ``--tables``: with the committed
+    tables regenerated from the same run, written as one set (``make regen``)."""
     path = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
-    text = path.read_text(encoding="utf-8")
+    from pendcli.core.tables import read_table_text
+
+    text = read_table_text(path, "README")
+    result = _reproduce_all()
+    makers = {**SECTIONS, "sample": lambda: sample_section(result)}  # one run for both
     new = text
-    for name, make in SECTIONS.items():
+    for name, make in makers.items():
         new = splice(new, make(), name)
     if "--check" in argv:
         if new != text:
             print(f"{path}: a generated section is stale; run `make regen`", file=sys.stderr)
             return 1
+        return 0
+    if "--tables" in argv:
+        from pendcli.regression import regenerated_tables, rewrite_with
+
+        tables = regenerated_tables(result)
+        removed = rewrite_with(tables, {path: new})
+        gone = f"; removed {', '.join(removed)}" if removed else ""
+        print(f"rewrote {len(tables)} tables and {path}{gone}", file=sys.stderr)
         return 0
     from pendcli.core.files import atomic_write
 
@@ -128,4 +151,6 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    from pendcli.core.interrupts import run_entry
+
+    sys.exit(run_entry(lambda: main(sys.argv[1:]), "python -m pendcli.docs"))

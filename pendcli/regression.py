@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 
 from pendcli.core.claims import PAPERS
 from pendcli.core.errors import PendcliError
-from pendcli.core.files import locked, remove_stale, replace_directory
+from pendcli.core.files import lock_file, locked, replace_owned_folder, write_through
 from pendcli.core.tables import tables_dir
 from pendcli.render.columns import Column
 from pendcli.render.csv import to_csv
@@ -41,6 +41,7 @@ __all__ = [
     "compare_tables",
     "find_drifts",
     "regenerated_tables",
+    "rewrite_with",
     "run_check",
 ]
 
@@ -258,6 +259,7 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     from pendcli.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"
+    _load_ledgers(root)
     result = reproduce_all(PAPERS, formulas=True, quiet=quiet)
     tables = regenerated_tables(result)
     out = console()
@@ -285,16 +287,28 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     return 0
 
 
+def _load_ledgers(root: Path | None) -> None:
+    """Every paper's equation ledger and text, read and validated (not checked: that is
+    ``pendcli equations``): a missing or empty one fails ``check`` instead of passing unseen."""
+    from pendcli.core.ledger import load_ledger
+
+    for key in PAPERS:
+        load_ledger(key, root)
+
+
 def _lock_file(folder: Path) -> Path:
-    return folder.parent / f".{folder.name}.lock"
+    return lock_file(write_through(folder, "tables/regenerated"))
 
 
 def _rewrite(folder: Path, tables: dict[str, str]) -> list[str]:
     """``pendcli check --update``: the committed tables become the regenerated ones.
 
     The whole set is written beside the folder and swapped in at once under an exclusive
-    lock, so a crash leaves the old set or the new one, never a mix or a cut table.
-    Returns the names of the tables that are no longer produced (removed by the swap).
+    lock (a second writer waits), so a crash leaves the old set or the new one, never a mix
+    or a cut table. A file that is not a table pendcli writes (``<paper>-claims.csv``,
+    ``<paper>-formulas.csv``) makes it refuse rather than delete it; a symlinked folder is
+    written through. Returns the names of the tables that are no longer produced (removed by
+    the swap).
     """
 
     def fill(tmp: Path) -> None:
@@ -302,9 +316,33 @@ def _rewrite(folder: Path, tables: dict[str, str]) -> list[str]:
             (tmp / name).write_text(text, encoding="utf-8")
 
     removed = sorted(p.name for p in folder.glob("*.csv") if p.name not in tables)
+    replace_owned_folder(
+        folder,
+        fill,
+        "tables/regenerated",
+        known=lambda n: expected_columns(n) is not None,
+        wait=True,
+    )
+    return removed
+
+
+def rewrite_with(
+    tables: dict[str, str], others: dict[Path, str], root: Path | None = None
+) -> list[str]:
+    """``make regen``: the committed tables and ``others`` (the README) rewritten as one set
+    (:func:`pendcli.core.files.write_set`: all written first, then renamed in one short loop
+    that Ctrl-C or TERM cannot split), under the tables' lock. Returns the tables removed."""
+    from pendcli.core.files import check_owned, write_set
+
+    folder = write_through((root or tables_dir()).resolve() / "regenerated", "tables/regenerated")
+    folder.mkdir(parents=True, exist_ok=True)
     with locked(_lock_file(folder)):
-        remove_stale(folder.parent, folder.name)
-        replace_directory(folder, fill)
+        check_owned(folder, "tables/regenerated", lambda n: expected_columns(n) is not None)
+        removed = sorted(p.name for p in folder.glob("*.csv") if p.name not in tables)
+        changes: dict[Path, str | bytes | None] = {folder / n: t for n, t in tables.items()}
+        changes.update({folder / name: None for name in removed})
+        changes.update(others)
+        write_set(changes)
     return removed
 
 

@@ -175,7 +175,9 @@ def check_out_folder(out: Path | str) -> Path:
     """Refuse an unusable output folder before any computation (one line, exit 2).
 
     The folder is replaced as a whole, so it must not be the current folder (or hold it), nor a
-    file, nor a folder of other files; its nearest existing parent must be a writable folder.
+    file, nor a folder pendcli did not make (:func:`pendcli.core.files.check_owned`: its
+    manifest lists every file in it), nor one another run is writing; its nearest existing
+    parent must be a writable folder. A symlink is followed: the folder it names is written.
     """
     text = str(out)
     if text.strip() in ("", "."):
@@ -188,11 +190,10 @@ def check_out_folder(out: Path | str) -> Path:
     here = Path.cwd().resolve()
     if path.resolve() in (here, *here.parents):
         raise PendcliError(f"--out {text!r} holds the current folder; give a folder of its own")
-    if path.is_dir() and any(path.iterdir()) and not (path / "report.md").is_file():
-        raise PendcliError(
-            f"--out {text!r} is a folder of other files (no report.md) and would be replaced "
-            "as a whole; give a new or empty folder, or an earlier report's"
-        )
+    from pendcli.core.files import check_owned, probe_lock, write_through
+
+    check_owned(write_through(path, "--out"), "--out")
+    probe_lock(path, "--out")
     parent = path.resolve().parent
     while not parent.exists():
         parent = parent.parent
@@ -244,22 +245,26 @@ def write_report(
 ) -> list[Path]:
     """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``.
 
-    The whole folder is built beside ``out`` and swapped in at the end: files of an earlier
-    report that this one does not write are gone, and a failure leaves the old ``out`` as it
-    was. ``measure`` times the speed/accuracy families now instead of reading the committed
+    The whole folder is built beside ``out`` and swapped in at the end, under ``out``'s lock
+    (a concurrent run is refused): files of an earlier report that this one does not write
+    are gone, and a failure leaves the old ``out`` as it was. The folder's manifest
+    (``pendcli-manifest.txt``) lists every file written, and only such a folder is replaced.
+    ``measure`` times the speed/accuracy families now instead of reading the committed
     work-precision tables; ``jobs`` processes draw the figures (default: up to 2).
     """
-    from pendcli.core.files import remove_stale, replace_directory
+    from pendcli.core.files import MANIFEST, replace_owned_folder
+    from pendcli.core.tables import paper_text
 
     target = check_out_folder(out)
-    remove_stale(target.resolve().parent, target.name)
+    for key in result.papers:  # the HTML pages show them: missing or empty is an error
+        paper_text(key)
     written: list[Path] = []
 
     def fill(folder: Path) -> None:
         written.extend(_fill(result, folder, quiet, measure, jobs))
 
-    replace_directory(target, fill)
-    return [target / p for p in written]
+    replace_owned_folder(target, fill, "--out")
+    return [target / p for p in (*written, Path(MANIFEST))]
 
 
 def _fill(
@@ -476,9 +481,9 @@ def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tr
             writer.written.append(Path("tradeoff") / f"{name}.csv")
             points += measured
             fresh.append(name)
-        else:
-            writer.text(f"tradeoff/{name}.csv", committed.read_text(encoding="utf-8"))
+        else:  # validated (UTF-8, every cell) before it is copied
             points += tradeoff.read_table(committed)
+            writer.text(f"tradeoff/{name}.csv", committed.read_text(encoding="utf-8"))
     return _Tradeoff(points, _provenance(tradeoff, names, fresh))
 
 

@@ -258,16 +258,21 @@ def _csv_cells(p: Point) -> list[object]:
     ]
 
 
-def write_table(points: list[Point], path: Path) -> Path:
-    """The family's table, written atomically (``tables/tradeoff/*.csv`` are committed)."""
-    from pendcli.core.files import atomic_write
-
+def table_text(points: list[Point]) -> str:
+    """The family's table as CSV text (what :func:`write_table` writes)."""
     buffer = io.StringIO(newline="")
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(CSV_KEYS)
     writer.writerows(_csv_cells(p) for p in points)
+    return buffer.getvalue()
+
+
+def write_table(points: list[Point], path: Path) -> Path:
+    """The family's table, written atomically (``tables/tradeoff/*.csv`` are committed)."""
+    from pendcli.core.files import atomic_write
+
     path.parent.mkdir(parents=True, exist_ok=True)
-    return atomic_write(path, buffer.getvalue())
+    return atomic_write(path, table_text(points))
 
 
 def read_table(path: Path) -> list[Point]:
@@ -338,16 +343,17 @@ def _table_number(
 
 
 def measured_on(root: Path | None = None) -> str | None:
-    """When ``make bench`` measured the committed tables (``tradeoff/measured.toml``), or None."""
-    import tomllib
+    """When ``make bench`` measured the committed tables (``tradeoff/measured.toml``), or None
+    without that file; a file that is not valid UTF-8 TOML with a string date is an error."""
+    from pendcli.core.tables import read_toml
 
     path = table_path("measured", root).with_suffix(".toml")
-    try:
-        with path.open("rb") as fh:
-            date = tomllib.load(fh).get("date")
-    except (OSError, tomllib.TOMLDecodeError):
+    if not path.exists():
         return None
-    return str(date) if date else None
+    date = read_toml(path, "measurement record").get("date")
+    if not isinstance(date, str) or not date:
+        raise PendcliError(f"measurement record {path}: date must be a non-empty string")
+    return date
 
 
 def choose(family: str, tol: float, points: list[Point] | None = None) -> Point:

@@ -18,6 +18,7 @@ import os
 import re
 import resource
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -127,6 +128,45 @@ def test_kill_during_check_update_leaves_the_old_or_the_new_set(tmp_path: Path) 
     assert new is not None and new != old
     assert killed in (old, new)
     assert leftovers(tables) == []
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_ctrl_c_or_term_during_check_update_is_one_line_and_old_or_new(
+    tmp_path: Path, signum: signal.Signals
+) -> None:
+    """Stopped once the write has begun (its lock taken): the old set or the new, status 130
+    or 143, one line, no temporary folder, no lock file, no traceback."""
+    tables = copy_tables(tmp_path / "tables")
+    make_stale(tables)
+    old = snapshot(tables / "regenerated")
+    proc = subprocess.Popen(
+        cli_command("check", "--update", "--quiet"),
+        env={**child_env(tables), "PENDCLI_JOBS": "1"},
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+        cwd=tmp_path,
+        start_new_session=True,
+    )
+    lock = tables / ".regenerated.lock"
+    for _ in range(400_000):  # bounded by count: until the writer holds its lock
+        if proc.poll() is not None or lock.exists():
+            break
+        time.sleep(0.0005)
+    if proc.poll() is None:
+        os.killpg(proc.pid, signum)
+    _, err = proc.communicate()
+    after = snapshot(tables / "regenerated")
+    assert "Traceback" not in err, err
+    assert sorted(p.name for p in tables.iterdir() if p.name.startswith(".")) == []
+    if proc.returncode == 0:  # it finished first: the new set
+        assert after != old
+        return
+    assert proc.returncode == 128 + signum, err
+    assert err == f"pendcli: error: interrupted by {signum.name}\n"
+    if after != old:  # the swap came first: the whole new set
+        assert after is not None and run_cli(tables, "check").returncode == 0
 
 
 def _limit_file_size() -> None:

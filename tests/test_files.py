@@ -193,14 +193,74 @@ def test_check_update_swaps_the_whole_set(tmp_path: Path) -> None:
     root = Path(__file__).resolve().parent.parent / "tables"
     copy = tmp_path / "tables"
     shutil.copytree(root, copy)
-    (copy / "regenerated" / "extra.csv").write_text("id\n")
+    (copy / "regenerated" / "retired-claims.csv").write_text("id\n")
     (copy / "regenerated" / "lecornu-claims.csv").write_text("id\ncut mid-r")  # a cut table
     env = {**os.environ, "PENDCLI_TABLES": str(copy)}
     cmd = [sys.executable, "-m", "pendcli", "check", "--update"]
     out = subprocess.run(cmd, capture_output=True, text=True, env=env)
     assert out.returncode == 0, out.stderr
-    assert "removed 1 table(s) no longer produced: extra.csv" in out.stdout
+    assert "removed 1 table(s) no longer produced: retired-claims.csv" in out.stdout
     names = sorted(p.name for p in (copy / "regenerated").iterdir())
     assert names == sorted(p.name for p in (root / "regenerated").iterdir())
     assert (copy / "regenerated" / "lecornu-claims.csv").read_text().startswith("id,published")
     assert not [p for p in copy.iterdir() if p.name.startswith(".regenerated.") and p.is_dir()]
+
+
+def test_an_exclusive_holder_removes_its_lock_file_and_a_busy_lock_is_refused(
+    tmp_path: Path,
+) -> None:
+    lock = tmp_path / ".out.lock"
+    with locked(lock):
+        assert lock.exists()
+        with (
+            pytest.raises(PendcliError, match=r"^busy: another run$"),
+            locked(lock, busy="busy: another run"),
+        ):
+            pass
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_waiter_on_a_removed_lock_file_locks_the_current_one(tmp_path: Path) -> None:
+    """A writer that waited on a lock file its holder then removed must not believe it holds
+    the lock: it locks the file now at that path (else two writers would run at once)."""
+    lock = tmp_path / ".out.lock"
+    script = textwrap.dedent(
+        f"""
+        import sys
+        from pendcli.core.files import locked
+        with locked({str(lock)!r}):
+            print("held", flush=True)
+            sys.stdin.readline()
+        """
+    )
+    holder = subprocess.Popen(
+        [sys.executable, "-c", script], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
+    )
+    assert holder.stdout is not None and holder.stdout.readline() == "held\n"
+    stale_fd = os.open(lock, os.O_RDWR)  # what a waiter opened before the holder finished
+    assert holder.stdin is not None
+    holder.stdin.write("\n")
+    holder.stdin.close()
+    holder.wait()
+    assert not lock.exists()
+    with locked(lock):  # locks a new file at the path, not the removed one
+        assert lock.exists() and os.fstat(stale_fd).st_ino != lock.stat().st_ino
+    os.close(stale_fd)
+
+
+def test_write_set_failing_before_its_renames_changes_nothing(tmp_path: Path) -> None:
+    from pendcli.core.files import write_set
+
+    (tmp_path / "a.csv").write_text("old a")
+    (tmp_path / "b.csv").write_text("old b")
+    changes: dict[Path, str | bytes | None] = {
+        tmp_path / "a.csv": "new a",
+        tmp_path / "missing" / "c.csv": "new c",  # its folder does not exist
+        tmp_path / "b.csv": None,
+    }
+    with pytest.raises(PendcliError, match=r"cannot write .*missing/c\.csv"):
+        write_set(changes)
+    assert _snapshot(tmp_path) == {"a.csv": b"old a", "b.csv": b"old b"}
+    del changes[tmp_path / "missing" / "c.csv"]
+    write_set(changes)
+    assert _snapshot(tmp_path) == {"a.csv": b"new a"}

@@ -123,6 +123,9 @@ def _small_ledger(root: Path, change: dict[str, dict[str, str | None]] | None = 
             parts.append(f"[[equation]]\n{body}")
     (root / "equations").mkdir()
     (root / "equations" / "charbonnier.toml").write_text("\n\n".join(parts) + "\n", "utf-8")
+    (root / "papers").mkdir()  # the text the ledger names must exist (and not be empty)
+    text = raw["ledger"]["text"].removeprefix("tables/")
+    (root / text).write_bytes((TABLES / text).read_bytes())
 
 
 def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) -> None:
@@ -131,7 +134,9 @@ def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) ->
     assert sorted(i.row.id for i in items) == sorted(SMALL)
     assert [i.problem for i in items] == [None] * len(SMALL)
     assert [i.check is None for i in items] == [i.row.status == "definition" for i in items]
-    rows = equation_rows(["tisserand", "charbonnier"], tmp_path)  # no tisserand ledger here
+    with pytest.raises(PendcliError, match=r"equation ledger .*tisserand\.toml is missing"):
+        equation_rows(["tisserand", "charbonnier"], tmp_path)  # no tisserand ledger here
+    rows = equation_rows(["charbonnier"], tmp_path)
     assert all(tuple(r) == OUTPUT_KEYS for r in rows)
     fails = next(r for r in rows if r["status"] == "fails")
     assert "(computed: " in str(fails["note"])

@@ -135,12 +135,20 @@ def _stub_figures(monkeypatch):
     monkeypatch.setattr(report, "_draw", draw)
 
 
+def _earlier_manifest(out, *names):
+    """The manifest an earlier run wrote (its files listed): the folder is pendcli's."""
+    from pendcli.core import files
+
+    (out / files.MANIFEST).write_text(files.manifest_text(list(names)), "utf-8")
+
+
 def test_report_replaces_the_folder_as_a_whole(tmp_path, monkeypatch):
     _stub_figures(monkeypatch)
     out = tmp_path / "out"
     out.mkdir()
     (out / "report.md").write_text("old", encoding="utf-8")
     (out / "stale.csv").write_text("old", encoding="utf-8")
+    _earlier_manifest(out, "report.md", "stale.csv")
     written = write_report(ONE_PAPER, out, jobs=1)
     assert not (out / "stale.csv").exists()
     assert sorted(p.relative_to(out).as_posix() for p in written) == sorted(
@@ -158,9 +166,10 @@ def test_a_failure_while_writing_leaves_the_old_folder_intact(tmp_path, monkeypa
     out = tmp_path / "out"
     out.mkdir()
     (out / "report.md").write_text("old report", encoding="utf-8")
+    _earlier_manifest(out, "report.md")
     with pytest.raises(PendcliError, match="disk full"):
         write_report(ONE_PAPER, out, jobs=1)
-    assert [p.name for p in out.iterdir()] == ["report.md"]
+    assert sorted(p.name for p in out.iterdir()) == ["pendcli-manifest.txt", "report.md"]
     assert (out / "report.md").read_text(encoding="utf-8") == "old report"
     assert [p.name for p in tmp_path.iterdir()] == ["out"]
 

@@ -111,7 +111,10 @@ def _with_constants(text: str) -> str:
     return GOOD.replace('seed = "x.txt"\n', 'seed = "x.txt"\n' + text)
 
 
-def test_constants_and_claims_are_looked_up_by_name(tmp_path):
+def test_constants_and_claims_are_looked_up_by_name(tmp_path, monkeypatch):
+    from pendcli.core import tables
+
+    monkeypatch.setitem(tables.CONSTANT_RANGES, "demo", {"g": (1.0, 100.0, "m/s²")})
     table = load_paper_table("demo", write(tmp_path, _with_constants(CONSTANTS)))
     assert table.constant("g") == 9.81
     assert table.constants[0].unit == "m/s²"

@@ -423,6 +423,9 @@ def run() -> None:
     atexit.unregister(gc.freeze)
     atexit.register(gc.freeze)
     set_quiet(False)
+    from pendcli.core.interrupts import stop_on_signals
+
+    stop_on_signals()  # Ctrl-C, TERM, HUP: one line, status 128 + the signal (_invoke)
     original = protect_streams()
     try:
         code = _invoke(sys.argv[1:])
@@ -436,6 +439,7 @@ def _invoke(args: list[str]) -> int:
     """Run the app; turn every way it can end into an exit code and at most one stderr line."""
     from pendcli.core.errors import PendcliError
     from pendcli.core.files import describe_os_error
+    from pendcli.core.interrupts import Interrupted
 
     try:
         # prog_name fixed: the usage line and the completion variable (_PENDCLI_COMPLETE)
@@ -448,6 +452,8 @@ def _invoke(args: list[str]) -> int:
             _write_error(exc.format_message(), prefix="")
             return 2
         return _fail(usage_message(exc, args), 2)
+    except Interrupted as exc:
+        return _fail(str(exc), exc.status)
     except (typer.Abort, KeyboardInterrupt):
         return _fail("aborted", 130)
     except typer.Exit as exc:

@@ -10,6 +10,13 @@ Every file pendcli commits or hands to a user goes through here:
   exchange is not available it falls back to two renames, leaving at worst the new folder
   under a temporary name beside a missing target, never a mix.
 - :func:`locked` serialises writers and readers of a folder with ``flock``.
+- :func:`replace_owned_folder` does the swap under that lock and only for a folder pendcli
+  made (its :data:`MANIFEST`, or a fixed set of names), writing through a symlinked target.
+
+Temporary names carry the writer's pid (``.name.new-<pid>-<random>``,
+``.name.<pid>-<random>.tmp``): leftovers of a killed run are removed by the next one only
+when that pid is no longer alive, and nothing else beside a target is ever touched. Modes
+follow the umask (a replaced file or folder keeps its own).
 
 An OS failure (full disk, read-only folder, missing parent) becomes a :class:`PendcliError`
 naming the path and the cause, never a traceback.
@@ -21,16 +28,37 @@ import contextlib
 import ctypes
 import ctypes.util
 import errno
+import glob
+import hashlib
 import os
+import re
 import shutil
+import stat
 import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from pendcli.core.errors import PendcliError
 
-__all__ = ["atomic_write", "describe_os_error", "locked", "remove_stale", "replace_directory"]
+__all__ = [
+    "MANIFEST",
+    "atomic_write",
+    "check_owned",
+    "describe_os_error",
+    "lock_file",
+    "locked",
+    "manifest_text",
+    "probe_lock",
+    "remove_stale",
+    "replace_directory",
+    "replace_owned_folder",
+    "write_set",
+    "write_through",
+]
 
+# The signals a user or a supervisor sends to stop a run: held back while a lock is taken or
+# released and during a set's renames.
+_STOP_SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP", "SIGQUIT")
 _RENAME_EXCHANGE = 2  # linux/fs.h
 _AT_FDCWD = -100
 
@@ -63,27 +91,94 @@ def _fsync_dir(folder: Path) -> None:
 
 
 def atomic_write(path: Path | str, data: str | bytes, encoding: str = "utf-8") -> Path:
-    """Write ``data`` to ``path`` atomically (temporary file, fsync, rename)."""
+    """Write ``data`` to ``path`` atomically (temporary file, fsync, rename).
+
+    The new file keeps the mode of the file it replaces, else gets the umask's (0666 masked);
+    leftovers of a killed earlier write of the same file (dead writer) are removed first.
+    """
     target = Path(path)
-    payload = data.encode(encoding) if isinstance(data, str) else data
-    tmp: str | None = None
+    tmp = _write_temporary(target, data.encode(encoding) if isinstance(data, str) else data)
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(payload)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.chmod(tmp, 0o644)
         os.replace(tmp, target)
-        tmp = None
     except OSError as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
         raise PendcliError(describe_os_error(exc, target)) from None
-    finally:
-        if tmp is not None:
-            with contextlib.suppress(OSError):
-                os.unlink(tmp)
     _fsync_dir(target.parent)
     return target
+
+
+def _umask() -> int:
+    # os.umask can only be read by setting it: set it back at once (pendcli has no threads
+    # that create files at this moment).
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
+def _mode_for(target: Path, full: int) -> int:
+    """The mode a replacement of ``target`` gets: the old file's, else ``full`` under the umask."""
+    try:
+        return stat.S_IMODE(os.stat(target).st_mode)
+    except OSError:
+        return full & ~_umask()
+
+
+# A temporary name is the target's name plus at most this many bytes (".", ".new-", the pid,
+# "-", 8 random characters, ".tmp"); a name too long for that is shortened and hashed, so a
+# legal 255-byte target name still has a legal temporary name.
+_TEMP_ROOM = 40
+_NAME_MAX = 255
+
+
+def _tag(name: str) -> str:
+    """``name``, or a shortened, hashed stand-in when ``.name`` plus a suffix would not fit."""
+    raw = os.fsencode(name)
+    if len(raw) + _TEMP_ROOM <= _NAME_MAX:
+        return name
+    digest = hashlib.sha1(raw).hexdigest()[:12]
+    keep = raw[: _NAME_MAX - _TEMP_ROOM - len(digest) - 1]
+    return f"{os.fsdecode(keep)}~{digest}"  # a cut character stays its bytes (surrogateescape)
+
+
+def _temp_prefix(name: str) -> str:
+    return f".{_tag(name)}.{os.getpid()}-"
+
+
+# mkstemp/mkdtemp's 8 random characters
+_RANDOM = "[a-z0-9_]{8}"
+
+
+def _pid_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True  # someone else's live process
+    except (OverflowError, OSError):
+        return False
+    return True
+
+
+def _dead_leftovers(folder: Path, pattern: str, shape: str) -> Iterator[Path]:
+    """Entries of ``folder`` matching the glob ``pattern`` and the regular expression
+    ``shape`` (whose group ``pid`` names the writer) whose writer is no longer alive."""
+    regex = re.compile(shape)
+    for candidate in folder.glob(pattern):
+        match = regex.fullmatch(candidate.name)
+        if match is not None and not _pid_alive(int(match.group("pid"))):
+            yield candidate
+
+
+def _remove_dead_temporaries(folder: Path, name: str) -> None:
+    """Remove ``.name.<pid>-<random>.tmp`` files of :func:`atomic_write` whose writer died."""
+    tag = _tag(name)
+    shape = rf"\.{re.escape(tag)}\.(?P<pid>\d+)-{_RANDOM}\.tmp"
+    for leftover in _dead_leftovers(folder, f".{glob.escape(tag)}.*.tmp", shape):
+        if leftover.is_file() and not leftover.is_symlink():
+            with contextlib.suppress(OSError):
+                leftover.unlink()
 
 
 def _exchange(a: Path, b: Path) -> bool:
@@ -125,17 +220,19 @@ def replace_directory(target: Path | str, fill: Callable[[Path], object]) -> Pat
     parent = target.parent
     try:
         parent.mkdir(parents=True, exist_ok=True)
-        new = Path(tempfile.mkdtemp(prefix=f".{target.name}.new-", dir=parent))
+        mode = _mode_for(target, 0o777)
+        new = Path(tempfile.mkdtemp(prefix=f".{_tag(target.name)}.new-{os.getpid()}-", dir=parent))
     except OSError as exc:
         raise PendcliError(describe_os_error(exc, target)) from None
     try:
         fill(new)
         _sync_tree(new)
-        os.chmod(new, 0o755)
+        os.chmod(new, mode)
         if target.exists() and _exchange(new, target):
             old = new  # after the exchange the temporary name holds the old folder
         elif target.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{target.name}.old-", dir=parent))
+            prefix = f".{_tag(target.name)}.old-{os.getpid()}-"
+            old = Path(tempfile.mkdtemp(prefix=prefix, dir=parent))
             os.rmdir(old)
             os.rename(target, old)
             os.rename(new, target)
@@ -164,28 +261,299 @@ def _as_target(text: str, new: Path, target: Path) -> str:
 
 
 def remove_stale(parent: Path | str, name: str) -> None:
-    """Remove leftovers of an interrupted :func:`replace_directory` of ``parent/name``."""
-    for leftover in Path(parent).glob(f".{name}.*-*"):
-        if leftover.is_dir():
+    """Remove leftovers of an interrupted :func:`replace_directory` of ``parent/name``.
+
+    Only pendcli's own temporary folders of that target (``.name.new-<pid>-<random>``,
+    ``.name.old-<pid>-<random>``, the name glob-escaped) whose writer is no longer alive are
+    removed; nothing else beside the target is touched.
+    """
+    tag = _tag(name)
+    shape = rf"\.{re.escape(tag)}\.(?:new|old)-(?P<pid>\d+)-{_RANDOM}"
+    for leftover in _dead_leftovers(Path(parent), f".{glob.escape(tag)}.*-*", shape):
+        if leftover.is_dir() and not leftover.is_symlink():
             shutil.rmtree(leftover, ignore_errors=True)
 
 
-@contextlib.contextmanager
-def locked(lock_file: Path | str, shared: bool = False) -> Iterator[None]:
-    """Hold an advisory lock on ``lock_file`` (shared for readers, exclusive for writers)."""
-    import fcntl
+def lock_file(target: Path | str) -> Path:
+    """The lock file of a target folder: beside it, ``.name.lock`` (kept between runs)."""
+    target = Path(target)
+    return target.parent / f".{_tag(target.name)}.lock"
 
+
+@contextlib.contextmanager
+def locked(lock_file: Path | str, shared: bool = False, busy: str | None = None) -> Iterator[None]:
+    """Hold an advisory lock on ``lock_file`` (shared for readers, exclusive for writers).
+
+    With ``busy`` (a message), a lock another process holds is refused with that message
+    instead of waited for. An exclusive holder removes the lock file when done; a waiter that
+    then holds a removed file's lock tries again on the current one. The file is created and
+    locked with the stopping signals held back, so an interrupt never leaves a lock file that
+    no one holds.
+    """
     path = Path(lock_file)
+    fd, held = -1, False
     try:
-        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
-    except OSError as exc:
-        # A read-only tree can still be read: without a lock file there is no writer either.
-        if shared:
-            yield
-            return
-        raise PendcliError(describe_os_error(exc, path)) from None
-    try:
-        fcntl.flock(fd, fcntl.LOCK_SH if shared else fcntl.LOCK_EX)
+        while not held:
+            with _signals_held():  # an interrupt lands after, inside this try
+                fd = _open_lock_file(path, shared)
+                got = fd < 0 or _lock(fd, shared, path, wait=False)
+                held = got is True
+            if fd < 0:  # a read-only tree can still be read: no lock file, no writer either
+                break
+            if got is None:
+                if busy:
+                    raise PendcliError(busy)
+                held = _lock(fd, shared, path, wait=True) is True  # the holder removes it
+            if not held:
+                fd = _closed(fd)
         yield
     finally:
-        os.close(fd)
+        with _signals_held():
+            if held and not shared:
+                with contextlib.suppress(OSError):
+                    os.unlink(path)
+            _closed(fd)
+
+
+def _open_lock_file(path: Path, shared: bool) -> int:
+    """The lock file's descriptor; -1 for a reader where it cannot be created (read-only)."""
+    try:
+        return os.open(path, os.O_RDWR | os.O_CREAT, 0o666)
+    except OSError as exc:
+        if shared:
+            return -1
+        raise PendcliError(describe_os_error(exc, path)) from None
+
+
+def _closed(fd: int) -> int:
+    if fd >= 0:
+        with contextlib.suppress(OSError):
+            os.close(fd)
+    return -1
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """Hold back SIGINT, SIGTERM, SIGHUP, SIGQUIT (delivered on leaving)."""
+    import signal
+
+    stops = {getattr(signal, name) for name in _STOP_SIGNALS if hasattr(signal, name)}
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, stops)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, held)
+
+
+def _lock(fd: int, shared: bool, path: Path, wait: bool) -> bool | None:
+    """Lock ``fd``: True when held; None when another process holds it (``wait`` False);
+    False when ``path`` no longer names the file locked (its holder removed it)."""
+    import fcntl
+
+    kind = fcntl.LOCK_SH if shared else fcntl.LOCK_EX
+    try:
+        fcntl.flock(fd, kind | (0 if wait else fcntl.LOCK_NB))
+        current = os.stat(path)
+    except BlockingIOError:
+        return None
+    except FileNotFoundError:
+        return False
+    mine = os.fstat(fd)
+    return (mine.st_dev, mine.st_ino) == (current.st_dev, current.st_ino)
+
+
+# Written into every folder pendcli makes as a whole (``reproduce --out``): the files it
+# wrote. A non-empty folder without it, or holding a file it does not list, is not pendcli's
+# and is never replaced.
+MANIFEST = "pendcli-manifest.txt"
+_MANIFEST_HEAD = (
+    "# Files pendcli wrote in this folder, one a line. pendcli replaces this folder as a whole\n"
+    "# only while every file in it is listed here; anything else makes it refuse.\n"
+)
+
+
+def folder_entries(folder: Path) -> list[str]:
+    """Every file, link and subfolder under ``folder``, as POSIX paths relative to it."""
+    entries = []
+    for root, dirs, files in os.walk(folder):
+        base = Path(root).relative_to(folder)
+        entries += [(base / n).as_posix() for n in (*dirs, *files)]
+    return sorted(entries)
+
+
+def read_manifest(folder: Path) -> set[str] | None:
+    """The files ``folder``'s manifest lists (None without a readable manifest)."""
+    path = folder / MANIFEST
+    if path.is_symlink() or not path.is_file():
+        return None
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        return None
+    if not text.startswith(_MANIFEST_HEAD):
+        return None
+    return {line for line in text.splitlines() if line and not line.startswith("#")}
+
+
+def manifest_text(names: list[str]) -> str:
+    """The manifest listing ``names`` (paths relative to its folder)."""
+    return _MANIFEST_HEAD + "".join(f"{name}\n" for name in names if name != MANIFEST)
+
+
+def _manifest_of(folder: Path) -> str:
+    return manifest_text([e for e in folder_entries(folder) if not (folder / e).is_dir()])
+
+
+def check_owned(target: Path, what: str, known: Callable[[str], bool] | None = None) -> None:
+    """Refuse (one line) to replace a non-empty folder with a file pendcli did not write.
+
+    pendcli's files are those the folder's :data:`MANIFEST` lists, or, with ``known``, those
+    whose relative path ``known`` accepts (a committed set of fixed names).
+    """
+    if not target.is_dir():
+        return
+    present = folder_entries(target)
+    if not present:
+        return
+    suggestion = "move them away or give a new folder"
+    if known is None:
+        listed = read_manifest(target)
+        if listed is None:
+            raise PendcliError(
+                f"{what} {str(target)!r} is a folder pendcli did not make (no {MANIFEST}) "
+                "and would be replaced as a whole; give a new or empty folder"
+            )
+        ours = {MANIFEST, *listed}
+        ours |= {p.as_posix() for name in listed for p in Path(name).parents if p != Path(".")}
+    else:
+        ours = {name for name in present if known(name)}
+    foreign = [name for name in present if name not in ours]
+    if foreign:
+        raise PendcliError(
+            f"{what} {str(target)!r} holds {len(foreign)} file(s) pendcli did not write "
+            f"({foreign[0]!r}) that replacing it would delete; {suggestion}"
+        )
+
+
+def write_through(target: Path, what: str) -> Path:
+    """The folder a symlinked ``target`` names (written in place of the link, which stays),
+    or ``target`` itself; a link to nothing or to a file is refused."""
+    if not target.is_symlink():
+        return target
+    real = target.resolve()
+    if not real.is_dir():
+        problem = "a file" if real.exists() else "nothing"
+        raise PendcliError(f"{what} {str(target)!r} is a link to {problem} ({real}); give a folder")
+    return real
+
+
+def replace_owned_folder(
+    target: Path | str,
+    fill: Callable[[Path], object],
+    what: str,
+    known: Callable[[str], bool] | None = None,
+    wait: bool = False,
+) -> Path:
+    """:func:`replace_directory` of a folder pendcli owns, under an exclusive lock.
+
+    The lock (:func:`lock_file`) is held from the ownership check to the swap: a second
+    writer waits (``wait``) or is refused in one line. Only a folder pendcli made is replaced
+    (:func:`check_owned`); without ``known`` the new folder gets a :data:`MANIFEST` of the
+    files ``fill`` wrote. A symlinked target is written through (:func:`write_through`).
+    Returns the folder written (the link's target for a link).
+    """
+    real = write_through(Path(target), what)
+    busy = None
+    if not wait:
+        busy = (
+            f"{what} {str(target)!r} is being written by another pendcli run; wait for it "
+            "to finish or give another folder"
+        )
+    try:
+        real.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise PendcliError(describe_os_error(exc, real)) from None
+
+    def fill_all(tmp: Path) -> None:
+        fill(tmp)
+        if known is None:
+            (tmp / MANIFEST).write_text(_manifest_of(tmp), encoding="utf-8")
+
+    with locked(lock_file(real), busy=busy):
+        check_owned(real, what, known)
+        remove_stale(real.parent, real.name)
+        replace_directory(real, fill_all)
+    return real
+
+
+def probe_lock(target: Path, what: str) -> None:
+    """Refuse now (one line) if another pendcli run holds ``target``'s lock."""
+    path = lock_file(write_through(target, what))
+    if path.is_file():
+        busy = (
+            f"{what} {str(target)!r} is being written by another pendcli run; wait for it "
+            "to finish or give another folder"
+        )
+        with locked(path, busy=busy):
+            pass
+
+
+def write_set(changes: dict[Path, str | bytes | None]) -> None:
+    """Write a set of files in different places (``None``: remove that file) as nearly at
+    once as POSIX allows.
+
+    There is no atomic rename of several files. So every new file is first written in full to
+    a temporary beside its target and synced; only then does one short loop rename them over
+    their targets (and remove the dropped ones), with the stopping signals blocked, so Ctrl-C
+    or a TERM arriving mid-way takes effect after the whole set. Only a SIGKILL or a power
+    cut within that loop (a few renames) can leave it part new. A failure before the loop
+    leaves every target untouched.
+    """
+
+    temporaries: dict[Path, str] = {}
+    try:
+        for path, data in changes.items():
+            if data is not None:
+                temporaries[path] = _write_temporary(path, data)
+        with _signals_held():
+            for path, data in changes.items():
+                if data is None:
+                    with contextlib.suppress(FileNotFoundError):
+                        os.unlink(path)
+                else:
+                    os.replace(temporaries.pop(path), path)
+            for folder in {path.parent for path in changes}:
+                _fsync_dir(folder)
+    except OSError as exc:
+        raise PendcliError(describe_os_error(exc)) from None
+    finally:
+        for tmp in temporaries.values():
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+
+
+def _write_temporary(target: Path, data: str | bytes) -> str:
+    """``data`` in a synced temporary file beside ``target``, with the mode ``target`` will
+    have; its path."""
+    payload = data.encode("utf-8") if isinstance(data, str) else data
+    try:
+        _remove_dead_temporaries(target.parent, target.name)
+        mode = _mode_for(target, 0o666)
+        fd, tmp = tempfile.mkstemp(
+            prefix=_temp_prefix(target.name), suffix=".tmp", dir=target.parent
+        )
+    except OSError as exc:
+        raise PendcliError(describe_os_error(exc, target)) from None
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(payload)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.chmod(tmp, mode)
+    except BaseException as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        if isinstance(exc, OSError):
+            raise PendcliError(describe_os_error(exc, target)) from None
+        raise
+    return tmp

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import importlib
 import re
-import tomllib
 from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -139,22 +138,22 @@ def ledger_path(paper: str, root: Path | None = None) -> Path:
 
 
 def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
-    """The papers that have a ledger, in the project's order."""
+    """The papers whose ledger file exists, in the project's order (every paper needs one:
+    :func:`equation_rows` refuses a missing one)."""
     from pendcli.core.claims import PAPERS
 
     return tuple(p for p in PAPERS if ledger_path(p, root).is_file())
 
 
 def load_ledger(paper: str, root: Path | None = None) -> Ledger:
-    """Read and strictly validate ``tables/equations/<paper>.toml``."""
+    """Read and strictly validate ``tables/equations/<paper>.toml`` and the text it names
+    (missing, empty, not a file or not UTF-8: an error, never an empty ledger)."""
+    from pendcli.core.tables import read_table_text, read_toml
+
     path = ledger_path(paper, root)
-    try:
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise PendcliError(f"equation ledger {path} is missing") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise PendcliError(f"equation ledger {path} is not valid TOML: {exc}") from None
-    return parse_ledger(raw, paper, path, root or _tables_dir())
+    ledger = parse_ledger(read_toml(path, "equation ledger"), paper, path, root or _tables_dir())
+    read_table_text(ledger.text, "paper text")
+    return ledger
 
 
 def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Ledger:
@@ -330,14 +329,12 @@ def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[
 def equation_rows(
     papers: Iterable[str], root: Path | None = None, part: Part = (0, 1)
 ) -> list[dict[str, object]]:
-    """The rows of ``reproduce --format json`` under "equations", for the papers that have a
-    ledger (``part`` of each); raises PendcliError if a check contradicts its row's status."""
-    available = set(ledger_papers(root))
+    """The rows of ``reproduce --format json`` under "equations" for ``papers`` (``part`` of
+    each ledger); raises PendcliError if a paper's ledger is missing, empty or not a file, or
+    a check contradicts its row's status."""
     rows = []
     problems = []
     for paper in papers:
-        if paper not in available:
-            continue
         for item in evaluate(paper, root, part):
             rows.append(item.as_dict())
             if item.problem:

@@ -8,6 +8,7 @@ naming the file and the entry.
 
 from __future__ import annotations
 
+import math
 import os
 import tomllib
 from collections.abc import Iterable
@@ -21,6 +22,8 @@ from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
 
 __all__ = [
     "CAUSES",
+    "CONSTANT_RANGES",
+    "MAX_TOML_DEPTH",
     "PaperConstant",
     "PaperTable",
     "PublishedValue",
@@ -28,6 +31,9 @@ __all__ = [
     "load_paper_table",
     "missing_claim",
     "paper_constant",
+    "paper_text",
+    "read_table_text",
+    "read_toml",
     "tables_dir",
 ]
 
@@ -37,6 +43,31 @@ _OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison", "precision", "ca
 _CLAIM_FIELDS = (*_REQUIRED, *_OPTIONAL, "from")
 _PAPER_FIELDS = ("key", "citation", "seed", "assumptions", "constants")
 _CONSTANT_FIELDS = ("value", "unit", "source")
+# The range each constant's value must lie in (ends included) and its unit: physically
+# plausible values, inside which the models are meant to work (and terminate). A value outside
+# it, not finite, or a constant with no declared range is refused when the table is read.
+CONSTANT_RANGES: dict[str, dict[str, tuple[float, float, str]]] = {
+    "charbonnier": {
+        "g": (1.0, 100.0, "m/s²"),  # from the Moon's 1.6 to beyond Jupiter's 25
+        "l0": (0.01, 100.0, "m"),  # a pendulum, from 1 cm to 100 m
+        "alpha": (0.001, 1.0, "rad"),  # the small amplitude of the principal motion (no. 3)
+    },
+    "lecornu": {
+        "g": (1.0, 100.0, "m/s²"),
+        "speed": (0.001, 10.0, "m/s"),  # the rate at which the length grows
+        "length": (0.01, 100.0, "m"),  # the length at t = 0
+        "table_limit": (1.0, 100.0, ""),  # the last argument of a Bessel table
+        "k4_amplitude": (0.1, 90.0, "deg"),
+        "horizontal_amplitude": (0.1, 90.0, "deg"),  # 90° is the horizontal
+    },
+    "tisserand": {
+        "theta0": (0.1, 89.9, "°"),  # the two cone angles of the conical pendulum (< 90°)
+        "theta1": (0.1, 89.9, "°"),
+        "length": (0.01, 100.0, "m"),
+    },
+}
+# Deeper nesting than any table needs is refused (tomllib itself would recurse without end).
+MAX_TOML_DEPTH = 8
 _PRECISIONS = ("printed", "exact")
 _COMPARISONS = ("equal", "upper-bound")
 # Why a printed value disagrees, when it does (tables/README.md explains each).
@@ -140,7 +171,84 @@ def paper_constant(key: str, name: str) -> float:
     return load_paper_table(key).constant(name)
 
 
-def _constants(path: Path, raw: object) -> tuple[PaperConstant, ...]:
+def paper_text(key: str, root: Path | None = None) -> str:
+    """The OCR text of paper ``key`` (``papers/<key>.txt``): missing or empty is an error."""
+    return read_table_text((root or tables_dir()) / "papers" / f"{key}.txt", "paper text")
+
+
+def read_table_text(path: Path, what: str) -> str:
+    """The UTF-8 text of a table file; missing, not a file, unreadable, not UTF-8 (the byte
+    named) or empty: one line naming ``what`` and the file."""
+    if not path.is_file():
+        problem = "is not a file" if path.exists() else "is missing"
+        raise PendcliError(f"{what} {path} {problem}")
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise PendcliError(f"cannot read {what} {path}: {exc.strerror or exc}") from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise PendcliError(
+            f"{what} {path} is not UTF-8 text: byte {exc.start} (0x{data[exc.start]:02x}) "
+            f"cannot be decoded ({exc.reason})"
+        ) from None
+    if not text.strip():
+        raise PendcliError(f"{what} {path} is empty")
+    return text
+
+
+def read_toml(path: Path, what: str) -> dict[str, Any]:
+    """A TOML table file, parsed; every problem one line naming ``what`` and the file."""
+    text = read_table_text(path, what)
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise PendcliError(f"{what} {path} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise PendcliError(
+            f"{what} {path} is nested too deeply (at most {MAX_TOML_DEPTH} levels)"
+        ) from None
+    if _depth(raw) > MAX_TOML_DEPTH:
+        raise PendcliError(f"{what} {path} is nested too deeply (at most {MAX_TOML_DEPTH} levels)")
+    return raw
+
+
+def _depth(value: object) -> int:
+    """How deeply tables and arrays nest in ``value`` (iteratively: no recursion to exhaust)."""
+    deepest = 0
+    stack: list[tuple[object, int]] = [(value, 0)]
+    while stack:
+        item, level = stack.pop()
+        children = list(item.values()) if isinstance(item, dict) else item
+        if isinstance(children, list):
+            deepest = max(deepest, level + 1)
+            stack += [(child, level + 1) for child in children]
+    return deepest
+
+
+def _constant_value(where: str, paper: str, name: str, entry: dict[str, Any]) -> float:
+    """The constant's value, checked: a finite number in its declared range and unit."""
+    value = entry.get("value")
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise PendcliError(f"{where}: value must be a number")
+    declared = CONSTANT_RANGES.get(paper, {})
+    if name not in declared:
+        known = ", ".join(declared) or "none"
+        raise PendcliError(f"{where}: no declared range for this constant; declared: {known}")
+    low, high, unit = declared[name]
+    if entry.get("unit", "") != unit:
+        raise PendcliError(f"{where}: unit must be {unit!r}, got {entry.get('unit', '')!r}")
+    number = float(value)
+    if not (math.isfinite(number) and low <= number <= high):
+        raise PendcliError(
+            f"{where}: value = {value!r} is out of range; valid range is "
+            f"{low:g} <= value <= {high:g} {unit}".rstrip()
+        )
+    return number
+
+
+def _constants(path: Path, raw: object, paper: str) -> tuple[PaperConstant, ...]:
     if raw is None:
         return ()
     if not isinstance(raw, dict):
@@ -151,15 +259,13 @@ def _constants(path: Path, raw: object) -> tuple[PaperConstant, ...]:
         if not isinstance(entry, dict):
             raise PendcliError(f"{where} must be a table with value, unit, source")
         _refuse_unknown(where, "field(s)", entry, _CONSTANT_FIELDS)
-        value = entry.get("value")
-        if isinstance(value, bool) or not isinstance(value, int | float):
-            raise PendcliError(f"{where}: value must be a number")
         for field in ("unit", "source"):
             if not isinstance(entry.get(field, ""), str):
                 raise PendcliError(f"{where}: {field} must be a string")
         if not entry.get("source"):
             raise PendcliError(f"{where}: source must say where the value comes from")
-        out.append(PaperConstant(name, float(value), entry.get("unit", ""), entry["source"]))
+        value = _constant_value(where, paper, name, entry)
+        out.append(PaperConstant(name, value, entry.get("unit", ""), entry["source"]))
     return tuple(out)
 
 
@@ -179,7 +285,7 @@ def clear_table_cache() -> None:
 @cache
 def _cached_table(key: str, root: Path) -> PaperTable:
     path = root / "published" / f"{key}.toml"
-    raw = _read_toml(path)
+    raw = read_toml(path, "published table")
     _refuse_unknown(str(path), "top-level section(s)", raw, _SECTIONS)
     paper = _paper_header(path, raw.get("paper"), key)
     return PaperTable(
@@ -188,7 +294,7 @@ def _cached_table(key: str, root: Path) -> PaperTable:
         seed=paper["seed"],
         assumptions=tuple(paper.get("assumptions", [])),
         claims=_claims(path, raw.get("claim"), key),
-        constants=_constants(path, paper.get("constants")),
+        constants=_constants(path, paper.get("constants"), key),
         path=path,
     )
 
@@ -200,15 +306,6 @@ def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: tuple[s
         raise PendcliError(
             f"{where}: unknown {what} {', '.join(map(repr, unknown))}; valid: {', '.join(valid)}"
         )
-
-
-def _read_toml(path: Path) -> dict[str, Any]:
-    try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise PendcliError(f"published table {path} is missing") from None
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise PendcliError(f"published table {path} is not valid TOML: {exc}") from None
 
 
 def _paper_header(path: Path, paper: object, key: str) -> dict[str, Any]:
