@@ -15,7 +15,6 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import os
-import platform
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -34,8 +33,6 @@ if TYPE_CHECKING:
     from pendcli.tradeoff import Point
 
 __all__ = ["write_report"]
-
-_PACKAGES = ("pendcli", "numpy", "scipy", "mpmath", "matplotlib", "typer", "rich")
 
 _VERDICT_RULES = """\
 A printed number fixes its own precision: `5,14` is known to 0.01, `1°7'33''` to one
@@ -67,16 +64,9 @@ def _module(name: str) -> ModuleType | None:
 
 
 def _environment() -> list[dict[str, str]]:
-    from importlib.metadata import PackageNotFoundError, version
+    from pendcli.core.versions import library_versions
 
-    rows = [{"item": "python", "version": platform.python_version()}]
-    rows.append({"item": "platform", "version": f"{platform.system()} {platform.machine()}"})
-    for pkg in _PACKAGES:
-        try:
-            rows.append({"item": pkg, "version": version(pkg)})
-        except PackageNotFoundError:
-            rows.append({"item": pkg, "version": "not installed"})
-    return rows
+    return [{"item": name, "version": found} for name, found in library_versions()]
 
 
 def _rel(path: Path, out: Path) -> str:
