@@ -475,32 +475,29 @@ def _draw(module: str, function: str, args: tuple[Any, ...]) -> list[Path]:
     return [Path(p) for p in out] if isinstance(out, list | tuple) else [Path(out)]
 
 
+def _draw_task(task: _Task) -> list[Path]:
+    _, module, function, args = task
+    return _draw(module, function, args)
+
+
 class _Drawing:
-    """Draws the tasks in ``jobs`` forked processes (or here, with one job or no fork)."""
+    """Draws the tasks in ``jobs`` processes: this one and forked workers (core/workers.py)."""
 
     def __init__(self, tasks: list[_Task], jobs: int | None) -> None:
+        from pendcli.core.workers import ForkedWorkers, job_count
+
         self.tasks = tasks
-        self.jobs = _jobs(jobs, len(tasks))
-        self.pool: Any = None
-        self.futures: list[Any] = []
+        self.workers = ForkedWorkers(job_count(jobs, len(tasks)) - 1)
 
     def __enter__(self) -> _Drawing:
-        if self.jobs > 1:
-            import multiprocessing
-            from concurrent.futures import ProcessPoolExecutor
-
+        if self.workers.processes:
             _pyplot()  # once, here: the forked workers inherit it
-            context = multiprocessing.get_context("fork")
-            self.pool = ProcessPoolExecutor(self.jobs, mp_context=context)
-            self.futures = [self.pool.submit(_draw, m, f, a) for _, m, f, a in self.tasks]
+        self.workers.__enter__()
         return self
 
     def results(self) -> dict[str, list[Path]]:
         """Figures per paper (and "tradeoff"), claim figures before formula figures."""
-        if self.pool is None:
-            drawn = [_draw(m, f, a) for _, m, f, a in self.tasks]
-        else:
-            drawn = [future.result() for future in self.futures]
+        drawn = self.workers.share(self.tasks, _draw_task)
         by_key: dict[str, list[Path]] = {}
         for (key, module, _, _), paths in zip(self.tasks, drawn, strict=True):
             claims_first = module.endswith((".figures", ".claims"))
@@ -508,9 +505,8 @@ class _Drawing:
             by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
         return by_key
 
-    def __exit__(self, *exc: object) -> None:
-        if self.pool is not None:
-            self.pool.shutdown(wait=True, cancel_futures=True)
+    def __exit__(self, *exc: Any) -> None:
+        self.workers.__exit__(*exc)
 
 
 def _pyplot() -> None:
@@ -519,15 +515,3 @@ def _pyplot() -> None:
 
     matplotlib.use("Agg", force=True)
     import matplotlib.pyplot
-
-
-def _jobs(jobs: int | None, tasks: int) -> int:
-    import multiprocessing
-
-    if "fork" not in multiprocessing.get_all_start_methods():
-        return 1
-    if jobs is None:  # PENDCLI_JOBS=1 draws in this process (to compare, or to debug)
-        env = os.environ.get("PENDCLI_JOBS", "")
-        jobs = int(env) if env.isdigit() else min(2, os.cpu_count() or 1)
-    wanted = jobs
-    return max(1, min(wanted, tasks))
