@@ -1,21 +1,45 @@
-# Every target works on a fresh clone with nothing but Python 3.11+.
+# Every target works on a fresh clone with nothing but Python 3.11+: the venv's pip fetches uv
+# (a fast installer), and uv installs the exact versions of the lock files.
+#   requirements.lock      what pendcli runs with (make reproduce, check, regen, bench)
+#   requirements-dev.lock  the same plus the test and lint tools (make install, test, lint)
+# The committed tables were regenerated with these versions; `make lock` resolves anew.
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
+UV := $(BIN)/uv
+UV_VERSION := 0.13.9
+RUNTIME := $(VENV)/.runtime
 STAMP := $(VENV)/.installed
 OUT ?= out
+# One resolution for Python 3.11 to 3.14 where it can (fewest versions): the tables then do
+# not depend on which Python made the venv.
+LOCK_FLAGS := --universal --fork-strategy fewest --python-version 3.11 --generate-hashes -q
 
-.PHONY: install reproduce test test-browser check regen lint bench clean
+.PHONY: install reproduce test test-browser check regen lint bench lock clean
 
 install: $(STAMP)
 
-# Reinstall only when pyproject.toml changes (or the venv is missing).
-$(STAMP): pyproject.toml
+$(UV):
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test]'
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check uv==$(UV_VERSION)
+
+# Reinstall only when a lock or pyproject.toml changes (or the venv is missing).
+$(RUNTIME): requirements.lock pyproject.toml | $(UV)
+	$(UV) pip install --quiet --python $(BIN)/python -r requirements.lock
+	$(UV) pip install --quiet --python $(BIN)/python --no-deps -e .
+	@touch $(RUNTIME)
+
+$(STAMP): requirements-dev.lock $(RUNTIME)
+	$(UV) pip install --quiet --python $(BIN)/python -r requirements-dev.lock
 	@touch $(STAMP)
 
-reproduce: $(STAMP)
+# Resolve anew (newest versions within pyproject.toml's bounds), then `make regen` and review
+# the tables' diff: a new numpy, scipy or mpmath may move the last digits.
+lock: | $(UV)
+	$(UV) pip compile pyproject.toml --extra test $(LOCK_FLAGS) --upgrade -o requirements-dev.lock
+	$(UV) pip compile pyproject.toml $(LOCK_FLAGS) -c requirements-dev.lock -o requirements.lock
+
+reproduce: $(RUNTIME)
 	$(BIN)/pendcli reproduce --out $(OUT) --format json > /dev/null
 
 # Two workers (this project's machines have 2 cores); tests use tmp_path, never shared paths.
@@ -28,13 +52,13 @@ test: $(STAMP)
 test-browser: $(STAMP)
 	$(BIN)/python -m pytest -q -m browser
 
-check: $(STAMP)
+check: $(RUNTIME)
 	$(BIN)/pendcli check
 	$(BIN)/python -m pendcli.docs --check
 
 # One process, one run: the regenerated tables and the README's sections written as one set
 # (pendcli.core.files.write_set), so an interrupt leaves all old or all new.
-regen: $(STAMP)
+regen: $(RUNTIME)
 	$(BIN)/python -m pendcli.docs --tables
 
 lint: $(STAMP)
@@ -42,7 +66,7 @@ lint: $(STAMP)
 	$(BIN)/ruff format --check pendcli tests
 	$(BIN)/mypy pendcli
 
-bench: $(STAMP)
+bench: $(RUNTIME)
 	$(BIN)/python -m pendcli.bench --write README.md
 
 clean:

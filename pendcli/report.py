@@ -15,7 +15,6 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import os
-import platform
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -34,8 +33,6 @@ if TYPE_CHECKING:
     from pendcli.tradeoff import Point
 
 __all__ = ["write_report"]
-
-_PACKAGES = ("pendcli", "numpy", "scipy", "mpmath", "matplotlib", "typer", "rich")
 
 _VERDICT_RULES = """\
 A printed number fixes its own precision: `5,14` is known to 0.01, `1°7'33''` to one
@@ -67,16 +64,9 @@ def _module(name: str) -> ModuleType | None:
 
 
 def _environment() -> list[dict[str, str]]:
-    from importlib.metadata import PackageNotFoundError, version
+    from pendcli.core.versions import library_versions
 
-    rows = [{"item": "python", "version": platform.python_version()}]
-    rows.append({"item": "platform", "version": f"{platform.system()} {platform.machine()}"})
-    for pkg in _PACKAGES:
-        try:
-            rows.append({"item": pkg, "version": version(pkg)})
-        except PackageNotFoundError:
-            rows.append({"item": pkg, "version": "not installed"})
-    return rows
+    return [{"item": name, "version": found} for name, found in library_versions()]
 
 
 def _rel(path: Path, out: Path) -> str:
@@ -532,32 +522,29 @@ def _draw(module: str, function: str, args: tuple[Any, ...]) -> list[Path]:
     return [Path(p) for p in out] if isinstance(out, list | tuple) else [Path(out)]
 
 
+def _draw_task(task: _Task) -> list[Path]:
+    _, module, function, args = task
+    return _draw(module, function, args)
+
+
 class _Drawing:
-    """Draws the tasks in ``jobs`` forked processes (or here, with one job or no fork)."""
+    """Draws the tasks in ``jobs`` processes: this one and forked workers (core/workers.py)."""
 
     def __init__(self, tasks: list[_Task], jobs: int | None) -> None:
+        from pendcli.core.workers import ForkedWorkers, job_count
+
         self.tasks = tasks
-        self.jobs = _jobs(jobs, len(tasks))
-        self.pool: Any = None
-        self.futures: list[Any] = []
+        self.workers = ForkedWorkers(job_count(jobs, len(tasks)) - 1)
 
     def __enter__(self) -> _Drawing:
-        if self.jobs > 1:
-            import multiprocessing
-            from concurrent.futures import ProcessPoolExecutor
-
+        if self.workers.processes:
             _pyplot()  # once, here: the forked workers inherit it
-            context = multiprocessing.get_context("fork")
-            self.pool = ProcessPoolExecutor(self.jobs, mp_context=context)
-            self.futures = [self.pool.submit(_draw, m, f, a) for _, m, f, a in self.tasks]
+        self.workers.__enter__()
         return self
 
     def results(self) -> dict[str, list[Path]]:
         """Figures per paper (and "tradeoff"), claim figures before formula figures."""
-        if self.pool is None:
-            drawn = [_draw(m, f, a) for _, m, f, a in self.tasks]
-        else:
-            drawn = [future.result() for future in self.futures]
+        drawn = self.workers.share(self.tasks, _draw_task)
         by_key: dict[str, list[Path]] = {}
         for (key, module, _, _), paths in zip(self.tasks, drawn, strict=True):
             claims_first = module.endswith((".figures", ".claims"))
@@ -565,9 +552,8 @@ class _Drawing:
             by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
         return by_key
 
-    def __exit__(self, *exc: object) -> None:
-        if self.pool is not None:
-            self.pool.shutdown(wait=True, cancel_futures=True)
+    def __exit__(self, *exc: Any) -> None:
+        self.workers.__exit__(*exc)
 
 
 def _pyplot() -> None:
@@ -576,15 +562,3 @@ def _pyplot() -> None:
 
     matplotlib.use("Agg", force=True)
     import matplotlib.pyplot
-
-
-def _jobs(jobs: int | None, tasks: int) -> int:
-    import multiprocessing
-
-    if "fork" not in multiprocessing.get_all_start_methods():
-        return 1
-    if jobs is None:  # PENDCLI_JOBS=1 draws in this process (to compare, or to debug)
-        env = os.environ.get("PENDCLI_JOBS", "")
-        jobs = int(env) if env.isdigit() else min(2, os.cpu_count() or 1)
-    wanted = jobs
-    return max(1, min(wanted, tasks))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
@@ -185,21 +186,24 @@ def reproduce_all(
     """Evaluate the claims (and, if asked, the formula checks, the equation ledger and the
     stability measurements).
 
-    With two cores the steps are split into two lanes of about equal cost, one run in a forked
-    process (``jobs=1`` or ``PENDCLI_JOBS=1``: all here). A progress bar on stderr shows the
-    step running, only on a terminal and when not ``quiet``.
+    With two cores this process and a forked worker share the steps, each taking the next one
+    when free (``jobs=1`` or ``PENDCLI_JOBS=1``: all here). A progress bar on stderr counts the
+    steps done, only on a terminal and when not ``quiet``.
     """
+    from pendcli.core.workers import ForkedWorkers, job_count
+
     steps = _steps(keys, formulas, equations, stability)
-    here, there = _lanes(steps, _jobs(jobs))
     result = ReproduceResult(papers=keys)
-    with _Lane(there, keys) as other, _progress(quiet, len(steps)) as advance:
-        for key, what in here:
-            advance(f"{key}: {what}", 0)
-            _store(result, key, what, _run_step(key, what, keys))
-            advance(f"{key}: {what}", 1)
-        for key, what, value in other.results():
-            _store(result, key, what, value)
-            advance(f"{key}: {what}", 1)
+    workers = job_count(jobs, len(steps)) - 1
+    if workers:
+        _import_before_fork(steps, keys)
+    order = _costliest_first(steps)
+    with ForkedWorkers(workers) as pool, _progress(quiet, len(steps)) as advance:
+        run = functools.partial(_run_step, papers=keys)
+        values = pool.share(order, run, lambda step, _: advance(f"{step[0]}: {step[1]}", 1))
+    by_step = dict(zip(order, values, strict=True))
+    for step in steps:  # stored in one order whoever computed what, so the output is too
+        _store(result, *step, by_step[step])
     for key, rows in result.equations.items():  # the ledger's halves, back in its order
         rows.sort(key=lambda row: int(str(row["_order"])))
         result.equations[key] = [{k: v for k, v in r.items() if k != "_order"} for r in rows]
@@ -237,85 +241,28 @@ def _progress(quiet: bool, total: int) -> Iterator[Callable[[str, int], None]]:
 
 
 Step = tuple[str, str]
-# Measured cost of a step (hundredths of a second, one core): enough to balance two lanes.
-_COST = {
-    ("lecornu", "claims"): 5,
-    ("lecornu", "formulas"): 10,
-    ("charbonnier", "formulas"): 7,
-    ("all", "stability"): 70,
-    # the ledgers' halves: sympy derivations and ODE checks (measured, one core)
-    ("tisserand", "formulas+equations 0/2"): 100,
-    ("tisserand", "equations 1/2"): 30,
-    ("lecornu", "formulas+equations 0/2"): 160,
-    ("lecornu", "equations 1/2"): 280,
-    ("charbonnier", "formulas+equations 0/2"): 35,
-    ("charbonnier", "equations 1/2"): 10,
-}
 
 
-def _jobs(jobs: int | None) -> int:
-    import multiprocessing
-    import os
-
-    if "fork" not in multiprocessing.get_all_start_methods():
-        return 1
-    if jobs is None:
-        env = os.environ.get("PENDCLI_JOBS", "")
-        jobs = int(env) if env.isdigit() else min(2, os.cpu_count() or 1)
-    return max(1, jobs)
+def _costliest_first(steps: list[Step]) -> list[Step]:
+    """The order the processes take the steps in, with no timings: the ledger's halves and
+    the stability table (sympy and ODEs over many rows) first, then the formula checks, the
+    claims last (the smallest, they fill the gaps while the other process ends its step)."""
+    rank = {"equations": 0, "formulas+equations": 0, "stability": 1, "formulas": 2}
+    return sorted(steps, key=lambda step: rank.get(step[1].split(" ")[0], 3))
 
 
-def _lanes(steps: list[Step], jobs: int) -> tuple[list[Step], list[Step]]:
-    """(steps run here, steps run in the other process): the costliest first, greedily."""
-    if jobs < 2 or len(steps) < 2:
-        return steps, []
-    here: list[Step] = []
-    there: list[Step] = []
-    for step in sorted(steps, key=lambda s: -_COST.get(s, 1)):
-        cost_here = sum(_COST.get(s, 1) for s in here)
-        (there if cost_here > sum(_COST.get(s, 1) for s in there) else here).append(step)
-    order = {s: i for i, s in enumerate(steps)}
-    return sorted(here, key=order.__getitem__), sorted(there, key=order.__getitem__)
+def _import_before_fork(steps: list[Step], papers: tuple[str, ...]) -> None:
+    """What both processes need, imported once here rather than once in each after the fork:
+    the papers' modules, scipy (~0.3 s), and sympy with mpmath when the ledger is shared."""
+    import importlib
 
-
-class _Lane:
-    """Steps run in one forked process while this one runs its own."""
-
-    def __init__(self, steps: list[Step], papers: tuple[str, ...]) -> None:
-        self.steps = steps
-        self.papers = papers
-        self.pool: Any = None
-        self.future: Any = None
-
-    def __enter__(self) -> _Lane:
-        if self.steps:
-            import importlib
-            import multiprocessing
-            from concurrent.futures import ProcessPoolExecutor
-
-            for key, _ in self.steps:  # imported once, here, rather than in both processes
-                _paper_modules(key)
-            # scipy too (~0.3 s, both lanes need it): after the fork it would load twice; and
-            # sympy with mpmath when both lanes check parts of the equation ledger.
-            names = ["scipy.integrate", "scipy.special"]
-            if any("equations" in what for _, what in self.steps):
-                names += [
-                    "sympy",
-                    "mpmath",
-                    *(f"pendcli.papers.{k}.equations" for k in self.papers),
-                ]
-            for name in names:
-                importlib.import_module(name)
-            self.pool = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"))
-            self.future = self.pool.submit(_run_lane, self.steps, self.papers)
-        return self
-
-    def results(self) -> list[tuple[str, str, Any]]:
-        return self.future.result() if self.future is not None else []
-
-    def __exit__(self, *exc: object) -> None:
-        if self.pool is not None:
-            self.pool.shutdown(wait=True, cancel_futures=True)
+    for key, _ in steps:
+        _paper_modules(key)
+    names = ["scipy.integrate", "scipy.special"]
+    if any("equations" in what for _, what in steps):
+        names += ["sympy", "mpmath", *(f"pendcli.papers.{k}.equations" for k in papers)]
+    for name in names:
+        importlib.import_module(name)
 
 
 def _paper_modules(key: str) -> None:
@@ -328,11 +275,8 @@ def _paper_modules(key: str) -> None:
             importlib.import_module(name)
 
 
-def _run_lane(steps: list[Step], papers: tuple[str, ...]) -> list[tuple[str, str, Any]]:
-    return [(key, what, _run_step(key, what, papers)) for key, what in steps]
-
-
-def _run_step(key: str, what: str, papers: tuple[str, ...]) -> Any:
+def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
+    key, what = step
     if what == "claims":
         return evaluate_paper(key)
     if what == "formulas":

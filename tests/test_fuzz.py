@@ -3,19 +3,19 @@
 Property, for every command: exit code 0, 1 or 2; no traceback; no "internal error"; on a
 failure, at most one line on stderr. Values are drawn near the edges of each documented domain
 (just inside, on, just outside), in the forms a user types (``1e-3``, ``0.0010000001``, ``-0``,
-``nan``), plus a few parser-level oddities. Every run is in-process (tests/cli_helpers.py) and
-guarded by an alarm, so a command that never ends fails the test instead of hanging it.
+``nan``), plus a few parser-level oddities. Every run is in-process (tests/cli_helpers.py).
+
+No wall-clock limit anywhere (issue 23): hypothesis runs with ``deadline=None`` and the work is
+bounded by example counts, so a loaded CI machine makes the suite slower, never red. A command
+that truly never ended would hang the run; that is left to the CI job's own timeout, which knows
+the machine, rather than to a guess here.
 """
 
 from __future__ import annotations
 
 import math
 import os
-import signal
 import tempfile
-from collections.abc import Iterator
-from contextlib import contextmanager
-from datetime import timedelta
 from pathlib import Path
 
 import pytest
@@ -23,36 +23,20 @@ from cli_helpers import invoke
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-ALARM_SECONDS = 20
 # PENDCLI_FUZZ_SCALE=20 explores (random, 20 times the examples); CI runs the fixed default.
 SCALE = int(os.environ.get("PENDCLI_FUZZ_SCALE", "1"))
 FAST = settings(
     max_examples=40 * SCALE,
-    deadline=timedelta(seconds=4),
+    deadline=None,
     suppress_health_check=[HealthCheck.too_slow],
     derandomize=SCALE == 1,
 )
-FEW = settings(FAST, max_examples=8 * SCALE, deadline=timedelta(seconds=8))
-
-
-@contextmanager
-def _alarm(seconds: int) -> Iterator[None]:
-    def expire(signum: int, frame: object) -> None:
-        raise TimeoutError(f"command still running after {seconds} s")
-
-    previous = signal.signal(signal.SIGALRM, expire)
-    signal.alarm(seconds)
-    try:
-        yield
-    finally:
-        signal.alarm(0)
-        signal.signal(signal.SIGALRM, previous)
+FEW = settings(FAST, max_examples=8 * SCALE)
 
 
 def well_behaved(*args: str) -> tuple[int, str, str]:
     """Run `pendcli ARGS` and check the property; return (code, stdout, stderr)."""
-    with _alarm(ALARM_SECONDS):
-        code, out, err = invoke(*args)
+    code, out, err = invoke(*args)
     shown = f"pendcli {' '.join(repr(a) for a in args)} -> exit {code}\n{err}"
     assert code in (0, 1, 2), shown
     assert "Traceback" not in err, shown
@@ -87,7 +71,7 @@ FORMATS = st.sampled_from(["table", "json", "csv", "markdown"])
 
 @pytest.fixture(scope="module", autouse=True)
 def _warm_imports() -> None:
-    """Load scipy, mpmath, the tables once, so the deadline measures the commands."""
+    """Load scipy, mpmath, the tables once, so the first example is not the slow one."""
     for args in (
         ("lecornu", "example", "-f", "json"),
         ("lecornu", "zeros", "--tol", "1e-9", "-f", "json"),
@@ -250,7 +234,7 @@ def test_formulas_plot_folder(path: str, paper: str) -> None:
     assert not (SCRATCH / "ok.png").is_dir(), "formulas --plot made a folder named like a file"
 
 
-@settings(FEW, max_examples=4 * SCALE, deadline=None)
+@settings(FEW, max_examples=4 * SCALE)
 @given(
     out=st.sampled_from(
         [
@@ -269,7 +253,7 @@ def test_reproduce_out_refused(out: str) -> None:
     assert sorted(os.listdir(".")) == before, "--out wrote into the current folder"
 
 
-@settings(FEW, max_examples=3, deadline=None)
+@settings(FEW, max_examples=3)
 @given(extra=st.sampled_from([(), ("-q",), ("--bogus",), ("-q", "stray")]))
 def test_check_never_tracebacks(extra: tuple[str, ...]) -> None:
     """`check` only reads (never --update here): drift is exit 1, the rest 0 or 2."""

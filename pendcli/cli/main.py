@@ -280,11 +280,27 @@ app = typer.Typer(
 )
 
 
-def _version(value: bool) -> None:
-    if value:
-        from importlib.metadata import version as installed_version
+def _version(ctx: typer.Context, value: bool) -> None:
+    ctx.meta["pendcli.version"] = value
+    _show_version(ctx)
 
-        print(f"pendcli {installed_version('pendcli')}")
+
+def _verbose(ctx: typer.Context, value: bool) -> None:
+    ctx.meta["pendcli.verbose"] = value
+    _show_version(ctx)
+
+
+def _show_version(ctx: typer.Context) -> None:
+    """Once both eager options are read (in either order): the version, with --verbose every
+    library's too."""
+    if "pendcli.version" not in ctx.meta or "pendcli.verbose" not in ctx.meta:
+        return
+    if ctx.meta["pendcli.version"]:
+        from pendcli.core.versions import library_versions
+
+        versions = library_versions()
+        shown = versions if ctx.meta["pendcli.verbose"] else versions[2:3]
+        print("\n".join(f"{name} {found}" for name, found in shown))
         raise typer.Exit()
 
 
@@ -294,6 +310,12 @@ def main(
         bool,
         typer.Option(
             "--version", "-V", callback=_version, is_eager=True, help="Show the version and exit."
+        ),
+    ] = False,
+    verbose: Annotated[
+        bool,
+        typer.Option(
+            "--verbose", callback=_verbose, is_eager=True, help="With -V: every library's too."
         ),
     ] = False,
 ) -> None:

@@ -416,16 +416,18 @@ def eq_10() -> EquationCheck:
     coef = _frobenius(30)
     printed = [Fraction((-1) ** (n - 1) * n, math.factorial(n) ** 2) for n in range(1, 30)]
     series_ok = coef[1:30] == printed
-    mpmath.mp.dps = 30
-    x = mpmath.mpf("3.7")
-    total = sum(mpmath.mpf(c.numerator) / c.denominator * x**n for n, c in enumerate(printed, 1))
-    err = abs(total - mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x)))
-    return _check(
-        series_ok and err < 1e-25,
-        "numeric",
-        f"29 coefficients equal the recursion of x φ'' + φ = 0 exactly; at x = 3.7 the series "
-        f"minus √x J1(2√x) (mpmath, 30 digits) = {float(err):.1e}",
-    )
+    with mpmath.workdps(30):
+        x = mpmath.mpf("3.7")
+        total = sum(
+            mpmath.mpf(c.numerator) / c.denominator * x**n for n, c in enumerate(printed, 1)
+        )
+        err = abs(total - mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x)))
+        return _check(
+            series_ok and err < 1e-25,
+            "numeric",
+            f"29 coefficients equal the recursion of x φ'' + φ = 0 exactly; at x = 3.7 the series "
+            f"minus √x J1(2√x) (mpmath, 30 digits) = {float(err):.1e}",
+        )
 
 
 def eq_11() -> EquationCheck:
@@ -437,16 +439,16 @@ def eq_11() -> EquationCheck:
     coef = _frobenius(30)
     derived = [n * coef[n] for n in range(1, 30)]  # coefficient of x^(n−1)
     printed = [Fraction((-1) ** n, math.factorial(n) ** 2) for n in range(29)]
-    mpmath.mp.dps = 30
-    x = mpmath.mpf("3.7")
-    total = sum(mpmath.mpf(c.numerator) / c.denominator * x**n for n, c in enumerate(printed))
-    err = abs(total - mpmath.besselj(0, 2 * mpmath.sqrt(x)))
-    return _check(
-        derived == printed and err < 1e-25,
-        "numeric",
-        f"term-by-term derivative of (10) equals the printed series; minus J0(2√3.7) = "
-        f"{float(err):.1e}",
-    )
+    with mpmath.workdps(30):
+        x = mpmath.mpf("3.7")
+        total = sum(mpmath.mpf(c.numerator) / c.denominator * x**n for n, c in enumerate(printed))
+        err = abs(total - mpmath.besselj(0, 2 * mpmath.sqrt(x)))
+        return _check(
+            derived == printed and err < 1e-25,
+            "numeric",
+            f"term-by-term derivative of (10) equals the printed series; minus J0(2√3.7) = "
+            f"{float(err):.1e}",
+        )
 
 
 def eq_12() -> EquationCheck:
@@ -479,36 +481,38 @@ def result_eq13_is_j2() -> EquationCheck:
     """'Le premier membre de (13) est J2(2√x)': compare with mpmath."""
     import mpmath
 
-    mpmath.mp.dps = 30
-    x = mpmath.mpf("2.5")
-    coef = _frobenius(40)
-    lhs = sum((coef[k + 2] - (k + 2) * coef[k + 2]) * x**k for k in range(37))
-    j2 = mpmath.besselj(2, 2 * mpmath.sqrt(x))
-    return _check(
-        abs(lhs - j2) < 1e-20,
-        "numeric",
-        f"at x = 2.5: left side of (13) = {float(lhs):.10f}, J2(2√x) = {float(j2):.10f}, "
-        f"J2(2√x)/x = {float(j2 / x):.10f}",
-        corrected="the left side of (13) is J2(2√x)/x (same non-zero roots)",
-    )
+    with mpmath.workdps(30):
+        x = mpmath.mpf("2.5")
+        coef = _frobenius(40)
+        lhs = sum((coef[k + 2] - (k + 2) * coef[k + 2]) * x**k for k in range(37))
+        j2 = mpmath.besselj(2, 2 * mpmath.sqrt(x))
+        return _check(
+            abs(lhs - j2) < 1e-20,
+            "numeric",
+            f"at x = 2.5: left side of (13) = {float(lhs):.10f}, J2(2√x) = {float(j2):.10f}, "
+            f"J2(2√x)/x = {float(j2 / x):.10f}",
+            corrected="the left side of (13) is J2(2√x)/x (same non-zero roots)",
+        )
 
 
 def eq_14() -> EquationCheck:
     """(14) read as 2J1(z) = zJ0(z) ((1/√x)J1 = J0 with 2√x = z): its roots are those of J2."""
     import mpmath
 
-    mpmath.mp.dps = 25
-    worst, printed_gap = 0.0, 0.0
-    for k in range(1, 6):
-        zk = mpmath.besseljzero(2, k)
-        worst = max(worst, float(abs(2 * mpmath.besselj(1, zk) - zk * mpmath.besselj(0, zk))))
-        printed_gap = max(printed_gap, float(abs(mpmath.besselj(1, zk) - mpmath.besselj(0, zk))))
-    return _check(
-        worst < 1e-20,
-        "numeric",
-        f"at the first five zeros of J2, |2J1 − zJ0| <= {worst:.0e} (mpmath); the printed "
-        f"zJ1 = zJ0 is off there by up to {printed_gap:.2f}·z",
-    )
+    with mpmath.workdps(25):
+        worst, printed_gap = 0.0, 0.0
+        for k in range(1, 6):
+            zk = mpmath.besseljzero(2, k)
+            worst = max(worst, float(abs(2 * mpmath.besselj(1, zk) - zk * mpmath.besselj(0, zk))))
+            printed_gap = max(
+                printed_gap, float(abs(mpmath.besselj(1, zk) - mpmath.besselj(0, zk)))
+            )
+        return _check(
+            worst < 1e-20,
+            "numeric",
+            f"at the first five zeros of J2, |2J1 − zJ0| <= {worst:.0e} (mpmath); the printed "
+            f"zJ1 = zJ0 is off there by up to {printed_gap:.2f}·z",
+        )
 
 
 def result_roots_interlace() -> EquationCheck:
@@ -576,19 +580,19 @@ def result_amplitude_j0() -> EquationCheck:
     """θ at an elongation = φ/l with l = (b²/g)x: (g/b²)·2J1(z)/z = (g/b²)J0(z) at J2 = 0."""
     import mpmath
 
-    mpmath.mp.dps = 25
-    worst = 0.0
-    for k in range(1, 6):
-        z = mpmath.besseljzero(2, k)
-        x = z**2 / 4
-        phi_over_x = mpmath.sqrt(x) * mpmath.besselj(1, z) / x
-        worst = max(worst, float(abs(phi_over_x - mpmath.besselj(0, z))))
-    return _check(
-        worst < 1e-20,
-        "numeric",
-        f"φ/x − J0(z) at the five zeros of J2: <= {worst:.0e}; with the printed denominator "
-        "(b²/g)z the ratio would carry an extra factor x/z = z/4",
-    )
+    with mpmath.workdps(25):
+        worst = 0.0
+        for k in range(1, 6):
+            z = mpmath.besseljzero(2, k)
+            x = z**2 / 4
+            phi_over_x = mpmath.sqrt(x) * mpmath.besselj(1, z) / x
+            worst = max(worst, float(abs(phi_over_x - mpmath.besselj(0, z))))
+        return _check(
+            worst < 1e-20,
+            "numeric",
+            f"φ/x − J0(z) at the five zeros of J2: <= {worst:.0e}; with the printed denominator "
+            "(b²/g)z the ratio would carry an extra factor x/z = z/4",
+        )
 
 
 def result_zero_length_limit() -> EquationCheck:
@@ -868,23 +872,23 @@ def result_limit_u_at_zero() -> EquationCheck:
     """φ∫_(x0)^x dx/φ² → a finite non-zero limit as x → 0 (it is −1: u → −B)."""
     import mpmath
 
-    mpmath.mp.dps = 20
+    with mpmath.workdps(20):
 
-    def phi(s: Any) -> Any:
-        return mpmath.sqrt(s) * mpmath.besselj(1, 2 * mpmath.sqrt(s))
+        def phi(s: Any) -> Any:
+            return mpmath.sqrt(s) * mpmath.besselj(1, 2 * mpmath.sqrt(s))
 
-    x0 = mpmath.mpf(2)
-    values = []
-    for x in (mpmath.mpf("1e-4"), mpmath.mpf("1e-6"), mpmath.mpf("1e-8")):
-        pts = [x * 10**j for j in range(int(-mpmath.log10(x)) + 1) if x * 10**j < x0] + [x0]
-        values.append(float(phi(x) * -mpmath.quad(lambda s: 1 / phi(s) ** 2, pts)))
-    return _check(
-        abs(values[-1] + 1) < 1e-6,
-        "numeric",
-        "φ∫_(x0)^x dx/φ² at x = 1e-4, 1e-6, 1e-8 (x0 = 2, mpmath): "
-        + ", ".join(f"{v:.8f}" for v in values)
-        + " → −1, so u → −B (finite, non-zero) and θ = gu/(b²x) grows without bound",
-    )
+        x0 = mpmath.mpf(2)
+        values = []
+        for x in (mpmath.mpf("1e-4"), mpmath.mpf("1e-6"), mpmath.mpf("1e-8")):
+            pts = [x * 10**j for j in range(int(-mpmath.log10(x)) + 1) if x * 10**j < x0] + [x0]
+            values.append(float(phi(x) * -mpmath.quad(lambda s: 1 / phi(s) ** 2, pts)))
+        return _check(
+            abs(values[-1] + 1) < 1e-6,
+            "numeric",
+            "φ∫_(x0)^x dx/φ² at x = 1e-4, 1e-6, 1e-8 (x0 = 2, mpmath): "
+            + ", ".join(f"{v:.8f}" for v in values)
+            + " → −1, so u → −B (finite, non-zero) and θ = gu/(b²x) grows without bound",
+        )
 
 
 # --- the definite-integral solution and the asymptotic forms: second (18)-(22), (23), (24)
@@ -907,88 +911,95 @@ def eq_18_integral() -> EquationCheck:
     """Second (18): the integral is (π√x/4)[cos α J1(2√x) − sin α Y1(2√x)], a solution of (9)."""
     import mpmath
 
-    mpmath.mp.dps = 20
-    alpha = mpmath.mpf("0.6")
-    worst = 0.0
-    for x in (mpmath.mpf("0.3"), mpmath.mpf(2), mpmath.mpf(7)):
-        r = 2 * mpmath.sqrt(x)
-        closed = (
-            mpmath.pi
-            * mpmath.sqrt(x)
-            / 4
-            * (mpmath.cos(alpha) * mpmath.besselj(1, r) - mpmath.sin(alpha) * mpmath.bessely(1, r))
+    with mpmath.workdps(20):
+        alpha = mpmath.mpf("0.6")
+        worst = 0.0
+        for x in (mpmath.mpf("0.3"), mpmath.mpf(2), mpmath.mpf(7)):
+            r = 2 * mpmath.sqrt(x)
+            closed = (
+                mpmath.pi
+                * mpmath.sqrt(x)
+                / 4
+                * (
+                    mpmath.cos(alpha) * mpmath.besselj(1, r)
+                    - mpmath.sin(alpha) * mpmath.bessely(1, r)
+                )
+            )
+            worst = max(worst, float(abs(_integral_u(x, alpha) - closed)))
+        return _check(
+            worst < 1e-12,
+            "numeric",
+            f"quadrature minus (π√x/4)(cos α J1 − sin α Y1) at x = 0.3, 2, 7 (α = 0.6): <= "
+            f"{worst:.0e}; √x C1(2√x) solves (9) for any cylinder function C1",
         )
-        worst = max(worst, float(abs(_integral_u(x, alpha) - closed)))
-    return _check(
-        worst < 1e-12,
-        "numeric",
-        f"quadrature minus (π√x/4)(cos α J1 − sin α Y1) at x = 0.3, 2, 7 (α = 0.6): <= "
-        f"{worst:.0e}; √x C1(2√x) solves (9) for any cylinder function C1",
-    )
 
 
 def result_c_equals_4_over_pi() -> EquationCheck:
     import mpmath
 
-    mpmath.mp.dps = 20
-    worst = max(
-        float(
-            abs(
-                mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
-                - 4 / mpmath.pi * _integral_u(x, 0)
+    with mpmath.workdps(20):
+        worst = max(
+            float(
+                abs(
+                    mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
+                    - 4 / mpmath.pi * _integral_u(x, 0)
+                )
             )
+            for x in (mpmath.mpf("0.5"), mpmath.mpf(3))
         )
-        for x in (mpmath.mpf("0.5"), mpmath.mpf(3))
-    )
-    return _check(worst < 1e-14, "numeric", f"φ − (4/π)x∫cos(2√x cos ω) sin²ω dω: {worst:.0e}")
+        return _check(worst < 1e-14, "numeric", f"φ − (4/π)x∫cos(2√x cos ω) sin²ω dω: {worst:.0e}")
 
 
 def eq_19_integral() -> EquationCheck:
     """Second (19) read with dω/cos³ω (as in (18)): θ = u/l with C = (b²/g)k."""
     import mpmath
 
-    mpmath.mp.dps = 20
-    x, alpha = mpmath.mpf(2), mpmath.mpf("0.6")
-    reading = _integral_u(x, alpha, 3) / x  # θ/k = u/(Cx)
-    printed = _integral_u(x, alpha, 2) / x
-    closed = (
-        mpmath.pi
-        / (4 * mpmath.sqrt(x))
-        * (
-            mpmath.cos(alpha) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
-            - mpmath.sin(alpha) * mpmath.bessely(1, 2 * mpmath.sqrt(x))
+    with mpmath.workdps(20):
+        x, alpha = mpmath.mpf(2), mpmath.mpf("0.6")
+        reading = _integral_u(x, alpha, 3) / x  # θ/k = u/(Cx)
+        printed = _integral_u(x, alpha, 2) / x
+        closed = (
+            mpmath.pi
+            / (4 * mpmath.sqrt(x))
+            * (
+                mpmath.cos(alpha) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
+                - mpmath.sin(alpha) * mpmath.bessely(1, 2 * mpmath.sqrt(x))
+            )
         )
-    )
-    return _check(
-        abs(reading - closed) < 1e-12,
-        "numeric",
-        f"x = 2, α = 0.6: θ/k with cos³ω = {float(reading):.10f} = u/(Cx) = {float(closed):.10f}; "
-        f"with the printed cos²ω {float(printed):.10f}",
-    )
+        return _check(
+            abs(reading - closed) < 1e-12,
+            "numeric",
+            f"x = 2, α = 0.6: θ/k with cos³ω = {float(reading):.10f} = u/(Cx) = "
+            f"{float(closed):.10f}; "
+            f"with the printed cos²ω {float(printed):.10f}",
+        )
 
 
 def result_small_x_asymptotics() -> EquationCheck:
     """u/(Cx) − (sin α/4)(1/x − log x) tends to a finite limit as x → 0."""
     import mpmath
 
-    mpmath.mp.dps = 30
-    alpha = mpmath.mpf("0.6")
-    rest = []
-    for x in (mpmath.mpf("1e-4"), mpmath.mpf("1e-6"), mpmath.mpf("1e-8")):
-        r = 2 * mpmath.sqrt(x)
-        ratio = (
-            mpmath.pi
-            / (4 * mpmath.sqrt(x))
-            * (mpmath.cos(alpha) * mpmath.besselj(1, r) - mpmath.sin(alpha) * mpmath.bessely(1, r))
+    with mpmath.workdps(30):
+        alpha = mpmath.mpf("0.6")
+        rest = []
+        for x in (mpmath.mpf("1e-4"), mpmath.mpf("1e-6"), mpmath.mpf("1e-8")):
+            r = 2 * mpmath.sqrt(x)
+            ratio = (
+                mpmath.pi
+                / (4 * mpmath.sqrt(x))
+                * (
+                    mpmath.cos(alpha) * mpmath.besselj(1, r)
+                    - mpmath.sin(alpha) * mpmath.bessely(1, r)
+                )
+            )
+            rest.append(float(ratio - mpmath.sin(alpha) / 4 * (1 / x - mpmath.log(x))))
+        return _check(
+            abs(rest[-1] - rest[-2]) < 1e-4,
+            "numeric",
+            "remainder at x = 1e-4, 1e-6, 1e-8: "
+            + ", ".join(f"{v:.6f}" for v in rest)
+            + " (converges: the growing part is (sin α/4)(1/x − log x))",
         )
-        rest.append(float(ratio - mpmath.sin(alpha) / 4 * (1 / x - mpmath.log(x))))
-    return _check(
-        abs(rest[-1] - rest[-2]) < 1e-4,
-        "numeric",
-        "remainder at x = 1e-4, 1e-6, 1e-8: "
-        + ", ".join(f"{v:.6f}" for v in rest)
-        + " (converges: the growing part is (sin α/4)(1/x − log x))",
-    )
 
 
 def eq_20_asymptotic() -> EquationCheck:
@@ -1121,32 +1132,36 @@ def result_amplitude_factor() -> EquationCheck:
 
     from pendcli.core.formula_engine import identify
 
-    mpmath.mp.dps = 30
-    delta = mpmath.mpf("0.3")
+    with mpmath.workdps(30):
+        delta = mpmath.mpf("0.3")
 
-    def c(nu: int, z: Any) -> Any:
-        return mpmath.cos(delta) * mpmath.besselj(nu, z) + mpmath.sin(delta) * mpmath.bessely(nu, z)
+        def c(nu: int, z: Any) -> Any:
+            return mpmath.cos(delta) * mpmath.besselj(nu, z) + mpmath.sin(delta) * mpmath.bessely(
+                nu, z
+            )
 
-    qs, residuals = [], []
-    for n in (4, 8, 16, 32, 64):  # elongations further and further out: q = b/√(gl) = 2/z
-        guess = n * mpmath.pi + mpmath.pi / 4 - delta + mpmath.pi  # McMahon, C2 ~ cos(z − 5π/4 + δ)
-        z = mpmath.findroot(lambda w: c(2, w), guess)
-        amplitude = abs(c(1, z)) * mpmath.sqrt(mpmath.pi * z / 2)  # → R l^(-3/4) × factor
-        qs.append(float(2 / z))
-        residuals.append(float(amplitude - mpmath.cos(3 / (2 * z))))
-    second = leading_coefficient(qs, residuals, 2)
-    verdict = _judged_params(residuals, 2, qs)
-    name = identify(second, rel=1e-4) or f"{second:.6f}"
-    return _check(
-        verdict[0],
-        "numeric",
-        f"exact cylinder function, amplitude·l^(3/4) normalised at l → ∞ minus "
-        f"cos(3b/(4√(gl))): order {verdict[1]:.2f} in b/√(gl) (claimed 2); leading residual "
-        f"{name}·b²/(gl), so to second order the factor is cos(3b/(4√(gl)))(1 + {name} "
-        "b²/(gl)), which the author then neglects",
-        observed_order=verdict[1],
-        claimed_order=2,
-    )
+        qs, residuals = [], []
+        for n in (4, 8, 16, 32, 64):  # elongations further and further out: q = b/√(gl) = 2/z
+            guess = (
+                n * mpmath.pi + mpmath.pi / 4 - delta + mpmath.pi
+            )  # McMahon, C2 ~ cos(z − 5π/4 + δ)
+            z = mpmath.findroot(lambda w: c(2, w), guess)
+            amplitude = abs(c(1, z)) * mpmath.sqrt(mpmath.pi * z / 2)  # → R l^(-3/4) × factor
+            qs.append(float(2 / z))
+            residuals.append(float(amplitude - mpmath.cos(3 / (2 * z))))
+        second = leading_coefficient(qs, residuals, 2)
+        verdict = _judged_params(residuals, 2, qs)
+        name = identify(second, rel=1e-4) or f"{second:.6f}"
+        return _check(
+            verdict[0],
+            "numeric",
+            f"exact cylinder function, amplitude·l^(3/4) normalised at l → ∞ minus "
+            f"cos(3b/(4√(gl))): order {verdict[1]:.2f} in b/√(gl) (claimed 2); leading residual "
+            f"{name}·b²/(gl), so to second order the factor is cos(3b/(4√(gl)))(1 + {name} "
+            "b²/(gl)), which the author then neglects",
+            observed_order=verdict[1],
+            claimed_order=2,
+        )
 
 
 def _judged_params(residuals: Sequence[float], order: float, params: Sequence[float]) -> tuple:

@@ -1,0 +1,80 @@
+"""Regeneration is deterministic (issue 23): the same bytes whatever the process count, and a
+fresh copy of the committed tables is left as it is.
+
+Each run is a fresh process, so nothing one run leaves behind (a global mpmath precision, a
+cache, an import) can reach the other. Found: the committed formula tables had been written on
+a CPU whose BLAS and SIMD kernels round differently; the adaptive ODE steps carry those last
+bits to ~1e-9 in an observed order. Where the two runs here agree but the committed tables do
+not, that is the cause: `make regen` on the machine that checks them.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import pendcli
+
+TABLES = Path(pendcli.__file__).parent / "_tables"
+
+
+def regenerate(tmp: Path, jobs: int) -> dict[str, bytes]:
+    """`pendcli check --update` on a fresh copy of the committed tables: the bytes it leaves."""
+    copy = tmp / f"tables-{jobs}"
+    shutil.copytree(TABLES, copy)
+    env = {**os.environ, "PENDCLI_TABLES": str(copy), "PENDCLI_JOBS": str(jobs)}
+    done = subprocess.run(
+        [sys.executable, "-m", "pendcli", "check", "--update", "-q"],
+        env=env,
+        capture_output=True,
+        text=True,
+        cwd=tmp,
+    )
+    assert done.returncode == 0, done.stderr
+    return {p.name: p.read_bytes() for p in sorted((copy / "regenerated").iterdir())}
+
+
+def committed() -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted((TABLES / "regenerated").iterdir())}
+
+
+def changed_lines(old: bytes, new: bytes) -> list[str]:
+    pairs = zip(old.decode().splitlines(), new.decode().splitlines(), strict=False)
+    return [f"- {a}\n+ {b}" for a, b in pairs if a != b][:5]
+
+
+@pytest.mark.slow
+def test_check_update_on_a_fresh_copy_changes_no_byte_with_one_or_two_processes(
+    tmp_path: Path,
+) -> None:
+    one, two = regenerate(tmp_path, 1), regenerate(tmp_path, 2)
+    assert one.keys() == two.keys()
+    for name in one:
+        assert one[name] == two[name], (name, changed_lines(one[name], two[name]))
+    tables = committed()
+    for name, new in two.items():
+        if not name.startswith("."):  # the lock file beside the set
+            assert tables.get(name) == new, (name, changed_lines(tables.get(name, b""), new))
+
+
+def reproduce_json(jobs: int, *order: str) -> bytes:
+    env = {**os.environ, "PENDCLI_JOBS": str(jobs)}
+    env.pop("PENDCLI_TABLES", None)
+    papers = [a for key in order for a in ("-p", key)]
+    done = subprocess.run(
+        [sys.executable, "-m", "pendcli", "reproduce", "-f", "json", "--equations", *papers],
+        env=env,
+        capture_output=True,
+    )
+    assert done.returncode == 0, done.stderr.decode()
+    return done.stdout
+
+
+@pytest.mark.slow
+def test_reproduce_json_with_equations_is_the_same_bytes_with_one_or_two_processes() -> None:
+    assert reproduce_json(1) == reproduce_json(2)
