@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
+from pendcli.core.text_blocks import Span, validate_span
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
@@ -49,7 +50,9 @@ __all__ = [
 CHECKED_STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint")
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
-ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note")
+# Where the row is printed, what it restates, and (issue 19) the printed form as a formula.
+TEXT_KEYS = ("lines", "restates", "printed", "reading_formula", "corrected_formula")
+ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note", *TEXT_KEYS)
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
 OUTPUT_KEYS = (
     "id",
@@ -114,6 +117,11 @@ class LedgerRow:
     reading: str | None = None
     corrected: str | None = None
     note: str | None = None
+    lines: Span | None = None
+    restates: str | None = None
+    printed: str | None = None
+    reading_formula: str | None = None
+    corrected_formula: str | None = None
 
 
 @dataclass(frozen=True)
@@ -178,7 +186,9 @@ def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Led
             raise PendcliError(f"{path}: {row.id}: duplicate id")
         seen.add(row.id)
         rows.append(row)
-    return Ledger(paper, root / text.removeprefix("tables/"), path, tuple(rows))
+    text_path = root / text.removeprefix("tables/")
+    _check_text_fields(path, rows, text_path)
+    return Ledger(paper, text_path, path, tuple(rows))
 
 
 def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: Iterable[str]) -> None:
@@ -194,17 +204,31 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         raise PendcliError(f"{path}: [[equation]] #{index + 1} is not a table")
     where = f"{path}: {entry.get('id', f'[[equation]] #{index + 1}')}"
     _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
-    for key in ROW_KEYS:
+    for key in (k for k in ROW_KEYS if k != "lines"):
         value = entry.get(key)
         if key in REQUIRED_KEYS and value is None:
             raise PendcliError(f"{where}: missing {key!r}")
         blank = not isinstance(value, str) or not value.strip()
         if value is not None and blank and not (key == "equation" and value == ""):
             raise PendcliError(f"{where}: {key!r} must be a non-empty string")
-    row = LedgerRow(paper=paper, **entry)
+    lines = entry.get("lines")
+    span = None if lines is None else validate_span(where, lines)
+    row = LedgerRow(paper=paper, **{**entry, "lines": span})
     _check_identity(where, row)
     _check_status_fields(where, row)
     return row
+
+
+def _check_text_fields(path: Path, rows: list[LedgerRow], text: Path) -> None:
+    """``lines`` within the paper's text (when the text is there to count) and ``restates``
+    naming another row of the ledger."""
+    ids = {r.id for r in rows}
+    count = len(text.read_text(encoding="utf-8").splitlines()) if text.is_file() else None
+    for row in rows:
+        if row.lines is not None and count is not None:
+            validate_span(f"{path}: {row.id}", list(row.lines), count)
+        if row.restates is not None and (row.restates not in ids or row.restates == row.id):
+            raise PendcliError(f"{path}: {row.id}: restates {row.restates!r}, not another row")
 
 
 def _check_identity(where: str, row: LedgerRow) -> None:
