@@ -74,6 +74,7 @@ def ledger_section() -> str:
     from pendcli.core.claims import PAPERS
     from pendcli.core.ledger import coverage, equation_rows, labels_in_text
     from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.ledger_coverage import ledger_text_coverage
     from pendcli.core.tables import tables_dir
 
     counts = coverage(equation_rows(PAPERS))
@@ -81,6 +82,7 @@ def ledger_section() -> str:
     for key in PAPERS:
         text = (tables_dir() / "papers" / f"{key}.txt").read_text("utf-8")
         c = counts[key]
+        blocks = ledger_text_coverage(key)
         rows.append(
             {
                 "paper": key,
@@ -88,6 +90,7 @@ def ledger_section() -> str:
                 "rows": c["total"],
                 **{status: c[status] for status in STATUSES},
                 "checked": f"{round(100 * c['checked'] / c['total'])} %",
+                "$$ blocks covered": f"{blocks.covered} of {blocks.blocks}",
             }
         )
     return to_markdown(rows, [Column(k, k) for k in rows[0]])

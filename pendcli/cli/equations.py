@@ -34,8 +34,8 @@ def equations(
     from pendcli.core.claims import resolve_papers
     from pendcli.core.errors import PendcliError
     from pendcli.core.ledger import coverage, equation_rows
-    from pendcli.core.ledger_coverage import ledger_text_coverage
     from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.ledger_coverage import ledger_text_coverage
     from pendcli.render import Column
     from pendcli.reproduce import EQUATION_KEYS
     from pendcli.summary import compact_equation_columns

@@ -460,3 +460,45 @@ def eq_17() -> EquationCheck:
     t2 = _tan_sq_phi1()
     cos_sq, sin_sq = 1 / (1 + t2), t2 / (1 + t2)
     return identity_check(cos_sq / a + sin_sq / b - 1 / w, "cos²φ1/u0² + sin²φ1/u1² − 1/u²")
+
+
+# --- rows for the display formulas issue 19 found without a row ---------------------------
+
+
+def result_cos_series() -> EquationCheck:
+    """cos θ = 1 − u²/2 − u⁴/8 − … with u = sin θ (and the same for θ0, θ1): the series of
+    √(1 − u²), compared exactly through u⁴."""
+    import sympy as sp
+
+    u = sp.Symbol("u", real=True)
+    printed = 1 - u**2 / 2 - u**4 / 8
+    exact = sp.series(sp.sqrt(1 - u**2), u, 0, 6).removeO()
+    return identity_check(exact - printed, "√(1−u²) through u⁴ − (1 − u²/2 − u⁴/8)")
+
+
+def result_first_approximation() -> EquationCheck:
+    """ψ = k't, φ' = (3/8)u0u1k''t: (II) and (V) without their periodic terms (the sin 2k't
+    term of ψ and the secular term of φ' are the quadrature checks' leading terms)."""
+    return _reuse("II_sin2", "k_second")
+
+
+NUMERICAL_APPLICATION = (
+    "tisserand.example.psi_sin2",
+    "tisserand.example.psi_sin4",
+    "tisserand.example.phi_sin2",
+)
+
+
+def result_numerical_application() -> EquationCheck:
+    """ψ and φ' for θ0 = 30', θ1 = 15': the three coefficients, as the claims of
+    tables/published/tisserand.toml judge them against their recomputation."""
+    from pendcli.core.claims import evaluate_paper
+
+    rows = {r.id: r for r in evaluate_paper("tisserand")}
+    chosen = [rows[i] for i in NUMERICAL_APPLICATION]
+    parts = [f"{r.id} printed {r.published}: {r.verdict}" for r in chosen]
+    return EquationCheck(
+        holds=all(r.verdict == "agrees" for r in chosen),
+        method="numeric",
+        detail="claims " + "; ".join(parts),
+    )
