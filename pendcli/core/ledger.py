@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
+from pendcli.core.ledger_formulas import validate_formulas, validate_symbols
 from pendcli.core.text_blocks import Span, validate_span
 
 if TYPE_CHECKING:
@@ -130,6 +131,8 @@ class Ledger:
     text: Path
     path: Path
     rows: tuple[LedgerRow, ...]
+    # [symbols]: (name, dimension) pairs the formulas of the rows are written in.
+    symbols: tuple[tuple[str, str], ...] = ()
 
     def labels(self) -> Counter[str]:
         """How many rows each printed label has (stated results, with no label, excluded)."""
@@ -167,7 +170,7 @@ def load_ledger(paper: str, root: Path | None = None) -> Ledger:
 
 def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Ledger:
     """Validate a parsed ledger: unknown keys, missing fields and bad values are errors."""
-    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation"))
+    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation", "symbols"))
     header = raw.get("ledger")
     if not isinstance(header, dict) or header.get("paper") != paper:
         raise PendcliError(f"{path}: [ledger] must be a table with paper = {paper!r}")
@@ -188,7 +191,9 @@ def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Led
         rows.append(row)
     text_path = root / text.removeprefix("tables/")
     _check_text_fields(path, rows, text_path)
-    return Ledger(paper, text_path, path, tuple(rows))
+    symbols = validate_symbols(path, raw.get("symbols"))
+    validate_formulas(path, rows, dict(symbols))
+    return Ledger(paper, text_path, path, tuple(rows), symbols)
 
 
 def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: Iterable[str]) -> None:

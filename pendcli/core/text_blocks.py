@@ -64,7 +64,7 @@ def validate_span(where: str, value: object, line_count: int | None = None) -> S
     )
     if not valid:
         raise PendcliError(f"{where}: 'lines' must be [first, last], two line numbers")
-    first, last = value  # type: ignore[misc]
+    first, last = int(value[0]), int(value[1])  # type: ignore[index]
     last_line = line_count if line_count is not None else last
     if not 1 <= first <= last <= last_line:
         bound = "" if line_count is None else f" <= {line_count} (the text's last line)"

@@ -1,0 +1,143 @@
+"""The printed form as data (issue 19): each ledger's [symbols] and its rows' ``printed``,
+``reading_formula``, ``corrected_formula`` parse with the declared names only, carry the
+numbers their span of the text prints, and are checked for dimensions."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from pendcli.core.dimensions import check_dimensions
+from pendcli.core.errors import PendcliError
+from pendcli.core.ledger import LedgerRow, load_ledger, parse_ledger
+from pendcli.core.ledger_formulas import row_dimensions
+from pendcli.core.printed import parse_dimension, parse_formula
+
+ROOT = Path(__file__).resolve().parent.parent
+TABLES = ROOT / "tables"
+# Papers whose every row with a formula carries its printed form, and the rows that assert
+# prose only (no formula to transcribe).
+TRANSCRIBED = {
+    "tisserand": {"tisserand.result.inverse-square-coefficient"},
+}
+# The printed forms whose two sides (or terms) differ in dimension: each is a misprint row
+# whose reading is consistent (verified by hand against tables/papers/<paper>.txt).
+INCONSISTENT = {
+    # (I), line 160: k = √(r/l), r for g: T^-1 against L^-1/2.
+    "tisserand.eq.I",
+    # line 146: (ρ1²ρ0² − ρ²)/(ρ0²ρ² − ρ1²) adds L^4 to L^2 (two stacked fractions flattened).
+    "tisserand.result.tan-sq-phi1-rho",
+}
+
+
+def _rows(paper: str) -> list[object]:
+    ledger = load_ledger(paper, TABLES)
+    return [pytest.param(ledger, r, id=r.id) for r in ledger.rows]
+
+
+def _all() -> list[object]:
+    return [p for paper in ("tisserand", "charbonnier", "lecornu") for p in _rows(paper)]
+
+
+@pytest.mark.parametrize("paper", sorted(TRANSCRIBED))
+def test_every_row_with_a_formula_has_its_printed_form(paper: str) -> None:
+    rows = load_ledger(paper, TABLES).rows
+    missing = [r.id for r in rows if r.printed is None and r.id not in TRANSCRIBED[paper]]
+    assert not missing, f"{paper}: rows without printed: {missing}"
+
+
+_NAME_OR_NUMBER = re.compile(r"[A-Za-z_][A-Za-z_0-9]*|\d+")
+
+
+def _printed_numbers(formula: str) -> set[str]:
+    return {t for t in _NAME_OR_NUMBER.findall(formula) if t.isdigit()}
+
+
+@pytest.mark.parametrize(("ledger", "row"), _all())
+def test_printed_numbers_occur_in_the_rows_span(ledger: object, row: LedgerRow) -> None:
+    if row.printed is None:
+        return
+    assert row.lines is not None
+    lines = (TABLES / "papers" / f"{row.paper}.txt").read_text(encoding="utf-8").splitlines()
+    span = "\n".join(lines[row.lines[0] - 1 : row.lines[1]])
+    missing = _printed_numbers(row.printed) - set(re.findall(r"\d+", span))
+    assert not missing, f"{row.id}: printed numbers {sorted(missing)} not in lines {row.lines}"
+
+
+@pytest.mark.parametrize(("ledger", "row"), _all())
+def test_dimensions_as_recorded(ledger: object, row: LedgerRow) -> None:
+    verdicts = row_dimensions(row, dict(ledger.symbols))  # type: ignore[attr-defined]
+    if "printed" in verdicts:
+        bad = verdicts["printed"].verdict == "inconsistent"
+        assert bad == (row.id in INCONSISTENT), f"{row.id}: {verdicts['printed'].detail}"
+    for field in ("reading_formula", "corrected_formula"):
+        if field in verdicts:
+            assert verdicts[field].verdict != "inconsistent", f"{row.id}: {field}"
+
+
+SYMBOLS = {"l": "L", "g": "L T^-2", "t": "T", "theta": "1", "f()": "L"}
+
+
+@pytest.mark.parametrize(
+    ("formula", "verdict"),
+    [
+        ("t = 2*pi*sqrt(l/g)", "consistent"),
+        ("t = 2*pi*sqrt(g/l)", "inconsistent"),
+        ("theta = sin(t)", "inconsistent"),
+        ("theta = cos(theta) + ...", "dimensionless"),
+        ("l = g*t**2/2 + l*theta + ...", "consistent"),
+        ("l = g*t**2 + t", "inconsistent"),
+        ("l = Integral(g*t, (t, 0, t))", "consistent"),
+        ("l = Integral(g, (t, 0, l))", "inconsistent"),
+        ("f(t) = l; g = f(theta)", "inconsistent"),
+        ("l**theta = l", "inconsistent"),
+    ],
+)
+def test_dimension_verdicts(formula: str, verdict: str) -> None:
+    dims = {k: parse_dimension(k, v) for k, v in SYMBOLS.items()}
+    result = check_dimensions(parse_formula("demo", formula, SYMBOLS), dims)
+    assert result.verdict == verdict, result.detail
+
+
+def test_a_dimension_is_base_letters_with_powers() -> None:
+    assert parse_dimension("x", "L T^-2") == {"L": 1, "T": -2}
+    assert parse_dimension("x", "1") == {}
+    with pytest.raises(PendcliError, match="base letters"):
+        parse_dimension("x", "metres")
+
+
+def _ledger(printed: str, symbols: object = None, **extra: str) -> None:
+    row = {
+        "id": "tisserand.eq.16",
+        "equation": "(16)",
+        "section": "p. 452",
+        "statement": "ρ = lu",
+        "status": "definition",
+        "note": "radius",
+        "printed": printed,
+        **extra,
+    }
+    raw = {
+        "ledger": {"paper": "tisserand", "text": "tables/papers/tisserand.txt"},
+        "symbols": {"rho": "L", "l": "L", "u": "1"} if symbols is None else symbols,
+        "equation": [row],
+    }
+    parse_ledger(raw, "tisserand", Path("t.toml"), TABLES)
+
+
+def test_formulas_parse_with_declared_names_only() -> None:
+    _ledger("rho = l*u")
+    with pytest.raises(PendcliError, match=r"tisserand\.eq\.16: printed: 'v' is not a declared"):
+        _ledger("rho = l*v")
+    with pytest.raises(PendcliError, match="'gamma' is not a declared"):
+        _ledger("rho = l*gamma(u)")
+    with pytest.raises(PendcliError, match="cannot parse"):
+        _ledger("rho = l*(u")
+    with pytest.raises(PendcliError, match="needs a \\[symbols\\] table"):
+        _ledger("rho = l*u", symbols={})
+    with pytest.raises(PendcliError, match="'reading_formula' is for misprint rows"):
+        _ledger("rho = l*u", reading_formula="rho = l")
+    with pytest.raises(PendcliError, match="a new name"):
+        _ledger("rho = l*u", symbols={"rho": "L", "l": "L", "u": "1", "sin": "1"})
