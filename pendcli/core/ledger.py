@@ -24,11 +24,12 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
-from pendcli.core.ledger_formulas import validate_formulas, validate_symbols
+from pendcli.core.ledger_formulas import row_dimensions, validate_formulas, validate_symbols
 from pendcli.core.text_blocks import Span, validate_span
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
+    from pendcli.core.dimensions import DimensionCheck
 
 __all__ = [
     "CHECKED_STATUSES",
@@ -65,6 +66,12 @@ OUTPUT_KEYS = (
     "check",
     "observed_order",
     "note",
+    # issue 19: where the row is printed, its formulas, the printed form's dimensions.
+    "lines",
+    "printed",
+    "reading",
+    "corrected",
+    "dimensions",
 )
 
 # An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),
@@ -312,6 +319,7 @@ class Evaluated:
     row: LedgerRow
     check: EquationCheck | None
     problem: str | None
+    dimensions: DimensionCheck | None = None  # the printed form's, when it has one
 
     def as_dict(self) -> dict[str, object]:
         row, check = self.row, self.check
@@ -323,6 +331,8 @@ class Evaluated:
             notes.append(f"corrected: {row.corrected}" + (f" (computed: {found})" if found else ""))
         if row.note:
             notes.append(row.note)
+        if self.dimensions is not None and self.dimensions.verdict == "inconsistent":
+            notes.append(f"dimensions: {self.dimensions.detail}")
         if self.problem:
             notes.append(f"LEDGER INCONSISTENT: {self.problem}")
         return {
@@ -335,6 +345,11 @@ class Evaluated:
             "check": f"{check.method}: {check.detail}" if check is not None else "",
             "observed_order": check.observed_order if check is not None else None,
             "note": "; ".join(notes),
+            "lines": list(row.lines) if row.lines is not None else None,
+            "printed": row.printed,
+            "reading": row.reading_formula,
+            "corrected": row.corrected_formula,
+            "dimensions": self.dimensions.verdict if self.dimensions is not None else None,
         }
 
 
@@ -346,13 +361,15 @@ Part = tuple[int, int]
 def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
     """Every row of the paper's ledger (or of ``part`` of it) with its check run and its
     consistency verified."""
-    rows = load_ledger(paper, root).rows
+    ledger = load_ledger(paper, root)
+    rows = ledger.rows
     index, count = part
     start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
     out = []
     for row in rows[start:stop]:
         check = run_check(row)
-        out.append(Evaluated(row, check, verify(row, check)))
+        dims = row_dimensions(row, dict(ledger.symbols)).get("printed")
+        out.append(Evaluated(row, check, verify(row, check), dims))
     return out
 
 
