@@ -5,13 +5,14 @@ numbers their span of the text prints, and are checked for dimensions."""
 from __future__ import annotations
 
 import re
+import shutil
 from pathlib import Path
 
 import pytest
 
 from pendcli.core.dimensions import check_dimensions
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, load_ledger, parse_ledger
+from pendcli.core.ledger import LedgerRow, load_ledger, parse_ledger, verify_printed
 from pendcli.core.ledger_formulas import row_dimensions
 from pendcli.core.printed import parse_dimension, parse_formula
 
@@ -141,3 +142,71 @@ def test_formulas_parse_with_declared_names_only() -> None:
         _ledger("rho = l*u", reading_formula="rho = l")
     with pytest.raises(PendcliError, match="a new name"):
         _ledger("rho = l*u", symbols={"rho": "L", "l": "L", "u": "1", "sin": "1"})
+
+
+# --- statuses computed from the printed form (core/printed_check) ------------------------
+
+
+def _reference_rows() -> list[object]:
+    ledger = load_ledger("tisserand", TABLES)
+    return [pytest.param(ledger, r, id=r.id) for r in ledger.rows if r.reference]
+
+
+@pytest.mark.parametrize(("ledger", "row"), _reference_rows())
+def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
+    ledger: object, row: LedgerRow
+) -> None:
+    computed, problem = verify_printed(row, dict(ledger.symbols))  # type: ignore[attr-defined]
+    assert problem is None, problem
+    assert computed is not None and computed.startswith(f"{row.status}:")
+
+
+def _altered_copy(tmp_path: Path, old: str, new: str) -> Path:
+    """A copy of tables/ (as PENDCLI_TABLES would name it) with one edit of the Tisserand
+    ledger; the edit must apply exactly once."""
+    root = tmp_path / "tables"
+    shutil.copytree(TABLES, root)
+    path = root / "equations" / "tisserand.toml"
+    text = path.read_text(encoding="utf-8")
+    assert text.count(old) == 1, old
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return root
+
+
+def _row(root: Path, row_id: str) -> tuple[LedgerRow, dict[str, str]]:
+    ledger = load_ledger("tisserand", root)
+    return next(r for r in ledger.rows if r.id == row_id), dict(ledger.symbols)
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        # one coefficient of a holds row's printed form: ∫u² dψ's sin 2ψ term, /4 -> /8
+        (
+            "tisserand.result.integral-u2",
+            "(u0**2 - u1**2)/4*sin(2*psi)'",
+            "(u0**2 - u1**2)/8*sin(2*psi)'",
+        ),
+        # (6)'s 35/128 u⁴ -> 36/128 u⁴
+        ("tisserand.eq.6", "35/128*u**4", "36/128*u**4"),
+        # (17)'s sin²φ1/ρ1² -> sin²φ1/ρ0²
+        ("tisserand.eq.17", "1/rho1**2*sin(phi1)**2'", "1/rho0**2*sin(phi1)**2'"),
+    ],
+)
+def test_a_changed_coefficient_stops_a_row_holding(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    row, symbols = _row(_altered_copy(tmp_path, old, new), row_id)
+    computed, problem = verify_printed(row, symbols)
+    assert problem is not None and problem.startswith("recorded holds, but the printed form")
+    assert computed is not None and not computed.startswith("holds")
+
+
+def test_a_misprint_whose_printed_form_is_its_reading_is_refused(tmp_path: Path) -> None:
+    printed = "printed = 'tan(phi1)**2 = (u1**2*u0**2 - u**2)/(u0**2*u**2 - u1**2)'"
+    reading = "printed = 'tan(phi1)**2 = u1**2/u0**2*(u0**2 - u**2)/(u**2 - u1**2)'"
+    root = _altered_copy(tmp_path, printed, reading)
+    row, symbols = _row(root, "tisserand.result.tan-sq-phi1")
+    _, problem = verify_printed(row, symbols)
+    assert problem is not None
+    assert problem.startswith("recorded misprint, but the printed form gives holds")

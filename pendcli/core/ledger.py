@@ -24,7 +24,12 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
-from pendcli.core.ledger_formulas import row_dimensions, validate_formulas, validate_symbols
+from pendcli.core.ledger_formulas import (
+    printed_status,
+    row_dimensions,
+    validate_formulas,
+    validate_symbols,
+)
 from pendcli.core.text_blocks import Span, validate_span
 
 if TYPE_CHECKING:
@@ -53,7 +58,7 @@ CHECKED_STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint")
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
 # Where the row is printed, what it restates, and (issue 19) the printed form as a formula.
-TEXT_KEYS = ("lines", "restates", "printed", "reading_formula", "corrected_formula")
+TEXT_KEYS = ("lines", "restates", "printed", "reading_formula", "corrected_formula", "reference")
 ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note", *TEXT_KEYS)
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
 OUTPUT_KEYS = (
@@ -130,6 +135,7 @@ class LedgerRow:
     printed: str | None = None
     reading_formula: str | None = None
     corrected_formula: str | None = None
+    reference: str | None = None
 
 
 @dataclass(frozen=True)
@@ -320,6 +326,7 @@ class Evaluated:
     check: EquationCheck | None
     problem: str | None
     dimensions: DimensionCheck | None = None  # the printed form's, when it has one
+    computed: str | None = None  # the status computed from the printed form, and why
 
     def as_dict(self) -> dict[str, object]:
         row, check = self.row, self.check
@@ -331,6 +338,8 @@ class Evaluated:
             notes.append(f"corrected: {row.corrected}" + (f" (computed: {found})" if found else ""))
         if row.note:
             notes.append(row.note)
+        if self.computed:
+            notes.append(f"computed from the printed form: {self.computed}")
         if self.dimensions is not None and self.dimensions.verdict == "inconsistent":
             notes.append(f"dimensions: {self.dimensions.detail}")
         if self.problem:
@@ -369,8 +378,28 @@ def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[
     for row in rows[start:stop]:
         check = run_check(row)
         dims = row_dimensions(row, dict(ledger.symbols)).get("printed")
-        out.append(Evaluated(row, check, verify(row, check), dims))
+        computed, contradiction = verify_printed(row, dict(ledger.symbols))
+        problem = verify(row, check) or contradiction
+        out.append(Evaluated(row, check, problem, dims, computed))
     return out
+
+
+def verify_printed(row: LedgerRow, symbols: dict[str, str]) -> tuple[str | None, str | None]:
+    """(the status computed from the row's printed form and why, why it contradicts the
+    recorded status or None); (None, None) for a row without a reference."""
+    if row.reference is None:
+        return None, None
+    function = getattr(_check_module(row.paper), row.reference, None)
+    if not callable(function):
+        raise PendcliError(f"pendcli.papers.{row.paper}.equations has no {row.reference!r}")
+    status, why = printed_status(row, symbols, function())
+    if status != row.status:
+        found = status or "no status the ledger may record"
+        return (
+            f"{found}: {why}",
+            f"recorded {row.status}, but the printed form gives {found}: {why}",
+        )
+    return f"{status}: {why}", None
 
 
 def equation_rows(

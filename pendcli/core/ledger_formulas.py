@@ -18,8 +18,15 @@ from pendcli.core.printed import ELLIPSIS, FUNCTIONS, Formula, parse_dimension, 
 if TYPE_CHECKING:
     from pendcli.core.dimensions import DimensionCheck
     from pendcli.core.ledger import LedgerRow
+    from pendcli.core.printed_check import Reference
 
-__all__ = ["FORMULA_FIELDS", "row_dimensions", "row_formula", "validate_formulas"]
+__all__ = [
+    "FORMULA_FIELDS",
+    "printed_status",
+    "row_dimensions",
+    "row_formula",
+    "validate_formulas",
+]
 
 FORMULA_FIELDS = ("printed", "reading_formula", "corrected_formula")
 _RESERVED = (
@@ -57,6 +64,8 @@ def validate_formulas(path: Path, rows: Iterable[LedgerRow], symbols: Mapping[st
                 if not symbols:
                     raise PendcliError(f"{path}: {row.id}: {field} needs a [symbols] table")
                 row_formula(f"{path}: {row.id}: {field}", getattr(row, field), symbols)
+        if row.reference is not None and row.printed is None:
+            raise PendcliError(f"{path}: {row.id}: a reference checks a printed form; none")
         if row.reading_formula is not None and row.status != "misprint":
             raise PendcliError(f"{path}: {row.id}: 'reading_formula' is for misprint rows")
         if row.corrected_formula is not None and row.status != "fails":
@@ -88,3 +97,20 @@ def row_dimensions(row: LedgerRow, symbols: Mapping[str, str]) -> dict[str, Dime
         if text is not None:
             out[field] = check_dimensions(_parsed(f"{row.id}: {field}", text, table), _dims(table))
     return out
+
+
+def printed_status(
+    row: LedgerRow, symbols: Mapping[str, str], reference: Reference
+) -> tuple[str | None, str]:
+    """The status the row's printed form earns against ``reference`` (core/printed_check)."""
+    from pendcli.core.printed_check import computed_status
+
+    def parsed(field: str) -> Formula | None:
+        text = getattr(row, field)
+        return None if text is None else row_formula(f"{row.id}: {field}", text, symbols)
+
+    printed = parsed("printed")
+    assert printed is not None
+    return computed_status(
+        printed, parsed("reading_formula"), parsed("corrected_formula"), reference
+    )

@@ -502,3 +502,88 @@ def result_numerical_application() -> EquationCheck:
         method="numeric",
         detail="claims " + "; ".join(parts),
     )
+
+
+# --- references for the statuses computed from the printed forms (core/printed_check) ------
+# Each maps ledger symbols (tables/equations/tisserand.toml [symbols]) to exact expressions:
+# the definition (3), the differential (4), the ellipse's definitions (9), (16); never a copy
+# of the formula the row prints.
+
+
+def _ledger_symbols(*names: str) -> Any:
+    import sympy as sp
+
+    return [sp.Symbol(n, real=True) for n in names]
+
+
+def reference_definition_3() -> Any:
+    """(3): u = √(u0² cos²ψ + u1² sin²ψ)."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    u0, u1, psi = _ledger_symbols("u0", "u1", "psi")
+    u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
+    domain = {
+        "u0": (sp.Rational(3, 10), sp.Rational(1, 2)),
+        "u1": (sp.Rational(1, 20), sp.Rational(1, 4)),
+    }
+    return Reference({"u": u}, domain=domain, what="(3)")
+
+
+def reference_ellipse() -> Any:
+    """(3), (9) and (16): u as in (3), φ1 = arctan((u1/u0) tan ψ), ρ = lu, ρ0 = lu0, ρ1 = lu1."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    u0, u1, psi, length = _ledger_symbols("u0", "u1", "psi", "l")
+    base = reference_definition_3()
+    u = base.exact["u"]
+    exact = {
+        "u": u,
+        "phi1": sp.atan(u1 / u0 * sp.tan(psi)),
+        "rho": length * u,
+        "rho0": length * u0,
+        "rho1": length * u1,
+    }
+    return Reference(exact, domain=base.domain, what="(3), (9), (16)")
+
+
+def _small_angles(scale: Any) -> dict[str, Any]:
+    """u = sin θ, u0, u1 scaled by ``scale``: θ = arcsin(scale·u) and u -> scale·u."""
+    import sympy as sp
+
+    out: dict[str, Any] = {}
+    for suffix in ("", "0", "1"):
+        (u,) = _ledger_symbols(f"u{suffix}")
+        out[f"theta{suffix}"] = sp.asin(scale * u)
+        out[f"u{suffix}"] = scale * u
+    return out
+
+
+def reference_small_angles() -> Any:
+    """cos θ = √(1 − u²) with u = sin θ: the series through the fourth order in the angles."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    scale = sp.Symbol("x", positive=True)
+    return Reference(_small_angles(scale), scale=scale, order=6, what="u = sin θ, to order 4")
+
+
+def reference_differential_4() -> Any:
+    """(4), solved for dt, with u = sin θ: the series through the fourth order."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    scale = sp.Symbol("x", positive=True)
+    exact = _small_angles(scale)
+    k, dpsi = _ledger_symbols("k", "dpsi")
+    c, c0, c1 = (sp.cos(exact[f"theta{s}"]) for s in ("", "0", "1"))
+    total = 1 + c * c0 + c * c1 + c0 * c1
+    product = (c + c0) * (c + c1) * (c0 + c1)
+    root = sp.sqrt(1 - exact["u"] ** 2)
+    exact["dt"] = dpsi / (k * sp.sqrt(2) * root) * sp.sqrt(product) / sp.sqrt(total)
+    return Reference(exact, scale=scale, order=6, what="(4), to order 4")
