@@ -22,6 +22,8 @@ TABLES = ROOT / "tables"
 # prose only (no formula to transcribe).
 TRANSCRIBED = {
     "tisserand": {"tisserand.result.inverse-square-coefficient"},
+    # the general solution is a sentence; I_n(π)'s products 2·4…n are not transcribed yet
+    "charbonnier": {"charbonnier.result.general-solution", "charbonnier.result.in-pi"},
 }
 # The printed forms whose two sides (or terms) differ in dimension: each is a misprint row
 # whose reading is consistent (verified by hand against tables/papers/<paper>.txt).
@@ -30,6 +32,9 @@ INCONSISTENT = {
     "tisserand.eq.I",
     # line 146: (ρ1²ρ0² − ρ²)/(ρ0²ρ² − ρ1²) adds L^4 to L^2 (two stacked fractions flattened).
     "tisserand.result.tan-sq-phi1-rho",
+    # line 435: E_c = B_n/(n+1) k^(n+1) αⁿ l0ⁿ sin^(n+1) kt is [F]·T^-1 where the integral
+    # E_c = ∫ F cos kt dt is [F]·T (k² too many, whatever the dimension of F): a fails row.
+    "charbonnier.result.ec-monomial",
 }
 
 
@@ -78,7 +83,8 @@ def test_dimensions_as_recorded(ledger: object, row: LedgerRow) -> None:
             assert verdicts[field].verdict != "inconsistent", f"{row.id}: {field}"
 
 
-SYMBOLS = {"l": "L", "g": "L T^-2", "t": "T", "theta": "1", "f()": "L"}
+SYMBOLS = {"l": "L", "g": "L T^-2", "t": "T", "theta": "1", "f()": "L", "n": "1"}
+SYMBOLS["b"] = "L^(n) T^(1-2*n)"
 
 
 @pytest.mark.parametrize(
@@ -94,6 +100,8 @@ SYMBOLS = {"l": "L", "g": "L T^-2", "t": "T", "theta": "1", "f()": "L"}
         ("l = Integral(g, (t, 0, l))", "inconsistent"),
         ("f(t) = l; g = f(theta)", "inconsistent"),
         ("l**theta = l", "inconsistent"),
+        ("b = g**n*t; b = g**(n + 1)*t/g", "consistent"),
+        ("b = g**n*t; b = g**(n + 1)*t", "inconsistent"),
     ],
 )
 def test_dimension_verdicts(formula: str, verdict: str) -> None:

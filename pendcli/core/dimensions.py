@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any, Literal
 
 from pendcli.core.printed import ELLIPSIS, Formula
@@ -19,7 +18,8 @@ __all__ = ["DIMENSION_VERDICTS", "DimensionCheck", "check_dimensions", "show"]
 
 Verdict = Literal["consistent", "inconsistent", "dimensionless"]
 DIMENSION_VERDICTS: tuple[Verdict, ...] = ("consistent", "inconsistent", "dimensionless")
-Dim = dict[str, Fraction]
+# base letter -> exponent: a Fraction, or a sympy expression for a symbolic power (vⁿ)
+Dim = dict[str, Any]
 _TRANSCENDENTAL = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log")
 
 
@@ -56,8 +56,20 @@ def check_dimensions(formula: Formula, dims: Mapping[str, Dim]) -> DimensionChec
 
 
 def _agree(a: Dim | None, b: Dim | None, what: str) -> None:
-    if a is not None and b is not None and a != b:
+    if a is not None and b is not None and _quotient(a, b):
         raise _Mismatch(f"{what}: {show(a)} against {show(b)}")
+
+
+def _quotient(a: Dim, b: Dim) -> Dim:
+    """a / b: the base letters whose exponents differ (symbolic ones simplified)."""
+    import sympy as sp
+
+    out = {}
+    for k in {*a, *b}:
+        difference = sp.simplify(sp.sympify(a.get(k, 0)) - sp.sympify(b.get(k, 0)))
+        if difference != 0:
+            out[k] = difference
+    return out
 
 
 def _dim(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
@@ -108,9 +120,8 @@ def _integral(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None
 
 
 def _product(a: Dim, b: Dim) -> Dim:
-    keys = {*a, *b}
-    summed = {k: a.get(k, Fraction(0)) + b.get(k, Fraction(0)) for k in keys}
-    return {k: v for k, v in summed.items() if v}
+    summed = {k: a.get(k, 0) + b.get(k, 0) for k in {*a, *b}}
+    return {k: v for k, v in summed.items() if v != 0}
 
 
 def _power(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
@@ -121,10 +132,8 @@ def _power(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
     d = _dim(base, dims, seen)
     if not d:
         return d
-    if not exponent.is_Rational:
-        raise _Mismatch(f"{base} ({show(d)}) raised to the non-numeric power {exponent}")
-    power = Fraction(int(exponent.p), int(exponent.q))
-    return {k: v * power for k, v in d.items()}
+    # a symbolic exponent (vⁿ) gives symbolic exponents of the base letters
+    return {k: v * exponent for k, v in d.items()}
 
 
 def _function(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:

@@ -25,7 +25,9 @@ __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula
 # The functions a formula may call (besides the paper's declared function names).
 FUNCTIONS = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt")
 ELLIPSIS = "etc"  # the name "..." becomes, a symbol no ledger may declare
-_BASE = re.compile(r"^([A-Z])(?:\^(-?\d+(?:/\d+)?))?$")
+# a base letter and its power: a rational (T^-2, L^1/2) or, in brackets, an expression in
+# the paper's symbols (L^(1-n): a coefficient of vⁿ)
+_BASE = re.compile(r"^([A-Z])(?:\^(-?\d+(?:/\d+)?|\([-+*/ a-z0-9_]+\)))?$")
 
 
 @dataclass(frozen=True)
@@ -38,9 +40,8 @@ class Formula:
 
 
 def parse_dimension(where: str, text: str) -> dict[str, Any]:
-    """``"L T^-2"`` -> {"L": 1, "T": -2}; ``"1"`` is dimensionless."""
-    from fractions import Fraction
-
+    """``"L T^-2"`` -> {"L": 1, "T": -2}; ``"1"`` is dimensionless; ``"L^(1-n)"`` has a
+    symbolic power (sympy, over real symbols of the names it uses)."""
     if text.strip() == "1":
         return {}
     out: dict[str, Any] = {}
@@ -48,8 +49,15 @@ def parse_dimension(where: str, text: str) -> dict[str, Any]:
         match = _BASE.match(part)
         if not match:
             raise PendcliError(f"{where}: dimension {text!r}: write base letters as 'L T^-2'")
-        out[match.group(1)] = out.get(match.group(1), 0) + Fraction(match.group(2) or 1)
-    return {k: v for k, v in out.items() if v}
+        out[match.group(1)] = out.get(match.group(1), 0) + _power(match.group(2) or "1")
+    return {k: v for k, v in out.items() if v != 0}
+
+
+def _power(text: str) -> Any:
+    import sympy as sp
+
+    names = {n: sp.Symbol(n, real=True) for n in re.findall(r"[a-z_][a-z_0-9]*", text)}
+    return sp.sympify(text, locals=names)
 
 
 @cache
