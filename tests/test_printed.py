@@ -35,6 +35,15 @@ INCONSISTENT = {
     # line 435: E_c = B_n/(n+1) k^(n+1) αⁿ l0ⁿ sin^(n+1) kt is [F]·T^-1 where the integral
     # E_c = ∫ F cos kt dt is [F]·T (k² too many, whatever the dimension of F): a fails row.
     "charbonnier.result.ec-monomial",
+    # line 80, (6): d²(θl)/dt² (L T^-2) beside (g/b²) sin θ (L^-1): the derivative is in l.
+    "lecornu.eq.6",
+    # line 561: (π² − 12b)/(16g) adds a number to a speed b: (π² − 12)b/(16g).
+    "lecornu.result.vertical_to_elongation",
+    # lines 920-932: the same (π² ± 12b), and 1/g for b/g at line 920.
+    "lecornu.result.t_equals_t_prime",
+    # lines 1004, 1008: c² cos θ/(l² sin³θ) beside l θ'' (l³ is due), and the l-form's
+    # derivatives printed in t (d²θ/dt² beside dθ/dt: L T^-2 against T^-1).
+    "lecornu.result.conical_linear_form",
 }
 
 
@@ -101,6 +110,8 @@ SYMBOLS["b"] = "L^(n) T^(1-2*n)"
         ("f(t) = l; g = f(theta)", "inconsistent"),
         ("l**theta = l", "inconsistent"),
         ("b = g**n*t; b = g**(n + 1)*t/g", "consistent"),
+        ("l = Derivative(g*t**2, t, 2)*t**2", "consistent"),
+        ("l = Derivative(l, t)", "inconsistent"),
         ("b = g**n*t; b = g**(n + 1)*t", "inconsistent"),
     ],
 )

@@ -103,6 +103,8 @@ def _dim(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
         return _power(expr, dims, seen)
     if isinstance(expr, sp.Integral):
         return _integral(expr, dims, seen)
+    if isinstance(expr, sp.Derivative):
+        return _derivative(expr, dims, seen)
     return _function(expr, dims, seen)
 
 
@@ -116,6 +118,17 @@ def _integral(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None
         if total is None or variable is None:
             return None
         total = _product(total, variable)
+    return total
+
+
+def _derivative(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
+    """dⁿf/dxⁿ: the dimension of f over that of x to the n."""
+    total = _dim(expr.expr, dims, seen)
+    for variable, count in expr.variable_count:
+        d = _dim(variable, dims, seen)
+        if total is None or d is None:
+            return None
+        total = _product(total, {k: -v * count for k, v in d.items()})
     return total
 
 

@@ -4,8 +4,9 @@ data: sympy syntax over the symbols the ledger declares once, with their dimensi
 Notation (tables/README.md, "The equation ledger"): ``lhs = rhs`` (a chain ``a = b = c`` is
 two equations), several formulas separated by ``;``, ``...`` for the paper's « + … »
 (a truncated series; it takes the dimension of whatever it is added to), explicit ``*``,
-``**`` for powers, ``Integral(f, (x, a, b))`` for ∫_a^b f dx, differentials as declared
-symbols (``dt``, ``dtheta``). Only declared
+``**`` for powers, ``Integral(f, (x, a, b))`` for ∫_a^b f dx, ``Derivative(f, t, 2)`` for
+d²f/dt², differentials and derivatives of one symbol as declared symbols (``dt``,
+``dtheta_dt``). Only declared
 names parse: an undeclared one is an error naming the row. sympy is imported lazily.
 """
 
@@ -67,6 +68,7 @@ def _namespace(names: tuple[str, ...], functions: tuple[str, ...]) -> dict[str, 
     space: dict[str, Any] = {f: getattr(sp, f) for f in FUNCTIONS}
     space.update({"pi": sp.pi, "Rational": sp.Rational, "Integer": sp.Integer, "Float": sp.Float})
     space["Integral"] = sp.Integral  # Integral(f, (x, a, b)), the paper's ∫_a^b f dx
+    space["Derivative"] = sp.Derivative  # Derivative(f, t, 2): d²f/dt², left unevaluated
     space.update({n: sp.Symbol(n, real=True) for n in names})
     space.update({f: sp.Function(f) for f in functions})
     space[ELLIPSIS] = sp.Symbol(ELLIPSIS)
