@@ -84,12 +84,14 @@ def ledger_section() -> str:
     from pendcli.core.ledger import coverage, equation_rows, labels_in_text
     from pendcli.core.ledger_check import STATUSES
     from pendcli.core.tables import paper_text
+    from pendcli.core.ledger_coverage import ledger_text_coverage
 
     counts = coverage(equation_rows(PAPERS))
     rows: list[Row] = []
     for key in PAPERS:
         text = paper_text(key)
         c = counts[key]
+        blocks = ledger_text_coverage(key)
         rows.append(
             {
                 "paper": key,
@@ -97,6 +99,7 @@ def ledger_section() -> str:
                 "rows": c["total"],
                 **{status: c[status] for status in STATUSES},
                 "checked": f"{round(100 * c['checked'] / c['total'])} %",
+                "$$ blocks covered": f"{blocks.covered} of {blocks.blocks}",
             }
         )
     return to_markdown(rows, [Column(k, k) for k in rows[0]])

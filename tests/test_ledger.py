@@ -115,6 +115,8 @@ def _small_ledger(root: Path, change: dict[str, dict[str, str | None]] | None = 
     ``change`` alters a row's fields (None removes one)."""
     raw = tomllib.loads((TABLES / "equations" / "charbonnier.toml").read_text(encoding="utf-8"))
     parts = [f'[ledger]\npaper = "charbonnier"\ntext = {json.dumps(raw["ledger"]["text"])}']
+    symbols = "\n".join(f"{json.dumps(k)} = {json.dumps(v)}" for k, v in raw["symbols"].items())
+    parts.append(f"[symbols]\n{symbols}")
     for entry in raw["equation"]:
         if entry["id"] in SMALL:
             altered = {**entry, **(change or {}).get(entry["id"], {})}
@@ -148,7 +150,10 @@ def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) ->
     ("row_id", "change"),
     [
         ("charbonnier.eq.3", {"status": "fails", "corrected": "θ = α cos kt"}),
-        ("charbonnier.result.ec-monomial", {"status": "holds", "corrected": None}),
+        (
+            "charbonnier.result.ec-monomial",
+            {"status": "holds", "corrected": None, "corrected_formula": None},
+        ),
     ],
 )
 def test_a_check_contradicting_its_status_is_reported(

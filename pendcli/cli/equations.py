@@ -35,6 +35,7 @@ def equations(
     from pendcli.core.errors import PendcliError
     from pendcli.core.ledger import coverage, equation_rows
     from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.ledger_coverage import ledger_text_coverage
     from pendcli.render import Column
     from pendcli.reproduce import EQUATION_KEYS
     from pendcli.summary import compact_equation_columns
@@ -43,11 +44,17 @@ def equations(
         raise PendcliError(f"unknown status {status!r}; choose one of {', '.join(STATUSES)}")
     rows = equation_rows(resolve_papers(paper))
     counts = coverage(rows)
+    texts = {p: ledger_text_coverage(p).as_dict() for p in counts}
     shown = [r for r in rows if status is None or r["status"] == status]
     compact = fmt is OutputFormat.table and not notes
     columns = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
-    tally = [{"paper": p, **c} for p, c in counts.items()]
-    count_columns = [Column(k, k) for k in ("paper", *STATUSES, "total", "checked")]
+    tally = [{"paper": p, **c, **texts[p]} for p, c in counts.items()]
+    # The text's display formulas ($$ blocks) inside some row's lines, of all of them.
+    count_columns = [
+        *(Column(k, k) for k in ("paper", *STATUSES, "total", "checked")),
+        Column("blocks_covered", "$$ covered"),
+        Column("blocks", "$$ blocks"),
+    ]
     hint = " (--notes: what each states, how it is checked)" if compact else ""
     sections = [
         (f"{key.capitalize()}: equations{hint}", [r for r in shown if r["paper"] == key], columns)
@@ -56,5 +63,5 @@ def equations(
     emit(
         fmt,
         [*(s for s in sections if s[1]), ("coverage", tally, count_columns)],
-        {"equations": shown, "coverage": counts},
+        {"equations": shown, "coverage": {p: {**c, **texts[p]} for p, c in counts.items()}},
     )

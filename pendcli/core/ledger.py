@@ -23,9 +23,17 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
+from pendcli.core.ledger_formulas import (
+    printed_status,
+    row_dimensions,
+    validate_formulas,
+    validate_symbols,
+)
+from pendcli.core.text_blocks import Span, validate_span
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
+    from pendcli.core.dimensions import DimensionCheck
 
 __all__ = [
     "CHECKED_STATUSES",
@@ -48,7 +56,9 @@ __all__ = [
 CHECKED_STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint")
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
-ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note")
+# Where the row is printed, what it restates, and (issue 19) the printed form as a formula.
+TEXT_KEYS = ("lines", "restates", "printed", "reading_formula", "corrected_formula", "reference")
+ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note", *TEXT_KEYS)
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
 OUTPUT_KEYS = (
     "id",
@@ -60,6 +70,12 @@ OUTPUT_KEYS = (
     "check",
     "observed_order",
     "note",
+    # issue 19: where the row is printed, its formulas, the printed form's dimensions.
+    "lines",
+    "printed",
+    "reading",
+    "corrected",
+    "dimensions",
 )
 
 # An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),
@@ -113,6 +129,12 @@ class LedgerRow:
     reading: str | None = None
     corrected: str | None = None
     note: str | None = None
+    lines: Span | None = None
+    restates: str | None = None
+    printed: str | None = None
+    reading_formula: str | None = None
+    corrected_formula: str | None = None
+    reference: str | None = None
 
 
 @dataclass(frozen=True)
@@ -121,6 +143,8 @@ class Ledger:
     text: Path
     path: Path
     rows: tuple[LedgerRow, ...]
+    # [symbols]: (name, dimension) pairs the formulas of the rows are written in.
+    symbols: tuple[tuple[str, str], ...] = ()
 
     def labels(self) -> Counter[str]:
         """How many rows each printed label has (stated results, with no label, excluded)."""
@@ -158,7 +182,7 @@ def load_ledger(paper: str, root: Path | None = None) -> Ledger:
 
 def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Ledger:
     """Validate a parsed ledger: unknown keys, missing fields and bad values are errors."""
-    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation"))
+    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation", "symbols"))
     header = raw.get("ledger")
     if not isinstance(header, dict) or header.get("paper") != paper:
         raise PendcliError(f"{path}: [ledger] must be a table with paper = {paper!r}")
@@ -177,7 +201,11 @@ def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Led
             raise PendcliError(f"{path}: {row.id}: duplicate id")
         seen.add(row.id)
         rows.append(row)
-    return Ledger(paper, root / text.removeprefix("tables/"), path, tuple(rows))
+    text_path = root / text.removeprefix("tables/")
+    _check_text_fields(path, rows, text_path)
+    symbols = validate_symbols(path, raw.get("symbols"))
+    validate_formulas(path, rows, dict(symbols))
+    return Ledger(paper, text_path, path, tuple(rows), symbols)
 
 
 def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: Iterable[str]) -> None:
@@ -193,17 +221,31 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         raise PendcliError(f"{path}: [[equation]] #{index + 1} is not a table")
     where = f"{path}: {entry.get('id', f'[[equation]] #{index + 1}')}"
     _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
-    for key in ROW_KEYS:
+    for key in (k for k in ROW_KEYS if k != "lines"):
         value = entry.get(key)
         if key in REQUIRED_KEYS and value is None:
             raise PendcliError(f"{where}: missing {key!r}")
         blank = not isinstance(value, str) or not value.strip()
         if value is not None and blank and not (key == "equation" and value == ""):
             raise PendcliError(f"{where}: {key!r} must be a non-empty string")
-    row = LedgerRow(paper=paper, **entry)
+    lines = entry.get("lines")
+    span = None if lines is None else validate_span(where, lines)
+    row = LedgerRow(paper=paper, **{**entry, "lines": span})
     _check_identity(where, row)
     _check_status_fields(where, row)
     return row
+
+
+def _check_text_fields(path: Path, rows: list[LedgerRow], text: Path) -> None:
+    """``lines`` within the paper's text (when the text is there to count) and ``restates``
+    naming another row of the ledger."""
+    ids = {r.id for r in rows}
+    count = len(text.read_text(encoding="utf-8").splitlines()) if text.is_file() else None
+    for row in rows:
+        if row.lines is not None and count is not None:
+            validate_span(f"{path}: {row.id}", list(row.lines), count)
+        if row.restates is not None and (row.restates not in ids or row.restates == row.id):
+            raise PendcliError(f"{path}: {row.id}: restates {row.restates!r}, not another row")
 
 
 def _check_identity(where: str, row: LedgerRow) -> None:
@@ -282,6 +324,8 @@ class Evaluated:
     row: LedgerRow
     check: EquationCheck | None
     problem: str | None
+    dimensions: DimensionCheck | None = None  # the printed form's, when it has one
+    computed: str | None = None  # the status computed from the printed form, and why
 
     def as_dict(self) -> dict[str, object]:
         row, check = self.row, self.check
@@ -293,6 +337,10 @@ class Evaluated:
             notes.append(f"corrected: {row.corrected}" + (f" (computed: {found})" if found else ""))
         if row.note:
             notes.append(row.note)
+        if self.computed:
+            notes.append(f"computed from the printed form: {self.computed}")
+        if self.dimensions is not None and self.dimensions.verdict == "inconsistent":
+            notes.append(f"dimensions: {self.dimensions.detail}")
         if self.problem:
             notes.append(f"LEDGER INCONSISTENT: {self.problem}")
         return {
@@ -305,6 +353,11 @@ class Evaluated:
             "check": f"{check.method}: {check.detail}" if check is not None else "",
             "observed_order": check.observed_order if check is not None else None,
             "note": "; ".join(notes),
+            "lines": list(row.lines) if row.lines is not None else None,
+            "printed": row.printed,
+            "reading": row.reading_formula,
+            "corrected": row.corrected_formula,
+            "dimensions": self.dimensions.verdict if self.dimensions is not None else None,
         }
 
 
@@ -316,14 +369,36 @@ Part = tuple[int, int]
 def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
     """Every row of the paper's ledger (or of ``part`` of it) with its check run and its
     consistency verified."""
-    rows = load_ledger(paper, root).rows
+    ledger = load_ledger(paper, root)
+    rows = ledger.rows
     index, count = part
     start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
     out = []
     for row in rows[start:stop]:
         check = run_check(row)
-        out.append(Evaluated(row, check, verify(row, check)))
+        dims = row_dimensions(row, dict(ledger.symbols)).get("printed")
+        computed, contradiction = verify_printed(row, dict(ledger.symbols))
+        problem = verify(row, check) or contradiction
+        out.append(Evaluated(row, check, problem, dims, computed))
     return out
+
+
+def verify_printed(row: LedgerRow, symbols: dict[str, str]) -> tuple[str | None, str | None]:
+    """(the status computed from the row's printed form and why, why it contradicts the
+    recorded status or None); (None, None) for a row without a reference."""
+    if row.reference is None:
+        return None, None
+    function = getattr(_check_module(row.paper), row.reference, None)
+    if not callable(function):
+        raise PendcliError(f"pendcli.papers.{row.paper}.equations has no {row.reference!r}")
+    status, why = printed_status(row, symbols, function())
+    if status != row.status:
+        found = status or "no status the ledger may record"
+        return (
+            f"{found}: {why}",
+            f"recorded {row.status}, but the printed form gives {found}: {why}",
+        )
+    return f"{status}: {why}", None
 
 
 def equation_rows(

@@ -131,6 +131,16 @@ EQUATIONS = RowKind(
             _TEXT,
             "the reading of a misprint, the corrected form of a failure, what a definition defines",
         ),
+        Field("lines", ("array", "null"), "[first, last]: the lines of the paper's text"),
+        Field("printed", ("string", "null"), "the formula as printed, in sympy notation"),
+        Field("reading", ("string", "null"), "a misprint's reading, in the same notation"),
+        Field("corrected", ("string", "null"), "a failure's correction, in the same notation"),
+        Field(
+            "dimensions",
+            ("string", "null"),
+            "the printed form's dimensional verdict; null without a printed form",
+            ("consistent", "inconsistent", "dimensionless"),
+        ),
     ),
 )
 STABILITY = RowKind(

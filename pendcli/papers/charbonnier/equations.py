@@ -192,3 +192,26 @@ def result_friction_count() -> EquationCheck:
 def result_lowest_point() -> EquationCheck:
     """§ 17: ΔT_½ = b_n(αl0)^{n−1}k^{n−3}/(n+1) and Δv_m = (k/2) l0 Δα."""
     return _reuse("delta_T_half", "delta_v_m")
+
+
+def result_period_and_top_speed() -> EquationCheck:
+    """n° 3: T = π/k, the first return of dθ/dt = kα sin kt to 0 after t = 0, and
+    θ'_m = kα, its value at kt = π/2 where d²θ/dt² = k²α cos kt vanishes."""
+    import sympy as sp
+
+    t, k, alpha = sp.symbols("t k alpha", positive=True)
+    speed = sp.diff(-alpha * sp.cos(k * t), t)
+    stops = sp.solveset(speed, t, sp.Interval.open(0, 2 * sp.pi / k))
+    first = min(stops) if stops.is_FiniteSet and stops else sp.nan
+    top = speed.subs(t, sp.solve(sp.diff(speed, t), t)[0])
+    return _identity((first - sp.pi / k) ** 2 + (top - k * alpha) ** 2, "T − π/k, θ'_m − kα")
+
+
+def result_principal_motion() -> EquationCheck:
+    """n° 6 repeats (3) for θ0 and n° 3's T = π/k, θ'_m = kα: both checks, cited."""
+    parts = (eq_3(), result_period_and_top_speed())
+    return EquationCheck(
+        holds=all(p.holds for p in parts),
+        method="sympy",
+        detail="as (3) and n° 3: " + "; ".join(p.detail for p in parts),
+    )

@@ -460,3 +460,130 @@ def eq_17() -> EquationCheck:
     t2 = _tan_sq_phi1()
     cos_sq, sin_sq = 1 / (1 + t2), t2 / (1 + t2)
     return identity_check(cos_sq / a + sin_sq / b - 1 / w, "cos²φ1/u0² + sin²φ1/u1² − 1/u²")
+
+
+# --- rows for the display formulas issue 19 found without a row ---------------------------
+
+
+def result_cos_series() -> EquationCheck:
+    """cos θ = 1 − u²/2 − u⁴/8 − … with u = sin θ (and the same for θ0, θ1): the series of
+    √(1 − u²), compared exactly through u⁴."""
+    import sympy as sp
+
+    u = sp.Symbol("u", real=True)
+    printed = 1 - u**2 / 2 - u**4 / 8
+    exact = sp.series(sp.sqrt(1 - u**2), u, 0, 6).removeO()
+    return identity_check(exact - printed, "√(1−u²) through u⁴ − (1 − u²/2 − u⁴/8)")
+
+
+def result_first_approximation() -> EquationCheck:
+    """ψ = k't, φ' = (3/8)u0u1k''t: (II) and (V) without their periodic terms (the sin 2k't
+    term of ψ and the secular term of φ' are the quadrature checks' leading terms)."""
+    return _reuse("II_sin2", "k_second")
+
+
+NUMERICAL_APPLICATION = (
+    "tisserand.example.psi_sin2",
+    "tisserand.example.psi_sin4",
+    "tisserand.example.phi_sin2",
+)
+
+
+def result_numerical_application() -> EquationCheck:
+    """ψ and φ' for θ0 = 30', θ1 = 15': the three coefficients, as the claims of
+    tables/published/tisserand.toml judge them against their recomputation."""
+    from pendcli.core.claims import evaluate_paper
+
+    rows = {r.id: r for r in evaluate_paper("tisserand")}
+    chosen = [rows[i] for i in NUMERICAL_APPLICATION]
+    parts = [f"{r.id} printed {r.published}: {r.verdict}" for r in chosen]
+    return EquationCheck(
+        holds=all(r.verdict == "agrees" for r in chosen),
+        method="numeric",
+        detail="claims " + "; ".join(parts),
+    )
+
+
+# --- references for the statuses computed from the printed forms (core/printed_check) ------
+# Each maps ledger symbols (tables/equations/tisserand.toml [symbols]) to exact expressions:
+# the definition (3), the differential (4), the ellipse's definitions (9), (16); never a copy
+# of the formula the row prints.
+
+
+def _ledger_symbols(*names: str) -> Any:
+    import sympy as sp
+
+    return [sp.Symbol(n, real=True) for n in names]
+
+
+def reference_definition_3() -> Any:
+    """(3): u = √(u0² cos²ψ + u1² sin²ψ)."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    u0, u1, psi = _ledger_symbols("u0", "u1", "psi")
+    u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
+    domain = {
+        "u0": (sp.Rational(3, 10), sp.Rational(1, 2)),
+        "u1": (sp.Rational(1, 20), sp.Rational(1, 4)),
+    }
+    return Reference({"u": u}, domain=domain, what="(3)")
+
+
+def reference_ellipse() -> Any:
+    """(3), (9) and (16): u as in (3), φ1 = arctan((u1/u0) tan ψ), ρ = lu, ρ0 = lu0, ρ1 = lu1."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    u0, u1, psi, length = _ledger_symbols("u0", "u1", "psi", "l")
+    base = reference_definition_3()
+    u = base.exact["u"]
+    exact = {
+        "u": u,
+        "phi1": sp.atan(u1 / u0 * sp.tan(psi)),
+        "rho": length * u,
+        "rho0": length * u0,
+        "rho1": length * u1,
+    }
+    return Reference(exact, domain=base.domain, what="(3), (9), (16)")
+
+
+def _small_angles(scale: Any) -> dict[str, Any]:
+    """u = sin θ, u0, u1 scaled by ``scale``: θ = arcsin(scale·u) and u -> scale·u."""
+    import sympy as sp
+
+    out: dict[str, Any] = {}
+    for suffix in ("", "0", "1"):
+        (u,) = _ledger_symbols(f"u{suffix}")
+        out[f"theta{suffix}"] = sp.asin(scale * u)
+        out[f"u{suffix}"] = scale * u
+    return out
+
+
+def reference_small_angles() -> Any:
+    """cos θ = √(1 − u²) with u = sin θ: the series through the fourth order in the angles."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    scale = sp.Symbol("x", positive=True)
+    return Reference(_small_angles(scale), scale=scale, order=6, what="u = sin θ, to order 4")
+
+
+def reference_differential_4() -> Any:
+    """(4), solved for dt, with u = sin θ: the series through the fourth order."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    scale = sp.Symbol("x", positive=True)
+    exact = _small_angles(scale)
+    k, dpsi = _ledger_symbols("k", "dpsi")
+    c, c0, c1 = (sp.cos(exact[f"theta{s}"]) for s in ("", "0", "1"))
+    total = 1 + c * c0 + c * c1 + c0 * c1
+    product = (c + c0) * (c + c1) * (c0 + c1)
+    root = sp.sqrt(1 - exact["u"] ** 2)
+    exact["dt"] = dpsi / (k * sp.sqrt(2) * root) * sp.sqrt(product) / sp.sqrt(total)
+    return Reference(exact, scale=scale, order=6, what="(4), to order 4")

@@ -1,0 +1,116 @@
+"""The ledger's formulas: its ``[symbols]`` table (name -> dimension) and each row's
+``printed``, ``reading_formula`` and ``corrected_formula``, parsed and dimension-checked.
+
+Parsing happens when a ledger is loaded, so a typo or an undeclared name is a load error
+naming the row; sympy is imported only when some row carries a formula.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from functools import cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from pendcli.core.errors import PendcliError
+from pendcli.core.printed import ELLIPSIS, FUNCTIONS, Formula, parse_dimension, parse_formula
+
+if TYPE_CHECKING:
+    from pendcli.core.dimensions import DimensionCheck
+    from pendcli.core.ledger import LedgerRow
+    from pendcli.core.printed_check import Reference
+
+__all__ = [
+    "FORMULA_FIELDS",
+    "printed_status",
+    "row_dimensions",
+    "row_formula",
+    "validate_formulas",
+]
+
+FORMULA_FIELDS = ("printed", "reading_formula", "corrected_formula")
+_RESERVED = (
+    *FUNCTIONS,
+    ELLIPSIS,
+    "pi",
+    "Rational",
+    "Integer",
+    "Float",
+    "Symbol",
+    "Function",
+    "Integral",
+)
+
+
+def validate_symbols(path: Path, raw: object) -> tuple[tuple[str, str], ...]:
+    """``[symbols]`` as (name, dimension) pairs, each dimension parsed once to check it."""
+    if raw is None:
+        return ()
+    if not isinstance(raw, dict):
+        raise PendcliError(f'{path}: [symbols] must be a table of name = "dimension"')
+    for name, dim in raw.items():
+        bare = name.removesuffix("()")
+        if not bare.isidentifier() or bare in _RESERVED or not isinstance(dim, str):
+            raise PendcliError(f'{path}: [symbols] {name!r}: a new name = "L T^-2" or "1"')
+        parse_dimension(f"{path}: [symbols] {name}", dim)
+    return tuple(sorted(raw.items()))
+
+
+def validate_formulas(path: Path, rows: Iterable[LedgerRow], symbols: Mapping[str, str]) -> None:
+    """Parse every formula field of every row; the first bad one is an error naming it."""
+    for row in rows:
+        for field in FORMULA_FIELDS:
+            if getattr(row, field) is not None:
+                if not symbols:
+                    raise PendcliError(f"{path}: {row.id}: {field} needs a [symbols] table")
+                row_formula(f"{path}: {row.id}: {field}", getattr(row, field), symbols)
+        if row.reference is not None and row.printed is None:
+            raise PendcliError(f"{path}: {row.id}: a reference checks a printed form; none")
+        if row.reading_formula is not None and row.status != "misprint":
+            raise PendcliError(f"{path}: {row.id}: 'reading_formula' is for misprint rows")
+        if row.corrected_formula is not None and row.status != "fails":
+            raise PendcliError(f"{path}: {row.id}: 'corrected_formula' is for fails rows")
+
+
+def row_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
+    return _parsed(where, text, tuple(sorted(symbols.items())))
+
+
+@cache
+def _parsed(where: str, text: str, symbols: tuple[tuple[str, str], ...]) -> Formula:
+    return parse_formula(where, text, dict(symbols))
+
+
+@cache
+def _dims(symbols: tuple[tuple[str, str], ...]) -> dict[str, Any]:
+    return {name: parse_dimension(name, dim) for name, dim in symbols}
+
+
+def row_dimensions(row: LedgerRow, symbols: Mapping[str, str]) -> dict[str, DimensionCheck]:
+    """Field -> the dimensional verdict of each formula the row carries."""
+    from pendcli.core.dimensions import check_dimensions
+
+    table = tuple(sorted(symbols.items()))
+    out = {}
+    for field in FORMULA_FIELDS:
+        text = getattr(row, field)
+        if text is not None:
+            out[field] = check_dimensions(_parsed(f"{row.id}: {field}", text, table), _dims(table))
+    return out
+
+
+def printed_status(
+    row: LedgerRow, symbols: Mapping[str, str], reference: Reference
+) -> tuple[str | None, str]:
+    """The status the row's printed form earns against ``reference`` (core/printed_check)."""
+    from pendcli.core.printed_check import computed_status
+
+    def parsed(field: str) -> Formula | None:
+        text = getattr(row, field)
+        return None if text is None else row_formula(f"{row.id}: {field}", text, symbols)
+
+    printed = parsed("printed")
+    assert printed is not None
+    return computed_status(
+        printed, parsed("reading_formula"), parsed("corrected_formula"), reference
+    )

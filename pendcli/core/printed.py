@@ -1,0 +1,108 @@
+"""A ledger row's ``printed`` formula (and its ``reading_formula``, ``corrected_formula``) as
+data: sympy syntax over the symbols the ledger declares once, with their dimensions.
+
+Notation (tables/README.md, "The equation ledger"): ``lhs = rhs`` (a chain ``a = b = c`` is
+two equations), several formulas separated by ``;``, ``...`` for the paper's « + … »
+(a truncated series; it takes the dimension of whatever it is added to), explicit ``*``,
+``**`` for powers, ``Integral(f, (x, a, b))`` for ∫_a^b f dx, ``Derivative(f, t, 2)`` for
+d²f/dt², differentials and derivatives of one symbol as declared symbols (``dt``,
+``dtheta_dt``). Only declared
+names parse: an undeclared one is an error naming the row. sympy is imported lazily.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import cache
+from itertools import pairwise
+from typing import Any
+
+from pendcli.core.errors import PendcliError
+
+__all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula"]
+
+# The functions a formula may call (besides the paper's declared function names).
+FUNCTIONS = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt")
+ELLIPSIS = "etc"  # the name "..." becomes, a symbol no ledger may declare
+# a base letter and its power: a rational (T^-2, L^1/2) or, in brackets, an expression in
+# the paper's symbols (L^(1-n): a coefficient of vⁿ)
+_BASE = re.compile(r"^([A-Z])(?:\^(-?\d+(?:/\d+)?|\([-+*/ a-z0-9_]+\)))?$")
+
+
+@dataclass(frozen=True)
+class Formula:
+    """A parsed formula: the equations it states, each as (lhs, rhs); an expression that is
+    not an equation (a bare quantity) has lhs None."""
+
+    source: str
+    equations: tuple[tuple[Any, Any], ...]
+
+
+def parse_dimension(where: str, text: str) -> dict[str, Any]:
+    """``"L T^-2"`` -> {"L": 1, "T": -2}; ``"1"`` is dimensionless; ``"L^(1-n)"`` has a
+    symbolic power (sympy, over real symbols of the names it uses)."""
+    if text.strip() == "1":
+        return {}
+    out: dict[str, Any] = {}
+    for part in text.split():
+        match = _BASE.match(part)
+        if not match:
+            raise PendcliError(f"{where}: dimension {text!r}: write base letters as 'L T^-2'")
+        out[match.group(1)] = out.get(match.group(1), 0) + _power(match.group(2) or "1")
+    return {k: v for k, v in out.items() if v != 0}
+
+
+def _power(text: str) -> Any:
+    import sympy as sp
+
+    names = {n: sp.Symbol(n, real=True) for n in re.findall(r"[a-z_][a-z_0-9]*", text)}
+    return sp.sympify(text, locals=names)
+
+
+@cache
+def _namespace(names: tuple[str, ...], functions: tuple[str, ...]) -> dict[str, Any]:
+    import sympy as sp
+
+    space: dict[str, Any] = {f: getattr(sp, f) for f in FUNCTIONS}
+    space.update({"pi": sp.pi, "Rational": sp.Rational, "Integer": sp.Integer, "Float": sp.Float})
+    space["Integral"] = sp.Integral  # Integral(f, (x, a, b)), the paper's ∫_a^b f dx
+    space["Derivative"] = sp.Derivative  # Derivative(f, t, 2): d²f/dt², left unevaluated
+    space.update({n: sp.Symbol(n, real=True) for n in names})
+    space.update({f: sp.Function(f) for f in functions})
+    space[ELLIPSIS] = sp.Symbol(ELLIPSIS)
+    return space
+
+
+def parse_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
+    """Parse ``text`` with the declared ``symbols`` only (names ending in ``()`` are declared
+    functions); raises PendcliError naming ``where`` on a syntax error or an undeclared name."""
+    names = tuple(sorted(n for n in symbols if not n.endswith("()")))
+    functions = tuple(sorted(n[:-2] for n in symbols if n.endswith("()")))
+    space = _namespace(names, functions)
+    equations = []
+    for part in (p.strip() for p in text.split(";")):
+        sides = [_expression(where, s, space) for s in re.split(r"(?<![=<>!])=(?!=)", part)]
+        if len(sides) == 1:
+            equations.append((None, sides[0]))
+        equations.extend(pairwise(sides))
+    return Formula(text, tuple(equations))
+
+
+def _expression(where: str, text: str, space: dict[str, Any]) -> Any:
+    from tokenize import TokenError
+
+    import sympy as sp
+    from sympy.parsing.sympy_parser import parse_expr
+
+    source = text.replace("...", f" {ELLIPSIS} ")
+    for name in re.findall(r"[A-Za-z_][A-Za-z_0-9]*", source):
+        if name not in space:
+            raise PendcliError(f"{where}: {name!r} is not a declared symbol (see [symbols])")
+    try:
+        # Only the namespace is visible: no builtins, no other sympy name.
+        visible = {"__builtins__": {}, "Symbol": sp.Symbol, "Function": sp.Function}
+        return parse_expr(source, local_dict=dict(space), global_dict=visible)
+    except (SyntaxError, TokenError, TypeError, ValueError, sp.SympifyError) as exc:
+        raise PendcliError(f"{where}: cannot parse {text.strip()!r}: {exc}") from None

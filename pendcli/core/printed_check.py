@@ -1,0 +1,126 @@
+"""Statuses computed from the printed form (issue 19): a row's ``printed`` formula checked as
+an identity against the reference its paper's code supplies.
+
+A reference (``reference = "name"`` in the row; ``pendcli.papers.<paper>.equations.name()``
+returns a :class:`Reference`) maps some of the ledger's symbols to exact expressions: the
+preceding equation, the definition a formula rests on, the exact solution; never a second
+copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes when
+``lhs − rhs`` (with « … » set to 0), after the substitution, vanishes at exact random
+rational points (to 20 digits), or simplifies to 0 where a point gives no number; with a
+``scale`` and an ``order``, when its series in the scale vanishes below that order.
+The status follows:
+
+* ``holds``: the printed form passes;
+* ``misprint``: the printed form fails and its ``reading_formula`` passes;
+* ``fails``: the printed form fails and its ``corrected_formula`` passes;
+* otherwise nothing the ledger may record: the row is refused.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from pendcli.core.printed import ELLIPSIS, Formula
+
+__all__ = ["Reference", "computed_status", "formula_passes"]
+
+POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
+_DIGITS = 20
+
+
+@dataclass(frozen=True)
+class Reference:
+    """Symbol name -> exact sympy expression; ``scale``/``order``: compare a truncated series
+    (the residual's series in ``scale`` must vanish through ``scale**(order - 1)``);
+    ``domain``: symbol name -> (low, high) for the random points (default (1/10, 1/2))."""
+
+    exact: Mapping[str, Any]
+    scale: Any = None
+    order: int | None = None
+    domain: Mapping[str, tuple[Any, Any]] = field(default_factory=dict)
+    what: str = ""
+
+
+def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
+    """Whether every equation of ``formula`` holds under ``reference``, and why not."""
+    for lhs, rhs in formula.equations:
+        if lhs is None:
+            continue
+        ok, why = _equation_passes(lhs - rhs, reference)
+        if not ok:
+            return False, f"{lhs} = {rhs}: {why}"
+    return True, "every equation holds" + (f" against {reference.what}" if reference.what else "")
+
+
+def _equation_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
+    import sympy as sp
+
+    names = {s.name: s for s in residual.free_symbols}
+    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
+    expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
+    expr = expr.subs(exact, simultaneous=True)
+    if reference.scale is not None and reference.order is not None:
+        expr = sp.series(expr, reference.scale, 0, reference.order).removeO()
+    # The random points first: cheap, and decisive when the residual is not 0; simplify only
+    # where a point gives no number. An integral is never simplified (sympy's antiderivatives
+    # can take minutes).
+    ok, why = _vanishes_at_points(expr, reference)
+    if ok or "not a number" not in why or expr.has(sp.Integral):
+        return ok, why
+    return (True, "simplifies to 0") if sp.simplify(expr) == 0 else (False, why)
+
+
+def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:
+    import sympy as sp
+
+    generator = random.Random(19)
+    free = sorted(expr.free_symbols, key=lambda s: s.name)
+    for _ in range(POINTS):
+        point = {}
+        for s in free:
+            low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
+            point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
+        value = sp.N(_integrals_by_quadrature(expr.subs(point)), _DIGITS)
+        shown = ", ".join(f"{k}={v}" for k, v in point.items())
+        if not value.is_number:
+            return False, f"the residual is not a number at {shown}"
+        if abs(value) > sp.Float(10) ** (5 - _DIGITS):
+            return False, f"residual {sp.N(value, 6)} at {shown}"
+    return True, f"vanishes at {POINTS} random rational points"
+
+
+def _integrals_by_quadrature(expr: Any) -> Any:
+    """``expr`` (at a point) with each definite integral replaced by its mpmath quadrature:
+    sympy's own numerical integration is several times slower for the same digits."""
+    import mpmath
+    import sympy as sp
+
+    values = {}
+    for integral in expr.atoms(sp.Integral):
+        (variable, low, high), *rest = integral.limits
+        if rest or integral.function.free_symbols - {variable}:
+            continue  # a multiple or a parametric integral: left to sympy
+        integrand = sp.lambdify(variable, integral.function, modules="mpmath")
+        with mpmath.workdps(_DIGITS + 5):
+            bounds = [sp.N(b, _DIGITS + 5)._to_mpmath(mpmath.mp.prec) for b in (low, high)]
+            values[integral] = sp.Float(mpmath.quad(integrand, bounds), _DIGITS + 5)
+    return expr.subs(values)
+
+
+def computed_status(
+    printed: Formula, reading: Formula | None, corrected: Formula | None, reference: Reference
+) -> tuple[str | None, str]:
+    """The status the printed form earns (None: none the ledger may record) and why."""
+    ok, why = formula_passes(printed, reference)
+    if ok:
+        return "holds", f"the printed form holds: {why}"
+    for status, other in (("misprint", reading), ("fails", corrected)):
+        if other is not None:
+            other_ok, other_why = formula_passes(other, reference)
+            if other_ok:
+                return status, f"the printed form fails ({why}); the {status} form holds"
+            return None, f"the printed form fails ({why}) and so does its {status} ({other_why})"
+    return None, f"the printed form fails ({why}) and the row gives no reading or correction"

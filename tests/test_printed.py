@@ -1,0 +1,231 @@
+"""The printed form as data (issue 19): each ledger's [symbols] and its rows' ``printed``,
+``reading_formula``, ``corrected_formula`` parse with the declared names only, carry the
+numbers their span of the text prints, and are checked for dimensions."""
+
+from __future__ import annotations
+
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+from pendcli.core.dimensions import check_dimensions
+from pendcli.core.errors import PendcliError
+from pendcli.core.ledger import LedgerRow, load_ledger, parse_ledger, verify_printed
+from pendcli.core.ledger_formulas import row_dimensions
+from pendcli.core.printed import parse_dimension, parse_formula
+
+ROOT = Path(__file__).resolve().parent.parent
+TABLES = ROOT / "tables"
+# Papers whose every row with a formula carries its printed form, and the rows that assert
+# prose only (no formula to transcribe).
+TRANSCRIBED = {
+    "tisserand": {"tisserand.result.inverse-square-coefficient"},
+    # the general solution is a sentence; I_n(π)'s products 2·4…n are not transcribed yet
+    "charbonnier": {"charbonnier.result.general-solution", "charbonnier.result.in-pi"},
+}
+# The printed forms whose two sides (or terms) differ in dimension: each is a misprint row
+# whose reading is consistent (verified by hand against tables/papers/<paper>.txt).
+INCONSISTENT = {
+    # (I), line 160: k = √(r/l), r for g: T^-1 against L^-1/2.
+    "tisserand.eq.I",
+    # line 146: (ρ1²ρ0² − ρ²)/(ρ0²ρ² − ρ1²) adds L^4 to L^2 (two stacked fractions flattened).
+    "tisserand.result.tan-sq-phi1-rho",
+    # line 435: E_c = B_n/(n+1) k^(n+1) αⁿ l0ⁿ sin^(n+1) kt is [F]·T^-1 where the integral
+    # E_c = ∫ F cos kt dt is [F]·T (k² too many, whatever the dimension of F): a fails row.
+    "charbonnier.result.ec-monomial",
+    # line 80, (6): d²(θl)/dt² (L T^-2) beside (g/b²) sin θ (L^-1): the derivative is in l.
+    "lecornu.eq.6",
+    # line 561: (π² − 12b)/(16g) adds a number to a speed b: (π² − 12)b/(16g).
+    "lecornu.result.vertical_to_elongation",
+    # lines 920-932: the same (π² ± 12b), and 1/g for b/g at line 920.
+    "lecornu.result.t_equals_t_prime",
+    # lines 1004, 1008: c² cos θ/(l² sin³θ) beside l θ'' (l³ is due), and the l-form's
+    # derivatives printed in t (d²θ/dt² beside dθ/dt: L T^-2 against T^-1).
+    "lecornu.result.conical_linear_form",
+}
+
+
+def _rows(paper: str) -> list[object]:
+    ledger = load_ledger(paper, TABLES)
+    return [pytest.param(ledger, r, id=r.id) for r in ledger.rows]
+
+
+def _all() -> list[object]:
+    return [p for paper in ("tisserand", "charbonnier", "lecornu") for p in _rows(paper)]
+
+
+@pytest.mark.parametrize("paper", sorted(TRANSCRIBED))
+def test_every_row_with_a_formula_has_its_printed_form(paper: str) -> None:
+    rows = load_ledger(paper, TABLES).rows
+    missing = [r.id for r in rows if r.printed is None and r.id not in TRANSCRIBED[paper]]
+    assert not missing, f"{paper}: rows without printed: {missing}"
+
+
+_NAME_OR_NUMBER = re.compile(r"[A-Za-z_][A-Za-z_0-9]*|\d+")
+
+
+def _printed_numbers(formula: str) -> set[str]:
+    return {t for t in _NAME_OR_NUMBER.findall(formula) if t.isdigit()}
+
+
+@pytest.mark.parametrize(("ledger", "row"), _all())
+def test_printed_numbers_occur_in_the_rows_span(ledger: object, row: LedgerRow) -> None:
+    if row.printed is None:
+        return
+    assert row.lines is not None
+    lines = (TABLES / "papers" / f"{row.paper}.txt").read_text(encoding="utf-8").splitlines()
+    span = "\n".join(lines[row.lines[0] - 1 : row.lines[1]])
+    missing = _printed_numbers(row.printed) - set(re.findall(r"\d+", span))
+    assert not missing, f"{row.id}: printed numbers {sorted(missing)} not in lines {row.lines}"
+
+
+@pytest.mark.parametrize(("ledger", "row"), _all())
+def test_dimensions_as_recorded(ledger: object, row: LedgerRow) -> None:
+    verdicts = row_dimensions(row, dict(ledger.symbols))  # type: ignore[attr-defined]
+    if "printed" in verdicts:
+        bad = verdicts["printed"].verdict == "inconsistent"
+        assert bad == (row.id in INCONSISTENT), f"{row.id}: {verdicts['printed'].detail}"
+    for field in ("reading_formula", "corrected_formula"):
+        if field in verdicts:
+            assert verdicts[field].verdict != "inconsistent", f"{row.id}: {field}"
+
+
+SYMBOLS = {"l": "L", "g": "L T^-2", "t": "T", "theta": "1", "f()": "L", "n": "1"}
+SYMBOLS["b"] = "L^(n) T^(1-2*n)"
+
+
+@pytest.mark.parametrize(
+    ("formula", "verdict"),
+    [
+        ("t = 2*pi*sqrt(l/g)", "consistent"),
+        ("t = 2*pi*sqrt(g/l)", "inconsistent"),
+        ("theta = sin(t)", "inconsistent"),
+        ("theta = cos(theta) + ...", "dimensionless"),
+        ("l = g*t**2/2 + l*theta + ...", "consistent"),
+        ("l = g*t**2 + t", "inconsistent"),
+        ("l = Integral(g*t, (t, 0, t))", "consistent"),
+        ("l = Integral(g, (t, 0, l))", "inconsistent"),
+        ("f(t) = l; g = f(theta)", "inconsistent"),
+        ("l**theta = l", "inconsistent"),
+        ("b = g**n*t; b = g**(n + 1)*t/g", "consistent"),
+        ("l = Derivative(g*t**2, t, 2)*t**2", "consistent"),
+        ("l = Derivative(l, t)", "inconsistent"),
+        ("b = g**n*t; b = g**(n + 1)*t", "inconsistent"),
+    ],
+)
+def test_dimension_verdicts(formula: str, verdict: str) -> None:
+    dims = {k: parse_dimension(k, v) for k, v in SYMBOLS.items()}
+    result = check_dimensions(parse_formula("demo", formula, SYMBOLS), dims)
+    assert result.verdict == verdict, result.detail
+
+
+def test_a_dimension_is_base_letters_with_powers() -> None:
+    assert parse_dimension("x", "L T^-2") == {"L": 1, "T": -2}
+    assert parse_dimension("x", "1") == {}
+    with pytest.raises(PendcliError, match="base letters"):
+        parse_dimension("x", "metres")
+
+
+def _ledger(printed: str, symbols: object = None, **extra: str) -> None:
+    row = {
+        "id": "tisserand.eq.16",
+        "equation": "(16)",
+        "section": "p. 452",
+        "statement": "ρ = lu",
+        "status": "definition",
+        "note": "radius",
+        "printed": printed,
+        **extra,
+    }
+    raw = {
+        "ledger": {"paper": "tisserand", "text": "tables/papers/tisserand.txt"},
+        "symbols": {"rho": "L", "l": "L", "u": "1"} if symbols is None else symbols,
+        "equation": [row],
+    }
+    parse_ledger(raw, "tisserand", Path("t.toml"), TABLES)
+
+
+def test_formulas_parse_with_declared_names_only() -> None:
+    _ledger("rho = l*u")
+    with pytest.raises(PendcliError, match=r"tisserand\.eq\.16: printed: 'v' is not a declared"):
+        _ledger("rho = l*v")
+    with pytest.raises(PendcliError, match="'gamma' is not a declared"):
+        _ledger("rho = l*gamma(u)")
+    with pytest.raises(PendcliError, match="cannot parse"):
+        _ledger("rho = l*(u")
+    with pytest.raises(PendcliError, match="needs a \\[symbols\\] table"):
+        _ledger("rho = l*u", symbols={})
+    with pytest.raises(PendcliError, match="'reading_formula' is for misprint rows"):
+        _ledger("rho = l*u", reading_formula="rho = l")
+    with pytest.raises(PendcliError, match="a new name"):
+        _ledger("rho = l*u", symbols={"rho": "L", "l": "L", "u": "1", "sin": "1"})
+
+
+# --- statuses computed from the printed form (core/printed_check) ------------------------
+
+
+def _reference_rows() -> list[object]:
+    ledger = load_ledger("tisserand", TABLES)
+    return [pytest.param(ledger, r, id=r.id) for r in ledger.rows if r.reference]
+
+
+@pytest.mark.parametrize(("ledger", "row"), _reference_rows())
+def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
+    ledger: object, row: LedgerRow
+) -> None:
+    computed, problem = verify_printed(row, dict(ledger.symbols))  # type: ignore[attr-defined]
+    assert problem is None, problem
+    assert computed is not None and computed.startswith(f"{row.status}:")
+
+
+def _altered_copy(tmp_path: Path, old: str, new: str) -> Path:
+    """A copy of tables/ (as PENDCLI_TABLES would name it) with one edit of the Tisserand
+    ledger; the edit must apply exactly once."""
+    root = tmp_path / "tables"
+    shutil.copytree(TABLES, root)
+    path = root / "equations" / "tisserand.toml"
+    text = path.read_text(encoding="utf-8")
+    assert text.count(old) == 1, old
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return root
+
+
+def _row(root: Path, row_id: str) -> tuple[LedgerRow, dict[str, str]]:
+    ledger = load_ledger("tisserand", root)
+    return next(r for r in ledger.rows if r.id == row_id), dict(ledger.symbols)
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        # one coefficient of a holds row's printed form: ∫u² dψ's sin 2ψ term, /4 -> /8
+        (
+            "tisserand.result.integral-u2",
+            "(u0**2 - u1**2)/4*sin(2*psi)'",
+            "(u0**2 - u1**2)/8*sin(2*psi)'",
+        ),
+        # (6)'s 35/128 u⁴ -> 36/128 u⁴
+        ("tisserand.eq.6", "35/128*u**4", "36/128*u**4"),
+        # (17)'s sin²φ1/ρ1² -> sin²φ1/ρ0²
+        ("tisserand.eq.17", "1/rho1**2*sin(phi1)**2'", "1/rho0**2*sin(phi1)**2'"),
+    ],
+)
+def test_a_changed_coefficient_stops_a_row_holding(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    row, symbols = _row(_altered_copy(tmp_path, old, new), row_id)
+    computed, problem = verify_printed(row, symbols)
+    assert problem is not None and problem.startswith("recorded holds, but the printed form")
+    assert computed is not None and not computed.startswith("holds")
+
+
+def test_a_misprint_whose_printed_form_is_its_reading_is_refused(tmp_path: Path) -> None:
+    printed = "printed = 'tan(phi1)**2 = (u1**2*u0**2 - u**2)/(u0**2*u**2 - u1**2)'"
+    reading = "printed = 'tan(phi1)**2 = u1**2/u0**2*(u0**2 - u**2)/(u**2 - u1**2)'"
+    root = _altered_copy(tmp_path, printed, reading)
+    row, symbols = _row(root, "tisserand.result.tan-sq-phi1")
+    _, problem = verify_printed(row, symbols)
+    assert problem is not None
+    assert problem.startswith("recorded misprint, but the printed form gives holds")
