@@ -37,8 +37,8 @@ class _View:  # what grandalf reads and writes for a vertex
 
 def _layout(nodes: Sequence[str], edges: Sequence[tuple[str, str]]) -> tuple[dict, dict, dict]:
     """Each node's (rank, order position), each edge's per-rank positions, per component."""
-    from grandalf.graphs import Edge, Graph, Vertex
-    from grandalf.layouts import SugiyamaLayout
+    from grandalf.graphs import Edge, Graph, Vertex  # type: ignore[import-untyped]
+    from grandalf.layouts import SugiyamaLayout  # type: ignore[import-untyped]
 
     vertices = {n: Vertex(n) for n in nodes}
     for v in vertices.values():
@@ -58,7 +58,9 @@ def _layout(nodes: Sequence[str], edges: Sequence[tuple[str, str]]) -> tuple[dic
             place[v.data] = offset + v.view.xy[0] - low
         for e in component.sE:
             ctrl = sugiyama.ctrls.get(e, {})
-            routes[(e.v[0].data, e.v[1].data)] = {r: offset + d.view.xy[0] - low for r, d in ctrl.items()}
+            routes[(e.v[0].data, e.v[1].data)] = {
+                r: offset + d.view.xy[0] - low for r, d in ctrl.items()
+            }
         offset = max(place.values()) + 2 * SLOT_H
     return rank, place, routes
 
@@ -74,9 +76,7 @@ def layered_graph(
     columns = max(rank.values()) + 1
     width = [max(CHAR_W * len(n) for n in nodes if rank[n] == c) + 8 for c in range(columns)]
     left = [10 + sum(width[:c]) + GAP * c for c in range(columns)]
-    boxes = {
-        n: Box(left[rank[n]], 10 + place[n], CHAR_W * len(n) + 8, LABEL_H) for n in nodes
-    }
+    boxes = {n: Box(left[rank[n]], 10 + place[n], CHAR_W * len(n) + 8, LABEL_H) for n in nodes}
     lines = [_route(boxes[a], boxes[b], rank[a], rank[b], routes.get((a, b), {}), left, width)
              for a, b in edges]  # fmt: skip
     svg = _svg(nodes, boxes, lines, href, is_root, left[-1] + width[-1] + 10)
@@ -95,7 +95,7 @@ def _route(
     return [*points, (left[rb], b.y + mid), (b.x, b.y + mid)]
 
 
-def _svg(nodes, boxes, lines, href, is_root, width) -> str:  # noqa: ANN001 - internal
+def _svg(nodes, boxes, lines, href, is_root, width) -> str:
     height = max(b.y + b.h for b in boxes.values()) + 10
     paths = "".join(
         '<polyline fill="none" stroke="#888" marker-end="url(#arrow)" points="'

@@ -60,7 +60,7 @@ def to_mathml(tex: str, display: bool) -> str | None:
     tex = re.sub(r"\\end\{(?:aligned|align\*?|split)\}", r"\\end{array}", tex)
     try:
         mathml = convert(tex.strip(), display="block" if display else "inline")
-    except Exception:  # noqa: BLE001 - the converter raises many kinds on bad TeX
+    except Exception:
         return None
     # An unknown command comes out as a token holding its backslash: not rendered.
     if re.search(r"<m[io][^>]*>(?:\\|&(?![#\w]+;))", mathml) or "<merror" in mathml:

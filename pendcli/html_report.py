@@ -14,6 +14,7 @@ read through the small accessors below: it knows the report's keys, not pendulum
 from __future__ import annotations
 
 import base64
+import itertools
 import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -21,7 +22,14 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.html_math import balanced, mark_mathml, math_segments, plain_math, to_mathml, wrap_marks
+from pendcli.html_math import (
+    balanced,
+    mark_mathml,
+    math_segments,
+    plain_math,
+    to_mathml,
+    wrap_marks,
+)
 
 if TYPE_CHECKING:
     from jinja2 import Environment
@@ -113,9 +121,24 @@ _OCR_FORMS = {
     "−": r"(?:−|-)",
     **{
         c: rf"(?:{c}|\\{name}(?![A-Za-z]))"
-        for c, name in zip("πθφψωαβγλρε", "pi theta varphi psi omega alpha beta gamma lambda rho "
-                           "varepsilon".split(), strict=True)
-    },  # fmt: skip
+        for c, name in zip(
+            "πθφψωαβγλρε",
+            [
+                "pi",
+                "theta",
+                "varphi",
+                "psi",
+                "omega",
+                "alpha",
+                "beta",
+                "gamma",
+                "lambda",
+                "rho",
+                "varepsilon",
+            ],
+            strict=True,
+        )
+    },
 }
 _SPACE = r"(?:\s|\\q?quad\b|\\[,;!])*"
 
@@ -144,7 +167,9 @@ def locate(text: str, candidates: Sequence[Sequence[str]]) -> list[tuple[int, in
     spans: list[tuple[int, int] | None] = []
     cursor = 0
     for forms in candidates:
-        span = _find(text, forms, cursor, len(text), taken) or _find(text, forms, 0, len(text), taken)
+        span = _find(text, forms, cursor, len(text), taken) or _find(
+            text, forms, 0, len(text), taken
+        )
         spans.append(span)
         if span is not None:
             taken.append(span)
@@ -192,7 +217,7 @@ def _blocks(text: str, segments: Sequence[MathSegment]) -> list[tuple[int, int]]
     cuts = [m.start() for m in re.finditer(r"\n[ \t]*\n", text)
             if not any(a < m.start() < b for a, b in inside)]  # fmt: skip
     edges = [0, *cuts, len(text)]
-    return [(a, b) for a, b in zip(edges, edges[1:], strict=False) if text[a:b].strip()]
+    return [(a, b) for a, b in itertools.pairwise(edges) if text[a:b].strip()]
 
 
 def _label_place(text: str, label: str, segments: Sequence[MathSegment]) -> tuple[int, int] | None:
@@ -246,12 +271,26 @@ def _region(
     if m is not None:
         span = _label_place(text, m.group(2), segments)
         if span is not None:
-            return _paragraphs(blocks, span[0], -3, 0) if m.group(1) == "before" else \
-                _paragraphs(blocks, span[0], 1, 4)  # fmt: skip
+            if m.group(1) == "before":
+                return _paragraphs(blocks, span[0], -3, 0)
+            return span[1], _next_label(text, span[1], segments)  # up to the next numbered one
     return None
 
 
-def _paragraphs(blocks: Sequence[tuple[int, int]], at: int, first: int, last: int) -> tuple[int, int]:
+_ANY_LABEL = re.compile(r"^\s*\(\d{1,3}[a-z]?'?\)|\\q?quad\s*\(\d{1,3}[a-z]?'?\)\s*[.,;]?\s*$")
+
+
+def _next_label(text: str, after: int, segments: Sequence[MathSegment]) -> int:
+    """Where the next display formula carrying an equation label starts (or the text's end)."""
+    for s in segments:
+        if s.display and s.start >= after and _ANY_LABEL.search(text[s.tex_start : s.tex_end]):
+            return s.start
+    return len(text)
+
+
+def _paragraphs(
+    blocks: Sequence[tuple[int, int]], at: int, first: int, last: int
+) -> tuple[int, int]:
     i = next(k for k, (a, b) in enumerate(blocks) if a <= at < b or k == len(blocks) - 1)
     lo, hi = max(0, i + first), min(len(blocks) - 1, i + last)
     return blocks[lo][0], blocks[max(lo, hi)][1]
@@ -304,7 +343,9 @@ def place_marks(
     return sorted(page.marks, key=lambda m: m.start), page.passages
 
 
-def _search(page: _Page, forms: Sequence[str], region: tuple[int, int] | None) -> tuple[tuple[int, int] | None, bool]:
+def _search(
+    page: _Page, forms: Sequence[str], region: tuple[int, int] | None
+) -> tuple[tuple[int, int] | None, bool]:
     if region is not None:
         span = _find(page.text, forms, region[0], region[1], page.taken)
         if span is not None:
@@ -341,7 +382,9 @@ def _place_claim(page: _Page, row: Row) -> None:
     base = {"row_id": _id(row), "css": _css(row), "word": _verdict(row), "finding": _disagrees(row)}
     if span is not None:
         page.cursor = span[0]
-        _add(page, span, key=_id(row), note=_claim_note(row), anchored=anchored, forms=forms, **base)
+        _add(
+            page, span, key=_id(row), note=_claim_note(row), anchored=anchored, forms=forms, **base
+        )
     for quote in _QUOTE.findall(_text(row, "ocr")):  # the printed words the reading corrects
         reading = _first_free(page.text, quote, 0, len(page.text), page.taken)
         if reading is not None:
@@ -351,24 +394,25 @@ def _place_claim(page: _Page, row: Row) -> None:
 
 
 def _place_equation(page: _Page, row: Row) -> None:
-    label = _text(row, "equation")
+    """The label at its place, the wrong term itself (its note carries the correction), or
+    else a note at the passage the row follows."""
     region = _region(page.text, row, page.segments, page.blocks)
-    base = {"row_id": _id(row), "word": _verdict(row), "finding": _disagrees(row)}
+    base: dict[str, Any] = {"row_id": _id(row), "word": _verdict(row), "finding": _disagrees(row)}
     note = _equation_note(row)
-    placed = False
-    if label:
-        span = _label_place(page.text, label, page.segments)
-        if span is not None and all(span[1] <= a or span[0] >= b for a, b in page.taken):
-            _add(page, span, key=_id(row), css=_css(row), note=note, anchored=True,
-                 forms=(label,), **base)  # fmt: skip
-            placed = True
-    for i, printed in enumerate(_printed_terms(row)):  # the wrong term itself
+    terms = 0
+    for i, printed in enumerate(_printed_terms(row)):
         span, anchored = _search(page, [printed], region)
         if span is not None:
             _add(page, span, key=f"{_id(row)}~term{i}", css=f"{_css(row)} wrong", note=note,
                  anchored=anchored, forms=(printed,), **base)  # fmt: skip
-            placed = True
-    if not placed and region is not None:
+            terms += 1
+    label = _text(row, "equation")
+    span = _label_place(page.text, label, page.segments) if label else None
+    if span is not None and all(span[1] <= a or span[0] >= b for a, b in page.taken):
+        label_note = "the wrong term is marked in the formula" if terms else note
+        _add(page, span, key=_id(row), css=_css(row), note=label_note, anchored=True,
+             forms=(label,), **base)  # fmt: skip
+    elif not terms and region is not None:
         mark = Placement(region[0], region[0], key=_id(row), css=_css(row), note=note,
                          anchored=True, **base)  # fmt: skip
         page.passages.append((region[0], mark))
@@ -440,8 +484,10 @@ def _prose(piece: str) -> str:
 
     piece = _STRAY_TEX.sub(lambda m: plain_math(m.group(0)), piece)
     piece = re.sub(r"(?<=[^\W\d_])_([0-9])(?!\d)", lambda m: plain_math("_" + m.group(1)), piece)
-    piece = re.sub(r"(?<=\d)\^e\b", "ᵉ", piece)
-    out = str(escape(re.sub(r"(?<=\w)\^([0-9])(?!\d)", lambda m: plain_math("^" + m.group(1)), piece)))
+    piece = re.sub(r"(?<=\d)\^e\b", "ᵉ", piece).replace("\t", "\u2003\u2003")
+    out = str(
+        escape(re.sub(r"(?<=\w)\^([0-9])(?!\d)", lambda m: plain_math("^" + m.group(1)), piece))
+    )
     out = re.sub(r"\*\*(.+?)\*\*", r"<b>\1</b>", out)
     return re.sub(r"(?<![\w*])\*(?!\s)(.+?)(?<!\s)\*(?![\w*])", r"<i>\1</i>", out)
 
@@ -511,13 +557,15 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
         body = mark_mathml(
             mathml,
             lambda i: f"<msup><mrow {_open(inside[i])}>",
-            lambda i: f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
-            f"{numbers[inside[i].key]}</a></mtext></msup>",
+            lambda i: (
+                f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
+                f"{numbers[inside[i].key]}</a></mtext></msup>"
+            ),
         )
     stats.formulas += 1
     stats.widened += len(around)
     for m in around:
-        body = f'<span {_open(m)}>{body}</span>{_call(m, numbers[m.key])}'
+        body = f"<span {_open(m)}>{body}</span>{_call(m, numbers[m.key])}"
     return f'<div class="display">{body}</div>' if s.display else body
 
 
@@ -543,7 +591,7 @@ def _render(template: str, **context: object) -> str:
 def _markup(html: str) -> Markup:
     from markupsafe import Markup
 
-    return Markup(html)  # noqa: S704 - built here from escaped pieces
+    return Markup(html)
 
 
 def _legend() -> list[dict[str, str]]:
@@ -564,10 +612,21 @@ def cited_formulas(equations: Sequence[Row], formulas: Sequence[Row]) -> dict[st
     out: dict[str, list[Row]] = {}
     for formula in formulas:
         pattern = re.compile(rf"(?<![\w.]){re.escape(_id(formula))}(?![\w.])")
-        for eq in equations:
-            if pattern.search(_text(eq, "check") + " " + _text(eq, "corrected")):
+        named = [eq for eq in equations if _same_equation(_id(formula), eq)]
+        for eq in named or equations:
+            if named or pattern.search(_text(eq, "check") + " " + _text(eq, "corrected")):
                 out.setdefault(_id(eq), []).append(formula)
     return out
+
+
+def _same_equation(formula_id: str, equation: Row) -> bool:
+    """A formula check named after the equation's label: ``lecornu.eq52`` is (52)."""
+    label = _text(equation, "equation").strip("()").replace("'", "prime")
+    paper = _id(equation).split(".", 1)[0]
+    return (
+        bool(label)
+        and re.fullmatch(rf"{paper}\.eq{re.escape(label)}(?:[._].*)?", formula_id) is not None
+    )
 
 
 def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple[int, Placement]],
@@ -648,7 +707,7 @@ def paper_page(
     """One paper as an annotated edition, then its claims, equations, formulas and figures."""
     stats = stats if stats is not None else RenderStats()
     marks, passages = place_marks(text, claims, equations)
-    at = {}
+    at: dict[str, str] = {}
     for m in [*marks, *(p for _, p in passages)]:
         at.setdefault(m.row_id, f"at-{m.key}" if m.end > m.start else f"note-{m.key}")
     cited = cited_formulas(equations, formulas)
@@ -714,9 +773,12 @@ def _tally(rows: Iterable[Row], word: Any) -> dict[str, int]:
     return out
 
 
-def _findings(papers: Sequence[str], claims: Mapping[str, Sequence[Row]],
-              formulas: Mapping[str, Sequence[Row]],
-              equations: Mapping[str, Sequence[Row]]) -> list[dict[str, object]]:  # fmt: skip
+def _findings(
+    papers: Sequence[str],
+    claims: Mapping[str, Sequence[Row]],
+    formulas: Mapping[str, Sequence[Row]],
+    equations: Mapping[str, Sequence[Row]],
+) -> list[dict[str, object]]:
     """One entry per finding: claims, equations (citing their formula checks), and the
     formula checks no equation row cites."""
     out: list[dict[str, object]] = []
@@ -724,23 +786,31 @@ def _findings(papers: Sequence[str], claims: Mapping[str, Sequence[Row]],
         cited = cited_formulas(equations.get(p, []), formulas.get(p, []))
         merged = {_id(f) for fs in cited.values() for f in fs}
         for r in claims.get(p, []):
-            if _disagrees(r):
-                out.append({"paper": p, "id": _id(r), "word": _verdict(r), "formulas": [],
-                            "cause": _word(r.get("cause")), "sources": _sources(r),
-                            "correction": "", "note": _text(r, "note")})  # fmt: skip
+            out.append(_entry(p, r, _word(r.get("cause")), "", _text(r, "note")))
         for r in equations.get(p, []):
-            if _disagrees(r):
-                out.append({"paper": p, "id": _id(r), "word": _verdict(r),
-                            "formulas": [_formula_cell(f) for f in cited.get(_id(r), [])],
-                            "cause": _EQUATION_CAUSE.get(_verdict(r), ""), "sources": [],
-                            "correction": _correction(r),
-                            "note": _text(r, "ledger_note") if "ledger_note" in r else ""})  # fmt: skip
+            note = _text(r, "ledger_note") if "ledger_note" in r else ""
+            entry = _entry(p, r, _EQUATION_CAUSE.get(_verdict(r), ""), _correction(r), note)
+            entry["formulas"] = [_formula_cell(f) for f in cited.get(_id(r), [])]
+            out.append(entry)
         for r in formulas.get(p, []):
-            if _disagrees(r) and _id(r) not in merged:
-                out.append({"paper": p, "id": _id(r), "word": _verdict(r), "formulas": [],
-                            "cause": _word(r.get("cause")), "sources": _sources(r),
-                            "correction": _text(r, "recomputed"), "note": _text(r, "note")})  # fmt: skip
-    return out
+            if _id(r) not in merged:
+                correction = _text(r, "recomputed")
+                out.append(_entry(p, r, _word(r.get("cause")), correction, _text(r, "note")))
+    return [e for e in out if e.pop("disagrees")]
+
+
+def _entry(paper: str, row: Row, cause: str, correction: str, note: str) -> dict[str, object]:
+    return {
+        "paper": paper,
+        "id": _id(row),
+        "word": _verdict(row),
+        "formulas": [],
+        "cause": cause,
+        "sources": _sources(row),
+        "correction": correction,
+        "note": note,
+        "disagrees": _disagrees(row),
+    }
 
 
 def report_page(
