@@ -44,6 +44,7 @@ __all__ = [
     "locate",
     "paper_page",
     "place_marks",
+    "print_pdfs",
     "propagation_svg",
     "render_stats",
     "report_page",
@@ -914,3 +915,58 @@ def write_for_result(
         {key: _ledger_fields(key, rows) for key, rows in (equations or {}).items()},
         figures,
     )
+
+
+# --- printing -------------------------------------------------------------------------------
+
+CHROMIUM_NAMES = ("chromium", "chromium-browser", "google-chrome")
+
+
+def chromium() -> str | None:
+    """The headless browser that prints the pages, where one is installed."""
+    import shutil
+
+    return next((p for p in map(shutil.which, CHROMIUM_NAMES) if p), None)
+
+
+def print_pdfs(out: Path | None) -> list[Path]:
+    """Print ``out/report.html`` and each paper page to PDF beside it (the print stylesheet
+    makes a paper page an annotated edition on A4), with headless Chromium."""
+    from pendcli.core.errors import PendcliError
+
+    if out is None:
+        raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
+    browser = chromium()
+    if browser is None:
+        raise PendcliError(
+            "--pdf needs Chromium (apt-get install chromium); the HTML pages were written"
+        )
+    pages = [out / "report.html", *sorted((out / "papers").glob("*.html"))]
+    return [_print_pdf(browser, page) for page in pages if page.is_file()]
+
+
+def _print_pdf(browser: str, page: Path) -> Path:
+    """One page to PDF, written beside it atomically (printed to a temporary name first)."""
+    import os
+    import subprocess
+    import tempfile
+
+    from pendcli.core.errors import PendcliError
+
+    target = page.with_suffix(".pdf")
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".pdf", dir=page.parent)
+    os.close(fd)
+    with tempfile.TemporaryDirectory() as profile:
+        done = subprocess.run(
+            [browser, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+             "--disable-background-networking", "--disable-component-update", "--disable-sync",
+             f"--user-data-dir={profile}", "--no-pdf-header-footer", f"--print-to-pdf={tmp}",
+             page.resolve().as_uri()],
+            capture_output=True, text=True, timeout=300, check=False,
+        )  # fmt: skip
+    if done.returncode != 0 or os.path.getsize(tmp) == 0:
+        os.unlink(tmp)
+        raise PendcliError(f"Chromium could not print {page.name} (exit {done.returncode})")
+    os.chmod(tmp, 0o644)
+    os.replace(tmp, target)
+    return target
