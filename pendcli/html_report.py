@@ -254,28 +254,54 @@ def _quote_place(text: str, quote: str) -> tuple[int, int] | None:
     return None
 
 
-def _region(
+def _regions(
     text: str, row: Row, segments: Sequence[MathSegment], blocks: Sequence[tuple[int, int]]
-) -> tuple[int, int] | None:
-    """The stretch of text where the row is printed: the paragraph of its quoted words or
-    label and the two after it (a number follows its sentence), or the text after (N)."""
+) -> list[tuple[int, int]]:
+    """The stretches of text where the row may be printed, surest first: the paragraph of
+    its quoted words and the two after it (a number follows its sentence); its label's
+    paragraph; the text after (N) up to the next numbered equation, or before (N); the
+    equation its source names, "eq. (15)", and the text up to the next numbered one; its
+    numbered section, "n° 15"."""
+    out = []
     for quote in _quotes(row):
         span = _quote_place(text, quote)
         if span is not None:
-            return _paragraphs(blocks, span[0], 0, 2)
+            out.append(_paragraphs(blocks, span[0], 0, 2))
     label = _text(row, "equation")
-    if label:
-        span = _label_place(text, label, segments)
-        if span is not None:
-            return _paragraphs(blocks, span[0], 0, 0)
-    m = _AFTER.search(_text(row, "section") + " " + _text(row, "source"))
-    if m is not None:
-        span = _label_place(text, m.group(2), segments)
-        if span is not None:
-            if m.group(1) == "before":
-                return _paragraphs(blocks, span[0], -3, 0)
-            return span[1], _next_label(text, span[1], segments)  # up to the next numbered one
-    return None
+    span = _label_place(text, label, segments) if label else None
+    if span is not None:
+        out.append(_paragraphs(blocks, span[0], 0, 0))
+    where = _text(row, "section") + " " + _text(row, "source")
+    m = _AFTER.search(where)
+    span = _label_place(text, m.group(2), segments) if m else None
+    if m and span is not None:
+        before = m.group(1) == "before"
+        out.append(_paragraphs(blocks, span[0], -3, 0) if before else
+                   (span[1], _next_label(text, span[1], segments)))  # fmt: skip
+    m = _IN_LABEL.search(_text(row, "source"))
+    span = _label_place(text, m.group(1), segments) if m else None
+    if span is not None:
+        out.append((span[0], _next_label(text, span[1], segments)))
+    m = re.search(r"n° (\d+)", where)
+    heading = re.search(rf"(?:^|\n\n){m.group(1)}\. ", text) if m else None
+    if heading is not None:
+        end = re.compile(r"\n\n\d+\. ").search(text, heading.end())
+        out.append((heading.start(), end.start() if end else len(text)))
+    return out
+
+
+_ANY_LABEL = re.compile(r"^\s*\(\d{1,3}[a-z]?'?\)|\\q?quad\s*\(\d{1,3}[a-z]?'?\)\s*[.,;]?\s*$")
+
+
+def _next_label(text: str, after: int, segments: Sequence[MathSegment]) -> int:
+    """Where the next display formula carrying an equation label starts (or the text's end)."""
+    for s in segments:
+        if s.display and s.start >= after and _ANY_LABEL.search(text[s.tex_start : s.tex_end]):
+            return s.start
+    return len(text)
+
+
+_IN_LABEL = re.compile(r"(?:^|[\s,])(?:eq\.\s*)?(\(\d{1,3}[a-z]?'?\))")
 
 
 _ANY_LABEL = re.compile(r"^\s*\(\d{1,3}[a-z]?'?\)|\\q?quad\s*\(\d{1,3}[a-z]?'?\)\s*[.,;]?\s*$")
@@ -332,7 +358,7 @@ def place_marks(
 ) -> tuple[list[Placement], list[tuple[int, Placement]]]:
     """Every mark of the page, and the notes placed at a passage without a mark of their own.
 
-    A row is looked for inside its region (:func:`_region`) first; found there it is
+    A row is looked for inside its regions (:func:`_regions`) first; found there it is
     *anchored*. A row with no region is looked for by its printed string in reading order.
     """
     segments = math_segments(text)
@@ -345,9 +371,9 @@ def place_marks(
 
 
 def _search(
-    page: _Page, forms: Sequence[str], region: tuple[int, int] | None
+    page: _Page, forms: Sequence[str], regions: Sequence[tuple[int, int]]
 ) -> tuple[tuple[int, int] | None, bool]:
-    if region is not None:
+    for region in regions:
         span = _find(page.text, forms, region[0], region[1], page.taken)
         if span is not None:
             return span, True
@@ -376,9 +402,9 @@ def _add(page: _Page, span: tuple[int, int], **kw: Any) -> None:
 
 def _place_claim(page: _Page, row: Row) -> None:
     forms = tuple(f for f in (_text(row, "as_printed"), _text(row, "published")) if f)
-    region = _region(page.text, row, page.segments, page.blocks)
-    span, anchored = _search(page, forms, region)
-    if region is None and all(_BARE.match(f) for f in forms):
+    regions = _regions(page.text, row, page.segments, page.blocks)
+    span, anchored = _search(page, forms, regions)
+    if not regions and all(_BARE.match(f) for f in forms):
         span = _standalone(page, forms[0]) or span
     base = {"row_id": _id(row), "css": _css(row), "word": _verdict(row), "finding": _disagrees(row)}
     if span is not None:
@@ -397,12 +423,12 @@ def _place_claim(page: _Page, row: Row) -> None:
 def _place_equation(page: _Page, row: Row) -> None:
     """The label at its place, the wrong term itself (its note carries the correction), or
     else a note at the passage the row follows."""
-    region = _region(page.text, row, page.segments, page.blocks)
+    regions = _regions(page.text, row, page.segments, page.blocks)
     base: dict[str, Any] = {"row_id": _id(row), "word": _verdict(row), "finding": _disagrees(row)}
     note = _equation_note(row)
     terms = 0
     for i, printed in enumerate(_printed_terms(row)):
-        span, anchored = _search(page, [printed], region)
+        span, anchored = _search(page, [printed], regions)
         if span is not None:
             _add(page, span, key=f"{_id(row)}~term{i}", css=f"{_css(row)} wrong", note=note,
                  anchored=anchored, forms=(printed,), **base)  # fmt: skip
@@ -413,10 +439,10 @@ def _place_equation(page: _Page, row: Row) -> None:
         label_note = "the wrong term is marked in the formula" if terms else note
         _add(page, span, key=_id(row), css=_css(row), note=label_note, anchored=True,
              forms=(label,), **base)  # fmt: skip
-    elif not terms and region is not None:
-        mark = Placement(region[0], region[0], key=_id(row), css=_css(row), note=note,
-                         anchored=True, **base)  # fmt: skip
-        page.passages.append((region[0], mark))
+    elif not terms and regions:
+        at = regions[0][0]
+        mark = Placement(at, at, key=_id(row), css=_css(row), note=note, anchored=True, **base)
+        page.passages.append((at, mark))
 
 
 def _printed_terms(row: Row) -> list[str]:
@@ -736,7 +762,7 @@ def _placed_text(claims: Sequence[Row], equations: Sequence[Row], marks: Sequenc
     wrong = sum(m.key.split("~")[-1].startswith(("term", "reading")) for m in marks)
     return (
         f"{n_anchored} of {len(rows)} rows placed at their own place in the text (by their "
-        f"label, their quoted words or the passage after the equation they follow), "
+        f"label, their quoted words, or the equation or numbered section they belong to), "
         f"{n_string} found by their printed string alone (place not verified), "
         f"{len(rows) - n_anchored - n_string} not placed; {wrong} wrong terms or misread words "
         f"marked. Formulas: {stats.mathml} of {stats.formulas} rendered as MathML, "
