@@ -304,17 +304,6 @@ def _next_label(text: str, after: int, segments: Sequence[MathSegment]) -> int:
 _IN_LABEL = re.compile(r"(?:^|[\s,])(?:eq\.\s*)?(\(\d{1,3}[a-z]?'?\))")
 
 
-_ANY_LABEL = re.compile(r"^\s*\(\d{1,3}[a-z]?'?\)|\\q?quad\s*\(\d{1,3}[a-z]?'?\)\s*[.,;]?\s*$")
-
-
-def _next_label(text: str, after: int, segments: Sequence[MathSegment]) -> int:
-    """Where the next display formula carrying an equation label starts (or the text's end)."""
-    for s in segments:
-        if s.display and s.start >= after and _ANY_LABEL.search(text[s.tex_start : s.tex_end]):
-            return s.start
-    return len(text)
-
-
 def _paragraphs(
     blocks: Sequence[tuple[int, int]], at: int, first: int, last: int
 ) -> tuple[int, int]:
