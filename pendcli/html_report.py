@@ -401,11 +401,11 @@ def _place_claim(page: _Page, row: Row) -> None:
         _add(
             page, span, key=_id(row), note=_claim_note(row), anchored=anchored, forms=forms, **base
         )
-    for quote in _QUOTE.findall(_text(row, "ocr")):  # the printed words the reading corrects
+    for i, quote in enumerate(_QUOTE.findall(_text(row, "ocr"))):  # the words it reads
         reading = _first_free(page.text, quote, 0, len(page.text), page.taken)
         if reading is not None:
             base.update(css="s-reading wrong", word="reading", finding=True)
-            _add(page, reading, key=f"{_id(row)}~reading", note=_text(row, "ocr"),
+            _add(page, reading, key=f"{_id(row)}~reading{i}", note=_clauses(_text(row, "ocr"), 2),
                  anchored=True, forms=(quote,), **base)  # fmt: skip
 
 
@@ -432,6 +432,12 @@ def _place_equation(page: _Page, row: Row) -> None:
         at = regions[0][0]
         mark = Placement(at, at, key=_id(row), css=_css(row), note=note, anchored=True, **base)
         page.passages.append((at, mark))
+
+
+def _clauses(text: str, count: int) -> str:
+    """The first ``count`` clauses of a note (split at "; "): what fits in the margin."""
+    parts = text.split("; ")
+    return "; ".join(parts[:count]) + (" …" if len(parts) > count else "")
 
 
 def _printed_terms(row: Row) -> list[str]:

@@ -218,7 +218,7 @@ EXPECTED_PLACES = [
     ("charbonnier", "charbonnier.I_pi.n0", "2", "$I_n \\dots \\dots$"),
     ("tisserand", "tisserand.resal.rate", "\\frac{3}{8} u_0 u_1", "la solution de M. Resal"),
     ("tisserand", "tisserand.eq.13~term0", "\\sin^2 4k' t", "(13) \\quad"),
-    ("tisserand", "tisserand.example.psi_sin2~reading", "\\theta_0 = 30', \\quad \\theta_1 = 15'",
+    ("tisserand", "tisserand.example.psi_sin2~reading0", "\\theta_0 = 30', \\quad \\theta_1 = 15'",
      "\\theta_0 = 30'"),
     ("lecornu", "lecornu.result.mean_pendulum~term0", "\\frac{\\pi(7\\pi^2 - 3)}{32}",
      "c'est-à-dire à $6,47"),
