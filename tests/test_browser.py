@@ -14,6 +14,7 @@ from __future__ import annotations
 import html
 import json
 import re
+import shutil
 import subprocess
 import tempfile
 from pathlib import Path
@@ -125,3 +126,14 @@ def test_the_report_shows_no_tex_and_every_link_lands(pages: Path) -> None:
     missing = [(p, t) for p, t in targets if html.unescape(t) not in ids[p]]
     assert not missing, missing[:5]
     _screenshot(pages, page)
+
+
+def test_a_paper_page_prints_to_pdf(pages: Path) -> None:
+    from pendcli.html_report import print_pdfs
+
+    folder = pages / "print"
+    (folder / "papers").mkdir(parents=True)
+    shutil.copy(pages / "papers" / "tisserand.html", folder / "papers" / "tisserand.html")
+    (printed,) = print_pdfs(folder)
+    assert printed == folder / "papers" / "tisserand.pdf"
+    assert printed.read_bytes()[:5] == b"%PDF-" and printed.stat().st_size > 50_000

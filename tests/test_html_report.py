@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import itertools
 import re
+import shutil
 from pathlib import Path
 
 import pytest
@@ -247,3 +248,16 @@ def test_located_counts_only_rows_at_their_own_place(tmp_path: Path) -> None:
     stated = re.search(r"(\d+) of (\d+) rows placed at their own place", page)
     assert stated and int(stated.group(2)) == len(claims) + len(equations)
     assert int(stated.group(1)) >= len(anchored)  # plus the notes placed at their passage
+
+
+def test_pdf_printing_refuses_without_out_or_without_chromium(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from pendcli import html_report
+    from pendcli.core.errors import PendcliError
+
+    with pytest.raises(PendcliError, match="--pdf needs --out"):
+        html_report.print_pdfs(None)
+    monkeypatch.setattr(shutil, "which", lambda _: None)
+    with pytest.raises(PendcliError, match=r"needs Chromium \(apt-get install chromium\)"):
+        html_report.print_pdfs(tmp_path)
