@@ -441,8 +441,8 @@ def _clauses(text: str, count: int) -> str:
 
 
 def _printed_terms(row: Row) -> list[str]:
-    """The wrong term as the OCR prints it (the ledger's ``printed``), when recorded."""
-    value = row.get("printed")
+    """The wrong term as the OCR prints it (the ledger's ``wrong_term``), when recorded."""
+    value = row.get("wrong_term")
     if isinstance(value, str):
         return [value] if value else []
     return [str(v) for v in value] if isinstance(value, list | tuple) else []
@@ -901,7 +901,7 @@ def _ledger_fields(paper: str, rows: Sequence[Row]) -> list[Row]:
     if paper not in ledger_papers():
         return list(rows)
     recorded = {r.id: r for r in load_ledger(paper).rows}
-    keys = ("reading", "corrected", "printed", "note")
+    keys = ("reading", "corrected", "wrong_term", "note")
     return [
         {**row, **{("ledger_note" if k == "note" else k): getattr(recorded[_id(row)], k, None)
                    for k in keys}} if _id(row) in recorded else row

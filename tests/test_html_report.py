@@ -75,7 +75,7 @@ def _rows() -> tuple[list[dict[str, object]], list[dict[str, object]]]:
         {"id": "p.d", "published": "7,77", "verdict": "agrees"},
     ]
     equations: list[dict[str, object]] = [
-        {"id": "p.eq.15", "equation": "(15)", "status": "fails", "printed": "x = 1",
+        {"id": "p.eq.15", "equation": "(15)", "status": "fails", "wrong_term": "x = 1",
          "corrected": "x = 2", "check": "numeric: formula checks: p.eq15 fails"}
     ]  # fmt: skip
     return claims, equations
@@ -180,7 +180,7 @@ def _table_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, obj
     ]  # fmt: skip
     equations: list[dict[str, object]] = [
         {"id": r.id, "equation": r.equation, "section": r.section, "statement": r.statement,
-         "status": r.status, "printed": r.printed, "note": r.note or ""}
+         "status": r.status, "wrong_term": r.wrong_term, "note": r.note or ""}
         for r in load_ledger(paper).rows
     ]  # fmt: skip
     return claims, equations

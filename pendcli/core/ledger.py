@@ -49,7 +49,7 @@ __all__ = [
 CHECKED_STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint")
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
-ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "printed", "note")
+ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "wrong_term", "note")
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
 OUTPUT_KEYS = (
     "id",
@@ -113,7 +113,7 @@ class LedgerRow:
     check: str | None = None
     reading: str | None = None
     corrected: str | None = None
-    printed: str | None = None  # the wrong term as the OCR text prints it (marked in the HTML)
+    wrong_term: str | None = None  # the wrong term as the OCR text prints it (marked in the HTML)
     note: str | None = None
 
 
