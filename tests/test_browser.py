@@ -1,52 +1,68 @@
-"""The HTML report in a real browser: headless Chromium clicks every mark (marker ``browser``).
+"""The HTML edition in a real browser: headless Chromium (marker ``browser``).
 
 Skipped where Chromium is absent (Debian package ``chromium``); ``make test-browser`` runs it.
-Each page is copied with a small script appended that clicks every highlighted number and
-equation label, and records whether the click landed on an existing row; Chromium's
-``--dump-dom`` returns the page after the script ran. A screenshot of each page is kept in
-the test's temporary folder (the path is printed) for a person to look at.
+Each page is copied with a small script appended that reads what the browser rendered: the
+page's visible text (no raw TeX may show), every mark's box (visible, inside the text, with
+its note in the same paragraph's margin) and every in-page link (it lands on an element);
+Chromium's ``--dump-dom`` returns the page after the script ran. Links between pages are
+checked against the ids of the page they point to. A screenshot of each page at 1280 px is
+kept in the test's temporary folder (the path is printed) for a person to look at.
 """
 
 from __future__ import annotations
 
+import html
 import json
 import re
 import shutil
 import subprocess
+import tempfile
 from pathlib import Path
 
 import pytest
 
 from pendcli.core.claims import PAPERS
-from pendcli.html_report import write_for_result
+from pendcli.html_report import chromium, write_for_result
 from pendcli.reproduce import reproduce_all
 
 pytestmark = pytest.mark.browser
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+CHROMIUM = chromium()
+RAW_TEX = ("$$", "\\frac", "\\sqrt", "\\quad")
 
-CLICK_EVERY_MARK = """
+PROBE = """
 <script>
-const results = [];
-for (const a of document.querySelectorAll("a.hl")) {
-  a.click();
-  const id = a.getAttribute("href").slice(1);
-  results.push([a.id.slice(3), location.hash === "#" + id && !!document.getElementById(id)]);
-}
-document.body.insertAdjacentHTML("beforeend",
-  "<pre id='click-results'>" + JSON.stringify(results) + "</pre>");
+const visible = (e) => { const r = e.getBoundingClientRect(); return r.width > 0 && r.height > 0
+  && getComputedStyle(e).visibility !== "hidden"; };
+const marks = [...document.querySelectorAll(".hl[id^='at-']")].map((m) => {
+  const key = m.id.slice(3), blk = m.closest(".blk");
+  const note = blk && blk.querySelector(`[id="note-${CSS.escape(key)}"]`);
+  return [key, visible(m), !!m.closest(".edition .txt"), !!note && visible(note)];
+});
+// Chromium throttles a page past ~200 navigations: the first 150 links are clicked, every
+// link's target must exist and be visible.
+const links = [...document.querySelectorAll("a[href^='#']")].map((a, i) => {
+  const href = a.getAttribute("href"), id = decodeURIComponent(href.slice(1));
+  const target = document.getElementById(id);
+  if (i < 150) a.click();
+  return [id, !!target && visible(target) && (i >= 150 || location.hash === href)];
+});
+const text = document.body.innerText;
+document.body.insertAdjacentHTML("beforeend", "<pre id='probe'></pre>");
+document.getElementById("probe").textContent = JSON.stringify({marks, links, text});
 </script>
 """
 
 
 def _chromium(*args: str) -> str:
     assert CHROMIUM is not None
-    done = subprocess.run(
-        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", *args],
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    with tempfile.TemporaryDirectory() as profile:
+        done = subprocess.run(
+            [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
+             "--disable-background-networking", "--disable-component-update", "--disable-sync",
+             f"--user-data-dir={profile}", *args],
+            capture_output=True, text=True, timeout=300, check=False,
+        )  # fmt: skip
     return done.stdout
 
 
@@ -55,28 +71,69 @@ def pages(tmp_path_factory: pytest.TempPathFactory) -> Path:
     if CHROMIUM is None:
         pytest.skip("Chromium is not installed (apt-get install chromium)")
     out = tmp_path_factory.mktemp("html")
-    write_for_result(reproduce_all(PAPERS), out, {})
+    result = reproduce_all(PAPERS, equations=True)
+    write_for_result(result, out, {}, result.equations)
     return out
 
 
-@pytest.mark.parametrize("paper", PAPERS)
-def test_every_claim_is_on_the_page_and_every_mark_clicks_to_its_row(
-    pages: Path, paper: str
-) -> None:
-    page = pages / "papers" / f"{paper}.html"
-    probe = page.with_name(f"{paper}-probe.html")
-    probe.write_text(page.read_text("utf-8").replace("</body>", CLICK_EVERY_MARK + "</body>"))
-    dom = _chromium("--dump-dom", probe.as_uri())
-    found = re.search(r"<pre id=\"click-results\">(.*?)</pre>", dom, re.S)
-    assert found, "the click script did not run"
-    clicks = dict(json.loads(found.group(1).replace("&quot;", '"')))
-    ids = set(re.findall(r'<tr id="row-([^"]+)"', dom))
-    result = reproduce_all((paper,))
-    claim_ids = {row.id for row in result.claims[paper]}
-    assert claim_ids <= ids  # every claim has its row in the rendered page
-    assert claim_ids <= set(clicks)  # and a mark in the text (every claim is located)
-    assert all(clicks.values()), [k for k, ok in clicks.items() if not ok]
-    shot = pages / f"{paper}.png"
-    _chromium("--window-size=1280,1800", f"--screenshot={shot}", page.as_uri())
+def _probe(page: Path) -> dict[str, list]:  # type: ignore[type-arg]
+    probe = page.with_name(f"{page.stem}-probe.html")
+    probe.write_text(page.read_text("utf-8").replace("</body>", PROBE + "</body>"), "utf-8")
+    dom = _chromium("--window-size=1280,2000", "--dump-dom", probe.as_uri())
+    probe.unlink()
+    found = re.search(r"<pre id=\"probe\">(.*?)</pre>", dom, re.S)
+    assert found, "the probe script did not run"
+    return json.loads(html.unescape(found.group(1)))  # type: ignore[no-any-return]
+
+
+def _ids(page: Path) -> set[str]:
+    return set(map(html.unescape, re.findall(r'id="([^"]+)"', page.read_text("utf-8"))))
+
+
+def _screenshot(pages: Path, page: Path) -> None:
+    shot = pages / f"{page.stem}.png"
+    _chromium("--window-size=1280,2000", f"--screenshot={shot}", page.as_uri())
     assert shot.stat().st_size > 10_000
     print(f"screenshot: {shot}")
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_a_paper_page_shows_no_tex_and_every_mark_and_link_lands(pages: Path, paper: str) -> None:
+    page = pages / "papers" / f"{paper}.html"
+    seen = _probe(page)
+    shown = [t for t in RAW_TEX if t in seen["text"]]
+    assert not shown, f"raw TeX in the rendered text: {shown}"
+    assert len(seen["marks"]) > 10
+    bad = [m for m in seen["marks"] if not all(m[1:])]
+    assert not bad, f"marks not visible, outside the text or without their note: {bad[:5]}"
+    lost = [link for link, ok in seen["links"] if not ok]
+    assert not lost, f"links that do not land: {lost[:5]}"
+    rows = set(map(html.unescape, re.findall(r'<tr id="row-([^"]+)"', page.read_text("utf-8"))))
+    claims = {row.id for row in reproduce_all((paper,), formulas=False).claims[paper]}
+    assert claims <= rows  # every claim has its row on the page
+    _screenshot(pages, page)
+
+
+def test_the_report_shows_no_tex_and_every_link_lands(pages: Path) -> None:
+    page = pages / "report.html"
+    seen = _probe(page)
+    assert not [t for t in RAW_TEX if t in seen["text"]]
+    assert not [link for link, ok in seen["links"] if not ok]
+    source = page.read_text("utf-8")
+    targets = re.findall(r'href="papers/([a-z]+)\.html#([^"]+)"', source)
+    assert targets
+    ids = {p: _ids(pages / "papers" / f"{p}.html") for p in {p for p, _ in targets}}
+    missing = [(p, t) for p, t in targets if html.unescape(t) not in ids[p]]
+    assert not missing, missing[:5]
+    _screenshot(pages, page)
+
+
+def test_a_paper_page_prints_to_pdf(pages: Path) -> None:
+    from pendcli.html_report import print_pdfs
+
+    folder = pages / "print"
+    (folder / "papers").mkdir(parents=True)
+    shutil.copy(pages / "papers" / "tisserand.html", folder / "papers" / "tisserand.html")
+    (printed,) = print_pdfs(folder)
+    assert printed == folder / "papers" / "tisserand.pdf"
+    assert printed.read_bytes()[:5] == b"%PDF-" and printed.stat().st_size > 50_000

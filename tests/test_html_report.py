@@ -1,13 +1,34 @@
-"""The HTML report: numbers located in the text, links both ways, everything escaped."""
+"""The HTML edition: marks at their place, formulas rendered, links both ways, the graph's
+geometry, everything escaped."""
 
 from __future__ import annotations
 
+import itertools
 import re
+import shutil
 from pathlib import Path
 
-from pendcli.html_report import locate, paper_page, propagation_svg, report_page
+import pytest
 
-TEXT = "Les racines sont:\n$$5,14 \\quad 8,41$$ et la longueur 0^m, 68 <b> (15)\n"
+from pendcli.core.claims import PAPERS
+from pendcli.core.ledger import load_ledger
+from pendcli.core.tables import load_paper_table, tables_dir
+from pendcli.html_graph import layered_graph
+from pendcli.html_math import math_segments, plain_math, to_mathml
+from pendcli.html_report import (
+    cited_formulas,
+    locate,
+    paper_page,
+    place_marks,
+    propagation_svg,
+    render_stats,
+    report_page,
+)
+
+TEXT = (
+    "Les racines sont:\n\n$$5,14 \\quad 8,41$$\n\net la longueur 0^m, 68 <b>\n\n"
+    "$$(15) \\quad x = 1$$\n"
+)
 
 
 def test_locate_follows_reading_order_and_tolerates_ocr_spacing() -> None:
@@ -26,6 +47,20 @@ def test_a_bare_digit_is_not_found_inside_a_longer_number() -> None:
     assert locate("0,35 et 15", [["5"]]) == [None]
 
 
+def test_the_ocr_tex_of_the_three_papers_converts_to_mathml() -> None:
+    """Measured over every $$ block and inline formula; a failure would show as plain text."""
+    for paper in PAPERS:
+        stats = render_stats((tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8"))
+        assert stats.formulas > 50 and stats.mathml == stats.formulas, (paper, stats)
+
+
+def test_a_formula_latex2mathml_cannot_render_gets_a_plain_reading() -> None:
+    assert to_mathml("\\frac{1}{2} \\unknowncommand x", display=True) is None
+    reading = plain_math("\\frac{\\pi(7\\pi^2 - 3)}{32} \\sqrt{a g} \\quad \\theta_0")
+    assert reading == "(π(7π² - 3))/(32) √(a g) θ₀"
+    assert "\\" not in reading and "{" not in reading
+
+
 def _rows() -> tuple[list[dict[str, object]], list[dict[str, object]]]:
     claims: list[dict[str, object]] = [
         {"id": "p.a", "published": "5,14", "verdict": "agrees", "recomputed": 5.1356},
@@ -39,33 +74,190 @@ def _rows() -> tuple[list[dict[str, object]], list[dict[str, object]]]:
         },
         {"id": "p.d", "published": "7,77", "verdict": "agrees"},
     ]
-    equations: list[dict[str, object]] = [{"id": "p.eq.15", "equation": "(15)", "status": "fails"}]
+    equations: list[dict[str, object]] = [
+        {"id": "p.eq.15", "equation": "(15)", "status": "fails", "wrong_term": "x = 1",
+         "corrected": "x = 2", "check": "numeric: formula checks: p.eq15 fails"}
+    ]  # fmt: skip
     return claims, equations
 
 
-def test_paper_page_links_every_located_number_to_its_row_and_back() -> None:
+def test_paper_page_marks_every_located_row_and_links_both_ways() -> None:
     claims, equations = _rows()
     page = paper_page("p", "A <citation>", TEXT, claims, (), equations)
-    for row_id in ("p.a", "p.b", "p.c", "p.eq.15"):
-        assert f'id="at-{row_id}" href="#row-{row_id}"' in page
-        assert f'<tr id="row-{row_id}"' in page
-        assert f'href="#at-{row_id}"' in page
-    assert 'id="at-p.d"' not in page and "not located in the OCR text" in page
+    for key in ("p.a", "p.b", "p.c", "p.eq.15"):
+        assert re.search(rf'id="at-{re.escape(key)}"', page), key
+        assert f'<tr id="row-{key}"' in page
+        assert f'href="#at-{key}"' in page
+    assert 'id="at-p.d"' not in page and "not placed in the text" in page
     assert "&lt;b&gt;" in page and "<b>" not in page and "A &lt;citation&gt;" in page
-    assert re.search(r'class="hl v-discrepant" id="at-p.b"', page)
-    assert 'class="hl s-fails" id="at-p.eq.15"' in page
+    assert "<math" in page and "$$" not in page and "\\quad" not in page
+    # the wrong term of (15) is marked inside its formula, its correction beside it, once
+    assert 'class="hl s-fails wrong" id="at-p.eq.15~term0"' in page
+    assert page.count("corrected: x = 2") == 2  # the note beside the text and the table's cell
+    assert "derivation-error" in page  # the equation row's cause column
+
+
+def test_one_entry_per_finding_a_formula_check_joins_its_equation() -> None:
+    claims, equations = _rows()
+    formulas = [{"id": "p.eq15", "verdict": "fails", "published": "x = 1", "recomputed": "x = 2"}]
+    assert [r["id"] for r in cited_formulas(equations, formulas)["p.eq.15"]] == ["p.eq15"]
+    page = report_page(["p"], {"p": claims}, {"p": formulas}, {"p": equations})
+    assert page.count('href="papers/p.html#row-p.eq.15"') == 1
+    assert 'href="papers/p.html#row-p.eq15"' not in page and "with p.eq15: fails" in page
+    paper = paper_page("p", "", TEXT, claims, formulas, equations)
+    assert paper.count('href="#row-p.eq15"') == 0 and 'id="row-p.eq15"' in paper
 
 
 def test_propagation_graph_draws_an_edge_from_each_source() -> None:
     claims, _ = _rows()
     svg = propagation_svg(claims)
-    assert svg.count("<line") == 1 and "#row-p.b" in svg and "#row-p.c" in svg
+    assert svg.count("<polyline") == 1 and "#row-p.b" in svg and "#row-p.c" in svg
     assert "No row inherits" in propagation_svg(claims[:2])
 
 
-def test_report_page_counts_causes_and_lists_what_does_not_hold(tmp_path: Path) -> None:
+def test_report_page_counts_causes_and_lists_what_does_not_hold() -> None:
     claims, equations = _rows()
     page = report_page(["p"], {"p": claims}, {}, {"p": equations})
     assert page.count('href="papers/p.html#row-') >= 3  # two claims and the failing equation
     assert "arithmetic-slip" in page and "propagated" in page
     assert not re.search(r'(src|href)="(https?:)?//', page)  # self-contained: no fetch
+
+
+# --- the graph: no edge through a label -----------------------------------------------------
+
+
+def _crosses(p: tuple[float, float], q: tuple[float, float], box: tuple[float, ...]) -> bool:
+    """Whether segment pq meets the open rectangle (x, y, w, h) (Liang-Barsky clipping)."""
+    x, y, w, h = box
+    t0, t1 = 0.0, 1.0
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    for d, lo, hi in ((dx, x - p[0], x + w - p[0]), (dy, y - p[1], y + h - p[1])):
+        if d == 0:
+            if not lo < 0 < hi:
+                return False
+            continue
+        a, b = sorted((lo / d, hi / d))
+        t0, t1 = max(t0, a), min(t1, b)
+    return t0 < t1
+
+
+def test_the_segment_test_itself_sees_a_crossing() -> None:
+    assert _crosses((0, 5), (20, 5), (5, 0, 5, 10))
+    assert not _crosses((0, 20), (20, 20), (5, 0, 5, 10))
+
+
+def _graph_of(paper: str) -> tuple[list[str], list[tuple[str, str]]]:
+    claims = load_paper_table(paper).claims
+    ids = {c.id for c in claims}
+    edges = [(s, c.id) for c in claims for s in c.cause_from if s in ids]
+    return sorted({n for e in edges for n in e}), edges
+
+
+@pytest.mark.parametrize("paper", ["lecornu"])
+def test_no_edge_of_the_propagation_graph_crosses_a_label(paper: str) -> None:
+    nodes, edges = _graph_of(paper)
+    assert len(edges) > 10
+    _, boxes, lines = layered_graph(nodes, edges, lambda n: "#" + n, lambda n: True)
+    for (a, b), line in zip(edges, lines, strict=True):
+        others = [(k.x, k.y, k.w, k.h) for n, k in boxes.items() if n not in (a, b)]
+        for p, q in itertools.pairwise(line):
+            hits = [n for n, box in zip(boxes, others, strict=False) if _crosses(p, q, box)]
+            assert not any(_crosses(p, q, box) for box in others), (a, b, p, q, hits)
+        start, end = boxes[a], boxes[b]
+        assert line[0] == (start.x + start.w, start.y + start.h / 2)  # from its source's label
+        assert line[-1] == (end.x, end.y + end.h / 2)  # to its target's label
+
+
+# --- placement over the three papers' own rows ----------------------------------------------
+
+
+def _table_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, object]]]:
+    """The rows as the tables print them (no computation: placement needs only the strings)."""
+    claims: list[dict[str, object]] = [
+        {"id": c.id, "published": c.published, "as_printed": c.as_printed, "ocr": c.ocr,
+         "source": c.source, "note": c.note, "verdict": "agrees"}
+        for c in load_paper_table(paper).claims
+    ]  # fmt: skip
+    equations: list[dict[str, object]] = [
+        {"id": r.id, "equation": r.equation, "section": r.section, "statement": r.statement,
+         "status": r.status, "wrong_term": r.wrong_term, "note": r.note or ""}
+        for r in load_ledger(paper).rows
+    ]  # fmt: skip
+    return claims, equations
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_each_mark_is_its_rows_printed_string_and_a_label_sits_in_its_formula(paper: str) -> None:
+    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    claims, equations = _table_rows(paper)
+    marks, _ = place_marks(text, claims, equations)
+    displays = [(s.start, s.end) for s in math_segments(text) if s.display]
+    for m in marks:
+        printed = text[m.start : m.end]
+        assert any(_same(printed, form) for form in m.forms), (m.key, printed, m.forms)
+        if re.fullmatch(r"\([0-9IVX]+'?\)", printed):  # a label: inside a display formula
+            assert any(a <= m.start < b for a, b in displays), m.key
+    spans = sorted((m.start, m.end) for m in marks)
+    assert all(b <= c for (_, b), (c, _) in itertools.pairwise(spans))  # disjoint
+
+
+def _same(printed: str, form: str) -> bool:
+    """The printed text is the form, up to the OCR's spacing and TeX spelling."""
+
+    def squash(s: str) -> str:
+        s = re.sub(r"\\q?quad|\\[,;!]|\s", "", s)
+        for tex, char in (("\\theta", "θ"), ("\\pi", "π"), ("\\cdot", "·"), ("^{\\circ}", "°")):
+            s = s.replace(tex, char)
+        return s
+
+    return squash(printed) == squash(form)
+
+
+EXPECTED_PLACES = [
+    # the issue's examples: (paper, mark key, the mark's text, words of the same line); the
+    # table entry has no quoted words to anchor it: it is found as the number standing alone
+    ("charbonnier", "charbonnier.I_pi.n0", "2", "$I_n \\dots \\dots$"),
+    ("tisserand", "tisserand.resal.rate", "\\frac{3}{8} u_0 u_1", "la solution de M. Resal"),
+    ("tisserand", "tisserand.eq.13~term0", "\\sin^2 4k' t", "(13) \\quad"),
+    ("tisserand", "tisserand.example.psi_sin2~reading0", "\\theta_0 = 30', \\quad \\theta_1 = 15'",
+     "\\theta_0 = 30'"),
+    ("lecornu", "lecornu.result.mean_pendulum~term0", "\\frac{\\pi(7\\pi^2 - 3)}{32}",
+     "c'est-à-dire à $6,47"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("paper", "key", "printed", "beside"), EXPECTED_PLACES)
+def test_the_issues_marks_sit_on_the_wrong_term(
+    paper: str, key: str, printed: str, beside: str
+) -> None:
+    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    marks = {m.key: m for m in place_marks(text, *_table_rows(paper))[0]}
+    mark = marks[key]
+    assert text[mark.start : mark.end] == printed
+    assert mark.anchored == (key != "charbonnier.I_pi.n0")
+    line_start = text.rfind("\n", 0, mark.start) + 1
+    line_end = text.find("\n", mark.end)
+    assert beside in text[line_start:line_end]
+
+
+def test_located_counts_only_rows_at_their_own_place(tmp_path: Path) -> None:
+    text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
+    claims, equations = _table_rows("tisserand")
+    page = paper_page("tisserand", "", text, claims, (), equations)
+    anchored = {m.row_id for m in place_marks(text, claims, equations)[0] if m.anchored}
+    stated = re.search(r"(\d+) of (\d+) rows placed at their own place", page)
+    assert stated and int(stated.group(2)) == len(claims) + len(equations)
+    assert int(stated.group(1)) >= len(anchored)  # plus the notes placed at their passage
+
+
+def test_pdf_printing_refuses_without_out_or_without_chromium(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from pendcli import html_report
+    from pendcli.core.errors import PendcliError
+
+    with pytest.raises(PendcliError, match="--pdf needs --out"):
+        html_report.print_pdfs(None)
+    monkeypatch.setattr(shutil, "which", lambda _: None)
+    with pytest.raises(PendcliError, match=r"needs Chromium \(apt-get install chromium\)"):
+        html_report.print_pdfs(tmp_path)

@@ -379,6 +379,10 @@ def reproduce(
     measure: Annotated[
         bool, typer.Option("--measure", help="With --out: time the speed families now.")
     ] = False,
+    pdf: Annotated[
+        bool,
+        typer.Option("--pdf", help="With --out: print each HTML page to PDF (headless Chromium)."),
+    ] = False,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
     from pendcli.core.claims import resolve_papers
@@ -406,6 +410,10 @@ def reproduce(
         print(CAUSE_LEGEND)
     if out is not None:
         _write_report(result, out, quiet, measure)
+    if pdf:
+        from pendcli.html_report import print_pdfs
+
+        print_pdfs(out)
 
 
 def _write_report(result: ReproduceResult, out: Path, quiet: bool, measure: bool) -> None:

@@ -58,7 +58,7 @@ LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
 # Where the row is printed, what it restates, and (issue 19) the printed form as a formula.
 TEXT_KEYS = ("lines", "restates", "printed", "reading_formula", "corrected_formula", "reference")
-ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note", *TEXT_KEYS)
+ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "wrong_term", "note", *TEXT_KEYS)
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
 OUTPUT_KEYS = (
     "id",
@@ -128,6 +128,7 @@ class LedgerRow:
     check: str | None = None
     reading: str | None = None
     corrected: str | None = None
+    wrong_term: str | None = None  # the wrong term as the OCR text prints it (marked in the HTML)
     note: str | None = None
     lines: Span | None = None
     restates: str | None = None

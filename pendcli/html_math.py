@@ -1,0 +1,149 @@
+"""The OCR's TeX as MathML, converted at build time, and a legible plain form where it fails.
+
+The texts in ``tables/papers/`` write mathematics as ``$$…$$`` (display) and ``$…$``
+(inline) TeX. :func:`to_mathml` converts one formula with latex2mathml, so the pages need no
+script and no network; a formula it cannot convert (an exception, or a command it leaves as
+raw text) is rendered by :func:`plain_math`, a cleaned plain-text reading (``\\frac{a}{b}``
+as ``(a)/(b)``, Greek letters as Unicode), and counted. Marks are kept inside a formula by
+wrapping their TeX in ``{\\color{#fe0NNN} …}``: the converter turns that into an
+``<mstyle mathcolor>`` that :func:`mark_mathml` replaces by the mark's element.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+
+__all__ = [
+    "MATH",
+    "MathSegment",
+    "mark_mathml",
+    "math_segments",
+    "plain_math",
+    "to_mathml",
+    "wrap_marks",
+]
+
+# A display formula $$…$$ (may span lines) or an inline one $…$ (within a line).
+MATH = re.compile(r"\$\$(.+?)\$\$|\$([^$\n]+?)\$", re.DOTALL)
+_COLOUR = "#fe{:04x}"
+_MSTYLE = re.compile(r'<mstyle mathcolor="#fe([0-9a-f]{4})">|<mstyle\b[^>]*>|</mstyle>')
+
+
+@dataclass(frozen=True)
+class MathSegment:
+    """One formula of the text: the span of its TeX (inside the dollars) and its kind."""
+
+    start: int  # first character of the $ or $$
+    end: int  # after the closing $ or $$
+    tex_start: int
+    tex_end: int
+    display: bool
+
+
+def math_segments(text: str) -> list[MathSegment]:
+    """Every formula of ``text`` in reading order."""
+    out = []
+    for m in MATH.finditer(text):
+        group = 1 if m.group(1) is not None else 2
+        out.append(MathSegment(m.start(), m.end(), m.start(group), m.end(group), group == 1))
+    return out
+
+
+def to_mathml(tex: str, display: bool) -> str | None:
+    """``tex`` as a ``<math>`` element, or None where latex2mathml cannot render it."""
+    from latex2mathml.converter import convert
+
+    # latex2mathml reads aligned as plain text with literal &: an array aligns the same way.
+    tex = re.sub(r"\\begin\{(?:aligned|align\*?|split)\}", r"\\begin{array}{rlrlrlrl}", tex)
+    tex = re.sub(r"\\end\{(?:aligned|align\*?|split)\}", r"\\end{array}", tex)
+    try:
+        mathml = convert(tex.strip(), display="block" if display else "inline")
+    except Exception:
+        return None
+    # An unknown command comes out as a token holding its backslash: not rendered.
+    if re.search(r"<m[io][^>]*>(?:\\|&(?![#\w]+;))", mathml) or "<merror" in mathml:
+        return None
+    return mathml
+
+
+def wrap_marks(tex: str, spans: list[tuple[int, int, int]]) -> str:
+    """``tex`` with each (start, end, number) span wrapped in its colour group.
+
+    Spans are relative to ``tex``, sorted and disjoint; a span whose braces do not balance
+    (it would break the formula) is widened to the enclosing balanced text by the caller.
+    """
+    out, pos = [], 0
+    for start, end, number in spans:
+        out += [tex[pos:start], "{\\color{", _COLOUR.format(number), "}", tex[start:end], "}"]
+        pos = end
+    out.append(tex[pos:])
+    return "".join(out)
+
+
+def balanced(tex: str) -> bool:
+    """Braces and \\left/\\right pairs balance in ``tex`` (so it can be wrapped in a group)."""
+    depth = 0
+    for c in re.sub(r"\\[{}]", "", tex):
+        depth += (c == "{") - (c == "}")
+        if depth < 0:
+            return False
+    left = len(re.findall(r"\\left\b", tex))
+    return depth == 0 and left == len(re.findall(r"\\right\b", tex)) and "&" not in tex
+
+
+def mark_mathml(mathml: str, open_tag: Callable[[int], str], after: Callable[[int], str]) -> str:
+    """Replace each colour group numbered n by ``open_tag(n)`` … ``</mrow>`` ``after(n)``."""
+    out, pos, stack = [], 0, []
+    for m in _MSTYLE.finditer(mathml):
+        out.append(mathml[pos : m.start()])
+        pos = m.end()
+        if m.group(1) is not None:
+            stack.append(int(m.group(1), 16))
+            out.append(open_tag(stack[-1]))
+        elif m.group(0).startswith("<mstyle"):
+            stack.append(-1)
+            out.append(m.group(0))
+        else:
+            number = stack.pop() if stack else -1
+            out.append("</mstyle>" if number < 0 else "</mrow>" + after(number))
+    out.append(mathml[pos:])
+    return "".join(out)
+
+
+# --- the plain reading of a formula that does not convert ------------------------------------
+
+_GREEK = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "varepsilon": "ε", "epsilon": "ε",
+    "theta": "θ", "lambda": "λ", "mu": "μ", "nu": "ν", "xi": "ξ", "pi": "π", "rho": "ρ",
+    "sigma": "σ", "tau": "τ", "varphi": "φ", "phi": "φ", "psi": "ψ", "omega": "ω",
+    "Delta": "Δ", "Gamma": "Γ", "Omega": "Ω", "Phi": "Φ", "Psi": "Ψ", "partial": "∂",
+    "infty": "∞", "int": "∫", "cdot": "·", "dots": "…", "cdots": "…", "ldots": "…",
+    "geq": "≥", "leq": "≤", "circ": "°", "prime": "′", "times": "×", "pm": "±", "sum": "Σ",
+}  # fmt: skip
+_SUPERSCRIPT = str.maketrans("0123456789+-n", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻ⁿ")
+_SUBSCRIPT = str.maketrans("0123456789+-", "₀₁₂₃₄₅₆₇₈₉₊₋")
+_GROUP = r"\{((?:[^{}]|\{[^{}]*\})*)\}"
+
+
+def plain_math(tex: str) -> str:
+    """A legible plain-text reading of ``tex``: no backslash commands, no braces."""
+    s = tex
+    for _ in range(4):  # nested fractions and roots, innermost first
+        s = re.sub(rf"\\[dt]?frac\s*{_GROUP}\s*{_GROUP}", r"(\1)/(\2)", s)
+        s = re.sub(rf"\\sqrt\s*{_GROUP}", r"√(\1)", s)
+    s = re.sub(r"\\(?:left|right|big|Big|bigg)\s*([()\[\]|.]|\\[{}])", r"\1", s)
+    s = re.sub(r"\\(?:q?quad|[,;:!]|\\)", " ", s)
+    s = re.sub(r"\\(?:begin|end)\{[^}]*\}", " ", s)
+    s = re.sub(r"\\(?:text|mathrm|mathbf|operatorname|overline|bar)\s*" + _GROUP, r"\1", s)
+    s = re.sub(r"\\([A-Za-z]+)", lambda m: _GREEK.get(m.group(1), m.group(1)), s)
+    s = re.sub(r"\^\{?([0-9+\-n]{1,3})\}?(?![0-9])", lambda m: _sup(m.group(1)), s)
+    s = re.sub(r"_\{?([0-9+\-]{1,3})\}?(?![0-9])", lambda m: m.group(1).translate(_SUBSCRIPT), s)
+    s = s.replace("\\{", "{").replace("\\}", "}").replace("{", "").replace("}", "")
+    s = s.replace("&", "").replace("\\", "")
+    return re.sub(r"[ \t]+", " ", s).strip()
+
+
+def _sup(digits: str) -> str:
+    return digits.translate(_SUPERSCRIPT)
