@@ -14,7 +14,7 @@ from pendcli.papers import formula_checks
 from pendcli.render.columns import Column, Row, Section
 from pendcli.summary import disagrees
 
-__all__ = ["ReproduceResult", "reproduce_all"]
+__all__ = ["VERDICT_NAMES", "ReproduceResult", "parse_verdicts", "reproduce_all"]
 
 
 @dataclass
@@ -141,6 +141,11 @@ class ReproduceResult:
                     row[f"equations {status}"] = sum(r["status"] == status for r in eqs)
             out.append(row)
         return out
+
+    def rows_with(self, names: frozenset[str]) -> list[dict[str, object]]:
+        """Every claim, formula or equation row whose verdict or status is in ``names``."""
+        rows = [*self.claim_dicts(), *self.formula_dicts(), *self.equation_dicts()]
+        return [r for r in rows if str(r.get("verdict", r.get("status"))) in names]
 
     def tally(self, key: str) -> str:
         """``"12 agrees, 1 truncated, 5 formula holds"``: the verdicts a paper reached."""
@@ -370,3 +375,30 @@ def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
         result.equations.setdefault(key, []).extend(rows)
     else:
         result.stability = value
+
+
+def _verdict_names() -> tuple[str, ...]:
+    from pendcli.core.ledger_check import STATUSES
+
+    names = [*CLAIM_VERDICTS, *FORMULA_VERDICTS, *STATUSES]
+    return tuple(dict.fromkeys(str(n) for n in names))
+
+
+# Every verdict (claims, formulas) and status (equations) a row can have, best first.
+VERDICT_NAMES: tuple[str, ...] = _verdict_names()
+# Statuses only the equation ledger gives: asking to fail on one runs the ledger.
+EQUATION_ONLY = frozenset(VERDICT_NAMES) - {*CLAIM_VERDICTS, *FORMULA_VERDICTS}
+
+
+def parse_verdicts(text: str, option: str = "--fail-on") -> frozenset[str]:
+    """``"discrepant,fails"`` -> the set of names; an unknown one is a one-line error."""
+    from pendcli.core.errors import PendcliError
+
+    names = [n.strip().casefold() for n in text.split(",") if n.strip()]
+    for name in names or [text]:
+        if name not in VERDICT_NAMES:
+            raise PendcliError(
+                f"{option}: {name!r} is not a verdict or status; expected one or more of "
+                f"{', '.join(VERDICT_NAMES)} (comma-separated)"
+            )
+    return frozenset(names)

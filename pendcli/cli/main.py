@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 from typer.core import TyperGroup
 
-from pendcli.cli.common import FormatOption, PaperOption, emit
+from pendcli.cli.common import CheckFormat, FormatOption, PaperOption, complete_verdicts, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -356,12 +356,25 @@ def reproduce(
     measure: Annotated[
         bool, typer.Option("--measure", help="With --out: time the speed families now.")
     ] = False,
+    fail_on: Annotated[
+        str | None,
+        typer.Option(
+            "--fail-on",
+            metavar="VERDICT[,...]",
+            help="Exit 1 when any row has one of these verdicts or statuses (for CI), e.g. "
+            "discrepant,fails. An equation status (misprint...) runs the ledger.",
+            autocompletion=complete_verdicts,
+        ),
+    ] = None,
 ) -> None:
-    """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
+    """Every claim, published against recomputed, with a verdict (exit 0 unless --fail-on)."""
     from pendcli.core.claims import resolve_papers
     from pendcli.core.errors import PendcliError
-    from pendcli.reproduce import reproduce_all
+    from pendcli.reproduce import EQUATION_ONLY, reproduce_all
 
+    fail_names = _fail_names(fail_on)
+    if fail_names & EQUATION_ONLY and equations is None:
+        equations = True
     if measure and out is None:
         raise PendcliError("--measure needs --out (it re-times the report's speed families)")
     if out is not None:  # refuse a bad folder before the run, not after
@@ -383,6 +396,28 @@ def reproduce(
         print(CAUSE_LEGEND)
     if out is not None:
         _write_report(result, out, quiet, measure)
+    if fail_names:
+        _fail_on(result, fail_names, quiet)
+
+
+def _fail_names(text: str | None) -> frozenset[str]:
+    if text is None:
+        return frozenset()
+    from pendcli.reproduce import parse_verdicts
+
+    return parse_verdicts(text)
+
+
+def _fail_on(result: ReproduceResult, names: frozenset[str], quiet: bool) -> None:
+    """Exit 1 when a row has one of ``names`` (after the output, so CI logs show the table)."""
+    from pendcli.cli.common import say
+
+    hits = result.rows_with(names)
+    if hits:
+        if not quiet:
+            ids = ", ".join(str(r["id"]) for r in hits[:5]) + (" ..." if len(hits) > 5 else "")
+            say(f"--fail-on: {len(hits)} row(s) are {', '.join(sorted(names))}: {ids}")
+        raise typer.Exit(1)
 
 
 def _write_report(result: ReproduceResult, out: Path, quiet: bool, measure: bool) -> None:
@@ -402,11 +437,30 @@ def check(
         bool, typer.Option("--update", help="Rewrite the committed regenerated tables instead.")
     ] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print only failures.")] = False,
+    fmt: Annotated[
+        CheckFormat,
+        typer.Option(
+            "--format",
+            "-f",
+            help="table (the drift table), json, or junit (JUnit XML: a testcase per claim, "
+            "formula and table). Under GitHub Actions each drift is also an ::error annotation.",
+            case_sensitive=False,
+        ),
+    ] = CheckFormat.table,
 ) -> None:
-    """Regenerate every table and compare with the committed ones (exit 1 on any drift)."""
+    """Regenerate every table and compare with the committed ones (exit 1 on any drift).
+
+    A number may move within its column's tolerance (the last bits another libm or scipy
+    changes); text (published, verdict, cause) must be identical. The drift table and
+    --format json show each tolerance.
+    """
     from pendcli.regression import run_check
 
-    code = run_check(update=update, quiet=quiet)
+    if update and fmt is not CheckFormat.table:
+        from pendcli.core.errors import PendcliError
+
+        raise PendcliError(f"--format: {fmt.value!r} with --update; expected table")
+    code = run_check(update=update, quiet=quiet, fmt=fmt.value)
     raise typer.Exit(code)
 
 
