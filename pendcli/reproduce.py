@@ -1,8 +1,14 @@
-"""Run every claim (and formula check) of the chosen papers: the data behind `reproduce`."""
+"""Run every claim (and formula check) of the chosen papers: the data behind `reproduce`.
+
+The module is callable: ``pendcli.reproduce(paper="lecornu")`` is
+:func:`pendcli.api.reproduce` (the package attribute ``reproduce`` is this module, since
+Python binds a submodule to its package's attribute of the same name).
+"""
 
 from __future__ import annotations
 
 import sys
+import types
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
@@ -402,3 +408,16 @@ def parse_verdicts(text: str, option: str = "--fail-on") -> frozenset[str]:
                 f"{', '.join(VERDICT_NAMES)} (comma-separated)"
             )
     return frozenset(names)
+
+
+class _CallableModule(types.ModuleType):
+    def __call__(
+        self, paper: str | None = None, formulas: bool = True, equations: bool = False
+    ) -> ReproduceResult:
+        """Recompute and judge every printed number: see :func:`pendcli.api.reproduce`."""
+        from pendcli.api import reproduce
+
+        return reproduce(paper, formulas=formulas, equations=equations)
+
+
+sys.modules[__name__].__class__ = _CallableModule
