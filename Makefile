@@ -5,7 +5,7 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 OUT ?= out
 
-.PHONY: install reproduce test test-browser check regen lint bench clean
+.PHONY: install reproduce test test-browser check regen lint bench api clean
 
 install: $(STAMP)
 
@@ -43,6 +43,15 @@ lint: $(STAMP)
 
 bench: $(STAMP)
 	$(BIN)/python -m pendcli.bench --write README.md
+
+# The API page (docs/api/pendcli.html): pdoc over the names `import pendcli` offers. They load
+# lazily, so they are fetched first (pdoc reads the module's __dict__).
+api: $(STAMP)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[docs]'
+	$(BIN)/python -c "import pathlib, pdoc, pdoc.render, pendcli; \
+	  [getattr(pendcli, n) for n in pendcli.__all__ if n != '__version__']; \
+	  pdoc.render.configure(search=False, show_source=False); \
+	  pdoc.pdoc('pendcli', 'pendcli.api', output_directory=pathlib.Path('docs/api'))"
 
 clean:
 	rm -rf $(OUT) .pytest_cache build *.egg-info
