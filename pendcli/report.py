@@ -155,9 +155,11 @@ def check_out_folder(out: Path | str) -> Path:
     parent = path.resolve().parent
     while not parent.exists():
         parent = parent.parent
-    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
-        problem = "is not a folder" if not parent.is_dir() else "is not writable"
-        raise PendcliError(f"cannot create output folder {text!r}: {parent} {problem}")
+    from pendcli.core.plotting import cannot_create_in
+
+    problem = "is not a folder" if not parent.is_dir() else cannot_create_in(parent)
+    if problem is not None:
+        raise PendcliError(f"--out: cannot create folder {text!r}: {parent}: {problem}")
     return path
 
 

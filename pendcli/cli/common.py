@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from enum import StrEnum
 from pathlib import Path
 from typing import Annotated
@@ -99,3 +100,17 @@ def say(message: str) -> None:
 
     if not is_quiet():
         console(stderr=True).print(message)
+
+
+@contextmanager
+def busy(description: str) -> Iterator[None]:
+    """A spinner with ``description`` on stderr while a slow step runs (a second or more:
+    the equation ledger, drawing figures); only on a terminal, never under --quiet, and
+    gone when the step ends, so nothing of it reaches a pipe or a log."""
+    from pendcli.core.console import is_quiet
+
+    if is_quiet() or not sys.stderr.isatty():
+        yield
+        return
+    with console(stderr=True).status(description):
+        yield

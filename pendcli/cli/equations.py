@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PaperOption, bad_value, complete_statuses, emit
+from pendcli.cli.common import FormatOption, PaperOption, bad_value, busy, complete_statuses, emit
 from pendcli.render import OutputFormat
 
 StatusOption = Annotated[
@@ -41,7 +41,8 @@ def equations(
 
     if status is not None and status not in STATUSES:
         raise bad_value("--status", status, f"one of {', '.join(STATUSES)}")
-    rows = equation_rows(resolve_papers(paper))
+    with busy("checking every equation (sympy, ODEs)"):
+        rows = equation_rows(resolve_papers(paper))
     counts = coverage(rows)
     shown = [r for r in rows if status is None or r["status"] == status]
     compact = fmt is OutputFormat.table and not notes

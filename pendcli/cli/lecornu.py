@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.cli.common import FormatOption, PlotOption, busy, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -221,7 +221,8 @@ def example(
     if plot is not None:
         from pendcli.papers.lecornu.figures import plot_example
 
-        plot_example(plot, speed, length, g)
+        with busy("drawing the figure"):
+            plot_example(plot, speed, length, g)
 
 
 @app.command("ode-check")

@@ -23,9 +23,11 @@ from pendcli.cli.common import CheckFormat, FormatOption, PaperOption, complete_
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
-    # click's types, as typer vendors it (click itself is not installed); only named for mypy:
-    # at run time pendcli uses typer's public names (typer.TyperException, typer.BadParameter).
-    from typer._click import Command, Context, HelpFormatter, Parameter
+    # click's Command, Context, Parameter and HelpFormatter live inside typer, under a private
+    # name (typer._click); pendcli names none of them, so for mypy they are Any.
+    Command = Any
+    Context = Any
+    Parameter = Any
 
     from pendcli.reproduce import ReproduceResult
 
@@ -82,6 +84,74 @@ def summary(command: Command) -> str:
     """The first line of a command's help, whole: click's short help stops at "eq." or "s.t."."""
     text = command.short_help or command.help or ""
     return text.strip().splitlines()[0].strip() if text.strip() else ""
+
+
+# Examples shown at the end of each command's --help (the command path after `pendcli`).
+EXAMPLES: dict[str, tuple[str, ...]] = {
+    "": (
+        "pendcli reproduce                      every paper, published against recomputed",
+        "pendcli reproduce -p lecornu --notes   one paper, every column",
+        "pendcli check -f junit > check.xml     CI: a testcase per claim, formula, table",
+    ),
+    "list": ("pendcli list -p tisserand", "pendcli list -f csv > claims.csv"),
+    "reproduce": (
+        "pendcli reproduce --only-failing",
+        "pendcli reproduce -p charbonnier -f json",
+        "pendcli reproduce --out out          report.md, report.html, tables, figures",
+        "pendcli reproduce --fail-on discrepant,fails   CI: exit 1 on a bad verdict",
+    ),
+    "check": (
+        "pendcli check",
+        "pendcli check -f junit > check.xml",
+        "pendcli check --update               then review and commit tables/regenerated",
+    ),
+    "tisserand claims": ("pendcli tisserand claims", "pendcli tisserand claims -f json"),
+    "tisserand example": (
+        "pendcli tisserand example",
+        "pendcli tisserand example --theta0 45° --theta1 20° --plot ex.png",
+    ),
+    "tisserand series": ("pendcli tisserand series --order 4", "pendcli tisserand series -f csv"),
+    "lecornu claims": ("pendcli lecornu claims", "pendcli lecornu claims --g 9.81"),
+    "lecornu zeros": (
+        "pendcli lecornu zeros --order 1 --count 10",
+        "pendcli lecornu zeros --count 1000000 --tol 1e-12 -f csv > zeros.csv",
+    ),
+    "lecornu example": (
+        "pendcli lecornu example",
+        "pendcli lecornu example --speed 0.5 --length 2 --plot theta.png",
+    ),
+    "lecornu ode-check": (
+        "pendcli lecornu ode-check",
+        "pendcli lecornu ode-check --amplitude 1 --amplitude 10",
+    ),
+    "lecornu g-sensitivity": ("pendcli lecornu g-sensitivity",),
+    "lecornu series": ("pendcli lecornu series -f json",),
+    "lecornu zero-length": ("pendcli lecornu zero-length --speed 0.35 --length 1",),
+    "charbonnier table": (
+        "pendcli charbonnier table",
+        "pendcli charbonnier table --n-max 40 --plot table.png",
+    ),
+    "charbonnier integral": (
+        "pendcli charbonnier integral 4              I_4(π) = 16/15",
+        "pendcli charbonnier integral 1000 -x 1.5",
+        "pendcli charbonnier integral 5 --tol 1e-10  the cheapest method that meets it",
+    ),
+    "formulas": (
+        "pendcli formulas -p lecornu",
+        "pendcli formulas --plot figures/   one residual plot per formula",
+    ),
+    "equations": (
+        "pendcli equations -p tisserand",
+        "pendcli equations --status misprint --notes",
+    ),
+    "tradeoff": ("pendcli tradeoff --quick", "pendcli tradeoff integral_pi --plot wp.png"),
+}
+
+
+def _epilog(path: str) -> str | None:
+    """The Examples block of a command's help; "\b" keeps click from rewrapping it."""
+    lines = EXAMPLES.get(path)
+    return "\b\nExamples:\n" + "\n".join(f"  {line}" for line in lines) if lines else None
 
 
 # Options that cannot be given together, refused in every command that has both.
@@ -155,7 +225,6 @@ class PlainCoercion:
     def __init__(self, param: Parameter, annotation: Any) -> None:
         self.param = param
         self.annotation = annotation
-        self.typer_coercion: Any = None
 
     def direct(self, value: Any) -> Any:
         """The converted value, or _UNSET when typer's coercion must decide."""
@@ -177,50 +246,61 @@ class PlainCoercion:
                 return matches[0]
         return _UNSET
 
-    def coerce(self, value: Any, param: Parameter, ctx: Context) -> Any:
+    def coerce(self, value: Any, param: Parameter, ctx: Context | None) -> Any:
         converted = self.direct(value)
         if converted is not _UNSET:
             return converted
-        if self.typer_coercion is None:
-            # typer's own, built as typer builds it (its cache slot then set back to this one).
-            self.param._runtime_param = None  # type: ignore[attr-defined]
-            try:
-                self.typer_coercion = type(self.param).get_runtime_param(self.param)  # type: ignore[attr-defined]
-            finally:
-                self.param._runtime_param = self  # type: ignore[attr-defined]
-        return self.typer_coercion.coerce(value, param=param, ctx=ctx)
+        # typer's own coercion: the public method of the class typer made the parameter with.
+        typer_class: Any = type(param).__mro__[1]
+        return typer_class.get_runtime_param(param).coerce(value, param=param, ctx=ctx)
+
+
+@functools.cache
+def _plain_class(typer_class: Any) -> type:
+    """``typer_class`` (typer.core.TyperOption or TyperArgument) whose public
+    ``get_runtime_param`` answers with a :class:`PlainCoercion`."""
+
+    def get_runtime_param(self: Any) -> PlainCoercion:
+        coercion = self.__dict__.get("pendcli_coercion")
+        if coercion is None:
+            coercion = self.pendcli_coercion = PlainCoercion(self, self.type_descriptor.annotation)
+        return coercion
+
+    name = f"Plain{typer_class.__name__}"
+    return type(name, (typer_class,), {"get_runtime_param": get_runtime_param})
 
 
 def _plain_coercion(params: list[Parameter]) -> None:
-    """Install :class:`PlainCoercion` on every single-valued option or argument typer made."""
+    """Give every single-valued option or argument typer made a :class:`PlainCoercion`."""
+    from typer.core import TyperArgument, TyperOption
+
     for param in params:
-        descriptor = getattr(param, "type_descriptor", None)
-        info = getattr(descriptor, "parameter_info", None)
+        info = getattr(getattr(param, "type_descriptor", None), "parameter_info", None)
         if (
-            descriptor is None
-            or not hasattr(param, "_runtime_param")
+            type(param) not in (TyperOption, TyperArgument)  # (already plain: a subclass)
             or param.multiple
             or param.nargs != 1
             or getattr(info, "parser", None) is not None
             or getattr(info, "min", None) is not None
             or getattr(info, "max", None) is not None
-            or isinstance(getattr(param, "_runtime_param", None), PlainCoercion)
         ):
             continue
-        param._runtime_param = PlainCoercion(param, descriptor.annotation)
+        param.__class__ = _plain_class(type(param))  # type: ignore[arg-type]
 
 
-def _adapt(command: Command, ctx: Context) -> None:
-    """Every command: its whole first line as summary, `--quiet`, exclusive options refused,
-    plain values converted without pydantic (:class:`PlainCoercion`)."""
+def _adapt(command: Command, ctx: Context, path: str = "") -> None:
+    """Every command: its whole first line as summary, examples, `--quiet`, exclusive options
+    refused, plain values converted without pydantic (:class:`PlainCoercion`)."""
     if getattr(command, "pendcli_adapted", False):
         return
-    command.pendcli_adapted = True  # type: ignore[attr-defined]
+    command.pendcli_adapted = True
+    path = f"{path} {command.name}".strip()
     command.short_help = summary(command) or None
+    command.epilog = command.epilog or _epilog(path)
     _plain_coercion(command.get_params(ctx))  # with its --help (the names are ctx's)
     subcommands: dict[str, Command] = getattr(command, "commands", {})
     for sub in subcommands.values():
-        _adapt(sub, ctx)
+        _adapt(sub, ctx, path)
     if subcommands and not getattr(command, "invoke_without_command", False):
         return
     params = command.params
@@ -237,6 +317,7 @@ class LazyGroup(TyperGroup):
 
     def parse_args(self, ctx: Context, args: list[str]) -> list[str]:
         _plain_coercion(self.get_params(ctx))  # --help, --install-completion...
+        self.epilog = self.epilog or _epilog("")
         return super().parse_args(ctx, args)
 
     def list_commands(self, ctx: Context) -> list[str]:
@@ -250,7 +331,7 @@ class LazyGroup(TyperGroup):
             _adapt(command, ctx)
         return command
 
-    def format_commands(self, ctx: Context, formatter: HelpFormatter) -> None:
+    def format_commands(self, ctx: Context, formatter: Any) -> None:
         rows = []
         for name in self.list_commands(ctx):
             if name in LAZY_COMMANDS and name not in self.commands:
@@ -269,6 +350,8 @@ app = typer.Typer(
         "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values."
     ),
     no_args_is_help=True,
+    # -h as well as --help, in every command (click passes it down to each subcommand).
+    context_settings={"help_option_names": ["-h", "--help"]},
     pretty_exceptions_enable=False,
     # --install-completion / --show-completion; completion asks LazyGroup, which loads a
     # subcommand's module only when the word being completed needs it.
@@ -497,7 +580,7 @@ def _invoke(args: list[str]) -> int:
     except PendcliError as exc:
         return _fail(options_as_typed(str(exc), args), 2)
     except typer.TyperException as exc:  # click's usage errors: rephrased, one line
-        if type(exc).__name__ == "NoArgsIsHelpError":  # a bare group: its help, as typer does
+        if _is_bare_group_help(exc):  # a bare group: its help, as typer does
             _write_error(exc.format_message(), prefix="")
             return 2
         return _fail(usage_message(exc, args), 2)
@@ -512,6 +595,16 @@ def _invoke(args: list[str]) -> int:
             raise
         return _fail(f"internal error: {type(exc).__name__}: {exc} (set PENDCLI_DEBUG=1)", 3)
     return code if isinstance(code, int) else 0
+
+
+def _is_bare_group_help(exc: typer.TyperException) -> bool:
+    """A group named without a subcommand (``no_args_is_help``): the error's text is its help."""
+    ctx = getattr(exc, "ctx", None)
+    return (
+        ctx is not None
+        and not isinstance(exc, typer.BadParameter)
+        and exc.format_message() == ctx.get_help()
+    )
 
 
 def _flush_standard_output(code: int) -> int:
@@ -571,7 +664,7 @@ def usage_message(exc: Exception, args: list[str]) -> str:
     param = getattr(exc, "param", None)
     if param is None or not isinstance(exc, typer.BadParameter):
         return _format_message(exc)
-    if type(exc).__name__ == "MissingParameter":
+    if not str(getattr(exc, "message", "")):  # a missing option or argument: click's wording
         return _format_message(exc)
     name = _typed_option(param, args)
     errors = getattr(exc.__cause__, "errors", None)

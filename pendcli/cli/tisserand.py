@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.cli.common import FormatOption, PlotOption, busy, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -126,7 +126,8 @@ def example(
         {"claims": [], "formulas": [], "example": rows},
     )
     if plot is not None:
-        figures.plot_path(plot, a, b)
+        with busy("drawing the figure"):
+            figures.plot_path(plot, a, b)
 
 
 def _example_columns(rows: list[dict[str, Any]]) -> tuple[Column, ...]:
@@ -175,7 +176,8 @@ def series(
     title = f"Tisserand's series (order {order}) against the exact motion, θ1 = {ratio:g}·θ0"
     emit(fmt, [(title, rows, _series_columns())], {"claims": [], "formulas": [], "series": rows})
     if plot is not None:
-        figures.plot_series_error(plot, ratio=ratio)
+        with busy("drawing the figure"):
+            figures.plot_series_error(plot, ratio=ratio)
 
 
 def _series_columns() -> list[Column]:

@@ -95,8 +95,8 @@ def _fitting_table_class() -> type[Table]:
 
         cells: list[list[str]]
 
-        def __rich_console__(self, console, options):  # type: ignore[no-untyped-def]
-            headers = [c.header for c in self.columns]
+        def __rich_console__(self, console, options):
+            headers = [str(c.header) for c in self.columns]
             cells = [[str(h), *col] for h, col in zip(headers, self.cells, strict=True)]
             lower = [max(_longest_token(t) for t in col) for col in cells]
             upper = [max(_longest_line(t) for t in col) for col in cells]
@@ -106,8 +106,9 @@ def _fitting_table_class() -> type[Table]:
             if widths is not None and sum(widths) + padding > options.max_width:
                 yield from _records(self, headers, options.max_width)
                 return
-            for column, width in zip(self.columns, widths or [None] * len(lower), strict=True):
-                column.width = width
+            sizes: list[int | None] = list(widths) if widths else [None] * len(lower)
+            for column, width in zip(self.columns, sizes, strict=True):
+                column.width = width  # None: rich sizes the column (everything fits)
             yield from super().__rich_console__(console, options)
 
     return FittingTable
@@ -132,7 +133,7 @@ def to_rich_table(
     cells = [[_cell(c, r) for c in columns] for r in rows]
     for row_cells in cells:
         table.add_row(*row_cells)
-    table.cells = [list(col) for col in zip(*cells, strict=True)] or [[] for _ in columns]
+    table.cells = [list(col) for col in zip(*cells, strict=True)] or [[] for _ in columns]  # type: ignore[attr-defined]
     return table
 
 
