@@ -398,15 +398,13 @@ EQUATION_ONLY = frozenset(VERDICT_NAMES) - {*CLAIM_VERDICTS, *FORMULA_VERDICTS}
 
 def parse_verdicts(text: str, option: str = "--fail-on") -> frozenset[str]:
     """``"discrepant,fails"`` -> the set of names; an unknown one is a one-line error."""
-    from pendcli.core.errors import PendcliError
+    from pendcli.core.errors import invalid_value
 
     names = [n.strip().casefold() for n in text.split(",") if n.strip()]
     for name in names or [text]:
         if name not in VERDICT_NAMES:
-            raise PendcliError(
-                f"{option}: {name!r} is not a verdict or status; expected one or more of "
-                f"{', '.join(VERDICT_NAMES)} (comma-separated)"
-            )
+            expected = f"one or more of {', '.join(VERDICT_NAMES)} (comma-separated)"
+            raise invalid_value(option, name, expected)
     return frozenset(names)
 
 

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -144,7 +144,7 @@ def family(name: str) -> Family:
     """The family called ``name``; a one-line error naming the valid ones otherwise."""
     known = families()
     if name not in known:
-        raise PendcliError(f"family = {name!r} is not known; valid: {', '.join(known)}")
+        raise invalid_value("family", name, f"one of {', '.join(known)}")
     return known[name]
 
 

@@ -26,9 +26,9 @@ class CheckFormat(StrEnum):
 
 def bad_value(option: str, value: object, expected: str) -> Exception:
     """The one wording of a refused value: ``--option: 'value' ...; expected ...``."""
-    from pendcli.core.errors import PendcliError
+    from pendcli.core.errors import invalid_value
 
-    return PendcliError(f"{option}: {value!r} is not valid; expected {expected}")
+    return invalid_value(option, value, expected)
 
 
 def _paper_value(value: str | None) -> str | None:

@@ -20,6 +20,7 @@ import typer
 from typer.core import TyperGroup
 
 from pendcli.cli.common import CheckFormat, FormatOption, PaperOption, complete_verdicts, emit
+from pendcli.core.errors import PendcliError
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -570,7 +571,6 @@ def run() -> None:
 
 def _invoke(args: list[str]) -> int:
     """Run the app; turn every way it can end into an exit code and at most one stderr line."""
-    from pendcli.core.errors import PendcliError
     from pendcli.core.files import describe_os_error
 
     try:
@@ -578,7 +578,7 @@ def _invoke(args: list[str]) -> int:
         # must not depend on how Python was started (`python -m pendcli`, a test runner).
         code = app(args=args, prog_name="pendcli", standalone_mode=False)
     except PendcliError as exc:
-        return _fail(options_as_typed(str(exc), args), 2)
+        return _fail(_named_as_typed(exc, args), 2)
     except typer.TyperException as exc:  # click's usage errors: rephrased, one line
         if _is_bare_group_help(exc):  # a bare group: its help, as typer does
             _write_error(exc.format_message(), prefix="")
@@ -684,6 +684,21 @@ def _format_message(exc: Exception) -> str:
     format_message = getattr(exc, "format_message", None)
     text = format_message() if callable(format_message) else str(exc)
     return " ".join(str(text).split())
+
+
+def _named_as_typed(exc: PendcliError, args: list[str]) -> str:
+    """The error with its parameter named as the option typed: ``method: 'x' ...`` becomes
+    ``--method: 'x' ...``. Messages without a ``parameter`` go through :func:`options_as_typed`."""
+    message = str(exc)
+    name = exc.parameter
+    if name is None or name.startswith("-") or not message.startswith(name):
+        return options_as_typed(message, args)
+    for arg in args:
+        typed = arg.split("=", 1)[0]
+        key = typed[2:].replace("-", "_")
+        if typed.startswith("--") and key and (key == name or name.startswith(f"{key}_")):
+            return typed + message[len(name) :]
+    return message
 
 
 _LEADING_NAME = re.compile(r"^([A-Za-z_]\w*) (?:=|must|is|changes) ")
