@@ -10,8 +10,8 @@ import sys
 
 import pytest
 import typer
-
 from cli_helpers import assert_clean_error, invoke
+
 from pendcli.cli.main import EXAMPLES, app
 
 

@@ -187,14 +187,18 @@ def _series_columns() -> list[Column]:
         Column("theta0_deg", "θ0 (°)", fmt=_number("theta0_deg", 6), justify="right"),
         Column("theta1_deg", "θ1 (°)", fmt=_number("theta1_deg", 6), justify="right"),
     ]
-    for key, label in (("k1", "k'/k"), ("k2", "k''/k"), ("precession", "Ω")):
+    # The exact value to 6 digits and the series' relative error: the series value itself is
+    # exact·(1 + error), in full in JSON and CSV (an 80-column terminal holds 8 columns).
+    for key, label in (("k1", "k'/k"), ("k2", "k''/k"), ("precession", "Ω (rad)")):
         columns += [
             Column(
-                f"{key}_series", f"{label} series", fmt=_number(f"{key}_series"), justify="right"
+                f"{key}_exact", f"{label} exact", fmt=_number(f"{key}_exact", 6), justify="right"
             ),
-            Column(f"{key}_exact", f"{label} exact", fmt=_number(f"{key}_exact"), justify="right"),
             Column(
-                f"{key}_rel_error", "rel. error", fmt=_relative(f"{key}_rel_error"), justify="right"
+                f"{key}_rel_error",
+                "series error",
+                fmt=_relative(f"{key}_rel_error"),
+                justify="right",
             ),
         ]
     return columns

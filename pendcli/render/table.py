@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from pendcli.render.columns import Column, Row, Section
+from pendcli.render.columns import Column, Row, Section, fmt_float
 
 if TYPE_CHECKING:
     from collections.abc import Iterator
@@ -17,14 +17,21 @@ if TYPE_CHECKING:
     from rich.console import Console, RenderableType
     from rich.table import Table
 
-__all__ = ["TableRenderer", "to_rich_table"]
+__all__ = ["TERMINAL_DIGITS", "TableRenderer", "to_rich_table"]
+
+# Significant digits of a float the terminal shows when its column sets no format of its own.
+TERMINAL_DIGITS = 7
 
 
 def _cell(column: Column, row: Row) -> str:
     """The cell as rich markup: text cut to ``table_max``, styled or escaped."""
     from rich.markup import escape
 
-    text = column.text(row)
+    value = row.get(column.key)
+    if column.fmt is None and isinstance(value, float):
+        text = fmt_float(value, TERMINAL_DIGITS)  # the eye's digits; JSON and CSV keep all 17
+    else:
+        text = column.text(row)
     if column.table_max is not None and len(text) > column.table_max:
         text = text[: column.table_max - 1].rstrip() + "…"
     style = column.style(text) if column.style is not None else None
