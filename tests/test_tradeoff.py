@@ -67,7 +67,7 @@ def test_families_are_collected_from_every_paper_in_order():
 
 
 def test_unknown_family_names_the_valid_ones():
-    with pytest.raises(PendcliError, match=r"family: 'nope' is not valid; expected one of conical, "):
+    with pytest.raises(PendcliError, match=r"family: 'nope' is not valid; expected one of conical"):
         tradeoff.family("nope")
 
 
