@@ -111,7 +111,7 @@ CLAIM_COLUMNS: tuple[Column, ...] = (
     Column("verdict", "verdict", style=_verdict_style),
     # Notes can run to paragraphs: the terminal table shows their start, JSON, CSV, Markdown
     # and the report show them whole.
-    Column("note", "note", table_max=160),
+    Column("note", "note"),  # whole: the table wraps prose at spaces
 )
 
 FORMULA_COLUMNS: tuple[Column, ...] = (
@@ -127,7 +127,7 @@ FORMULA_COLUMNS: tuple[Column, ...] = (
         justify="right",
     ),
     Column("verdict", "verdict", style=_verdict_style),
-    Column("note", "note", table_max=160),
+    Column("note", "note"),  # whole: the table wraps prose at spaces
 )
 
 
