@@ -415,8 +415,8 @@ EquationsOption = Annotated[
     bool | None,
     typer.Option(
         "--equations/--no-equations",
-        help="Check every numbered equation too (the ledger; about 12 s of sympy and ODE "
-        "work). Default: only with --out.",
+        help="Check every numbered equation too (the ledger: several seconds of sympy and "
+        "ODE work). Default: only with --out.",
     ),
 ]
 
