@@ -1,4 +1,4 @@
-"""Regenerate the README's generated sections from the code (`make regen`).
+"""Regenerate the README's (and docs/schema.md's) generated sections from the code (`make regen`).
 
 The README shows real output and the real JSON schema; this module produces both, so nothing
 there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
@@ -98,6 +98,12 @@ SECTIONS: dict[str, Callable[[], str]] = {
     "schema": schema_section,
     "ledger": ledger_section,
 }
+# marker name -> the file holding its markers, relative to the README's folder
+SECTION_FILES: dict[str, str] = {
+    "sample": "README.md",
+    "schema": "docs/schema.md",
+    "ledger": "README.md",
+}
 
 
 def splice(readme: str, section: str, name: str = "sample") -> str:
@@ -111,11 +117,20 @@ def splice(readme: str, section: str, name: str = "sample") -> str:
 
 
 def main(argv: list[str]) -> int:
-    path = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
+    readme = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
+    stale = 0
+    for file in dict.fromkeys(SECTION_FILES.values()):
+        path = readme if file == "README.md" else readme.parent / file
+        stale += _regenerate(path, [n for n, f in SECTION_FILES.items() if f == file], argv)
+    return 1 if stale else 0
+
+
+def _regenerate(path: Path, names: list[str], argv: list[str]) -> int:
+    """Rewrite (or with ``--check`` compare) the sections ``names`` of ``path``; 1 if stale."""
     text = path.read_text(encoding="utf-8")
     new = text
-    for name, make in SECTIONS.items():
-        new = splice(new, make(), name)
+    for name in names:
+        new = splice(new, SECTIONS[name](), name)
     if "--check" in argv:
         if new != text:
             print(f"{path}: a generated section is stale; run `make regen`", file=sys.stderr)
