@@ -42,7 +42,7 @@ lint: $(STAMP)
 	$(BIN)/mypy pendcli
 
 bench: $(STAMP)
-	$(BIN)/python -m pendcli.bench --write README.md
+	$(BIN)/python -m pendcli.bench --write docs/benchmarks.md
 
 # The API page (docs/api/pendcli.html): pdoc over the names `import pendcli` offers. They load
 # lazily, so they are fetched first (pdoc reads the module's __dict__).
