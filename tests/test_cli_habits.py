@@ -37,6 +37,11 @@ def test_every_command_takes_dash_h_and_shows_examples(path):
     assert f"pendcli {path}" in out.split("Examples:")[1]
 
 
+def test_every_example_fits_80_columns():
+    """click indents the Examples block by four: each line stays within 80 columns."""
+    assert [e for lines in EXAMPLES.values() for e in lines if len(e) + 4 > 80] == []
+
+
 def test_the_top_level_help_has_examples():
     code, out, _ = invoke("-h")
     assert code == 0

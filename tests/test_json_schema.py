@@ -1,4 +1,4 @@
-"""Real JSON output against the one schema (pendcli.core.schema) docs/schema.md is generated from."""
+"""Real JSON output against the one schema (pendcli.core.schema) behind docs/schema.md."""
 
 from __future__ import annotations
 

@@ -90,9 +90,9 @@ def summary(command: Command) -> str:
 # Examples shown at the end of each command's --help (the command path after `pendcli`).
 EXAMPLES: dict[str, tuple[str, ...]] = {
     "": (
-        "pendcli reproduce                      every paper, published against recomputed",
-        "pendcli reproduce -p lecornu --notes   one paper, every column",
-        "pendcli check -f junit > check.xml     CI: a testcase per claim, formula, table",
+        "pendcli reproduce                     all papers: printed against recomputed",
+        "pendcli reproduce -p lecornu --notes  one paper, every column",
+        "pendcli check -f junit > check.xml    CI: a testcase per claim and table",
     ),
     "list": ("pendcli list -p tisserand", "pendcli list -f csv > claims.csv"),
     "reproduce": (
@@ -104,7 +104,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "check": (
         "pendcli check",
         "pendcli check -f junit > check.xml",
-        "pendcli check --update               then review and commit tables/regenerated",
+        "pendcli check --update               then review and commit the tables",
     ),
     "tisserand claims": ("pendcli tisserand claims", "pendcli tisserand claims -f json"),
     "tisserand example": (
@@ -135,7 +135,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "charbonnier integral": (
         "pendcli charbonnier integral 4              I_4(π) = 16/15",
         "pendcli charbonnier integral 1000 -x 1.5",
-        "pendcli charbonnier integral 5 --tol 1e-10  the cheapest method that meets it",
+        "pendcli charbonnier integral 5 --tol 1e-10  the cheapest method for it",
     ),
     "formulas": (
         "pendcli formulas -p lecornu",
