@@ -15,7 +15,7 @@ OUT ?= out
 # not depend on which Python made the venv.
 LOCK_FLAGS := --universal --fork-strategy fewest --python-version 3.11 --generate-hashes -q
 
-.PHONY: install reproduce test test-browser check regen lint bench lock clean
+.PHONY: install reproduce test test-browser check regen lint bench lock api clean
 
 install: $(STAMP)
 
@@ -67,7 +67,16 @@ lint: $(STAMP)
 	$(BIN)/mypy pendcli
 
 bench: $(RUNTIME)
-	$(BIN)/python -m pendcli.bench --write README.md
+	$(BIN)/python -m pendcli.bench --write docs/benchmarks.md
+
+# The API page (docs/api/pendcli.html): pdoc over the names `import pendcli` offers. They load
+# lazily, so they are fetched first (pdoc reads the module's __dict__).
+api: $(STAMP)
+	$(UV) pip install --quiet --python $(BIN)/python -e '.[docs]'
+	$(BIN)/python -c "import pathlib, pdoc, pdoc.render, pendcli; \
+	  [getattr(pendcli, n) for n in pendcli.__all__ if n != '__version__']; \
+	  pdoc.render.configure(search=False, show_source=False); \
+	  pdoc.pdoc('pendcli', 'pendcli.api', output_directory=pathlib.Path('docs/api'))"
 
 clean:
 	rm -rf $(OUT) .pytest_cache build *.egg-info

@@ -1,5 +1,19 @@
 """pendcli: regenerate the numerical claims of three historical papers on the pendulum.
 
+The Python API (every name in ``__all__``, each documented)::
+
+    >>> import pendcli
+    >>> pendcli.integral_pi(3)            # Charbonnier's I_3(π) = ∫₀^π sin⁴ = 3π/8
+    1.1780972450961724
+    >>> pendcli.integral_pi_exact(3)      # 3/8 · π**1, exactly
+    ExactIntegral(rational=Fraction(3, 8), pi_power=1)
+    >>> pendcli.bessel_zeros(1, 2)        # Lecornu's zeros of J1
+    array([3.83170597, 7.01558667])
+    >>> rows = pendcli.reproduce(paper="charbonnier").claims["charbonnier"]
+
+Names load on first use (PEP 562): ``import pendcli`` imports none of scipy, mpmath, sympy
+or matplotlib, and ``pendcli --help`` stays instant.
+
 Layout: :mod:`pendcli.core` (printed numbers, verdicts, published tables, the claim and
 formula engines, errors), :mod:`pendcli.render` (one renderer per output format, knowing
 nothing of pendulums), :mod:`pendcli.numerics` (Bessel zeros, planar and spherical
@@ -7,11 +21,74 @@ pendulum done exactly), :mod:`pendcli.papers` (one package per paper: its model,
 formulas, figures and speed/accuracy families) and :mod:`pendcli.cli`, a thin adapter.
 """
 
+from __future__ import annotations
 
-# The version has one source, pyproject.toml, read through the installed metadata.
-def __getattr__(name: str) -> str:
+import importlib
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from pendcli.api import (
+        ExactIntegral,
+        bessel_zeros,
+        check,
+        integral_pi,
+        integral_pi_exact,
+        period,
+        period_ratio,
+    )
+    from pendcli.core.claims import PAPERS
+    from pendcli.core.errors import PendcliError
+    from pendcli.regression import Drift
+    from pendcli.reproduce import ReproduceResult
+
+# name -> the module that defines it (imported on first access)
+_LAZY = {
+    "ExactIntegral": "pendcli.api",
+    "bessel_zeros": "pendcli.api",
+    "check": "pendcli.api",
+    "integral_pi": "pendcli.api",
+    "integral_pi_exact": "pendcli.api",
+    "period": "pendcli.api",
+    "period_ratio": "pendcli.api",
+    "PAPERS": "pendcli.core.claims",
+    "PendcliError": "pendcli.core.errors",
+    "Drift": "pendcli.regression",
+    "ReproduceResult": "pendcli.reproduce",
+}
+
+__all__ = [
+    "PAPERS",
+    "Drift",
+    "ExactIntegral",
+    "PendcliError",
+    "ReproduceResult",
+    "__version__",
+    "bessel_zeros",
+    "check",
+    "integral_pi",
+    "integral_pi_exact",
+    "period",
+    "period_ratio",
+    "reproduce",
+]
+
+
+def __getattr__(name: str) -> object:
+    # The version has one source, pyproject.toml, read through the installed metadata.
     if name == "__version__":
         from importlib.metadata import version
 
         return version("pendcli")
-    raise AttributeError(name)
+    if name == "reproduce":
+        # The submodule pendcli.reproduce is also the API function (it is callable): the import
+        # system binds the package attribute to the module whatever this returned.
+        return importlib.import_module("pendcli.reproduce")
+    if name in _LAZY:
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+        globals()[name] = value  # later lookups (and doc tools reading __dict__) find it
+        return value
+    raise AttributeError(f"module 'pendcli' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__})

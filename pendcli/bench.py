@@ -1,6 +1,6 @@
 """Benchmarks: start-up times and the published work-precision tables (issue 6).
 
-``python -m pendcli.bench --write README.md`` measures, in one run and on this machine,
+``python -m pendcli.bench --write docs/benchmarks.md`` measures, in one run and on this machine,
 
 * ``pendcli --help`` against ``python -c "import typer"`` (target: within 1.3x),
 * ``pendcli reproduce --format json`` against ``python -c "import scipy.special,

@@ -1,4 +1,4 @@
-"""Regenerate the README's generated sections from the code (`make regen`).
+"""Regenerate the README's (and docs/schema.md's) generated sections from the code (`make regen`).
 
 The README shows real output and the real JSON schema; this module produces both, so nothing
 there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
@@ -83,8 +83,8 @@ def ledger_section() -> str:
     from pendcli.core.claims import PAPERS
     from pendcli.core.ledger import coverage, equation_rows, labels_in_text
     from pendcli.core.ledger_check import STATUSES
-    from pendcli.core.tables import paper_text
     from pendcli.core.ledger_coverage import ledger_text_coverage
+    from pendcli.core.tables import paper_text
 
     counts = coverage(equation_rows(PAPERS))
     rows: list[Row] = []
@@ -110,6 +110,12 @@ SECTIONS: dict[str, Callable[[], str]] = {
     "schema": schema_section,
     "ledger": ledger_section,
 }
+# marker name -> the file holding its markers, relative to the README's folder
+SECTION_FILES: dict[str, str] = {
+    "sample": "README.md",
+    "schema": "docs/schema.md",
+    "ledger": "README.md",
+}
 
 
 def splice(readme: str, section: str, name: str = "sample") -> str:
@@ -123,33 +129,40 @@ def splice(readme: str, section: str, name: str = "sample") -> str:
 
 
 def main(argv: list[str]) -> int:
-    """Rewrite (``--check``: compare) the README's sections; ``--tables``: with the committed
-    tables regenerated from the same run, written as one set (``make regen``)."""
-    path = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
+    """Rewrite (``--check``: compare) the generated sections of the README and docs/schema.md;
+    ``--tables``: with the committed tables regenerated from the same run, all written as one
+    set (``make regen``)."""
+    readme = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
     from pendcli.core.tables import read_table_text
 
-    text = read_table_text(path, "README")
     result = _reproduce_all()
-    makers = {**SECTIONS, "sample": lambda: sample_section(result)}  # one run for both
-    new = text
-    for name, make in makers.items():
-        new = splice(new, make(), name)
+    makers = {**SECTIONS, "sample": lambda: sample_section(result)}  # one run for all
+    old: dict[Path, str] = {}
+    new: dict[Path, str] = {}
+    for file in dict.fromkeys(SECTION_FILES.values()):
+        path = readme if file == "README.md" else readme.parent / file
+        old[path] = text = read_table_text(path, file)
+        for name in (n for n, f in SECTION_FILES.items() if f == file):
+            text = splice(text, makers[name](), name)
+        new[path] = text
     if "--check" in argv:
-        if new != text:
-            print(f"{path}: a generated section is stale; run `make regen`", file=sys.stderr)
-            return 1
-        return 0
+        stale = [str(p) for p in new if new[p] != old[p]]
+        for stale_path in stale:
+            print(f"{stale_path}: a generated section is stale; run `make regen`", file=sys.stderr)
+        return 1 if stale else 0
     if "--tables" in argv:
         from pendcli.regression import regenerated_tables, rewrite_with
 
         tables = regenerated_tables(result)
-        removed = rewrite_with(tables, {path: new})
+        removed = rewrite_with(tables, new)
         gone = f"; removed {', '.join(removed)}" if removed else ""
-        print(f"rewrote {len(tables)} tables and {path}{gone}", file=sys.stderr)
+        names = ", ".join(str(p) for p in new)
+        print(f"rewrote {len(tables)} tables and {names}{gone}", file=sys.stderr)
         return 0
-    from pendcli.core.files import atomic_write
+    from pendcli.core.files import write_set
 
-    atomic_write(path, new)  # the README is committed: never half written
+    changes: dict[Path, str | bytes | None] = {p: t for p, t in new.items() if t != old[p]}
+    write_set(changes)  # committed: never half written
     return 0
 
 

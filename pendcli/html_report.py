@@ -950,18 +950,20 @@ def chromium() -> str | None:
     return next((p for p in map(shutil.which, CHROMIUM_NAMES) if p), None)
 
 
-def print_pdfs(out: Path | None) -> list[Path]:
-    """Print ``out/report.html`` and each paper page to PDF beside it (the print stylesheet
-    makes a paper page an annotated edition on A4), with headless Chromium."""
+def require_chromium() -> str:
+    """The headless browser that prints the pages; one line naming the package where absent."""
     from pendcli.core.errors import PendcliError
 
-    if out is None:
-        raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
     browser = chromium()
     if browser is None:
-        raise PendcliError(
-            "--pdf needs Chromium (apt-get install chromium); the HTML pages were written"
-        )
+        raise PendcliError("--pdf needs Chromium (apt-get install chromium); nothing was written")
+    return browser
+
+
+def print_pdfs(out: Path) -> list[Path]:
+    """Print ``out/report.html`` and each paper page to PDF beside it (the print stylesheet
+    makes a paper page an annotated edition on A4), with headless Chromium."""
+    browser = require_chromium()
     pages = [out / "report.html", *sorted((out / "papers").glob("*.html"))]
     return [_print_pdf(browser, page) for page in pages if page.is_file()]
 

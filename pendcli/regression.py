@@ -16,7 +16,6 @@ moves a result in its last bits, does not fail CI, while any real change does.
 from __future__ import annotations
 
 import csv
-import dataclasses
 import io
 import math
 from dataclasses import dataclass
@@ -174,7 +173,7 @@ def _check_row(
 
 def _number(text: str, where: str) -> float | None:
     """A numeric cell: empty (no value) or a float; ``inf``/``nan``/``1e400`` parse, and
-    :func:`_cell_drift` treats them as changes."""
+    :func:`cell_drift` treats them as changes."""
     if text == "":
         return None
     try:
@@ -198,13 +197,13 @@ def compare_tables(
         drifts.append(Drift(name, cid, "(row)", now[cid].get("published", ""), "absent", "new", ""))
     for cid in [c for c in now if c in then]:
         for col in columns[1:]:
-            drift = _cell_drift(name, cid, col, then[cid], now[cid])
+            drift = cell_drift(name, cid, col, then[cid], now[cid])
             if drift is not None:
                 drifts.append(drift)
     return drifts
 
 
-def _cell_drift(
+def cell_drift(
     name: str, cid: str, col: str, then: dict[str, str], now: dict[str, str]
 ) -> Drift | None:
     """How one cell moved beyond its column's tolerance (:data:`TOLERANCES`), or None."""
@@ -253,20 +252,30 @@ def _read_committed(path: Path) -> str:
         raise PendcliError(f"cannot read {path}: {exc.strerror or type(exc).__name__}") from None
 
 
-def run_check(update: bool = False, quiet: bool = False, root: Path | None = None) -> int:
-    """Regenerate every table; compare (or, with ``update``, rewrite). Returns the exit code."""
+def run_check(
+    update: bool = False, quiet: bool = False, root: Path | None = None, fmt: str = "table"
+) -> int:
+    """Regenerate every table; compare (or, with ``update``, rewrite). Returns the exit code.
+
+    ``fmt``: ``table`` (the drift table), ``json`` or ``junit`` (a testcase per claim,
+    formula and table), on standard output; see :mod:`pendcli.check_report`.
+    """
     from pendcli.core.console import console
     from pendcli.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"
     _load_ledgers(root)
-    result = reproduce_all(PAPERS, formulas=True, quiet=quiet)
+    result = reproduce_all(PAPERS, formulas=True, quiet=quiet or fmt != "table")
     tables = regenerated_tables(result)
     out = console()
     if update:
+        from pendcli.check_report import changed_cells
+
+        with locked(_lock_file(folder), shared=True):
+            changes = changed_cells(folder, tables)
         removed = _rewrite(folder, tables)
         if not quiet:
-            out.print(f"rewrote {len(tables)} tables in {folder}")
+            _print_changes(out, changes, folder, len(tables))
             if removed:
                 out.print(
                     f"removed {len(removed)} table(s) no longer produced: {', '.join(removed)}"
@@ -274,16 +283,15 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
         return 0
     with locked(_lock_file(folder), shared=True):
         drifts = find_drifts(folder, tables)
-    if drifts:
-        _print_drifts(out, drifts)
-        return 1
-    if not quiet:
-        n = sum(len(v) for v in result.claims.values())
-        f = sum(len(v) for v in result.formulas.values())
-        out.print(
-            f"check passed: {len(tables)} tables, {n} claims, {f} formulas match "
-            f"tables/regenerated within tolerance"
-        )
+    _report(out, fmt, drifts, tables, folder, quiet)
+    if drifts or quiet or fmt != "table":
+        return 1 if drifts else 0
+    n = sum(len(v) for v in result.claims.values())
+    f = sum(len(v) for v in result.formulas.values())
+    out.print(
+        f"check passed: {len(tables)} tables, {n} claims, {f} formulas match "
+        f"tables/regenerated within tolerance"
+    )
     return 0
 
 
@@ -346,10 +354,53 @@ def rewrite_with(
     return removed
 
 
-def _print_drifts(out: Console, drifts: list[Drift]) -> None:
+def _report(
+    out: Console, fmt: str, drifts: list[Drift], tables: dict[str, str], folder: Path, quiet: bool
+) -> None:
+    """The drifts in ``fmt`` on standard output; under GitHub Actions also one annotation per
+    drift (on stderr when stdout carries a JSON or JUnit document)."""
+    import sys
+
+    from pendcli import check_report
+
+    if fmt == "json":
+        sys.stdout.write(check_report.to_json(drifts, tables))
+    elif fmt == "junit":
+        sys.stdout.write(check_report.to_junit(drifts, tables))
+    elif drifts:
+        _print_drifts(out, drifts)
+    if drifts and check_report.in_github_actions():
+        stream = sys.stdout if fmt == "table" else sys.stderr
+        for line in check_report.github_annotations(drifts, folder):
+            print(line, file=stream)
+
+
+def _by_table(out: Console, rows: list[dict[str, str]], keys: tuple[str, ...], title: str) -> None:
+    """One table per regenerated table (its name as title): the columns then fit a terminal."""
     from pendcli.render.table import to_rich_table
 
-    rows = [dataclasses.asdict(d) for d in drifts]
-    cols = [Column(k, k) for k in (f.name for f in dataclasses.fields(Drift))]
-    out.print(to_rich_table(rows, cols, title=f"check FAILED: {len(drifts)} drift(s)"))
+    out.print(title)
+    for name in dict.fromkeys(r["table"] for r in rows):
+        mine = [r for r in rows if r["table"] == name]
+        cols = [Column(k, "was" if k == "committed" else k) for k in keys]
+        out.print(to_rich_table(mine, cols, title=name))
+
+
+def _print_drifts(out: Console, drifts: list[Drift]) -> None:
+    from pendcli.check_report import drift_rows
+
+    keys = ("id", "column", "published", "committed", "now", "difference", "tolerance")
+    _by_table(out, drift_rows(drifts), keys, f"check FAILED: {len(drifts)} drift(s)")
     out.print("If the change is intended, run `pendcli check --update` (make regen) and commit.")
+
+
+def _print_changes(out: Console, changes: list[Drift], folder: Path, count: int) -> None:
+    """`check --update`: every value it rewrote ("noise": within tolerance), then the count."""
+    from pendcli.check_report import drift_rows
+
+    if changes:
+        keys = ("id", "column", "committed", "now", "difference")
+        _by_table(out, drift_rows(changes), keys, f"check --update: {len(changes)} change(s)")
+    else:
+        out.print("no value changed")
+    out.print(f"rewrote {count} tables in {folder}")

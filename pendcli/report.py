@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
-import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -187,9 +186,11 @@ def check_out_folder(out: Path | str) -> Path:
     parent = path.resolve().parent
     while not parent.exists():
         parent = parent.parent
-    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
-        problem = "is not a folder" if not parent.is_dir() else "is not writable"
-        raise PendcliError(f"cannot create output folder {text!r}: {parent} {problem}")
+    from pendcli.core.plotting import cannot_create_in
+
+    problem = "is not a folder" if not parent.is_dir() else cannot_create_in(parent)
+    if problem is not None:
+        raise PendcliError(f"--out: cannot create folder {text!r}: {parent}: {problem}")
     return path
 
 
@@ -232,8 +233,10 @@ def write_report(
     quiet: bool = True,
     measure: bool = False,
     jobs: int | None = None,
+    pdf: bool = False,
 ) -> list[Path]:
-    """Write report.md, claims.json, the per-paper CSVs and every figure into ``out``.
+    """Write report.md, claims.json, the per-paper CSVs and every figure into ``out`` (and,
+    with ``pdf``, each HTML page printed to PDF by headless Chromium).
 
     The whole folder is built beside ``out`` and swapped in at the end, under ``out``'s lock
     (a concurrent run is refused): files of an earlier report that this one does not write
@@ -246,19 +249,28 @@ def write_report(
     from pendcli.core.tables import paper_text
 
     target = check_out_folder(out)
+    if pdf:  # refused before anything is written, not after
+        from pendcli.html_report import require_chromium
+
+        require_chromium()
     for key in result.papers:  # the HTML pages show them: missing or empty is an error
         paper_text(key)
     written: list[Path] = []
 
     def fill(folder: Path) -> None:
-        written.extend(_fill(result, folder, quiet, measure, jobs))
+        written.extend(_fill(result, folder, quiet, measure, jobs, pdf))
 
     replace_owned_folder(target, fill, "--out")
     return [target / p for p in (*written, Path(MANIFEST))]
 
 
 def _fill(
-    result: ReproduceResult, folder: Path, quiet: bool, measure: bool, jobs: int | None
+    result: ReproduceResult,
+    folder: Path,
+    quiet: bool,
+    measure: bool,
+    jobs: int | None,
+    pdf: bool = False,
 ) -> list[Path]:
     """Every file of the report, written into ``folder``; their paths relative to it."""
     from pendcli.regression import regenerated_tables
@@ -279,7 +291,13 @@ def _fill(
     lines += _tradeoff_section(writer, tradeoff, figures.get("tradeoff", []))
     lines += _environment_section()
     writer.text("report.md", "\n".join(lines))
-    writer.add(_html_pages(result, folder, figures))
+    pages = _html_pages(result, folder, figures)
+    writer.add(pages)
+    if pdf:  # inside the folder being built, so the manifest lists the PDFs too
+        from pendcli.html_report import print_pdfs
+
+        writer.status(f"printing {len(pages)} pages to PDF")
+        writer.add(print_pdfs(folder))
     return writer.written
 
 

@@ -1,9 +1,15 @@
-"""Run every claim (and formula check) of the chosen papers: the data behind `reproduce`."""
+"""Run every claim (and formula check) of the chosen papers: the data behind `reproduce`.
+
+The module is callable: ``pendcli.reproduce(paper="lecornu")`` is
+:func:`pendcli.api.reproduce` (the package attribute ``reproduce`` is this module, since
+Python binds a submodule to its package's attribute of the same name).
+"""
 
 from __future__ import annotations
 
 import functools
 import sys
+import types
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
@@ -15,7 +21,7 @@ from pendcli.papers import formula_checks
 from pendcli.render.columns import Column, Row, Section
 from pendcli.summary import disagrees
 
-__all__ = ["ReproduceResult", "reproduce_all"]
+__all__ = ["VERDICT_NAMES", "ReproduceResult", "parse_verdicts", "reproduce_all"]
 
 
 @dataclass
@@ -142,6 +148,11 @@ class ReproduceResult:
                     row[f"equations {status}"] = sum(r["status"] == status for r in eqs)
             out.append(row)
         return out
+
+    def rows_with(self, names: frozenset[str]) -> list[dict[str, object]]:
+        """Every claim, formula or equation row whose verdict or status is in ``names``."""
+        rows = [*self.claim_dicts(), *self.formula_dicts(), *self.equation_dicts()]
+        return [r for r in rows if str(r.get("verdict", r.get("status"))) in names]
 
     def tally(self, key: str) -> str:
         """``"12 agrees, 1 truncated, 5 formula holds"``: the verdicts a paper reached."""
@@ -314,3 +325,41 @@ def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
         result.equations.setdefault(key, []).extend(rows)
     else:
         result.stability = value
+
+
+def _verdict_names() -> tuple[str, ...]:
+    from pendcli.core.ledger_check import STATUSES
+
+    names = [*CLAIM_VERDICTS, *FORMULA_VERDICTS, *STATUSES]
+    return tuple(dict.fromkeys(str(n) for n in names))
+
+
+# Every verdict (claims, formulas) and status (equations) a row can have, best first.
+VERDICT_NAMES: tuple[str, ...] = _verdict_names()
+# Statuses only the equation ledger gives: asking to fail on one runs the ledger.
+EQUATION_ONLY = frozenset(VERDICT_NAMES) - {*CLAIM_VERDICTS, *FORMULA_VERDICTS}
+
+
+def parse_verdicts(text: str, option: str = "--fail-on") -> frozenset[str]:
+    """``"discrepant,fails"`` -> the set of names; an unknown one is a one-line error."""
+    from pendcli.core.errors import invalid_value
+
+    names = [n.strip().casefold() for n in text.split(",") if n.strip()]
+    for name in names or [text]:
+        if name not in VERDICT_NAMES:
+            expected = f"one or more of {', '.join(VERDICT_NAMES)} (comma-separated)"
+            raise invalid_value(option, name, expected)
+    return frozenset(names)
+
+
+class _CallableModule(types.ModuleType):
+    def __call__(
+        self, paper: str | None = None, formulas: bool = True, equations: bool = False
+    ) -> ReproduceResult:
+        """Recompute and judge every printed number: see :func:`pendcli.api.reproduce`."""
+        from pendcli.api import reproduce
+
+        return reproduce(paper, formulas=formulas, equations=equations)
+
+
+sys.modules[__name__].__class__ = _CallableModule

@@ -83,10 +83,16 @@ def disagrees(row: Row) -> bool:
     )
 
 
+def _printed(row: Row) -> str:
+    from pendcli.render.views import printed_for_display
+
+    return printed_for_display(row["published"])
+
+
 def compact_claim_columns() -> tuple[Column, ...]:
     return (
         Column("id", "claim", fmt=_short_id),
-        Column("published", "printed", justify="right"),
+        Column("published", "printed", fmt=_printed, justify="right"),
         Column("recomputed", "recomputed", fmt=_recomputed, justify="right"),
         Column("verdict", "verdict", style=_style),
         Column("cause", "cause", fmt=_cause),

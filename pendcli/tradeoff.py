@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -144,7 +144,7 @@ def family(name: str) -> Family:
     """The family called ``name``; a one-line error naming the valid ones otherwise."""
     known = families()
     if name not in known:
-        raise PendcliError(f"family = {name!r} is not known; valid: {', '.join(known)}")
+        raise invalid_value("family", name, f"one of {', '.join(known)}")
     return known[name]
 
 
@@ -414,6 +414,47 @@ def _on_scale(error: float) -> tuple[float, str]:
     return error, ""
 
 
+# Legend names of the methods (the keys stay the --method names and the tables' column).
+_METHOD_NAMES: dict[str, str] = {
+    "auto": "pendcli's default (mpmath first zeros, McMahon beyond)",
+    "mcmahon": "McMahon's expansion",
+    "mcmahon-newton": "McMahon + Halley steps",
+    "mpmath": "mpmath besseljzero",
+    "scipy": "scipy jn_zeros",
+    "first-order": "Charbonnier's first-order formula (no. 16)",
+    "ode-DOP853": "ODE, solve_ivp DOP853",
+    "ode-LSODA": "ODE, solve_ivp LSODA",
+    "ode-RK45": "ODE, solve_ivp RK45",
+    "ode": "ODE, solve_ivp",
+    "quad": "scipy quad",
+    "asymptotic": "asymptotic series of Γ ratios",
+    "exact-rational": "exact rationals (recurrence)",
+    "gammaln": "exp of a gammaln difference",
+    "integral_pi": "pendcli's default (Wallis, double-double)",
+    "products": "the printed products, in floats",
+    "recurrence": "the printed recurrence, in floats",
+    "scipy-beta": "scipy beta(½, m)",
+    "betainc": "scipy betainc, sin²x rounded",
+    "fast": "scipy betainc + rounding correction",
+    "pendcli": "pendcli's default (mpmath betainc, 40 digits)",
+    "bessel": "Bessel solution (10)",
+    "agm": "pendcli's default (AGM to convergence)",
+    "agm-fixed": "AGM, fixed iterations",
+    "ellipk": "scipy ellipk",
+    "ellipkm1": "scipy ellipkm1",
+}
+_FAMILY_METHOD_NAMES = {
+    ("conical", "series"): "Tisserand's series",
+    ("bessel_zeros", "series"): "Lecornu's ascending series",
+    ("planar_period", "series"): "series in sin²(θ0/2)",
+}
+
+
+def method_name(family: str, method: str) -> str:
+    """What a method is, for a legend: ``fast`` -> ``scipy betainc + rounding correction``."""
+    return _FAMILY_METHOD_NAMES.get((family, method)) or _METHOD_NAMES.get(method, method)
+
+
 def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
     """One panel: log error against log time, one line per method (failed points left out);
     errors outside ERROR_RANGE sit on its edge as ▲ (above) or ▼ (below, exact)."""
@@ -429,7 +470,7 @@ def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
             "o-" if len(pts) > 1 else "s",
             ms=4,
             markevery=inside,
-            label=method,
+            label=method_name(name, method),
         )
         for marker in ("^", "v"):
             off = [

@@ -255,9 +255,16 @@ def test_pdf_printing_refuses_without_out_or_without_chromium(
 ) -> None:
     from pendcli import html_report
     from pendcli.core.errors import PendcliError
+    from tests.cli_helpers import invoke
 
-    with pytest.raises(PendcliError, match="--pdf needs --out"):
-        html_report.print_pdfs(None)
+    code, _, err = invoke("reproduce", "-p", "tisserand", "--pdf")
+    assert code == 2 and "--pdf needs --out" in err
     monkeypatch.setattr(shutil, "which", lambda _: None)
     with pytest.raises(PendcliError, match=r"needs Chromium \(apt-get install chromium\)"):
         html_report.print_pdfs(tmp_path)
+    out = tmp_path / "out"
+    code, _, err = invoke(
+        "reproduce", "-p", "tisserand", "--no-formulas", "--out", str(out), "--pdf"
+    )
+    assert code == 2 and "needs Chromium" in err
+    assert not out.exists()  # refused before anything was written

@@ -1,4 +1,4 @@
-"""Real JSON output against the one schema (pendcli.core.schema) the README is generated from."""
+"""Real JSON output against the one schema (pendcli.core.schema) behind docs/schema.md."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from cli_helpers import invoke
 from pendcli.core import schema
 from pendcli.core.claims import PAPERS, ClaimRow, FormulaRow
 
-README = Path(__file__).resolve().parent.parent / "README.md"
+SCHEMA_DOC = Path(__file__).resolve().parent.parent / "docs" / "schema.md"
 
 
 def _problems(kind: schema.RowKind, rows: list) -> list[str]:
@@ -92,10 +92,10 @@ def test_check_row_refuses_a_verdict_outside_the_list():
     ]
 
 
-def test_readme_schema_section_is_generated_from_the_schema():
+def test_docs_schema_section_is_generated_from_the_schema():
     from pendcli.docs import schema_section
 
-    text = README.read_text(encoding="utf-8")
+    text = SCHEMA_DOC.read_text(encoding="utf-8")
     between = text.split("<!-- schema:start -->\n", 1)[1].split("\n<!-- schema:end -->", 1)[0]
     assert between == schema_section()
     for kind in schema.DOCUMENT.values():

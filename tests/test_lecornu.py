@@ -563,8 +563,12 @@ def test_example_figure_draws_the_printed_points(axes, rows):
     passages = _line(axes, "vertical passages from printed lengths")
     lengths = np.array([CLAIMS[f"lecornu.j1_lengths.{k}"].number.value for k in range(1, 7)])
     np.testing.assert_allclose(passages.get_xdata(), (L - lengths) / B)
-    assert axes.get_yscale() == "symlog"
-    assert axes.get_ylabel() == "θ/θ0 (symlog)"
+    # asinh: smooth through ±1, where symlog's corner drew kinks into the curves
+    assert axes.get_yscale() == "asinh"
+    assert axes.get_ylabel() == "θ/θ0 (asinh scale)"
+    # the from-rest curve (to -1e4 as L -> 0) is clipped, and the axis says so
+    assert -100 < axes.get_ylim()[0] < -47
+    assert any("clipped" in t.get_text() for t in axes.texts)
     assert "1 m long at t = 0, shortening at 0,35 m/s" in axes.get_xlabel()
 
 
@@ -644,3 +648,11 @@ def test_example_plot_curve_for_other_inputs(axes):
         expected = np.array([theta(float(ti)) for ti in t])
     np.testing.assert_allclose(y, expected, rtol=0, atol=1e-10 * np.max(np.abs(expected)))
     assert axes.get_xlabel() == "t (s), L = 2 m at t = 0, shortening at 0.5 m/s, g = 9.8"
+
+
+def test_difference_figure_draws_every_discrepant_claim(rows):
+    """The printed-minus-recomputed bars include every discrepant claim (the deviations off
+    by up to ~40 units too: the axis is symmetric-log beyond ±1)."""
+    drawn = {cid for _, ids in figures.GROUPS for cid in ids}
+    discrepant = {cid for cid, r in rows.items() if r.verdict == "discrepant"}
+    assert discrepant <= drawn, sorted(discrepant - drawn)

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.cli.common import FormatOption, PlotOption, busy, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -57,7 +57,8 @@ def table(
         {"claims": claims, "formulas": formulas, "table": rows},
     )
     if plot is not None:
-        plot_table(plot, n_max=max(n_max, 5))
+        with busy("drawing the figure"):
+            plot_table(plot, n_max=max(n_max, 5))
 
 
 def _table_columns() -> tuple[Column, ...]:

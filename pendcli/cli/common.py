@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import sys
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from enum import StrEnum
 from pathlib import Path
 from typing import Annotated
 
@@ -12,13 +14,68 @@ import typer
 from pendcli.core.console import console
 from pendcli.render import OutputFormat, Section
 
+
+class CheckFormat(StrEnum):
+    """`pendcli check --format`: the same names as :class:`pendcli.check_report.CheckFormat`
+    (kept here so `pendcli --help` does not import the check's modules)."""
+
+    table = "table"
+    json = "json"
+    junit = "junit"
+
+
+def bad_value(option: str, value: object, expected: str) -> Exception:
+    """The one wording of a refused value: ``--option: 'value' ...; expected ...``."""
+    from pendcli.core.errors import invalid_value
+
+    return invalid_value(option, value, expected)
+
+
+def _paper_value(value: str | None) -> str | None:
+    """``--paper`` checked while parsing, before any work (and with the common wording)."""
+    from pendcli.core.claims import PAPERS
+
+    if value is not None and value.strip().casefold() not in PAPERS:
+        raise bad_value("--paper", value, f"one of {', '.join(PAPERS)}")
+    return value
+
+
+def complete_papers(incomplete: str) -> list[str]:
+    """Shell completion of ``--paper``."""
+    from pendcli.core.claims import PAPERS
+
+    return [p for p in PAPERS if p.startswith(incomplete.casefold())]
+
+
+def complete_verdicts(incomplete: str) -> list[str]:
+    """Shell completion of a comma-separated list of verdicts or statuses (``--fail-on``)."""
+    from pendcli.reproduce import VERDICT_NAMES
+
+    done, _, last = incomplete.rpartition(",")
+    prefix = f"{done}," if done else ""
+    return [prefix + v for v in VERDICT_NAMES if v.startswith(last.casefold())]
+
+
+def complete_statuses(incomplete: str) -> list[str]:
+    """Shell completion of ``--status`` (the equation ledger's statuses)."""
+    from pendcli.core.ledger_check import STATUSES
+
+    return [s for s in STATUSES if s.startswith(incomplete.casefold())]
+
+
 FormatOption = Annotated[
     OutputFormat,
     typer.Option("--format", "-f", help="Output format.", case_sensitive=False),
 ]
 PaperOption = Annotated[
     str | None,
-    typer.Option("--paper", "-p", help="Only this paper: tisserand, lecornu or charbonnier."),
+    typer.Option(
+        "--paper",
+        "-p",
+        help="Only this paper: tisserand, lecornu or charbonnier.",
+        callback=_paper_value,
+        autocompletion=complete_papers,
+    ),
 ]
 PlotOption = Annotated[
     Path | None,
@@ -43,3 +100,17 @@ def say(message: str) -> None:
 
     if not is_quiet():
         console(stderr=True).print(message)
+
+
+@contextmanager
+def busy(description: str) -> Iterator[None]:
+    """A spinner with ``description`` on stderr while a slow step runs (a second or more:
+    the equation ledger, drawing figures); only on a terminal, never under --quiet, and
+    gone when the step ends, so nothing of it reaches a pipe or a log."""
+    from pendcli.core.console import is_quiet
+
+    if is_quiet() or not sys.stderr.isatty():
+        yield
+        return
+    with console(stderr=True).status(description):
+        yield

@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PaperOption, emit
+from pendcli.cli.common import FormatOption, PaperOption, bad_value, busy, complete_statuses, emit
 from pendcli.render import OutputFormat
 
 StatusOption = Annotated[
@@ -15,6 +15,7 @@ StatusOption = Annotated[
         "--status",
         "-s",
         help="Only this status: holds, fails, misprint, definition or not-checkable.",
+        autocompletion=complete_statuses,
     ),
 ]
 
@@ -32,7 +33,6 @@ def equations(
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
     from pendcli.core.claims import resolve_papers
-    from pendcli.core.errors import PendcliError
     from pendcli.core.ledger import coverage, equation_rows
     from pendcli.core.ledger_check import STATUSES
     from pendcli.core.ledger_coverage import ledger_text_coverage
@@ -41,8 +41,9 @@ def equations(
     from pendcli.summary import compact_equation_columns
 
     if status is not None and status not in STATUSES:
-        raise PendcliError(f"unknown status {status!r}; choose one of {', '.join(STATUSES)}")
-    rows = equation_rows(resolve_papers(paper))
+        raise bad_value("--status", status, f"one of {', '.join(STATUSES)}")
+    with busy("checking every equation (sympy, ODEs)"):
+        rows = equation_rows(resolve_papers(paper))
     counts = coverage(rows)
     texts = {p: ledger_text_coverage(p).as_dict() for p in counts}
     shown = [r for r in rows if status is None or r["status"] == status]

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PaperOption, emit
+from pendcli.cli.common import FormatOption, PaperOption, busy, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -35,7 +35,8 @@ def formulas(
     rows = [r.as_dict() for key in keys for r in results[key]]
     emit(fmt, _sections(results), {"claims": [], "formulas": rows})
     if plot is not None:
-        written = _draw(plot, results)
+        with busy("drawing the figures"):
+            written = _draw(plot, results)
         if fmt is OutputFormat.table:
             from pendcli.cli.common import say
 

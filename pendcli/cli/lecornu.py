@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.cli.common import FormatOption, PlotOption, busy, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -14,7 +14,7 @@ if TYPE_CHECKING:
 
     import numpy as np
 
-    from pendcli.render import Column
+    from pendcli.render import Column, Row
 
 app = typer.Typer(
     help="Lecornu: the pendulum of variable length (Bessel zeros, the 0,35 m/s example).",
@@ -221,7 +221,8 @@ def example(
     if plot is not None:
         from pendcli.papers.lecornu.figures import plot_example
 
-        plot_example(plot, speed, length, g)
+        with busy("drawing the figure"):
+            plot_example(plot, speed, length, g)
 
 
 @app.command("ode-check")
@@ -242,12 +243,76 @@ def ode_check(
     from pendcli.papers.lecornu.explore import ode_check as check
 
     rows = check(speed, length, g, tuple(amplitude) if amplitude else None, floor)
-    columns = [_col(k, k.replace("_", " "), 8) for k in rows[0]]
+    columns = [_col(k, _ode_header(k), 8) for k in rows[0]]
     emit(
         fmt,
         [("Released from rest: Bessel (9) against eq. (3) integrated", rows, columns)],
         {"rows": rows},
     )
+
+
+# ode-check's keys -> headers (the keys stay as they are in JSON and CSV).
+_ODE_HEADERS = {
+    "k": "k",
+    "length_m": "L (m)",
+    "t_bessel_s": "t Bessel (s)",
+    "t_ode_linear_s": "t ODE (s)",
+    "linear_minus_bessel_s": "ODE − Bessel (s)",
+    "ratio_bessel": "θ/θ0 Bessel",
+    "ratio_ode_linear": "θ/θ0 ODE",
+}
+
+
+def _ode_header(key: str) -> str:
+    """``sin_shift_5deg_s`` -> ``sin θ, 5°: shift (s)``; ``theta_5deg_at_elongation_deg`` ->
+    ``sin θ, 5°: θ (°)``; the fixed keys from :data:`_ODE_HEADERS`."""
+    if key in _ODE_HEADERS:
+        return _ODE_HEADERS[key]
+    for prefix, suffix, what in (
+        ("sin_shift_", "deg_s", "shift (s)"),
+        ("theta_", "deg_at_elongation_deg", "θ (°)"),
+    ):
+        if key.startswith(prefix) and key.endswith(suffix):
+            return f"sin θ, {key[len(prefix) : -len(suffix)]}°: {what}"
+    return key.replace("_", " ")
+
+
+# A verdict as one mark beside the value, so each g takes one column.
+_VERDICT_MARKS = {"agrees": "✓", "truncated": "t", "last-digit": "±1", "discrepant": "✗"}
+_BEST_G_LABELS = {
+    "best_g_least_squares": "g fitting best (least squares), m/s²",
+    "score_at_best": "its score Σ((recomputed − printed)/u)²",
+    "most_agreeing": "most claims agreeing at one g",
+    "of": "g-dependent claims",
+    "g_range_most_agreeing": "g range where that many agree, m/s²",
+}
+
+
+def _best_g_rows(best: dict[str, object], g0: float) -> list[dict[str, str]]:
+    """best_g()'s keys as sentences, its numbers to the digits that matter."""
+    labels = {
+        **_BEST_G_LABELS,
+        f"score_at_{g0:g}": f"score at the table's g = {g0:g}",
+        f"agreeing_at_{g0:g}": f"claims agreeing at g = {g0:g}",
+    }
+
+    def shown(value: object) -> str:
+        if isinstance(value, tuple):
+            return " – ".join(f"{v:.4f}" for v in value)
+        return f"{value:.4g}" if isinstance(value, float) else str(value)
+
+    return [{"quantity": labels.get(k, k), "value": shown(v)} for k, v in best.items()]
+
+
+def _g_column(key: str) -> Column:
+    from pendcli.render import Column
+
+    def text(row: Row) -> str:
+        value = row.get(key)
+        mark = _VERDICT_MARKS.get(str(row.get(f"verdict {key}")), "?")
+        return f"{value:.5g} {mark}" if isinstance(value, float) else ""
+
+    return Column(key, key.replace("g=", "g = "), fmt=text, justify="right")
 
 
 @app.command("g-sensitivity")
@@ -257,22 +322,23 @@ def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
     from pendcli.papers.lecornu.explore import g_sensitivity as sensitivity
     from pendcli.papers.lecornu.model import constant
     from pendcli.render import Column
+    from pendcli.render.views import printed_for_display
 
     rows = sensitivity()
     best = best_g()
-    columns = [Column("id", "claim"), Column("published", "published")]
-    for key in rows[0]:
-        if key.startswith("g="):
-            columns.append(_col(key, key, 5))
-        elif key.startswith("verdict"):
-            columns.append(Column(key, key.replace("verdict ", "")))
+    columns = [
+        Column("id", "claim", fmt=lambda r: str(r["id"]).removeprefix("lecornu.")),
+        Column("published", "printed", fmt=lambda r: printed_for_display(r["published"])),
+    ]
+    columns += [_g_column(key) for key in rows[0] if key.startswith("g=")]
     columns.append(_col("d_value_dg", "d/dg", 4))
-    summary = [{"quantity": k, "value": str(v)} for k, v in best.items()]
+    marks = ", ".join(f"{m} {v}" for v, m in _VERDICT_MARKS.items())
+    summary = _best_g_rows(best, constant("g"))
     emit(
         fmt,
         [
             (
-                f"g-dependent claims at several g (verdicts always use g = {constant('g'):g})",
+                f"g-dependent claims at several g ({marks}; verdicts use g = {constant('g'):g})",
                 rows,
                 columns,
             ),

@@ -19,13 +19,16 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 from typer.core import TyperGroup
 
-from pendcli.cli.common import FormatOption, PaperOption, emit
+from pendcli.cli.common import CheckFormat, FormatOption, PaperOption, complete_verdicts, emit
+from pendcli.core.errors import PendcliError
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
-    # click's types, as typer vendors it (click itself is not installed); only named for mypy:
-    # at run time pendcli uses typer's public names (typer.TyperException, typer.BadParameter).
-    from typer._click import Command, Context, HelpFormatter, Parameter
+    # click's Command, Context, Parameter and HelpFormatter live inside typer, under a private
+    # name (typer._click); pendcli names none of them, so for mypy they are Any.
+    Command = Any
+    Context = Any
+    Parameter = Any
 
     from pendcli.reproduce import ReproduceResult
 
@@ -83,6 +86,74 @@ def summary(command: Command) -> str:
     """The first line of a command's help, whole: click's short help stops at "eq." or "s.t."."""
     text = command.short_help or command.help or ""
     return text.strip().splitlines()[0].strip() if text.strip() else ""
+
+
+# Examples shown at the end of each command's --help (the command path after `pendcli`).
+EXAMPLES: dict[str, tuple[str, ...]] = {
+    "": (
+        "pendcli reproduce                     all papers: printed against recomputed",
+        "pendcli reproduce -p lecornu --notes  one paper, every column",
+        "pendcli check -f junit > check.xml    CI: a testcase per claim and table",
+    ),
+    "list": ("pendcli list -p tisserand", "pendcli list -f csv > claims.csv"),
+    "reproduce": (
+        "pendcli reproduce --only-failing",
+        "pendcli reproduce -p charbonnier -f json",
+        "pendcli reproduce --out out          report.md, report.html, tables, figures",
+        "pendcli reproduce --fail-on discrepant,fails   CI: exit 1 on a bad verdict",
+    ),
+    "check": (
+        "pendcli check",
+        "pendcli check -f junit > check.xml",
+        "pendcli check --update               then review and commit the tables",
+    ),
+    "tisserand claims": ("pendcli tisserand claims", "pendcli tisserand claims -f json"),
+    "tisserand example": (
+        "pendcli tisserand example",
+        "pendcli tisserand example --theta0 45° --theta1 20° --plot ex.png",
+    ),
+    "tisserand series": ("pendcli tisserand series --order 4", "pendcli tisserand series -f csv"),
+    "lecornu claims": ("pendcli lecornu claims", "pendcli lecornu claims --g 9.81"),
+    "lecornu zeros": (
+        "pendcli lecornu zeros --order 1 --count 10",
+        "pendcli lecornu zeros --count 1000000 --tol 1e-12 -f csv > zeros.csv",
+    ),
+    "lecornu example": (
+        "pendcli lecornu example",
+        "pendcli lecornu example --speed 0.5 --length 2 --plot theta.png",
+    ),
+    "lecornu ode-check": (
+        "pendcli lecornu ode-check",
+        "pendcli lecornu ode-check --amplitude 1 --amplitude 10",
+    ),
+    "lecornu g-sensitivity": ("pendcli lecornu g-sensitivity",),
+    "lecornu series": ("pendcli lecornu series -f json",),
+    "lecornu zero-length": ("pendcli lecornu zero-length --speed 0.35 --length 1",),
+    "charbonnier table": (
+        "pendcli charbonnier table",
+        "pendcli charbonnier table --n-max 40 --plot table.png",
+    ),
+    "charbonnier integral": (
+        "pendcli charbonnier integral 4              I_4(π) = 16/15",
+        "pendcli charbonnier integral 1000 -x 1.5",
+        "pendcli charbonnier integral 5 --tol 1e-10  the cheapest method for it",
+    ),
+    "formulas": (
+        "pendcli formulas -p lecornu",
+        "pendcli formulas --plot figures/   one residual plot per formula",
+    ),
+    "equations": (
+        "pendcli equations -p tisserand",
+        "pendcli equations --status misprint --notes",
+    ),
+    "tradeoff": ("pendcli tradeoff --quick", "pendcli tradeoff integral_pi --plot wp.png"),
+}
+
+
+def _epilog(path: str) -> str | None:
+    """The Examples block of a command's help; "\b" keeps click from rewrapping it."""
+    lines = EXAMPLES.get(path)
+    return "\b\nExamples:\n" + "\n".join(f"  {line}" for line in lines) if lines else None
 
 
 # Options that cannot be given together, refused in every command that has both.
@@ -156,7 +227,6 @@ class PlainCoercion:
     def __init__(self, param: Parameter, annotation: Any) -> None:
         self.param = param
         self.annotation = annotation
-        self.typer_coercion: Any = None
 
     def direct(self, value: Any) -> Any:
         """The converted value, or _UNSET when typer's coercion must decide."""
@@ -178,50 +248,61 @@ class PlainCoercion:
                 return matches[0]
         return _UNSET
 
-    def coerce(self, value: Any, param: Parameter, ctx: Context) -> Any:
+    def coerce(self, value: Any, param: Parameter, ctx: Context | None) -> Any:
         converted = self.direct(value)
         if converted is not _UNSET:
             return converted
-        if self.typer_coercion is None:
-            # typer's own, built as typer builds it (its cache slot then set back to this one).
-            self.param._runtime_param = None  # type: ignore[attr-defined]
-            try:
-                self.typer_coercion = type(self.param).get_runtime_param(self.param)  # type: ignore[attr-defined]
-            finally:
-                self.param._runtime_param = self  # type: ignore[attr-defined]
-        return self.typer_coercion.coerce(value, param=param, ctx=ctx)
+        # typer's own coercion: the public method of the class typer made the parameter with.
+        typer_class: Any = type(param).__mro__[1]
+        return typer_class.get_runtime_param(param).coerce(value, param=param, ctx=ctx)
+
+
+@functools.cache
+def _plain_class(typer_class: Any) -> type:
+    """``typer_class`` (typer.core.TyperOption or TyperArgument) whose public
+    ``get_runtime_param`` answers with a :class:`PlainCoercion`."""
+
+    def get_runtime_param(self: Any) -> PlainCoercion:
+        coercion = self.__dict__.get("pendcli_coercion")
+        if coercion is None:
+            coercion = self.pendcli_coercion = PlainCoercion(self, self.type_descriptor.annotation)
+        return coercion
+
+    name = f"Plain{typer_class.__name__}"
+    return type(name, (typer_class,), {"get_runtime_param": get_runtime_param})
 
 
 def _plain_coercion(params: list[Parameter]) -> None:
-    """Install :class:`PlainCoercion` on every single-valued option or argument typer made."""
+    """Give every single-valued option or argument typer made a :class:`PlainCoercion`."""
+    from typer.core import TyperArgument, TyperOption
+
     for param in params:
-        descriptor = getattr(param, "type_descriptor", None)
-        info = getattr(descriptor, "parameter_info", None)
+        info = getattr(getattr(param, "type_descriptor", None), "parameter_info", None)
         if (
-            descriptor is None
-            or not hasattr(param, "_runtime_param")
+            type(param) not in (TyperOption, TyperArgument)  # (already plain: a subclass)
             or param.multiple
             or param.nargs != 1
             or getattr(info, "parser", None) is not None
             or getattr(info, "min", None) is not None
             or getattr(info, "max", None) is not None
-            or isinstance(getattr(param, "_runtime_param", None), PlainCoercion)
         ):
             continue
-        param._runtime_param = PlainCoercion(param, descriptor.annotation)
+        param.__class__ = _plain_class(type(param))  # type: ignore[arg-type]
 
 
-def _adapt(command: Command, ctx: Context) -> None:
-    """Every command: its whole first line as summary, `--quiet`, exclusive options refused,
-    plain values converted without pydantic (:class:`PlainCoercion`)."""
+def _adapt(command: Command, ctx: Context, path: str = "") -> None:
+    """Every command: its whole first line as summary, examples, `--quiet`, exclusive options
+    refused, plain values converted without pydantic (:class:`PlainCoercion`)."""
     if getattr(command, "pendcli_adapted", False):
         return
-    command.pendcli_adapted = True  # type: ignore[attr-defined]
+    command.pendcli_adapted = True
+    path = f"{path} {command.name}".strip()
     command.short_help = summary(command) or None
+    command.epilog = command.epilog or _epilog(path)
     _plain_coercion(command.get_params(ctx))  # with its --help (the names are ctx's)
     subcommands: dict[str, Command] = getattr(command, "commands", {})
     for sub in subcommands.values():
-        _adapt(sub, ctx)
+        _adapt(sub, ctx, path)
     if subcommands and not getattr(command, "invoke_without_command", False):
         return
     params = command.params
@@ -238,6 +319,7 @@ class LazyGroup(TyperGroup):
 
     def parse_args(self, ctx: Context, args: list[str]) -> list[str]:
         _plain_coercion(self.get_params(ctx))  # --help, --install-completion...
+        self.epilog = self.epilog or _epilog("")
         return super().parse_args(ctx, args)
 
     def list_commands(self, ctx: Context) -> list[str]:
@@ -251,7 +333,7 @@ class LazyGroup(TyperGroup):
             _adapt(command, ctx)
         return command
 
-    def format_commands(self, ctx: Context, formatter: HelpFormatter) -> None:
+    def format_commands(self, ctx: Context, formatter: Any) -> None:
         rows = []
         for name in self.list_commands(ctx):
             if name in LAZY_COMMANDS and name not in self.commands:
@@ -270,6 +352,8 @@ app = typer.Typer(
         "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values."
     ),
     no_args_is_help=True,
+    # -h as well as --help, in every command (click passes it down to each subcommand).
+    context_settings={"help_option_names": ["-h", "--help"]},
     pretty_exceptions_enable=False,
     # --install-completion / --show-completion; completion asks LazyGroup, which loads a
     # subcommand's module only when the word being completed needs it.
@@ -354,8 +438,8 @@ EquationsOption = Annotated[
     bool | None,
     typer.Option(
         "--equations/--no-equations",
-        help="Check every numbered equation too (the ledger; about 12 s of sympy and ODE "
-        "work). Default: only with --out.",
+        help="Check every numbered equation too (the ledger: several seconds of sympy and "
+        "ODE work). Default: only with --out.",
     ),
 ]
 
@@ -383,14 +467,29 @@ def reproduce(
         bool,
         typer.Option("--pdf", help="With --out: print each HTML page to PDF (headless Chromium)."),
     ] = False,
+    fail_on: Annotated[
+        str | None,
+        typer.Option(
+            "--fail-on",
+            metavar="VERDICT[,...]",
+            help="Exit 1 when any row has one of these verdicts or statuses (for CI), e.g. "
+            "discrepant,fails. An equation status (misprint...) runs the ledger.",
+            autocompletion=complete_verdicts,
+        ),
+    ] = None,
 ) -> None:
-    """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
+    """Every claim, published against recomputed, with a verdict (exit 0 unless --fail-on)."""
     from pendcli.core.claims import resolve_papers
     from pendcli.core.errors import PendcliError
-    from pendcli.reproduce import reproduce_all
+    from pendcli.reproduce import EQUATION_ONLY, reproduce_all
 
+    fail_names = _fail_names(fail_on)
+    if fail_names & EQUATION_ONLY and equations is None:
+        equations = True
     if measure and out is None:
         raise PendcliError("--measure needs --out (it re-times the report's speed families)")
+    if pdf and out is None:
+        raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
     if out is not None:  # refuse a bad folder before the run, not after
         from pendcli.report import check_out_folder
 
@@ -409,18 +508,38 @@ def reproduce(
 
         print(CAUSE_LEGEND)
     if out is not None:
-        _write_report(result, out, quiet, measure)
-    if pdf:
-        from pendcli.html_report import print_pdfs
-
-        print_pdfs(out)
+        _write_report(result, out, quiet, measure, pdf)
+    if fail_names:
+        _fail_on(result, fail_names, quiet)
 
 
-def _write_report(result: ReproduceResult, out: Path, quiet: bool, measure: bool) -> None:
+def _fail_names(text: str | None) -> frozenset[str]:
+    if text is None:
+        return frozenset()
+    from pendcli.reproduce import parse_verdicts
+
+    return parse_verdicts(text)
+
+
+def _fail_on(result: ReproduceResult, names: frozenset[str], quiet: bool) -> None:
+    """Exit 1 when a row has one of ``names`` (after the output, so CI logs show the table)."""
+    from pendcli.cli.common import say
+
+    hits = result.rows_with(names)
+    if hits:
+        if not quiet:
+            ids = ", ".join(str(r["id"]) for r in hits[:5]) + (" ..." if len(hits) > 5 else "")
+            say(f"--fail-on: {len(hits)} row(s) are {', '.join(sorted(names))}: {ids}")
+        raise typer.Exit(1)
+
+
+def _write_report(
+    result: ReproduceResult, out: Path, quiet: bool, measure: bool, pdf: bool
+) -> None:
     from pendcli.cli.common import say
     from pendcli.report import write_report
 
-    written = write_report(result, out, quiet=quiet, measure=measure)
+    written = write_report(result, out, quiet=quiet, measure=measure, pdf=pdf)
     if not quiet:
         for key in result.papers:
             say(f"{key}: {result.tally(key)}")
@@ -433,11 +552,30 @@ def check(
         bool, typer.Option("--update", help="Rewrite the committed regenerated tables instead.")
     ] = False,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print only failures.")] = False,
+    fmt: Annotated[
+        CheckFormat,
+        typer.Option(
+            "--format",
+            "-f",
+            help="table (the drift table), json, or junit (JUnit XML: a testcase per claim, "
+            "formula and table). Under GitHub Actions each drift is also an ::error annotation.",
+            case_sensitive=False,
+        ),
+    ] = CheckFormat.table,
 ) -> None:
-    """Regenerate every table and compare with the committed ones (exit 1 on any drift)."""
+    """Regenerate every table and compare with the committed ones (exit 1 on any drift).
+
+    A number may move within its column's tolerance (the last bits another libm or scipy
+    changes); text (published, verdict, cause) must be identical. The drift table and
+    --format json show each tolerance.
+    """
     from pendcli.regression import run_check
 
-    code = run_check(update=update, quiet=quiet)
+    if update and fmt is not CheckFormat.table:
+        from pendcli.core.errors import PendcliError
+
+        raise PendcliError(f"--format: {fmt.value!r} with --update; expected table")
+    code = run_check(update=update, quiet=quiet, fmt=fmt.value)
     raise typer.Exit(code)
 
 
@@ -467,7 +605,6 @@ def run() -> None:
 
 def _invoke(args: list[str]) -> int:
     """Run the app; turn every way it can end into an exit code and at most one stderr line."""
-    from pendcli.core.errors import PendcliError
     from pendcli.core.files import describe_os_error
     from pendcli.core.interrupts import Interrupted
 
@@ -476,9 +613,9 @@ def _invoke(args: list[str]) -> int:
         # must not depend on how Python was started (`python -m pendcli`, a test runner).
         code = app(args=args, prog_name="pendcli", standalone_mode=False)
     except PendcliError as exc:
-        return _fail(options_as_typed(str(exc), args), 2)
+        return _fail(_named_as_typed(exc, args), 2)
     except typer.TyperException as exc:  # click's usage errors: rephrased, one line
-        if type(exc).__name__ == "NoArgsIsHelpError":  # a bare group: its help, as typer does
+        if _is_bare_group_help(exc):  # a bare group: its help, as typer does
             _write_error(exc.format_message(), prefix="")
             return 2
         return _fail(usage_message(exc, args), 2)
@@ -495,6 +632,16 @@ def _invoke(args: list[str]) -> int:
             raise
         return _fail(f"internal error: {type(exc).__name__}: {exc} (set PENDCLI_DEBUG=1)", 3)
     return code if isinstance(code, int) else 0
+
+
+def _is_bare_group_help(exc: typer.TyperException) -> bool:
+    """A group named without a subcommand (``no_args_is_help``): the error's text is its help."""
+    ctx = getattr(exc, "ctx", None)
+    return (
+        ctx is not None
+        and not isinstance(exc, typer.BadParameter)
+        and exc.format_message() == ctx.get_help()
+    )
 
 
 def _flush_standard_output(code: int) -> int:
@@ -554,7 +701,7 @@ def usage_message(exc: Exception, args: list[str]) -> str:
     param = getattr(exc, "param", None)
     if param is None or not isinstance(exc, typer.BadParameter):
         return _format_message(exc)
-    if type(exc).__name__ == "MissingParameter":
+    if not str(getattr(exc, "message", "")):  # a missing option or argument: click's wording
         return _format_message(exc)
     name = _typed_option(param, args)
     errors = getattr(exc.__cause__, "errors", None)
@@ -574,6 +721,21 @@ def _format_message(exc: Exception) -> str:
     format_message = getattr(exc, "format_message", None)
     text = format_message() if callable(format_message) else str(exc)
     return " ".join(str(text).split())
+
+
+def _named_as_typed(exc: PendcliError, args: list[str]) -> str:
+    """The error with its parameter named as the option typed: ``method: 'x' ...`` becomes
+    ``--method: 'x' ...``. Messages without a ``parameter`` go through :func:`options_as_typed`."""
+    message = str(exc)
+    name = exc.parameter
+    if name is None or name.startswith("-") or not message.startswith(name):
+        return options_as_typed(message, args)
+    for arg in args:
+        typed = arg.split("=", 1)[0]
+        key = typed[2:].replace("-", "_")
+        if typed.startswith("--") and key and (key == name or name.startswith(f"{key}_")):
+            return typed + message[len(name) :]
+    return message
 
 
 _LEADING_NAME = re.compile(r"^([A-Za-z_]\w*) (?:=|must|is|changes) ")

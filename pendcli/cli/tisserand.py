@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.cli.common import FormatOption, PlotOption, busy, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -126,7 +126,8 @@ def example(
         {"claims": [], "formulas": [], "example": rows},
     )
     if plot is not None:
-        figures.plot_path(plot, a, b)
+        with busy("drawing the figure"):
+            figures.plot_path(plot, a, b)
 
 
 def _example_columns(rows: list[dict[str, Any]]) -> tuple[Column, ...]:
@@ -175,7 +176,8 @@ def series(
     title = f"Tisserand's series (order {order}) against the exact motion, θ1 = {ratio:g}·θ0"
     emit(fmt, [(title, rows, _series_columns())], {"claims": [], "formulas": [], "series": rows})
     if plot is not None:
-        figures.plot_series_error(plot, ratio=ratio)
+        with busy("drawing the figure"):
+            figures.plot_series_error(plot, ratio=ratio)
 
 
 def _series_columns() -> list[Column]:
@@ -185,14 +187,18 @@ def _series_columns() -> list[Column]:
         Column("theta0_deg", "θ0 (°)", fmt=_number("theta0_deg", 6), justify="right"),
         Column("theta1_deg", "θ1 (°)", fmt=_number("theta1_deg", 6), justify="right"),
     ]
-    for key, label in (("k1", "k'/k"), ("k2", "k''/k"), ("precession", "Ω")):
+    # The exact value to 6 digits and the series' relative error: the series value itself is
+    # exact·(1 + error), in full in JSON and CSV (an 80-column terminal holds 8 columns).
+    for key, label in (("k1", "k'/k"), ("k2", "k''/k"), ("precession", "Ω (rad)")):
         columns += [
             Column(
-                f"{key}_series", f"{label} series", fmt=_number(f"{key}_series"), justify="right"
+                f"{key}_exact", f"{label} exact", fmt=_number(f"{key}_exact", 6), justify="right"
             ),
-            Column(f"{key}_exact", f"{label} exact", fmt=_number(f"{key}_exact"), justify="right"),
             Column(
-                f"{key}_rel_error", "rel. error", fmt=_relative(f"{key}_rel_error"), justify="right"
+                f"{key}_rel_error",
+                "series error",
+                fmt=_relative(f"{key}_rel_error"),
+                justify="right",
             ),
         ]
     return columns

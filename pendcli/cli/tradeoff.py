@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, emit
+from pendcli.cli.common import FormatOption, PlotOption, busy, emit
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -62,7 +62,8 @@ def tradeoff(
         for name in names:
             wp.write_table([p for p in points if p.family == name], write_tables / f"{name}.csv")
     if plot is not None:
-        wp.plot_tradeoff(points, plot)
+        with busy("drawing the figure"):
+            wp.plot_tradeoff(points, plot)
 
 
 def _measure(names: list[str], quick: bool) -> list[Point]:

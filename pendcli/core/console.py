@@ -48,15 +48,25 @@ def _pipe_width() -> int:
     return int(columns) if columns.isdigit() and int(columns) >= 40 else 160
 
 
+def wants_colour(is_tty: bool) -> bool:
+    """Colour on a terminal, or anywhere FORCE_COLOR is set (CI logs render it); never when
+    NO_COLOR is set (https://no-color.org; it wins over FORCE_COLOR)."""
+    if os.environ.get("NO_COLOR"):
+        return False
+    return is_tty or bool(os.environ.get("FORCE_COLOR"))
+
+
 def console(stderr: bool = False) -> Console:
-    """A rich console: colour only on a terminal and never when NO_COLOR is set."""
+    """A rich console: colour only on a terminal or with FORCE_COLOR, never with NO_COLOR."""
     from rich.console import Console
 
     stream = sys.stderr if stderr else sys.stdout
     is_tty = stream.isatty()
+    colour = wants_colour(is_tty)
     return Console(
         file=stream,
-        no_color=bool(os.environ.get("NO_COLOR")) or not is_tty,
+        force_terminal=colour or is_tty,  # (rich would read FORCE_COLOR even under NO_COLOR)
+        no_color=not colour,
         highlight=False,
         width=None if is_tty else _pipe_width(),
         soft_wrap=False,

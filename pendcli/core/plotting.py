@@ -72,11 +72,26 @@ def save_figure(fig: Figure, path: str | Path) -> Path:
 FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
 
 
+def cannot_create_in(folder: Path) -> str | None:
+    """Why nothing can be created in ``folder`` (None when a probe file can): tried, not
+    guessed from permission bits, which root, read-only mounts and /proc all defeat."""
+    import tempfile
+
+    try:
+        with tempfile.NamedTemporaryFile(dir=folder, prefix=".pendcli-probe-"):
+            return None
+    except OSError as exc:
+        return exc.strerror or type(exc).__name__
+
+
 def _existing_folder(option: str, folder: Path) -> None:
     if not folder.exists():
         raise PendcliError(f"{option}: folder {folder} does not exist")
     if not folder.is_dir():
         raise PendcliError(f"{option}: {folder} is not a folder")
+    problem = cannot_create_in(folder)
+    if problem is not None:
+        raise PendcliError(f"{option}: cannot write in {folder}: {problem}")
 
 
 def validate_plot_path(path: str | Path | None, option: str = "--plot") -> Path | None:

@@ -43,7 +43,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 
 __all__ = [
     "AUTO_SWITCH",
@@ -87,7 +87,7 @@ def check_zeros_request(order: int, count: int, method: str) -> None:
             f"count = {count} is out of range; valid range is 1 <= count <= {MAX_COUNT}"
         )
     if method not in METHODS:
-        raise PendcliError(f"method {method!r} is unknown; choose one of {', '.join(METHODS)}")
+        raise invalid_value("method", method, f"one of {', '.join(METHODS)}")
     if method == "mpmath" and count > MPMATH_MAX_COUNT:
         raise PendcliError(
             f"count = {count} is too large for method 'mpmath' (about 4 ms a zero); "

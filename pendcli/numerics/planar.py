@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, overload
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 
 if TYPE_CHECKING:
     import numpy as np
@@ -135,7 +135,7 @@ def period_ratio(
     An array (or list) of amplitudes gives an array of ratios.
     """
     if method not in METHODS:
-        raise PendcliError(f"method = {method!r} is not known; valid methods: {', '.join(METHODS)}")
+        raise invalid_value("method", method, f"one of {', '.join(METHODS)}")
     if _is_array(amplitude):
         return _period_ratio_array(amplitude, method, order, epsrel)
     amplitude = _check_amplitude(amplitude)

@@ -52,7 +52,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 
 __all__ = [
     "METHODS",
@@ -157,7 +157,7 @@ def exact_conical(
         return _ode(theta0, theta1, harmonics, float(rtol))
     if method == "elliptic":
         return _elliptic(theta0, theta1, harmonics)
-    raise PendcliError(f"method = {method!r} is unknown; choose one of {', '.join(METHODS)}")
+    raise invalid_value("method", method, f"one of {', '.join(METHODS)}")
 
 
 # ---------------------------------------------------------------- quadrature of (4)-(5)

@@ -9,34 +9,125 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from pendcli.render.columns import Column, Row, Section
+from pendcli.render.columns import Column, Row, Section, fmt_float
 
 if TYPE_CHECKING:
-    from rich.console import Console
+    from collections.abc import Iterator
+
+    from rich.console import Console, RenderableType
     from rich.table import Table
 
-__all__ = ["TableRenderer", "to_rich_table"]
+__all__ = ["TERMINAL_DIGITS", "TableRenderer", "to_rich_table"]
+
+# Significant digits of a float the terminal shows when its column sets no format of its own.
+TERMINAL_DIGITS = 7
 
 
 def _cell(column: Column, row: Row) -> str:
     """The cell as rich markup: text cut to ``table_max``, styled or escaped."""
     from rich.markup import escape
 
-    text = column.text(row)
+    value = row.get(column.key)
+    if column.fmt is None and isinstance(value, float):
+        text = fmt_float(value, TERMINAL_DIGITS)  # the eye's digits; JSON and CSV keep all 17
+    else:
+        text = column.text(row)
     if column.table_max is not None and len(text) > column.table_max:
         text = text[: column.table_max - 1].rstrip() + "…"
     style = column.style(text) if column.style is not None else None
     return f"[{style}]{text}[/]" if style else escape(text)
 
 
+def _longest_token(text: str) -> int:
+    from rich.cells import cell_len
+    from rich.text import Text
+
+    plain = Text.from_markup(text).plain
+    return max((cell_len(t) for t in plain.split()), default=0)
+
+
+def _longest_line(text: str) -> int:
+    from rich.cells import cell_len
+    from rich.text import Text
+
+    return max((cell_len(t) for t in Text.from_markup(text).plain.splitlines()), default=0)
+
+
+def fitted_widths(lower: Sequence[int], upper: Sequence[int], room: int) -> list[int] | None:
+    """Column widths that fit ``room`` cells and never cut a token: each column at least its
+    longest word (``lower``), the rest of the room shared in proportion to what each column
+    would still use (``upper - lower``). None when everything fits unwrapped; when even the
+    longest words do not fit, ``lower`` (the table is wider than the room: nothing is cut)."""
+    if sum(upper) <= room:
+        return None
+    spare = room - sum(lower)
+    if spare <= 0:
+        return list(lower)
+    want = [u - lo for lo, u in zip(lower, upper, strict=True)]
+    share = [lo + (spare * w) // sum(want) for lo, w in zip(lower, want, strict=True)]
+    left = room - sum(share)
+    for i in sorted(range(len(share)), key=lambda i: share[i] - upper[i])[:left]:
+        share[i] += 1
+    return share
+
+
+def _records(table: Table, headers: list[str], width: int) -> Iterator[RenderableType]:
+    """The rows one under another, ``header  value`` per line, for a terminal too narrow for
+    the columns side by side: every word and number stays whole, prose wraps at spaces."""
+    from rich.table import Table
+    from rich.text import Text
+
+    if table.title:
+        yield Text(str(table.title), style="italic")
+    cells: list[list[str]] = getattr(table, "cells", [])
+    label = min(max(len(h) for h in headers), width // 3)
+    for i in range(table.row_count):
+        grid = Table.grid(padding=(0, 2, 0, 2))
+        grid.add_column(width=label, overflow="fold")
+        grid.add_column(overflow="fold", max_width=width - label - 4)
+        first = cells[0][i] if cells else ""
+        for header, column in zip(headers[1:], cells[1:], strict=True):
+            if Text.from_markup(column[i]).plain.strip():
+                grid.add_row(Text(header, style="dim"), column[i])
+        yield Text.from_markup(f"[bold]{first}[/]" if first else "")
+        yield grid
+
+
+def _fitting_table_class() -> type[Table]:
+    from rich.table import Table
+
+    class FittingTable(Table):
+        """A table whose columns shrink by wrapping prose at spaces, never inside a word or
+        a number (rich alone folds the widest columns, cutting `-1.000e-04` into two lines)."""
+
+        cells: list[list[str]]
+
+        def __rich_console__(self, console, options):
+            headers = [str(c.header) for c in self.columns]
+            cells = [[str(h), *col] for h, col in zip(headers, self.cells, strict=True)]
+            lower = [max(_longest_token(t) for t in col) for col in cells]
+            upper = [max(_longest_line(t) for t in col) for col in cells]
+            # Per column: one cell of right padding, and the box's blank rule between columns.
+            padding = 2 * len(self.columns) - 1
+            widths = fitted_widths(lower, upper, options.max_width - padding)
+            if widths is not None and sum(widths) + padding > options.max_width:
+                yield from _records(self, headers, options.max_width)
+                return
+            sizes: list[int | None] = list(widths) if widths else [None] * len(lower)
+            for column, width in zip(self.columns, sizes, strict=True):
+                column.width = width  # None: rich sizes the column (everything fits)
+            yield from super().__rich_console__(console, options)
+
+    return FittingTable
+
+
 def to_rich_table(
     rows: Sequence[Row], columns: Sequence[Column], title: str | None = None
 ) -> Table:
     from rich import box
-    from rich.table import Table
 
     # No vertical rules: two spaces between columns leave the width to the data.
-    table = Table(
+    table = _fitting_table_class()(
         title=title,
         show_lines=False,
         header_style="bold",
@@ -46,8 +137,10 @@ def to_rich_table(
     )
     for c in columns:
         table.add_column(c.header, justify=c.justify, overflow="fold")
-    for r in rows:
-        table.add_row(*(_cell(c, r) for c in columns))
+    cells = [[_cell(c, r) for c in columns] for r in rows]
+    for row_cells in cells:
+        table.add_row(*row_cells)
+    table.cells = [list(col) for col in zip(*cells, strict=True)] or [[] for _ in columns]  # type: ignore[attr-defined]
     return table
 
 

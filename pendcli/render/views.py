@@ -17,6 +17,7 @@ __all__ = [
     "VERDICT_STYLES",
     "claim_columns",
     "format_like_printed",
+    "printed_for_display",
     "sexagesimal",
 ]
 
@@ -28,6 +29,20 @@ VERDICT_STYLES = {
     "discrepant": "bold red",
     "fails": "bold red",
 }
+
+
+# The OCR transcription's markup of units written as superscripts in the papers (1^m,22 is
+# 1ᵐ,22: 1.22 m; 0^{sec},94 is 0ˢ,94: 0.94 s), as the page shows them.
+_SUPERSCRIPTS = (("^{sec}", "ˢ"), ("^{s}", "ˢ"), ("^{m}", "ᵐ"), ("^m", "ᵐ"), ("^s", "ˢ"))
+
+
+def printed_for_display(text: object) -> str:
+    """A printed value as the page shows it: ``1^m,22`` -> ``1ᵐ,22``, ``0^{sec},94`` ->
+    ``0ˢ,94``. For the eye only: JSON and CSV keep the transcription as stored."""
+    shown = str(text)
+    for markup, superscript in _SUPERSCRIPTS:
+        shown = shown.replace(markup, superscript)
+    return shown
 
 
 def format_like_printed(value: float | None, published: str) -> str:
@@ -73,7 +88,12 @@ CLAIM_COLUMNS: tuple[Column, ...] = (
     Column("id", "claim"),
     Column("quantity", "quantity"),
     Column("source", "source"),
-    Column("published", "published", justify="right"),
+    Column(
+        "published",
+        "published",
+        fmt=lambda r: printed_for_display(r["published"]),
+        justify="right",
+    ),
     Column(
         "recomputed",
         "recomputed",
@@ -91,7 +111,7 @@ CLAIM_COLUMNS: tuple[Column, ...] = (
     Column("verdict", "verdict", style=_verdict_style),
     # Notes can run to paragraphs: the terminal table shows their start, JSON, CSV, Markdown
     # and the report show them whole.
-    Column("note", "note", table_max=160),
+    Column("note", "note"),  # whole: the table wraps prose at spaces
 )
 
 FORMULA_COLUMNS: tuple[Column, ...] = (
@@ -107,7 +127,7 @@ FORMULA_COLUMNS: tuple[Column, ...] = (
         justify="right",
     ),
     Column("verdict", "verdict", style=_verdict_style),
-    Column("note", "note", table_max=160),
+    Column("note", "note"),  # whole: the table wraps prose at spaces
 )
 
 

@@ -25,7 +25,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 from pendcli.papers.charbonnier.model import integral_pi
 
 __all__ = [
@@ -98,7 +98,7 @@ def relative_loss_ode(
     _check_order(n)
     beta = _check_beta(beta, n)
     if method not in _ODE_METHODS:
-        raise PendcliError(f"method = {method!r} is not known; valid: {', '.join(_ODE_METHODS)}")
+        raise invalid_value("method", method, f"one of {', '.join(_ODE_METHODS)}")
     if not 1e-14 <= rtol <= 1e-1:
         raise PendcliError(f"rtol = {rtol} is out of range; valid range is 1e-14 <= rtol <= 0.1")
     from scipy.integrate import solve_ivp

@@ -22,7 +22,7 @@ from collections.abc import Callable
 from functools import cache, partial
 from typing import Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 from pendcli.tradeoff import Candidate, Family, choose
 
 __all__ = [
@@ -206,7 +206,7 @@ INTEGRAL_METHODS = ("recurrence", "quad", "fast", "pendcli", "betainc", *_PI_ONL
 
 
 def _unknown_method(method: str) -> PendcliError:
-    return PendcliError(f"method = {method!r} is not known; valid: {', '.join(INTEGRAL_METHODS)}")
+    return invalid_value("method", method, f"one of {', '.join(INTEGRAL_METHODS)}")
 
 
 # Domains measured against mpmath at 50 digits (tests/test_charbonnier_extremes.py re-measures

@@ -45,6 +45,11 @@ GROUPS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("intervals", tuple(f"lecornu.example.interval.{k}" for k in range(1, 6))),
     ("J1 lengths", tuple(f"lecornu.j1_lengths.{k}" for k in range(1, 7))),
     ("J0", tuple(f"lecornu.j0_at_j2_zeros.{k}" for k in range(1, 6))),
+    (
+        "deviations",
+        (*(f"lecornu.deviation.{k}" for k in range(2, 6)), "lecornu.deviation.zero_length"),
+    ),
+    ("mean\npendulum", ("lecornu.mean_pendulum_coefficient",)),
 )
 
 
@@ -59,17 +64,58 @@ def _passage_ticks(ax: Axes, times: np.ndarray, label: str) -> None:
 # --- `pendcli lecornu example --plot` -------------------------------------------------------
 
 
+def _times(start: float, end: float) -> np.ndarray:
+    """Sample times up to ``end``: uniform, plus a geometric run into ``end``, where the
+    oscillation quickens without bound as the length goes to zero (no straight segments)."""
+    uniform = np.linspace(start, end, 6000)
+    closing = end - np.geomspace(end - start, (end - start) * 1e-7, 3000)
+    return np.unique(np.concatenate([uniform, closing[closing > start]]))
+
+
+def _theta_axis(ax: Axes, theta10: np.ndarray) -> str:
+    """A smooth scale (asinh: linear near 0, logarithmic beyond; symlog's corner at ±1 drew
+    kinks), limited to solution (10)'s range. Returns the note for a clipped curve."""
+    ax.set_yscale("asinh", linear_width=0.5)
+    finite = theta10[np.isfinite(theta10)]
+    low, high = float(finite.min()), float(finite.max())
+    bottom, top = 1.6 * min(low, -1.0), 1.6 * max(high, 1.0)
+    ax.set_ylim(bottom, top)
+    steps = (0.0, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0)
+    ticks = sorted({s * sign for s in steps for sign in (1, -1) if bottom <= s * sign <= top})
+    ax.set_yticks(ticks, [f"{v:g}".replace("-", "−") for v in ticks])
+    ax.minorticks_off()
+    return f"; clipped below {bottom:.0f}"
+
+
+def _rest_label(theta_rest: np.ndarray, ax: Axes, base: str) -> str:
+    """The from-rest curve's label; where it leaves the axis (it grows without bound as the
+    length goes to zero: the Y₁ part of its solution), a note on the axis says how far."""
+    low = float(np.nanmin(theta_rest))
+    if low < ax.get_ylim()[0]:
+        ax.text(
+            0.99,
+            0.02,
+            f"dashed curve clipped: it goes on down to {low:.1e}".replace("-", "−"),
+            transform=ax.transAxes,
+            ha="right",
+            fontsize=7,
+            color="C1",
+        )
+    return base
+
+
 def draw_example(ax: Axes, m: ExampleModel) -> None:
     """θ/θ0 of solution (10) and of the release from rest, elongations and passages marked."""
-    t = np.linspace(min(0.0, float(m.passage_times[0])), m.zero_length_time * (1 - 0.02), 4000)
+    t = _times(min(0.0, float(m.passage_times[0])), m.zero_length_time * (1 - 0.02))
     theta10, theta_rest = theta_curves(m, t)
+    _theta_axis(ax, theta10)
     ax.plot(t, theta10, color="0.3", lw=1.0, label="solution (10)")
-    ax.plot(t, theta_rest, color="C1", lw=0.8, ls="--", label="released from rest at t = 0")
+    label = _rest_label(theta_rest, ax, "released from rest at t = 0")
+    ax.plot(t, theta_rest, color="C1", lw=0.8, ls="--", label=label)
     ax.plot(m.elongation_times, m.amplitude_ratios, "o", color="C0", label="elongations (10)")
     _passage_ticks(ax, m.passage_times, "vertical passages (10)")
-    ax.set_yscale("symlog", linthresh=1.0)
     ax.set_xlabel(f"t (s), L = {m.length:g} m at t = 0, shortening at {m.speed:g} m/s, g = {m.g:g}")
-    ax.set_ylabel("θ/θ0 (symlog)")
+    ax.set_ylabel("θ/θ0 (asinh scale)")
     ax.legend(fontsize=8, loc="lower left")
 
 
@@ -121,25 +167,19 @@ def draw_example_claims(ax: Axes, m: ExampleModel, rows: dict[str, ClaimRow]) ->
 
     ``m`` is the author's model at the paper's speed, length and g; ``rows`` the judged claims.
     """
-    t = np.linspace(m.passage_times[0] - 0.05, m.zero_length_time * (1 - 1e-6), 4000)
+    t = _times(m.passage_times[0] - 0.05, m.zero_length_time * (1 - 1e-6))
     theta, theta_rest = theta_curves(m, t)
     speed = _comma(m.speed)
+    _theta_axis(ax, theta)
     ax.plot(t, theta, color="0.3", lw=1.0, label=f"solution (10), b = {speed} m/s, g = {m.g:g}")
-    ax.plot(
-        t,
-        theta_rest,
-        color="C1",
-        lw=0.8,
-        ls="--",
-        label=f"released from rest at {m.length:g} m (exact column)",
-    )
+    base = f"released from rest at {m.length:g} m (exact column)"
+    ax.plot(t, theta_rest, color="C1", lw=0.8, ls="--", label=_rest_label(theta_rest, ax, base))
     ax.plot(
         m.elongation_times, m.amplitude_ratios, "o", color="C0", label="elongations, recomputed"
     )
     _draw_printed_points(ax, m, rows)
-    ax.set_yscale("symlog", linthresh=1.0)
     ax.set_xlabel(f"t (s), pendulum {m.length:g} m long at t = 0, shortening at {speed} m/s")
-    ax.set_ylabel("θ/θ0 (symlog)")
+    ax.set_ylabel("θ/θ0 (asinh scale)")
     ax.set_title("Lecornu's example: elongations and vertical passages")
     ax.axhline(0, color="0.8", lw=0.5)
     ax.legend(fontsize=8, loc="lower left")
@@ -172,16 +212,22 @@ def difference_bars(rows: dict[str, ClaimRow]) -> tuple[list[Bar], list[tuple[st
 def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float) -> None:
     """Figure 2: printed minus recomputed, in printed units, coloured by verdict."""
     bars, spans = difference_bars(rows)
-    top = max(b[1] for b in bars) + 1.5
-    bottom = min(min(b[1] for b in bars) - 0.5, -1.0)
+    # Symmetric-log beyond ±1: the deviations miss by up to ~40 units, the rest by under 1.
+    top = 3.0 * max(max(b[1] for b in bars), 1.0)
+    bottom = 1.6 * min(min(b[1] for b in bars), -1.0)
     for bx, d, verdict, _ in bars:
         ax.bar(bx, d, color=_VERDICT_COLOURS.get(verdict, "C3"))
     for name, start, end in spans:
-        ax.text((start + end) / 2, top - 0.8, name, ha="center", fontsize=8)
+        ax.text((start + end) / 2, top / 2, name, ha="center", va="center", fontsize=8)
     ax.axhspan(-0.5, 0.5, color="0.9", zorder=0)
     ax.set_xticks([b[0] for b in bars], [b[3] for b in bars], rotation=90, fontsize=8)
-    ax.set_ylabel("(printed - recomputed) / last printed unit")
+    ax.set_yscale("symlog", linthresh=1.0)
+    ax.set_ylabel("(printed − recomputed) / last printed unit\n(linear in ±1, logarithmic beyond)")
     ax.set_ylim(bottom, top)
+    steps = (0.0, 0.5, 1.0, 3.0, 10.0, 30.0, 100.0)
+    ticks = sorted({s * sign for s in steps for sign in (1, -1) if bottom <= s * sign <= top})
+    ax.set_yticks(ticks, [f"{v:g}".replace("-", "−") for v in ticks])
+    ax.minorticks_off()
     ax.set_title(
         f"Lecornu's example, printed minus recomputed (g = {g:g}): green agrees, "
         "orange truncated/last digit, red discrepant",
@@ -193,15 +239,20 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
 CAPTIONS = {
     "lecornu_example_theta": (
         "Lecornu's example (pendulum 1 m long at t = 0, shortened at 0,35 m/s, g = 9.81 m/s²): "
-        "θ/θ0 of the Bessel solution (10) against time, on a symmetric-log scale. Crosses: the "
+        "θ/θ0 of the Bessel solution (10) against time, on an asinh scale (linear near 0, "
+        "logarithmic beyond). Crosses: the "
         "printed elongation times and amplitudes; dots: recomputed; the vertical passages from "
         "the printed lengths against the recomputed ones. The dashed curve starts from rest at "
-        "1 m (the exact column), the solid one is the solution the paper uses."
+        "1 m (the exact column), the solid one is the solution the paper uses; the dashed one "
+        "grows without bound as the length goes to zero and leaves the axis (a note on the "
+        "axis says how far)."
     ),
     "lecornu_printed_minus_recomputed": (
         "Every number of Lecornu's example, printed minus recomputed, in units of its last "
-        "printed digit: inside the grey band (±½) a number agrees; orange bars round one unit "
-        "away or are truncated; red bars are discrepant (see each row's cause)."
+        "printed digit (linear within ±1, logarithmic beyond, so the deviations, off by up to "
+        "about 40 units, fit beside the rest): inside the grey band (±½) a number agrees; "
+        "orange bars round one unit away or are truncated; red bars are discrepant (see each "
+        "row's cause)."
     ),
 }
 

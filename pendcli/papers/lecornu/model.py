@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from pendcli.core.checks import real_in_range
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, invalid_value
 from pendcli.core.formula_engine import richardson
 from pendcli.core.numbers import PrintedNumber
 from pendcli.core.tables import load_paper_table, paper_constant
@@ -434,7 +434,7 @@ def elongation_times(
         return integrate_shortening(
             speed, length, g, 1e-3, rtol=rtol, floor_fraction=floor_fraction
         ).elongation_times
-    raise PendcliError(f"method {method!r} is unknown; choose one of bessel, ode")
+    raise invalid_value("method", method, "one of bessel, ode")
 
 
 # --- the constants -0,13, 3π/32 and 6,47 from the exact solution ---------------------------
