@@ -82,25 +82,6 @@ def fill_with(names: dict[str, str]):  # type: ignore[no-untyped-def]
 # --- the CLI: hidden folders beside the target, "*", a folder pendcli did not make ----------
 
 
-@pytest.mark.slow
-def test_out_star_keeps_every_folder_beside_it_and_cleans_only_its_dead_leftovers(
-    tmp_path: Path,
-) -> None:
-    keep = [".R9.keep-me", ".my.notes-2024", ".config.bak-1", ".*.new-1-abcdefgh"]
-    for name in keep:  # the last: pendcli's own name, but pid 1 is alive
-        (tmp_path / name).mkdir()
-        (tmp_path / name / "notes.txt").write_text("mine", encoding="utf-8")
-    dead = tmp_path / f".*.new-{DEAD_PID}-abcdefgh"
-    dead.mkdir()
-    out = run_cli(tmp_path, *CHEAP, "--out", "*")
-    assert out.returncode == 0, out.stderr
-    for name in keep:
-        assert (tmp_path / name / "notes.txt").read_text(encoding="utf-8") == "mine", name
-    assert not dead.exists()  # pendcli's, from a run that died: cleaned
-    assert_complete(tmp_path / "*")
-    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([*keep, "*"])  # no lock left
-
-
 def test_a_folder_pendcli_did_not_make_is_refused_before_the_run(tmp_path: Path) -> None:
     thesis = tmp_path / "thesis"
     (thesis / "chapters").mkdir(parents=True)
@@ -194,12 +175,23 @@ def test_a_second_writer_is_refused_in_one_line_while_the_first_holds_the_lock(
 
 
 @pytest.mark.slow
-def test_two_concurrent_runs_on_one_folder_never_leave_a_partial_report(tmp_path: Path) -> None:
+def test_two_concurrent_runs_on_out_star_keep_every_folder_beside_it_and_leave_a_whole_report(
+    tmp_path: Path,
+) -> None:
+    """Two runs at once on ``--out '*'``: each ends 0 or refused in one line, the folder is a
+    whole report; the hidden folders beside it (matched by an unescaped glob ``.*.*-*``) are
+    all kept, pendcli's own names of a live writer too; a dead writer's is removed."""
+    keep = [".R9.keep-me", ".my.notes-2024", ".config.bak-1", ".*.new-1-abcdefgh"]
+    for name in keep:  # the last: pendcli's own name, but pid 1 is alive
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "notes.txt").write_text("mine", encoding="utf-8")
+    dead = tmp_path / f".*.new-{DEAD_PID}-abcdefgh"
+    dead.mkdir()
     env = {k: v for k, v in os.environ.items() if k not in ("PENDCLI_DEBUG", "PENDCLI_TABLES")}
     env["PENDCLI_JOBS"] = "1"
     runs = [
         subprocess.Popen(
-            [str(PENDCLI), *CHEAP, "--out", "RR"],
+            [str(PENDCLI), *CHEAP, "--out", "*"],
             cwd=tmp_path,
             env=env,
             stdout=subprocess.DEVNULL,
@@ -214,8 +206,11 @@ def test_two_concurrent_runs_on_one_folder_never_leave_a_partial_report(tmp_path
         if code == 2:
             assert "being written by another pendcli run" in err, err
     assert 0 in [code for code, _ in results]
-    assert_complete(tmp_path / "RR")
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["RR"]
+    assert_complete(tmp_path / "*")
+    for name in keep:
+        assert (tmp_path / name / "notes.txt").read_text(encoding="utf-8") == "mine", name
+    assert not dead.exists()  # pendcli's, from a run that died: cleaned
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([*keep, "*"])  # no lock left
 
 
 # --- symlinks, names, modes ---------------------------------------------------------------------
