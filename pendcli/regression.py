@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.claims import PAPERS
+from pendcli.papers.registry import keys
 from pendcli.core.errors import PendcliError
 from pendcli.core.files import locked, remove_stale, replace_directory
 from pendcli.core.tables import tables_dir
@@ -258,7 +258,7 @@ def run_check(update: bool = False, quiet: bool = False, root: Path | None = Non
     from pendcli.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"
-    result = reproduce_all(PAPERS, formulas=True, quiet=quiet)
+    result = reproduce_all(keys(), formulas=True, quiet=quiet)
     tables = regenerated_tables(result)
     out = console()
     if update:

@@ -12,11 +12,10 @@ replace_directory`); the figures are drawn in two forked processes where two cor
 
 from __future__ import annotations
 
-import importlib
-import importlib.util
 import os
 import platform
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -60,10 +59,6 @@ Every row that does not agree or hold has a cause: `rounding`, `truncation`, `mi
 enters); `propagated` rows only carry the error of the rows named after it (*from*), and
 agree once those are replaced by their recomputed values (`tests/test_causes.py`).
 """
-
-
-def _module(name: str) -> ModuleType | None:
-    return importlib.import_module(name) if importlib.util.find_spec(name) else None
 
 
 def _environment() -> list[dict[str, str]]:
@@ -357,15 +352,17 @@ def _equation_section(rows: list[dict[str, object]]) -> list[str]:
 
 
 def figure_caption(path: Path) -> str:
-    """The caption of a report figure: its paper's ``CAPTIONS``, or the tradeoff's ``CAPTION``."""
-    for module in ("figures", "formulas"):
-        for key in ("tisserand", "lecornu", "charbonnier"):
-            found = _module(f"pendcli.papers.{key}.{module}")
-            captions = getattr(found, "CAPTIONS", {}) if found is not None else {}
-            if path.stem in captions:
-                return str(captions[path.stem])
+    """The caption of a report figure: its paper's ``captions``, or the tradeoff's ``CAPTION``."""
+    from pendcli.papers.registry import all_papers
+
+    for paper in all_papers():
+        captions = paper.captions() if paper.captions is not None else {}
+        if path.stem in captions:
+            return str(captions[path.stem])
     if path.stem == "work-precision":
-        return str(importlib.import_module("pendcli.tradeoff").CAPTION)
+        from pendcli.tradeoff import CAPTION
+
+        return str(CAPTION)
     return path.stem.replace("_", " ")
 
 
@@ -417,9 +414,8 @@ class _Tradeoff:
 def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tradeoff | None:
     """The families' tables, copied from the committed ones or (``measure``) measured now,
     written under ``tradeoff/``."""
-    tradeoff = _module("pendcli.tradeoff")
-    if tradeoff is None:
-        return None
+    from pendcli import tradeoff
+
     names = tradeoff.family_names(keys)
     if not names:
         return None
@@ -451,37 +447,36 @@ def _provenance(tradeoff: ModuleType, names: list[str], fresh: list[str]) -> str
     return text + "; `pendcli reproduce --out DIR --measure` measures them again"
 
 
-# name -> (module, function, arguments): each figure is drawn by one call, in any process
-_Task = tuple[str, str, str, tuple[Any, ...]]
+# (paper or "tradeoff", "claims"/"formulas"/"tradeoff", the drawing function, its arguments):
+# each figure is drawn by one call, in any process
+_Task = tuple[str, str, Callable[..., Any], tuple[Any, ...]]
 
 
 def _figure_tasks(result: ReproduceResult, folder: Path, tradeoff: _Tradeoff | None) -> list[_Task]:
     """Every figure to draw, the costliest first (so two processes finish together)."""
+    from pendcli.papers.registry import paper
+
     tasks: list[_Task] = []
     for key in result.papers:
-        if key in result.formulas and _has(f"pendcli.papers.{key}.formulas", "figures"):
+        formula_figures = paper(key).formula_figures
+        if key in result.formulas and formula_figures is not None:
             args = (folder / "figures" / key / "formulas", result.formulas[key])
-            tasks.append((key, f"pendcli.papers.{key}.formulas", "figures", args))
+            tasks.append((key, "formulas", formula_figures, args))
     if tradeoff is not None:
+        from pendcli.tradeoff import plot_tradeoff
+
         path = folder / "tradeoff" / "work-precision.png"
-        tasks.append(("tradeoff", "pendcli.tradeoff", "plot_tradeoff", (tradeoff.points, path)))
+        tasks.append(("tradeoff", "tradeoff", plot_tradeoff, (tradeoff.points, path)))
     for key in result.papers:
-        # papers/<key>/figures.py (the layout of issue 11); claims.py until a paper has moved
-        for name in (f"pendcli.papers.{key}.figures", f"pendcli.papers.{key}.claims"):
-            if _has(name, "figures"):
-                tasks.append((key, name, "figures", (folder / "figures" / key,)))
-                break
+        claim_figures = paper(key).figures
+        if claim_figures is not None:
+            tasks.append((key, "claims", claim_figures, (folder / "figures" / key,)))
     return tasks
 
 
-def _has(module: str, attribute: str) -> bool:
-    found = _module(module)
-    return found is not None and hasattr(found, attribute)
-
-
-def _draw(module: str, function: str, args: tuple[Any, ...]) -> list[Path]:
+def _draw(function: Callable[..., Any], args: tuple[Any, ...]) -> list[Path]:
     """Draw one task (in a worker process or this one); the files it wrote."""
-    out = getattr(importlib.import_module(module), function)(*args)
+    out = function(*args)
     return [Path(p) for p in out] if isinstance(out, list | tuple) else [Path(out)]
 
 
@@ -502,18 +497,18 @@ class _Drawing:
             _pyplot()  # once, here: the forked workers inherit it
             context = multiprocessing.get_context("fork")
             self.pool = ProcessPoolExecutor(self.jobs, mp_context=context)
-            self.futures = [self.pool.submit(_draw, m, f, a) for _, m, f, a in self.tasks]
+            self.futures = [self.pool.submit(_draw, f, a) for _, _, f, a in self.tasks]
         return self
 
     def results(self) -> dict[str, list[Path]]:
         """Figures per paper (and "tradeoff"), claim figures before formula figures."""
         if self.pool is None:
-            drawn = [_draw(m, f, a) for _, m, f, a in self.tasks]
+            drawn = [_draw(f, a) for _, _, f, a in self.tasks]
         else:
             drawn = [future.result() for future in self.futures]
         by_key: dict[str, list[Path]] = {}
-        for (key, module, _, _), paths in zip(self.tasks, drawn, strict=True):
-            claims_first = module.endswith((".figures", ".claims"))
+        for (key, kind, _, _), paths in zip(self.tasks, drawn, strict=True):
+            claims_first = kind == "claims"
             by_key.setdefault(key, [])
             by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
         return by_key

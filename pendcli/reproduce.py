@@ -289,23 +289,10 @@ class _Lane:
 
     def __enter__(self) -> _Lane:
         if self.steps:
-            import importlib
             import multiprocessing
             from concurrent.futures import ProcessPoolExecutor
 
-            for key, _ in self.steps:  # imported once, here, rather than in both processes
-                _paper_modules(key)
-            # scipy too (~0.3 s, both lanes need it): after the fork it would load twice; and
-            # sympy with mpmath when both lanes check parts of the equation ledger.
-            names = ["scipy.integrate", "scipy.special"]
-            if any("equations" in what for _, what in self.steps):
-                names += [
-                    "sympy",
-                    "mpmath",
-                    *(f"pendcli.papers.{k}.equations" for k in self.papers),
-                ]
-            for name in names:
-                importlib.import_module(name)
+            _preload(self.steps, self.papers)
             self.pool = ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("fork"))
             self.future = self.pool.submit(_run_lane, self.steps, self.papers)
         return self
@@ -318,14 +305,27 @@ class _Lane:
             self.pool.shutdown(wait=True, cancel_futures=True)
 
 
-def _paper_modules(key: str) -> None:
-    import importlib
-    import importlib.util
+def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
+    """Import, once and before the fork, what both processes would otherwise each import:
+    the papers' claims and formulas modules, scipy (~0.3 s), and sympy with mpmath and the
+    equations modules when both lanes check parts of the equation ledger."""
+    import scipy.integrate
+    import scipy.special  # noqa: F401
 
-    for part in ("claims", "formulas"):
-        name = f"pendcli.papers.{key}.{part}"
-        if key != "all" and importlib.util.find_spec(name) is not None:
-            importlib.import_module(name)
+    from pendcli.papers.registry import paper
+
+    for key in dict.fromkeys(key for key, _ in steps if key != "all"):
+        preload = paper(key).preload
+        if preload is not None:
+            preload()
+    if any("equations" in what for _, what in steps):
+        import mpmath  # noqa: F401
+        import sympy  # noqa: F401
+
+        for key in papers:
+            equations = paper(key).equations
+            if equations is not None:
+                equations()
 
 
 def _run_lane(steps: list[Step], papers: tuple[str, ...]) -> list[tuple[str, str, Any]]:

@@ -1,20 +1,18 @@
 """Numerical stability at the extremes (issue 7): where each method is accurate, measured now.
 
-Each paper declares its rows in ``pendcli.papers.<paper>.stability`` (``stability_rows()``),
-built with the helpers here; :func:`stability_rows` collects them in the order of
-:data:`pendcli.core.claims.PAPERS`.  Every method is evaluated on a grid running out to the
-extremes (n up to 10^12, amplitudes up to within 1e-13 degree of 180°, resistance
-coefficients well past "small") against an independent reference (mpmath at 30-50 digits, a
-positive series, closed forms, or direct ODE integration), and each row summarises the range
-where the method is accurate and what fails beyond.  Nothing in a row is typed in: every
-number in ``measured``, ``accurate_range`` and ``fails_beyond`` comes from the run (about
-1-2 s for all papers).
+Each paper declares its rows through its ``Paper.stability_rows`` hook (in
+``pendcli.papers.<paper>.stability``), built with the helpers here; :func:`stability_rows`
+collects them in the order of :mod:`pendcli.papers.registry`. Every method is evaluated on a
+grid running out to the extremes (n up to 10^12, amplitudes up to within 1e-13 degree of 180°,
+resistance coefficients well past "small") against an independent reference (mpmath at 30-50
+digits, a positive series, closed forms, or direct ODE integration), and each row summarises the
+range where the method is accurate and what fails beyond. Nothing in a row is typed in: every
+number in ``measured``, ``accurate_range`` and ``fails_beyond`` comes from the run (about 1-2 s
+for all papers).
 """
 
 from __future__ import annotations
 
-import importlib
-import importlib.util
 import math
 from collections.abc import Callable, Iterable
 from typing import Any
@@ -83,14 +81,13 @@ def worst(
 def stability_rows(papers: Iterable[str] | None = None) -> list[dict[str, str]]:
     """Per method: accurate range, what fails beyond, and the measurement behind it.
 
-    Only the rows of ``papers`` (default: every paper), in the order of ``PAPERS``.
+    Only the rows of ``papers`` (default: every paper), in the registry's order.
     """
-    from pendcli.core.claims import PAPERS
+    from pendcli.papers.registry import all_papers
 
-    wanted = PAPERS if papers is None else tuple(papers)
+    wanted = None if papers is None else tuple(papers)
     rows: list[dict[str, str]] = []
-    for key in (k for k in PAPERS if k in wanted):
-        name = f"pendcli.papers.{key}.stability"
-        if importlib.util.find_spec(name) is not None:  # a paper may declare none
-            rows += importlib.import_module(name).stability_rows()
+    for paper in all_papers():
+        if paper.stability_rows is not None and (wanted is None or paper.key in wanted):
+            rows += paper.stability_rows()
     return rows

@@ -1,8 +1,8 @@
 """Speed against accuracy (issue 6): work-precision measurements, one family per quantity.
 
 The generic engine.  Each paper declares its families in ``pendcli.papers.<paper>.speed``
-(``FAMILIES: list[Family]``); :func:`families` collects them, in the order of
-:data:`pendcli.core.claims.PAPERS`, on first use (so importing this module loads no paper).
+(``FAMILIES: list[Family]``, its ``Paper.tradeoff_families``); :func:`families` collects
+them, in the registry's order, on first use (so importing this module loads no paper).
 
 A family is a small set of problems (e.g. I_n(π) for a few n), a reference for each from an
 independent method at least 100x more accurate (mpmath at 50 digits, or a closed form), and
@@ -22,7 +22,6 @@ that regenerated the table (named in README.md); errors are machine-independent.
 from __future__ import annotations
 
 import csv
-import importlib
 import io
 import math
 import time
@@ -112,14 +111,17 @@ _PAPER_OF: dict[str, str] = {}  # family name -> the paper that declares it
 
 
 def families() -> dict[str, Family]:
-    """Every paper's families by name, collected once from ``papers/<paper>/speed.py``."""
+    """Every paper's families by name, collected once from each ``Paper.tradeoff_families``
+    (``papers/<paper>/speed.py``)."""
     global _FAMILIES
     if _FAMILIES is None:
-        from pendcli.core.claims import PAPERS
+        from pendcli.papers.registry import all_papers
 
         collected: dict[str, Family] = {}
-        for key in PAPERS:
-            for fam in importlib.import_module(f"pendcli.papers.{key}.speed").FAMILIES:
+        for paper in all_papers():
+            key = paper.key
+            declared = paper.tradeoff_families
+            for fam in declared() if declared is not None else ():
                 if fam.name in collected:
                     raise PendcliError(f"tradeoff family {fam.name!r} is declared twice")
                 collected[fam.name] = fam

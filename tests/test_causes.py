@@ -35,12 +35,12 @@ from pendcli.core.claims import (
     FormulaRow,
     cause_tally,
     evaluate_paper,
-    paper_module,
     with_causes,
 )
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table
 from pendcli.papers import formula_checks
+from pendcli.papers.registry import paper
 
 
 @pytest.fixture(scope="module")
@@ -54,8 +54,8 @@ def formulas() -> dict[str, dict[str, FormulaRow]]:
 
 
 def _procedures(key: str) -> dict[str, Procedure]:
-    builder = getattr(paper_module(key), "author_procedures", None)
-    return builder() if builder else {}
+    builder = paper(key).author_procedures
+    return dict(builder()) if builder is not None else {}
 
 
 def _claims_with(cause: str) -> list[tuple[str, str]]:

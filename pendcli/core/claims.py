@@ -1,8 +1,8 @@
 """The comparison engine: published values (data) joined with recomputations (code).
 
-A paper's claims module (``pendcli.papers.<paper>.claims``) exposes
-``recompute() -> dict[id, Recomputed]``.
-:func:`evaluate_paper` loads the paper's published table, calls it, and judges every claim.
+A paper's :class:`~pendcli.core.paper.Paper` (listed in :mod:`pendcli.papers.registry`)
+gives ``recompute() -> dict[id, Recomputed]``. :func:`evaluate_paper` loads the paper's
+published table, calls it, and judges every claim.
 Every published entry must have a recomputation and every recomputation a published entry:
 a claim without a computation is a defect, reported as an error, never silently skipped.
 """
@@ -10,11 +10,9 @@ a claim without a computation is a defect, reported as an error, never silently 
 from __future__ import annotations
 
 import dataclasses
-import importlib
 import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
-from types import ModuleType
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import (
@@ -25,6 +23,7 @@ from pendcli.core.tables import (
     missing_claim,
 )
 from pendcli.core.verdict import judge
+from pendcli.papers.registry import PAPERS, keys, paper
 
 __all__ = [
     "CAUSES",
@@ -37,13 +36,9 @@ __all__ = [
     "Recomputed",
     "cause_tally",
     "evaluate_paper",
-    "paper_module",
     "resolve_papers",
     "with_causes",
 ]
-
-# Every paper pendcli reproduces, in report order. The module pendcli.<key> holds its claims.
-PAPERS: tuple[str, ...] = ("tisserand", "lecornu", "charbonnier")
 
 
 @dataclass(frozen=True)
@@ -122,19 +117,14 @@ def _json_number(v: object) -> object:
     return v
 
 
-def paper_module(key: str) -> ModuleType:
-    if key not in PAPERS:
-        raise PendcliError(f"unknown paper {key!r}; choose one of {', '.join(PAPERS)}")
-    return importlib.import_module(f"pendcli.papers.{key}.claims")
-
-
-def resolve_papers(paper: str | None) -> tuple[str, ...]:
-    """All papers, or the one named (validated)."""
-    if paper is None:
-        return PAPERS
-    key = paper.strip().lower()
-    if key not in PAPERS:
-        raise PendcliError(f"unknown paper {paper!r}; choose one of {', '.join(PAPERS)}")
+def resolve_papers(name: str | None) -> tuple[str, ...]:
+    """All registered papers, or the one named (validated)."""
+    known = keys()
+    if name is None:
+        return known
+    key = name.strip().lower()
+    if key not in known:
+        raise PendcliError(f"unknown paper {name!r}; choose one of {', '.join(known)}")
     return (key,)
 
 
@@ -180,7 +170,7 @@ def make_row(entry: PublishedValue, result: Recomputed) -> ClaimRow:
     )
 
 
-def join_claims(table: PaperTable, results: dict[str, Recomputed]) -> list[ClaimRow]:
+def join_claims(table: PaperTable, results: Mapping[str, Recomputed]) -> list[ClaimRow]:
     missing = [c.id for c in table.claims if c.id not in results]
     extra = sorted(set(results) - {c.id for c in table.claims})
     if extra:  # an id renamed or removed in the file: name the file and the id the code uses
@@ -194,11 +184,11 @@ def join_claims(table: PaperTable, results: dict[str, Recomputed]) -> list[Claim
 
 
 def evaluate_paper(
-    key: str, recompute: Callable[[], dict[str, Recomputed]] | None = None
+    key: str, recompute: Callable[[], Mapping[str, Recomputed]] | None = None
 ) -> list[ClaimRow]:
     """Judge every published claim of one paper against its recomputation."""
     table = load_paper_table(key)
-    results = (recompute or paper_module(key).recompute)()
+    results = (recompute or paper(key).recompute)()
     return join_claims(table, results)
 
 

@@ -3,7 +3,8 @@
 A ledger is ``tables/equations/<paper>.toml``: one ``[[equation]]`` row per equation label
 printed in the paper's text (``tables/papers/<paper>.txt``) and per stated result, with a
 status (``holds``, ``fails``, ``misprint``, ``definition``, ``not-checkable``) and, for the
-first three, the name of a check in ``pendcli.papers.<paper>.equations`` returning an
+first three, the name of a check in the paper's equations module (``Paper.equations``, e.g.
+``pendcli.papers.<paper>.equations``) returning an
 :class:`~pendcli.core.ledger_check.EquationCheck`. This module knows nothing about pendulums:
 it reads and validates ledgers, extracts the labels a text prints, runs the checks and
 verifies that each agrees with the status its row records. A disagreement is an error in the
@@ -12,7 +13,6 @@ ledger, reported, never re-labelled.
 
 from __future__ import annotations
 
-import importlib
 import re
 import tomllib
 from collections import Counter
@@ -20,6 +20,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
@@ -135,14 +136,16 @@ def _tables_dir() -> Path:
 
 
 def ledger_path(paper: str, root: Path | None = None) -> Path:
-    return (root or _tables_dir()) / "equations" / f"{paper}.toml"
+    from pendcli.papers.registry import paper as registered
+
+    return registered(paper).tables(root or _tables_dir()).ledger
 
 
 def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
-    """The papers that have a ledger, in the project's order."""
-    from pendcli.core.claims import PAPERS
+    """The registered papers that have a ledger, in the project's order."""
+    from pendcli.papers.registry import keys
 
-    return tuple(p for p in PAPERS if ledger_path(p, root).is_file())
+    return tuple(p for p in keys() if ledger_path(p, root).is_file())
 
 
 def load_ledger(paper: str, root: Path | None = None) -> Ledger:
@@ -240,16 +243,22 @@ def _check_status_fields(where: str, row: LedgerRow) -> None:
         raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
 
 
-@cache
-def _check_module(paper: str) -> Any:
-    return importlib.import_module(f"pendcli.papers.{paper}.equations")
+def _check_module(paper: str) -> ModuleType:
+    from pendcli.papers.registry import paper as registered
+
+    equations = registered(paper).equations
+    if equations is None:
+        raise PendcliError(f"paper {paper!r} has a ledger but no equation checks")
+    return equations()
 
 
 @cache
 def _run_named(paper: str, name: str) -> EquationCheck:
-    function = getattr(_check_module(paper), name, None)
+    module = _check_module(paper)
+    # the ledger row names its check: a function of the paper's equations module
+    function = getattr(module, name, None)
     if not callable(function):
-        raise PendcliError(f"pendcli.papers.{paper}.equations has no check {name!r}")
+        raise PendcliError(f"{module.__name__} has no check {name!r}")
     result = function()
     if not isinstance(result, EquationCheck):
         raise PendcliError(f"check {paper}.{name} did not return an EquationCheck")
