@@ -518,6 +518,7 @@ def write_for_result(
 ) -> list[Path]:
     """The HTML pages of a reproduction: rows from ``result``, texts from tables/papers/."""
     from pendcli.core.tables import load_paper_table, tables_dir
+    from pendcli.papers.registry import paper
 
     claims: dict[str, list[Row]] = {}
     for key in result.papers:
@@ -529,8 +530,8 @@ def write_for_result(
     return write_html_report(
         out,
         result.papers,
-        {key: load_paper_table(key).citation for key in result.papers},
-        {key: (tables_dir() / "papers" / f"{key}.txt").read_text("utf-8") for key in result.papers},
+        {key: paper(key).citation() for key in result.papers},
+        {key: paper(key).tables(tables_dir()).text.read_text("utf-8") for key in result.papers},
         claims,
         {key: [f.as_dict() for f in result.formulas.get(key, [])] for key in result.papers},
         equations or {},

@@ -45,7 +45,7 @@ class CliApp:
 
 @dataclass(frozen=True)
 class Paper:
-    """One reproduced paper: its citation and every hook the program calls on it.
+    """One reproduced paper: its key and every hook the program calls on it.
 
     ``recompute`` is the only required hook: every paper has printed numbers. The others:
     ``formula_checks`` (derived formulas against numerical solutions), ``equations`` (the
@@ -58,7 +58,6 @@ class Paper:
     """
 
     key: str
-    citation: str
     recompute: Callable[[], Mapping[str, Recomputed]]
     formula_checks: Callable[[], Sequence[FormulaRow]] | None = None
     equations: Callable[[], ModuleType] | None = None
@@ -72,10 +71,11 @@ class Paper:
     captions: Callable[[], Mapping[str, str]] | None = None
     cli: CliApp | None = None
 
-    @property
-    def name(self) -> str:
-        """The paper as section titles name it (``Tisserand``)."""
-        return self.key.capitalize()
+    def citation(self) -> str:
+        """The full citation, as its published table records it (never retyped here)."""
+        from pendcli.core.tables import load_paper_table
+
+        return load_paper_table(self.key).citation
 
     def tables(self, root: Path) -> PaperTables:
         """The paper's files under the tables folder ``root``."""

@@ -54,15 +54,20 @@ def paper(key: str) -> Paper:
 
 
 @contextmanager
-def registered(extra: Paper) -> Iterator[Paper]:
-    """Within the block, ``extra`` is registered after the built-in papers (for tests)."""
+def registered(extra: Paper, alone: bool = False) -> Iterator[Paper]:
+    """Within the block, ``extra`` is registered after the built-in papers, or (``alone``)
+    instead of them: for a test of a paper of its own."""
     if extra.key in _registry:
         raise PendcliError(f"paper {extra.key!r} is already registered")
+    before = dict(_registry)
+    if alone:
+        _registry.clear()
     _registry[extra.key] = extra
     try:
         yield extra
     finally:
-        del _registry[extra.key]
+        _registry.clear()
+        _registry.update(before)
 
 
 # Rows computed by the running reproduction, by paper: set only inside sharing_formula_rows.

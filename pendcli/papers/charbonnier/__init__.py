@@ -124,10 +124,6 @@ def _cli() -> Any:
 
 PAPER = Paper(
     key="charbonnier",
-    citation=(
-        "P. Charbonnier, « Sur la théorie des perturbations du pendule », Nouvelles annales de "
-        "mathématiques, 4e série, t. 8 (1908), p. 145-162"
-    ),
     recompute=_recompute,
     formula_checks=_formula_checks,
     equations=_equations,

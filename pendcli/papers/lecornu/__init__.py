@@ -126,10 +126,6 @@ def _cli() -> Any:
 
 PAPER = Paper(
     key="lecornu",
-    citation=(
-        "L. Lecornu, « Mémoire sur le pendule de longueur variable » (after his note of 15 "
-        "January 1894, Comptes rendus de l'Académie des sciences)"
-    ),
     recompute=_recompute,
     formula_checks=_formula_checks,
     equations=_equations,

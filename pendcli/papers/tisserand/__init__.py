@@ -126,10 +126,6 @@ def _cli() -> Any:
 
 PAPER = Paper(
     key="tisserand",
-    citation=(
-        "F. Tisserand, « Sur le mouvement du pendule conique », Bulletin des sciences "
-        "mathématiques et astronomiques, 2e série, t. 5 (1881), p. 448-454"
-    ),
     recompute=_recompute,
     formula_checks=_formula_checks,
     equations=_equations,
