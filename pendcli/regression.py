@@ -23,10 +23,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.papers.registry import keys
 from pendcli.core.errors import PendcliError
 from pendcli.core.files import locked, remove_stale, replace_directory
 from pendcli.core.tables import tables_dir
+from pendcli.papers.registry import keys
 from pendcli.render.columns import Column
 from pendcli.render.csv import to_csv
 

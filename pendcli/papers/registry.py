@@ -16,8 +16,8 @@ from pendcli.core.errors import PendcliError
 from pendcli.papers import charbonnier, lecornu, tisserand
 
 if TYPE_CHECKING:
-    from pendcli.core.paper import Paper
     from pendcli.core.claims import FormulaRow
+    from pendcli.core.paper import Paper
 
 __all__ = [
     "PAPERS",
