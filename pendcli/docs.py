@@ -73,8 +73,8 @@ def ledger_section() -> str:
     """Coverage of the equation ledgers: the labels each text prints, rows by status."""
     from pendcli.core.claims import PAPERS
     from pendcli.core.ledger import coverage, equation_rows, labels_in_text
-    from pendcli.core.ledger_check import STATUSES
     from pendcli.core.tables import tables_dir
+    from pendcli.core.vocabulary import STATUSES
 
     counts = coverage(equation_rows(PAPERS))
     rows: list[Row] = []

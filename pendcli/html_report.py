@@ -19,7 +19,16 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from pendcli.core.vocabulary import (
+    CLAIM_VERDICTS,
+    STATUSES,
+    EquationStatus,
+    FormulaVerdict,
+    Verdict,
+)
+
 if TYPE_CHECKING:
+    from pendcli.core.rows import EquationRow
     from pendcli.reproduce import ReproduceResult
 
 __all__ = [
@@ -53,8 +62,8 @@ figcaption{font-size:13px;color:#444;max-width:60rem}
 nav a{margin-right:1rem}
 """
 
-VERDICT_CLASSES = ("agrees", "truncated", "last-digit", "discrepant")
-STATUS_CLASSES = ("holds", "fails", "misprint", "definition", "not-checkable")
+VERDICT_CLASSES = CLAIM_VERDICTS
+STATUS_CLASSES = STATUSES
 
 
 @dataclass(frozen=True)
@@ -392,9 +401,9 @@ def _page_of(row_id: str) -> str:
 
 
 def _disagreements(claims: Sequence[Row], formulas: Sequence[Row], eqs: Sequence[Row]) -> str:
-    rows = [r for r in claims if r.get("verdict") != "agrees"]
-    rows += [r for r in formulas if r.get("verdict") == "fails"]
-    rows += [r for r in eqs if r.get("status") in ("fails", "misprint")]
+    rows = [r for r in claims if r.get("verdict") != Verdict.AGREES]
+    rows += [r for r in formulas if r.get("verdict") == FormulaVerdict.FAILS]
+    rows += [r for r in eqs if r.get("status") in (EquationStatus.FAILS, EquationStatus.MISPRINT)]
     if not rows:
         return "<p>Everything holds.</p>"
     body = [
@@ -514,19 +523,16 @@ def write_for_result(
     result: ReproduceResult,
     out: Path,
     figures: Mapping[str, Sequence[Figure]],
-    equations: Mapping[str, Sequence[Row]] | None = None,
+    equations: Mapping[str, Sequence[EquationRow]] | None = None,
 ) -> list[Path]:
     """The HTML pages of a reproduction: rows from ``result``, texts from tables/papers/."""
-    from pendcli.core.tables import load_paper_table, tables_dir
+    from pendcli.core.tables import tables_dir
     from pendcli.papers.registry import paper
 
-    claims: dict[str, list[Row]] = {}
-    for key in result.papers:
-        printed = {c.id: c.as_printed for c in load_paper_table(key).claims}
-        claims[key] = [
-            {**row.as_dict(), "as_printed": printed.get(row.id, "")}
-            for row in result.claims.get(key, [])
-        ]
+    claims = {
+        key: [{**row.as_dict(), "as_printed": row.as_printed} for row in result.claims.get(key, [])]
+        for key in result.papers
+    }
     return write_html_report(
         out,
         result.papers,
@@ -534,6 +540,6 @@ def write_for_result(
         {key: paper(key).tables(tables_dir()).text.read_text("utf-8") for key in result.papers},
         claims,
         {key: [f.as_dict() for f in result.formulas.get(key, [])] for key in result.papers},
-        equations or {},
+        {key: [r.as_dict() for r in rows] for key, rows in (equations or {}).items()},
         figures,
     )

@@ -22,7 +22,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.verdict import CLAIM_VERDICTS
+from pendcli.core.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
 from pendcli.render.columns import Column, Row
 from pendcli.render.json import to_json
 from pendcli.render.markdown import to_markdown
@@ -30,6 +30,7 @@ from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 from pendcli.reproduce import ReproduceResult
 
 if TYPE_CHECKING:
+    from pendcli.core.rows import EquationRow
     from pendcli.tradeoff import Point
 
 __all__ = ["write_report"]
@@ -97,14 +98,14 @@ def disagreement_digest(result: ReproduceResult) -> list[str]:
     bullets = []
     for key in result.papers:
         for r in result.claims.get(key, []):
-            if r.verdict != "agrees":
+            if r.verdict != Verdict.AGREES:
                 bullets.append(
                     f"- **{r.id}** ({r.source}): printed `{r.published}`, recomputed "
                     f"{r.recomputed:.6g}: **{r.verdict}**{_cause_text(r.cause, r.cause_from)}. "
                     f"{_first_sentence(r.note)}"
                 )
         for f in result.formulas.get(key, []):
-            if f.verdict != "holds":
+            if f.verdict != FormulaVerdict.HOLDS:
                 bullets.append(
                     f"- **{f.id}** {f.source}: `{f.published}` fails"
                     f"{_cause_text(f.cause, f.cause_from)}; found `{f.recomputed}`."
@@ -327,16 +328,17 @@ def _paper_section(
     return lines
 
 
-def _equation_section(rows: list[dict[str, object]]) -> list[str]:
+def _equation_section(rows: list[EquationRow]) -> list[str]:
     """Coverage of the ledger by status, then every equation that fails or is misprinted."""
     if not rows:
         return []
     from pendcli.core.ledger import coverage
-    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.vocabulary import STATUSES
 
     counts = [{"paper": p, **c} for p, c in coverage(rows).items()]
     keys = ("paper", *STATUSES, "total", "checked")
-    wrong = [r for r in rows if r["status"] in ("fails", "misprint")]
+    failing = (EquationStatus.FAILS, EquationStatus.MISPRINT)
+    wrong = [r.as_dict() for r in rows if r.status in failing]
     columns = [Column(k, k) for k in ("equation", "section", "statement", "status", "note")]
     return [
         "### Equation ledger",

@@ -8,8 +8,14 @@ from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
 from typing import Any
 
-from pendcli.core.claims import FORMULA_VERDICTS, ClaimRow, FormulaRow, evaluate_paper
-from pendcli.core.verdict import CLAIM_VERDICTS
+from pendcli.core.claims import ClaimRow, FormulaRow, evaluate_paper
+from pendcli.core.rows import EquationRow
+from pendcli.core.vocabulary import (
+    CHECKED_STATUSES,
+    CLAIM_VERDICTS,
+    FORMULA_VERDICTS,
+    FormulaVerdict,
+)
 from pendcli.papers import formula_checks
 from pendcli.render.columns import Column, Row, Section
 from pendcli.summary import disagrees
@@ -23,7 +29,7 @@ class ReproduceResult:
     claims: dict[str, list[ClaimRow]] = field(default_factory=dict)
     formulas: dict[str, list[FormulaRow]] = field(default_factory=dict)
     stability: list[dict[str, str]] = field(default_factory=list)
-    equations: dict[str, list[dict[str, object]]] = field(default_factory=dict)
+    equations: dict[str, list[EquationRow]] = field(default_factory=dict)
 
     def claim_dicts(self, only_failing: bool = False) -> list[dict[str, object]]:
         rows = [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
@@ -34,7 +40,7 @@ class ReproduceResult:
         return [r for r in rows if disagrees(r)] if only_failing else rows
 
     def equation_dicts(self, only_failing: bool = False) -> list[dict[str, object]]:
-        rows = [r for key in self.papers for r in self.equations.get(key, [])]
+        rows = [r.as_dict() for key in self.papers for r in self.equations.get(key, [])]
         return [r for r in rows if disagrees(r)] if only_failing else rows
 
     def document(self, only_failing: bool = False) -> dict[str, object]:
@@ -71,7 +77,7 @@ class ReproduceResult:
         name = key.capitalize()
         rows = [r.as_dict() for r in self.claims.get(key, [])]
         frows = [r.as_dict() for r in self.formulas.get(key, [])]
-        eqs = self.equations.get(key, [])
+        eqs = [r.as_dict() for r in self.equations.get(key, [])]
         if only_failing or compact:  # the terminal lists equations that fail or are misprinted
             eqs = [r for r in eqs if disagrees(r)]
         if only_failing:
@@ -129,16 +135,16 @@ class ReproduceResult:
             row: dict[str, object] = {
                 "paper": key,
                 **{v: counts[key].get(v, 0) for v in CLAIM_VERDICTS},
-                "formulas holding": counts[key].get("formula holds", 0),
-                "formulas failing": counts[key].get("formula fails", 0),
+                "formulas holding": counts[key].get(f"formula {FormulaVerdict.HOLDS}", 0),
+                "formulas failing": counts[key].get(f"formula {FormulaVerdict.FAILS}", 0),
                 "root causes": tally.root_total,
                 "propagated": tally.propagated,
             }
             if self.equations:
                 eqs = self.equations.get(key, [])
                 row["equations"] = len(eqs)
-                for status in ("holds", "fails", "misprint"):
-                    row[f"equations {status}"] = sum(r["status"] == status for r in eqs)
+                for status in CHECKED_STATUSES:
+                    row[f"equations {status}"] = sum(r.status is status for r in eqs)
             out.append(row)
         return out
 
@@ -192,17 +198,19 @@ def reproduce_all(
     steps = _steps(keys, formulas, equations, stability)
     here, there = _lanes(steps, _jobs(jobs))
     result = ReproduceResult(papers=keys)
+    ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]] = {}
     with _Lane(there, keys) as other, _progress(quiet, len(steps)) as advance:
         for key, what in here:
             advance(f"{key}: {what}", 0)
-            _store(result, key, what, _run_step(key, what, keys))
+            _store(result, ledger_parts, key, what, _run_step(key, what, keys))
             advance(f"{key}: {what}", 1)
         for key, what, value in other.results():
-            _store(result, key, what, value)
+            _store(result, ledger_parts, key, what, value)
             advance(f"{key}: {what}", 1)
-    for key, rows in result.equations.items():  # the ledger's halves, back in its order
-        rows.sort(key=lambda row: int(str(row["_order"])))
-        result.equations[key] = [{k: v for k, v in r.items() if k != "_order"} for r in rows]
+    for key, parts in ledger_parts.items():  # the ledger's parts, back in its order
+        result.equations[key] = [
+            row for _, rows in sorted(parts, key=lambda p: p[0]) for row in rows
+        ]
     return result
 
 
@@ -345,8 +353,8 @@ def _run_step(key: str, what: str, papers: tuple[str, ...]) -> Any:
 
 
 def _ledger_step(key: str, what: str) -> Any:
-    """``equations i/n``: that part of the ledger, each row with its place (``_order``);
-    ``formulas+equations i/n``: the formula checks too, lent to the ledger's checks."""
+    """``equations i/n``: (i, that part of the ledger); ``formulas+equations i/n``: the
+    formula checks too, lent to the ledger's checks."""
     from pendcli.core.ledger import equation_rows
     from pendcli.papers import sharing_formula_rows
 
@@ -354,19 +362,24 @@ def _ledger_step(key: str, what: str) -> Any:
     rows = formula_checks(key) if what.startswith("formulas") else None
     with sharing_formula_rows(key, rows) if rows is not None else nullcontext():
         part = equation_rows([key], part=(index, count))
-    ordered = [{**row, "_order": index * 10_000 + i} for i, row in enumerate(part)]
-    return (rows, ordered) if rows is not None else ordered
+    return (rows, (index, part)) if rows is not None else (index, part)
 
 
-def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
+def _store(
+    result: ReproduceResult,
+    ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]],
+    key: str,
+    what: str,
+    value: Any,
+) -> None:
     if what == "claims":
         result.claims[key] = value
     elif what == "formulas":
         result.formulas[key] = value
     elif what.startswith("equations"):
-        result.equations.setdefault(key, []).extend(value)
+        ledger_parts.setdefault(key, []).append(value)
     elif what.startswith("formulas+equations"):
-        result.formulas[key], rows = value
-        result.equations.setdefault(key, []).extend(rows)
+        result.formulas[key], part = value
+        ledger_parts.setdefault(key, []).append(part)
     else:
         result.stability = value

@@ -28,6 +28,7 @@ from pendcli.core.ledger import (
     run_check,
     verify,
 )
+from pendcli.core.rows import EquationRow
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -91,7 +92,10 @@ def test_check_agrees_with_recorded_status(row: LedgerRow) -> None:
 
 @pytest.mark.parametrize("paper", _papers())
 def test_at_least_80_percent_of_rows_are_checked(paper: str) -> None:
-    rows = [{"paper": r.paper, "status": r.status} for r in load_ledger(paper, TABLES).rows]
+    rows = [
+        EquationRow(r.id, r.paper, r.equation, r.section, r.statement, r.status, "", None, "")
+        for r in load_ledger(paper, TABLES).rows
+    ]
     counts = coverage(rows)[paper]
     assert counts["checked"] / counts["total"] >= MIN_CHECKED, counts
 
@@ -132,9 +136,9 @@ def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) ->
     assert [i.problem for i in items] == [None] * len(SMALL)
     assert [i.check is None for i in items] == [i.row.status == "definition" for i in items]
     rows = equation_rows(["tisserand", "charbonnier"], tmp_path)  # no tisserand ledger here
-    assert all(tuple(r) == OUTPUT_KEYS for r in rows)
-    fails = next(r for r in rows if r["status"] == "fails")
-    assert "(computed: " in str(fails["note"])
+    assert all(tuple(r.as_dict()) == OUTPUT_KEYS for r in rows)
+    fails = next(r for r in rows if r.status == "fails")
+    assert "(computed: " in fails.note
     counts = coverage(rows)["charbonnier"]
     assert (counts["total"], counts["checked"], counts["fails"]) == (4, 3, 1)
 

@@ -34,7 +34,7 @@ def equations(
     from pendcli.core.claims import resolve_papers
     from pendcli.core.errors import PendcliError
     from pendcli.core.ledger import coverage, equation_rows
-    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.vocabulary import STATUSES
     from pendcli.render import Column
     from pendcli.reproduce import EQUATION_KEYS
     from pendcli.summary import compact_equation_columns
@@ -43,7 +43,7 @@ def equations(
         raise PendcliError(f"unknown status {status!r}; choose one of {', '.join(STATUSES)}")
     rows = equation_rows(resolve_papers(paper))
     counts = coverage(rows)
-    shown = [r for r in rows if status is None or r["status"] == status]
+    shown = [r.as_dict() for r in rows if status is None or r.status == status]
     compact = fmt is OutputFormat.table and not notes
     columns = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
     tally = [{"paper": p, **c} for p, c in counts.items()]

@@ -10,19 +10,26 @@ a claim without a computation is a defect, reported as an error, never silently 
 from __future__ import annotations
 
 import dataclasses
-import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.rows import ClaimRow, FormulaRow, Recomputed
 from pendcli.core.tables import (
-    CAUSES,
     PaperTable,
     PublishedValue,
     load_paper_table,
     missing_claim,
 )
 from pendcli.core.verdict import judge
+from pendcli.core.vocabulary import (
+    CAUSES,
+    FORMULA_VERDICTS,
+    ROOT_CAUSES,
+    Cause,
+    FormulaVerdict,
+    Verdict,
+)
 from pendcli.papers.registry import PAPERS, keys, paper
 
 __all__ = [
@@ -39,82 +46,6 @@ __all__ = [
     "resolve_papers",
     "with_causes",
 ]
-
-
-@dataclass(frozen=True)
-class Recomputed:
-    """A recomputed value in the claim's unit, with the author's model done exactly."""
-
-    value: float
-    exact: float | None = (
-        None  # the same quantity from a fuller model, where one answers a question
-    )
-    method: str = ""  # how it was computed, briefly
-    note: str = ""  # computed remark (appended to the table's note)
-
-
-@dataclass(frozen=True)
-class ClaimRow:
-    """One line of the comparison: what the paper printed against what we recompute."""
-
-    id: str
-    paper: str
-    source: str
-    quantity: str
-    unit: str
-    published: str
-    published_value: float
-    recomputed: float
-    verdict: str
-    abs_diff: float
-    rel_diff: float | None
-    digits: float
-    exact: float | None
-    method: str
-    note: str
-    cause: str | None = None  # why it disagrees (one of CAUSES), None when nothing to explain
-    cause_from: tuple[str, ...] = ()  # the rows it inherits its error from ("propagated")
-
-    def as_dict(self) -> dict[str, object]:
-        out = {k: _json_number(v) for k, v in self.__dict__.items() if k != "cause_from"}
-        out["from"] = list(self.cause_from)
-        return out
-
-
-# A derived formula holds or fails against the numerical solution (pendcli.core.formula_engine).
-FORMULA_VERDICTS: tuple[str, ...] = ("holds", "fails")
-
-
-@dataclass(frozen=True)
-class FormulaRow:
-    """A derived formula checked against a numerical solution of the governing equation."""
-
-    id: str
-    paper: str
-    source: str
-    published: str  # the formula as printed
-    recomputed: str  # the formula as found (corrected term, if any)
-    verdict: str  # "holds" or "fails"
-    claimed_order: float | None
-    observed_order: float | None
-    note: str
-    residuals: tuple[tuple[float, float], ...] = field(default=())  # (parameter, |residual|)
-    cause: str | None = None  # why it fails (one of CAUSES), None when it holds
-    cause_from: tuple[str, ...] = ()  # the formula rows it inherits its error from
-
-    def as_dict(self) -> dict[str, object]:
-        skip = ("residuals", "cause", "cause_from")
-        out = {k: _json_number(v) for k, v in self.__dict__.items() if k not in skip}
-        out["residuals"] = [[_json_number(p), _json_number(r)] for p, r in self.residuals]
-        out["cause"] = self.cause
-        out["from"] = list(self.cause_from)
-        return out
-
-
-def _json_number(v: object) -> object:
-    if isinstance(v, float) and not math.isfinite(v):
-        return None
-    return v
 
 
 def resolve_papers(name: str | None) -> tuple[str, ...]:
@@ -158,7 +89,7 @@ def make_row(entry: PublishedValue, result: Recomputed) -> ClaimRow:
         published=entry.published,
         published_value=entry.number.value,
         recomputed=result.value,
-        verdict=comparison.verdict.value,
+        verdict=comparison.verdict,
         abs_diff=comparison.abs_diff,
         rel_diff=comparison.rel_diff,
         digits=comparison.digits,
@@ -167,6 +98,7 @@ def make_row(entry: PublishedValue, result: Recomputed) -> ClaimRow:
         note=" ".join(notes),
         cause=entry.cause,
         cause_from=entry.cause_from,
+        as_printed=entry.as_printed,
     )
 
 
@@ -205,7 +137,7 @@ def with_causes(rows: Sequence[FormulaRow], causes: Mapping[str, FormulaCause]) 
     for row_id, (cause, sources) in causes.items():
         if cause not in CAUSES:
             raise PendcliError(f"{row_id}: cause {cause!r} is not one of {', '.join(CAUSES)}")
-        if (cause == "propagated") != bool(sources) or not set(sources) <= ids - {row_id}:
+        if (cause == Cause.PROPAGATED) != bool(sources) or not set(sources) <= ids - {row_id}:
             raise PendcliError(f"{row_id}: 'from' must name other rows iff cause is propagated")
     return [
         dataclasses.replace(r, cause=causes[r.id][0], cause_from=causes[r.id][1])
@@ -230,7 +162,7 @@ class CauseTally:
 
 
 def _disagrees(row: ClaimRow | FormulaRow) -> bool:
-    return row.verdict not in ("agrees", "holds")
+    return row.verdict not in (Verdict.AGREES, FormulaVerdict.HOLDS)
 
 
 def cause_tally(rows: Iterable[ClaimRow | FormulaRow]) -> CauseTally:
@@ -239,17 +171,17 @@ def cause_tally(rows: Iterable[ClaimRow | FormulaRow]) -> CauseTally:
     Every propagated row gives an edge from each of its sources (a source may itself agree,
     e.g. a rounded zero whose rounding carries into a time), in row order.
     """
-    roots = {c: 0 for c in CAUSES if c != "propagated"}
+    roots = {c.value: 0 for c in ROOT_CAUSES}
     propagated = unexplained = 0
     edges: list[tuple[str, str]] = []
     for row in rows:
-        if row.cause == "propagated":
+        if row.cause == Cause.PROPAGATED:
             edges += [(source, row.id) for source in row.cause_from]
         if not _disagrees(row):
             continue
         if row.cause is None:
             unexplained += 1
-        elif row.cause == "propagated":
+        elif row.cause == Cause.PROPAGATED:
             propagated += 1
         else:
             roots[row.cause] += 1

@@ -17,14 +17,17 @@ import re
 import tomllib
 from collections import Counter
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from functools import cache
 from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
+from pendcli.core.ledger_check import CHECK_METHODS, EquationCheck
+from pendcli.core.rows import EquationRow
+from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES, FormulaVerdict
+from pendcli.core.vocabulary import EquationStatus as Status
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
@@ -47,22 +50,11 @@ __all__ = [
     "verify",
 ]
 
-CHECKED_STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint")
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
 ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "note")
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
-OUTPUT_KEYS = (
-    "id",
-    "paper",
-    "equation",
-    "section",
-    "statement",
-    "status",
-    "check",
-    "observed_order",
-    "note",
-)
+OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
 
 # An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),
 # a roman numeral (I)-(XXXIX), or a single lower-case letter ((p), (q)); an OCR prime may be
@@ -204,7 +196,11 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         blank = not isinstance(value, str) or not value.strip()
         if value is not None and blank and not (key == "equation" and value == ""):
             raise PendcliError(f"{where}: {key!r} must be a non-empty string")
-    row = LedgerRow(paper=paper, **entry)
+    if entry["status"] not in STATUSES:
+        raise PendcliError(
+            f"{where}: unknown status {entry['status']!r}; valid: {', '.join(STATUSES)}"
+        )
+    row = LedgerRow(paper=paper, **{**entry, "status": Status(entry["status"])})
     _check_identity(where, row)
     _check_status_fields(where, row)
     return row
@@ -228,18 +224,16 @@ def _check_identity(where: str, row: LedgerRow) -> None:
 
 
 def _check_status_fields(where: str, row: LedgerRow) -> None:
-    if row.status not in STATUSES:
-        raise PendcliError(f"{where}: unknown status {row.status!r}; valid: {', '.join(STATUSES)}")
     checked = row.status in CHECKED_STATUSES
     if checked and row.check is None:
-        raise PendcliError(f"{where}: status {row.status!r} needs a check")
+        raise PendcliError(f"{where}: status {row.status.value!r} needs a check")
     if not checked and row.check is not None:
-        raise PendcliError(f"{where}: status {row.status!r} takes no check")
+        raise PendcliError(f"{where}: status {row.status.value!r} takes no check")
     if not checked and row.note is None:
-        raise PendcliError(f"{where}: status {row.status!r} needs a note (what or why)")
-    if (row.reading is not None) != (row.status == "misprint"):
+        raise PendcliError(f"{where}: status {row.status.value!r} needs a note (what or why)")
+    if (row.reading is not None) != (row.status is Status.MISPRINT):
         raise PendcliError(f"{where}: 'reading' is required for, and only for, misprint")
-    if (row.corrected is not None) != (row.status == "fails"):
+    if (row.corrected is not None) != (row.status is Status.FAILS):
         raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
 
 
@@ -276,10 +270,10 @@ def verify(row: LedgerRow, check: EquationCheck | None) -> str | None:
         return None if row.status not in CHECKED_STATUSES else "no check was run"
     if check.method not in CHECK_METHODS:
         return f"unknown check method {check.method!r}"
-    if row.status in ("holds", "misprint") and not check.holds:
-        form = "the evident reading" if row.status == "misprint" else "the printed form"
+    if row.status in (Status.HOLDS, Status.MISPRINT) and not check.holds:
+        form = "the evident reading" if row.status is Status.MISPRINT else "the printed form"
         return f"recorded {row.status}, but {form} does not hold: {check.detail}"
-    if row.status == "fails":
+    if row.status is Status.FAILS:
         if check.holds:
             return f"recorded fails, but the check finds it holds: {check.detail}"
         if not check.corrected:
@@ -293,7 +287,8 @@ class Evaluated:
     check: EquationCheck | None
     problem: str | None
 
-    def as_dict(self) -> dict[str, object]:
+    def output_row(self) -> EquationRow:
+        """The row every output shows."""
         row, check = self.row, self.check
         notes = []
         if row.reading:
@@ -305,17 +300,17 @@ class Evaluated:
             notes.append(row.note)
         if self.problem:
             notes.append(f"LEDGER INCONSISTENT: {self.problem}")
-        return {
-            "id": row.id,
-            "paper": row.paper,
-            "equation": row.equation,
-            "section": row.section,
-            "statement": row.statement,
-            "status": row.status,
-            "check": f"{check.method}: {check.detail}" if check is not None else "",
-            "observed_order": check.observed_order if check is not None else None,
-            "note": "; ".join(notes),
-        }
+        return EquationRow(
+            id=row.id,
+            paper=row.paper,
+            equation=row.equation,
+            section=row.section,
+            statement=row.statement,
+            status=row.status,
+            check=f"{check.method}: {check.detail}" if check is not None else "",
+            observed_order=check.observed_order if check is not None else None,
+            note="; ".join(notes),
+        )
 
 
 # (i, n): the i-th of n contiguous slices of a ledger's rows, so that two processes can
@@ -338,7 +333,7 @@ def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[
 
 def equation_rows(
     papers: Iterable[str], root: Path | None = None, part: Part = (0, 1)
-) -> list[dict[str, object]]:
+) -> list[EquationRow]:
     """The rows of ``reproduce --format json`` under "equations", for the papers that have a
     ledger (``part`` of each); raises PendcliError if a check contradicts its row's status."""
     available = set(ledger_papers(root))
@@ -348,7 +343,7 @@ def equation_rows(
         if paper not in available:
             continue
         for item in evaluate(paper, root, part):
-            rows.append(item.as_dict())
+            rows.append(item.output_row())
             if item.problem:
                 problems.append(f"{item.row.id}: {item.problem}")
     if problems:
@@ -356,12 +351,12 @@ def equation_rows(
     return rows
 
 
-def coverage(rows: Iterable[dict[str, object]]) -> dict[str, dict[str, int]]:
+def coverage(rows: Iterable[EquationRow]) -> dict[str, dict[str, int]]:
     """Per paper: the count of rows by status, the total and how many are checked."""
     table: dict[str, dict[str, int]] = {}
     for row in rows:
-        counts = table.setdefault(str(row["paper"]), {s: 0 for s in STATUSES})
-        counts[str(row["status"])] += 1
+        counts = table.setdefault(row.paper, {s.value: 0 for s in STATUSES})
+        counts[row.status.value] += 1
     for counts in table.values():
         counts["total"] = sum(counts[s] for s in STATUSES)
         counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
@@ -377,7 +372,7 @@ def check_from_formula_rows(rows: Iterable[FormulaRow], ids: Iterable[str]) -> E
     if missing:
         raise PendcliError(f"no formula check {', '.join(missing)} (renamed or removed?)")
     chosen = [by_id[i] for i in wanted]
-    failing = [r for r in chosen if r.verdict != "holds"]
+    failing = [r for r in chosen if r.verdict != FormulaVerdict.HOLDS]
     orders = [r.observed_order for r in chosen if r.observed_order is not None]
     claimed = [r.claimed_order for r in chosen if r.claimed_order is not None]
     parts = [f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen]

@@ -18,6 +18,7 @@ from typing import Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
+from pendcli.core.vocabulary import CAUSES  # why a printed value disagrees (tables/README.md)
 
 __all__ = [
     "CAUSES",
@@ -39,16 +40,6 @@ _PAPER_FIELDS = ("key", "citation", "seed", "assumptions", "constants")
 _CONSTANT_FIELDS = ("value", "unit", "source")
 _PRECISIONS = ("printed", "exact")
 _COMPARISONS = ("equal", "upper-bound")
-# Why a printed value disagrees, when it does (tables/README.md explains each).
-CAUSES = (
-    "rounding",
-    "truncation",
-    "propagated",
-    "arithmetic-slip",
-    "misprint",
-    "derivation-error",
-    "model-approximation",
-)
 
 
 @dataclass(frozen=True)
