@@ -21,7 +21,7 @@ __all__ = ["SECTIONS", "ledger_section", "main", "sample_section", "schema_secti
 
 
 def sample_section() -> str:
-    from pendcli.core.claims import PAPERS
+    from pendcli.papers.registry import PAPERS
     from pendcli.render.views import claim_columns
     from pendcli.reproduce import reproduce_all
 
@@ -71,10 +71,10 @@ def schema_section() -> str:
 # marker name -> what goes between <!-- name:start --> and <!-- name:end -->
 def ledger_section() -> str:
     """Coverage of the equation ledgers: the labels each text prints, rows by status."""
-    from pendcli.core.claims import PAPERS
-    from pendcli.core.ledger import coverage, equation_rows, labels_in_text
+    from pendcli.core.ledger import coverage, labels_in_text
     from pendcli.core.tables import tables_dir
     from pendcli.core.vocabulary import STATUSES
+    from pendcli.papers.registry import PAPERS, equation_rows
 
     counts = coverage(equation_rows(PAPERS))
     rows: list[Row] = []

@@ -8,7 +8,7 @@ from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
 from typing import Any
 
-from pendcli.core.claims import ClaimRow, FormulaRow, evaluate_paper
+from pendcli.core.claims import ClaimRow, FormulaRow
 from pendcli.core.rows import EquationRow
 from pendcli.core.vocabulary import (
     CHECKED_STATUSES,
@@ -16,7 +16,7 @@ from pendcli.core.vocabulary import (
     FORMULA_VERDICTS,
     FormulaVerdict,
 )
-from pendcli.papers import formula_checks
+from pendcli.papers.registry import evaluate, formula_checks
 from pendcli.render.columns import Column, Row, Section
 from pendcli.summary import disagrees
 
@@ -342,12 +342,12 @@ def _run_lane(steps: list[Step], papers: tuple[str, ...]) -> list[tuple[str, str
 
 def _run_step(key: str, what: str, papers: tuple[str, ...]) -> Any:
     if what == "claims":
-        return evaluate_paper(key)
+        return evaluate(key)
     if what == "formulas":
         return formula_checks(key)
     if what.startswith(("equations", "formulas+equations")):
         return _ledger_step(key, what)
-    from pendcli.stability import stability_rows
+    from pendcli.papers.registry import stability_rows
 
     return stability_rows(papers)
 
@@ -355,8 +355,8 @@ def _run_step(key: str, what: str, papers: tuple[str, ...]) -> Any:
 def _ledger_step(key: str, what: str) -> Any:
     """``equations i/n``: (i, that part of the ledger); ``formulas+equations i/n``: the
     formula checks too, lent to the ledger's checks."""
-    from pendcli.core.ledger import equation_rows
-    from pendcli.papers import sharing_formula_rows
+    from pendcli.core.claims import sharing_formula_rows
+    from pendcli.papers.registry import equation_rows
 
     index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
     rows = formula_checks(key) if what.startswith("formulas") else None

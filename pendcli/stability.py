@@ -1,14 +1,14 @@
 """Numerical stability at the extremes (issue 7): where each method is accurate, measured now.
 
 Each paper declares its rows through its ``Paper.stability_rows`` hook (in
-``pendcli.papers.<paper>.stability``), built with the helpers here; :func:`stability_rows`
-collects them in the order of :mod:`pendcli.papers.registry`. Every method is evaluated on a
-grid running out to the extremes (n up to 10^12, amplitudes up to within 1e-13 degree of 180°,
-resistance coefficients well past "small") against an independent reference (mpmath at 30-50
-digits, a positive series, closed forms, or direct ODE integration), and each row summarises the
-range where the method is accurate and what fails beyond. Nothing in a row is typed in: every
-number in ``measured``, ``accurate_range`` and ``fails_beyond`` comes from the run (about 1-2 s
-for all papers).
+``pendcli.papers.<paper>.stability``), built with the helpers here;
+:func:`pendcli.papers.registry.stability_rows` collects them in the registry's order. Every
+method is evaluated on a grid running out to the extremes (n up to 10^12, amplitudes up to
+within 1e-13 degree of 180°, resistance coefficients well past "small") against an independent
+reference (mpmath at 30-50 digits, a positive series, closed forms, or direct ODE integration),
+and each row summarises the range where the method is accurate and what fails beyond. Nothing
+in a row is typed in: every number in ``measured``, ``accurate_range`` and ``fails_beyond``
+comes from the run (about 1-2 s for all papers).
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from typing import Any
 
 from pendcli.core.errors import PendcliError
 
-__all__ = ["KEYS", "rel", "row", "short", "stability_rows", "ulps", "worst"]
+__all__ = ["KEYS", "rel", "row", "short", "ulps", "worst"]
 
 KEYS = ("family", "method", "accurate_range", "fails_beyond", "measured")
 
@@ -76,18 +76,3 @@ def worst(
         if u > worst_ulps or where is None:
             worst_ulps, where = u, p
     return worst_ulps, where
-
-
-def stability_rows(papers: Iterable[str] | None = None) -> list[dict[str, str]]:
-    """Per method: accurate range, what fails beyond, and the measurement behind it.
-
-    Only the rows of ``papers`` (default: every paper), in the registry's order.
-    """
-    from pendcli.papers.registry import all_papers
-
-    wanted = None if papers is None else tuple(papers)
-    rows: list[dict[str, str]] = []
-    for paper in all_papers():
-        if paper.stability_rows is not None and (wanted is None or paper.key in wanted):
-            rows += paper.stability_rows()
-    return rows

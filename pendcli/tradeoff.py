@@ -106,27 +106,34 @@ class Family:
 # The families the papers declare
 
 
-_FAMILIES: dict[str, Family] | None = None
+# Built once per set of registered papers (a test may register one of its own for a while).
+_FAMILIES: dict[str, Family] = {}
 _PAPER_OF: dict[str, str] = {}  # family name -> the paper that declares it
+_BUILT_FOR: tuple[object, ...] | None = None  # the papers _FAMILIES was built from
 
 
 def families() -> dict[str, Family]:
     """Every paper's families by name, collected once from each ``Paper.tradeoff_families``
     (``papers/<paper>/speed.py``)."""
-    global _FAMILIES
-    if _FAMILIES is None:
-        from pendcli.papers.registry import all_papers
+    global _BUILT_FOR
+    from pendcli.papers.registry import all_papers
 
+    papers = all_papers()
+    if _BUILT_FOR != papers:
         collected: dict[str, Family] = {}
-        for paper in all_papers():
-            key = paper.key
+        owners: dict[str, str] = {}
+        for paper in papers:
             declared = paper.tradeoff_families
             for fam in declared() if declared is not None else ():
                 if fam.name in collected:
                     raise PendcliError(f"tradeoff family {fam.name!r} is declared twice")
                 collected[fam.name] = fam
-                _PAPER_OF[fam.name] = key
-        _FAMILIES = collected
+                owners[fam.name] = paper.key
+        _FAMILIES.clear()
+        _FAMILIES.update(collected)
+        _PAPER_OF.clear()
+        _PAPER_OF.update(owners)
+        _BUILT_FOR = papers
     return _FAMILIES
 
 

@@ -17,8 +17,8 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.claims import PAPERS
 from pendcli.html_report import write_for_result
+from pendcli.papers.registry import PAPERS
 from pendcli.reproduce import reproduce_all
 
 pytestmark = pytest.mark.browser

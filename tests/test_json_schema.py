@@ -10,7 +10,8 @@ import pytest
 from cli_helpers import invoke
 
 from pendcli.core import schema
-from pendcli.core.claims import PAPERS, ClaimRow, FormulaRow
+from pendcli.core.claims import ClaimRow, FormulaRow
+from pendcli.papers.registry import PAPERS
 
 README = Path(__file__).resolve().parent.parent / "README.md"
 

@@ -13,8 +13,9 @@ import re
 import pytest
 
 from pendcli import stability
-from pendcli.core.claims import PAPERS
 from pendcli.core.errors import PendcliError
+from pendcli.papers import registry
+from pendcli.papers.registry import PAPERS
 
 pytestmark = pytest.mark.extremes
 
@@ -28,7 +29,7 @@ PAPER_FAMILIES = {
 
 @pytest.fixture(scope="module")
 def rows():
-    return stability.stability_rows()
+    return registry.stability_rows()
 
 
 # ---------------------------------------------------------------------------------------------

@@ -17,12 +17,12 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from pendcli.core.claims import evaluate_paper
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import parse_printed
 from pendcli.core.tables import load_paper_table
 from pendcli.core.verdict import judge
 from pendcli.numerics.spherical import exact_conical
+from pendcli.papers.registry import evaluate
 from pendcli.papers.tisserand import claims, explore, figures, model, units
 
 CLAIMS = load_paper_table("tisserand").claims
@@ -133,7 +133,7 @@ def example_reference():
 
 @pytest.fixture(scope="module")
 def rows():
-    return {r.id: r for r in evaluate_paper("tisserand")}
+    return {r.id: r for r in evaluate("tisserand")}
 
 
 # ------------------------------------------------------------ the claims

@@ -31,10 +31,10 @@ def equations(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
-    from pendcli.core.claims import resolve_papers
     from pendcli.core.errors import PendcliError
-    from pendcli.core.ledger import coverage, equation_rows
+    from pendcli.core.ledger import coverage
     from pendcli.core.vocabulary import STATUSES
+    from pendcli.papers.registry import equation_rows, resolve_papers
     from pendcli.render import Column
     from pendcli.reproduce import EQUATION_KEYS
     from pendcli.summary import compact_equation_columns

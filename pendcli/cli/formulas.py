@@ -26,8 +26,7 @@ def formulas(
     plot: FigureFolderOption = None,
 ) -> None:
     """Residual of each derived formula as its small parameter shrinks: observed order, verdict."""
-    from pendcli.core.claims import resolve_papers
-    from pendcli.papers import formula_checks
+    from pendcli.papers.registry import formula_checks, resolve_papers
 
     keys = resolve_papers(paper)
     _check_figure_folder(plot)

@@ -304,7 +304,8 @@ def main(
 @app.command("list")
 def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.table) -> None:
     """Every claim with its id, paper and source (reads the tables only; computes nothing)."""
-    from pendcli.core.claims import list_rows, resolve_papers
+    from pendcli.core.claims import list_rows
+    from pendcli.papers.registry import resolve_papers
     from pendcli.render import Column
 
     rows = list_rows(resolve_papers(paper))
@@ -360,8 +361,8 @@ def reproduce(
     ] = False,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 whatever the verdicts)."""
-    from pendcli.core.claims import resolve_papers
     from pendcli.core.errors import PendcliError
+    from pendcli.papers.registry import resolve_papers
     from pendcli.reproduce import reproduce_all
 
     if measure and out is None:

@@ -2,7 +2,8 @@
 
 A paper's :class:`~pendcli.core.paper.Paper` (listed in :mod:`pendcli.papers.registry`)
 gives ``recompute() -> dict[id, Recomputed]``. :func:`evaluate_paper` loads the paper's
-published table, calls it, and judges every claim.
+published table, calls it, and judges every claim. This module knows no paper: callers
+pass the recomputation (the registry's :func:`~pendcli.papers.registry.evaluate` looks it up).
 Every published entry must have a recomputation and every recomputation a published entry:
 a claim without a computation is a defect, reported as an error, never silently skipped.
 """
@@ -10,7 +11,8 @@ a claim without a computation is a defect, reported as an error, never silently 
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 from pendcli.core.errors import PendcliError
@@ -30,12 +32,10 @@ from pendcli.core.vocabulary import (
     FormulaVerdict,
     Verdict,
 )
-from pendcli.papers.registry import PAPERS, keys, paper
 
 __all__ = [
     "CAUSES",
     "FORMULA_VERDICTS",
-    "PAPERS",
     "CauseTally",
     "ClaimRow",
     "FormulaCause",
@@ -43,20 +43,10 @@ __all__ = [
     "Recomputed",
     "cause_tally",
     "evaluate_paper",
-    "resolve_papers",
+    "shared_formula_rows",
+    "sharing_formula_rows",
     "with_causes",
 ]
-
-
-def resolve_papers(name: str | None) -> tuple[str, ...]:
-    """All registered papers, or the one named (validated)."""
-    known = keys()
-    if name is None:
-        return known
-    key = name.strip().lower()
-    if key not in known:
-        raise PendcliError(f"unknown paper {name!r}; choose one of {', '.join(known)}")
-    return (key,)
 
 
 def list_rows(keys: Iterable[str]) -> list[dict[str, str]]:
@@ -115,13 +105,32 @@ def join_claims(table: PaperTable, results: Mapping[str, Recomputed]) -> list[Cl
     return [make_row(c, results[c.id]) for c in table.claims]
 
 
-def evaluate_paper(
-    key: str, recompute: Callable[[], Mapping[str, Recomputed]] | None = None
-) -> list[ClaimRow]:
-    """Judge every published claim of one paper against its recomputation."""
+def evaluate_paper(key: str, recompute: Callable[[], Mapping[str, Recomputed]]) -> list[ClaimRow]:
+    """Judge every published claim of paper ``key`` against ``recompute()``."""
     table = load_paper_table(key)
-    results = (recompute or paper(key).recompute)()
-    return join_claims(table, results)
+    return join_claims(table, recompute())
+
+
+# Formula rows computed by the running reproduction, by paper: set only inside
+# sharing_formula_rows, so that the equation ledger, which re-reads some of them, takes the
+# ones just computed instead of integrating everything again.
+_SHARED: dict[str, list[FormulaRow]] = {}
+
+
+def shared_formula_rows(key: str, compute: Callable[[], Sequence[FormulaRow]]) -> list[FormulaRow]:
+    """The formula rows of paper ``key`` a running reproduction shares, else ``compute()``."""
+    return list(_SHARED[key]) if key in _SHARED else list(compute())
+
+
+@contextmanager
+def sharing_formula_rows(key: str, rows: list[FormulaRow]) -> Iterator[None]:
+    """Within the block, :func:`shared_formula_rows` of ``key`` returns ``rows`` (never cached
+    beyond it, so a later run with other tables computes afresh)."""
+    _SHARED[key] = rows
+    try:
+        yield
+    finally:
+        _SHARED.pop(key, None)
 
 
 # A formula's cause: (cause, the ids of the formula rows it inherits from).

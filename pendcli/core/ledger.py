@@ -31,6 +31,7 @@ from pendcli.core.vocabulary import EquationStatus as Status
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
+    from pendcli.core.paper import Paper
 
 __all__ = [
     "CHECKED_STATUSES",
@@ -39,11 +40,11 @@ __all__ = [
     "Ledger",
     "LedgerRow",
     "check_from_formula_rows",
+    "check_module",
     "coverage",
     "equation_rows",
     "evaluate",
     "labels_in_text",
-    "ledger_papers",
     "load_ledger",
     "parse_ledger",
     "run_check",
@@ -128,16 +129,7 @@ def _tables_dir() -> Path:
 
 
 def ledger_path(paper: str, root: Path | None = None) -> Path:
-    from pendcli.papers.registry import paper as registered
-
-    return registered(paper).tables(root or _tables_dir()).ledger
-
-
-def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
-    """The registered papers that have a ledger, in the project's order."""
-    from pendcli.papers.registry import keys
-
-    return tuple(p for p in keys() if ledger_path(p, root).is_file())
+    return (root or _tables_dir()) / "equations" / f"{paper}.toml"
 
 
 def load_ledger(paper: str, root: Path | None = None) -> Ledger:
@@ -237,31 +229,31 @@ def _check_status_fields(where: str, row: LedgerRow) -> None:
         raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
 
 
-def _check_module(paper: str) -> ModuleType:
-    from pendcli.papers.registry import paper as registered
-
-    equations = registered(paper).equations
-    if equations is None:
-        raise PendcliError(f"paper {paper!r} has a ledger but no equation checks")
-    return equations()
+def check_module(paper: Paper) -> ModuleType | None:
+    """The module of the paper's equation checks (``Paper.equations``), None if it has none."""
+    return paper.equations() if paper.equations is not None else None
 
 
 @cache
-def _run_named(paper: str, name: str) -> EquationCheck:
-    module = _check_module(paper)
+def _run_named(checks: ModuleType, paper: str, name: str) -> EquationCheck:
     # the ledger row names its check: a function of the paper's equations module
-    function = getattr(module, name, None)
+    function = getattr(checks, name, None)
     if not callable(function):
-        raise PendcliError(f"{module.__name__} has no check {name!r}")
+        raise PendcliError(f"{checks.__name__} has no check {name!r}")
     result = function()
     if not isinstance(result, EquationCheck):
         raise PendcliError(f"check {paper}.{name} did not return an EquationCheck")
     return result
 
 
-def run_check(row: LedgerRow) -> EquationCheck | None:
-    """Run the row's check (None for definitions and not-checkable rows)."""
-    return None if row.check is None else _run_named(row.paper, row.check)
+def run_check(row: LedgerRow, checks: ModuleType | None) -> EquationCheck | None:
+    """Run the row's check, a function of ``checks`` (None for definitions and not-checkable
+    rows)."""
+    if row.check is None:
+        return None
+    if checks is None:
+        raise PendcliError(f"{row.id}: paper {row.paper!r} has no equation checks")
+    return _run_named(checks, row.paper, row.check)
 
 
 def verify(row: LedgerRow, check: EquationCheck | None) -> str | None:
@@ -318,29 +310,29 @@ class Evaluated:
 Part = tuple[int, int]
 
 
-def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
+def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
     """Every row of the paper's ledger (or of ``part`` of it) with its check run and its
     consistency verified."""
-    rows = load_ledger(paper, root).rows
+    rows = load_ledger(paper.key, root).rows
     index, count = part
     start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
+    checks = check_module(paper)
     out = []
     for row in rows[start:stop]:
-        check = run_check(row)
+        check = run_check(row, checks)
         out.append(Evaluated(row, check, verify(row, check)))
     return out
 
 
 def equation_rows(
-    papers: Iterable[str], root: Path | None = None, part: Part = (0, 1)
+    papers: Iterable[Paper], root: Path | None = None, part: Part = (0, 1)
 ) -> list[EquationRow]:
     """The rows of ``reproduce --format json`` under "equations", for the papers that have a
     ledger (``part`` of each); raises PendcliError if a check contradicts its row's status."""
-    available = set(ledger_papers(root))
     rows = []
     problems = []
     for paper in papers:
-        if paper not in available:
+        if not ledger_path(paper.key, root).is_file():
             continue
         for item in evaluate(paper, root, part):
             rows.append(item.output_row())

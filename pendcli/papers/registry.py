@@ -4,29 +4,42 @@ Each entry is the :class:`~pendcli.core.paper.Paper` its package declares; nothi
 a module name at run time. Adding a paper is one folder under ``pendcli/papers/`` and one
 line in :data:`_BUILT_IN`. A test adds a paper of its own for the length of a block with
 :func:`registered`.
+
+Only the layers above the papers (the CLI, the reproduction, the report) look a paper up by
+its key, here; the engines in :mod:`pendcli.core` are given what they need (a paper's
+recomputation, its :class:`Paper`), and a paper's own modules call their own functions.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from contextlib import contextmanager
+from pathlib import Path
 from typing import TYPE_CHECKING
 
+from pendcli.core.claims import evaluate_paper, shared_formula_rows, sharing_formula_rows
 from pendcli.core.errors import PendcliError
+from pendcli.core.ledger import Part, ledger_path
+from pendcli.core.ledger import equation_rows as ledger_equation_rows
 from pendcli.papers import charbonnier, lecornu, tisserand
 
 if TYPE_CHECKING:
-    from pendcli.core.claims import FormulaRow
     from pendcli.core.paper import Paper
+    from pendcli.core.rows import ClaimRow, EquationRow, FormulaRow
 
 __all__ = [
     "PAPERS",
     "all_papers",
+    "equation_rows",
+    "evaluate",
     "formula_checks",
     "keys",
+    "ledger_papers",
     "paper",
     "registered",
+    "resolve_papers",
     "sharing_formula_rows",
+    "stability_rows",
 ]
 
 _BUILT_IN: tuple[Paper, ...] = (tisserand.PAPER, lecornu.PAPER, charbonnier.PAPER)
@@ -70,25 +83,53 @@ def registered(extra: Paper, alone: bool = False) -> Iterator[Paper]:
         _registry.update(before)
 
 
-# Rows computed by the running reproduction, by paper: set only inside sharing_formula_rows.
-_SHARED: dict[str, list[FormulaRow]] = {}
+def resolve_papers(name: str | None) -> tuple[str, ...]:
+    """All registered papers, or the one named (validated)."""
+    known = keys()
+    if name is None:
+        return known
+    key = name.strip().lower()
+    if key not in known:
+        raise PendcliError(f"unknown paper {name!r}; choose one of {', '.join(known)}")
+    return (key,)
+
+
+def evaluate(key: str) -> list[ClaimRow]:
+    """Every published claim of paper ``key`` judged against its recomputation."""
+    return evaluate_paper(key, paper(key).recompute)
 
 
 def formula_checks(key: str) -> list[FormulaRow]:
     """The formula checks of one paper (empty if it has none): the rows a running
-    reproduction shares (:func:`sharing_formula_rows`), else computed now."""
-    if key in _SHARED:
-        return list(_SHARED[key])
+    reproduction shares (:func:`~pendcli.core.claims.sharing_formula_rows`), else computed
+    now."""
     checks = paper(key).formula_checks
-    return [] if checks is None else list(checks())
+    return shared_formula_rows(key, checks if checks is not None else _no_rows)
 
 
-@contextmanager
-def sharing_formula_rows(key: str, rows: list[FormulaRow]) -> Iterator[None]:
-    """Within the block, :func:`formula_checks` of ``key`` returns ``rows`` (never cached
-    beyond it, so a later run with other tables computes afresh)."""
-    _SHARED[key] = rows
-    try:
-        yield
-    finally:
-        _SHARED.pop(key, None)
+def _no_rows() -> list[FormulaRow]:
+    return []
+
+
+def stability_rows(keys_: Iterable[str] | None = None) -> list[dict[str, str]]:
+    """The stability rows (:mod:`pendcli.stability`) of the papers ``keys_`` (default: every
+    paper), in the registry's order."""
+    wanted = None if keys_ is None else tuple(keys_)
+    rows: list[dict[str, str]] = []
+    for found in all_papers():
+        if found.stability_rows is not None and (wanted is None or found.key in wanted):
+            rows += found.stability_rows()
+    return rows
+
+
+def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
+    """The registered papers that have an equation ledger, in the registry's order."""
+    return tuple(k for k in keys() if ledger_path(k, root).is_file())
+
+
+def equation_rows(
+    keys_: Iterable[str], root: Path | None = None, part: Part = (0, 1)
+) -> list[EquationRow]:
+    """The equation ledger rows of the papers ``keys_`` (see :func:`pendcli.core.ledger.
+    equation_rows`)."""
+    return ledger_equation_rows([paper(k) for k in keys_], root, part)

@@ -21,9 +21,10 @@ ORDER = 3  # series in x kept through x² (fourth order in the angles)
 
 @cache
 def _formula_rows() -> tuple[Any, ...]:
-    from pendcli.papers import formula_checks
+    from pendcli.core.claims import shared_formula_rows
+    from pendcli.papers.tisserand.formulas import formula_checks
 
-    return tuple(formula_checks("tisserand"))
+    return tuple(shared_formula_rows("tisserand", formula_checks))
 
 
 def _reuse(*ids: str) -> EquationCheck:
