@@ -119,7 +119,7 @@ def families() -> dict[str, Family]:
     from pendcli.papers.registry import all_papers
 
     papers = all_papers()
-    if _BUILT_FOR != papers:
+    if papers != _BUILT_FOR:
         collected: dict[str, Family] = {}
         owners: dict[str, str] = {}
         for paper in papers:
