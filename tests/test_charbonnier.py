@@ -471,14 +471,12 @@ def test_check_pendulum_is_read_from_the_table():
 
 def _run_cli(*args: str) -> tuple[int, str, str, float]:
     """`pendcli ARGS` in a fresh process under a 60 s deadline: (code, stdout, stderr, seconds)."""
-    import subprocess
-    import sys
     import time
 
+    from cli_helpers import run_cli
+
     start = time.perf_counter()
-    done = subprocess.run(
-        [sys.executable, "-m", "pendcli", *args], capture_output=True, text=True, timeout=60
-    )
+    done = run_cli(*args, timeout=60)
     return done.returncode, done.stdout, done.stderr, time.perf_counter() - start
 
 

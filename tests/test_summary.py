@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import os
-import subprocess
-import sys
+from cli_helpers import run_cli
 
 from pendcli.summary import disagrees, propagation_tree
 
@@ -37,14 +35,7 @@ def test_disagrees_covers_claims_formulas_and_equations():
 
 
 def _reproduce(*args: str) -> str:
-    env = {**os.environ, "COLUMNS": "80", "PENDCLI_JOBS": "1"}
-    done = subprocess.run(
-        [sys.executable, "-m", "pendcli", "reproduce", *args],
-        capture_output=True,
-        text=True,
-        env=env,
-        check=True,
-    )
+    done = run_cli("reproduce", *args, env={"COLUMNS": "80", "PENDCLI_JOBS": "1"}, check=True)
     return done.stdout
 
 
