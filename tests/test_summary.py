@@ -93,7 +93,8 @@ def test_ledger_halves_in_two_processes_give_the_ledger_in_order():
 
 
 def test_formula_rows_are_shared_only_inside_the_block():
-    from pendcli.papers.registry import formula_checks, sharing_formula_rows
+    from pendcli.core.claims import sharing_formula_rows
+    from pendcli.papers.registry import formula_checks
 
     with sharing_formula_rows("tisserand", []):
         assert formula_checks("tisserand") == []

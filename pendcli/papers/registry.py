@@ -17,15 +17,16 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.claims import evaluate_paper, shared_formula_rows, sharing_formula_rows
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import Part, ledger_path
-from pendcli.core.ledger import equation_rows as ledger_equation_rows
 from pendcli.papers import charbonnier, lecornu, tisserand
 
 if TYPE_CHECKING:
+    from pendcli.core.ledger import Part
     from pendcli.core.paper import Paper
     from pendcli.core.rows import ClaimRow, EquationRow, FormulaRow
+
+# The engines load when a function here first needs them: `pendcli --help` lists the papers'
+# sub-commands through this module and must stay instant.
 
 __all__ = [
     "PAPERS",
@@ -38,7 +39,6 @@ __all__ = [
     "paper",
     "registered",
     "resolve_papers",
-    "sharing_formula_rows",
     "stability_rows",
 ]
 
@@ -96,6 +96,8 @@ def resolve_papers(name: str | None) -> tuple[str, ...]:
 
 def evaluate(key: str) -> list[ClaimRow]:
     """Every published claim of paper ``key`` judged against its recomputation."""
+    from pendcli.core.claims import evaluate_paper
+
     return evaluate_paper(key, paper(key).recompute)
 
 
@@ -103,6 +105,8 @@ def formula_checks(key: str) -> list[FormulaRow]:
     """The formula checks of one paper (empty if it has none): the rows a running
     reproduction shares (:func:`~pendcli.core.claims.sharing_formula_rows`), else computed
     now."""
+    from pendcli.core.claims import shared_formula_rows
+
     checks = paper(key).formula_checks
     return shared_formula_rows(key, checks if checks is not None else _no_rows)
 
@@ -124,6 +128,8 @@ def stability_rows(keys_: Iterable[str] | None = None) -> list[dict[str, str]]:
 
 def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
     """The registered papers that have an equation ledger, in the registry's order."""
+    from pendcli.core.ledger import ledger_path
+
     return tuple(k for k in keys() if ledger_path(k, root).is_file())
 
 
@@ -132,4 +138,6 @@ def equation_rows(
 ) -> list[EquationRow]:
     """The equation ledger rows of the papers ``keys_`` (see :func:`pendcli.core.ledger.
     equation_rows`)."""
+    from pendcli.core.ledger import equation_rows as ledger_equation_rows
+
     return ledger_equation_rows([paper(k) for k in keys_], root, part)
