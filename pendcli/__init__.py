@@ -36,8 +36,8 @@ if TYPE_CHECKING:
         period,
         period_ratio,
     )
-    from pendcli.core.claims import PAPERS
     from pendcli.core.errors import PendcliError
+    from pendcli.papers.registry import PAPERS
     from pendcli.regression import Drift
     from pendcli.reproduce import ReproduceResult
 

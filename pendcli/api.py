@@ -117,7 +117,7 @@ def reproduce(
     Reached as ``pendcli.reproduce(...)``: the module :mod:`pendcli.reproduce` is callable
     and calls this function.
     """
-    from pendcli.core.claims import resolve_papers
+    from pendcli.papers.registry import resolve_papers
     from pendcli.reproduce import reproduce_all
 
     keys = resolve_papers(paper)
@@ -128,8 +128,8 @@ def check(tables: str | Path | None = None) -> list[Drift]:
     """Regenerate every table and compare it with the committed ones in
     ``tables/regenerated`` (or ``<tables>/regenerated``): the list of drifts beyond the
     tolerances (:data:`pendcli.regression.TOLERANCES`), empty when everything holds."""
-    from pendcli.core.claims import PAPERS
     from pendcli.core.tables import tables_dir
+    from pendcli.papers.registry import PAPERS
     from pendcli.regression import find_drifts, regenerated_tables
     from pendcli.reproduce import reproduce_all
 

@@ -25,7 +25,7 @@ __all__ = ["SECTIONS", "ledger_section", "main", "sample_section", "schema_secti
 
 
 def _reproduce_all() -> ReproduceResult:
-    from pendcli.core.claims import PAPERS
+    from pendcli.papers.registry import PAPERS
     from pendcli.reproduce import reproduce_all
 
     return reproduce_all(PAPERS, formulas=True, quiet=True)
@@ -80,11 +80,11 @@ def schema_section() -> str:
 # marker name -> what goes between <!-- name:start --> and <!-- name:end -->
 def ledger_section() -> str:
     """Coverage of the equation ledgers: the labels each text prints, rows by status."""
-    from pendcli.core.claims import PAPERS
-    from pendcli.core.ledger import coverage, equation_rows, labels_in_text
-    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.ledger import coverage, labels_in_text
     from pendcli.core.ledger_coverage import ledger_text_coverage
     from pendcli.core.tables import paper_text
+    from pendcli.core.vocabulary import STATUSES
+    from pendcli.papers.registry import PAPERS, equation_rows
 
     counts = coverage(equation_rows(PAPERS))
     rows: list[Row] = []

@@ -22,6 +22,10 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pendcli.core.vocabulary import (
+    CLAIM_VERDICTS,
+    STATUSES,
+)
 from pendcli.html_math import (
     balanced,
     mark_mathml,
@@ -35,6 +39,7 @@ if TYPE_CHECKING:
     from jinja2 import Environment
     from markupsafe import Markup
 
+    from pendcli.core.rows import EquationRow
     from pendcli.html_math import MathSegment
     from pendcli.reproduce import ReproduceResult
 
@@ -54,8 +59,8 @@ __all__ = [
 
 Row = Mapping[str, object]
 
-VERDICT_CLASSES = ("agrees", "truncated", "last-digit", "discrepant")
-STATUS_CLASSES = ("holds", "fails", "misprint", "definition", "not-checkable")
+VERDICT_CLASSES = CLAIM_VERDICTS
+STATUS_CLASSES = STATUSES
 # The cause of an equation row follows from its status (pendcli.core.causes' vocabulary).
 _EQUATION_CAUSE = {"fails": "derivation-error", "misprint": "misprint"}
 
@@ -896,7 +901,8 @@ def write_html_report(
 def _ledger_fields(paper: str, rows: Sequence[Row]) -> list[Row]:
     """The equation rows with the ledger's own reading, correction, printed term and note
     (the row's ``note`` joins them into one string)."""
-    from pendcli.core.ledger import ledger_papers, load_ledger
+    from pendcli.core.ledger import load_ledger
+    from pendcli.papers.registry import ledger_papers
 
     if paper not in ledger_papers():
         return list(rows)
@@ -913,10 +919,11 @@ def write_for_result(
     result: ReproduceResult,
     out: Path,
     figures: Mapping[str, Sequence[Figure]],
-    equations: Mapping[str, Sequence[Row]] | None = None,
+    equations: Mapping[str, Sequence[EquationRow]] | None = None,
 ) -> list[Path]:
     """The HTML pages of a reproduction: rows from ``result``, texts from tables/papers/."""
     from pendcli.core.tables import load_paper_table, tables_dir
+    from pendcli.papers.registry import paper
 
     claims: dict[str, list[Row]] = {}
     for key in result.papers:
@@ -929,11 +936,14 @@ def write_for_result(
     return write_html_report(
         out,
         result.papers,
-        {key: load_paper_table(key).citation for key in result.papers},
-        {key: (tables_dir() / "papers" / f"{key}.txt").read_text("utf-8") for key in result.papers},
+        {key: paper(key).citation() for key in result.papers},
+        {key: paper(key).tables(tables_dir()).text.read_text("utf-8") for key in result.papers},
         claims,
         {key: [f.as_dict() for f in result.formulas.get(key, [])] for key in result.papers},
-        {key: _ledger_fields(key, rows) for key, rows in (equations or {}).items()},
+        {
+            key: _ledger_fields(key, [r.as_dict() for r in rows])
+            for key, rows in (equations or {}).items()
+        },
         figures,
     )
 

@@ -22,10 +22,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.claims import PAPERS
 from pendcli.core.errors import PendcliError
 from pendcli.core.files import lock_file, locked, replace_owned_folder, write_through
 from pendcli.core.tables import tables_dir
+from pendcli.papers.registry import keys
 from pendcli.render.columns import Column
 from pendcli.render.csv import to_csv
 
@@ -265,7 +265,7 @@ def run_check(
 
     folder = (root or tables_dir()).resolve() / "regenerated"
     _load_ledgers(root)
-    result = reproduce_all(PAPERS, formulas=True, quiet=quiet or fmt != "table")
+    result = reproduce_all(keys(), formulas=True, quiet=quiet or fmt != "table")
     tables = regenerated_tables(result)
     out = console()
     if update:
@@ -299,8 +299,9 @@ def _load_ledgers(root: Path | None) -> None:
     """Every paper's equation ledger and text, read and validated (not checked: that is
     ``pendcli equations``): a missing or empty one fails ``check`` instead of passing unseen."""
     from pendcli.core.ledger import load_ledger
+    from pendcli.papers.registry import ledger_papers
 
-    for key in PAPERS:
+    for key in ledger_papers():
         load_ledger(key, root)
 
 

@@ -12,16 +12,15 @@ replace_directory`); the figures are drawn in two forked processes where two cor
 
 from __future__ import annotations
 
-import importlib
-import importlib.util
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.verdict import CLAIM_VERDICTS
+from pendcli.core.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
 from pendcli.render.columns import Column, Row
 from pendcli.render.json import to_json
 from pendcli.render.markdown import to_markdown
@@ -29,6 +28,7 @@ from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 from pendcli.reproduce import ReproduceResult
 
 if TYPE_CHECKING:
+    from pendcli.core.rows import EquationRow
     from pendcli.tradeoff import Point
 
 __all__ = ["write_report"]
@@ -56,10 +56,6 @@ Every row that does not agree or hold has a cause: `rounding`, `truncation`, `mi
 enters); `propagated` rows only carry the error of the rows named after it (*from*), and
 agree once those are replaced by their recomputed values (`tests/test_causes.py`).
 """
-
-
-def _module(name: str) -> ModuleType | None:
-    return importlib.import_module(name) if importlib.util.find_spec(name) else None
 
 
 def _environment() -> list[dict[str, str]]:
@@ -91,14 +87,14 @@ def disagreement_digest(result: ReproduceResult) -> list[str]:
     bullets = []
     for key in result.papers:
         for r in result.claims.get(key, []):
-            if r.verdict != "agrees":
+            if r.verdict != Verdict.AGREES:
                 bullets.append(
                     f"- **{r.id}** ({r.source}): printed `{r.published}`, recomputed "
                     f"{r.recomputed:.6g}: **{r.verdict}**{_cause_text(r.cause, r.cause_from)}. "
                     f"{_first_sentence(r.note)}"
                 )
         for f in result.formulas.get(key, []):
-            if f.verdict != "holds":
+            if f.verdict != FormulaVerdict.HOLDS:
                 bullets.append(
                     f"- **{f.id}** {f.source}: `{f.published}` fails"
                     f"{_cause_text(f.cause, f.cause_from)}; found `{f.recomputed}`."
@@ -110,6 +106,7 @@ def explanation_section(result: ReproduceResult) -> list[str]:
     """ "Explanations": how the author got each printed number that does not agree (the
     search of :mod:`pendcli.core.explain`), with its coincidence rate, or the space searched."""
     from pendcli.core.explain import COINCIDENCE_THRESHOLD, explain_rows
+    from pendcli.papers.registry import explanations
 
     lines = [
         "## Explanations",
@@ -123,7 +120,7 @@ def explanation_section(result: ReproduceResult) -> list[str]:
     ]
     for key in result.papers:
         verdicts = {r.id: (r.verdict, r.cause, r.published) for r in result.claims.get(key, [])}
-        for row in explain_rows(key, verdicts):
+        for row in explain_rows(key, explanations(key), verdicts):
             if row.verdict == "agrees":
                 continue
             d = row.as_dict()
@@ -387,16 +384,17 @@ def _paper_section(
     return lines
 
 
-def _equation_section(rows: list[dict[str, object]]) -> list[str]:
+def _equation_section(rows: list[EquationRow]) -> list[str]:
     """Coverage of the ledger by status, then every equation that fails or is misprinted."""
     if not rows:
         return []
     from pendcli.core.ledger import coverage
-    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.vocabulary import STATUSES
 
     counts = [{"paper": p, **c} for p, c in coverage(rows).items()]
     keys = ("paper", *STATUSES, "total", "checked")
-    wrong = [r for r in rows if r["status"] in ("fails", "misprint")]
+    failing = (EquationStatus.FAILS, EquationStatus.MISPRINT)
+    wrong = [r.as_dict() for r in rows if r.status in failing]
     columns = [Column(k, k) for k in ("equation", "section", "statement", "status", "note")]
     return [
         "### Equation ledger",
@@ -412,15 +410,17 @@ def _equation_section(rows: list[dict[str, object]]) -> list[str]:
 
 
 def figure_caption(path: Path) -> str:
-    """The caption of a report figure: its paper's ``CAPTIONS``, or the tradeoff's ``CAPTION``."""
-    for module in ("figures", "formulas"):
-        for key in ("tisserand", "lecornu", "charbonnier"):
-            found = _module(f"pendcli.papers.{key}.{module}")
-            captions = getattr(found, "CAPTIONS", {}) if found is not None else {}
-            if path.stem in captions:
-                return str(captions[path.stem])
+    """The caption of a report figure: its paper's ``captions``, or the tradeoff's ``CAPTION``."""
+    from pendcli.papers.registry import all_papers
+
+    for paper in all_papers():
+        captions = paper.captions() if paper.captions is not None else {}
+        if path.stem in captions:
+            return str(captions[path.stem])
     if path.stem == "work-precision":
-        return str(importlib.import_module("pendcli.tradeoff").CAPTION)
+        from pendcli.tradeoff import CAPTION
+
+        return str(CAPTION)
     return path.stem.replace("_", " ")
 
 
@@ -472,9 +472,8 @@ class _Tradeoff:
 def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tradeoff | None:
     """The families' tables, copied from the committed ones or (``measure``) measured now,
     written under ``tradeoff/``."""
-    tradeoff = _module("pendcli.tradeoff")
-    if tradeoff is None:
-        return None
+    from pendcli import tradeoff
+
     names = tradeoff.family_names(keys)
     if not names:
         return None
@@ -506,43 +505,42 @@ def _provenance(tradeoff: ModuleType, names: list[str], fresh: list[str]) -> str
     return text + "; `pendcli reproduce --out DIR --measure` measures them again"
 
 
-# name -> (module, function, arguments): each figure is drawn by one call, in any process
-_Task = tuple[str, str, str, tuple[Any, ...]]
+# (paper or "tradeoff", "claims"/"formulas"/"tradeoff", the drawing function, its arguments):
+# each figure is drawn by one call, in any process
+_Task = tuple[str, str, Callable[..., Any], tuple[Any, ...]]
 
 
 def _figure_tasks(result: ReproduceResult, folder: Path, tradeoff: _Tradeoff | None) -> list[_Task]:
     """Every figure to draw, the costliest first (so two processes finish together)."""
+    from pendcli.papers.registry import paper
+
     tasks: list[_Task] = []
     for key in result.papers:
-        if key in result.formulas and _has(f"pendcli.papers.{key}.formulas", "figures"):
+        formula_figures = paper(key).formula_figures
+        if key in result.formulas and formula_figures is not None:
             args = (folder / "figures" / key / "formulas", result.formulas[key])
-            tasks.append((key, f"pendcli.papers.{key}.formulas", "figures", args))
+            tasks.append((key, "formulas", formula_figures, args))
     if tradeoff is not None:
+        from pendcli.tradeoff import plot_tradeoff
+
         path = folder / "tradeoff" / "work-precision.png"
-        tasks.append(("tradeoff", "pendcli.tradeoff", "plot_tradeoff", (tradeoff.points, path)))
+        tasks.append(("tradeoff", "tradeoff", plot_tradeoff, (tradeoff.points, path)))
     for key in result.papers:
-        # papers/<key>/figures.py (the layout of issue 11); claims.py until a paper has moved
-        for name in (f"pendcli.papers.{key}.figures", f"pendcli.papers.{key}.claims"):
-            if _has(name, "figures"):
-                tasks.append((key, name, "figures", (folder / "figures" / key,)))
-                break
+        claim_figures = paper(key).figures
+        if claim_figures is not None:
+            tasks.append((key, "claims", claim_figures, (folder / "figures" / key,)))
     return tasks
 
 
-def _has(module: str, attribute: str) -> bool:
-    found = _module(module)
-    return found is not None and hasattr(found, attribute)
-
-
-def _draw(module: str, function: str, args: tuple[Any, ...]) -> list[Path]:
+def _draw(function: Callable[..., Any], args: tuple[Any, ...]) -> list[Path]:
     """Draw one task (in a worker process or this one); the files it wrote."""
-    out = getattr(importlib.import_module(module), function)(*args)
+    out = function(*args)
     return [Path(p) for p in out] if isinstance(out, list | tuple) else [Path(out)]
 
 
 def _draw_task(task: _Task) -> list[Path]:
-    _, module, function, args = task
-    return _draw(module, function, args)
+    _, _, function, args = task
+    return _draw(function, args)
 
 
 class _Drawing:
@@ -564,8 +562,8 @@ class _Drawing:
         """Figures per paper (and "tradeoff"), claim figures before formula figures."""
         drawn = self.workers.share(self.tasks, _draw_task)
         by_key: dict[str, list[Path]] = {}
-        for (key, module, _, _), paths in zip(self.tasks, drawn, strict=True):
-            claims_first = module.endswith((".figures", ".claims"))
+        for (key, kind, _, _), paths in zip(self.tasks, drawn, strict=True):
+            claims_first = kind == "claims"
             by_key.setdefault(key, [])
             by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
         return by_key

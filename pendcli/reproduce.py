@@ -15,9 +15,15 @@ from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
 from typing import Any
 
-from pendcli.core.claims import FORMULA_VERDICTS, ClaimRow, FormulaRow, evaluate_paper
-from pendcli.core.verdict import CLAIM_VERDICTS
-from pendcli.papers import formula_checks
+from pendcli.core.claims import ClaimRow, FormulaRow
+from pendcli.core.rows import EquationRow
+from pendcli.core.vocabulary import (
+    CHECKED_STATUSES,
+    CLAIM_VERDICTS,
+    FORMULA_VERDICTS,
+    FormulaVerdict,
+)
+from pendcli.papers.registry import evaluate, formula_checks
 from pendcli.render.columns import Column, Row, Section
 from pendcli.summary import disagrees
 
@@ -30,7 +36,7 @@ class ReproduceResult:
     claims: dict[str, list[ClaimRow]] = field(default_factory=dict)
     formulas: dict[str, list[FormulaRow]] = field(default_factory=dict)
     stability: list[dict[str, str]] = field(default_factory=list)
-    equations: dict[str, list[dict[str, object]]] = field(default_factory=dict)
+    equations: dict[str, list[EquationRow]] = field(default_factory=dict)
 
     def claim_dicts(self, only_failing: bool = False) -> list[dict[str, object]]:
         rows = [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
@@ -41,7 +47,7 @@ class ReproduceResult:
         return [r for r in rows if disagrees(r)] if only_failing else rows
 
     def equation_dicts(self, only_failing: bool = False) -> list[dict[str, object]]:
-        rows = [r for key in self.papers for r in self.equations.get(key, [])]
+        rows = [r.as_dict() for key in self.papers for r in self.equations.get(key, [])]
         return [r for r in rows if disagrees(r)] if only_failing else rows
 
     def document(self, only_failing: bool = False) -> dict[str, object]:
@@ -78,7 +84,7 @@ class ReproduceResult:
         name = key.capitalize()
         rows = [r.as_dict() for r in self.claims.get(key, [])]
         frows = [r.as_dict() for r in self.formulas.get(key, [])]
-        eqs = self.equations.get(key, [])
+        eqs = [r.as_dict() for r in self.equations.get(key, [])]
         if only_failing or compact:  # the terminal lists equations that fail or are misprinted
             eqs = [r for r in eqs if disagrees(r)]
         if only_failing:
@@ -136,16 +142,16 @@ class ReproduceResult:
             row: dict[str, object] = {
                 "paper": key,
                 **{v: counts[key].get(v, 0) for v in CLAIM_VERDICTS},
-                "formulas holding": counts[key].get("formula holds", 0),
-                "formulas failing": counts[key].get("formula fails", 0),
+                "formulas holding": counts[key].get(f"formula {FormulaVerdict.HOLDS}", 0),
+                "formulas failing": counts[key].get(f"formula {FormulaVerdict.FAILS}", 0),
                 "root causes": tally.root_total,
                 "propagated": tally.propagated,
             }
             if self.equations:
                 eqs = self.equations.get(key, [])
                 row["equations"] = len(eqs)
-                for status in ("holds", "fails", "misprint"):
-                    row[f"equations {status}"] = sum(r["status"] == status for r in eqs)
+                for status in CHECKED_STATUSES:
+                    row[f"equations {status}"] = sum(r.status is status for r in eqs)
             out.append(row)
         return out
 
@@ -207,17 +213,19 @@ def reproduce_all(
     result = ReproduceResult(papers=keys)
     workers = job_count(jobs, len(steps)) - 1
     if workers:
-        _import_before_fork(steps, keys)
+        _preload(steps, keys)
     order = _costliest_first(steps)
     with ForkedWorkers(workers) as pool, _progress(quiet, len(steps)) as advance:
         run = functools.partial(_run_step, papers=keys)
         values = pool.share(order, run, lambda step, _: advance(f"{step[0]}: {step[1]}", 1))
     by_step = dict(zip(order, values, strict=True))
+    ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]] = {}
     for step in steps:  # stored in one order whoever computed what, so the output is too
-        _store(result, *step, by_step[step])
-    for key, rows in result.equations.items():  # the ledger's halves, back in its order
-        rows.sort(key=lambda row: int(str(row["_order"])))
-        result.equations[key] = [{k: v for k, v in r.items() if k != "_order"} for r in rows]
+        _store(result, ledger_parts, *step, by_step[step])
+    for key, parts in ledger_parts.items():  # the ledger's parts, back in its order
+        result.equations[key] = [
+            row for _, rows in sorted(parts, key=lambda p: p[0]) for row in rows
+        ]
     return result
 
 
@@ -262,67 +270,71 @@ def _costliest_first(steps: list[Step]) -> list[Step]:
     return sorted(steps, key=lambda step: rank.get(step[1].split(" ")[0], 3))
 
 
-def _import_before_fork(steps: list[Step], papers: tuple[str, ...]) -> None:
-    """What both processes need, imported once here rather than once in each after the fork:
-    the papers' modules, scipy (~0.3 s), and sympy with mpmath when the ledger is shared."""
-    import importlib
+def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
+    """Import, once and before the fork, what both processes would otherwise each import:
+    the papers' claims and formulas modules, scipy (~0.3 s), and sympy with mpmath and the
+    equations modules when both lanes check parts of the equation ledger."""
+    import scipy.integrate
+    import scipy.special  # noqa: F401
 
-    for key, _ in steps:
-        _paper_modules(key)
-    names = ["scipy.integrate", "scipy.special"]
+    from pendcli.papers.registry import paper
+
+    for key in dict.fromkeys(key for key, _ in steps if key != "all"):
+        preload = paper(key).preload
+        if preload is not None:
+            preload()
     if any("equations" in what for _, what in steps):
-        names += ["sympy", "mpmath", *(f"pendcli.papers.{k}.equations" for k in papers)]
-    for name in names:
-        importlib.import_module(name)
+        import mpmath  # noqa: F401
+        import sympy  # noqa: F401
 
-
-def _paper_modules(key: str) -> None:
-    import importlib
-    import importlib.util
-
-    for part in ("claims", "formulas"):
-        name = f"pendcli.papers.{key}.{part}"
-        if key != "all" and importlib.util.find_spec(name) is not None:
-            importlib.import_module(name)
+        for key in papers:
+            equations = paper(key).equations
+            if equations is not None:
+                equations()
 
 
 def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
     key, what = step
     if what == "claims":
-        return evaluate_paper(key)
+        return evaluate(key)
     if what == "formulas":
         return formula_checks(key)
     if what.startswith(("equations", "formulas+equations")):
         return _ledger_step(key, what)
-    from pendcli.stability import stability_rows
+    from pendcli.papers.registry import stability_rows
 
     return stability_rows(papers)
 
 
 def _ledger_step(key: str, what: str) -> Any:
-    """``equations i/n``: that part of the ledger, each row with its place (``_order``);
-    ``formulas+equations i/n``: the formula checks too, lent to the ledger's checks."""
-    from pendcli.core.ledger import equation_rows
-    from pendcli.papers import sharing_formula_rows
+    """``equations i/n``: (i, that part of the ledger); ``formulas+equations i/n``: the
+    formula checks too, lent to the ledger's checks."""
+    from pendcli.core.claims import sharing_formula_rows
+    from pendcli.papers.registry import equation_rows
 
     index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
     rows = formula_checks(key) if what.startswith("formulas") else None
     with sharing_formula_rows(key, rows) if rows is not None else nullcontext():
         part = equation_rows([key], part=(index, count))
-    ordered = [{**row, "_order": index * 10_000 + i} for i, row in enumerate(part)]
-    return (rows, ordered) if rows is not None else ordered
+    return (rows, (index, part)) if rows is not None else (index, part)
 
 
-def _store(result: ReproduceResult, key: str, what: str, value: Any) -> None:
+def _store(
+    result: ReproduceResult,
+    ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]],
+    key: str,
+    what: str,
+    value: Any,
+) -> None:
     if what == "claims":
         result.claims[key] = value
     elif what == "formulas":
         result.formulas[key] = value
     elif what.startswith("equations"):
-        result.equations.setdefault(key, []).extend(value)
+        ledger_parts.setdefault(key, []).append(value)
     elif what.startswith("formulas+equations"):
-        result.formulas[key], rows = value
-        result.equations.setdefault(key, []).extend(rows)
+        result.formulas[key], part = value
+        ledger_parts.setdefault(key, []).append(part)
     else:
         result.stability = value
 

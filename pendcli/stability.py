@@ -1,27 +1,25 @@
 """Numerical stability at the extremes (issue 7): where each method is accurate, measured now.
 
-Each paper declares its rows in ``pendcli.papers.<paper>.stability`` (``stability_rows()``),
-built with the helpers here; :func:`stability_rows` collects them in the order of
-:data:`pendcli.core.claims.PAPERS`.  Every method is evaluated on a grid running out to the
-extremes (n up to 10^12, amplitudes up to within 1e-13 degree of 180°, resistance
-coefficients well past "small") against an independent reference (mpmath at 30-50 digits, a
-positive series, closed forms, or direct ODE integration), and each row summarises the range
-where the method is accurate and what fails beyond.  Nothing in a row is typed in: every
-number in ``measured``, ``accurate_range`` and ``fails_beyond`` comes from the run (about
-1-2 s for all papers).
+Each paper declares its rows through its ``Paper.stability_rows`` hook (in
+``pendcli.papers.<paper>.stability``), built with the helpers here;
+:func:`pendcli.papers.registry.stability_rows` collects them in the registry's order. Every
+method is evaluated on a grid running out to the extremes (n up to 10^12, amplitudes up to
+within 1e-13 degree of 180°, resistance coefficients well past "small") against an independent
+reference (mpmath at 30-50 digits, a positive series, closed forms, or direct ODE integration),
+and each row summarises the range where the method is accurate and what fails beyond. Nothing
+in a row is typed in: every number in ``measured``, ``accurate_range`` and ``fails_beyond``
+comes from the run (about 1-2 s for all papers).
 """
 
 from __future__ import annotations
 
-import importlib
-import importlib.util
 import math
 from collections.abc import Callable, Iterable
 from typing import Any
 
 from pendcli.core.errors import PendcliError
 
-__all__ = ["KEYS", "rel", "row", "short", "stability_rows", "ulps", "worst"]
+__all__ = ["KEYS", "rel", "row", "short", "ulps", "worst"]
 
 KEYS = ("family", "method", "accurate_range", "fails_beyond", "measured")
 
@@ -78,19 +76,3 @@ def worst(
         if u > worst_ulps or where is None:
             worst_ulps, where = u, p
     return worst_ulps, where
-
-
-def stability_rows(papers: Iterable[str] | None = None) -> list[dict[str, str]]:
-    """Per method: accurate range, what fails beyond, and the measurement behind it.
-
-    Only the rows of ``papers`` (default: every paper), in the order of ``PAPERS``.
-    """
-    from pendcli.core.claims import PAPERS
-
-    wanted = PAPERS if papers is None else tuple(papers)
-    rows: list[dict[str, str]] = []
-    for key in (k for k in PAPERS if k in wanted):
-        name = f"pendcli.papers.{key}.stability"
-        if importlib.util.find_spec(name) is not None:  # a paper may declare none
-            rows += importlib.import_module(name).stability_rows()
-    return rows

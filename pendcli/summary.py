@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 
+from pendcli.core.vocabulary import Cause, disagrees_word
 from pendcli.render.columns import Column, Row
 from pendcli.render.views import VERDICT_STYLES, format_like_printed
 
@@ -24,14 +25,14 @@ __all__ = [
 ]
 
 # The table's short label of each cause (the full word is in JSON, CSV and --notes).
-CAUSE_LABELS = {
-    "rounding": "rounding",
-    "truncation": "truncation",
-    "propagated": "propagated",
-    "arithmetic-slip": "slip",
-    "misprint": "misprint",
-    "derivation-error": "derivation",
-    "model-approximation": "model",
+CAUSE_LABELS: dict[str, str] = {
+    Cause.ROUNDING: "rounding",
+    Cause.TRUNCATION: "truncation",
+    Cause.PROPAGATED: "propagated",
+    Cause.ARITHMETIC_SLIP: "slip",
+    Cause.MISPRINT: "misprint",
+    Cause.DERIVATION_ERROR: "derivation",
+    Cause.MODEL_APPROXIMATION: "model",
 }
 CAUSE_LEGEND = (
     "cause: slip = arithmetic slip, derivation = derivation error, model = model\n"
@@ -74,13 +75,7 @@ def _order(row: Row) -> str:
 
 def disagrees(row: Row) -> bool:
     """A claim that does not agree, a formula that fails, an equation failing or misprinted."""
-    return row.get("verdict", row.get("status")) in (
-        "truncated",
-        "last-digit",
-        "discrepant",
-        "fails",
-        "misprint",
-    )
+    return disagrees_word(row.get("verdict", row.get("status")))
 
 
 def _printed(row: Row) -> str:
@@ -133,7 +128,7 @@ def propagation_tree(rows: Sequence[Row]) -> list[str]:
         for source in _sources(row):
             children.setdefault(str(source), []).append(str(row["id"]))
     by_id: Mapping[str, Row] = {str(r["id"]): r for r in rows}
-    roots = [i for i in children if by_id.get(i, {}).get("cause") != "propagated"]
+    roots = [i for i in children if by_id.get(i, {}).get("cause") != Cause.PROPAGATED]
     lines: list[str] = []
     drawn: set[str] = set()
 

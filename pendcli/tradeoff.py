@@ -1,8 +1,8 @@
 """Speed against accuracy (issue 6): work-precision measurements, one family per quantity.
 
 The generic engine.  Each paper declares its families in ``pendcli.papers.<paper>.speed``
-(``FAMILIES: list[Family]``); :func:`families` collects them, in the order of
-:data:`pendcli.core.claims.PAPERS`, on first use (so importing this module loads no paper).
+(``FAMILIES: list[Family]``, its ``Paper.tradeoff_families``); :func:`families` collects
+them, in the registry's order, on first use (so importing this module loads no paper).
 
 A family is a small set of problems (e.g. I_n(π) for a few n), a reference for each from an
 independent method at least 100x more accurate (mpmath at 50 digits, or a closed form), and
@@ -22,7 +22,6 @@ that regenerated the table (named in README.md); errors are machine-independent.
 from __future__ import annotations
 
 import csv
-import importlib
 import io
 import math
 import time
@@ -107,24 +106,34 @@ class Family:
 # The families the papers declare
 
 
-_FAMILIES: dict[str, Family] | None = None
+# Built once per set of registered papers (a test may register one of its own for a while).
+_FAMILIES: dict[str, Family] = {}
 _PAPER_OF: dict[str, str] = {}  # family name -> the paper that declares it
+_BUILT_FOR: tuple[object, ...] | None = None  # the papers _FAMILIES was built from
 
 
 def families() -> dict[str, Family]:
-    """Every paper's families by name, collected once from ``papers/<paper>/speed.py``."""
-    global _FAMILIES
-    if _FAMILIES is None:
-        from pendcli.core.claims import PAPERS
+    """Every paper's families by name, collected once from each ``Paper.tradeoff_families``
+    (``papers/<paper>/speed.py``)."""
+    global _BUILT_FOR
+    from pendcli.papers.registry import all_papers
 
+    papers = all_papers()
+    if papers != _BUILT_FOR:
         collected: dict[str, Family] = {}
-        for key in PAPERS:
-            for fam in importlib.import_module(f"pendcli.papers.{key}.speed").FAMILIES:
+        owners: dict[str, str] = {}
+        for paper in papers:
+            declared = paper.tradeoff_families
+            for fam in declared() if declared is not None else ():
                 if fam.name in collected:
                     raise PendcliError(f"tradeoff family {fam.name!r} is declared twice")
                 collected[fam.name] = fam
-                _PAPER_OF[fam.name] = key
-        _FAMILIES = collected
+                owners[fam.name] = paper.key
+        _FAMILIES.clear()
+        _FAMILIES.update(collected)
+        _PAPER_OF.clear()
+        _PAPER_OF.update(owners)
+        _BUILT_FOR = papers
     return _FAMILIES
 
 

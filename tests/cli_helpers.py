@@ -1,28 +1,84 @@
-"""Run the CLI in-process as a user would, and check its one-line errors."""
+"""Run the CLI in tests: in this process as a user would (:func:`invoke`), or in a fresh
+process where a real one is needed (:func:`run_cli`: exit codes on a closed or full stdout,
+start-up imports, signals, shell completion); and check its one-line errors."""
 
 from __future__ import annotations
 
 import contextlib
 import io
+import os
+import subprocess
 import sys
+from collections.abc import Iterator, Mapping
+from typing import Any, NamedTuple
 
 from pendcli.cli.main import run
 
+# `pendcli` as a fresh interpreter runs it (the installed script may be absent in a checkout)
+PENDCLI = (sys.executable, "-m", "pendcli")
 
-def invoke(*args: str) -> tuple[int, str, str]:
-    """Run `pendcli ARGS` in-process; return (exit code, stdout, stderr)."""
-    out, err = io.StringIO(), io.StringIO()
+
+class _Utf8Capture(io.StringIO):
+    """Captured output that declares UTF-8, as a terminal would (a plain StringIO declares
+    none, so a table shows ``?`` for every non-ASCII character)."""
+
+    @property
+    def encoding(self) -> str:  # type: ignore[override]
+        return "utf-8"
+
+
+class CliResult(NamedTuple):
+    code: int
+    out: str
+    err: str
+
+
+@contextlib.contextmanager
+def _environment(env: Mapping[str, str] | None) -> Iterator[None]:
+    if not env:
+        yield
+        return
+    saved = {k: os.environ.get(k) for k in env}
+    os.environ.update(env)
+    try:
+        yield
+    finally:
+        for key, value in saved.items():
+            if value is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = value
+
+
+def invoke(*args: str, env: Mapping[str, str] | None = None, utf8: bool = False) -> CliResult:
+    """Run `pendcli ARGS` in-process (``env``: variables set for the call; ``utf8``: stdout
+    declares UTF-8, as a terminal does); return (exit code, stdout, stderr)."""
+    out = _Utf8Capture() if utf8 else io.StringIO()
+    err = io.StringIO()
     argv = sys.argv
     sys.argv = ["pendcli", *args]
     code = 0
     try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        with _environment(env), contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
             run()
     except SystemExit as exc:
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
     finally:
         sys.argv = argv
-    return code, out.getvalue(), err.getvalue()
+    return CliResult(code, out.getvalue(), err.getvalue())
+
+
+def run_cli(
+    *args: str, env: Mapping[str, str] | None = None, **kwargs: Any
+) -> subprocess.CompletedProcess[str]:
+    """Run `pendcli ARGS` in a fresh process, output captured as text unless ``kwargs`` say
+    otherwise (``stdout=``, ``preexec_fn=``...); ``env`` is added to this process's
+    environment. Never raises on a non-zero exit."""
+    options: dict[str, Any] = {"text": True, "check": False, "timeout": 300}
+    if "stdout" not in kwargs and "stderr" not in kwargs:
+        options["capture_output"] = True
+    options.update(kwargs)
+    return subprocess.run([*PENDCLI, *args], env={**os.environ, **(env or {})}, **options)
 
 
 def assert_clean_error(code: int, err: str) -> None:

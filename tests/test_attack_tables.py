@@ -22,9 +22,9 @@ from pathlib import Path
 import pytest
 from cli_helpers import assert_clean_error, invoke
 
-from pendcli.core.claims import PAPERS
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import CONSTANT_RANGES, clear_table_cache, load_paper_table
+from pendcli.papers.registry import PAPERS
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
 PENDCLI = Path(sys.executable).with_name("pendcli")

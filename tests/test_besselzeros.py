@@ -173,18 +173,16 @@ def test_numerics_depends_on_no_paper():
 def test_cli_streams_zeros_exactly_in_the_json_layout():
     import json
 
-    from typer.testing import CliRunner
-
-    from pendcli.cli.lecornu import app
+    from cli_helpers import invoke
 
     count = 70_000  # two chunks
-    result = CliRunner().invoke(app, ["zeros", "--order", "1", "--count", str(count), "-f", "json"])
-    assert result.exit_code == 0, result.output
-    doc = json.loads(result.stdout)
+    result = invoke("lecornu", "zeros", "--order", "1", "--count", str(count), "-f", "json")
+    assert result.code == 0, result.out
+    doc = json.loads(result.out)
     assert list(doc) == ["order", "method", "method_reason", "zeros"]
     assert [r["k"] for r in doc["zeros"]] == list(range(1, count + 1))
     assert np.array_equal([r["zero"] for r in doc["zeros"]], bessel_zeros(1, count))  # repr exact
-    table = CliRunner().invoke(app, ["zeros", "--count", "6000"]).stdout.splitlines()
+    table = invoke("lecornu", "zeros", "--count", "6000").out.splitlines()
     assert table[:2] == ["Zeros of J_2 (auto)", "   k                   j"]  # plain text, aligned
     assert table[-1] == f"6000  {float(bessel_zeros(2, 6000)[-1])!r:>18}"
 

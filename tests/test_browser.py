@@ -21,8 +21,8 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.claims import PAPERS
 from pendcli.html_report import chromium, write_for_result
+from pendcli.papers.registry import PAPERS
 from pendcli.reproduce import reproduce_all
 
 pytestmark = pytest.mark.browser

@@ -30,22 +30,19 @@ from pendcli.core.causes import (
     split_error,
 )
 from pendcli.core.claims import (
-    PAPERS,
     ClaimRow,
     FormulaRow,
     cause_tally,
-    evaluate_paper,
-    paper_module,
     with_causes,
 )
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table
-from pendcli.papers import formula_checks
+from pendcli.papers.registry import PAPERS, evaluate, formula_checks, paper
 
 
 @pytest.fixture(scope="module")
 def claims() -> dict[str, dict[str, ClaimRow]]:
-    return {key: {r.id: r for r in evaluate_paper(key)} for key in PAPERS}
+    return {key: {r.id: r for r in evaluate(key)} for key in PAPERS}
 
 
 @pytest.fixture(scope="module")
@@ -54,8 +51,8 @@ def formulas() -> dict[str, dict[str, FormulaRow]]:
 
 
 def _procedures(key: str) -> dict[str, Procedure]:
-    builder = getattr(paper_module(key), "author_procedures", None)
-    return builder() if builder else {}
+    builder = paper(key).author_procedures
+    return dict(builder()) if builder is not None else {}
 
 
 def _claims_with(cause: str) -> list[tuple[str, str]]:

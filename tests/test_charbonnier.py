@@ -15,11 +15,10 @@ import mpmath
 import numpy as np
 import pytest
 
-from pendcli.core.claims import evaluate_paper
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table
-from pendcli.papers import formula_checks
 from pendcli.papers.charbonnier import claims, explore, figures, model
+from pendcli.papers.registry import evaluate, formula_checks
 
 CLAIMS = load_paper_table("charbonnier").claims
 
@@ -65,7 +64,7 @@ def test_printed_entry_equals_independent_quadrature(claim):
     n = int(claim.id.rsplit(".n", 1)[1])
     reference = mp_integral(n, math.pi)
     assert float(abs(claim.number.value - reference) / reference) < 1e-15  # the print holds
-    rows = {r.id: r for r in evaluate_paper("charbonnier")}
+    rows = {r.id: r for r in evaluate("charbonnier")}
     assert rows[claim.id].verdict == "agrees"
     assert float(abs(rows[claim.id].recomputed - reference) / reference) < 3e-16
 
@@ -476,15 +475,15 @@ def _run_cli(*args: str) -> tuple[int, str, str, float]:
     CPU, not wall time, so a loaded machine cannot fail the test (issue 23).
     """
     import resource
-    import subprocess
-    import sys
+
+    from cli_helpers import run_cli
 
     def children_cpu() -> float:
         usage = resource.getrusage(resource.RUSAGE_CHILDREN)
         return usage.ru_utime + usage.ru_stime
 
     start = children_cpu()
-    done = subprocess.run([sys.executable, "-m", "pendcli", *args], capture_output=True, text=True)
+    done = run_cli(*args)
     return done.returncode, done.stdout, done.stderr, children_cpu() - start
 
 

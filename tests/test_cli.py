@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 import pytest
-from cli_helpers import assert_clean_error, invoke
+from cli_helpers import assert_clean_error, invoke, run_cli
 
 from pendcli.cli.main import run
 
@@ -212,28 +212,24 @@ def test_shell_completion_sees_lazy_commands():
         "COMP_WORDS": "pendcli lecornu ze",
         "COMP_CWORD": "2",
     }
-    proc = subprocess.run(PENDCLI, env=env, capture_output=True, text=True, check=False)
+    proc = run_cli(env=env)
     assert proc.returncode == 0, proc.stderr
     assert set(proc.stdout.split()) == {"zeros", "zero-length"}
     env |= {"COMP_WORDS": "pendcli ", "COMP_CWORD": "1"}
-    proc = subprocess.run(PENDCLI, env=env, capture_output=True, text=True, check=False)
+    proc = run_cli(env=env)
     assert {"reproduce", "lecornu", "tradeoff"} <= set(proc.stdout.split())
     # typer detects the calling shell (sh under make); with detection off it takes a name
     env = {**os.environ, "_TYPER_COMPLETE_TEST_DISABLE_SHELL_DETECTION": "1"}
-    proc = subprocess.run(
-        [*PENDCLI, "--show-completion", "bash"], capture_output=True, text=True, env=env
-    )
+    proc = run_cli("--show-completion", "bash", env=env)
     assert proc.returncode == 0, proc.stderr
     assert "_PENDCLI_COMPLETE=complete_bash" in proc.stdout
 
 
 # --- issue 15: every OS error one line naming the path, exit 2; any locale -----------------
 
-PENDCLI = [sys.executable, "-c", "from pendcli.cli.main import run; run()"]
-
 
 def _pendcli(*args, **kwargs):
-    return subprocess.run([*PENDCLI, *args], capture_output=True, text=True, check=False, **kwargs)
+    return run_cli(*args, **kwargs)
 
 
 def _one_line(proc, expected: str) -> None:
@@ -244,21 +240,12 @@ def _one_line(proc, expected: str) -> None:
 @pytest.mark.parametrize("args", [("list",), ("--help",), ("-V",), ("list", "-f", "json")])
 def test_full_disk_on_stdout(args):
     with open("/dev/full", "w") as full:
-        proc = subprocess.run(
-            [*PENDCLI, *args], stdout=full, stderr=subprocess.PIPE, text=True, check=False
-        )
+        proc = run_cli(*args, stdout=full, stderr=subprocess.PIPE)
     _one_line(proc, "cannot write standard output: No space left on device")
 
 
 def test_closed_stdout():
-    proc = subprocess.run(
-        [*PENDCLI, "list"],
-        stderr=subprocess.PIPE,
-        text=True,
-        check=False,
-        close_fds=False,
-        preexec_fn=lambda: os.close(1),
-    )
+    proc = run_cli("list", stderr=subprocess.PIPE, close_fds=False, preexec_fn=lambda: os.close(1))
     _one_line(proc, "cannot write standard output: it is closed")
 
 
@@ -270,9 +257,7 @@ def test_broken_pipe_leaves_quietly_like_other_tools():
 
     read, write = os.pipe()
     os.close(read)  # nobody will read: the first write fails with EPIPE
-    proc = subprocess.run(
-        [*PENDCLI, "list", "-f", "json"], stdout=write, stderr=subprocess.PIPE, text=True
-    )
+    proc = run_cli("list", "-f", "json", stdout=write, stderr=subprocess.PIPE)
     os.close(write)
     assert proc.returncode == 128 + signal.SIGPIPE
     assert proc.stderr == ""

@@ -18,8 +18,9 @@ import pytest
 from cli_helpers import assert_clean_error, invoke
 
 from pendcli.core import explain as ex
-from pendcli.core.claims import PAPERS, evaluate_paper
 from pendcli.core.tables import load_paper_table
+from pendcli.papers.registry import PAPERS, explanations
+from pendcli.papers.registry import evaluate as evaluate_paper
 
 F = Fraction
 
@@ -34,7 +35,7 @@ def rows() -> dict[str, ex.ExplainedRow]:
     out = {}
     for key in PAPERS:
         verdicts = {r.id: (r.verdict, r.cause, r.published) for r in evaluate_paper(key)}
-        out |= {r.id: r for r in ex.explain_rows(key, verdicts)}
+        out |= {r.id: r for r in ex.explain_rows(key, explanations(key), verdicts)}
     return out
 
 

@@ -28,9 +28,9 @@ from pathlib import Path
 import pytest
 from cli_helpers import assert_clean_error, invoke
 
-from pendcli.core.claims import PAPERS, evaluate_paper
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import clear_table_cache
+from pendcli.papers.registry import PAPERS, evaluate
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
 CLONE_NEWUSER = 0x10000000  # linux/sched.h
@@ -256,7 +256,7 @@ def test_every_renamed_claim_id_is_a_named_error(tables_copy: Path, key: str) ->
         path = rename_claim(tables_copy, key, claim_id)
         clear_table_cache()
         with pytest.raises(PendcliError) as err:
-            evaluate_paper(key)
+            evaluate(key)
         message = str(err.value)
         assert str(path) in message and repr(claim_id) in message and "renamed" in message
         path.write_text(pristine, "utf-8")

@@ -326,9 +326,7 @@ def test_plot_studies_refuses_a_row_without_labels(tmp_path):
 @pytest.mark.parametrize("paper", ["tisserand", "lecornu", "charbonnier"])
 def test_every_drawn_formula_names_its_parameter_and_unit(paper, rows):
     """Each paper's panel labels cover exactly the rows its grid draws, none generic."""
-    import importlib
-
-    module = importlib.import_module(f"pendcli.papers.{paper}.formulas")
+    module = {"tisserand": fti, "lecornu": fle, "charbonnier": fch}[paper]
     labels = module.panels() if paper == "charbonnier" else module.PANELS
     drawn = {r.id for r in rows[paper] if r.residuals and r.claimed_order is not None}
     assert set(labels) == drawn

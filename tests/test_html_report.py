@@ -10,7 +10,6 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.claims import PAPERS
 from pendcli.core.ledger import load_ledger
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.html_graph import layered_graph
@@ -24,6 +23,7 @@ from pendcli.html_report import (
     render_stats,
     report_page,
 )
+from pendcli.papers.registry import PAPERS
 
 TEXT = (
     "Les racines sont:\n\n$$5,14 \\quad 8,41$$\n\net la longueur 0^m, 68 <b>\n\n"

@@ -34,7 +34,7 @@ def test_every_module_is_in_the_readme_layout() -> None:
 
 
 def test_every_paper_has_its_own_folder() -> None:
-    from pendcli.core.claims import PAPERS
+    from pendcli.papers.registry import PAPERS
 
     for key in PAPERS:
         folder = ROOT / "pendcli" / "papers" / key

@@ -19,13 +19,13 @@ from pathlib import Path
 import mpmath
 import numpy as np
 import pytest
-from typer.testing import CliRunner
+from cli_helpers import assert_clean_error, invoke
 
-from pendcli.core.claims import evaluate_paper
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.core.verdict import judge
 from pendcli.papers.lecornu import claims, explore, figures, model
+from pendcli.papers.registry import evaluate
 
 TABLE = load_paper_table("lecornu")
 CLAIMS = {c.id: c for c in TABLE.claims}
@@ -221,7 +221,7 @@ def references() -> dict[str, tuple[float, float]]:
 
 @pytest.fixture(scope="module")
 def rows():
-    return {r.id: r for r in evaluate_paper("lecornu")}
+    return {r.id: r for r in evaluate("lecornu")}
 
 
 # --- every claim --------------------------------------------------------------------------
@@ -327,9 +327,9 @@ def test_g_and_printed_intermediates_are_read_from_the_table(edited_tables):
 
 def test_cli_defaults_come_from_the_table(edited_tables):
     edited_tables("[paper.constants.speed]\nvalue = 0.35", "[paper.constants.speed]\nvalue = 0.42")
-    result = CliRunner().invoke(_app(), ["lecornu", "example", "--format", "json"])
-    assert result.exit_code == 0, result.output
-    summary = {r["quantity"]: r["value"] for r in json.loads(result.output)["summary"]}
+    result = invoke("lecornu", "example", "--format", "json")
+    assert result.code == 0, result.out
+    summary = {r["quantity"]: r["value"] for r in json.loads(result.out)["summary"]}
     assert summary["b²/(4g), eq. (16)"] == pytest.approx(0.42**2 / (4 * G), rel=1e-15)
 
 
@@ -450,34 +450,23 @@ def test_elongation_times_bad_method():
 # --- CLI ------------------------------------------------------------------------------------
 
 
-def _app():
-    from pendcli.cli.main import app
-
-    return app
+def _lecornu(*args):
+    return invoke("lecornu", *args)
 
 
-@pytest.fixture(scope="module")
-def runner():
-    return CliRunner()
-
-
-def invoke(runner, *args):
-    return runner.invoke(_app(), ["lecornu", *args])
-
-
-def test_cli_claims_json(runner):
-    result = invoke(runner, "claims", "--format", "json")
-    assert result.exit_code == 0, result.output
-    doc = json.loads(result.output)
+def test_cli_claims_json():
+    result = _lecornu("claims", "--format", "json")
+    assert result.code == 0, result.out
+    doc = json.loads(result.out)
     assert doc["g"] == G
     assert {r["id"]: r["verdict"] for r in doc["claims"]} == EXPECTED
 
 
 @pytest.mark.parametrize("fmt", ["table", "markdown", "json", "csv"])
-def test_cli_zeros_formats(runner, fmt):
-    result = invoke(runner, "zeros", "--order", "2", "--count", "5", "--format", fmt)
-    assert result.exit_code == 0, result.output
-    assert "17.95981949" in result.output
+def test_cli_zeros_formats(fmt):
+    result = _lecornu("zeros", "--order", "2", "--count", "5", "--format", fmt)
+    assert result.code == 0, result.out
+    assert "17.95981949" in result.out
 
 
 @pytest.mark.parametrize(
@@ -488,10 +477,10 @@ def test_cli_zeros_formats(runner, fmt):
         (("ode-check", "--amplitude", "2", "--floor", "0.1"), "rows"),
     ],
 )
-def test_cli_other_commands_json(runner, args, key):
-    result = invoke(runner, *args, "--format", "json")
-    assert result.exit_code == 0, result.output
-    assert json.loads(result.output)[key]
+def test_cli_other_commands_json(args, key):
+    result = _lecornu(*args, "--format", "json")
+    assert result.code == 0, result.out
+    assert json.loads(result.out)[key]
 
 
 @pytest.mark.parametrize(
@@ -508,11 +497,10 @@ def test_cli_other_commands_json(runner, args, key):
     ],
     ids=" ".join,
 )
-def test_cli_bad_input_is_one_error(runner, args):
-    result = invoke(runner, *args)
-    assert isinstance(result.exception, PendcliError)
-    message = str(result.exception)
-    assert "valid range" in message or "one of" in message
+def test_cli_bad_input_is_one_error(args):
+    result = _lecornu(*args)
+    assert_clean_error(result.code, result.err)
+    assert "valid range" in result.err or "one of" in result.err
 
 
 # --- figures: what is drawn ---------------------------------------------------------------
@@ -617,14 +605,14 @@ def test_figures_written(tmp_path):
     assert _share_of(bars, "C3") > 1e-3  # discrepant bars (red)
 
 
-def test_cli_example_csv_and_plot(runner, tmp_path):
+def test_cli_example_csv_and_plot(tmp_path):
     plot = tmp_path / "ex.png"
-    result = invoke(
-        runner, "example", "--speed", "0.5", "--length", "2", "--format", "csv", "--plot", str(plot)
+    result = _lecornu(
+        "example", "--speed", "0.5", "--length", "2", "--format", "csv", "--plot", str(plot)
     )
-    assert result.exit_code == 0, result.output
+    assert result.code == 0, result.out
     # several tables in one CSV: the first column names the table of each row (issue 13)
-    assert result.output.splitlines()[0].startswith("table,k,z,length_m,time_s")
+    assert result.out.splitlines()[0].startswith("table,k,z,length_m,time_s")
     pixels = _png_pixels(plot)
     assert pixels.shape[:2] == (576, 960)
     assert _share_of(pixels, "0.3") > 1e-3  # solution (10) drawn

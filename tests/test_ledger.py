@@ -18,16 +18,17 @@ from pendcli.core.ledger import (
     OUTPUT_KEYS,
     Ledger,
     LedgerRow,
+    check_module,
     coverage,
-    equation_rows,
     evaluate,
     labels_in_text,
-    ledger_papers,
     load_ledger,
     parse_ledger,
     run_check,
     verify,
 )
+from pendcli.core.rows import EquationRow
+from pendcli.papers.registry import equation_rows, ledger_papers, paper
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -82,7 +83,7 @@ def _rows() -> list[object]:
 # tests of the whole ledger below read only the statuses, or run evaluate() on a small ledger.
 @pytest.mark.parametrize("row", _rows())
 def test_check_agrees_with_recorded_status(row: LedgerRow) -> None:
-    check = run_check(row)
+    check = run_check(row, check_module(paper(row.paper)))
     problem = verify(row, check)
     assert problem is None, f"{row.id}: {problem}"
     if row.status == "fails":
@@ -91,7 +92,10 @@ def test_check_agrees_with_recorded_status(row: LedgerRow) -> None:
 
 @pytest.mark.parametrize("paper", _papers())
 def test_at_least_80_percent_of_rows_are_checked(paper: str) -> None:
-    rows = [{"paper": r.paper, "status": r.status} for r in load_ledger(paper, TABLES).rows]
+    rows = [
+        EquationRow(r.id, r.paper, r.equation, r.section, r.statement, r.status, "", None, "")
+        for r in load_ledger(paper, TABLES).rows
+    ]
     counts = coverage(rows)[paper]
     assert counts["checked"] / counts["total"] >= MIN_CHECKED, counts
 
@@ -132,16 +136,16 @@ def _small_ledger(root: Path, change: dict[str, dict[str, str | None]] | None = 
 
 def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) -> None:
     _small_ledger(tmp_path)
-    items = evaluate("charbonnier", tmp_path)
+    items = evaluate(paper("charbonnier"), tmp_path)
     assert sorted(i.row.id for i in items) == sorted(SMALL)
     assert [i.problem for i in items] == [None] * len(SMALL)
     assert [i.check is None for i in items] == [i.row.status == "definition" for i in items]
     with pytest.raises(PendcliError, match=r"equation ledger .*tisserand\.toml is missing"):
         equation_rows(["tisserand", "charbonnier"], tmp_path)  # no tisserand ledger here
     rows = equation_rows(["charbonnier"], tmp_path)
-    assert all(tuple(r) == OUTPUT_KEYS for r in rows)
-    fails = next(r for r in rows if r["status"] == "fails")
-    assert "(computed: " in str(fails["note"])
+    assert all(tuple(r.as_dict()) == OUTPUT_KEYS for r in rows)
+    fails = next(r for r in rows if r.status == "fails")
+    assert "(computed: " in fails.note
     counts = coverage(rows)["charbonnier"]
     assert (counts["total"], counts["checked"], counts["fails"]) == (4, 3, 1)
 
@@ -160,7 +164,7 @@ def test_a_check_contradicting_its_status_is_reported(
     tmp_path: Path, row_id: str, change: dict[str, str | None]
 ) -> None:
     _small_ledger(tmp_path, {row_id: change})
-    problems = {i.row.id: i.problem for i in evaluate("charbonnier", tmp_path) if i.problem}
+    problems = {i.row.id: i.problem for i in evaluate(paper("charbonnier"), tmp_path) if i.problem}
     assert list(problems) == [row_id]
     with pytest.raises(PendcliError, match=f"equation ledger inconsistent: {re.escape(row_id)}"):
         equation_rows(["charbonnier"], tmp_path)

@@ -15,6 +15,7 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, load_ledger, parse_ledger, verify_printed
 from pendcli.core.ledger_formulas import row_dimensions
 from pendcli.core.printed import parse_dimension, parse_formula
+from pendcli.papers.tisserand import equations as TISSERAND_CHECKS
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -175,7 +176,7 @@ def _reference_rows() -> list[object]:
 def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
     ledger: object, row: LedgerRow
 ) -> None:
-    computed, problem = verify_printed(row, dict(ledger.symbols))  # type: ignore[attr-defined]
+    computed, problem = verify_printed(row, dict(ledger.symbols), TISSERAND_CHECKS)  # type: ignore[attr-defined]
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
@@ -216,7 +217,7 @@ def test_a_changed_coefficient_stops_a_row_holding(
     tmp_path: Path, row_id: str, old: str, new: str
 ) -> None:
     row, symbols = _row(_altered_copy(tmp_path, old, new), row_id)
-    computed, problem = verify_printed(row, symbols)
+    computed, problem = verify_printed(row, symbols, TISSERAND_CHECKS)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
 
@@ -226,6 +227,6 @@ def test_a_misprint_whose_printed_form_is_its_reading_is_refused(tmp_path: Path)
     reading = "printed = 'tan(phi1)**2 = u1**2/u0**2*(u0**2 - u**2)/(u**2 - u1**2)'"
     root = _altered_copy(tmp_path, printed, reading)
     row, symbols = _row(root, "tisserand.result.tan-sq-phi1")
-    _, problem = verify_printed(row, symbols)
+    _, problem = verify_printed(row, symbols, TISSERAND_CHECKS)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")

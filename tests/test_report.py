@@ -125,9 +125,10 @@ ONE_PAPER = ReproduceResult(
 def _stub_figures(monkeypatch):
     """Figures drawn as empty files in this process: the folder logic, not matplotlib."""
 
-    def draw(module, function, args):
-        folder = args[-1] if function == "plot_tradeoff" else args[0]
-        path = folder if function == "plot_tradeoff" else folder / f"{function}.png"
+    def draw(function, args):
+        name = function.__name__
+        folder = args[-1] if name == "plot_tradeoff" else args[0]
+        path = folder if name == "plot_tradeoff" else folder / f"{name.strip('_')}.png"
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(b"")
         return [path]
@@ -215,10 +216,10 @@ def test_report_has_the_ledger_coverage_and_every_failing_equation(charbonnier_r
     result, out = charbonnier_report
     text = (out / "report.md").read_text("utf-8")
     assert "### Equation ledger" in text
-    wrong = [r for r in result.equations["charbonnier"] if r["status"] in ("fails", "misprint")]
+    wrong = [r for r in result.equations["charbonnier"] if r.status in ("fails", "misprint")]
     assert wrong  # Charbonnier (9) fails
     for row in wrong:
-        assert str(row["statement"]) in text
+        assert row.statement in text
     assert "seed `" not in text and "tables/papers/charbonnier.txt" in text
 
 

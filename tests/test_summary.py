@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import os
-import subprocess
-import sys
+from cli_helpers import run_cli
 
 from pendcli.summary import disagrees, propagation_tree
 
@@ -37,19 +35,12 @@ def test_disagrees_covers_claims_formulas_and_equations():
 
 
 def _reproduce(*args: str) -> str:
-    env = {**os.environ, "COLUMNS": "80", "PENDCLI_JOBS": "1"}
-    done = subprocess.run(
-        [sys.executable, "-m", "pendcli", "reproduce", *args],
-        capture_output=True,
-        text=True,
-        env=env,
-        check=True,
-    )
+    done = run_cli("reproduce", *args, env={"COLUMNS": "80", "PENDCLI_JOBS": "1"}, check=True)
     return done.stdout
 
 
 def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary():
-    from pendcli.core.claims import PAPERS
+    from pendcli.papers.registry import PAPERS
     from pendcli.reproduce import reproduce_all
 
     text = _reproduce()
@@ -92,7 +83,7 @@ def test_equations_command_lists_each_label_and_filters_by_status():
 def test_ledger_halves_in_two_processes_give_the_ledger_in_order():
     # reproduce cuts each ledger in two halves run in two processes; the rows must come back
     # whole and in the ledger's order, equal to one direct evaluation.
-    from pendcli.core.ledger import equation_rows
+    from pendcli.papers.registry import equation_rows
     from pendcli.reproduce import reproduce_all
 
     direct = equation_rows(["charbonnier"])
@@ -102,7 +93,8 @@ def test_ledger_halves_in_two_processes_give_the_ledger_in_order():
 
 
 def test_formula_rows_are_shared_only_inside_the_block():
-    from pendcli.papers import formula_checks, sharing_formula_rows
+    from pendcli.core.claims import sharing_formula_rows
+    from pendcli.papers.registry import formula_checks
 
     with sharing_formula_rows("tisserand", []):
         assert formula_checks("tisserand") == []

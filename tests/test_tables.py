@@ -5,9 +5,10 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.claims import PAPERS, Recomputed, join_claims
+from pendcli.core.claims import Recomputed, join_claims
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table, tables_dir
+from pendcli.papers.registry import PAPERS
 
 GOOD = """
 [paper]

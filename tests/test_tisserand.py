@@ -9,20 +9,18 @@ Kapteyn-type form b_n = (1/nπ)∫ cos 2nτ(ψ) dψ instead of the by-parts form
 from __future__ import annotations
 
 import math
-import subprocess
-import sys
 
 import mpmath
 import numpy as np
 import pytest
-from typer.testing import CliRunner
+from cli_helpers import assert_clean_error, invoke, run_cli
 
-from pendcli.core.claims import evaluate_paper
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import parse_printed
 from pendcli.core.tables import load_paper_table
 from pendcli.core.verdict import judge
 from pendcli.numerics.spherical import exact_conical
+from pendcli.papers.registry import evaluate
 from pendcli.papers.tisserand import claims, explore, figures, model, units
 
 CLAIMS = load_paper_table("tisserand").claims
@@ -133,7 +131,7 @@ def example_reference():
 
 @pytest.fixture(scope="module")
 def rows():
-    return {r.id: r for r in evaluate_paper("tisserand")}
+    return {r.id: r for r in evaluate("tisserand")}
 
 
 # ------------------------------------------------------------ the claims
@@ -395,64 +393,46 @@ def test_amplitude_ranges(theta0, theta1, message):
 # ------------------------------------------------------------ CLI and figures
 
 
-@pytest.fixture
-def runner():
-    return CliRunner()
-
-
 @pytest.mark.parametrize("fmt", ["table", "json", "csv", "markdown"])
-def test_cli_example_formats(runner, fmt):
-    from pendcli.cli.main import app
-
-    result = runner.invoke(app, ["tisserand", "example", "--format", fmt], env={"COLUMNS": "200"})
-    assert result.exit_code == 0, result.output
-    assert "-1°7'33''" in result.output  # the printed value, in every format
-    assert "np.float" not in result.output  # plain floats only
+def test_cli_example_formats(fmt):
+    result = invoke("tisserand", "example", "--format", fmt, env={"COLUMNS": "200"}, utf8=True)
+    assert result.code == 0, result.out
+    assert "-1°7'33''" in result.out  # the printed value, in every format
+    assert "np.float" not in result.out  # plain floats only
 
 
-def test_cli_example_defaults_are_the_papers_example(runner):
-    from pendcli.cli.main import app
-
+def test_cli_example_defaults_are_the_papers_example():
     explicit = ["--theta0", "30°", "--theta1", "15°", "--length", "0.5", "--format", "json"]
-    default = runner.invoke(app, ["tisserand", "example", "--format", "json"])
-    given = runner.invoke(app, ["tisserand", "example", *explicit])
-    assert default.exit_code == given.exit_code == 0, default.output
-    assert default.output == given.output
-    series_default = runner.invoke(app, ["tisserand", "series", "--format", "json"])
-    series_given = runner.invoke(app, ["tisserand", "series", "--ratio", "0.5", "--format", "json"])
-    assert series_default.output == series_given.output
+    default = invoke("tisserand", "example", "--format", "json")
+    given = invoke("tisserand", "example", *explicit)
+    assert default.code == given.code == 0, default.out
+    assert default.out == given.out
+    series_default = invoke("tisserand", "series", "--format", "json")
+    series_given = invoke("tisserand", "series", "--ratio", "0.5", "--format", "json")
+    assert series_default.out == series_given.out
 
 
-def test_cli_claims_json(runner):
+def test_cli_claims_json():
     import json
 
-    from pendcli.cli.main import app
-
-    result = runner.invoke(app, ["tisserand", "claims", "--format", "json"])
-    assert result.exit_code == 0, result.output
-    doc = json.loads(result.output)
+    result = invoke("tisserand", "claims", "--format", "json")
+    assert result.code == 0, result.out
+    doc = json.loads(result.out)
     assert {r["id"] for r in doc["claims"]} == set(EXPECTED)
     assert [r["reading"] for r in doc["readings"]] == ["as printed (arcmin)", "degrees"]
 
 
-def test_cli_series_json(runner):
+def test_cli_series_json():
     import json
 
-    from pendcli.cli.main import app
-
-    result = runner.invoke(app, ["tisserand", "series", "--format", "json", "--ratio", "0.25"])
-    assert result.exit_code == 0, result.output
-    rows = json.loads(result.output)["series"]
+    result = invoke("tisserand", "series", "--format", "json", "--ratio", "0.25")
+    assert result.code == 0, result.out
+    rows = json.loads(result.out)["series"]
     assert all(r["theta1_deg"] == pytest.approx(0.25 * r["theta0_deg"]) for r in rows)
 
 
 def test_cli_bad_unit_is_one_line_exit_2():
-    proc = subprocess.run(
-        [sys.executable, "-m", "pendcli", "tisserand", "example", "--theta0", "30"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    proc = run_cli("tisserand", "example", "--theta0", "30")
     assert proc.returncode == 2
     assert proc.stderr.count("\n") == 1
     assert "no unit" in proc.stderr and "30deg" in proc.stderr
@@ -607,21 +587,17 @@ def test_exact_conical_rejects_bad_options(kwargs, message):
         exact_conical(0.3, 0.1, **kwargs)
 
 
-def test_cli_bad_plot_path_is_refused_before_computing(runner, tmp_path):
-    from pendcli.cli.main import app
-
-    result = runner.invoke(app, ["tisserand", "series", "--plot", str(tmp_path / "x.txt")])
-    assert isinstance(result.exception, PendcliError)
-    assert ".png" in str(result.exception)
+def test_cli_bad_plot_path_is_refused_before_computing(tmp_path):
+    result = invoke("tisserand", "series", "--plot", str(tmp_path / "x.txt"))
+    assert_clean_error(result.code, result.err)
+    assert ".png" in result.err
 
 
-def test_cli_example_plot(runner, tmp_path):
-    from pendcli.cli.main import app
-
+def test_cli_example_plot(tmp_path):
     out = tmp_path / "path.png"
     args = ["tisserand", "example", "--theta0", "20deg", "--theta1", "600arcmin"]
-    result = runner.invoke(app, [*args, "--format", "json", "--plot", str(out)])
-    assert result.exit_code == 0, result.output
+    result = invoke(*args, "--format", "json", "--plot", str(out))
+    assert result.code == 0, result.out
     assert out.read_bytes()[:4] == b"\x89PNG"
     assert _ink(out, (0.839, 0.153, 0.157)) > 1e-3  # the series path is drawn
 

@@ -33,6 +33,7 @@ def table(
     """The printed table of I_n(π), n = 0..5, and its closed forms, against recomputation."""
     from pendcli.core.claims import evaluate_paper
     from pendcli.core.plotting import validate_plot_path
+    from pendcli.papers.charbonnier.claims import recompute
     from pendcli.papers.charbonnier.explore import table_rows
     from pendcli.papers.charbonnier.figures import plot_table
     from pendcli.papers.charbonnier.formulas import closed_form_rows
@@ -40,7 +41,7 @@ def table(
 
     plot = validate_plot_path(plot)
     rows = table_rows(n_max)
-    claims = [r.as_dict() for r in evaluate_paper("charbonnier")]
+    claims = [r.as_dict() for r in evaluate_paper("charbonnier", recompute)]
     # only the closed forms belong to the table; the ODE checks are `pendcli formulas`
     formulas = [f.as_dict() for f in closed_form_rows()]
     emit(

@@ -33,7 +33,7 @@ def bad_value(option: str, value: object, expected: str) -> Exception:
 
 def _paper_value(value: str | None) -> str | None:
     """``--paper`` checked while parsing, before any work (and with the common wording)."""
-    from pendcli.core.claims import PAPERS
+    from pendcli.papers.registry import PAPERS
 
     if value is not None and value.strip().casefold() not in PAPERS:
         raise bad_value("--paper", value, f"one of {', '.join(PAPERS)}")
@@ -42,7 +42,7 @@ def _paper_value(value: str | None) -> str | None:
 
 def complete_papers(incomplete: str) -> list[str]:
     """Shell completion of ``--paper``."""
-    from pendcli.core.claims import PAPERS
+    from pendcli.papers.registry import PAPERS
 
     return [p for p in PAPERS if p.startswith(incomplete.casefold())]
 

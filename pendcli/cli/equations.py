@@ -32,10 +32,10 @@ def equations(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
-    from pendcli.core.claims import resolve_papers
-    from pendcli.core.ledger import coverage, equation_rows
-    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.ledger import coverage
     from pendcli.core.ledger_coverage import ledger_text_coverage
+    from pendcli.core.vocabulary import STATUSES
+    from pendcli.papers.registry import equation_rows, resolve_papers
     from pendcli.render import Column
     from pendcli.reproduce import EQUATION_KEYS
     from pendcli.summary import compact_equation_columns
@@ -46,7 +46,7 @@ def equations(
         rows = equation_rows(resolve_papers(paper))
     counts = coverage(rows)
     texts = {p: ledger_text_coverage(p).as_dict() for p in counts}
-    shown = [r for r in rows if status is None or r["status"] == status]
+    shown = [r.as_dict() for r in rows if status is None or r.status == status]
     compact = fmt is OutputFormat.table and not notes
     columns = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
     tally = [{"paper": p, **c, **texts[p]} for p, c in counts.items()]

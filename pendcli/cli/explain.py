@@ -27,7 +27,7 @@ def explain(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """The author's hand computation behind each wrong digit, with the odds of a coincidence."""
-    from pendcli.core.claims import resolve_papers
+    from pendcli.papers.registry import resolve_papers
 
     keys = _papers_for(claim, paper) if claim else resolve_papers(paper)
     rows = [r for key in keys for r in _explained(key, claim)]
@@ -40,9 +40,9 @@ def explain(
 
 def _papers_for(claim: str, paper: str | None) -> tuple[str, ...]:
     """The paper holding ``claim`` (its id's first part), checked against --paper."""
-    from pendcli.core.claims import PAPERS, resolve_papers
     from pendcli.core.errors import PendcliError
     from pendcli.core.tables import load_paper_table
+    from pendcli.papers.registry import PAPERS, resolve_papers
 
     key = claim.split(".", 1)[0]
     known = key in PAPERS and any(c.id == claim for c in load_paper_table(key).claims)
@@ -66,11 +66,12 @@ def _nothing_to_explain(claim: str) -> Exception:
 
 
 def _explained(key: str, claim: str | None) -> list[ExplainedRow]:
-    from pendcli.core.claims import evaluate_paper
     from pendcli.core.explain import explain_rows
+    from pendcli.papers.registry import evaluate as evaluate_paper
+    from pendcli.papers.registry import explanations
 
     verdicts = {r.id: (r.verdict, r.cause, r.published) for r in evaluate_paper(key)}
-    return explain_rows(key, verdicts, claim, progress=_progress(key))
+    return explain_rows(key, explanations(key), verdicts, claim, progress=_progress(key))
 
 
 def _progress(key: str) -> Callable[[str], None] | None:

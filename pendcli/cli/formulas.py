@@ -26,8 +26,7 @@ def formulas(
     plot: FigureFolderOption = None,
 ) -> None:
     """Residual of each derived formula as its small parameter shrinks: observed order, verdict."""
-    from pendcli.core.claims import resolve_papers
-    from pendcli.papers import formula_checks
+    from pendcli.papers.registry import formula_checks, resolve_papers
 
     keys = resolve_papers(paper)
     _check_figure_folder(plot)
@@ -59,11 +58,12 @@ def _sections(results: dict[str, list[FormulaRow]]) -> list[Section]:
 
 
 def _draw(folder: Path, results: dict[str, list[FormulaRow]]) -> list[Path]:
-    """Each paper's residual figures (papers/<paper>/formulas.py ``figures``) into ``folder``."""
-    import importlib
+    """Each paper's residual figures (its ``Paper.formula_figures``) into ``folder``."""
+    from pendcli.papers.registry import paper
 
     written: list[Path] = []
     for key, rows in results.items():
-        module = importlib.import_module(f"pendcli.papers.{key}.formulas")
-        written += module.figures(folder, rows)
+        draw = paper(key).formula_figures
+        if draw is not None:
+            written += draw(folder, rows)
     return written

@@ -34,23 +34,9 @@ if TYPE_CHECKING:
 
 # Subcommands whose modules load only when named: `pendcli --help` then costs neither their
 # imports nor typer's conversion of their parameters (about half of start-up otherwise).
-# name -> (module, attribute: a Typer sub-app or a command function, short help for --help)
+# name -> (module, attribute: a Typer sub-app or a command function, short help for --help);
+# the papers' sub-apps come first, from the registry (:func:`lazy_commands`).
 LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
-    "tisserand": (
-        "pendcli.cli.tisserand",
-        "app",
-        "Tisserand 1881: the conical pendulum, the example, series against the exact motion.",
-    ),
-    "lecornu": (
-        "pendcli.cli.lecornu",
-        "app",
-        "Lecornu: the pendulum of variable length (zeros of J1/J2, the 0,35 m/s example).",
-    ),
-    "charbonnier": (
-        "pendcli.cli.charbonnier",
-        "app",
-        "Charbonnier 1908: perturbations, the table of I_n(π), the integrals I_n(x).",
-    ),
     "formulas": (
         "pendcli.cli.formulas",
         "formulas",
@@ -70,9 +56,23 @@ LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
 }
 
 
+def lazy_commands() -> dict[str, tuple[Callable[[], Any], str]]:
+    """name -> (loader of its Typer app or command function, short help): each registered
+    paper's sub-app, then :data:`LAZY_COMMANDS`."""
+    from pendcli.papers.registry import all_papers
+
+    out = {p.key: (p.cli.load, p.cli.help) for p in all_papers() if p.cli is not None}
+    for name, (module_name, attribute, text) in LAZY_COMMANDS.items():
+        out[name] = (functools.partial(_attribute, module_name, attribute), text)
+    return out
+
+
+def _attribute(module_name: str, attribute: str) -> Any:
+    return getattr(importlib.import_module(module_name), attribute)
+
+
 def _load_command(name: str) -> Command:
-    module_name, attribute, _ = LAZY_COMMANDS[name]
-    target = getattr(importlib.import_module(module_name), attribute)
+    target = lazy_commands()[name][0]()
     if not isinstance(target, typer.Typer):
         target_app = typer.Typer(add_completion=False, rich_markup_mode=None)
         target_app.command(name)(target)
@@ -323,10 +323,11 @@ class LazyGroup(TyperGroup):
         return super().parse_args(ctx, args)
 
     def list_commands(self, ctx: Context) -> list[str]:
-        return [*super().list_commands(ctx), *(n for n in LAZY_COMMANDS if n not in self.commands)]
+        lazy = lazy_commands()
+        return [*super().list_commands(ctx), *(n for n in lazy if n not in self.commands)]
 
     def get_command(self, ctx: Context, cmd_name: str) -> Command | None:
-        if cmd_name in LAZY_COMMANDS and cmd_name not in self.commands:
+        if cmd_name in lazy_commands() and cmd_name not in self.commands:
             self.commands[cmd_name] = _load_command(cmd_name)
         command = super().get_command(ctx, cmd_name)
         if command is not None:
@@ -335,9 +336,10 @@ class LazyGroup(TyperGroup):
 
     def format_commands(self, ctx: Context, formatter: Any) -> None:
         rows = []
+        lazy = lazy_commands()
         for name in self.list_commands(ctx):
-            if name in LAZY_COMMANDS and name not in self.commands:
-                rows.append((name, LAZY_COMMANDS[name][2]))
+            if name in lazy and name not in self.commands:
+                rows.append((name, lazy[name][1]))
             else:
                 rows.append((name, summary(self.commands[name])))
         with formatter.section("Commands"):
@@ -409,7 +411,8 @@ def main(
 @app.command("list")
 def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.table) -> None:
     """Every claim with its id, paper and source (reads the tables only; computes nothing)."""
-    from pendcli.core.claims import list_rows, resolve_papers
+    from pendcli.core.claims import list_rows
+    from pendcli.papers.registry import resolve_papers
     from pendcli.render import Column
 
     rows = list_rows(resolve_papers(paper))
@@ -479,8 +482,8 @@ def reproduce(
     ] = None,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 unless --fail-on)."""
-    from pendcli.core.claims import resolve_papers
     from pendcli.core.errors import PendcliError
+    from pendcli.papers.registry import resolve_papers
     from pendcli.reproduce import EQUATION_ONLY, reproduce_all
 
     fail_names = _fail_names(fail_on)

@@ -56,12 +56,13 @@ def _angle_or_number(key: str) -> Callable[[Row], str]:
 def claims(fmt: FormatOption = OutputFormat.table) -> None:
     """The printed numbers of the example and Resal's rate, with verdicts and the unit reading."""
     from pendcli.core.claims import evaluate_paper
-    from pendcli.papers import formula_checks
     from pendcli.papers.tisserand import explore, model
+    from pendcli.papers.tisserand.claims import recompute
+    from pendcli.papers.tisserand.formulas import formula_checks
     from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
-    rows = [r.as_dict() for r in evaluate_paper("tisserand")]
-    formulas = [f.as_dict() for f in formula_checks("tisserand")]
+    rows = [r.as_dict() for r in evaluate_paper("tisserand", recompute)]
+    formulas = [f.as_dict() for f in formula_checks()]
     readings = explore.reading_rows()
     printed0, printed1 = model.example_reading(model.PRINTED_UNIT)
     emit(

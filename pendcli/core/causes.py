@@ -30,8 +30,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from pendcli.core.numbers import PrintedNumber
-from pendcli.core.tables import CAUSES
 from pendcli.core.verdict import Verdict, judge
+from pendcli.core.vocabulary import CAUSES, ROOT_CAUSES
 
 __all__ = [
     "CAUSES",
@@ -45,7 +45,6 @@ __all__ = [
 ]
 
 # Every cause except "propagated": where an error starts.
-ROOT_CAUSES: tuple[str, ...] = tuple(c for c in CAUSES if c != "propagated")
 
 
 @dataclass(frozen=True)

@@ -1,8 +1,9 @@
 """The comparison engine: published values (data) joined with recomputations (code).
 
-A paper's claims module (``pendcli.papers.<paper>.claims``) exposes
-``recompute() -> dict[id, Recomputed]``.
-:func:`evaluate_paper` loads the paper's published table, calls it, and judges every claim.
+A paper's :class:`~pendcli.core.paper.Paper` (listed in :mod:`pendcli.papers.registry`)
+gives ``recompute() -> dict[id, Recomputed]``. :func:`evaluate_paper` loads the paper's
+published table, calls it, and judges every claim. This module knows no paper: callers
+pass the recomputation (the registry's :func:`~pendcli.papers.registry.evaluate` looks it up).
 Every published entry must have a recomputation and every recomputation a published entry:
 a claim without a computation is a defect, reported as an error, never silently skipped.
 """
@@ -10,26 +11,31 @@ a claim without a computation is a defect, reported as an error, never silently 
 from __future__ import annotations
 
 import dataclasses
-import importlib
-import math
-from collections.abc import Callable, Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
-from types import ModuleType
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.rows import ClaimRow, FormulaRow, Recomputed
 from pendcli.core.tables import (
-    CAUSES,
     PaperTable,
     PublishedValue,
     load_paper_table,
     missing_claim,
 )
 from pendcli.core.verdict import judge
+from pendcli.core.vocabulary import (
+    CAUSES,
+    FORMULA_VERDICTS,
+    ROOT_CAUSES,
+    Cause,
+    FormulaVerdict,
+    Verdict,
+)
 
 __all__ = [
     "CAUSES",
     "FORMULA_VERDICTS",
-    "PAPERS",
     "CauseTally",
     "ClaimRow",
     "FormulaCause",
@@ -37,105 +43,10 @@ __all__ = [
     "Recomputed",
     "cause_tally",
     "evaluate_paper",
-    "paper_module",
-    "resolve_papers",
+    "shared_formula_rows",
+    "sharing_formula_rows",
     "with_causes",
 ]
-
-# Every paper pendcli reproduces, in report order. The module pendcli.<key> holds its claims.
-PAPERS: tuple[str, ...] = ("tisserand", "lecornu", "charbonnier")
-
-
-@dataclass(frozen=True)
-class Recomputed:
-    """A recomputed value in the claim's unit, with the author's model done exactly."""
-
-    value: float
-    exact: float | None = (
-        None  # the same quantity from a fuller model, where one answers a question
-    )
-    method: str = ""  # how it was computed, briefly
-    note: str = ""  # computed remark (appended to the table's note)
-
-
-@dataclass(frozen=True)
-class ClaimRow:
-    """One line of the comparison: what the paper printed against what we recompute."""
-
-    id: str
-    paper: str
-    source: str
-    quantity: str
-    unit: str
-    published: str
-    published_value: float
-    recomputed: float
-    verdict: str
-    abs_diff: float
-    rel_diff: float | None
-    digits: float
-    exact: float | None
-    method: str
-    note: str
-    cause: str | None = None  # why it disagrees (one of CAUSES), None when nothing to explain
-    cause_from: tuple[str, ...] = ()  # the rows it inherits its error from ("propagated")
-
-    def as_dict(self) -> dict[str, object]:
-        out = {k: _json_number(v) for k, v in self.__dict__.items() if k != "cause_from"}
-        out["from"] = list(self.cause_from)
-        return out
-
-
-# A derived formula holds or fails against the numerical solution (pendcli.core.formula_engine).
-FORMULA_VERDICTS: tuple[str, ...] = ("holds", "fails")
-
-
-@dataclass(frozen=True)
-class FormulaRow:
-    """A derived formula checked against a numerical solution of the governing equation."""
-
-    id: str
-    paper: str
-    source: str
-    published: str  # the formula as printed
-    recomputed: str  # the formula as found (corrected term, if any)
-    verdict: str  # "holds" or "fails"
-    claimed_order: float | None
-    observed_order: float | None
-    note: str
-    residuals: tuple[tuple[float, float], ...] = field(default=())  # (parameter, |residual|)
-    cause: str | None = None  # why it fails (one of CAUSES), None when it holds
-    cause_from: tuple[str, ...] = ()  # the formula rows it inherits its error from
-
-    def as_dict(self) -> dict[str, object]:
-        skip = ("residuals", "cause", "cause_from")
-        out = {k: _json_number(v) for k, v in self.__dict__.items() if k not in skip}
-        out["residuals"] = [[_json_number(p), _json_number(r)] for p, r in self.residuals]
-        out["cause"] = self.cause
-        out["from"] = list(self.cause_from)
-        return out
-
-
-def _json_number(v: object) -> object:
-    if isinstance(v, float) and not math.isfinite(v):
-        return None
-    return v
-
-
-def paper_module(key: str) -> ModuleType:
-    if key not in PAPERS:
-        raise PendcliError(f"unknown paper {key!r}; choose one of {', '.join(PAPERS)}")
-    return importlib.import_module(f"pendcli.papers.{key}.claims")
-
-
-def resolve_papers(paper: str | None) -> tuple[str, ...]:
-    """All papers, or the one named (validated)."""
-    if paper is None:
-        return PAPERS
-    key = paper.strip().lower()
-    if key not in PAPERS:
-        raise PendcliError(f"unknown paper {paper!r}; choose one of {', '.join(PAPERS)}")
-    return (key,)
 
 
 def list_rows(keys: Iterable[str]) -> list[dict[str, str]]:
@@ -168,7 +79,7 @@ def make_row(entry: PublishedValue, result: Recomputed) -> ClaimRow:
         published=entry.published,
         published_value=entry.number.value,
         recomputed=result.value,
-        verdict=comparison.verdict.value,
+        verdict=comparison.verdict,
         abs_diff=comparison.abs_diff,
         rel_diff=comparison.rel_diff,
         digits=comparison.digits,
@@ -177,10 +88,11 @@ def make_row(entry: PublishedValue, result: Recomputed) -> ClaimRow:
         note=" ".join(notes),
         cause=entry.cause,
         cause_from=entry.cause_from,
+        as_printed=entry.as_printed,
     )
 
 
-def join_claims(table: PaperTable, results: dict[str, Recomputed]) -> list[ClaimRow]:
+def join_claims(table: PaperTable, results: Mapping[str, Recomputed]) -> list[ClaimRow]:
     missing = [c.id for c in table.claims if c.id not in results]
     extra = sorted(set(results) - {c.id for c in table.claims})
     if extra:  # an id renamed or removed in the file: name the file and the id the code uses
@@ -193,13 +105,32 @@ def join_claims(table: PaperTable, results: dict[str, Recomputed]) -> list[Claim
     return [make_row(c, results[c.id]) for c in table.claims]
 
 
-def evaluate_paper(
-    key: str, recompute: Callable[[], dict[str, Recomputed]] | None = None
-) -> list[ClaimRow]:
-    """Judge every published claim of one paper against its recomputation."""
+def evaluate_paper(key: str, recompute: Callable[[], Mapping[str, Recomputed]]) -> list[ClaimRow]:
+    """Judge every published claim of paper ``key`` against ``recompute()``."""
     table = load_paper_table(key)
-    results = (recompute or paper_module(key).recompute)()
-    return join_claims(table, results)
+    return join_claims(table, recompute())
+
+
+# Formula rows computed by the running reproduction, by paper: set only inside
+# sharing_formula_rows, so that the equation ledger, which re-reads some of them, takes the
+# ones just computed instead of integrating everything again.
+_SHARED: dict[str, list[FormulaRow]] = {}
+
+
+def shared_formula_rows(key: str, compute: Callable[[], Sequence[FormulaRow]]) -> list[FormulaRow]:
+    """The formula rows of paper ``key`` a running reproduction shares, else ``compute()``."""
+    return list(_SHARED[key]) if key in _SHARED else list(compute())
+
+
+@contextmanager
+def sharing_formula_rows(key: str, rows: list[FormulaRow]) -> Iterator[None]:
+    """Within the block, :func:`shared_formula_rows` of ``key`` returns ``rows`` (never cached
+    beyond it, so a later run with other tables computes afresh)."""
+    _SHARED[key] = rows
+    try:
+        yield
+    finally:
+        _SHARED.pop(key, None)
 
 
 # A formula's cause: (cause, the ids of the formula rows it inherits from).
@@ -215,7 +146,7 @@ def with_causes(rows: Sequence[FormulaRow], causes: Mapping[str, FormulaCause]) 
     for row_id, (cause, sources) in causes.items():
         if cause not in CAUSES:
             raise PendcliError(f"{row_id}: cause {cause!r} is not one of {', '.join(CAUSES)}")
-        if (cause == "propagated") != bool(sources) or not set(sources) <= ids - {row_id}:
+        if (cause == Cause.PROPAGATED) != bool(sources) or not set(sources) <= ids - {row_id}:
             raise PendcliError(f"{row_id}: 'from' must name other rows iff cause is propagated")
     return [
         dataclasses.replace(r, cause=causes[r.id][0], cause_from=causes[r.id][1])
@@ -240,7 +171,7 @@ class CauseTally:
 
 
 def _disagrees(row: ClaimRow | FormulaRow) -> bool:
-    return row.verdict not in ("agrees", "holds")
+    return row.verdict not in (Verdict.AGREES, FormulaVerdict.HOLDS)
 
 
 def cause_tally(rows: Iterable[ClaimRow | FormulaRow]) -> CauseTally:
@@ -249,17 +180,17 @@ def cause_tally(rows: Iterable[ClaimRow | FormulaRow]) -> CauseTally:
     Every propagated row gives an edge from each of its sources (a source may itself agree,
     e.g. a rounded zero whose rounding carries into a time), in row order.
     """
-    roots = {c: 0 for c in CAUSES if c != "propagated"}
+    roots = {c.value: 0 for c in ROOT_CAUSES}
     propagated = unexplained = 0
     edges: list[tuple[str, str]] = []
     for row in rows:
-        if row.cause == "propagated":
+        if row.cause == Cause.PROPAGATED:
             edges += [(source, row.id) for source in row.cause_from]
         if not _disagrees(row):
             continue
         if row.cause is None:
             unexplained += 1
-        elif row.cause == "propagated":
+        elif row.cause == Cause.PROPAGATED:
             propagated += 1
         else:
             roots[row.cause] += 1

@@ -40,7 +40,6 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
-from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber
 from pendcli.core.tables import PublishedValue
 
@@ -624,23 +623,6 @@ class Declared:
     targets: Mapping[str, Target]
 
 
-def declared(key: str) -> Declared:
-    """The declarations of paper ``key`` (explicit imports: no module found by its name)."""
-    if key == "tisserand":
-        from pendcli.papers.tisserand import explain as tisserand
-
-        return Declared(tisserand.computations(), tisserand.targets())
-    if key == "lecornu":
-        from pendcli.papers.lecornu import explain as lecornu
-
-        return Declared(lecornu.computations(), lecornu.targets())
-    if key == "charbonnier":
-        from pendcli.papers.charbonnier import explain as charbonnier
-
-        return Declared(charbonnier.computations(), charbonnier.targets())
-    raise PendcliError(f"unknown paper {key!r}; choose one of tisserand, lecornu, charbonnier")
-
-
 @dataclass(frozen=True)
 class ExplainedRow:
     """One printed number: its verdict and cause, and what the search found (or did not)."""
@@ -684,14 +666,15 @@ class ExplainedRow:
 
 def explain_rows(
     key: str,
+    found: Declared,
     verdicts: Mapping[str, tuple[str, str | None, str]],
     claim_id: str | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> list[ExplainedRow]:
-    """Explain every printed number of ``key`` that does not agree, and every one its module
-    declares (``verdicts``: id -> (verdict, cause, printed), in table order); only ``claim_id`` if
-    given. A row that does not agree and has no declared computation is kept, unexplained."""
-    found = declared(key)
+    """Explain every printed number of ``key`` that does not agree, and every one its paper
+    declares (``found``; ``verdicts``: id -> (verdict, cause, printed), in table order); only
+    ``claim_id`` if given. A row that does not agree and has no declared computation is kept,
+    unexplained."""
     wanted = [
         cid
         for cid, (verdict, _, _) in verdicts.items()

@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, overload
 import numpy as np
 
 from pendcli.core.claims import FormulaRow
+from pendcli.core.vocabulary import FormulaVerdict
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -281,7 +282,7 @@ def fit_order(params: Sequence[float], residuals: Sequence[float]) -> float | No
     return _slope(points) if len(points) >= 2 else None
 
 
-def judge(study: Study) -> tuple[str, float | None, str]:
+def judge(study: Study) -> tuple[FormulaVerdict, float | None, str]:
     """(verdict, observed order, reason) by the rule in the module docstring."""
     above = [
         (p, r)
@@ -290,16 +291,20 @@ def judge(study: Study) -> tuple[str, float | None, str]:
     ]
     if not above:
         return (
-            "holds",
+            FormulaVerdict.HOLDS,
             None,
             f"residual within {FLOOR_FACTOR:g}× the reference's error bound "
             f"({study.floor:.1e}) at every point: exact in this model",
         )
     if study.claimed_order is None:  # an identity: it must hold to the reference's precision
-        return "fails", None, "residual far above the reference's error: the identity is false"
+        return (
+            FormulaVerdict.FAILS,
+            None,
+            "residual far above the reference's error: the identity is false",
+        )
     if len(above) < 3:
         return (
-            "fails",
+            FormulaVerdict.FAILS,
             fit_order(study.params, study.residuals),
             "too few residuals above the reference's error to fit an order",
         )
@@ -309,7 +314,7 @@ def judge(study: Study) -> tuple[str, float | None, str]:
 
 def _judge_order(
     claimed: float, above: Sequence[tuple[float, float]], used: str
-) -> tuple[str, float, str]:
+) -> tuple[FormulaVerdict, float, str]:
     """Holds iff the slope over the residuals above the floor reaches the claimed order."""
     # every residual in `above` exceeds a positive floor: none is dropped as zero
     observed = _slope(_log_points([p for p, _ in above], [r for _, r in above]))
@@ -317,9 +322,13 @@ def _judge_order(
         faster = (
             "; vanishes faster than claimed" if observed > claimed + ORDER_TOLERANCE + 0.4 else ""
         )
-        return "holds", observed, f"observed order ≥ claimed − {ORDER_TOLERANCE}{faster}{used}"
+        return (
+            FormulaVerdict.HOLDS,
+            observed,
+            f"observed order ≥ claimed − {ORDER_TOLERANCE}{faster}{used}",
+        )
     return (
-        "fails",
+        FormulaVerdict.FAILS,
         observed,
         f"observed order {observed:.2f} < claimed {claimed:g} − {ORDER_TOLERANCE}{used}",
     )
@@ -462,7 +471,7 @@ def make_row(
     reference: str,
     recomputed: str | None = None,
     note: str = "",
-    verdict_override: tuple[str, str] | None = None,
+    verdict_override: tuple[FormulaVerdict, str] | None = None,
 ) -> FormulaRow:
     """A FormulaRow from a study: verdict, observed order and the convention in the note."""
     verdict, observed, reason = judge(study)
@@ -570,7 +579,7 @@ def _grid_header(fig: Any, title: str) -> None:
 def _verdict_line(row: FormulaRow) -> str:
     claimed = "" if row.claimed_order is None else f"{row.claimed_order:g}"
     if row.observed_order is None:
-        if row.verdict == "holds":
+        if row.verdict == FormulaVerdict.HOLDS:
             return f"holds: residual at the reference's error (claimed order {claimed})"
         return f"{row.verdict} (claimed order {claimed})"
     return f"{row.verdict}: order {row.observed_order:.2f} observed, {claimed} claimed"
@@ -584,7 +593,7 @@ def draw_study(ax: Axes, row: FormulaRow, labels: PanelLabels) -> None:
     ps = np.array([p for p, _ in row.residuals])
     rs = np.array([r for _, r in row.residuals])
     positive = rs > 0
-    color = _HOLDS if row.verdict == "holds" else _FAILS
+    color = _HOLDS if row.verdict == FormulaVerdict.HOLDS else _FAILS
     ax.loglog(ps[positive], rs[positive], "o-", color=color, ms=4)
     if row.claimed_order is not None and positive.any():
         i = int(np.argmin(np.where(positive, ps, np.inf)))

@@ -3,7 +3,8 @@
 A ledger is ``tables/equations/<paper>.toml``: one ``[[equation]]`` row per equation label
 printed in the paper's text (``tables/papers/<paper>.txt``) and per stated result, with a
 status (``holds``, ``fails``, ``misprint``, ``definition``, ``not-checkable``) and, for the
-first three, the name of a check in ``pendcli.papers.<paper>.equations`` returning an
+first three, the name of a check in the paper's equations module (``Paper.equations``, e.g.
+``pendcli.papers.<paper>.equations``) returning an
 :class:`~pendcli.core.ledger_check.EquationCheck`. This module knows nothing about pendulums:
 it reads and validates ledgers, extracts the labels a text prints, runs the checks and
 verifies that each agrees with the status its row records. A disagreement is an error in the
@@ -12,28 +13,32 @@ ledger, reported, never re-labelled.
 
 from __future__ import annotations
 
-import importlib
 import re
 from collections import Counter
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from functools import cache
 from pathlib import Path
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger_check import CHECK_METHODS, STATUSES, EquationCheck, Status
+from pendcli.core.ledger_check import CHECK_METHODS, EquationCheck
 from pendcli.core.ledger_formulas import (
     printed_status,
     row_dimensions,
     validate_formulas,
     validate_symbols,
 )
+from pendcli.core.rows import EquationRow
 from pendcli.core.text_blocks import Span, validate_span
+from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES, FormulaVerdict
+from pendcli.core.vocabulary import EquationStatus as Status
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
     from pendcli.core.dimensions import DimensionCheck
+    from pendcli.core.paper import Paper
 
 __all__ = [
     "CHECKED_STATUSES",
@@ -42,41 +47,24 @@ __all__ = [
     "Ledger",
     "LedgerRow",
     "check_from_formula_rows",
+    "check_module",
     "coverage",
     "equation_rows",
     "evaluate",
     "labels_in_text",
-    "ledger_papers",
     "load_ledger",
     "parse_ledger",
     "run_check",
     "verify",
 ]
 
-CHECKED_STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint")
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
 # Where the row is printed, what it restates, and (issue 19) the printed form as a formula.
 TEXT_KEYS = ("lines", "restates", "printed", "reading_formula", "corrected_formula", "reference")
 ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "wrong_term", "note", *TEXT_KEYS)
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
-OUTPUT_KEYS = (
-    "id",
-    "paper",
-    "equation",
-    "section",
-    "statement",
-    "status",
-    "check",
-    "observed_order",
-    "note",
-    # issue 19: where the row is printed, its formulas, the printed form's dimensions.
-    "lines",
-    "printed",
-    "reading",
-    "corrected",
-    "dimensions",
-)
+OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
 
 # An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),
 # a roman numeral (I)-(XXXIX), or a single lower-case letter ((p), (q)); an OCR prime may be
@@ -162,14 +150,6 @@ def ledger_path(paper: str, root: Path | None = None) -> Path:
     return (root or _tables_dir()) / "equations" / f"{paper}.toml"
 
 
-def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
-    """The papers whose ledger file exists, in the project's order (every paper needs one:
-    :func:`equation_rows` refuses a missing one)."""
-    from pendcli.core.claims import PAPERS
-
-    return tuple(p for p in PAPERS if ledger_path(p, root).is_file())
-
-
 def load_ledger(paper: str, root: Path | None = None) -> Ledger:
     """Read and strictly validate ``tables/equations/<paper>.toml`` and the text it names
     (missing, empty, not a file or not UTF-8: an error, never an empty ledger)."""
@@ -229,9 +209,13 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         blank = not isinstance(value, str) or not value.strip()
         if value is not None and blank and not (key == "equation" and value == ""):
             raise PendcliError(f"{where}: {key!r} must be a non-empty string")
+    if entry["status"] not in STATUSES:
+        raise PendcliError(
+            f"{where}: unknown status {entry['status']!r}; valid: {', '.join(STATUSES)}"
+        )
     lines = entry.get("lines")
     span = None if lines is None else validate_span(where, lines)
-    row = LedgerRow(paper=paper, **{**entry, "lines": span})
+    row = LedgerRow(paper=paper, **{**entry, "lines": span, "status": Status(entry["status"])})
     _check_identity(where, row)
     _check_status_fields(where, row)
     return row
@@ -267,40 +251,44 @@ def _check_identity(where: str, row: LedgerRow) -> None:
 
 
 def _check_status_fields(where: str, row: LedgerRow) -> None:
-    if row.status not in STATUSES:
-        raise PendcliError(f"{where}: unknown status {row.status!r}; valid: {', '.join(STATUSES)}")
     checked = row.status in CHECKED_STATUSES
     if checked and row.check is None:
-        raise PendcliError(f"{where}: status {row.status!r} needs a check")
+        raise PendcliError(f"{where}: status {row.status.value!r} needs a check")
     if not checked and row.check is not None:
-        raise PendcliError(f"{where}: status {row.status!r} takes no check")
+        raise PendcliError(f"{where}: status {row.status.value!r} takes no check")
     if not checked and row.note is None:
-        raise PendcliError(f"{where}: status {row.status!r} needs a note (what or why)")
-    if (row.reading is not None) != (row.status == "misprint"):
+        raise PendcliError(f"{where}: status {row.status.value!r} needs a note (what or why)")
+    if (row.reading is not None) != (row.status is Status.MISPRINT):
         raise PendcliError(f"{where}: 'reading' is required for, and only for, misprint")
-    if (row.corrected is not None) != (row.status == "fails"):
+    if (row.corrected is not None) != (row.status is Status.FAILS):
         raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
 
 
-@cache
-def _check_module(paper: str) -> Any:
-    return importlib.import_module(f"pendcli.papers.{paper}.equations")
+def check_module(paper: Paper) -> ModuleType | None:
+    """The module of the paper's equation checks (``Paper.equations``), None if it has none."""
+    return paper.equations() if paper.equations is not None else None
 
 
 @cache
-def _run_named(paper: str, name: str) -> EquationCheck:
-    function = getattr(_check_module(paper), name, None)
+def _run_named(checks: ModuleType, paper: str, name: str) -> EquationCheck:
+    # the ledger row names its check: a function of the paper's equations module
+    function = getattr(checks, name, None)
     if not callable(function):
-        raise PendcliError(f"pendcli.papers.{paper}.equations has no check {name!r}")
+        raise PendcliError(f"{checks.__name__} has no check {name!r}")
     result = function()
     if not isinstance(result, EquationCheck):
         raise PendcliError(f"check {paper}.{name} did not return an EquationCheck")
     return result
 
 
-def run_check(row: LedgerRow) -> EquationCheck | None:
-    """Run the row's check (None for definitions and not-checkable rows)."""
-    return None if row.check is None else _run_named(row.paper, row.check)
+def run_check(row: LedgerRow, checks: ModuleType | None) -> EquationCheck | None:
+    """Run the row's check, a function of ``checks`` (None for definitions and not-checkable
+    rows)."""
+    if row.check is None:
+        return None
+    if checks is None:
+        raise PendcliError(f"{row.id}: paper {row.paper!r} has no equation checks")
+    return _run_named(checks, row.paper, row.check)
 
 
 def verify(row: LedgerRow, check: EquationCheck | None) -> str | None:
@@ -309,10 +297,10 @@ def verify(row: LedgerRow, check: EquationCheck | None) -> str | None:
         return None if row.status not in CHECKED_STATUSES else "no check was run"
     if check.method not in CHECK_METHODS:
         return f"unknown check method {check.method!r}"
-    if row.status in ("holds", "misprint") and not check.holds:
-        form = "the evident reading" if row.status == "misprint" else "the printed form"
+    if row.status in (Status.HOLDS, Status.MISPRINT) and not check.holds:
+        form = "the evident reading" if row.status is Status.MISPRINT else "the printed form"
         return f"recorded {row.status}, but {form} does not hold: {check.detail}"
-    if row.status == "fails":
+    if row.status is Status.FAILS:
         if check.holds:
             return f"recorded fails, but the check finds it holds: {check.detail}"
         if not check.corrected:
@@ -328,7 +316,8 @@ class Evaluated:
     dimensions: DimensionCheck | None = None  # the printed form's, when it has one
     computed: str | None = None  # the status computed from the printed form, and why
 
-    def as_dict(self) -> dict[str, object]:
+    def output_row(self) -> EquationRow:
+        """The row every output shows."""
         row, check = self.row, self.check
         notes = []
         if row.reading:
@@ -344,22 +333,22 @@ class Evaluated:
             notes.append(f"dimensions: {self.dimensions.detail}")
         if self.problem:
             notes.append(f"LEDGER INCONSISTENT: {self.problem}")
-        return {
-            "id": row.id,
-            "paper": row.paper,
-            "equation": row.equation,
-            "section": row.section,
-            "statement": row.statement,
-            "status": row.status,
-            "check": f"{check.method}: {check.detail}" if check is not None else "",
-            "observed_order": check.observed_order if check is not None else None,
-            "note": "; ".join(notes),
-            "lines": list(row.lines) if row.lines is not None else None,
-            "printed": row.printed,
-            "reading": row.reading_formula,
-            "corrected": row.corrected_formula,
-            "dimensions": self.dimensions.verdict if self.dimensions is not None else None,
-        }
+        return EquationRow(
+            id=row.id,
+            paper=row.paper,
+            equation=row.equation,
+            section=row.section,
+            statement=row.statement,
+            status=row.status,
+            check=f"{check.method}: {check.detail}" if check is not None else "",
+            observed_order=check.observed_order if check is not None else None,
+            note="; ".join(notes),
+            lines=row.lines,
+            printed=row.printed,
+            reading=row.reading_formula,
+            corrected=row.corrected_formula,
+            dimensions=self.dimensions.verdict if self.dimensions is not None else None,
+        )
 
 
 # (i, n): the i-th of n contiguous slices of a ledger's rows, so that two processes can
@@ -367,29 +356,32 @@ class Evaluated:
 Part = tuple[int, int]
 
 
-def evaluate(paper: str, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
+def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
     """Every row of the paper's ledger (or of ``part`` of it) with its check run and its
     consistency verified."""
-    ledger = load_ledger(paper, root)
+    ledger = load_ledger(paper.key, root)
     rows = ledger.rows
     index, count = part
     start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
+    checks = check_module(paper)
     out = []
     for row in rows[start:stop]:
-        check = run_check(row)
+        check = run_check(row, checks)
         dims = row_dimensions(row, dict(ledger.symbols)).get("printed")
-        computed, contradiction = verify_printed(row, dict(ledger.symbols))
+        computed, contradiction = verify_printed(row, dict(ledger.symbols), checks)
         problem = verify(row, check) or contradiction
         out.append(Evaluated(row, check, problem, dims, computed))
     return out
 
 
-def verify_printed(row: LedgerRow, symbols: dict[str, str]) -> tuple[str | None, str | None]:
+def verify_printed(
+    row: LedgerRow, symbols: dict[str, str], checks: ModuleType | None
+) -> tuple[str | None, str | None]:
     """(the status computed from the row's printed form and why, why it contradicts the
     recorded status or None); (None, None) for a row without a reference."""
     if row.reference is None:
         return None, None
-    function = getattr(_check_module(row.paper), row.reference, None)
+    function = getattr(checks, row.reference, None)
     if not callable(function):
         raise PendcliError(f"pendcli.papers.{row.paper}.equations has no {row.reference!r}")
     status, why = printed_status(row, symbols, function())
@@ -403,16 +395,18 @@ def verify_printed(row: LedgerRow, symbols: dict[str, str]) -> tuple[str | None,
 
 
 def equation_rows(
-    papers: Iterable[str], root: Path | None = None, part: Part = (0, 1)
-) -> list[dict[str, object]]:
+    papers: Iterable[Paper], root: Path | None = None, part: Part = (0, 1)
+) -> list[EquationRow]:
     """The rows of ``reproduce --format json`` under "equations" for ``papers`` (``part`` of
     each ledger); raises PendcliError if a paper's ledger is missing, empty or not a file, or
     a check contradicts its row's status."""
     rows = []
     problems = []
     for paper in papers:
+        if paper.equations is None:  # a paper without a ledger (its file is then not read)
+            continue
         for item in evaluate(paper, root, part):
-            rows.append(item.as_dict())
+            rows.append(item.output_row())
             if item.problem:
                 problems.append(f"{item.row.id}: {item.problem}")
     if problems:
@@ -420,12 +414,12 @@ def equation_rows(
     return rows
 
 
-def coverage(rows: Iterable[dict[str, object]]) -> dict[str, dict[str, int]]:
+def coverage(rows: Iterable[EquationRow]) -> dict[str, dict[str, int]]:
     """Per paper: the count of rows by status, the total and how many are checked."""
     table: dict[str, dict[str, int]] = {}
     for row in rows:
-        counts = table.setdefault(str(row["paper"]), {s: 0 for s in STATUSES})
-        counts[str(row["status"])] += 1
+        counts = table.setdefault(row.paper, {s.value: 0 for s in STATUSES})
+        counts[row.status.value] += 1
     for counts in table.values():
         counts["total"] = sum(counts[s] for s in STATUSES)
         counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
@@ -441,7 +435,7 @@ def check_from_formula_rows(rows: Iterable[FormulaRow], ids: Iterable[str]) -> E
     if missing:
         raise PendcliError(f"no formula check {', '.join(missing)} (renamed or removed?)")
     chosen = [by_id[i] for i in wanted]
-    failing = [r for r in chosen if r.verdict != "holds"]
+    failing = [r for r in chosen if r.verdict != FormulaVerdict.HOLDS]
     orders = [r.observed_order for r in chosen if r.observed_order is not None]
     claimed = [r.claimed_order for r in chosen if r.claimed_order is not None]
     parts = [f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen]

@@ -12,10 +12,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
+from pendcli.core.vocabulary import STATUSES
+from pendcli.core.vocabulary import EquationStatus as Status
+
 __all__ = ["CHECK_METHODS", "STATUSES", "EquationCheck", "Method", "Status"]
 
-Status = Literal["holds", "fails", "misprint", "definition", "not-checkable"]
-STATUSES: tuple[Status, ...] = ("holds", "fails", "misprint", "definition", "not-checkable")
 
 # sympy: an exact symbolic identity; numeric: against an independent solution (quadrature,
 # ODE, mpmath), with an observed order where the equation is a truncated series;

@@ -12,9 +12,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from pendcli.core.claims import CAUSES, FORMULA_VERDICTS, PAPERS
+from pendcli.core.claims import CAUSES, FORMULA_VERDICTS
 from pendcli.core.ledger_check import STATUSES
 from pendcli.core.verdict import CLAIM_VERDICTS
+from pendcli.papers.registry import PAPERS  # the built-in papers the JSON describes
 
 __all__ = ["DOCUMENT", "Field", "RowKind", "check_row", "markdown"]
 

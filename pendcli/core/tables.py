@@ -19,6 +19,7 @@ from typing import Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
+from pendcli.core.vocabulary import CAUSES  # why a printed value disagrees (tables/README.md)
 
 __all__ = [
     "CAUSES",
@@ -70,16 +71,6 @@ CONSTANT_RANGES: dict[str, dict[str, tuple[float, float, str]]] = {
 MAX_TOML_DEPTH = 8
 _PRECISIONS = ("printed", "exact")
 _COMPARISONS = ("equal", "upper-bound")
-# Why a printed value disagrees, when it does (tables/README.md explains each).
-CAUSES = (
-    "rounding",
-    "truncation",
-    "propagated",
-    "arithmetic-slip",
-    "misprint",
-    "derivation-error",
-    "model-approximation",
-)
 
 
 @dataclass(frozen=True)

@@ -26,25 +26,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from enum import StrEnum
 
 from pendcli.core.numbers import PrintedNumber
+from pendcli.core.vocabulary import CLAIM_VERDICTS, Verdict
 
 __all__ = ["CLAIM_VERDICTS", "Comparison", "Verdict", "judge"]
 
 _SLACK = 1e-12  # relative widening of every boundary (binary representation of decimals)
 _EXACT_RTOL = 8 * 2.220446049250313e-16
-
-
-class Verdict(StrEnum):
-    AGREES = "agrees"
-    TRUNCATED = "truncated"
-    LAST_DIGIT = "last-digit"
-    DISCREPANT = "discrepant"
-
-
-# Every claim verdict, best first: the order of tallies and summaries.
-CLAIM_VERDICTS: tuple[str, ...] = tuple(v.value for v in Verdict)
 
 
 @dataclass(frozen=True)

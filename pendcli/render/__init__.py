@@ -10,7 +10,6 @@ written with ``repr`` in JSON and CSV so they round-trip exactly).
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Mapping, Sequence
 from enum import StrEnum
 from typing import TYPE_CHECKING, Protocol
@@ -52,33 +51,45 @@ class OutputFormat(StrEnum):
     markdown = "markdown"
 
 
-# --format -> (module, renderer class). Modules load on first use: `pendcli --help` needs
-# only the enum.
-_RENDERERS: dict[OutputFormat, tuple[str, str]] = {
-    OutputFormat.table: ("pendcli.render.table", "TableRenderer"),
-    OutputFormat.json: ("pendcli.render.json", "JsonRenderer"),
-    OutputFormat.csv: ("pendcli.render.csv", "CsvRenderer"),
-    OutputFormat.markdown: ("pendcli.render.markdown", "MarkdownRenderer"),
-}
-_FUNCTIONS = {
-    "to_csv": "pendcli.render.csv",
-    "to_json": "pendcli.render.json",
-    "to_markdown": "pendcli.render.markdown",
-    "to_rich_table": "pendcli.render.table",
-}
-
-
 def __getattr__(name: str) -> object:
-    if name in _FUNCTIONS:
-        return getattr(importlib.import_module(_FUNCTIONS[name]), name)
+    # the renderers' functions, loaded on first use: `pendcli --help` needs only the enum
+    if name == "to_csv":
+        from pendcli.render.csv import to_csv
+
+        return to_csv
+    if name == "to_json":
+        from pendcli.render.json import to_json
+
+        return to_json
+    if name == "to_markdown":
+        from pendcli.render.markdown import to_markdown
+
+        return to_markdown
+    if name == "to_rich_table":
+        from pendcli.render.table import to_rich_table
+
+        return to_rich_table
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def renderer(fmt: OutputFormat, console: Console | None = None) -> Renderer:
-    """The renderer of ``fmt``; ``console`` (width, colour) matters to the table only."""
-    module, name = _RENDERERS[fmt]
-    cls = getattr(importlib.import_module(module), name)
-    return cls(console) if fmt is OutputFormat.table else cls()
+    """The renderer of ``fmt``; ``console`` (width, colour) matters to the table only.
+    Each renderer's module loads on first use."""
+    if fmt is OutputFormat.table:
+        from pendcli.render.table import TableRenderer
+
+        return TableRenderer(console)
+    if fmt is OutputFormat.json:
+        from pendcli.render.json import JsonRenderer
+
+        return JsonRenderer()
+    if fmt is OutputFormat.csv:
+        from pendcli.render.csv import CsvRenderer
+
+        return CsvRenderer()
+    from pendcli.render.markdown import MarkdownRenderer
+
+    return MarkdownRenderer()
 
 
 def render(

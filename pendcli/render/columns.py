@@ -10,6 +10,8 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
+from pendcli.render.values import plain
+
 __all__ = ["Column", "Row", "Section", "fmt_float"]
 
 # A row is a flat mapping from column key to a plain value (str, int, float, None, list).
@@ -34,8 +36,6 @@ class Column:
         if isinstance(value, float):
             return fmt_float(value)
         if isinstance(value, list | tuple):
-            from pendcli.render.json import plain  # json imports this module
-
             return str(plain(value))
         return str(value)
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from pendcli.core.numbers import parse_printed
+from pendcli.core.vocabulary import FormulaVerdict, Verdict
 from pendcli.render.columns import Column, Row, fmt_float
 
 __all__ = [
@@ -21,13 +22,13 @@ __all__ = [
     "sexagesimal",
 ]
 
-VERDICT_STYLES = {
-    "agrees": "green",
-    "holds": "green",
-    "truncated": "yellow",
-    "last-digit": "yellow",
-    "discrepant": "bold red",
-    "fails": "bold red",
+VERDICT_STYLES: dict[str, str] = {
+    Verdict.AGREES: "green",
+    FormulaVerdict.HOLDS: "green",  # and an equation that holds
+    Verdict.TRUNCATED: "yellow",
+    Verdict.LAST_DIGIT: "yellow",
+    Verdict.DISCREPANT: "bold red",
+    FormulaVerdict.FAILS: "bold red",  # and an equation that fails
 }
 
 

@@ -18,9 +18,10 @@ from pendcli.core.ledger_check import EquationCheck
 
 @cache
 def _formula_rows() -> tuple[Any, ...]:
-    from pendcli.papers import formula_checks
+    from pendcli.core.claims import shared_formula_rows
+    from pendcli.papers.charbonnier.formulas import formula_checks
 
-    return tuple(formula_checks("charbonnier"))
+    return tuple(shared_formula_rows("charbonnier", formula_checks))
 
 
 def _reuse(*ids: str) -> EquationCheck:

@@ -34,6 +34,7 @@ from pendcli.core.formula_engine import (
     make_row,
     plot_studies,
 )
+from pendcli.core.vocabulary import FormulaVerdict
 from pendcli.papers.charbonnier.model import integral_pi, integral_pi_exact, printed_closed_form
 from pendcli.papers.charbonnier.perturbation import (
     CheckPendulum,
@@ -200,7 +201,7 @@ def closed_form_rows() -> list[FormulaRow]:
                 source="no. 15, closed form for n " + ("pair" if parity == 0 else "impair"),
                 published=printed_text,
                 recomputed=printed_text if not bad else f"differs at n = {bad[:5]}",
-                verdict="holds" if not bad else "fails",
+                verdict=FormulaVerdict.HOLDS if not bad else FormulaVerdict.FAILS,
                 claimed_order=None,
                 observed_order=None,
                 note=(

@@ -37,5 +37,115 @@ Assumptions
     shortens at 0,35 m/s, so t = (1 - l)/b (the author's 2,86 s = 1/0,35 fixes this origin).
     These numbers are read from ``[paper.constants]`` of the published table, never retyped.
 
-Nothing heavy is imported here: ``pendcli --help`` stays fast.
+Nothing heavy is imported here (each hook of :data:`PAPER` loads its module when called):
+``pendcli --help`` stays fast.
 """
+
+from __future__ import annotations
+
+from pathlib import Path
+from types import ModuleType
+from typing import TYPE_CHECKING, Any
+
+from pendcli.core.paper import CliApp, Paper
+
+if TYPE_CHECKING:
+    from collections.abc import Mapping, Sequence
+
+    from pendcli.core.causes import Procedure
+    from pendcli.core.claims import FormulaRow, Recomputed
+
+__all__ = ["PAPER"]
+
+
+# Each hook imports its module when called: the Paper itself loads nothing.
+def _recompute() -> Mapping[str, Recomputed]:
+    from pendcli.papers.lecornu.claims import recompute
+
+    return recompute()
+
+
+def _formula_checks() -> Sequence[FormulaRow]:
+    from pendcli.papers.lecornu.formulas import formula_checks
+
+    return formula_checks()
+
+
+def _preload() -> None:
+    from pendcli.papers.lecornu import claims, formulas  # noqa: F401
+
+
+def _equations() -> ModuleType:
+    from pendcli.papers.lecornu import equations
+
+    return equations
+
+
+def _author_procedures() -> Mapping[str, Procedure]:
+    from pendcli.papers.lecornu.claims import author_procedures
+
+    return author_procedures()
+
+
+def _tradeoff_families() -> Sequence[Any]:
+    from pendcli.papers.lecornu.speed import FAMILIES
+
+    return FAMILIES
+
+
+def _stability_rows() -> list[dict[str, str]]:
+    from pendcli.papers.lecornu.stability import stability_rows
+
+    return stability_rows()
+
+
+def _figures(folder: Path) -> Sequence[Path]:
+    from pendcli.papers.lecornu.figures import figures
+
+    return figures(folder)
+
+
+def _formula_figures(folder: Path, rows: list[FormulaRow]) -> Sequence[Path]:
+    from pendcli.papers.lecornu.formulas import figures
+
+    return figures(folder, rows)
+
+
+def _captions() -> Mapping[str, str]:
+    from pendcli.papers.lecornu.figures import CAPTIONS as CLAIM_CAPTIONS
+    from pendcli.papers.lecornu.formulas import CAPTIONS as FORMULA_CAPTIONS
+
+    return {**FORMULA_CAPTIONS, **CLAIM_CAPTIONS}
+
+
+def _cli() -> Any:
+    from pendcli.cli.lecornu import app
+
+    return app
+
+
+def _explanations() -> Any:
+    from pendcli.core.explain import Declared
+    from pendcli.papers.lecornu import explain
+
+    return Declared(explain.computations(), explain.targets())
+
+
+PAPER = Paper(
+    key="lecornu",
+    recompute=_recompute,
+    formula_checks=_formula_checks,
+    equations=_equations,
+    preload=_preload,
+    author_procedures=_author_procedures,
+    tradeoff_families=_tradeoff_families,
+    stability_rows=_stability_rows,
+    figures=_figures,
+    formula_figures=_formula_figures,
+    captions=_captions,
+    explanations=_explanations,
+    cli=CliApp(
+        help="Lecornu: the pendulum of variable length (zeros of J1/J2, the 0,35 m/s example).",
+        load=_cli,
+    ),
+)

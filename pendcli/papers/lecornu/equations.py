@@ -128,9 +128,10 @@ def _trig_text(form: dict[tuple[int, str, int], Any]) -> str:
 
 @cache
 def _formula_rows() -> dict[str, Any]:
-    from pendcli.papers import formula_checks
+    from pendcli.core.claims import shared_formula_rows
+    from pendcli.papers.lecornu.formulas import formula_checks
 
-    return {r.id: r for r in formula_checks("lecornu")}
+    return {r.id: r for r in shared_formula_rows("lecornu", formula_checks)}
 
 
 def _from_formulas(*ids: str) -> EquationCheck:

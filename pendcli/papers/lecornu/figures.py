@@ -262,10 +262,11 @@ def figures(outdir: str | Path) -> list[Path]:
     passages marked; (2) printed minus recomputed, in units of the printed last digit."""
     from pendcli.core.claims import evaluate_paper
     from pendcli.core.plotting import new_figure
+    from pendcli.papers.lecornu.claims import recompute
 
     outdir = Path(outdir)
     m = example_model()
-    rows = {r.id: r for r in evaluate_paper("lecornu")}
+    rows = {r.id: r for r in evaluate_paper("lecornu", recompute)}
     path1 = outdir / "lecornu_example_theta.png"
     with new_figure(path1, size=(8.0, 4.8)) as (_fig, ax):
         draw_example_claims(ax, m, rows)

@@ -44,5 +44,108 @@ Findings
 Modules: :mod:`.units` (angles typed and printed), :mod:`.model` (the series, the example's
 data, the exact motion), :mod:`.claims` (``recompute()``), :mod:`.formulas` (formula checks),
 :mod:`.figures`, :mod:`.explore` (the CLI's example and series views). This file imports
-nothing, so that `pendcli --help` stays fast.
+nothing heavy (its hooks load their modules when called), so that `pendcli --help` stays
+fast.
 """
+
+from __future__ import annotations
+
+from pathlib import Path
+from types import ModuleType
+from typing import TYPE_CHECKING, Any
+
+from pendcli.core.paper import CliApp, Paper
+
+if TYPE_CHECKING:
+    from collections.abc import Mapping, Sequence
+
+    from pendcli.core.claims import FormulaRow, Recomputed
+
+__all__ = ["PAPER"]
+
+
+# Each hook imports its module when called: the Paper itself loads nothing.
+def _recompute() -> Mapping[str, Recomputed]:
+    from pendcli.papers.tisserand.claims import recompute
+
+    return recompute()
+
+
+def _formula_checks() -> Sequence[FormulaRow]:
+    from pendcli.papers.tisserand.formulas import formula_checks
+
+    return formula_checks()
+
+
+def _preload() -> None:
+    from pendcli.papers.tisserand import claims, formulas  # noqa: F401
+
+
+def _equations() -> ModuleType:
+    from pendcli.papers.tisserand import equations
+
+    return equations
+
+
+def _tradeoff_families() -> Sequence[Any]:
+    from pendcli.papers.tisserand.speed import FAMILIES
+
+    return FAMILIES
+
+
+def _stability_rows() -> list[dict[str, str]]:
+    from pendcli.papers.tisserand.stability import stability_rows
+
+    return stability_rows()
+
+
+def _figures(folder: Path) -> Sequence[Path]:
+    from pendcli.papers.tisserand.figures import figures
+
+    return figures(folder)
+
+
+def _formula_figures(folder: Path, rows: list[FormulaRow]) -> Sequence[Path]:
+    from pendcli.papers.tisserand.formulas import figures
+
+    return figures(folder, rows)
+
+
+def _captions() -> Mapping[str, str]:
+    from pendcli.papers.tisserand.figures import CAPTIONS as CLAIM_CAPTIONS
+    from pendcli.papers.tisserand.formulas import CAPTIONS as FORMULA_CAPTIONS
+
+    return {**FORMULA_CAPTIONS, **CLAIM_CAPTIONS}
+
+
+def _cli() -> Any:
+    from pendcli.cli.tisserand import app
+
+    return app
+
+
+def _explanations() -> Any:
+    from pendcli.core.explain import Declared
+    from pendcli.papers.tisserand import explain
+
+    return Declared(explain.computations(), explain.targets())
+
+
+PAPER = Paper(
+    key="tisserand",
+    recompute=_recompute,
+    formula_checks=_formula_checks,
+    equations=_equations,
+    preload=_preload,
+    author_procedures=None,
+    tradeoff_families=_tradeoff_families,
+    stability_rows=_stability_rows,
+    figures=_figures,
+    formula_figures=_formula_figures,
+    captions=_captions,
+    explanations=_explanations,
+    cli=CliApp(
+        help="Tisserand 1881: the conical pendulum, the example, series against the exact motion.",
+        load=_cli,
+    ),
+)

@@ -21,9 +21,10 @@ ORDER = 3  # series in x kept through x² (fourth order in the angles)
 
 @cache
 def _formula_rows() -> tuple[Any, ...]:
-    from pendcli.papers import formula_checks
+    from pendcli.core.claims import shared_formula_rows
+    from pendcli.papers.tisserand.formulas import formula_checks
 
-    return tuple(formula_checks("tisserand"))
+    return tuple(shared_formula_rows("tisserand", formula_checks))
 
 
 def _reuse(*ids: str) -> EquationCheck:
@@ -492,9 +493,9 @@ NUMERICAL_APPLICATION = (
 def result_numerical_application() -> EquationCheck:
     """ψ and φ' for θ0 = 30', θ1 = 15': the three coefficients, as the claims of
     tables/published/tisserand.toml judge them against their recomputation."""
-    from pendcli.core.claims import evaluate_paper
+    from pendcli.papers.registry import evaluate
 
-    rows = {r.id: r for r in evaluate_paper("tisserand")}
+    rows = {r.id: r for r in evaluate("tisserand")}
     chosen = [rows[i] for i in NUMERICAL_APPLICATION]
     parts = [f"{r.id} printed {r.published}: {r.verdict}" for r in chosen]
     return EquationCheck(

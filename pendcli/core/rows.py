@@ -1,0 +1,118 @@
+"""The typed rows every output renders: claims, formulas and equations, each built once.
+
+A row carries every field any output shows (the terminal, JSON, CSV, Markdown, the report and
+the HTML); ``as_dict`` is the flat mapping the renderers and the JSON document take, its keys
+in the order the JSON schema (:mod:`pendcli.core.schema`) describes. Verdicts, statuses and
+causes are the words of :mod:`pendcli.core.vocabulary`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from pendcli.core.vocabulary import EquationStatus, FormulaVerdict, Verdict
+
+__all__ = ["ClaimRow", "EquationRow", "FormulaRow", "Recomputed"]
+
+
+@dataclass(frozen=True)
+class Recomputed:
+    """A recomputed value in the claim's unit, with the author's model done exactly."""
+
+    value: float
+    exact: float | None = (
+        None  # the same quantity from a fuller model, where one answers a question
+    )
+    method: str = ""  # how it was computed, briefly
+    note: str = ""  # computed remark (appended to the table's note)
+
+
+@dataclass(frozen=True)
+class ClaimRow:
+    """One line of the comparison: what the paper printed against what we recompute."""
+
+    id: str
+    paper: str
+    source: str
+    quantity: str
+    unit: str
+    published: str
+    published_value: float
+    recomputed: float
+    verdict: Verdict
+    abs_diff: float
+    rel_diff: float | None
+    digits: float
+    exact: float | None
+    method: str
+    note: str
+    cause: str | None = None  # why it disagrees (one of CAUSES), None when nothing to explain
+    cause_from: tuple[str, ...] = ()  # the rows it inherits its error from ("propagated")
+    as_printed: str = ""  # the OCR's text of the printed value, where `published` normalises it
+
+    def as_dict(self) -> dict[str, object]:
+        """The row as JSON, CSV and the tables show it (``as_printed`` is the HTML's only)."""
+        skip = ("cause_from", "as_printed")
+        out = {k: _json_number(v) for k, v in self.__dict__.items() if k not in skip}
+        out["from"] = list(self.cause_from)
+        return out
+
+
+@dataclass(frozen=True)
+class FormulaRow:
+    """A derived formula checked against a numerical solution of the governing equation."""
+
+    id: str
+    paper: str
+    source: str
+    published: str  # the formula as printed
+    recomputed: str  # the formula as found (corrected term, if any)
+    verdict: FormulaVerdict
+    claimed_order: float | None
+    observed_order: float | None
+    note: str
+    residuals: tuple[tuple[float, float], ...] = field(default=())  # (parameter, |residual|)
+    cause: str | None = None  # why it fails (one of CAUSES), None when it holds
+    cause_from: tuple[str, ...] = ()  # the formula rows it inherits its error from
+
+    def as_dict(self) -> dict[str, object]:
+        skip = ("residuals", "cause", "cause_from")
+        out = {k: _json_number(v) for k, v in self.__dict__.items() if k not in skip}
+        out["residuals"] = [[_json_number(p), _json_number(r)] for p, r in self.residuals]
+        out["cause"] = self.cause
+        out["from"] = list(self.cause_from)
+        return out
+
+
+def _json_number(v: object) -> object:
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
+@dataclass(frozen=True)
+class EquationRow:
+    """One row of the equation ledger, its check run: what ``pendcli equations``, ``reproduce
+    --equations``, the report and the HTML show."""
+
+    id: str
+    paper: str
+    equation: str  # the label as printed, "(4)"; "" for a stated result
+    section: str
+    statement: str
+    status: EquationStatus
+    check: str  # "method: detail" of the check run, "" for rows without one
+    observed_order: float | None
+    note: str  # the reading, the corrected form, the ledger's note, any inconsistency
+    # issue 19: where the row is printed, its formulas, the printed form's dimensions
+    lines: tuple[int, int] | None = None  # first and last line of tables/papers/<paper>.txt
+    printed: str | None = None  # the formula as printed, in the ledger's notation
+    reading: str | None = None  # a misprint's evident reading, same notation
+    corrected: str | None = None  # a failing formula's correction, same notation
+    dimensions: str | None = None  # consistent, inconsistent or dimensionless
+
+    def as_dict(self) -> dict[str, object]:
+        out = dict(self.__dict__)
+        out["lines"] = list(self.lines) if self.lines is not None else None
+        return out

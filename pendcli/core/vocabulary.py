@@ -1,0 +1,94 @@
+"""The words of a verdict, a ledger status and a cause: defined here once, used everywhere.
+
+Each is a ``StrEnum``: a member is its word (``Verdict.AGREES == "agrees"``, and it prints,
+formats and serialises to JSON and CSV as that word), so outputs read as they always did
+while code names the word instead of typing it. The tuples are the words in their canonical
+order (tallies, summaries, schema).
+"""
+
+from __future__ import annotations
+
+from enum import StrEnum
+
+__all__ = [
+    "CAUSES",
+    "CHECKED_STATUSES",
+    "CLAIM_VERDICTS",
+    "FORMULA_VERDICTS",
+    "ROOT_CAUSES",
+    "STATUSES",
+    "Cause",
+    "EquationStatus",
+    "FormulaVerdict",
+    "Verdict",
+    "disagrees_word",
+]
+
+
+class Verdict(StrEnum):
+    """A printed number against its recomputation (:mod:`pendcli.core.verdict`), best first."""
+
+    AGREES = "agrees"
+    TRUNCATED = "truncated"
+    LAST_DIGIT = "last-digit"
+    DISCREPANT = "discrepant"
+
+
+class FormulaVerdict(StrEnum):
+    """A derived formula against a numerical solution (:mod:`pendcli.core.formula_engine`)."""
+
+    HOLDS = "holds"
+    FAILS = "fails"
+
+
+class EquationStatus(StrEnum):
+    """What the equation ledger records for a numbered equation or stated result."""
+
+    HOLDS = "holds"
+    FAILS = "fails"
+    MISPRINT = "misprint"
+    DEFINITION = "definition"
+    NOT_CHECKABLE = "not-checkable"
+
+
+class Cause(StrEnum):
+    """Why a printed value or a formula does not agree or hold (``tables/README.md``)."""
+
+    ROUNDING = "rounding"
+    TRUNCATION = "truncation"
+    PROPAGATED = "propagated"
+    ARITHMETIC_SLIP = "arithmetic-slip"
+    MISPRINT = "misprint"
+    DERIVATION_ERROR = "derivation-error"
+    MODEL_APPROXIMATION = "model-approximation"
+
+
+CLAIM_VERDICTS: tuple[Verdict, ...] = tuple(Verdict)
+FORMULA_VERDICTS: tuple[FormulaVerdict, ...] = tuple(FormulaVerdict)
+STATUSES: tuple[EquationStatus, ...] = tuple(EquationStatus)
+# the statuses whose row names a check (a definition or a not-checkable row has none)
+CHECKED_STATUSES: tuple[EquationStatus, ...] = (
+    EquationStatus.HOLDS,
+    EquationStatus.FAILS,
+    EquationStatus.MISPRINT,
+)
+CAUSES: tuple[Cause, ...] = tuple(Cause)
+# where an error enters (every cause but one that only carries an earlier row's error)
+ROOT_CAUSES: tuple[Cause, ...] = tuple(c for c in Cause if c is not Cause.PROPAGATED)
+
+# The words of a row that does not agree (a claim), hold (a formula) or hold as printed or
+# read (an equation: failing or misprinted).
+_DISAGREEING = frozenset(
+    {
+        Verdict.TRUNCATED,
+        Verdict.LAST_DIGIT,
+        Verdict.DISCREPANT,
+        FormulaVerdict.FAILS,
+        EquationStatus.MISPRINT,
+    }
+)
+
+
+def disagrees_word(word: object) -> bool:
+    """Whether a verdict or status word marks a row that does not agree or hold."""
+    return isinstance(word, str) and word in _DISAGREEING

@@ -1,0 +1,26 @@
+"""The sample paper's model: the small-amplitude period, from the table's constants."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from pendcli.core.tables import paper_constant
+
+
+def period(length: float | None = None) -> float:
+    """T = 2π√(l/g), (1) of the sample paper; l and g from its table unless given."""
+    metres = paper_constant("sample", "length") if length is None else length
+    return 2 * math.pi * math.sqrt(metres / paper_constant("sample", "g"))
+
+
+def plot_period(path: Path) -> Path:
+    """T against l from 0,1 to 2 m."""
+    from pendcli.core.plotting import new_figure
+
+    lengths = [0.1 * k for k in range(1, 21)]
+    with new_figure(path) as (_fig, ax):
+        ax.plot(lengths, [period(x) for x in lengths])
+        ax.set_xlabel("l (m)")
+        ax.set_ylabel("T (s)")
+    return path
