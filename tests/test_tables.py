@@ -104,6 +104,7 @@ CONSTANTS = """
 [paper.constants.g]
 value = 9.81
 unit = "m/s²"
+range = [1.0, 100.0]
 source = "assumption: the value used in the paper's time"
 """
 
@@ -113,9 +114,6 @@ def _with_constants(text: str) -> str:
 
 
 def test_constants_and_claims_are_looked_up_by_name(tmp_path, monkeypatch):
-    from pendcli.core import tables
-
-    monkeypatch.setitem(tables.CONSTANT_RANGES, "demo", {"g": (1.0, 100.0, "m/s²")})
     table = load_paper_table("demo", write(tmp_path, _with_constants(CONSTANTS)))
     assert table.constant("g") == 9.81
     assert table.constants[0].unit == "m/s²"
@@ -137,7 +135,7 @@ def test_constants_and_claims_are_looked_up_by_name(tmp_path, monkeypatch):
             ),
             "source must say where the value comes from",
         ),
-        (CONSTANTS + 'colour = "red"\n', "unknown field(s) 'colour'; valid: value, unit, source"),
+        (CONSTANTS + 'colour = "red"\n', "unknown field(s) 'colour'; valid: value, unit, range, source"),
         ("[paper.constants]\ng = 9.81\n", "must be a table with value, unit, source"),
     ],
 )

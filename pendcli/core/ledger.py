@@ -224,8 +224,11 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
 def _check_text_fields(path: Path, rows: list[LedgerRow], text: Path) -> None:
     """``lines`` within the paper's text (when the text is there to count) and ``restates``
     naming another row of the ledger."""
+    from pendcli.core.tables import read_table_text
+
     ids = {r.id for r in rows}
-    count = len(text.read_text(encoding="utf-8").splitlines()) if text.is_file() else None
+    # not UTF-8 or empty: the text's own one-line error; missing: load_ledger says so
+    count = len(read_table_text(text, "paper text").splitlines()) if text.exists() else None
     for row in rows:
         if row.lines is not None and count is not None:
             validate_span(f"{path}: {row.id}", list(row.lines), count)

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pendcli.core.ledger import Ledger, load_ledger
+from pendcli.core.tables import read_table_text
 from pendcli.core.text_blocks import DisplayBlock, blocks_covered, display_blocks
 
 __all__ = ["TextCoverage", "ledger_text_coverage", "text_coverage"]
@@ -32,7 +33,7 @@ class TextCoverage:
 
 def text_coverage(ledger: Ledger) -> TextCoverage:
     """Which of the text's display blocks the ledger's rows cover."""
-    blocks = display_blocks(ledger.text.read_text(encoding="utf-8"))
+    blocks = display_blocks(read_table_text(ledger.text, "paper text"))
     spans = [r.lines for r in ledger.rows if r.lines is not None]
     flags = blocks_covered(blocks, spans)
     uncovered = tuple(b for b, ok in zip(blocks, flags, strict=True) if not ok)

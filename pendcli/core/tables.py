@@ -23,7 +23,6 @@ from pendcli.core.vocabulary import CAUSES  # why a printed value disagrees (tab
 
 __all__ = [
     "CAUSES",
-    "CONSTANT_RANGES",
     "MAX_TOML_DEPTH",
     "PaperConstant",
     "PaperTable",
@@ -43,30 +42,10 @@ _REQUIRED = ("id", "source", "quantity", "published")
 _OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison", "precision", "cause")
 _CLAIM_FIELDS = (*_REQUIRED, *_OPTIONAL, "from")
 _PAPER_FIELDS = ("key", "citation", "seed", "assumptions", "constants")
-_CONSTANT_FIELDS = ("value", "unit", "source")
-# The range each constant's value must lie in (ends included) and its unit: physically
-# plausible values, inside which the models are meant to work (and terminate). A value outside
-# it, not finite, or a constant with no declared range is refused when the table is read.
-CONSTANT_RANGES: dict[str, dict[str, tuple[float, float, str]]] = {
-    "charbonnier": {
-        "g": (1.0, 100.0, "m/s²"),  # from the Moon's 1.6 to beyond Jupiter's 25
-        "l0": (0.01, 100.0, "m"),  # a pendulum, from 1 cm to 100 m
-        "alpha": (0.001, 1.0, "rad"),  # the small amplitude of the principal motion (no. 3)
-    },
-    "lecornu": {
-        "g": (1.0, 100.0, "m/s²"),
-        "speed": (0.001, 10.0, "m/s"),  # the rate at which the length grows
-        "length": (0.01, 100.0, "m"),  # the length at t = 0
-        "table_limit": (1.0, 100.0, ""),  # the last argument of a Bessel table
-        "k4_amplitude": (0.1, 90.0, "deg"),
-        "horizontal_amplitude": (0.1, 90.0, "deg"),  # 90° is the horizontal
-    },
-    "tisserand": {
-        "theta0": (0.1, 89.9, "°"),  # the two cone angles of the conical pendulum (< 90°)
-        "theta1": (0.1, 89.9, "°"),
-        "length": (0.01, 100.0, "m"),
-    },
-}
+# A constant declares the range its value must lie in (ends included), beside it in its table:
+# physically plausible values, inside which the models are meant to work (and terminate). A
+# value outside it, not finite, or a constant with no declared range is refused when read.
+_CONSTANT_FIELDS = ("value", "unit", "range", "source")
 # Deeper nesting than any table needs is refused (tomllib itself would recurse without end).
 MAX_TOML_DEPTH = 8
 _PRECISIONS = ("printed", "exact")
@@ -100,6 +79,7 @@ class PaperConstant:
     value: float
     unit: str
     source: str  # "printed, II (15)" or "assumption: ..."
+    range: tuple[float, float] = (-math.inf, math.inf)  # the declared plausible range
 
 
 @dataclass(frozen=True)
@@ -218,25 +198,35 @@ def _depth(value: object) -> int:
     return deepest
 
 
-def _constant_value(where: str, paper: str, name: str, entry: dict[str, Any]) -> float:
-    """The constant's value, checked: a finite number in its declared range and unit."""
+def _constant_value(where: str, entry: dict[str, Any]) -> tuple[float, tuple[float, float]]:
+    """The constant's value and its declared range, checked: a finite number within it."""
     value = entry.get("value")
     if isinstance(value, bool) or not isinstance(value, int | float):
         raise PendcliError(f"{where}: value must be a number")
-    declared = CONSTANT_RANGES.get(paper, {})
-    if name not in declared:
-        known = ", ".join(declared) or "none"
-        raise PendcliError(f"{where}: no declared range for this constant; declared: {known}")
-    low, high, unit = declared[name]
-    if entry.get("unit", "") != unit:
-        raise PendcliError(f"{where}: unit must be {unit!r}, got {entry.get('unit', '')!r}")
+    low, high = _declared_range(where, entry.get("range"))
     number = float(value)
     if not (math.isfinite(number) and low <= number <= high):
+        unit = entry.get("unit", "")
         raise PendcliError(
             f"{where}: value = {value!r} is out of range; valid range is "
             f"{low:g} <= value <= {high:g} {unit}".rstrip()
         )
-    return number
+    return number, (low, high)
+
+
+def _declared_range(where: str, raw: object) -> tuple[float, float]:
+    """``range = [low, high]``: two finite numbers, low < high."""
+    if raw is None:
+        raise PendcliError(f"{where}: no declared range for this constant (range = [low, high])")
+    numbers = raw if isinstance(raw, list) else []
+    if not (
+        len(numbers) == 2
+        and all(isinstance(x, int | float) and not isinstance(x, bool) for x in numbers)
+        and all(math.isfinite(x) for x in numbers)
+        and numbers[0] < numbers[1]
+    ):
+        raise PendcliError(f"{where}: range must be [low, high], two finite numbers, low < high")
+    return float(numbers[0]), float(numbers[1])
 
 
 def _constants(path: Path, raw: object, paper: str) -> tuple[PaperConstant, ...]:
@@ -255,8 +245,8 @@ def _constants(path: Path, raw: object, paper: str) -> tuple[PaperConstant, ...]
                 raise PendcliError(f"{where}: {field} must be a string")
         if not entry.get("source"):
             raise PendcliError(f"{where}: source must say where the value comes from")
-        value = _constant_value(where, paper, name, entry)
-        out.append(PaperConstant(name, value, entry.get("unit", ""), entry["source"]))
+        value, declared = _constant_value(where, entry)
+        out.append(PaperConstant(name, value, entry.get("unit", ""), entry["source"], declared))
     return tuple(out)
 
 
