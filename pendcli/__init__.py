@@ -50,7 +50,7 @@ _LAZY = {
     "integral_pi_exact": "pendcli.api",
     "period": "pendcli.api",
     "period_ratio": "pendcli.api",
-    "PAPERS": "pendcli.core.claims",
+    "PAPERS": "pendcli.papers.registry",
     "PendcliError": "pendcli.core.errors",
     "Drift": "pendcli.regression",
     "ReproduceResult": "pendcli.reproduce",

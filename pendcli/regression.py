@@ -271,8 +271,9 @@ def run_check(
     if update:
         from pendcli.check_report import changed_cells
 
-        with locked(_lock_file(folder), shared=True):
-            changes = changed_cells(folder, tables)
+        # no reader's lock: the folder is swapped whole, so this reads the old set or the new
+        # one; a lock file only a reader made would be left behind by an interrupt
+        changes = changed_cells(folder, tables)
         removed = _rewrite(folder, tables)
         if not quiet:
             _print_changes(out, changes, folder, len(tables))

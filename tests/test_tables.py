@@ -135,7 +135,10 @@ def test_constants_and_claims_are_looked_up_by_name(tmp_path, monkeypatch):
             ),
             "source must say where the value comes from",
         ),
-        (CONSTANTS + 'colour = "red"\n', "unknown field(s) 'colour'; valid: value, unit, range, source"),
+        (
+            CONSTANTS + 'colour = "red"\n',
+            "unknown field(s) 'colour'; valid: value, unit, range, source",
+        ),
         ("[paper.constants]\ng = 9.81\n", "must be a table with value, unit, source"),
     ],
 )

@@ -100,6 +100,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "pendcli reproduce --only-failing",
         "pendcli reproduce -p charbonnier -f json",
         "pendcli reproduce --out out          report.md, report.html, tables, figures",
+        "pendcli reproduce --out out --pdf    the pages printed to PDF too (Chromium)",
         "pendcli reproduce --fail-on discrepant,fails   CI: exit 1 on a bad verdict",
     ),
     "check": (
@@ -147,6 +148,11 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "pendcli equations --status misprint --notes",
     ),
     "tradeoff": ("pendcli tradeoff --quick", "pendcli tradeoff integral_pi --plot wp.png"),
+    "explain": (
+        "pendcli explain -p lecornu     each wrong digit: its mechanism and odds",
+        "pendcli explain lecornu.mean_pendulum_coefficient   every step of one",
+        "pendcli explain -f json > explanations.json",
+    ),
 }
 
 
