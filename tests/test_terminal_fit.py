@@ -29,6 +29,8 @@ COMMANDS = [
     ("charbonnier", "integral", "4"),
     ("formulas",),
     ("equations",),
+    ("explain",),
+    ("explain", "lecornu.mean_pendulum_coefficient"),
 ]
 
 

@@ -98,10 +98,11 @@ def _clear_progress() -> None:
 
 def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[Section]:
     from pendcli.render import Column
+    from pendcli.render.views import printed_for_display
 
     columns = [
         Column("id", "claim"),
-        Column("printed", "printed"),
+        Column("printed", "printed", fmt=lambda r: printed_for_display(r["printed"])),
         Column("verdict", "verdict"),
         Column("cause", "cause and mechanism"),
         Column("cost", "steps", justify="right"),
