@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.errors import PendcliError, invalid_value
+from pendcli.core.errors import PendcliError, invalid_value, out_of_range
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -368,7 +368,7 @@ def measured_on(root: Path | None = None) -> str | None:
 def choose(family: str, tol: float, points: list[Point] | None = None) -> Point:
     """The cheapest measured (method, setting) whose worst error is <= ``tol``."""
     if not (isinstance(tol, float | int) and math.isfinite(tol) and tol > 0):
-        raise PendcliError(f"tol = {tol!r} is out of range; valid range is tol > 0")
+        raise out_of_range("tol", f"{tol!r}", "tol > 0")
     if points is None:
         path = table_path(family)
         points = read_table(path) if path.exists() else measure_family(family)
@@ -376,7 +376,7 @@ def choose(family: str, tol: float, points: list[Point] | None = None) -> Point:
     if not ok:
         best = min((p.error for p in points if p.error is not None), default=math.inf)
         raise PendcliError(
-            f"tol = {tol:g} is out of reach for {family}; valid range is tol >= {best:.1e} "
+            f"tol: {tol:g} is out of reach for {family}; expected tol >= {best:.1e} "
             "(the best measured error)"
         )
     return min(ok, key=lambda p: (p.seconds, p.error))

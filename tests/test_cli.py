@@ -145,9 +145,9 @@ def test_help_summaries_are_whole_sentences():
         (("charbonnier", "integral", "abc"), "N: 'abc' is not an integer"),
         (("charbonnier", "table", "-f", "xml"), "-f: 'xml' is not one of"),
         (("charbonnier", "table", "--format", "xml"), "--format: 'xml' is not one of"),
-        (("lecornu", "example", "--speed", "-1"), "--speed = -1.0 is out of range"),
-        (("lecornu", "ode-check", "--floor", "0.9"), "--floor = 0.9 is out of range"),
-        (("lecornu", "example", "--speed=-1"), "--speed = -1.0 is out of range"),
+        (("lecornu", "example", "--speed", "-1"), "--speed: -1.0 is out of range; expected"),
+        (("lecornu", "ode-check", "--floor", "0.9"), "--floor: 0.9 is out of range; expected"),
+        (("lecornu", "example", "--speed=-1"), "--speed: -1.0 is out of range; expected"),
     ],
 )
 def test_errors_name_the_option_as_typed(args, expected):

@@ -154,5 +154,5 @@ def test_array_period_and_errors():
     assert planar.period_ratio([]).shape == (0,)
     with pytest.raises(PendcliError, match="180° is the unstable"):
         planar.period_ratio(np.array([10.0, -180.0]))
-    with pytest.raises(PendcliError, match="valid range"):
+    with pytest.raises(PendcliError, match="is out of range; expected"):
         planar.period_ratio([1.0, float("nan")])

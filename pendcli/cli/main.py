@@ -747,7 +747,7 @@ def _named_as_typed(exc: PendcliError, args: list[str]) -> str:
     return message
 
 
-_LEADING_NAME = re.compile(r"^([A-Za-z_]\w*) (?:=|must|is|changes) ")
+_LEADING_NAME = re.compile(r"^([A-Za-z_]\w*)(?::| (?:=|must|is|changes)) ")
 
 
 def options_as_typed(message: str, args: list[str]) -> str:
@@ -766,6 +766,6 @@ def options_as_typed(message: str, args: list[str]) -> str:
         typed = arg.split("=", 1)[0]
         key = typed[2:].replace("-", "_")
         if key and (key == name or name.startswith(f"{key}_")):
-            pattern = rf"(?<![\w-]){re.escape(name)}(?= (?:=|<|<=|>|>=|must|is|changes) )"
+            pattern = rf"(?<![\w-]){re.escape(name)}(?=:| (?:=|<|<=|>|>=|must|is|changes) )"
             return re.sub(pattern, typed, message)
     return message

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from numbers import Real
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, out_of_range
 
 __all__ = ["real_in_range"]
 
@@ -19,7 +19,5 @@ def real_in_range(name: str, value: object, lo: float, hi: float, unit: str = ""
         )
     v = float(value)
     if not math.isfinite(v) or not lo <= v <= hi:
-        raise PendcliError(
-            f"{name} = {v!r} is out of range; valid range is {lo:g} <= {name} <= {hi:g}{unit_text}"
-        )
+        raise out_of_range(name, repr(v), f"{lo:g} <= {name} <= {hi:g}{unit_text}")
     return v

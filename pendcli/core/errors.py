@@ -18,3 +18,11 @@ class PendcliError(Exception):
 def invalid_value(parameter: str, value: object, expected: str) -> PendcliError:
     """The one wording of a refused value: ``parameter: 'value' is not valid; expected ...``."""
     return PendcliError(f"{parameter}: {value!r} is not valid; expected {expected}", parameter)
+
+
+def out_of_range(parameter: str, value: object, expected: str, what: str = "") -> PendcliError:
+    """The one wording of a value outside its domain: ``parameter: value is out of range;
+    expected lo <= parameter <= hi`` (``what``: the method or table whose domain it is)."""
+    return PendcliError(
+        f"{parameter}: {value} is out of range{what}; expected {expected}", parameter
+    )

@@ -43,7 +43,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from pendcli.core.errors import PendcliError, invalid_value
+from pendcli.core.errors import PendcliError, invalid_value, out_of_range
 
 __all__ = [
     "AUTO_SWITCH",
@@ -83,15 +83,13 @@ def check_zeros_request(order: int, count: int, method: str) -> None:
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
         raise PendcliError(f"count must be an integer 1 <= count <= {MAX_COUNT}, got {count!r}")
     if not 1 <= count <= MAX_COUNT:
-        raise PendcliError(
-            f"count = {count} is out of range; valid range is 1 <= count <= {MAX_COUNT}"
-        )
+        raise out_of_range("count", f"{count}", f"1 <= count <= {MAX_COUNT}")
     if method not in METHODS:
         raise invalid_value("method", method, f"one of {', '.join(METHODS)}")
     if method == "mpmath" and count > MPMATH_MAX_COUNT:
         raise PendcliError(
-            f"count = {count} is too large for method 'mpmath' (about 4 ms a zero); "
-            f"valid range is 1 <= count <= {MPMATH_MAX_COUNT} (method auto is correctly "
+            f"count: {count} is too large for method 'mpmath' (about 4 ms a zero); "
+            f"expected 1 <= count <= {MPMATH_MAX_COUNT} (method auto is correctly "
             "rounded at any count)"
         )
 
@@ -138,7 +136,7 @@ def bessel_zeros_at(order: int, indices: np.ndarray | int, method: str = "auto")
         raise PendcliError(f"zero indices must be integers, got dtype {s.dtype}")
     top = int(s.max())
     if int(s.min()) < 1:
-        raise PendcliError(f"zero index {int(s.min())} is out of range; valid range is s >= 1")
+        raise out_of_range("index", int(s.min()), "index >= 1")
     check_zeros_request(order, min(top, MAX_COUNT) if method in _ELEMENTWISE else top, method)
     order = int(order)
     if method not in _ELEMENTWISE:
@@ -330,9 +328,9 @@ def _series_zeros(order: int, count: int) -> np.ndarray:
     if guesses[-1] > limit - 0.5:
         allowed = int(np.searchsorted(guesses, limit - 0.5))
         raise PendcliError(
-            f"count = {count} is beyond the safe range of Lecornu's series for J_{order}: "
+            f"count: {count} is beyond the safe range of Lecornu's series for J_{order}: "
             f"cancellation makes zeros above z = {limit:.1f} err by more than "
-            f"{SERIES_MAX_ERROR:g}; valid range is 1 <= count <= {allowed} "
+            f"{SERIES_MAX_ERROR:g}; expected 1 <= count <= {allowed} "
             "(use method 'auto' beyond)"
         )
 

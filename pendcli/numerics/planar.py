@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, overload
 
-from pendcli.core.errors import PendcliError, invalid_value
+from pendcli.core.errors import PendcliError, invalid_value, out_of_range
 
 if TYPE_CHECKING:
     import numpy as np
@@ -56,13 +56,11 @@ def _check_amplitude(amplitude: float) -> float:
         raise PendcliError(f"amplitude must be a real number of degrees, got {amplitude!r}")
     amplitude = abs(float(amplitude))
     if not math.isfinite(amplitude) or amplitude > 180.0:
-        raise PendcliError(
-            f"amplitude = {amplitude}° is out of range; valid range is 0 <= |amplitude| < 180°"
-        )
+        raise out_of_range("amplitude", f"{amplitude}°", "0 <= |amplitude| < 180°")
     if amplitude == 180.0:
         raise PendcliError(
             "amplitude = 180° is the unstable upright equilibrium: the period is infinite; "
-            "valid range is 0 <= |amplitude| < 180°"
+            "expected 0 <= |amplitude| < 180°"
         )
     return amplitude
 
@@ -196,7 +194,7 @@ def elongation_times(
 ) -> list[float]:
     """Times of the first ``count`` elongations after release at rest from θ0: j·T/2, j >= 1."""
     if isinstance(count, bool) or not isinstance(count, int) or not 1 <= count <= 10_000:
-        raise PendcliError(f"count = {count!r} is out of range; valid range is 1..10000")
+        raise out_of_range("count", f"{count!r}", "1..10000")
     half = 0.5 * period(amplitude, length, g, method)
     return [j * half for j in range(1, count + 1)]
 
@@ -205,7 +203,7 @@ def _check_positive(name: str, value: float) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise PendcliError(f"{name} must be a positive real number, got {value!r}")
     if not (math.isfinite(value) and value > 0):
-        raise PendcliError(f"{name} = {value} is out of range; valid range is {name} > 0")
+        raise out_of_range(name, value, f"{name} > 0")
 
 
 # --- arrays of amplitudes ------------------------------------------------------------------

@@ -52,7 +52,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from pendcli.core.errors import PendcliError, invalid_value
+from pendcli.core.errors import PendcliError, invalid_value, out_of_range
 
 __all__ = [
     "METHODS",
@@ -118,17 +118,19 @@ def check_amplitudes(theta0: float, theta1: float) -> tuple[float, float]:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise PendcliError(f"{name} must be a real angle in radians, got {value!r}")
         if not math.isfinite(value):
-            raise PendcliError(f"{name} = {value} is not finite; valid range is 0 < theta0 < 90°")
+            raise PendcliError(f"{name}: {value} is not finite; expected 0 < theta0 < 90°")
     theta0, theta1 = float(theta0), float(theta1)
     if not THETA0_MIN <= theta0 < 0.5 * math.pi:
-        raise PendcliError(
-            f"theta0 = {math.degrees(theta0):.10g}° is out of range; "
-            f"valid range is {math.degrees(THETA0_MIN):.2g}° ({THETA0_MIN:g} rad) <= theta0 < 90°"
+        raise out_of_range(
+            "theta0",
+            f"{math.degrees(theta0):.10g}°",
+            f"{math.degrees(THETA0_MIN):.2g}° ({THETA0_MIN:g} rad) <= theta0 < 90°",
         )
     if not 0.0 <= theta1 <= theta0:
-        raise PendcliError(
-            f"theta1 = {math.degrees(theta1):.10g}° is out of range; valid range is "
-            f"0 <= theta1 <= theta0 = {math.degrees(theta0):.10g}°"
+        raise out_of_range(
+            "theta1",
+            f"{math.degrees(theta1):.10g}°",
+            f"0 <= theta1 <= theta0 = {math.degrees(theta0):.10g}°",
         )
     return theta0, theta1
 
@@ -148,9 +150,9 @@ def exact_conical(
     """
     theta0, theta1 = check_amplitudes(theta0_rad, theta1_rad)
     if not (isinstance(harmonics, int) and 1 <= harmonics <= 20):
-        raise PendcliError(f"harmonics = {harmonics!r} is out of range; valid range is 1..20")
+        raise out_of_range("harmonics", f"{harmonics!r}", "1..20")
     if not (isinstance(rtol, (int, float)) and 1e-15 <= rtol <= 1e-3):
-        raise PendcliError(f"rtol = {rtol!r} is out of range; valid range is 1e-15..1e-3")
+        raise out_of_range("rtol", f"{rtol!r}", "1e-15..1e-3")
     if method == "quad":
         return _quadrature(theta0, theta1, harmonics, float(rtol))
     if method == "ode":
@@ -257,7 +259,7 @@ def _too_close_to_90(theta0: float) -> NoReturn:
     raise PendcliError(
         f"theta0 = {math.degrees(theta0):.10g}° is too close to 90° for the quadrature: the "
         f"integrand of (4) peaks like 1/cos θ0 (width cos θ0/sqrt(sin²θ0 - sin²θ1) < "
-        f"{_MIN_PEAK_WIDTH:g}); valid range is theta0 <= {_QUAD_MAX_DEGREES}° "
+        f"{_MIN_PEAK_WIDTH:g}); expected theta0 <= {_QUAD_MAX_DEGREES}° "
         "(closer to 90° only when theta1 is near theta0)"
     )
 

@@ -6,7 +6,7 @@ import math
 from fractions import Fraction
 from typing import Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import out_of_range
 from pendcli.core.tables import load_paper_table
 from pendcli.papers.charbonnier.model import (
     exact_text,
@@ -32,7 +32,7 @@ def table_rows(n_max: int = 5) -> list[dict[str, Any]]:
     beta form is evaluated for all n at once.
     """
     if isinstance(n_max, bool) or not isinstance(n_max, int) or not -1 <= n_max <= TABLE_N_MAX:
-        raise PendcliError(f"--n-max = {n_max} is out of range; valid range is -1..{TABLE_N_MAX}")
+        raise out_of_range("n_max", n_max, f"-1 <= n_max <= {TABLE_N_MAX}")
     import numpy as np
 
     printed = {c.id: c for c in load_paper_table("charbonnier").claims}

@@ -30,7 +30,7 @@ from collections.abc import Iterator
 from fractions import Fraction
 from functools import cache
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, out_of_range
 from pendcli.papers.charbonnier.wallis import (
     MAX_N,
     SERIES_FROM,
@@ -86,9 +86,7 @@ def _check_x(x: float) -> float:
         raise PendcliError(f"x must be a real number, got {x!r}")
     x = float(x)
     if not math.isfinite(x) or abs(x) > MAX_X:
-        raise PendcliError(
-            f"x = {x} is out of range; valid range is -{MAX_X:.0e} <= x <= {MAX_X:.0e}"
-        )
+        raise out_of_range("x", f"{x}", f"-{MAX_X:.0e} <= x <= {MAX_X:.0e}")
     return x
 
 
@@ -282,7 +280,7 @@ def integral_fast(n: int, x: float) -> float:
     check_n(n)
     x = float(x)
     if not 0.0 <= x <= math.pi:
-        raise PendcliError(f"x = {x} is out of range for integral_fast; valid range is 0 <= x <= π")
+        raise out_of_range("x", f"{x}", "0 <= x <= π", " for integral_fast")
     if n <= 0 or x == 0.0:
         return _integral_0_pi(n, x)
     full = integral_pi(n)
@@ -380,9 +378,8 @@ def integral_method(n: int, x: float) -> str:
 
 
 def _recurrence_too_long(n: int) -> PendcliError:
-    return PendcliError(
-        f"n = {n} is out of range for the recurrence (n/2 steps); valid range is "
-        f"-1 <= n <= {RECURRENCE_MAX_N:.0e}"
+    return out_of_range(
+        "n", f"{n}", f"-1 <= n <= {RECURRENCE_MAX_N:.0e}", " for the recurrence (n/2 steps)"
     )
 
 

@@ -25,7 +25,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from pendcli.core.errors import PendcliError, invalid_value
+from pendcli.core.errors import PendcliError, invalid_value, out_of_range
 from pendcli.papers.charbonnier.model import integral_pi
 
 __all__ = [
@@ -42,17 +42,17 @@ _ODE_METHODS = ("DOP853", "RK45", "Radau", "LSODA")
 
 def _check_order(n: int) -> int:
     if isinstance(n, bool) or not isinstance(n, int) or not 0 <= n <= 10:
-        raise PendcliError(f"n = {n!r} is out of range; valid range is 0 <= n <= 10")
+        raise out_of_range("n", f"{n!r}", "0 <= n <= 10")
     return n
 
 
 def _check_beta(beta: float, n: int) -> float:
     beta = float(beta)
     if not (math.isfinite(beta) and beta > 0):
-        raise PendcliError(f"beta = {beta} is out of range; valid range is beta > 0")
+        raise out_of_range("beta", f"{beta}", "beta > 0")
     if n == 0 and beta >= 1.0:
         raise PendcliError(
-            f"beta = {beta} >= 1 with n = 0: friction holds the pendulum at rest; valid range is "
+            f"beta: {beta} >= 1 with n = 0: friction holds the pendulum at rest; expected "
             "0 < beta < 1"
         )
     return beta
@@ -100,7 +100,7 @@ def relative_loss_ode(
     if method not in _ODE_METHODS:
         raise invalid_value("method", method, f"one of {', '.join(_ODE_METHODS)}")
     if not 1e-14 <= rtol <= 1e-1:
-        raise PendcliError(f"rtol = {rtol} is out of range; valid range is 1e-14 <= rtol <= 0.1")
+        raise out_of_range("rtol", f"{rtol}", "1e-14 <= rtol <= 0.1")
     from scipy.integrate import solve_ivp
 
     def rhs(_tau: float, state: Sequence[float]) -> list[float]:
@@ -144,7 +144,7 @@ def relative_loss_exact(beta: float, n: int, digits: int = 30) -> Any:
             return -2 * b
         if n == 1:
             if b >= 2:
-                raise PendcliError(f"beta = {beta} >= 2 with n = 1 is overdamped")
+                raise PendcliError(f"beta: {beta} >= 2 with n = 1 is overdamped")
             omega = mpmath.sqrt(1 - b * b / 4)
             return mpmath.exp(-b * mpmath.pi / (2 * omega)) - 1
         if n == 2:

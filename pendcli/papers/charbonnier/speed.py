@@ -22,7 +22,7 @@ from collections.abc import Callable
 from functools import cache, partial
 from typing import Any
 
-from pendcli.core.errors import PendcliError, invalid_value
+from pendcli.core.errors import PendcliError, invalid_value, out_of_range
 from pendcli.tradeoff import Candidate, Family, choose
 
 __all__ = [
@@ -236,14 +236,20 @@ def products_max_n() -> int:
 def _refuse_outside_domain(n: int, x: float, method: str) -> None:
     """PendcliError for an input where the method is known to fail (not merely lose digits)."""
     if method == "products" and n > products_max_n():
-        raise PendcliError(
-            f"n = {n} is out of range for method products; valid range is -1 <= n <= "
-            f"{products_max_n()} (measured: beyond, the integer products overflow a double)"
+        raise out_of_range(
+            "n",
+            f"{n}",
+            f"-1 <= n <= {products_max_n()} "
+            "(measured: beyond, the integer products overflow a double)",
+            " for method products",
         )
     if method == "quad" and n > QUAD_MAX_N:
-        raise PendcliError(
-            f"n = {n} is out of range for method quad; valid range is -1 <= n <= "
-            f"{QUAD_MAX_N:.0e} (measured: beyond, it misses the peak of sin^(n+1) and returns ~0)"
+        raise out_of_range(
+            "n",
+            f"{n}",
+            f"-1 <= n <= {QUAD_MAX_N:.0e} "
+            "(measured: beyond, it misses the peak of sin^(n+1) and returns ~0)",
+            " for method quad",
         )
 
 

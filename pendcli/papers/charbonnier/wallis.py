@@ -23,7 +23,7 @@ from fractions import Fraction
 from functools import cache
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, out_of_range
 
 if TYPE_CHECKING:
     import numpy as np
@@ -247,7 +247,7 @@ def check_n(n: int) -> int:
     if isinstance(n, bool) or not isinstance(n, int):
         raise PendcliError(f"n must be an integer >= -1, got {n!r}")
     if not -1 <= n <= MAX_N:
-        raise PendcliError(f"n = {n} is out of range; valid range is -1 <= n <= {MAX_N:.0e}")
+        raise out_of_range("n", f"{n}", f"-1 <= n <= {MAX_N:.0e}")
     return n
 
 
@@ -269,7 +269,7 @@ def integral_pi_array(ns: npt.ArrayLike) -> np.ndarray:
         raise PendcliError(f"n must be an array of integers >= -1, got dtype {arr.dtype}")
     if arr.size and (arr.min() < -1 or arr.max() > MAX_N):
         bad = arr.min() if arr.min() < -1 else arr.max()
-        raise PendcliError(f"n = {bad} is out of range; valid range is -1 <= n <= {MAX_N:.0e}")
+        raise out_of_range("n", f"{bad}", f"-1 <= n <= {MAX_N:.0e}")
     flat = arr.astype(np.int64).ravel()
     out = np.empty(flat.shape, dtype=np.float64)
     small = flat < SERIES_FROM

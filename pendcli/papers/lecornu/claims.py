@@ -80,9 +80,9 @@ def check_claims_g(g: object, speed: float, z2: Array) -> float:
     g_high = (speed * (z2[4] + z2[5]) / 4) ** 2
     if not (isinstance(g, int | float) and math.isfinite(g) and g_low < g < g_high):
         raise PendcliError(
-            f"g = {g!r} m/s² changes the structure of the printed example (no longer five "
-            f"elongations from 1 m at 0,35 m/s); valid range for the claims is "
-            f"{g_low:.3f} < g < {g_high:.3f}"
+            f"g: {g!r} m/s² changes the structure of the printed example (no longer five "
+            f"elongations from 1 m at 0,35 m/s); expected {g_low:.3f} < g < {g_high:.3f} for "
+            "the claims"
         )
     return float(g)
 

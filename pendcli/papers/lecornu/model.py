@@ -107,8 +107,8 @@ def check_example(
     z0 = 2.0 * math.sqrt(gg * a) / b
     if z0 > max_z0:
         raise PendcliError(
-            f"speed = {b:g} m/s is too slow for length {a:g} m (2√(gL)/b = {z0:.3g} > {max_z0:g} "
-            f"oscillation phases); valid range is speed >= {2 * math.sqrt(gg * a) / max_z0:.3g} m/s"
+            f"speed: {b:g} m/s is too slow for length {a:g} m (2√(gL)/b = {z0:.3g} > {max_z0:g} "
+            f"oscillation phases); expected speed >= {2 * math.sqrt(gg * a) / max_z0:.3g} m/s"
         )
     return b, a, gg, z0
 
@@ -170,8 +170,8 @@ def _listed_zeros(b: float, a: float, g: float, z_release: float) -> tuple[Array
     if z2[0] > z_release + math.pi / 2:
         fastest = 2 * math.sqrt(g * a) / (z2[0] - math.pi / 2)
         raise PendcliError(
-            f"speed = {b:g} m/s is too fast for length {a:g} m: solution (10) has no elongation "
-            f"below the release; valid range is speed <= {fastest:.4g} m/s "
+            f"speed: {b:g} m/s is too fast for length {a:g} m: solution (10) has no elongation "
+            f"below the release; expected speed <= {fastest:.4g} m/s "
             "(see `pendcli lecornu zero-length` for fast shortening)"
         )
     first = int(np.argmin(np.abs(z2 - z_release)))

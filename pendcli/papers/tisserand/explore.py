@@ -12,7 +12,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, out_of_range
 from pendcli.core.tables import load_paper_table
 from pendcli.numerics.spherical import check_amplitudes
 from pendcli.papers.tisserand.claims import reading_evidence
@@ -195,7 +195,7 @@ def series_rows(
     """k', k'' and Ω from the series against the exact motion, θ1 = ratio·θ0, over θ0."""
     ratio = example_ratio() if ratio is None else ratio
     if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) or not 0 <= ratio <= 1:
-        raise PendcliError(f"ratio = {ratio!r} is out of range; valid range is 0 <= ratio <= 1")
+        raise out_of_range("ratio", f"{ratio!r}", "0 <= ratio <= 1")
     rows = []
     for deg in theta0_degrees or SERIES_GRID_DEGREES:
         theta0 = math.radians(deg)

@@ -80,8 +80,7 @@ def example_ratio() -> float:
 def _check_order(order: int) -> int:
     if order not in SERIES_ORDERS:
         raise PendcliError(
-            f"order = {order!r} is not available; "
-            f"choose one of {', '.join(map(str, SERIES_ORDERS))}"
+            f"order: {order!r} is not available; choose one of {', '.join(map(str, SERIES_ORDERS))}"
         )
     return order
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import re
 
-from pendcli.core.errors import PendcliError
+from pendcli.core.errors import PendcliError, out_of_range
 from pendcli.numerics.spherical import check_amplitudes
 
 __all__ = ["ARCSEC", "amplitudes", "angle_text", "parse_angle", "parse_length"]
@@ -40,7 +40,7 @@ def parse_angle(text: str, name: str = "angle") -> float:
         return math.radians(parse_printed(s).value)
     m = _NUMBER_UNIT.match(s)
     if not m:
-        raise PendcliError(f"{name} = {text!r} is not an angle; write e.g. {_ANGLE_FORMS}")
+        raise PendcliError(f"{name}: {text!r} is not an angle; write e.g. {_ANGLE_FORMS}")
     number, unit = m.groups()
     if not unit:
         raise PendcliError(f"{name} = {text!r} has no unit; write e.g. {_ANGLE_FORMS}")
@@ -51,16 +51,16 @@ def parse_angle(text: str, name: str = "angle") -> float:
         )
     value = float(number.replace(",", ".")) * factor
     if not math.isfinite(value):
-        raise PendcliError(f"{name} = {text!r} is not finite")
+        raise PendcliError(f"{name}: {text!r} is not finite")
     return value
 
 
 def parse_length(value: float) -> float:
     """Pendulum length in metres: finite and positive."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise PendcliError(f"length = {value!r} is not a number; give metres, e.g. 0.5")
+        raise PendcliError(f"length: {value!r} is not a number; give metres, e.g. 0.5")
     if not 0.0 < value <= 1e6:
-        raise PendcliError(f"length = {value!r} m is out of range; valid range is 0 < l <= 1e6 m")
+        raise out_of_range("length", f"{value!r} m", "0 < l <= 1e6 m")
     return float(value)
 
 
@@ -69,11 +69,9 @@ def amplitudes(theta0: str, theta1: str) -> tuple[float, float]:
     a = parse_angle(theta0, "theta0")
     b = parse_angle(theta1, "theta1")
     if not 0.0 < a < 0.5 * math.pi:
-        raise PendcliError(f"theta0 = {theta0} is out of range; valid range is 0 < theta0 < 90°")
+        raise out_of_range("theta0", f"{theta0}", "0 < theta0 < 90°")
     if not 0.0 <= b <= a:
-        raise PendcliError(
-            f"theta1 = {theta1} is out of range; valid range is 0 <= theta1 <= theta0 = {theta0}"
-        )
+        raise out_of_range("theta1", f"{theta1}", f"0 <= theta1 <= theta0 = {theta0}")
     return check_amplitudes(a, b)
 
 
