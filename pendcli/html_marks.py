@@ -1,0 +1,451 @@
+"""Where each row is printed in a paper's OCR text, and the marks of its annotated page.
+
+The accessors below are the only places that know the rows' keys (row dicts, ``as_dict()``
+of the rows); :mod:`pendcli.html_paper` and :mod:`pendcli.html_report` read rows through
+them. A row is located by its printed string, tolerant of the OCR's TeX spacing, inside the
+stretches of text its quoted words, its label or "after (N)" point to.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from pendcli.core.vocabulary import (
+    CLAIM_VERDICTS,
+    STATUSES,
+)
+from pendcli.html_math import math_segments
+
+if TYPE_CHECKING:
+    from pendcli.html_math import MathSegment
+
+Row = Mapping[str, object]
+
+VERDICT_CLASSES = CLAIM_VERDICTS
+STATUS_CLASSES = STATUSES
+# The cause of an equation row follows from its status (pendcli.core.causes' vocabulary).
+EQUATION_CAUSE = {"fails": "derivation-error", "misprint": "misprint"}
+
+
+# --- accessors: the only places that know the rows' keys ------------------------------------
+
+
+def word_of(value: object) -> str:
+    """A verdict, status or cause as its word (an enum's value, or the string)."""
+    value = getattr(value, "value", value)
+    return "" if value is None else str(value)
+
+
+def id_of(row: Row) -> str:
+    return str(row["id"])
+
+
+def verdict_of(row: Row) -> str:
+    return word_of(row.get("verdict") or row.get("status"))
+
+
+def text_of(row: Row, key: str) -> str:
+    value = row.get(key)
+    return "" if value is None else str(value)
+
+
+def sources_of(row: Row) -> list[str]:
+    """The ids a propagated row inherits from (its ``from`` key)."""
+    value = row.get("from")
+    return [str(s) for s in value] if isinstance(value, list | tuple) else []
+
+
+def number_text(value: object) -> str:
+    if isinstance(value, float):
+        return f"{value:.10g}"
+    return "" if value is None else str(value)
+
+
+def disagrees(row: Row) -> bool:
+    return verdict_of(row) in ("truncated", "last-digit", "discrepant", "fails", "misprint")
+
+
+def css_of(row: Row) -> str:
+    word = verdict_of(row)
+    return f"v-{word}" if word in VERDICT_CLASSES else f"s-{word}"
+
+
+# --- locating what the paper prints in its OCR text -----------------------------------------
+
+# How the OCR's TeX writes symbols that the tables keep in plain notation.
+_OCR_FORMS = {
+    "°": r"(?:°|\^\{\\circ\})",
+    "·": r"(?:·|\\cdot(?![A-Za-z]))",
+    "²": r"(?:²|\^\{?2\}?)",
+    "√": r"(?:√|\\sqrt(?![A-Za-z]))",
+    "−": r"(?:−|-)",
+    **{
+        c: rf"(?:{c}|\\{name}(?![A-Za-z]))"
+        for c, name in zip(
+            "πθφψωαβγλρε",
+            [
+                "pi",
+                "theta",
+                "varphi",
+                "psi",
+                "omega",
+                "alpha",
+                "beta",
+                "gamma",
+                "lambda",
+                "rho",
+                "varepsilon",
+            ],
+            strict=True,
+        )
+    },
+}
+_SPACE = r"(?:\s|\\q?quad\b|\\[,;!])*"
+
+
+def _pattern(printed: str) -> re.Pattern[str] | None:
+    """A regex for ``printed`` that tolerates the OCR's spacing (``0^m,68`` ~ ``0^m, 68``)."""
+    chars = [c for c in printed if not c.isspace()]
+    if not chars:
+        return None
+    body = _SPACE.join(_OCR_FORMS.get(c, re.escape(c)) for c in chars)
+    # A bare number must not match inside a longer one ("5" inside "0,35").
+    before = r"(?<![\d,.])" if chars[0].isdigit() else ""
+    after = r"(?![\d])" if chars[-1].isdigit() else ""
+    return re.compile(before + body + after)
+
+
+def locate(text: str, candidates: Sequence[Sequence[str]]) -> list[tuple[int, int] | None]:
+    """Where each item's printed form first occurs in ``text``, in reading order.
+
+    ``candidates[i]`` are the forms of item i, widest first: the OCR's own text (which may be
+    a whole formula), then the value alone. An item is looked for after the previous item's
+    place first, since tables list claims in the paper's order, then anywhere; spans already
+    taken are skipped.
+    """
+    taken: list[tuple[int, int]] = []
+    spans: list[tuple[int, int] | None] = []
+    cursor = 0
+    for forms in candidates:
+        span = _find(text, forms, cursor, len(text), taken) or _find(
+            text, forms, 0, len(text), taken
+        )
+        spans.append(span)
+        if span is not None:
+            taken.append(span)
+            cursor = span[0]
+    return spans
+
+
+def _find(
+    text: str, forms: Sequence[str], start: int, end: int, taken: list[tuple[int, int]]
+) -> tuple[int, int] | None:
+    """The first free match of the widest form, narrowed to a later form found inside it."""
+    for i, form in enumerate(forms):
+        span = _first_free(text, form, start, end, taken)
+        if span is not None:
+            for narrower in forms[i + 1 :]:
+                inner = _first_free(text, narrower, span[0], span[1], taken)
+                if inner is not None:
+                    return inner
+            return span
+    return None
+
+
+def _first_free(
+    text: str, form: str, start: int, end: int, taken: list[tuple[int, int]]
+) -> tuple[int, int] | None:
+    pattern = _pattern(form)
+    if pattern is None:
+        return None
+    for m in pattern.finditer(text, start, end):
+        if all(m.end() <= a or m.start() >= b for a, b in taken):
+            return m.span()
+    return None
+
+
+# --- where a row belongs: its quoted words, its label, "after (N)" --------------------------
+
+_QUOTE = re.compile(r"«\s*(.+?)\s*»")
+_WORDS = re.compile(r"[A-Za-zÀ-ÿ'’]+(?:[ ,][A-Za-zÀ-ÿ'’]+){2,}")
+_AFTER = re.compile(r"\b(after|before|footnote to|table after) (\([0-9IVX]+'?\))")
+
+
+def paragraph_spans(text: str, segments: Sequence[MathSegment]) -> list[tuple[int, int]]:
+    """The paragraphs of ``text``: split at blank lines outside display formulas."""
+    inside = [(s.start, s.end) for s in segments if s.display]
+    cuts = [m.start() for m in re.finditer(r"\n[ \t]*\n", text)
+            if not any(a < m.start() < b for a, b in inside)]  # fmt: skip
+    edges = [0, *cuts, len(text)]
+    return [(a, b) for a, b in itertools.pairwise(edges) if text[a:b].strip()]
+
+
+def _label_place(text: str, label: str, segments: Sequence[MathSegment]) -> tuple[int, int] | None:
+    """Where ``label`` is printed as a label: in display mathematics, at a line's start (after
+    $$, \\\\ or \\begin{…}) or in the margin after a \\quad; else anywhere in a display."""
+    token = re.escape(label)
+    at_start = re.compile(rf"(?:^\s*|\\\\\s*|\\begin\{{\w+\*?\}}\s*|\\left\\{{\s*){token}")
+    in_margin = re.compile(rf"\\q?quad\s*{token}")
+    displays = [s for s in segments if s.display]
+    for pattern in (at_start, in_margin, re.compile(token)):
+        for s in displays:
+            m = pattern.search(text, s.tex_start, s.tex_end)
+            if m is not None:
+                return m.end() - len(label), m.end()
+    return None
+
+
+def _quotes(row: Row) -> list[str]:
+    return [q for key in ("source", "section", "ocr", "statement", "note")
+            for q in _QUOTE.findall(text_of(row, key))]  # fmt: skip
+
+
+def _quote_place(text: str, quote: str) -> tuple[int, int] | None:
+    """The quote found whole (TeX-tolerant), or its longest run of plain words."""
+    whole = _pattern(quote)
+    m = whole.search(text) if whole else None
+    if m is not None:
+        return m.span()
+    for words in sorted(_WORDS.findall(quote), key=len, reverse=True):
+        at = text.find(words)
+        if at >= 0 and len(words) >= 12:
+            return at, at + len(words)
+    return None
+
+
+def _regions(
+    text: str, row: Row, segments: Sequence[MathSegment], blocks: Sequence[tuple[int, int]]
+) -> list[tuple[int, int]]:
+    """The stretches of text where the row may be printed, surest first: the paragraph of
+    its quoted words and the two after it (a number follows its sentence); its label's
+    paragraph; the text after (N) up to the next numbered equation, or before (N); the
+    equation its source names, "eq. (15)", and the text up to the next numbered one; its
+    numbered section, "n° 15"."""
+    out = []
+    for quote in _quotes(row):
+        span = _quote_place(text, quote)
+        if span is not None:
+            out.append(_paragraphs(blocks, span[0], 0, 2))
+    label = text_of(row, "equation")
+    span = _label_place(text, label, segments) if label else None
+    if span is not None:
+        out.append(_paragraphs(blocks, span[0], 0, 0))
+    where = text_of(row, "section") + " " + text_of(row, "source")
+    m = _AFTER.search(where)
+    span = _label_place(text, m.group(2), segments) if m else None
+    if m and span is not None:
+        before = m.group(1) == "before"
+        out.append(_paragraphs(blocks, span[0], -3, 0) if before else
+                   (span[1], _next_label(text, span[1], segments)))  # fmt: skip
+    m = _IN_LABEL.search(text_of(row, "source"))
+    span = _label_place(text, m.group(1), segments) if m else None
+    if span is not None:
+        out.append((span[0], _next_label(text, span[1], segments)))
+    m = re.search(r"n° (\d+)", where)
+    heading = re.search(rf"(?:^|\n\n){m.group(1)}\. ", text) if m else None
+    if heading is not None:
+        end = re.compile(r"\n\n\d+\. ").search(text, heading.end())
+        out.append((heading.start(), end.start() if end else len(text)))
+    return out
+
+
+_ANY_LABEL = re.compile(r"^\s*\(\d{1,3}[a-z]?'?\)|\\q?quad\s*\(\d{1,3}[a-z]?'?\)\s*[.,;]?\s*$")
+
+
+def _next_label(text: str, after: int, segments: Sequence[MathSegment]) -> int:
+    """Where the next display formula carrying an equation label starts (or the text's end)."""
+    for s in segments:
+        if s.display and s.start >= after and _ANY_LABEL.search(text[s.tex_start : s.tex_end]):
+            return s.start
+    return len(text)
+
+
+_IN_LABEL = re.compile(r"(?:^|[\s,])(?:eq\.\s*)?(\(\d{1,3}[a-z]?'?\))")
+
+
+def _paragraphs(
+    blocks: Sequence[tuple[int, int]], at: int, first: int, last: int
+) -> tuple[int, int]:
+    i = next(k for k, (a, b) in enumerate(blocks) if a <= at < b or k == len(blocks) - 1)
+    lo, hi = max(0, i + first), min(len(blocks) - 1, i + last)
+    return blocks[lo][0], blocks[max(lo, hi)][1]
+
+
+# --- the marks of a page --------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Placement:
+    """One mark: the text it covers, the row it stands for and how it was placed."""
+
+    start: int
+    end: int
+    row_id: str
+    key: str  # the element's id: at-<key>
+    css: str
+    word: str  # the verdict or status shown in the note
+    note: str  # the note beside the text (reading, correction, recomputed value)
+    finding: bool
+    anchored: bool  # found at the row's own place (its quoted words, label or "after (N)")
+    forms: tuple[str, ...] = ()  # the printed strings it was looked for by
+
+
+@dataclass
+class _Page:
+    text: str
+    segments: list[MathSegment]
+    blocks: list[tuple[int, int]]
+    taken: list[tuple[int, int]] = field(default_factory=list)
+    marks: list[Placement] = field(default_factory=list)
+    passages: list[tuple[int, Placement]] = field(default_factory=list)  # notes without a mark
+    cursor: int = 0
+
+
+def place_marks(
+    text: str, claims: Sequence[Row], equations: Sequence[Row]
+) -> tuple[list[Placement], list[tuple[int, Placement]]]:
+    """Every mark of the page, and the notes placed at a passage without a mark of their own.
+
+    A row is looked for inside its regions (:func:`_regions`) first; found there it is
+    *anchored*. A row with no region is looked for by its printed string in reading order.
+    """
+    segments = math_segments(text)
+    page = _Page(text, segments, paragraph_spans(text, segments))
+    for row in claims:
+        _place_claim(page, row)
+    for row in equations:
+        _place_equation(page, row)
+    return sorted(page.marks, key=lambda m: m.start), page.passages
+
+
+def _search(
+    page: _Page, forms: Sequence[str], regions: Sequence[tuple[int, int]]
+) -> tuple[tuple[int, int] | None, bool]:
+    for region in regions:
+        span = _find(page.text, forms, region[0], region[1], page.taken)
+        if span is not None:
+            return span, True
+    span = _find(page.text, forms, page.cursor, len(page.text), page.taken)
+    return span or _find(page.text, forms, 0, len(page.text), page.taken), False
+
+
+_BARE = re.compile(r"^[\d,.]+$")
+
+
+def _standalone(page: _Page, number: str) -> tuple[int, int] | None:
+    """A bare number printed alone (a table's cell, between blanks, outside any formula),
+    after the previous claim: "2" is the table's entry, not the factor 2 of a formula."""
+    pattern = re.compile(rf"(?<=\s){re.escape(number)}(?=\s)")
+    for m in pattern.finditer(page.text, page.cursor):
+        free = all(m.end() <= a or m.start() >= b for a, b in page.taken)
+        if free and not any(s.start <= m.start() < s.end for s in page.segments):
+            return m.span()
+    return None
+
+
+def _add(page: _Page, span: tuple[int, int], **kw: Any) -> None:
+    page.taken.append(span)
+    page.marks.append(Placement(span[0], span[1], **kw))
+
+
+def _place_claim(page: _Page, row: Row) -> None:
+    forms = tuple(f for f in (text_of(row, "as_printed"), text_of(row, "published")) if f)
+    regions = _regions(page.text, row, page.segments, page.blocks)
+    span, anchored = _search(page, forms, regions)
+    if not regions and all(_BARE.match(f) for f in forms):
+        span = _standalone(page, forms[0]) or span
+    base = {
+        "row_id": id_of(row),
+        "css": css_of(row),
+        "word": verdict_of(row),
+        "finding": disagrees(row),
+    }
+    if span is not None:
+        page.cursor = span[0]
+        _add(
+            page,
+            span,
+            key=id_of(row),
+            note=_claim_note(row),
+            anchored=anchored,
+            forms=forms,
+            **base,
+        )
+    for i, quote in enumerate(_QUOTE.findall(text_of(row, "ocr"))):  # the words it reads
+        reading = _first_free(page.text, quote, 0, len(page.text), page.taken)
+        if reading is not None:
+            base.update(css="s-reading wrong", word="reading", finding=True)
+            _add(page, reading, key=f"{id_of(row)}~reading{i}",
+                 note=_clauses(text_of(row, "ocr"), 2), anchored=True, forms=(quote,),
+                 **base)  # fmt: skip
+
+
+def _place_equation(page: _Page, row: Row) -> None:
+    """The label at its place, the wrong term itself (its note carries the correction), or
+    else a note at the passage the row follows."""
+    regions = _regions(page.text, row, page.segments, page.blocks)
+    base: dict[str, Any] = {
+        "row_id": id_of(row),
+        "word": verdict_of(row),
+        "finding": disagrees(row),
+    }
+    note = _equation_note(row)
+    terms = 0
+    for i, printed in enumerate(_printed_terms(row)):
+        span, anchored = _search(page, [printed], regions)
+        if span is not None:
+            _add(page, span, key=f"{id_of(row)}~term{i}", css=f"{css_of(row)} wrong", note=note,
+                 anchored=anchored, forms=(printed,), **base)  # fmt: skip
+            terms += 1
+    label = text_of(row, "equation")
+    span = _label_place(page.text, label, page.segments) if label else None
+    if span is not None and all(span[1] <= a or span[0] >= b for a, b in page.taken):
+        label_note = "the wrong term is marked in the formula" if terms else note
+        _add(page, span, key=id_of(row), css=css_of(row), note=label_note, anchored=True,
+             forms=(label,), **base)  # fmt: skip
+    elif not terms and regions:
+        at = regions[0][0]
+        mark = Placement(at, at, key=id_of(row), css=css_of(row), note=note, anchored=True, **base)
+        page.passages.append((at, mark))
+
+
+def _clauses(text: str, count: int) -> str:
+    """The first ``count`` clauses of a note (split at "; "): what fits in the margin."""
+    parts = text.split("; ")
+    return "; ".join(parts[:count]) + (" …" if len(parts) > count else "")
+
+
+def _printed_terms(row: Row) -> list[str]:
+    """The wrong term as the OCR prints it (the ledger's ``wrong_term``), when recorded."""
+    value = row.get("wrong_term")
+    if isinstance(value, str):
+        return [value] if value else []
+    return [str(v) for v in value] if isinstance(value, list | tuple) else []
+
+
+def _claim_note(row: Row) -> str:
+    recomputed = number_text(row.get("recomputed"))
+    unit = text_of(row, "unit")
+    text = f"printed {text_of(row, 'published')}, recomputed {recomputed} {unit}".rstrip()
+    cause = word_of(row.get("cause"))
+    return f"{text}; {cause}" if cause and disagrees(row) else text
+
+
+def _equation_note(row: Row) -> str:
+    correction = correction_of(row)
+    if correction:
+        return correction
+    return ""
+
+
+def correction_of(row: Row) -> str:
+    """The reading of a misprint or the correction of a failure, once."""
+    if text_of(row, "reading"):
+        return f"read {text_of(row, 'reading')}"
+    if text_of(row, "corrected"):
+        return f"corrected: {text_of(row, 'corrected')}"
+    return ""

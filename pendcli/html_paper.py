@@ -1,0 +1,352 @@
+"""``out/papers/<paper>.html``: one paper's OCR text as an annotated edition.
+
+Its TeX rendered as MathML (:mod:`pendcli.html_math`), the marks placed by
+:mod:`pendcli.html_marks` drawn inside prose and formulas with a numbered note beside each
+paragraph, then the paper's claims, equations, formulas and figures. Also the Jinja2
+environment both pages are rendered with (:mod:`pendcli.html_report` writes the overview).
+"""
+
+from __future__ import annotations
+
+import base64
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from pendcli.html_marks import (
+    EQUATION_CAUSE,
+    STATUS_CLASSES,
+    VERDICT_CLASSES,
+    Placement,
+    Row,
+    correction_of,
+    css_of,
+    disagrees,
+    id_of,
+    number_text,
+    paragraph_spans,
+    place_marks,
+    sources_of,
+    text_of,
+    verdict_of,
+    word_of,
+)
+from pendcli.html_math import (
+    balanced,
+    mark_mathml,
+    math_segments,
+    plain_math,
+    to_mathml,
+    wrap_marks,
+)
+
+if TYPE_CHECKING:
+    from jinja2 import Environment
+    from markupsafe import Markup
+
+    from pendcli.html_math import MathSegment
+
+
+@dataclass(frozen=True)
+class Figure:
+    """A figure file and the caption the report prints under it."""
+
+    path: Path
+    caption: str
+
+
+# --- the text rendered: prose escaped, formulas as MathML, marks inside both ----------------
+
+
+@dataclass
+class RenderStats:
+    """How the page's formulas were rendered: MathML, or the plain reading where it failed."""
+
+    formulas: int = 0
+    mathml: int = 0
+    plain: int = 0
+    widened: int = 0  # marks drawn around their whole formula (their TeX did not balance)
+
+
+def render_stats(text: str) -> RenderStats:
+    """The conversion rate over every formula of ``text`` (no marks)."""
+    stats = RenderStats()
+    for s in math_segments(text):
+        stats.formulas += 1
+        ok = to_mathml(text[s.tex_start : s.tex_end], s.display) is not None
+        stats.mathml += ok
+        stats.plain += not ok
+    return stats
+
+
+_STRAY_TEX = re.compile(r"\\[A-Za-z]+(?:\{[^{}]*\})?(?:_\{?\w+\}?)?|\b\w_\{[^{}]*\}")
+
+
+def _prose(piece: str) -> str:
+    """Prose escaped, its stray TeX (``\\mathbf{E}_c`` outside dollars) read plainly, its
+    Markdown emphasis kept."""
+    from markupsafe import escape
+
+    piece = _STRAY_TEX.sub(lambda m: plain_math(m.group(0)), piece)
+    piece = re.sub(r"(?<=[^\W\d_])_([0-9])(?!\d)", lambda m: plain_math("_" + m.group(1)), piece)
+    piece = re.sub(r"(?<=\d)\^e\b", "ᵉ", piece).replace("\t", "\u2003\u2003")
+    out = str(
+        escape(re.sub(r"(?<=\w)\^([0-9])(?!\d)", lambda m: plain_math("^" + m.group(1)), piece))
+    )
+    out = re.sub(r"\*\*(.+?)\*\*", r"<b>\1</b>", out)
+    return re.sub(r"(?<![\w*])\*(?!\s)(.+?)(?<!\s)\*(?![\w*])", r"<i>\1</i>", out)
+
+
+def _call(mark: Placement, number: int) -> str:
+    return f'<sup class="call"><a href="#note-{_attr(mark.key)}">{number}</a></sup>'
+
+
+def _attr(value: str) -> str:
+    from markupsafe import escape
+
+    return str(escape(value))
+
+
+def _open(mark: Placement) -> str:
+    return (
+        f'class="hl {_attr(mark.css)}" id="at-{_attr(mark.key)}" '
+        f'title="{_attr(mark.row_id)}: {_attr(mark.word)}"'
+    )
+
+
+def _render_span(page_text: str, a: int, b: int, marks: Sequence[Placement],
+                 segments: Sequence[MathSegment], numbers: Mapping[str, int],
+                 stats: RenderStats) -> str:  # fmt: skip
+    """Text [a, b): formulas and prose in order, each mark at its place."""
+    out: list[str] = []
+    pos = a
+    for s in [s for s in segments if a <= s.start and s.end <= b]:
+        out.append(_render_prose(page_text, pos, s.start, marks, numbers))
+        inner = [m for m in marks if m.start < s.end and s.start < m.end and m.end > m.start]
+        out.append(_render_formula(page_text, s, inner, numbers, stats))
+        pos = s.end
+    out.append(_render_prose(page_text, pos, b, marks, numbers))
+    return "".join(out)
+
+
+def _render_prose(text: str, a: int, b: int, marks: Sequence[Placement],
+                  numbers: Mapping[str, int]) -> str:  # fmt: skip
+    out, pos = [], a
+    for m in (m for m in marks if a <= m.start and m.end <= b and m.end > m.start):
+        out.append(_prose(text[pos : m.start]))
+        href = f"#row-{_attr(m.row_id)}"
+        out.append(f'<a {_open(m)} href="{href}">{_prose(text[m.start : m.end])}</a>')
+        out.append(_call(m, numbers[m.key]))
+        pos = m.end
+    out.append(_prose(text[pos:b]))
+    return "".join(out)
+
+
+def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
+                    numbers: Mapping[str, int], stats: RenderStats) -> str:  # fmt: skip
+    """One formula as MathML with its marks as ``<mrow class="hl">`` and their calls."""
+    tex = text[s.tex_start : s.tex_end]
+    inside = [m for m in marks if s.tex_start <= m.start and m.end <= s.tex_end
+              and balanced(text[m.start : m.end])]  # fmt: skip
+    around = [m for m in marks if m not in inside]
+    spans = [(m.start - s.tex_start, m.end - s.tex_start, i) for i, m in enumerate(inside)]
+    mathml = to_mathml(wrap_marks(tex, spans), s.display) if inside else None
+    if mathml is None:
+        around, inside = [*around, *inside], []
+        mathml = to_mathml(tex, s.display)
+    if mathml is None:  # not converted: the plain reading, marks around it
+        stats.plain += 1
+        body = f'<span class="plain-math">{_attr(plain_math(tex))}</span>'
+    else:
+        stats.mathml += 1
+        body = mark_mathml(
+            mathml,
+            lambda i: f"<msup><mrow {_open(inside[i])}>",
+            lambda i: (
+                f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
+                f"{numbers[inside[i].key]}</a></mtext></msup>"
+            ),
+        )
+    stats.formulas += 1
+    stats.widened += len(around)
+    for m in around:
+        body = f"<span {_open(m)}>{body}</span>{_call(m, numbers[m.key])}"
+    return f'<div class="display">{body}</div>' if s.display else body
+
+
+# --- the pages ------------------------------------------------------------------------------
+
+
+@cache
+def _environment() -> Environment:
+    from jinja2 import Environment, PackageLoader, StrictUndefined
+
+    return Environment(
+        loader=PackageLoader("pendcli", "templates"),
+        autoescape=True,
+        undefined=StrictUndefined,
+        keep_trailing_newline=True,
+    )
+
+
+def render_template(template: str, **context: object) -> str:
+    return _environment().get_template(template).render(**context)
+
+
+def markup(html: str) -> Markup:
+    from markupsafe import Markup
+
+    return Markup(html)
+
+
+def _legend() -> list[dict[str, str]]:
+    words = [*VERDICT_CLASSES, *STATUS_CLASSES]
+    return [{"css": f"v-{w}" if w in VERDICT_CLASSES else f"s-{w}", "word": w} for w in words]
+
+
+def figure_entries(figures: Sequence[Figure]) -> list[dict[str, str]]:
+    return [
+        {"stem": f.path.stem, "caption": f.caption,
+         "data": base64.b64encode(f.path.read_bytes()).decode("ascii")}
+        for f in figures
+    ]  # fmt: skip
+
+
+def cited_formulas(equations: Sequence[Row], formulas: Sequence[Row]) -> dict[str, list[Row]]:
+    """The formula rows each equation row's check cites: one entry for both checks."""
+    out: dict[str, list[Row]] = {}
+    for formula in formulas:
+        pattern = re.compile(rf"(?<![\w.]){re.escape(id_of(formula))}(?![\w.])")
+        named = [eq for eq in equations if _same_equation(id_of(formula), eq)]
+        for eq in named or equations:
+            if named or pattern.search(text_of(eq, "check") + " " + text_of(eq, "corrected")):
+                out.setdefault(id_of(eq), []).append(formula)
+    return out
+
+
+def _same_equation(formula_id: str, equation: Row) -> bool:
+    """A formula check named after the equation's label: ``lecornu.eq52`` is (52)."""
+    label = text_of(equation, "equation").strip("()").replace("'", "prime")
+    paper = id_of(equation).split(".", 1)[0]
+    return (
+        bool(label)
+        and re.fullmatch(rf"{paper}\.eq{re.escape(label)}(?:[._].*)?", formula_id) is not None
+    )
+
+
+def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple[int, Placement]],
+                 stats: RenderStats) -> list[dict[str, object]]:  # fmt: skip
+    segments = math_segments(text)
+    numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
+                                                     key=lambda m: m.start), 1)}  # fmt: skip
+    blocks = []
+    for a, b in paragraph_spans(text, segments):
+        inside = [m for m in marks if a <= m.start < b]
+        notes = sorted([*inside, *(p for at, p in passages if a <= at < b)],
+                       key=lambda m: numbers[m.key])  # fmt: skip
+        html = _render_span(text, a, b, inside, segments, numbers, stats)
+        blocks.append({
+            "html": markup(html.strip().replace("\n", "<br>")),
+            "heading": text[a:b].lstrip().startswith("#"),
+            "notes": [_note(m, numbers[m.key]) for m in notes],
+        })  # fmt: skip
+    return blocks
+
+
+def _note(mark: Placement, number: int) -> dict[str, object]:
+    return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
+            "word": mark.word, "text": mark.note, "finding": mark.finding}  # fmt: skip
+
+
+def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, object]]:
+    return [
+        {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
+         "source": text_of(r, "source"), "published": text_of(r, "published"),
+         "unit": text_of(r, "unit"), "recomputed": number_text(r.get("recomputed")),
+         "exact": number_text(r.get("exact")), "cause": word_of(r.get("cause")),
+         "sources": sources_of(r), "note": text_of(r, "note")}
+        for r in claims
+    ]  # fmt: skip
+
+
+def formula_cell(r: Row) -> dict[str, object]:
+    order = r.get("observed_order")
+    return {"id": id_of(r), "css": css_of(r), "word": verdict_of(r),
+            "order": f"{order:.2f}" if isinstance(order, float) else ""}  # fmt: skip
+
+
+def _equation_rows(equations: Sequence[Row], cited: Mapping[str, Sequence[Row]],
+                   at: Mapping[str, str]) -> list[dict[str, object]]:  # fmt: skip
+    return [
+        {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
+         "label": text_of(r, "equation"), "section": text_of(r, "section"),
+         "statement": text_of(r, "statement"), "cause": EQUATION_CAUSE.get(verdict_of(r), ""),
+         "correction": correction_of(r), "check": text_of(r, "check"),
+         "formulas": [formula_cell(f) for f in cited.get(id_of(r), [])],
+         "note": text_of(r, "ledger_note") if "ledger_note" in r else text_of(r, "note")}
+        for r in equations
+    ]  # fmt: skip
+
+
+def _formula_rows(formulas: Sequence[Row]) -> list[dict[str, object]]:
+    return [
+        {"id": id_of(r), "at": "", "css": css_of(r), "word": verdict_of(r),
+         "source": text_of(r, "source"), "published": text_of(r, "published"),
+         "recomputed": text_of(r, "recomputed"),
+         "claimed_order": number_text(r.get("claimed_order")),
+         "observed_order": number_text(r.get("observed_order")),
+         "cause": word_of(r.get("cause")), "sources": sources_of(r), "note": text_of(r, "note")}
+        for r in formulas
+    ]  # fmt: skip
+
+
+def paper_page(
+    paper: str,
+    citation: str,
+    text: str,
+    claims: Sequence[Row],
+    formulas: Sequence[Row] = (),
+    equations: Sequence[Row] = (),
+    figures: Sequence[Figure] = (),
+    stats: RenderStats | None = None,
+) -> str:
+    """One paper as an annotated edition, then its claims, equations, formulas and figures."""
+    stats = stats if stats is not None else RenderStats()
+    marks, passages = place_marks(text, claims, equations)
+    at: dict[str, str] = {}
+    for m in [*marks, *(p for _, p in passages)]:
+        at.setdefault(m.row_id, f"at-{m.key}" if m.end > m.start else f"note-{m.key}")
+    cited = cited_formulas(equations, formulas)
+    merged = {id_of(f) for fs in cited.values() for f in fs}
+    alone = [f for f in formulas if id_of(f) not in merged]
+    findings = [id_of(r) for r in [*claims, *equations, *alone] if disagrees(r)]
+    blocks = _text_blocks(text, marks, passages, stats)
+    return render_template(
+        "paper.html.j2",
+        title=f"pendcli: {paper}", lang="fr", paper=paper, citation=citation, legend=_legend(),
+        placed=_placed_text(claims, equations, marks, passages, stats), findings=findings,
+        blocks=blocks, claims=_claim_rows(claims, at),
+        equations=_equation_rows(equations, cited, at), formulas=_formula_rows(alone),
+        figs=figure_entries(figures),
+    )  # fmt: skip
+
+
+def _placed_text(claims: Sequence[Row], equations: Sequence[Row], marks: Sequence[Placement],
+                 passages: Sequence[tuple[int, Placement]], stats: RenderStats) -> str:  # fmt: skip
+    anchored = {m.row_id for m in marks if m.anchored} | {p.row_id for _, p in passages}
+    by_string = {m.row_id for m in marks} - anchored
+    rows = [id_of(r) for r in [*claims, *equations]]
+    n_anchored = sum(r in anchored for r in rows)
+    n_string = sum(r in by_string for r in rows)
+    wrong = sum(m.key.split("~")[-1].startswith(("term", "reading")) for m in marks)
+    return (
+        f"{n_anchored} of {len(rows)} rows placed at their own place in the text (by their "
+        f"label, their quoted words, or the equation or numbered section they belong to), "
+        f"{n_string} found by their printed string alone (place not verified), "
+        f"{len(rows) - n_anchored - n_string} not placed; {wrong} wrong terms or misread words "
+        f"marked. Formulas: {stats.mathml} of {stats.formulas} rendered as MathML, "
+        f"{stats.plain} as a plain reading."
+    )
