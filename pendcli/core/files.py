@@ -248,10 +248,12 @@ def replace_directory(target: Path | str, fill: Callable[[Path], object]) -> Pat
         shutil.rmtree(new, ignore_errors=True)
         raise PendcliError(_as_target(str(exc), new, target)) from None
     except BaseException:
-        shutil.rmtree(new, ignore_errors=True)
+        with _signals_held():  # a second stop signal must not cut the clean-up short
+            shutil.rmtree(new, ignore_errors=True)
         raise
     if old is not None:
-        shutil.rmtree(old, ignore_errors=True)
+        with _signals_held():  # the swap is done: an interrupt now would leave the old folder
+            shutil.rmtree(old, ignore_errors=True)
     return target
 
 
@@ -308,11 +310,26 @@ def locked(lock_file: Path | str, shared: bool = False, busy: str | None = None)
                 fd = _closed(fd)
         yield
     finally:
-        with _signals_held():
-            if held and not shared:
-                with contextlib.suppress(OSError):
-                    os.unlink(path)
-            _closed(fd)
+        _release(path, fd, held and not shared)
+
+
+def _release(path: Path, fd: int, remove: bool) -> None:
+    """Remove (a writer's) lock file and close it. A stop signal can still land in the few
+    steps before the signals are held (one sent again by :mod:`pendcli.core.interrupts`, or a
+    second one): the release is then finished first and the signal raised after it."""
+    landed: BaseException | None = None
+    for _ in range(3):
+        try:
+            with _signals_held():
+                if remove:
+                    with contextlib.suppress(OSError):
+                        os.unlink(path)
+                _closed(fd)
+            break
+        except BaseException as exc:
+            landed = exc
+    if landed is not None:
+        raise landed
 
 
 def _open_lock_file(path: Path, shared: bool) -> int:
