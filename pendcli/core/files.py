@@ -221,40 +221,59 @@ def replace_directory(target: Path | str, fill: Callable[[Path], object]) -> Pat
     try:
         parent.mkdir(parents=True, exist_ok=True)
         mode = _mode_for(target, 0o777)
-        new = Path(tempfile.mkdtemp(prefix=f".{_tag(target.name)}.new-{os.getpid()}-", dir=parent))
     except OSError as exc:
         raise PendcliError(describe_os_error(exc, target)) from None
+    new: Path | None = None
     try:
-        fill(new)
-        _sync_tree(new)
-        os.chmod(new, mode)
-        if target.exists() and _exchange(new, target):
-            old = new  # after the exchange the temporary name holds the old folder
-        elif target.exists():
-            prefix = f".{_tag(target.name)}.old-{os.getpid()}-"
-            old = Path(tempfile.mkdtemp(prefix=prefix, dir=parent))
-            os.rmdir(old)
-            os.rename(target, old)
-            os.rename(new, target)
-        else:
-            os.rename(new, target)
-            old = None
-        _fsync_dir(parent)
+        with _signals_held():  # named before a stop can land, so the clean-up below finds it
+            new = Path(
+                tempfile.mkdtemp(prefix=f".{_tag(target.name)}.new-{os.getpid()}-", dir=parent)
+            )
+        old = _fill_and_swap(target, new, fill, mode)
     except OSError as exc:
-        shutil.rmtree(new, ignore_errors=True)
-        where = _as_target(str(exc.filename), new, target) if exc.filename else target
+        _discard(new)
+        where = _as_target(str(exc.filename), new, target) if exc.filename and new else target
         raise PendcliError(describe_os_error(exc, where)) from None
     except PendcliError as exc:
-        shutil.rmtree(new, ignore_errors=True)
-        raise PendcliError(_as_target(str(exc), new, target)) from None
+        _discard(new)
+        raise PendcliError(_as_target(str(exc), new, target) if new else str(exc)) from None
     except BaseException:
-        with _signals_held():  # a second stop signal must not cut the clean-up short
-            shutil.rmtree(new, ignore_errors=True)
+        _discard(new)
         raise
-    if old is not None:
-        with _signals_held():  # the swap is done: an interrupt now would leave the old folder
-            shutil.rmtree(old, ignore_errors=True)
+    _discard(old)  # the swap is done: only the old folder is left to remove
     return target
+
+
+def _fill_and_swap(
+    target: Path, new: Path, fill: Callable[[Path], object], mode: int
+) -> Path | None:
+    """Fill ``new`` and swap it in for ``target``; the old folder's temporary path (None
+    when there was none)."""
+    parent = target.parent
+    fill(new)
+    _sync_tree(new)
+    os.chmod(new, mode)
+    if target.exists() and _exchange(new, target):
+        old: Path | None = new  # after the exchange the temporary name holds the old folder
+    elif target.exists():
+        prefix = f".{_tag(target.name)}.old-{os.getpid()}-"
+        old = Path(tempfile.mkdtemp(prefix=prefix, dir=parent))
+        os.rmdir(old)
+        os.rename(target, old)
+        os.rename(new, target)
+    else:
+        os.rename(new, target)
+        old = None
+    _fsync_dir(parent)
+    return old
+
+
+def _discard(folder: Path | None) -> None:
+    """Remove a temporary folder, with the stop signals held (a second one must not cut the
+    clean-up short; it is raised after)."""
+    if folder is not None:
+        with _signals_held():
+            shutil.rmtree(folder, ignore_errors=True)
 
 
 def _as_target(text: str, new: Path, target: Path) -> str:
@@ -314,20 +333,22 @@ def locked(lock_file: Path | str, shared: bool = False, busy: str | None = None)
 
 
 def _release(path: Path, fd: int, remove: bool) -> None:
-    """Remove (a writer's) lock file and close it. A stop signal can still land in the few
-    steps before the signals are held (one sent again by :mod:`pendcli.core.interrupts`, or a
-    second one): the release is then finished first and the signal raised after it."""
+    """Remove (a writer's) lock file and close it, with the stop signals held. One that lands
+    in the few steps before they are held (a second one) is raised after the release."""
     landed: BaseException | None = None
     for _ in range(3):
+        released = False
         try:
             with _signals_held():
                 if remove:
                     with contextlib.suppress(OSError):
                         os.unlink(path)
                 _closed(fd)
-            break
+                released = True
         except BaseException as exc:
             landed = exc
+        if released:
+            break
     if landed is not None:
         raise landed
 
@@ -351,13 +372,17 @@ def _closed(fd: int) -> int:
 
 @contextlib.contextmanager
 def _signals_held() -> Iterator[None]:
-    """Hold back SIGINT, SIGTERM, SIGHUP, SIGQUIT (delivered on leaving)."""
+    """Hold back SIGINT, SIGTERM, SIGHUP, SIGQUIT (delivered on leaving): blocked in this
+    thread, and pendcli's own handler defers them whichever thread receives them."""
     import signal
+
+    from pendcli.core.interrupts import stops_deferred
 
     stops = {getattr(signal, name) for name in _STOP_SIGNALS if hasattr(signal, name)}
     held = signal.pthread_sigmask(signal.SIG_BLOCK, stops)
     try:
-        yield
+        with stops_deferred():
+            yield
     finally:
         signal.pthread_sigmask(signal.SIG_SETMASK, held)
 

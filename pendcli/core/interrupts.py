@@ -10,13 +10,14 @@ its parent speaks for the run, and a worker has nothing of its own to clean up.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from types import FrameType
 
-__all__ = ["Interrupted", "run_entry", "stop_on_signals"]
+__all__ = ["Interrupted", "run_entry", "stop_on_signals", "stops_deferred"]
 
 _SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP")
 
@@ -31,8 +32,33 @@ class Interrupted(BaseException):
         super().__init__(f"interrupted by {self.name}")
 
 
+# Python runs a signal's handler in the main thread, whichever thread the kernel gave the
+# signal to (a BLAS or timer thread, which a per-thread signal mask does not cover): so the
+# handler itself defers the stop while the main thread is in a section that must not be cut.
+_deferring = 0
+_deferred: int | None = None
+
+
 def _raise(signum: int, _frame: FrameType | None) -> None:
+    global _deferred
+    if _deferring:
+        _deferred = signum
+        return
     raise Interrupted(signum)
+
+
+@contextlib.contextmanager
+def stops_deferred() -> Iterator[None]:
+    """Within the block a stop signal is only noted; it is raised on leaving it."""
+    global _deferring, _deferred
+    _deferring += 1
+    try:
+        yield
+    finally:
+        _deferring -= 1
+        if not _deferring and _deferred is not None:
+            signum, _deferred = _deferred, None
+            raise Interrupted(signum)
 
 
 def _leave(signum: int, _frame: FrameType | None) -> None:
