@@ -500,8 +500,9 @@ def _free(page: _Page, span: tuple[int, int]) -> bool:
 
 
 def _place_generic(page: _Page, row: Row, region: tuple[int, int]) -> None:
-    """The first free display formula or sentence of the row's lines as its place; a note
-    at its first line where every piece of them is taken already."""
+    """The first free display formula of the row's lines as its place (what a stated result
+    states), else their first free sentence; a note at their first line where every piece of
+    them is taken already."""
     span = next((s for s in _pieces(page, region) if _free(page, s)), None)
     base, note = _row_base(row), _equation_note(row)
     if span is None:
@@ -518,19 +519,20 @@ _SENTENCE_END = re.compile(r"(?<=[.;:!?])\s|\n")
 
 
 def _pieces(page: _Page, region: tuple[int, int]) -> list[tuple[int, int]]:
-    """The row's lines cut into markable pieces in reading order: each display formula
-    (its TeX, or the free stretches of it between marks already there) and each sentence of
-    prose (cut at a formula, which a prose mark cannot cross)."""
+    """The row's lines cut into markable pieces: each display formula inside them (its TeX,
+    or its longest free stretch between marks already there), then each sentence of prose
+    (cut at a formula, which a prose mark cannot cross), each in reading order."""
     a, b = region
-    out: list[tuple[int, int]] = []
+    formulas: list[tuple[int, int]] = []
+    sentences: list[tuple[int, int]] = []
     pos = a
     for s in [s for s in page.segments if s.end > a and s.start < b]:
-        out.extend(_sentences(page.text, pos, max(pos, s.start)))
-        if s.display:
-            out.extend(_free_stretches(page, s.tex_start, s.tex_end))
+        sentences.extend(_sentences(page.text, pos, max(pos, s.start)))
+        if s.display and a <= s.tex_start and s.tex_end <= b:
+            formulas.extend(_free_stretches(page, s.tex_start, s.tex_end))
         pos = max(pos, s.end)
-    out.extend(_sentences(page.text, pos, b))
-    return out
+    sentences.extend(_sentences(page.text, pos, b))
+    return formulas + sentences
 
 
 def _sentences(text: str, a: int, b: int) -> list[tuple[int, int]]:
