@@ -18,7 +18,7 @@ from pendcli.core.vocabulary import (
     CLAIM_VERDICTS,
     STATUSES,
 )
-from pendcli.html_math import math_segments
+from pendcli.html_math import balanced, math_segments
 
 if TYPE_CHECKING:
     from pendcli.html_math import MathSegment
@@ -184,13 +184,19 @@ def paragraph_spans(text: str, segments: Sequence[MathSegment]) -> list[tuple[in
     return [(a, b) for a, b in itertools.pairwise(edges) if text[a:b].strip()]
 
 
-def _label_place(text: str, label: str, segments: Sequence[MathSegment]) -> tuple[int, int] | None:
-    """Where ``label`` is printed as a label: in display mathematics, at a line's start (after
-    $$, \\\\ or \\begin{…}) or in the margin after a \\quad; else anywhere in a display."""
+def _label_place(
+    text: str,
+    label: str,
+    segments: Sequence[MathSegment],
+    within: tuple[int, int] = (0, 1 << 62),
+) -> tuple[int, int] | None:
+    """Where ``label`` is printed as a label (in a display formula starting ``within``): at a
+    line's start (after $$, \\\\ or \\begin{…}) or in the margin after a \\quad; else
+    anywhere in a display."""
     token = re.escape(label)
     at_start = re.compile(rf"(?:^\s*|\\\\\s*|\\begin\{{\w+\*?\}}\s*|\\left\\{{\s*){token}")
     in_margin = re.compile(rf"\\q?quad\s*{token}")
-    displays = [s for s in segments if s.display]
+    displays = [s for s in segments if s.display and within[0] <= s.start < within[1]]
     for pattern in (at_start, in_margin, re.compile(token)):
         for s in displays:
             m = pattern.search(text, s.tex_start, s.tex_end)
@@ -290,8 +296,10 @@ class Placement:
     word: str  # the verdict or status shown in the note
     note: str  # the note beside the text (reading, correction, recomputed value)
     finding: bool
-    anchored: bool  # found at the row's own place (its quoted words, label or "after (N)")
+    anchored: bool  # found at the row's own place (its lines, quoted words, label, "after (N)")
     forms: tuple[str, ...] = ()  # the printed strings it was looked for by
+    lines: tuple[int, int] = (0, 0)  # the 1-based lines of the text it covers
+    generic: bool = False  # the first free formula or sentence of the row's lines
 
 
 @dataclass
@@ -317,9 +325,37 @@ def place_marks(
     page = _Page(text, segments, paragraph_spans(text, segments))
     for row in claims:
         _place_claim(page, row)
+    # A ledger row with ``lines`` is marked inside them: its wrong term, label or quoted
+    # words first, for every row, then the first free formula or sentence of the rest (so
+    # that one row's whole formula does not take another row's label).
+    bounded = [(row, span) for row in equations if (span := lines_region(text, row))]
+    unmarked = [(row, span) for row, span in bounded if not _place_specific(page, row, span)]
+    for row, span in unmarked:
+        _place_generic(page, row, span)
     for row in equations:
-        _place_equation(page, row)
+        if lines_region(text, row) is None:
+            _place_equation(page, row)
     return sorted(page.marks, key=lambda m: m.start), page.passages
+
+
+def lines_of(row: Row) -> tuple[int, int] | None:
+    """The row's ``lines = [first, last]`` (1-based lines of the paper's text), if recorded."""
+    value = row.get("lines")
+    if isinstance(value, list | tuple) and len(value) == 2:
+        return int(value[0]), int(value[1])
+    return None
+
+
+def lines_region(text: str, row: Row) -> tuple[int, int] | None:
+    """The offsets of the row's lines in ``text``: from its first line's start to its last
+    line's end."""
+    lines = lines_of(row)
+    if lines is None:
+        return None
+    starts = [0, *(m.end() for m in re.finditer("\n", text))]
+    first, last = lines
+    end = starts[last] - 1 if last < len(starts) else len(text)
+    return starts[first - 1], end
 
 
 def _search(
@@ -347,9 +383,20 @@ def _standalone(page: _Page, number: str) -> tuple[int, int] | None:
     return None
 
 
+def line_of(text: str, at: int) -> int:
+    """The 1-based line of ``text`` that offset ``at`` is on."""
+    return text.count("\n", 0, at) + 1
+
+
+def covered_lines(text: str, start: int, end: int) -> tuple[int, int]:
+    """The first and last line of text[start:end] (its start's line when empty)."""
+    return line_of(text, start), line_of(text, max(start, end - 1))
+
+
 def _add(page: _Page, span: tuple[int, int], **kw: Any) -> None:
     page.taken.append(span)
-    page.marks.append(Placement(span[0], span[1], **kw))
+    lines = covered_lines(page.text, *span)
+    page.marks.append(Placement(span[0], span[1], lines=lines, **kw))
 
 
 def _place_claim(page: _Page, row: Row) -> None:
@@ -411,6 +458,112 @@ def _place_equation(page: _Page, row: Row) -> None:
         at = regions[0][0]
         mark = Placement(at, at, key=id_of(row), css=css_of(row), note=note, anchored=True, **base)
         page.passages.append((at, mark))
+
+
+def _row_base(row: Row) -> dict[str, Any]:
+    return {"row_id": id_of(row), "word": verdict_of(row), "finding": disagrees(row)}
+
+
+def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
+    """Inside the row's lines: its wrong terms (the first carries the reading or correction),
+    its label, or else its quoted words. Whether anything was marked."""
+    a, b = region
+    base, note = _row_base(row), _equation_note(row)
+    terms = 0
+    for i, printed in enumerate(_printed_terms(row)):
+        span = _find(page.text, [printed], a, b, page.taken)
+        if span is not None:
+            _add(page, span, key=f"{id_of(row)}~term{i}", css=f"{css_of(row)} wrong",
+                 note="" if terms else note, anchored=True, forms=(printed,),
+                 **base)  # fmt: skip
+            terms += 1
+    label = text_of(row, "equation")
+    span = _label_place(page.text, label, page.segments, region) if label else None
+    if span is not None and _free(page, span):
+        label_note = "the wrong term is marked in the formula" if terms else note
+        _add(page, span, key=id_of(row), css=css_of(row), note=label_note, anchored=True,
+             forms=(label,), **base)  # fmt: skip
+        return True
+    if terms:
+        return True
+    for quote in _quotes(row):
+        span = _find(page.text, [quote], a, b, page.taken)
+        if span is not None:
+            _add(page, span, key=id_of(row), css=css_of(row), note=note, anchored=True,
+                 forms=(quote,), **base)  # fmt: skip
+            return True
+    return False
+
+
+def _free(page: _Page, span: tuple[int, int]) -> bool:
+    return all(span[1] <= a or span[0] >= b for a, b in page.taken)
+
+
+def _place_generic(page: _Page, row: Row, region: tuple[int, int]) -> None:
+    """The first free display formula of the row's lines as its place (what a stated result
+    states), else their first free sentence; a note at their first line where every piece of
+    them is taken already."""
+    span = next((s for s in _pieces(page, region) if _free(page, s)), None)
+    base, note = _row_base(row), _equation_note(row)
+    if span is None:
+        at = region[0]
+        mark = Placement(at, at, key=id_of(row), css=css_of(row), note=note, anchored=True,
+                         lines=covered_lines(page.text, at, at), **base)  # fmt: skip
+        page.passages.append((at, mark))
+        return
+    _add(page, span, key=id_of(row), css=css_of(row), note=note, anchored=True,
+         forms=(page.text[span[0] : span[1]],), generic=True, **base)  # fmt: skip
+
+
+_SENTENCE_END = re.compile(r"(?<=[.;:!?])\s|\n")
+
+
+def _pieces(page: _Page, region: tuple[int, int]) -> list[tuple[int, int]]:
+    """The row's lines cut into markable pieces: each display formula inside them (its TeX,
+    or its longest free stretch between marks already there), then each sentence of prose
+    (cut at a formula, which a prose mark cannot cross), each in reading order."""
+    a, b = region
+    formulas: list[tuple[int, int]] = []
+    sentences: list[tuple[int, int]] = []
+    pos = a
+    for s in [s for s in page.segments if s.end > a and s.start < b]:
+        sentences.extend(_sentences(page.text, pos, max(pos, s.start)))
+        if s.display and a <= s.tex_start and s.tex_end <= b:
+            formulas.extend(_free_stretches(page, s.tex_start, s.tex_end))
+        pos = max(pos, s.end)
+    sentences.extend(_sentences(page.text, pos, b))
+    return formulas + sentences
+
+
+def _sentences(text: str, a: int, b: int) -> list[tuple[int, int]]:
+    out: list[tuple[int, int]] = []
+    for piece in re.finditer(r"[^\n]+", text[a:b]):
+        start = a + piece.start()
+        cuts = [start, *(start + m.end() for m in _SENTENCE_END.finditer(piece.group(0))),
+                a + piece.end()]  # fmt: skip
+        out.extend(_strip(text, x, y) for x, y in itertools.pairwise(cuts))
+    return [s for s in out if re.search(r"\w", text[s[0] : s[1]])]
+
+
+def _strip(text: str, a: int, b: int) -> tuple[int, int]:
+    while a < b and text[a].isspace():
+        a += 1
+    while b > a and text[b - 1].isspace():
+        b -= 1
+    return a, b
+
+
+def _free_stretches(page: _Page, a: int, b: int) -> list[tuple[int, int]]:
+    """A formula's TeX, whole when free (a mark that does not balance is drawn around the
+    whole formula), else its longest balanced stretch between marks."""
+    taken = sorted((max(a, x), min(b, y)) for x, y in page.taken if x < b and y > a)
+    if not taken:
+        return [_strip(page.text, a, b)]
+    edges = [a, *(e for x, y in taken for e in (x, y)), b]
+    stretches = [_strip(page.text, x, y) for x, y in zip(edges[::2], edges[1::2], strict=True)]
+    ok = [(x, y) for x, y in stretches if re.search(r"\w", page.text[x:y])
+          and balanced(page.text[x:y])]  # fmt: skip
+    return sorted(ok, key=lambda s: s[0] - s[1])[:1]
 
 
 def _clauses(text: str, count: int) -> str:

@@ -26,6 +26,7 @@ from pendcli.html_marks import (
     css_of,
     disagrees,
     id_of,
+    lines_of,
     number_text,
     paragraph_spans,
     place_marks,
@@ -113,7 +114,8 @@ def _attr(value: str) -> str:
 def _open(mark: Placement) -> str:
     return (
         f'class="hl {_attr(mark.css)}" id="at-{_attr(mark.key)}" '
-        f'title="{_attr(mark.row_id)}: {_attr(mark.word)}"'
+        f'title="{_attr(mark.row_id)}: {_attr(mark.word)}" data-row="{_attr(mark.row_id)}" '
+        f'data-lines="{mark.lines[0]}-{mark.lines[1]}"'
     )
 
 
@@ -336,17 +338,46 @@ def paper_page(
 
 def _placed_text(claims: Sequence[Row], equations: Sequence[Row], marks: Sequence[Placement],
                  passages: Sequence[tuple[int, Placement]], stats: RenderStats) -> str:  # fmt: skip
+    """What the page states about its marks: a ledger row counts as located only when a
+    mark of it lies within its ``lines``; a claim, when found at its own place."""
+    within, generic = _within_lines(equations, marks)
+    unbounded = [r for r in equations if lines_of(r) is None]
+    rows = [id_of(r) for r in [*claims, *unbounded]]
     anchored = {m.row_id for m in marks if m.anchored} | {p.row_id for _, p in passages}
     by_string = {m.row_id for m in marks} - anchored
-    rows = [id_of(r) for r in [*claims, *equations]]
     n_anchored = sum(r in anchored for r in rows)
     n_string = sum(r in by_string for r in rows)
     wrong = sum(m.key.split("~")[-1].startswith(("term", "reading")) for m in marks)
+    bounded = len(equations) - len(unbounded)
+    ledger = (
+        f"{within} of {bounded} equations and stated results marked within their printed "
+        f"lines ({within - generic} by their wrong term, label or quoted words, {generic} at "
+        f"the first formula or sentence of those lines), {bounded - within} not; "
+        if bounded
+        else ""
+    )
     return (
-        f"{n_anchored} of {len(rows)} rows placed at their own place in the text (by their "
-        f"label, their quoted words, or the equation or numbered section they belong to), "
+        f"{ledger}{n_anchored} of {len(rows)} printed numbers"
+        f"{' and unlined rows' if unbounded else ''} placed at their own place in the text "
+        f"(by their quoted words, label, or the equation or numbered section they belong to), "
         f"{n_string} found by their printed string alone (place not verified), "
         f"{len(rows) - n_anchored - n_string} not placed; {wrong} wrong terms or misread words "
         f"marked. Formulas: {stats.mathml} of {stats.formulas} rendered as MathML, "
         f"{stats.plain} as a plain reading."
     )
+
+
+def _within_lines(equations: Sequence[Row], marks: Sequence[Placement]) -> tuple[int, int]:
+    """How many ledger rows have a mark within their lines, and how many of those only at
+    the first formula or sentence of them."""
+    by_row: dict[str, list[Placement]] = {}
+    for m in marks:
+        by_row.setdefault(m.row_id, []).append(m)
+    within = generic = 0
+    for row in equations:
+        lines = lines_of(row)
+        inside = [m for m in by_row.get(id_of(row), [])
+                  if lines and lines[0] <= m.lines[0] and m.lines[1] <= lines[1]]  # fmt: skip
+        within += bool(inside)
+        generic += bool(inside) and all(m.generic for m in inside)
+    return within, generic

@@ -21,6 +21,7 @@ from pathlib import Path
 
 import pytest
 
+from pendcli.core.ledger import load_ledger
 from pendcli.html_report import chromium, write_for_result
 from pendcli.papers.registry import PAPERS
 from pendcli.reproduce import reproduce_all
@@ -37,7 +38,8 @@ const visible = (e) => { const r = e.getBoundingClientRect(); return r.width > 0
 const marks = [...document.querySelectorAll(".hl[id^='at-']")].map((m) => {
   const key = m.id.slice(3), blk = m.closest(".blk");
   const note = blk && blk.querySelector(`[id="note-${CSS.escape(key)}"]`);
-  return [key, visible(m), !!m.closest(".edition .txt"), !!note && visible(note)];
+  return [key, visible(m), !!m.closest(".edition .txt"), !!note && visible(note),
+          m.dataset.row || "", m.dataset.lines || ""];
 });
 // Chromium throttles a page past ~200 navigations: the first 150 links are clicked, every
 // link's target must exist and be visible.
@@ -104,14 +106,29 @@ def test_a_paper_page_shows_no_tex_and_every_mark_and_link_lands(pages: Path, pa
     shown = [t for t in RAW_TEX if t in seen["text"]]
     assert not shown, f"raw TeX in the rendered text: {shown}"
     assert len(seen["marks"]) > 10
-    bad = [m for m in seen["marks"] if not all(m[1:])]
+    bad = [m for m in seen["marks"] if not all(m[1:4])]
     assert not bad, f"marks not visible, outside the text or without their note: {bad[:5]}"
     lost = [link for link, ok in seen["links"] if not ok]
     assert not lost, f"links that do not land: {lost[:5]}"
     rows = set(map(html.unescape, re.findall(r'<tr id="row-([^"]+)"', page.read_text("utf-8"))))
     claims = {row.id for row in reproduce_all((paper,), formulas=False).claims[paper]}
     assert claims <= rows  # every claim has its row on the page
+    shown_at: dict[str, list[tuple[int, int]]] = {}
+    for _, *_, row, lines in seen["marks"]:
+        first, last = map(int, lines.split("-"))
+        shown_at.setdefault(row, []).append((first, last))
+    outside = [
+        (r.id, r.lines, shown_at.get(r.id))
+        for r in load_ledger(paper).rows
+        if r.lines is not None and not _within(r.lines, shown_at.get(r.id, []))
+    ]
+    assert not outside, f"ledger rows with no visible mark within their lines: {outside[:5]}"
     _screenshot(pages, page)
+
+
+def _within(lines: tuple[int, int], shown: list[tuple[int, int]]) -> bool:
+    """A mark the browser shows lies within the row's lines (its data-lines)."""
+    return any(lines[0] <= a and b <= lines[1] for a, b in shown)
 
 
 def test_the_report_shows_no_tex_and_every_link_lands(pages: Path) -> None:

@@ -6,9 +6,11 @@ from __future__ import annotations
 import itertools
 import re
 import shutil
+from html import unescape
 from pathlib import Path
 
 import pytest
+from markupsafe import escape
 
 from pendcli.core.ledger import load_ledger
 from pendcli.core.tables import load_paper_table, tables_dir
@@ -16,6 +18,7 @@ from pendcli.html_graph import layered_graph
 from pendcli.html_math import math_segments, plain_math, to_mathml
 from pendcli.html_report import (
     cited_formulas,
+    correction_of,
     locate,
     paper_page,
     place_marks,
@@ -180,7 +183,8 @@ def _table_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, obj
     ]  # fmt: skip
     equations: list[dict[str, object]] = [
         {"id": r.id, "equation": r.equation, "section": r.section, "statement": r.statement,
-         "status": r.status, "wrong_term": r.wrong_term, "note": r.note or ""}
+         "status": r.status, "wrong_term": r.wrong_term, "note": r.note or "",
+         "lines": r.lines, "reading": r.reading, "corrected": r.corrected}
         for r in load_ledger(paper).rows
     ]  # fmt: skip
     return claims, equations
@@ -240,14 +244,97 @@ def test_the_issues_marks_sit_on_the_wrong_term(
     assert beside in text[line_start:line_end]
 
 
-def test_located_counts_only_rows_at_their_own_place(tmp_path: Path) -> None:
+def _marks_in_page(page: str) -> dict[str, list[tuple[int, int]]]:
+    """The lines each row's marked elements say they cover (``data-lines``), by row."""
+    out: dict[str, list[tuple[int, int]]] = {}
+    for m in re.finditer(r'<[a-z]+ class="hl [^"]*"[^>]*data-row="([^"]+)" '
+                         r'data-lines="(\d+)-(\d+)"', page):  # fmt: skip
+        row = unescape(m.group(1))
+        out.setdefault(row, []).append((int(m.group(2)), int(m.group(3))))
+    return out
+
+
+def _outside_lines(page: str, equations: list[dict[str, object]]) -> list[str]:
+    """The ledger rows with no mark in the page, or a mark outside their ``lines``."""
+    marked = _marks_in_page(page)
+    bad = []
+    for row in equations:
+        first, last = row["lines"]  # type: ignore[misc]
+        spans = marked.get(str(row["id"]), [])
+        if not spans or any(a < first or b > last for a, b in spans):
+            bad.append(f"{row['id']} {row['lines']}: marked at {spans}")
+    return bad
+
+
+def _line_of(text: str, at: int) -> int:
+    return text[:at].count("\n") + 1
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_every_ledger_row_is_marked_within_its_lines(paper: str) -> None:
+    """On the page (its elements' data-lines) and in the text (the marks' own offsets,
+    mapped to lines here, not by the code under test)."""
+    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    claims, equations = _table_rows(paper)
+    page = paper_page(paper, "", text, claims, (), equations)
+    assert _outside_lines(page, equations) == []
+    lines = {str(r["id"]): r["lines"] for r in equations}
+    marks = [m for m in place_marks(text, claims, equations)[0] if m.row_id in lines]
+    for m in marks:
+        first, last = lines[m.row_id]  # type: ignore[misc]
+        assert first <= _line_of(text, m.start) and _line_of(text, m.end - 1) <= last, m.key
+        assert m.lines == (_line_of(text, m.start), _line_of(text, m.end - 1)), m.key
+        assert text[m.start : m.end].strip(), m.key
+    assert {m.row_id for m in marks} == set(lines)
+
+
+def test_the_lines_check_sees_a_row_placed_by_shifted_lines() -> None:
+    """Broken on purpose: (13) placed by lines shifted ten lines down is outside its own."""
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
     claims, equations = _table_rows("tisserand")
-    page = paper_page("tisserand", "", text, claims, (), equations)
-    anchored = {m.row_id for m in place_marks(text, claims, equations)[0] if m.anchored}
-    stated = re.search(r"(\d+) of (\d+) rows placed at their own place", page)
-    assert stated and int(stated.group(2)) == len(claims) + len(equations)
-    assert int(stated.group(1)) >= len(anchored)  # plus the notes placed at their passage
+    shifted = [
+        {**r, "lines": [r["lines"][0] + 10, r["lines"][1] + 10]}  # type: ignore[index]
+        if r["id"] == "tisserand.eq.13" else r
+        for r in equations
+    ]  # fmt: skip
+    page = paper_page("tisserand", "", text, claims, (), shifted)
+    assert [b.split()[0] for b in _outside_lines(page, equations)] == ["tisserand.eq.13"]
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(paper: str) -> None:
+    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    claims, equations = _table_rows(paper)
+    page = paper_page(paper, "", text, claims, (), equations)
+    edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
+    notes = re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition)
+    wrong = [r for r in equations if str(r["status"]) in ("misprint", "fails")]
+    assert len(wrong) >= 3
+    for row in wrong:
+        correction = correction_of(row)
+        own = [body for key, body in notes if unescape(key).split("~")[0] == row["id"]]
+        assert own, row["id"]  # marked, with its note
+        if correction:
+            shown = str(escape(correction))
+            assert sum(shown in body for body in own) == 1, (row["id"], own)
+
+
+def test_located_counts_only_rows_at_their_own_place(tmp_path: Path) -> None:
+    text = (tables_dir() / "papers" / "lecornu.txt").read_text("utf-8")
+    claims, equations = _table_rows("lecornu")
+    page = paper_page("lecornu", "", text, claims, (), equations)
+    marks = place_marks(text, claims, equations)[0]
+    lines = {str(r["id"]): r["lines"] for r in equations}
+    inside = {m.row_id for m in marks if m.row_id in lines
+              and lines[m.row_id][0] <= _line_of(text, m.start)  # type: ignore[index]
+              and _line_of(text, m.end - 1) <= lines[m.row_id][1]}  # type: ignore[index]  # fmt: skip
+    stated = re.search(r"(\d+) of (\d+) equations and stated results marked within their", page)
+    assert stated and int(stated.group(2)) == len(equations)
+    assert int(stated.group(1)) == len(inside)
+    anchored = {m.row_id for m in marks if m.anchored and m.row_id not in lines}
+    stated = re.search(r"(\d+) of (\d+) printed numbers placed at their own place", page)
+    assert stated and int(stated.group(2)) == len(claims)
+    assert int(stated.group(1)) == len(anchored) < len(claims)  # the rest are not verified
 
 
 def test_pdf_printing_refuses_without_out_or_without_chromium(
