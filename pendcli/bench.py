@@ -66,7 +66,16 @@ def _commands() -> dict[str, list[str]]:
 def _wall(cmd: list[str]) -> float:
     env = dict(os.environ, NO_COLOR="1", COLUMNS="100")
     start = time.perf_counter()
-    subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env, check=True)
+    # A session of its own: a Ctrl-C stops this run (which then kills the child), not the
+    # child first, whose failure would read as a broken command.
+    subprocess.run(
+        cmd,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        env=env,
+        check=True,
+        start_new_session=True,
+    )
     return time.perf_counter() - start
 
 
@@ -94,6 +103,7 @@ def import_costs(args: list[str], top: int = 8) -> list[tuple[str, float]]:
         capture_output=True,
         text=True,
         env=dict(os.environ, NO_COLOR="1"),
+        start_new_session=True,  # a Ctrl-C stops this run, which then kills the child
     )
     costs: dict[str, float] = {}
     for line in proc.stderr.splitlines():
@@ -305,7 +315,17 @@ def run_sized(args: list[str], timeout: float = GROWTH_TIMEOUT) -> tuple[str, st
         stderr=subprocess.DEVNULL,
         env=env,
         preexec_fn=_limit_memory,
+        start_new_session=True,  # a Ctrl-C stops this run, which then kills the child
     )
+    try:
+        return _sized_result(proc, start, timeout)
+    except BaseException:
+        proc.kill()
+        proc.wait()
+        raise
+
+
+def _sized_result(proc: subprocess.Popen[bytes], start: float, timeout: float) -> tuple[str, str]:
     status, usage = 0, None
     while True:
         pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
