@@ -614,7 +614,6 @@ def run() -> None:
 
 def _invoke(args: list[str]) -> int:
     """Run the app; turn every way it can end into an exit code and at most one stderr line."""
-    from pendcli.core.files import describe_os_error
     from pendcli.core.interrupts import Interrupted
 
     try:
@@ -635,6 +634,8 @@ def _invoke(args: list[str]) -> int:
     except typer.Exit as exc:
         return exc.exit_code
     except OSError as exc:
+        from pendcli.core.files import describe_os_error  # not on the start-up path
+
         return _fail(describe_os_error(exc), 2)
     except Exception as exc:  # a bug: still one line, unless PENDCLI_DEBUG asks for the trace
         if os.environ.get("PENDCLI_DEBUG"):
