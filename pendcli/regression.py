@@ -39,6 +39,7 @@ __all__ = [
     "Drift",
     "compare_tables",
     "find_drifts",
+    "kept_within_tolerance",
     "regenerated_tables",
     "rewrite_with",
     "run_check",
@@ -273,6 +274,7 @@ def run_check(
 
         # no reader's lock: the folder is swapped whole, so this reads the old set or the new
         # one; a lock file only a reader made would be left behind by an interrupt
+        tables = kept_within_tolerance(folder, tables)  # noise below the check stays out
         changes = changed_cells(folder, tables)
         removed = _rewrite(folder, tables)
         if not quiet:
@@ -336,6 +338,38 @@ def _rewrite(folder: Path, tables: dict[str, str]) -> list[str]:
     return removed
 
 
+def kept_within_tolerance(folder: Path, tables: dict[str, str]) -> dict[str, str]:
+    """The regenerated ``tables`` with each committed row kept as it is where none of its
+    cells moved beyond its column's tolerance (:func:`cell_drift`). The check cannot tell such
+    a row from the committed one; rewriting it would only record the last bits of this CPU's
+    BLAS and SIMD kernels (another CPU moves an observed order by ~1e-9). A row that moved, a
+    new row and a table that cannot be read are written as regenerated, a dropped row goes."""
+    out: dict[str, str] = {}
+    for name, text in tables.items():
+        try:
+            columns, now = read_table(text, f"regenerated {name}", expected_columns(name))
+            _, then = read_table((folder / name).read_text(encoding="utf-8"), name, columns)
+        except (OSError, UnicodeDecodeError, PendcliError):
+            out[name] = text
+            continue
+        rows = [
+            then[cid] if cid in then and _unmoved(name, cid, columns, then, now) else now[cid]
+            for cid in now
+        ]
+        out[name] = to_csv(list(rows), columns)
+    return out
+
+
+def _unmoved(
+    name: str,
+    cid: str,
+    columns: tuple[str, ...],
+    then: dict[str, dict[str, str]],
+    now: dict[str, dict[str, str]],
+) -> bool:
+    return all(cell_drift(name, cid, c, then[cid], now[cid]) is None for c in columns[1:])
+
+
 def rewrite_with(
     tables: dict[str, str], others: dict[Path, str], root: Path | None = None
 ) -> list[str]:
@@ -348,6 +382,7 @@ def rewrite_with(
     folder.mkdir(parents=True, exist_ok=True)
     with locked(_lock_file(folder)):
         check_owned(folder, "tables/regenerated", lambda n: expected_columns(n) is not None)
+        tables = kept_within_tolerance(folder, tables)
         removed = sorted(p.name for p in folder.glob("*.csv") if p.name not in tables)
         changes: dict[Path, str | bytes | None] = {folder / n: t for n, t in tables.items()}
         changes.update({folder / name: None for name in removed})

@@ -157,3 +157,39 @@ def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
         assert run_check(quiet=True) == 1
     finally:
         clear_table_cache()
+
+
+def _moved(text: str, row: int, column: str, by: float) -> str:
+    """``text`` (a committed CSV) with one numeric cell moved by ``by``, written as to_csv does."""
+    import csv
+    import io
+
+    records = list(csv.reader(io.StringIO(text)))
+    col = records[0].index(column)
+    records[row][col] = repr(float(records[row][col]) + by)
+    out = io.StringIO()
+    csv.writer(out, lineterminator="\n").writerows(records)
+    return out.getvalue()
+
+
+def test_check_update_keeps_what_moved_only_within_the_tolerance(tmp_path) -> None:
+    """Another CPU's kernels move an observed order by ~1e-9: a committed row whose every cell
+    is within its tolerance stays byte for byte; a row moved beyond it is rewritten, the rest
+    of the table kept (issue 23: check --update on a fresh clone changes no byte)."""
+    from pendcli.core.tables import tables_dir
+    from pendcli.regression import kept_within_tolerance
+
+    name = "lecornu-formulas.csv"
+    committed = (tables_dir() / "regenerated" / name).read_text(encoding="utf-8")
+    folder = tmp_path / "regenerated"
+    folder.mkdir()
+    (folder / name).write_text(committed, encoding="utf-8")
+    limit = TOLERANCES["observed_order"][1]
+    noise = _moved(committed, 1, "observed_order", 1e-9)
+    assert noise != committed
+    assert kept_within_tolerance(folder, {name: noise}) == {name: committed}
+    real = _moved(noise, 2, "observed_order", 2 * limit)  # row 2 moves beyond, row 1 noise
+    kept = kept_within_tolerance(folder, {name: real})[name].splitlines()
+    assert kept[1] == committed.splitlines()[1]  # the noise is not recorded
+    assert kept[2] == real.splitlines()[2] != committed.splitlines()[2]  # the change is
+    assert kept[3:] == committed.splitlines()[3:]
