@@ -126,16 +126,21 @@ def result_perturbation_hierarchy() -> EquationCheck:
     return equation_check(ok, "sympy", f"u1 = {sp.simplify(u1)}; ODE and zero initial values exact")
 
 
-def eq_28() -> EquationCheck:
-    """(28) satisfies (27) up to p³ (γ = 1), with u(0) = 0, u'(0) = 1."""
-    sp = sympy_module()
-    t, p = sp.symbols("t p", positive=True)
+def eq28_solution(sp: Any, t: Any, p: Any) -> Any:
+    """Lecornu's (28) as printed (γ = 1): the solution of (27) to p², read by (28) and (29)."""
     s, c = sp.sin(t), sp.cos(t)
-    u = (
+    return (
         s
         + p * t / 4 * (s - t * c)
         + p**2 / 32 * ((2 * t**3 - 3 * t) * c + (3 - 3 * t**2 - t**4) * s)
     )
+
+
+def eq_28() -> EquationCheck:
+    """(28) satisfies (27) up to p³ (γ = 1), with u(0) = 0, u'(0) = 1."""
+    sp = sympy_module()
+    t, p = sp.symbols("t p", positive=True)
+    u = eq28_solution(sp, t, p)
     residual = sp.expand((1 + p * t) * u.diff(t, 2) + u)
     low = [sp.simplify(residual.coeff(p, n)) for n in range(3)]
     ok = low == [0, 0, 0] and u.subs(t, 0) == 0 and sp.simplify(u.diff(t).subs(t, 0) - 1) == 0
@@ -156,13 +161,9 @@ def eq_29() -> EquationCheck:
     """(29) = (28)/(1 + pγt) to p²: the p² bracket found exactly."""
     sp = sympy_module()
     t, p = sp.symbols("t p", positive=True)
-    s, c = sp.sin(t), sp.cos(t)
-    u = (
-        s
-        + p * t / 4 * (s - t * c)
-        + p**2 / 32 * ((2 * t**3 - 3 * t) * c + (3 - 3 * t**2 - t**4) * s)
-    )
+    u = eq28_solution(sp, t, p)
     theta2 = sp.expand(sp.series(u / (1 + p * t), p, 0, 3).removeO()).coeff(p, 2) * 32
+    s, c = sp.sin(t), sp.cos(t)
     printed2 = (10 * t**3 - 3 * t) * c + (3 - 43 * t**2 - t**4) * s
     found = trig_text(trig_form(theta2, t)).replace("u", "τ")
     return equation_check(
