@@ -300,6 +300,12 @@ class Placement:
     forms: tuple[str, ...] = ()  # the printed strings it was looked for by
     lines: tuple[int, int] = (0, 0)  # the 1-based lines of the text it covers
     generic: bool = False  # the first free formula or sentence of the row's lines
+    # how it was placed: "value" (a claim's printed string), "reading" (the words an OCR
+    # note reads), "term" (a wrong term), "label", "formula" (the formula its printed form
+    # or statement is), "quote" (its quoted words), "first" (the first free formula or
+    # sentence of its lines), "string" (its printed string, searched outside any lines)
+    how: str = ""
+    whole: bool = False  # drawn around a whole formula, which may hold other marks
 
 
 @dataclass
@@ -318,24 +324,26 @@ def place_marks(
 ) -> tuple[list[Placement], list[tuple[int, Placement]]]:
     """Every mark of the page, and the notes placed at a passage without a mark of their own.
 
-    A row is looked for inside its regions (:func:`_regions`) first; found there it is
-    *anchored*. A row with no region is looked for by its printed string in reading order.
+    A row with ``lines`` is marked inside them: a claim by its printed string; a ledger row
+    by its wrong term (a misprint or a failure) or its label, else at the formula of those
+    lines that its printed form (or statement) is, else by its quoted words, else at their
+    first free formula or sentence. Wrong terms and labels go first for every row, so that
+    one row's whole formula does not take another row's label. A row without ``lines`` is
+    looked for inside its regions (:func:`_regions`), then by its printed string.
     """
     segments = math_segments(text)
     page = _Page(text, segments, paragraph_spans(text, segments))
     for row in claims:
         _place_claim(page, row)
-    # A ledger row with ``lines`` is marked inside them: its wrong term, label or quoted
-    # words first, for every row, then the first free formula or sentence of the rest (so
-    # that one row's whole formula does not take another row's label).
     bounded = [(row, span) for row in equations if (span := lines_region(text, row))]
     unmarked = [(row, span) for row, span in bounded if not _place_specific(page, row, span)]
     for row, span in unmarked:
-        _place_generic(page, row, span)
+        if not _place_formulas(page, row, span) and not _place_quote(page, row, span):
+            _place_generic(page, row, span)
     for row in equations:
         if lines_region(text, row) is None:
             _place_equation(page, row)
-    return sorted(page.marks, key=lambda m: m.start), page.passages
+    return sorted(page.marks, key=lambda m: (m.start, not m.whole)), page.passages
 
 
 def lines_of(row: Row) -> tuple[int, int] | None:
@@ -372,11 +380,11 @@ def _search(
 _BARE = re.compile(r"^[\d,.]+$")
 
 
-def _standalone(page: _Page, number: str) -> tuple[int, int] | None:
-    """A bare number printed alone (a table's cell, between blanks, outside any formula),
-    after the previous claim: "2" is the table's entry, not the factor 2 of a formula."""
+def _standalone(page: _Page, number: str, start: int, end: int) -> tuple[int, int] | None:
+    """A bare number printed alone (a table's cell, between blanks, outside any formula)
+    in text[start:end]: "2" is the table's entry, not the factor 2 of a formula."""
     pattern = re.compile(rf"(?<=\s){re.escape(number)}(?=\s)")
-    for m in pattern.finditer(page.text, page.cursor):
+    for m in pattern.finditer(page.text, start, end):
         free = all(m.end() <= a or m.start() >= b for a, b in page.taken)
         if free and not any(s.start <= m.start() < s.end for s in page.segments):
             return m.span()
@@ -394,41 +402,44 @@ def covered_lines(text: str, start: int, end: int) -> tuple[int, int]:
 
 
 def _add(page: _Page, span: tuple[int, int], **kw: Any) -> None:
-    page.taken.append(span)
+    if not kw.get("whole"):  # a mark around a whole formula leaves its inside free
+        page.taken.append(span)
     lines = covered_lines(page.text, *span)
     page.marks.append(Placement(span[0], span[1], lines=lines, **kw))
 
 
 def _place_claim(page: _Page, row: Row) -> None:
+    """The claim's printed string inside its lines (a bare number standing alone there
+    first: "2" is the table's entry, not the factor 2 of a formula), and the words its OCR
+    note reads; a claim without lines by its regions, then by its printed string."""
     forms = tuple(f for f in (text_of(row, "as_printed"), text_of(row, "published")) if f)
-    regions = _regions(page.text, row, page.segments, page.blocks)
-    span, anchored = _search(page, forms, regions)
-    if not regions and all(_BARE.match(f) for f in forms):
-        span = _standalone(page, forms[0]) or span
-    base = {
-        "row_id": id_of(row),
-        "css": css_of(row),
-        "word": verdict_of(row),
-        "finding": disagrees(row),
-    }
+    region = lines_region(page.text, row)
+    bare = all(_BARE.match(f) for f in forms)
+    if region is not None:
+        span = (_standalone(page, forms[0], *region) if bare else None) or _find(
+            page.text, forms, *region, page.taken
+        )
+        anchored, how = span is not None, "value"
+    else:
+        regions = _regions(page.text, row, page.segments, page.blocks)
+        span, anchored = _search(page, forms, regions)
+        if not regions and bare:
+            span = _standalone(page, forms[0], page.cursor, len(page.text)) or span
+        how = "value" if anchored else "string"
+    base = {"row_id": id_of(row), "css": css_of(row), "word": verdict_of(row),
+            "finding": disagrees(row)}  # fmt: skip
     if span is not None:
         page.cursor = span[0]
-        _add(
-            page,
-            span,
-            key=id_of(row),
-            note=_claim_note(row),
-            anchored=anchored,
-            forms=forms,
-            **base,
-        )
+        _add(page, span, key=id_of(row), note=_claim_note(row), anchored=anchored,
+             forms=forms, how=how, **base)  # fmt: skip
     for i, quote in enumerate(_QUOTE.findall(text_of(row, "ocr"))):  # the words it reads
-        reading = _first_free(page.text, quote, 0, len(page.text), page.taken)
+        lo, hi = region or (0, len(page.text))
+        reading = _first_free(page.text, quote, lo, hi, page.taken)
         if reading is not None:
             base.update(css="s-reading wrong", word="reading", finding=True)
             _add(page, reading, key=f"{id_of(row)}~reading{i}",
                  note=_clauses(text_of(row, "ocr"), 2), anchored=True, forms=(quote,),
-                 **base)  # fmt: skip
+                 how="reading", **base)  # fmt: skip
 
 
 def _place_equation(page: _Page, row: Row) -> None:
@@ -446,14 +457,14 @@ def _place_equation(page: _Page, row: Row) -> None:
         span, anchored = _search(page, [printed], regions)
         if span is not None:
             _add(page, span, key=f"{id_of(row)}~term{i}", css=f"{css_of(row)} wrong", note=note,
-                 anchored=anchored, forms=(printed,), **base)  # fmt: skip
+                 anchored=anchored, forms=(printed,), how="term", **base)  # fmt: skip
             terms += 1
     label = text_of(row, "equation")
     span = _label_place(page.text, label, page.segments) if label else None
     if span is not None and all(span[1] <= a or span[0] >= b for a, b in page.taken):
         label_note = "the wrong term is marked in the formula" if terms else note
         _add(page, span, key=id_of(row), css=css_of(row), note=label_note, anchored=True,
-             forms=(label,), **base)  # fmt: skip
+             forms=(label,), how="label", **base)  # fmt: skip
     elif not terms and regions:
         at = regions[0][0]
         mark = Placement(at, at, key=id_of(row), css=css_of(row), note=note, anchored=True, **base)
@@ -465,8 +476,8 @@ def _row_base(row: Row) -> dict[str, Any]:
 
 
 def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
-    """Inside the row's lines: its wrong terms (the first carries the reading or correction),
-    its label, or else its quoted words. Whether anything was marked."""
+    """Inside the row's lines: its wrong terms (the first carries the reading or correction)
+    and its label. Whether anything was marked."""
     a, b = region
     base, note = _row_base(row), _equation_note(row)
     terms = 0
@@ -474,7 +485,7 @@ def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
         span = _find(page.text, [printed], a, b, page.taken)
         if span is not None:
             _add(page, span, key=f"{id_of(row)}~term{i}", css=f"{css_of(row)} wrong",
-                 note="" if terms else note, anchored=True, forms=(printed,),
+                 note="" if terms else note, anchored=True, forms=(printed,), how="term",
                  **base)  # fmt: skip
             terms += 1
     label = text_of(row, "equation")
@@ -482,21 +493,73 @@ def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
     if span is not None and _free(page, span):
         label_note = "the wrong term is marked in the formula" if terms else note
         _add(page, span, key=id_of(row), css=css_of(row), note=label_note, anchored=True,
-             forms=(label,), **base)  # fmt: skip
+             forms=(label,), how="label", **base)  # fmt: skip
         return True
-    if terms:
-        return True
+    return terms > 0
+
+
+def _place_quote(page: _Page, row: Row, region: tuple[int, int]) -> bool:
+    """The row's quoted words inside its lines, where it has any."""
     for quote in _quotes(row):
-        span = _find(page.text, [quote], a, b, page.taken)
+        span = _find(page.text, [quote], *region, page.taken)
         if span is not None:
-            _add(page, span, key=id_of(row), css=css_of(row), note=note, anchored=True,
-                 forms=(quote,), **base)  # fmt: skip
+            _add(page, span, key=id_of(row), css=css_of(row), note=_equation_note(row),
+                 anchored=True, forms=(quote,), how="quote", **_row_base(row))  # fmt: skip
             return True
     return False
 
 
+# How near a formula's atoms must be to the printed form's to be taken for it (a share of
+# atoms in common): the rows' own formulas score 0.5 to 1, their neighbours mostly below.
+NEAR = 0.5
+
+
+def _place_formulas(page: _Page, row: Row, region: tuple[int, int]) -> bool:
+    """Each formula of the row's printed form (else of its statement) marked at the piece of
+    its lines nearest to it (:func:`pendcli.html_match.best_pieces`), if near enough: one
+    line or equation of a display where it can be drawn alone, else the whole display. The
+    first mark carries the note; a misprint or failure whose wrong term the ledger does not
+    record says so beside its reading or correction."""
+    from pendcli.html_match import best_pieces, formula_parts
+
+    source = text_of(row, "printed") or text_of(row, "statement")
+    parts = formula_parts(source)
+    spans: list[tuple[tuple[int, int], bool, str]] = []
+    for piece, score, number in best_pieces(page.text, page.segments, region, source):
+        span, whole = (piece.start, piece.end), piece.whole
+        if not whole and not (balanced(page.text[span[0] : span[1]]) and _free(page, span)):
+            span, whole = (piece.segment.tex_start, piece.segment.tex_end), True
+        if whole:
+            span = _strip(page.text, *span)
+        if score >= NEAR and span not in [s for s, _, _ in spans]:
+            spans.append((span, whole, parts[number]))
+            spans += [(c, True, parts[number]) for c in _continuations(page, piece.segment, region)]
+    note = _equation_note(row)
+    if note and verdict_of(row) in ("misprint", "fails"):
+        note += " (the ledger records no wrong term: the formula is marked)"
+    for i, (span, whole, part) in enumerate(spans):
+        _add(page, span, key=id_of(row) if i == 0 else f"{id_of(row)}~formula{i}",
+             css=css_of(row), note="" if i else note, anchored=True, forms=(part,),
+             how="formula", whole=whole, **_row_base(row))  # fmt: skip
+    return bool(spans)
+
+
 def _free(page: _Page, span: tuple[int, int]) -> bool:
     return all(span[1] <= a or span[0] >= b for a, b in page.taken)
+
+
+def _continuations(
+    page: _Page, segment: MathSegment, region: tuple[int, int]
+) -> list[tuple[int, int]]:
+    """The display formulas right after ``segment`` in the region that go on with it (they
+    begin with + or −: one formula printed over several displays)."""
+    out = []
+    following = [s for s in page.segments if s.start >= segment.end and s.tex_end <= region[1]]
+    for s in following:
+        if not (s.display and re.match(r"\s*[+\-−]", page.text[s.tex_start : s.tex_end])):
+            break
+        out.append(_strip(page.text, s.tex_start, s.tex_end))
+    return out
 
 
 def _place_generic(page: _Page, row: Row, region: tuple[int, int]) -> None:
@@ -512,7 +575,7 @@ def _place_generic(page: _Page, row: Row, region: tuple[int, int]) -> None:
         page.passages.append((at, mark))
         return
     _add(page, span, key=id_of(row), css=css_of(row), note=note, anchored=True,
-         forms=(page.text[span[0] : span[1]],), generic=True, **base)  # fmt: skip
+         forms=(page.text[span[0] : span[1]],), generic=True, how="first", **base)  # fmt: skip
 
 
 _SENTENCE_END = re.compile(r"(?<=[.;:!?])\s|\n")

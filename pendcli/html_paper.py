@@ -152,7 +152,7 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
     """One formula as MathML with its marks as ``<mrow class="hl">`` and their calls."""
     tex = text[s.tex_start : s.tex_end]
     inside = [m for m in marks if s.tex_start <= m.start and m.end <= s.tex_end
-              and balanced(text[m.start : m.end])]  # fmt: skip
+              and balanced(text[m.start : m.end]) and not m.whole]  # fmt: skip
     around = [m for m in marks if m not in inside]
     spans = [(m.start - s.tex_start, m.end - s.tex_start, i) for i, m in enumerate(inside)]
     mathml = to_mathml(wrap_marks(tex, spans), s.display) if inside else None
@@ -245,6 +245,7 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
     numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
                                                      key=lambda m: m.start), 1)}  # fmt: skip
     blocks = []
+    front = front_matter_end(text)
     for a, b in paragraph_spans(text, segments):
         inside = [m for m in marks if a <= m.start < b]
         notes = sorted([*inside, *(p for at, p in passages if a <= at < b)],
@@ -253,9 +254,23 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
         blocks.append({
             "html": markup(html.strip().replace("\n", "<br>")),
             "heading": text[a:b].lstrip().startswith("#"),
+            "front": b <= front,
             "notes": [_note(m, numbers[m.key]) for m in notes],
         })  # fmt: skip
     return blocks
+
+
+# The digitisation's cover page (NUMDAM's title page, copyright and terms of use) ends with
+# the archive's address, within the first lines of the text.
+_COVER_END = re.compile(r"^<?https?://www\.numdam\.org/?>?[ \t]*$", re.MULTILINE)
+
+
+def front_matter_end(text: str, within: int = 40) -> int:
+    """Where the digitisation's cover page ends (0 where the text has none): after the last
+    line of the first ``within`` lines that is the archive's bare address."""
+    head = "\n".join(text.split("\n")[:within])
+    ends = [m.end() for m in _COVER_END.finditer(head)]
+    return ends[-1] if ends else 0
 
 
 def _note(mark: Placement, number: int) -> dict[str, object]:
@@ -329,55 +344,70 @@ def paper_page(
     return render_template(
         "paper.html.j2",
         title=f"pendcli: {paper}", lang="fr", paper=paper, citation=citation, legend=_legend(),
-        placed=_placed_text(claims, equations, marks, passages, stats), findings=findings,
-        blocks=blocks, claims=_claim_rows(claims, at),
+        placed=_placed_text(claims, equations, marks, stats), findings=findings,
+        front=[b for b in blocks if b["front"]], blocks=[b for b in blocks if not b["front"]],
+        claims=_claim_rows(claims, at),
         equations=_equation_rows(equations, cited, at), formulas=_formula_rows(alone),
         figs=figure_entries(figures),
     )  # fmt: skip
 
 
 def _placed_text(claims: Sequence[Row], equations: Sequence[Row], marks: Sequence[Placement],
-                 passages: Sequence[tuple[int, Placement]], stats: RenderStats) -> str:  # fmt: skip
-    """What the page states about its marks: a ledger row counts as located only when a
-    mark of it lies within its ``lines``; a claim, when found at its own place."""
-    within, generic = _within_lines(equations, marks)
-    unbounded = [r for r in equations if lines_of(r) is None]
-    rows = [id_of(r) for r in [*claims, *unbounded]]
-    anchored = {m.row_id for m in marks if m.anchored} | {p.row_id for _, p in passages}
-    by_string = {m.row_id for m in marks} - anchored
-    n_anchored = sum(r in anchored for r in rows)
-    n_string = sum(r in by_string for r in rows)
-    wrong = sum(m.key.split("~")[-1].startswith(("term", "reading")) for m in marks)
-    bounded = len(equations) - len(unbounded)
-    ledger = (
-        f"{within} of {bounded} equations and stated results marked within their printed "
-        f"lines ({within - generic} by their wrong term, label or quoted words, {generic} at "
-        f"the first formula or sentence of those lines), {bounded - within} not; "
-        if bounded
-        else ""
-    )
+                 stats: RenderStats) -> str:  # fmt: skip
+    """What the page states about its marks, counted from the marks themselves: a row is
+    *located* when a mark of it lies within its ``lines`` and covers what it was looked for
+    by (its printed string, wrong term, label, the formula its printed form is, or its
+    quoted words); a mark at the first formula or sentence of its lines is not."""
+    tally = {
+        "claims": placement_tally(claims, marks),
+        "equations": placement_tally(equations, marks),
+    }
+    parts = []
+    for what, name in (
+        ("claims", "printed numbers"),
+        ("equations", "equations and stated results"),
+    ):
+        t = tally[what]
+        if t.rows:
+            parts.append(
+                f"{t.located} of {t.rows} {name} located within their printed lines"
+                + (f", {t.first} at the first formula or sentence of their lines (no printed "
+                   "form to place them by: place not verified)" if t.first else "")
+                + (f", {t.unverified} found by their printed string alone (no lines)"
+                   if t.unverified else "")
+                + f", {t.rows - t.located - t.first - t.unverified} not placed"
+            )  # fmt: skip
+    wrong = sum(m.how in ("term", "reading") for m in marks)
     return (
-        f"{ledger}{n_anchored} of {len(rows)} printed numbers"
-        f"{' and unlined rows' if unbounded else ''} placed at their own place in the text "
-        f"(by their quoted words, label, or the equation or numbered section they belong to), "
-        f"{n_string} found by their printed string alone (place not verified), "
-        f"{len(rows) - n_anchored - n_string} not placed; {wrong} wrong terms or misread words "
-        f"marked. Formulas: {stats.mathml} of {stats.formulas} rendered as MathML, "
-        f"{stats.plain} as a plain reading."
+        "; ".join(parts) + f". {wrong} wrong terms or misread words marked. Formulas: "
+        f"{stats.mathml} of {stats.formulas} rendered as MathML, {stats.plain} as a plain reading."
     )
 
 
-def _within_lines(equations: Sequence[Row], marks: Sequence[Placement]) -> tuple[int, int]:
-    """How many ledger rows have a mark within their lines, and how many of those only at
-    the first formula or sentence of them."""
+@dataclass(frozen=True)
+class PlacementTally:
+    rows: int
+    located: int  # a mark within its lines, on what it was looked for by
+    first: int  # only at the first free formula or sentence of its lines
+    unverified: int  # no lines: found by its printed string, its place not checked
+
+
+LOCATING = ("value", "term", "label", "formula", "quote", "reading")
+
+
+def placement_tally(rows: Sequence[Row], marks: Sequence[Placement]) -> PlacementTally:
+    """How the rows were placed, from the marks (see :func:`_placed_text`)."""
     by_row: dict[str, list[Placement]] = {}
     for m in marks:
         by_row.setdefault(m.row_id, []).append(m)
-    within = generic = 0
-    for row in equations:
-        lines = lines_of(row)
-        inside = [m for m in by_row.get(id_of(row), [])
-                  if lines and lines[0] <= m.lines[0] and m.lines[1] <= lines[1]]  # fmt: skip
-        within += bool(inside)
-        generic += bool(inside) and all(m.generic for m in inside)
-    return within, generic
+    located = first = unverified = 0
+    for row in rows:
+        lines, own = lines_of(row), by_row.get(id_of(row), [])
+        inside = [m for m in own if lines and lines[0] <= m.lines[0] and m.lines[1] <= lines[1]]
+        if any(m.how in LOCATING for m in inside):
+            located += 1
+        elif inside:
+            first += 1
+        elif own and lines is None:
+            unverified += 1
+    return PlacementTally(len(rows), located, first, unverified)

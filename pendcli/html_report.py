@@ -231,7 +231,8 @@ def write_for_result(
         printed = {c.id: c for c in load_paper_table(key).claims}
         claims[key] = [
             {**row.as_dict(), "as_printed": getattr(printed.get(row.id), "as_printed", ""),
-             "ocr": getattr(printed.get(row.id), "ocr", "")}
+             "ocr": getattr(printed.get(row.id), "ocr", ""),
+             "lines": getattr(printed.get(row.id), "lines", None)}
             for row in result.claims.get(key, [])
         ]  # fmt: skip
     return write_html_report(

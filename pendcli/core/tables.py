@@ -19,6 +19,7 @@ from typing import Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
+from pendcli.core.text_blocks import Span, validate_span
 from pendcli.core.vocabulary import CAUSES  # why a printed value disagrees (tables/README.md)
 
 __all__ = [
@@ -40,7 +41,7 @@ __all__ = [
 _SECTIONS = ("paper", "claim")  # top level: [paper] and [[claim]], nothing else
 _REQUIRED = ("id", "source", "quantity", "published")
 _OPTIONAL = ("unit", "note", "ocr", "as_printed", "comparison", "precision", "cause")
-_CLAIM_FIELDS = (*_REQUIRED, *_OPTIONAL, "from")
+_CLAIM_FIELDS = (*_REQUIRED, *_OPTIONAL, "from", "lines")
 _PAPER_FIELDS = ("key", "citation", "seed", "assumptions", "constants")
 # A constant declares the range its value must lie in (ends included), beside it in its table:
 # physically plausible values, inside which the models are meant to work (and terminate). A
@@ -69,6 +70,7 @@ class PublishedValue:
     comparison: str = "equal"
     cause: str | None = None  # why it disagrees (one of CAUSES), when known
     cause_from: tuple[str, ...] = ()  # the claims it inherits an error from ("propagated")
+    lines: Span | None = None  # the 1-based lines of papers/<paper>.txt where it is printed
 
 
 @dataclass(frozen=True)
@@ -274,7 +276,9 @@ def _cached_table(key: str, root: Path) -> PaperTable:
         citation=paper["citation"],
         seed=paper["seed"],
         assumptions=tuple(paper.get("assumptions", [])),
-        claims=_claims(path, raw.get("claim"), key),
+        claims=_claims_in_text(
+            path, _claims(path, raw.get("claim"), key), root / "papers" / f"{key}.txt"
+        ),
         constants=_constants(path, paper.get("constants"), key),
         path=path,
     )
@@ -321,6 +325,19 @@ def _claims(path: Path, entries: object, key: str) -> tuple[PublishedValue, ...]
     return tuple(claims)
 
 
+def _claims_in_text(
+    path: Path, claims: tuple[PublishedValue, ...], text: Path
+) -> tuple[PublishedValue, ...]:
+    """Each claim's ``lines`` within the paper's text, when the text is there to count (as
+    the ledger's rows are checked); a missing text is the error of the command that needs it."""
+    if text.is_file() and any(c.lines is not None for c in claims):
+        count = len(read_table_text(text, "paper text").splitlines())
+        for claim in claims:
+            if claim.lines is not None:
+                validate_span(f"{path}: claim {claim.id!r}", list(claim.lines), count)
+    return claims
+
+
 def _claim(path: Path, index: int, entry: object, key: str, seen: set[str]) -> PublishedValue:
     """One ``[[claim]]`` entry, checked field by field; ``seen`` holds the ids before it."""
     where = f"{path}: claim #{index}"
@@ -350,6 +367,7 @@ def _claim(path: Path, index: int, entry: object, key: str, seen: set[str]) -> P
         comparison=comparison,
         cause=entry.get("cause"),
         cause_from=_cause_from(where, entry),
+        lines=validate_span(where, entry["lines"]) if "lines" in entry else None,
     )
 
 
