@@ -113,7 +113,7 @@ def _attr(value: str) -> str:
 
 def _open(mark: Placement) -> str:
     return (
-        f'class="hl {_attr(mark.css)}" id="at-{_attr(mark.key)}" '
+        f'class="hl {_attr(mark.css)}{" whole" if mark.whole else ""}" id="at-{_attr(mark.key)}" '
         f'title="{_attr(mark.row_id)}: {_attr(mark.word)}" data-row="{_attr(mark.row_id)}" '
         f'data-lines="{mark.lines[0]}-{mark.lines[1]}"'
     )

@@ -22,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from pendcli.core.ledger import load_ledger
+from pendcli.core.tables import load_paper_table
 from pendcli.html_report import chromium, write_for_result
 from pendcli.papers.registry import PAPERS
 from pendcli.reproduce import reproduce_all
@@ -117,12 +118,13 @@ def test_a_paper_page_shows_no_tex_and_every_mark_and_link_lands(pages: Path, pa
     for _, *_, row, lines in seen["marks"]:
         first, last = map(int, lines.split("-"))
         shown_at.setdefault(row, []).append((first, last))
+    placed = [*load_ledger(paper).rows, *load_paper_table(paper).claims]
     outside = [
         (r.id, r.lines, shown_at.get(r.id))
-        for r in load_ledger(paper).rows
-        if r.lines is not None and not _within(r.lines, shown_at.get(r.id, []))
+        for r in placed
+        if r.lines is None or not _within(r.lines, shown_at.get(r.id, []))
     ]
-    assert not outside, f"ledger rows with no visible mark within their lines: {outside[:5]}"
+    assert not outside, f"rows with no visible mark within their lines: {outside[:5]}"
     _screenshot(pages, page)
 
 
