@@ -371,6 +371,8 @@ def _placed_text(claims: Sequence[Row], equations: Sequence[Row], marks: Sequenc
         if t.rows:
             parts.append(
                 f"{t.located} of {t.rows} {name} located within their printed lines"
+                + (f" ({t.by_statement} of them at the formula nearest their statement, the "
+                   "ledger giving no printed form)" if t.by_statement else "")
                 + (f", {t.first} at the first formula or sentence of their lines (no printed "
                    "form to place them by: place not verified)" if t.first else "")
                 + (f", {t.unverified} found by their printed string alone (no lines)"
@@ -390,6 +392,7 @@ class PlacementTally:
     located: int  # a mark within its lines, on what it was looked for by
     first: int  # only at the first free formula or sentence of its lines
     unverified: int  # no lines: found by its printed string, its place not checked
+    by_statement: int = 0  # located only at the formula nearest its statement (no printed form)
 
 
 LOCATING = ("value", "term", "label", "formula", "quote", "reading")
@@ -400,14 +403,15 @@ def placement_tally(rows: Sequence[Row], marks: Sequence[Placement]) -> Placemen
     by_row: dict[str, list[Placement]] = {}
     for m in marks:
         by_row.setdefault(m.row_id, []).append(m)
-    located = first = unverified = 0
+    located = first = unverified = by_statement = 0
     for row in rows:
         lines, own = lines_of(row), by_row.get(id_of(row), [])
         inside = [m for m in own if lines and lines[0] <= m.lines[0] and m.lines[1] <= lines[1]]
         if any(m.how in LOCATING for m in inside):
             located += 1
+            by_statement += not text_of(row, "printed") and all(m.how == "formula" for m in inside)
         elif inside:
             first += 1
         elif own and lines is None:
             unverified += 1
-    return PlacementTally(len(rows), located, first, unverified)
+    return PlacementTally(len(rows), located, first, unverified, by_statement)

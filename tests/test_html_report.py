@@ -440,7 +440,8 @@ def test_located_counts_only_rows_at_their_own_place(paper: str) -> None:
 
 def test_the_cover_page_of_the_digitisation_is_shown_apart() -> None:
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    page = paper_page("tisserand", "", text, *_table_rows("tisserand"))
+    claims, equations = _table_rows("tisserand")
+    page = paper_page("tisserand", "", text, claims, (), equations)
     front = page[page.index('<details class="front">') : page.index("</details>")]
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
     assert "tous droits réservés" in front and "numdam.org/conditions" in front
