@@ -492,6 +492,8 @@ def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
     span = _label_place(page.text, label, page.segments, region) if label else None
     if span is not None and _free(page, span):
         label_note = "the wrong term is marked in the formula" if terms else note
+        if not terms and note and verdict_of(row) in ("misprint", "fails"):
+            label_note += " (the ledger records no wrong term: the label is marked)"
         _add(page, span, key=id_of(row), css=css_of(row), note=label_note, anchored=True,
              forms=(label,), how="label", **base)  # fmt: skip
         return True
@@ -538,9 +540,10 @@ def _place_formulas(page: _Page, row: Row, region: tuple[int, int]) -> bool:
     if note and verdict_of(row) in ("misprint", "fails"):
         note += " (the ledger records no wrong term: the formula is marked)"
     for i, (span, whole, part) in enumerate(spans):
+        base = {**_row_base(row), "finding": disagrees(row) and i == 0}  # its note, once
         _add(page, span, key=id_of(row) if i == 0 else f"{id_of(row)}~formula{i}",
-             css=css_of(row), note="" if i else note, anchored=True, forms=(part,),
-             how="formula", whole=whole, **_row_base(row))  # fmt: skip
+             css=css_of(row), note="continued" if i else note, anchored=True, forms=(part,),
+             how="formula", whole=whole, **base)  # fmt: skip
     return bool(spans)
 
 

@@ -380,6 +380,14 @@ def _placed_text(claims: Sequence[Row], equations: Sequence[Row], marks: Sequenc
                 + f", {t.rows - t.located - t.first - t.unverified} not placed"
             )  # fmt: skip
     wrong = sum(m.how in ("term", "reading") for m in marks)
+    slips = [r for r in equations if verdict_of(r) in ("misprint", "fails")]
+    at_term = {m.row_id for m in marks if m.how == "term"}
+    if slips:
+        parts.append(
+            f"{sum(id_of(r) in at_term for r in slips)} of {len(slips)} misprints and failures "
+            "marked at their wrong term (the others at their label or formula: the ledger "
+            "records no wrong term for them)"
+        )
     return (
         "; ".join(parts) + f". {wrong} wrong terms or misread words marked. Formulas: "
         f"{stats.mathml} of {stats.formulas} rendered as MathML, {stats.plain} as a plain reading."
