@@ -626,7 +626,7 @@ def reference_differential_4() -> Any:
 
 
 @cache
-def _series_symbols() -> Any:
+def series_symbols() -> Any:
     """s (the scale), W (u²/s²), C (cos 2ψ), ψ, u0, u1, g, l: the ledger's real symbols."""
     import sympy as sp
 
@@ -689,7 +689,7 @@ def _integral_in_psi(expr: Any) -> Any:
     """∫₀^ψ expr dψ for expr a polynomial in C = cos 2ψ: each Cᵐ by its Fourier sum."""
     import sympy as sp
 
-    _, _, big_c, psi, *_ = _series_symbols()
+    _, _, big_c, psi, *_ = series_symbols()
     total = sp.Integer(0)
     for (m,), coefficient in sp.Poly(sp.expand(expr), big_c).terms():
         for j in range(m + 1):  # Cᵐ = 2⁻ᵐ Σ_j binom(m, j) cos(2(m − 2j)ψ)
@@ -705,7 +705,7 @@ def motion_series(n: int) -> dict[str, Any]:
     (5) and (3), through s**(n − 1)."""
     import sympy as sp
 
-    s, big_w, big_c, psi, u0, u1, *_ = _series_symbols()
+    s, big_w, big_c, psi, u0, u1, *_ = series_symbols()
     names = (s, big_w, u0, u1)
     k_dt_dpsi = _differentials(n)[0].as_expr(*names)
     # u²·dφ/dψ/(u0u1) − 1 is divisible by u² = s²W: the 1/u² coefficient is exactly 1 (line 78)
@@ -726,7 +726,7 @@ def reference_motion(n: int, what: str, orders: dict[str, int] | None = None) ->
 
     from pendcli.core.printed_check import Reference
 
-    s, _, _, psi, u0, u1, g, length = _series_symbols()
+    s, _, _, psi, u0, u1, g, length = series_symbols()
     series = motion_series(n)
     k = sp.sqrt(g / length)
     phi1 = sp.atan(u1 / u0 * sp.tan(psi))
@@ -751,7 +751,7 @@ def _below(expr: Any, n: int) -> Any:
     """``expr`` expanded, the terms of degree n and above in the scale s dropped."""
     import sympy as sp
 
-    s = _series_symbols()[0]
+    s = series_symbols()[0]
     keep = [t for t in sp.Add.make_args(sp.expand(expr)) if sp.degree(t, s) < n]
     return sp.Add(*keep)
 
@@ -761,7 +761,7 @@ def _shifted(periodic: Any, delta: Any, n: int) -> Any:
     through s**(n − 1)."""
     import sympy as sp
 
-    psi, tau = _series_symbols()[3], sp.Symbol("tau", real=True)
+    psi, tau = series_symbols()[3], sp.Symbol("tau", real=True)
     total, power = sp.Integer(0), sp.Integer(1)
     for j in range((n + 1) // 2):
         derivative = sp.diff(periodic, psi, j).subs(psi, tau) if j else periodic.subs(psi, tau)
@@ -776,7 +776,7 @@ def motion_in_kpt(n: int) -> dict[str, Any]:
     the fixed point ψ = τ − Q(ψ), each pass exact one order (s²) further."""
     import sympy as sp
 
-    s, _, _, psi, *_ = _series_symbols()
+    s, _, _, psi, *_ = series_symbols()
     tau = sp.Symbol("tau", real=True)
     series = motion_series(n)
     inverse_a = _below(sp.series(1 / series["A"], s, 0, n).removeO(), n)
@@ -909,7 +909,7 @@ def _dphi_from_5(n: int, scale_u0_u1: bool) -> dict[str, Any]:
     """u, u0, u1 scaled by s (u0, u1 only when ``scale_u0_u1``) and dφ from (5)."""
     import sympy as sp
 
-    s = _series_symbols()[0]
+    s = series_symbols()[0]
     u, u0, u1, dpsi = _ledger_symbols("u", "u0", "u1", "dpsi")
     v0, v1 = (s * u0, s * u1) if scale_u0_u1 else (u0, u1)
     c, c0, c1 = sp.sqrt(1 - s**2 * u**2), sp.sqrt(1 - v0**2), sp.sqrt(1 - v1**2)
@@ -922,7 +922,7 @@ def reference_formula_5() -> Any:
     """(5) through the second order in the angles (its Laurent series in u, u0, u1): (7)."""
     from pendcli.core.printed_check import Reference
 
-    return Reference(_dphi_from_5(3, True), scale=_series_symbols()[0], order=3, what="(5)")
+    return Reference(_dphi_from_5(3, True), scale=series_symbols()[0], order=3, what="(5)")
 
 
 def reference_formula_5_near_u_zero() -> Any:
@@ -931,7 +931,7 @@ def reference_formula_5_near_u_zero() -> Any:
     from pendcli.core.printed_check import Reference
 
     exact = _dphi_from_5(3, False)
-    return Reference(exact, scale=_series_symbols()[0], order=0, what="(5) as u → 0")
+    return Reference(exact, scale=series_symbols()[0], order=0, what="(5) as u → 0")
 
 
 def reference_formula_5_as_cited() -> Any:
@@ -943,7 +943,7 @@ def reference_formula_5_as_cited() -> Any:
 
     scale = sp.Symbol("x", positive=True)
     exact = _small_angles(scale)
-    exact["dphi"] = _dphi_from_5(3, True)["dphi"].subs(_series_symbols()[0], scale)
+    exact["dphi"] = _dphi_from_5(3, True)["dphi"].subs(series_symbols()[0], scale)
     return Reference(
         exact, scale=scale, order=6, what="(5), to order 4", reading=reference_differential_4()
     )
