@@ -842,6 +842,17 @@ def _first_integrals(theta: Any, k: Any) -> tuple[Any, Any]:
     and at θ1 (solved here, not typed)."""
     import sympy as sp
 
+    energy, h2 = sp.symbols("E h2")
+    fixed = dict(zip((energy, h2), _apsidal_constants(k), strict=True))
+    theta_dot_sq = 2 * energy + 2 * k**2 * sp.cos(theta) - h2 / sp.sin(theta) ** 2
+    return theta_dot_sq.subs(fixed), sp.sqrt(fixed[h2])
+
+
+@cache
+def _apsidal_constants(k: Any) -> tuple[Any, Any]:
+    """E and h² of :func:`_first_integrals`, solved from θ' = 0 at θ0 and at θ1."""
+    import sympy as sp
+
     theta0, theta1 = _ledger_symbols("theta0", "theta1")
     energy, h2 = sp.symbols("E h2")
 
@@ -849,7 +860,7 @@ def _first_integrals(theta: Any, k: Any) -> tuple[Any, Any]:
         return 2 * energy + 2 * k**2 * sp.cos(angle) - h2 / sp.sin(angle) ** 2
 
     fixed = sp.solve([theta_dot_sq(theta0), theta_dot_sq(theta1)], [energy, h2], dict=True)[0]
-    return theta_dot_sq(theta).subs(fixed), sp.sqrt(fixed[h2])
+    return fixed[energy], fixed[h2]
 
 
 # θ0 the largest angle, θ1 the smallest, θ between; in (3)'s variables, ψ in the first
