@@ -22,7 +22,8 @@ TABLES = ROOT / "tables"
 # Papers whose every row with a formula carries its printed form, and the rows that assert
 # prose only (no formula to transcribe).
 TRANSCRIBED = {
-    "tisserand": {"tisserand.result.inverse-square-coefficient"},
+    # the aside of line 202 is a claim of tables/published/tisserand.toml (a bound in mm)
+    "tisserand": {"tisserand.result.displacement"},
     # the general solution is a sentence; I_n(π)'s products 2·4…n are not transcribed yet
     "charbonnier": {"charbonnier.result.general-solution", "charbonnier.result.in-pi"},
 }
@@ -33,6 +34,8 @@ INCONSISTENT = {
     "tisserand.eq.I",
     # line 146: (ρ1²ρ0² − ρ²)/(ρ0²ρ² − ρ1²) adds L^4 to L^2 (two stacked fractions flattened).
     "tisserand.result.tan-sq-phi1-rho",
+    # line 180: « k'' diffère peu de l'unité », a rate (T^-1) said to be near 1: a fails row.
+    "tisserand.result.resal-rate",
     # line 435: E_c = B_n/(n+1) k^(n+1) αⁿ l0ⁿ sin^(n+1) kt is [F]·T^-1 where the integral
     # E_c = ∫ F cos kt dt is [F]·T (k² too many, whatever the dimension of F): a fails row.
     "charbonnier.result.ec-monomial",

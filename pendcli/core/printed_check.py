@@ -7,8 +7,9 @@ preceding equation, the definition a formula rests on, the exact solution; never
 copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes when
 ``lhs − rhs`` (with « … » set to 0), after the substitution, vanishes at exact random
 rational points (to 20 digits), or simplifies to 0 where a point gives no number; with a
-``scale`` and an ``order``, when its series in the scale vanishes below that order.
-The status follows:
+``scale`` and an ``order``, when its series in the scale vanishes below that order (an
+equation whose left side is a symbol named in ``orders`` uses that order: a summary formula
+may carry one quantity further than another). The status follows:
 
 * ``holds``: the printed form passes;
 * ``misprint``: the printed form fails and its ``reading_formula`` passes;
@@ -35,13 +36,19 @@ _DIGITS = 20
 class Reference:
     """Symbol name -> exact sympy expression; ``scale``/``order``: compare a truncated series
     (the residual's series in ``scale`` must vanish through ``scale**(order - 1)``);
-    ``domain``: symbol name -> (low, high) for the random points (default (1/10, 1/2))."""
+    ``domain``: symbol name -> (low, high) for the random points (default (1/10, 1/2));
+    ``orders``: left-side symbol name -> the order its equation is compared through;
+    ``reading``: the reference the reading is judged against, when the slip is the text's
+    cross-reference itself (the printed form is judged against the equation the text cites,
+    the reading against the one it should cite)."""
 
     exact: Mapping[str, Any]
     scale: Any = None
     order: int | None = None
     domain: Mapping[str, tuple[Any, Any]] = field(default_factory=dict)
     what: str = ""
+    orders: Mapping[str, int] = field(default_factory=dict)
+    reading: Reference | None = None
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
@@ -49,21 +56,22 @@ def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
     for lhs, rhs in formula.equations:
         if lhs is None:
             continue
-        ok, why = _equation_passes(lhs - rhs, reference)
+        order = reference.orders.get(getattr(lhs, "name", ""), reference.order)
+        ok, why = _equation_passes(lhs - rhs, reference, order)
         if not ok:
             return False, f"{lhs} = {rhs}: {why}"
     return True, "every equation holds" + (f" against {reference.what}" if reference.what else "")
 
 
-def _equation_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
+def _equation_passes(residual: Any, reference: Reference, order: int | None) -> tuple[bool, str]:
     import sympy as sp
 
     names = {s.name: s for s in residual.free_symbols}
     exact = {names[n]: v for n, v in reference.exact.items() if n in names}
     expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
     expr = expr.subs(exact, simultaneous=True)
-    if reference.scale is not None and reference.order is not None:
-        expr = sp.series(expr, reference.scale, 0, reference.order).removeO()
+    if reference.scale is not None and order is not None:
+        expr = sp.series(expr, reference.scale, 0, order).removeO()
     # The random points first: cheap, and decisive when the residual is not 0; simplify only
     # where a point gives no number. An integral is never simplified (sympy's antiderivatives
     # can take minutes).
@@ -119,7 +127,8 @@ def computed_status(
         return "holds", f"the printed form holds: {why}"
     for status, other in (("misprint", reading), ("fails", corrected)):
         if other is not None:
-            other_ok, other_why = formula_passes(other, reference)
+            against = reference.reading if status == "misprint" and reference.reading else reference
+            other_ok, other_why = formula_passes(other, against)
             if other_ok:
                 return status, f"the printed form fails ({why}); the {status} form holds"
             return None, f"the printed form fails ({why}) and so does its {status} ({other_why})"

@@ -350,13 +350,10 @@ def result_integral_u4() -> EquationCheck:
 
 
 def eq_8() -> EquationCheck:
-    """(8): kt and φ as series in ψ (quadrature checks of formulas.py)."""
+    """(8): kt and φ as series in ψ (quadrature checks of formulas.py); also the check of
+    (11), φ' = φ − φ1, and of (12), whose bracket is (8)'s ψ-coefficient (one computation,
+    cited by the three rows)."""
     return _reuse("k_prime", "eq8_kt_sin2psi", "eq8_kt_sin4psi", "eq8_phi_psi", "eq8_phi_sin2psi")
-
-
-def eq_11() -> EquationCheck:
-    """(11): φ' = φ − φ1, the non-arctan part of (8)."""
-    return _reuse("eq8_phi_psi", "eq8_phi_sin2psi")
 
 
 def result_psi_before_13() -> EquationCheck:
@@ -364,13 +361,9 @@ def result_psi_before_13() -> EquationCheck:
     return _reuse("psi_in_psi_sin4psi")
 
 
-def eq_13() -> EquationCheck:
-    """(13), read with sin 4k't for the printed sin² 4k't (as (II) prints it)."""
-    return _reuse("II_sin2", "II_sin4")
-
-
 def eq_II() -> EquationCheck:
-    """(II): ψ as a series in k't."""
+    """(II): ψ as a series in k't; also the check of (13)'s reading (the one computation
+    both rows cite)."""
     return _reuse("II_sin2", "II_sin4")
 
 
@@ -379,18 +372,9 @@ def result_second_approximation() -> EquationCheck:
     return _reuse("II_sin2")
 
 
-def eq_14() -> EquationCheck:
-    """(14): k'' = k'(1 + 9(u0²+u1²)/32): the leading terms of (I)'s k''."""
-    return _reuse("k_second")
-
-
 def eq_15() -> EquationCheck:
-    """(15): φ' = (3/8)u0u1k''t + u0u1(u0²−u1²)(17/512) sin 2k't."""
-    return _reuse("k_second", "V_sin2")
-
-
-def eq_V() -> EquationCheck:
-    """(V): the same as (15)."""
+    """(15): φ' = (3/8)u0u1k''t + u0u1(u0²−u1²)(17/512) sin 2k't; also the check of (14),
+    whose k'' is the rate of φ''s secular term (the one computation both rows cite)."""
     return _reuse("k_second", "V_sin2")
 
 
@@ -400,7 +384,17 @@ def eq_I() -> EquationCheck:
 
 
 def eq_10() -> EquationCheck:
-    """(10) with (3) and (16): the projection is (ρ0 cos ψ, ρ1 sin ψ), ψ the eccentric anomaly."""
+    """(10), « d'où »: the tangent of (9)'s φ1 = arctan((u1/u0) tan ψ)."""
+    import sympy as sp
+
+    *_, a, b, psi = symbols()
+    phi1 = sp.atan(sp.sqrt(b) / sp.sqrt(a) * sp.tan(psi))  # (9), u0 = √a, u1 = √b
+    return identity_check(sp.tan(phi1) - sp.sqrt(b) / sp.sqrt(a) * sp.tan(psi), "tan φ1 of (9)")
+
+
+def result_eccentric_anomaly() -> EquationCheck:
+    """Line 156, « L'angle ψ est l'anomalie excentrique, ainsi que le montre l'équation (10) »:
+    with (3) and (16) the projection is (ρ0 cos ψ, ρ1 sin ψ) in the moving frame."""
     import sympy as sp
 
     *_, psi = symbols()
@@ -412,12 +406,6 @@ def eq_10() -> EquationCheck:
         rho_sq * cos_sq - (r0 * sp.cos(psi)) ** 2,
         "ρ² cos² φ1 − (ρ0 cos ψ)²",
     )
-
-
-def eq_III() -> EquationCheck:
-    """(III) repeats (10)."""
-    found = eq_10()
-    return EquationCheck(found.holds, "cross-reference", f"(III) is (10): {found.detail}")
 
 
 def _tan_sq_phi1() -> Any:
@@ -490,18 +478,57 @@ NUMERICAL_APPLICATION = (
 )
 
 
-def result_numerical_application() -> EquationCheck:
-    """ψ and φ' for θ0 = 30', θ1 = 15': the three coefficients, as the claims of
-    tables/published/tisserand.toml judge them against their recomputation."""
+def _claims_agree(ids: tuple[str, ...]) -> EquationCheck:
+    """The claims of tables/published/tisserand.toml named by ``ids``, as pendcli judges them
+    against their recomputation (the printed precision of each)."""
     from pendcli.papers.registry import evaluate
 
     rows = {r.id: r for r in evaluate("tisserand")}
-    chosen = [rows[i] for i in NUMERICAL_APPLICATION]
+    chosen = [rows[i] for i in ids]
     parts = [f"{r.id} printed {r.published}: {r.verdict}" for r in chosen]
     return EquationCheck(
         holds=all(r.verdict == "agrees" for r in chosen),
         method="numeric",
         detail="claims " + "; ".join(parts),
+    )
+
+
+def result_numerical_application() -> EquationCheck:
+    """ψ and φ' for θ0 = 30', θ1 = 15': the three coefficients, as the claims of
+    tables/published/tisserand.toml judge them against their recomputation."""
+    return _claims_agree(NUMERICAL_APPLICATION)
+
+
+def result_displacement() -> EquationCheck:
+    """Line 202: with l = 0,5 m the periodic term 2'42'' sin 2k't of φ' moves the bob by at
+    most a fifth of a millimetre (the claim tisserand.example.displacement, an upper bound)."""
+    return _claims_agree(("tisserand.example.displacement",))
+
+
+def result_resal_rate() -> EquationCheck:
+    """Line 180, « k'' diffère peu de l'unité; donc le grand axe tourne avec la vitesse
+    angulaire (3/8)u0u1 »: k'' is a rate, k'' = (8/3)b0·k' (b0 the mean of
+    (dφ/dψ − u0u1/u²)/(u0u1), k' = k/a0, a0 the mean of k dt/dψ), so it is a number near 1
+    only in the unit of time 1/k; it is k''/k' that differs little from unity. Quadrature of
+    (4), (5) (formulas.py) at the paper's example, θ0 = 30°, θ1 = 15°."""
+    import math
+
+    from pendcli.core.tables import load_paper_table
+    from pendcli.papers.tisserand.formulas import series_coefficients
+
+    table = load_paper_table("tisserand")
+    theta0, theta1 = (math.radians(table.constant(n)) for n in ("theta0", "theta1"))
+    found = series_coefficients(theta0, theta1)
+    ratio = 8 / 3 * float(found["b"][0])  # k''/k'
+    u0, u1 = math.sin(theta0), math.sin(theta1)
+    leading = 1 + 9 * (u0**2 + u1**2) / 32
+    return EquationCheck(
+        holds=False,
+        method="numeric",
+        detail=f"at θ0 = 30°, θ1 = 15°: k'' = {ratio:.4f} k' = {ratio / found['a'][0]:.4f} k,"
+        " a rate (T⁻¹), not a number: « diffère peu de l'unité » holds for k''/k' only",
+        corrected=f"k''/k' = {ratio:.4f} (1 + 9(u0²+u1²)/32 = {leading:.4f}); the axis turns at "
+        "(3/8)u0u1k'' ≈ (3/8)u0u1k', i.e. (3/8)u0u1 per unit of k't",
     )
 
 
@@ -588,3 +615,366 @@ def reference_differential_4() -> Any:
     root = sp.sqrt(1 - exact["u"] ** 2)
     exact["dt"] = dpsi / (k * sp.sqrt(2) * root) * sp.sqrt(product) / sp.sqrt(total)
     return Reference(exact, scale=scale, order=6, what="(4), to order 4")
+
+
+# --- the motion as exact series in the angles, for the series rows (8) to (15), (I), (II) ---
+# The scale s multiplies u, u0, u1 (the angles' order); W stands for u² / s². k dt/dψ and
+# u²·dφ/dψ/(u0u1) come from (4) and (5) by truncated binomial series (cos θ = √(1 − s²W)),
+# then u² = u0² cos²ψ + u1² sin²ψ (3) and an exact term-by-term integration in ψ give kt(ψ)
+# and φ(ψ); k' and k'' are the rates their secular terms define ((12), and the k'' that makes
+# the secular term of φ' equal (3/8)u0u1k''t). Nothing here is a printed coefficient.
+
+
+@cache
+def series_symbols() -> Any:
+    """s (the scale), W (u²/s²), C (cos 2ψ), ψ, u0, u1, g, l: the ledger's real symbols."""
+    import sympy as sp
+
+    s = sp.Symbol("s", positive=True)
+    return (
+        s,
+        sp.Symbol("W", real=True),
+        sp.Symbol("C", real=True),
+        *_ledger_symbols("psi", "u0", "u1", "g", "l"),
+    )
+
+
+@cache
+def _ring() -> Any:
+    """Sparse polynomials over ℚ in s, W, u0, u1 (sympy's ``ring``: fast products)."""
+    import sympy as sp
+
+    return sp.ring("s W u0 u1", sp.QQ)
+
+
+def _truncated(poly: Any, n: int) -> Any:
+    """``poly`` (of the ring) with the powers s**n and above dropped."""
+    ring = _ring()[0]
+    return ring({m: c for m, c in poly.terms() if m[0] < n})
+
+
+def _binomial(p: Any, alpha: Any, n: int) -> Any:
+    """(1 + p)**alpha through s**(n − 1), p of the ring without constant term."""
+    import sympy as sp
+
+    ring = _ring()[0]
+    total, term, j = ring.one, ring.one, 1
+    while True:
+        term = _truncated(term * p, n)
+        if not term:
+            return total
+        total += term * sp.QQ.from_sympy(sp.binomial(alpha, j))
+        j += 1
+
+
+@cache
+def _differentials(n: int) -> tuple[Any, Any]:
+    """k dt/dψ from (4) and u²·(1/(u0u1)) dφ/dψ from (5), through s**(n − 1), in s, W, u0, u1."""
+    import sympy as sp
+
+    _, s, big_w, u0, u1 = _ring()
+    half = sp.Rational(1, 2)
+    c, c0, c1 = (_binomial(-(s**2) * v, half, n) for v in (big_w, u0**2, u1**2))
+    quarter = _truncated((1 + c * c0 + c * c1 + c0 * c1) * sp.QQ(1, 4) - 1, n)
+    eighth = _truncated((c + c0) * (c + c1) * (c0 + c1) * sp.QQ(1, 8) - 1, n)
+    pair = _truncated((c + c0) * (c + c1) * sp.QQ(1, 4) - 1, n)
+    inverse_c = _binomial(c - 1, -1, n)
+    square = _truncated((1 + eighth) * _binomial(quarter, -1, n), n)  # (4) squared over 2
+    k_dt_dpsi = _truncated(_binomial(square - 1, half, n) * inverse_c, n)
+    u2_dphi = _truncated(_binomial(pair, half, n) * _binomial(quarter, -half, n) * inverse_c, n)
+    return k_dt_dpsi, u2_dphi
+
+
+def _integral_in_psi(expr: Any) -> Any:
+    """∫₀^ψ expr dψ for expr a polynomial in C = cos 2ψ: each Cᵐ by its Fourier sum."""
+    import sympy as sp
+
+    _, _, big_c, psi, *_ = series_symbols()
+    total = sp.Integer(0)
+    for (m,), coefficient in sp.Poly(sp.expand(expr), big_c).terms():
+        for j in range(m + 1):  # Cᵐ = 2⁻ᵐ Σ_j binom(m, j) cos(2(m − 2j)ψ)
+            freq = 2 * abs(m - 2 * j)
+            part = psi if freq == 0 else sp.sin(freq * psi) / freq
+            total += coefficient * sp.binomial(m, j) * part / 2**m
+    return sp.expand(total)
+
+
+@cache
+def motion_series(n: int) -> dict[str, Any]:
+    """kt(ψ), φ'(ψ) = φ − φ1 and their secular coefficients A (kt = Aψ + …) and P, from (4),
+    (5) and (3), through s**(n − 1)."""
+    import sympy as sp
+
+    s, big_w, big_c, psi, u0, u1, *_ = series_symbols()
+    names = (s, big_w, u0, u1)
+    k_dt_dpsi = _differentials(n)[0].as_expr(*names)
+    # u²·dφ/dψ/(u0u1) − 1 is divisible by u² = s²W: the 1/u² coefficient is exactly 1 (line 78)
+    quotient, remainder = divmod(_differentials(n + 2)[1] - 1, _ring()[1] ** 2 * _ring()[2])
+    if remainder:
+        raise ValueError("u²·dφ/dψ/(u0u1) − 1 is not divisible by u²")
+    u2 = (u0**2 + u1**2) / 2 + (u0**2 - u1**2) / 2 * big_c  # (3) over s²
+    kt = _integral_in_psi(k_dt_dpsi.subs(big_w, u2))
+    rest = quotient.as_expr(*names).subs(big_w, u2)
+    phip = sp.expand(s**2 * u0 * u1 * _integral_in_psi(rest))
+    return {"kt": kt, "phip": phip, "A": kt.coeff(psi, 1), "P": phip.coeff(psi, 1)}
+
+
+def reference_motion(n: int, what: str, orders: dict[str, int] | None = None) -> Any:
+    """The exact motion (4), (5), (3) through s**(n − 1): t, φ, φ1, φ', k' (12), k'' (the rate
+    of φ' over (3/8)u0u1), k = √(g/l), θ0, θ1 and u0, u1 scaled by s."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    s, _, _, psi, u0, u1, g, length = series_symbols()
+    series = motion_series(n)
+    k = sp.sqrt(g / length)
+    phi1 = sp.atan(u1 / u0 * sp.tan(psi))
+    kp = k / series["A"]
+    exact = {
+        "k": k,
+        "t": series["kt"] / k,
+        "phi1": phi1,
+        "phip": series["phip"],
+        "phi": phi1 + series["phip"],
+        "kp": kp,
+        "kpp": kp * series["P"] / (sp.Rational(3, 8) * s**2 * u0 * u1),
+        "theta0": sp.asin(s * u0),
+        "theta1": sp.asin(s * u1),
+        "u0": s * u0,
+        "u1": s * u1,
+    }
+    return Reference(exact, scale=s, order=n, what=what, orders=orders or {})
+
+
+def _below(expr: Any, n: int) -> Any:
+    """``expr`` expanded, the terms of degree n and above in the scale s dropped."""
+    import sympy as sp
+
+    s = series_symbols()[0]
+    keep = [t for t in sp.Add.make_args(sp.expand(expr)) if sp.degree(t, s) < n]
+    return sp.Add(*keep)
+
+
+def _shifted(periodic: Any, delta: Any, n: int) -> Any:
+    """``periodic``(ψ) = Σ c_m sin(2mψ) at ψ = τ + δ (δ = O(s²)): its Taylor series in δ,
+    through s**(n − 1)."""
+    import sympy as sp
+
+    psi, tau = series_symbols()[3], sp.Symbol("tau", real=True)
+    total, power = sp.Integer(0), sp.Integer(1)
+    for j in range((n + 1) // 2):
+        derivative = sp.diff(periodic, psi, j).subs(psi, tau) if j else periodic.subs(psi, tau)
+        total += _below(derivative * power / sp.factorial(j), n)
+        power = _below(power * delta, n)
+    return _below(total, n)
+
+
+@cache
+def motion_in_kpt(n: int) -> dict[str, Any]:
+    """ψ and φ' as series in τ = k't, through s**(n − 1): kt(ψ)/A = ψ + Q(ψ) (12) inverted by
+    the fixed point ψ = τ − Q(ψ), each pass exact one order (s²) further."""
+    import sympy as sp
+
+    s, _, _, psi, *_ = series_symbols()
+    tau = sp.Symbol("tau", real=True)
+    series = motion_series(n)
+    inverse_a = _below(sp.series(1 / series["A"], s, 0, n).removeO(), n)
+    periodic = _below((series["kt"] - series["A"] * psi) * inverse_a, n)
+    delta = sp.Integer(0)
+    for _ in range((n + 1) // 2):
+        delta = -_shifted(periodic, delta, n)
+    phip_periodic = series["phip"] - series["P"] * psi
+    phip = _below(series["P"] * (tau + delta) + _shifted(phip_periodic, delta, n), n)
+    return {"psi": tau + delta, "phip": phip, "tau": tau}
+
+
+def reference_in_kpt(n: int, what: str, orders: dict[str, int] | None = None) -> Any:
+    """The exact motion as functions of τ = k't (t = τ/k'), through s**(n − 1)."""
+    from pendcli.core.printed_check import Reference
+
+    base = reference_motion(n, what, orders)
+    in_tau = motion_in_kpt(n)
+    exact = dict(base.exact)
+    exact.update(psi=in_tau["psi"], phip=in_tau["phip"], t=in_tau["tau"] / base.exact["kp"])
+    del exact["phi"], exact["phi1"]  # functions of ψ: not needed in τ
+    return Reference(exact, scale=base.scale, order=n, what=what, orders=orders or {})
+
+
+def reference_motion_order_4() -> Any:
+    """The exact motion through the fourth order in the angles: (8), (11), the line before
+    (13), (13), (II), (15) are compared with it."""
+    return reference_motion(5, "(4), (5), (3) to order 4")
+
+
+def reference_motion_order_2() -> Any:
+    """The exact motion through the second order: (14), printed to the second order."""
+    return reference_motion(3, "(4), (5), (3) to order 2")
+
+
+def reference_summary() -> Any:
+    """(I): k' through the sixth order, k'' through the fourth, as line 158 announces."""
+    return reference_motion(7, "(4), (5), (3): k' to order 6, k'' to order 4", {"kpp": 5})
+
+
+def reference_in_kpt_order_4() -> Any:
+    """The exact motion in τ = k't through the fourth order: (13), (II), (15)."""
+    return reference_in_kpt(5, "(4), (5), (3) in k't, to order 4")
+
+
+def reference_first_approximation() -> Any:
+    """« dans une première approximation »: ψ through the first order (its sin 2k't term is
+    of the second), φ' through the third (its periodic term is of the fourth)."""
+    return reference_in_kpt(5, "(4), (5), (3): ψ to order 1, φ' to order 3", {"psi": 2, "phip": 4})
+
+
+def reference_second_approximation() -> Any:
+    """« Deuxième approximation »: ψ and φ' through the third order."""
+    return reference_in_kpt(4, "(4), (5), (3) in k't, to order 3")
+
+
+# --- references for the differentials (1), (2), (4), (5), (7) and the line after (7) -------
+
+
+def _first_integrals(theta: Any, k: Any) -> tuple[Any, Any]:
+    """θ'² and h (the areal constant sin²θ φ') of the spherical pendulum with apsides θ0, θ1:
+    energy θ'² + sin²θ φ'² = 2E + 2k² cos θ and sin²θ φ' = h, E and h² fixed by θ' = 0 at θ0
+    and at θ1 (solved here, not typed)."""
+    import sympy as sp
+
+    energy, h2 = sp.symbols("E h2")
+    fixed = dict(zip((energy, h2), _apsidal_constants(k), strict=True))
+    theta_dot_sq = 2 * energy + 2 * k**2 * sp.cos(theta) - h2 / sp.sin(theta) ** 2
+    return theta_dot_sq.subs(fixed), sp.sqrt(fixed[h2])
+
+
+@cache
+def _apsidal_constants(k: Any) -> tuple[Any, Any]:
+    """E and h² of :func:`_first_integrals`, solved from θ' = 0 at θ0 and at θ1."""
+    import sympy as sp
+
+    theta0, theta1 = _ledger_symbols("theta0", "theta1")
+    energy, h2 = sp.symbols("E h2")
+
+    def theta_dot_sq(angle: Any) -> Any:
+        return 2 * energy + 2 * k**2 * sp.cos(angle) - h2 / sp.sin(angle) ** 2
+
+    fixed = sp.solve([theta_dot_sq(theta0), theta_dot_sq(theta1)], [energy, h2], dict=True)[0]
+    return fixed[energy], fixed[h2]
+
+
+# θ0 the largest angle, θ1 the smallest, θ between; in (3)'s variables, ψ in the first
+# quarter, where θ falls from θ0 (the sign convention of the printed roots).
+def _domain_apsides() -> dict[str, Any]:
+    import sympy as sp
+
+    r = sp.Rational
+    return {
+        "theta0": (r(1, 2), r(4, 5)),
+        "theta1": (r(1, 10), r(3, 10)),
+        "theta": (r(7, 20), r(9, 20)),
+        "u0": (r(1, 2), r(7, 10)),
+        "u1": (r(1, 10), r(3, 10)),
+        "psi": (r(1, 10), r(7, 5)),
+    }
+
+
+def _motion_in_theta(theta: Any, dtheta: Any) -> dict[str, Any]:
+    """dt and dφ along the motion, from the first integrals (θ decreasing from θ0 at t = 0)."""
+    import sympy as sp
+
+    (k,) = _ledger_symbols("k")
+    theta_dot_sq, h = _first_integrals(theta, k)
+    dt = -dtheta / sp.sqrt(theta_dot_sq)
+    return {"dt": dt, "dphi": h / sp.sin(theta) ** 2 * dt}
+
+
+def reference_first_integrals() -> Any:
+    """(1), (2): dt and dφ from the energy and areal integrals, apsides θ0 and θ1."""
+    from pendcli.core.printed_check import Reference
+
+    theta, dtheta = _ledger_symbols("theta", "dtheta")
+    exact = _motion_in_theta(theta, dtheta)
+    return Reference(exact, domain=_domain_apsides(), what="the first integrals")
+
+
+def reference_first_integrals_in_psi() -> Any:
+    """dθ, dt, dφ of the first integrals with θ, θ0, θ1 from (3): u = sin θ as a function of
+    ψ, dθ its exact derivative times dψ (for the line after (3), (4), (5))."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    u0, u1, psi, dpsi = _ledger_symbols("u0", "u1", "psi", "dpsi")
+    u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
+    theta = sp.asin(u)
+    dtheta = sp.diff(theta, psi) * dpsi
+    theta0, theta1 = _ledger_symbols("theta0", "theta1")
+    apsides = {theta0: sp.asin(u0), theta1: sp.asin(u1)}
+    exact = {n: e.subs(apsides) for n, e in _motion_in_theta(theta, dtheta).items()}
+    exact.update(theta=theta, theta0=sp.asin(u0), theta1=sp.asin(u1), u=u, dtheta=dtheta)
+    return Reference(exact, domain=_domain_apsides(), what="the first integrals with (3)")
+
+
+def _dphi_from_5(n: int, scale_u0_u1: bool) -> dict[str, Any]:
+    """u, u0, u1 scaled by s (u0, u1 only when ``scale_u0_u1``) and dφ from (5)."""
+    import sympy as sp
+
+    s = series_symbols()[0]
+    u, u0, u1, dpsi = _ledger_symbols("u", "u0", "u1", "dpsi")
+    v0, v1 = (s * u0, s * u1) if scale_u0_u1 else (u0, u1)
+    c, c0, c1 = sp.sqrt(1 - s**2 * u**2), sp.sqrt(1 - v0**2), sp.sqrt(1 - v1**2)
+    root = sp.sqrt((c + c0) * (c + c1)) / sp.sqrt(1 + c * c0 + c * c1 + c0 * c1)
+    dphi = v0 * v1 * dpsi / (s**2 * u**2 * c) * root  # (5), with √(1 − u²) = cos θ
+    return {"u": s * u, "u0": v0, "u1": v1, "dphi": dphi}
+
+
+def reference_formula_5() -> Any:
+    """(5) through the second order in the angles (its Laurent series in u, u0, u1): (7)."""
+    from pendcli.core.printed_check import Reference
+
+    return Reference(_dphi_from_5(3, True), scale=series_symbols()[0], order=3, what="(5)")
+
+
+def reference_formula_5_near_u_zero() -> Any:
+    """(5) with u0, u1 exact and u → 0 only: the 1/u² coefficient to every order in u0, u1
+    (« si loin qu'on pousse les approximations »)."""
+    from pendcli.core.printed_check import Reference
+
+    exact = _dphi_from_5(3, False)
+    return Reference(exact, scale=series_symbols()[0], order=0, what="(5) as u → 0")
+
+
+def reference_formula_5_as_cited() -> Any:
+    """« La formule (5) donnera »: what (5) gives (dφ, in the angles to order 4), which leaves
+    dt undetermined; the reading is judged against (4), the formula that has dt."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    scale = sp.Symbol("x", positive=True)
+    exact = _small_angles(scale)
+    exact["dphi"] = _dphi_from_5(3, True)["dphi"].subs(series_symbols()[0], scale)
+    return Reference(
+        exact, scale=scale, order=6, what="(5), to order 4", reading=reference_differential_4()
+    )
+
+
+def reference_definition_9() -> Any:
+    """(9): φ1 = arctan((u1/u0) tan ψ)."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    u0, u1, psi = _ledger_symbols("u0", "u1", "psi")
+    return Reference({"phi1": sp.atan(u1 / u0 * sp.tan(psi))}, what="(9)")
+
+
+def reference_resal() -> Any:
+    """Line 180: k'' and the mean angular velocity of the major axis, dφ'/dt = k'·P (P the
+    secular coefficient of φ' in ψ), k'' through the first order, the rate through the second."""
+    from pendcli.core.printed_check import Reference
+
+    base = reference_motion(3, "(4), (5), (3): k'' to order 1, dφ'/dt to order 2", {"kpp": 2})
+    exact = {**base.exact, "dphip_dt": base.exact["kp"] * motion_series(3)["P"]}
+    return Reference(exact, scale=base.scale, order=3, what=base.what, orders=base.orders)
