@@ -7,12 +7,15 @@ from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from enum import StrEnum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from pendcli.core.console import console
 from pendcli.render import OutputFormat, Section
+
+if TYPE_CHECKING:
+    from pendcli.core.cache import ResultCache
 
 
 class CheckFormat(StrEnum):
@@ -81,6 +84,27 @@ PlotOption = Annotated[
     Path | None,
     typer.Option("--plot", help="Also draw the comparison to this file (.png, .svg or .pdf)."),
 ]
+CacheOption = Annotated[
+    bool,
+    typer.Option(
+        "--cache/--no-cache",
+        help="Read and store results in the result cache ($PENDCLI_CACHE; off: compute "
+        "everything afresh). Its key covers the code, the tables and the library versions.",
+    ),
+]
+
+
+@contextmanager
+def result_cache(use: bool) -> Iterator[ResultCache]:
+    """The run's result cache; at the end, one status line if it could not be written."""
+    from pendcli.reproduce import result_cache as open_cache
+
+    cache = open_cache(use)
+    try:
+        yield cache
+    finally:
+        if cache.problem is not None:
+            say(cache.problem)
 
 
 def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, object]) -> None:
