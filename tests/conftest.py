@@ -11,3 +11,18 @@ from hypothesis import settings
 
 settings.register_profile("pendcli", deadline=None)
 settings.load_profile("pendcli")
+
+
+def _private_result_cache() -> None:
+    """The result cache (pendcli/core/cache.py) in one fresh folder per test session (per
+    xdist worker), never the user's ~/.cache/pendcli: no test is served a result stored
+    outside it."""
+    import atexit
+    import shutil
+    import tempfile
+
+    os.environ["PENDCLI_CACHE"] = tempfile.mkdtemp(prefix="pendcli-test-cache-")
+    atexit.register(shutil.rmtree, os.environ["PENDCLI_CACHE"], ignore_errors=True)
+
+
+_private_result_cache()
