@@ -276,3 +276,25 @@ def test_a_warm_report_is_the_cold_report(tmp_path, monkeypatch):
         if (tmp_path / "cold" / name).is_file():
             cold_bytes = (tmp_path / "cold" / name).read_bytes()
             assert (tmp_path / "warm" / name).read_bytes() == cold_bytes, name
+
+
+def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
+    import sys
+
+    from pendcli import bench
+
+    quick = [sys.executable, "-c", "pass"]
+    monkeypatch.setattr(
+        bench,
+        "_floor_commands",
+        lambda folder: dict.fromkeys((bench.FLOOR, bench.SCIPY, *bench.FLOOR_TARGETS), quick),
+    )
+    times = bench.floor_times(runs=1)
+    assert set(times) == {
+        (bench.FLOOR, ""),
+        (bench.SCIPY, ""),
+        *((label, mode) for label in bench.FLOOR_TARGETS for mode in ("cold", "warm")),
+    }
+    text = "\n".join(bench.floor_lines(times, 1))
+    for label in bench.FLOOR_TARGETS:
+        assert f"| `{label}` | cold |" in text and f"| `{label}` | warm |" in text
