@@ -49,6 +49,7 @@ def _refuse_to_compute(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr("pendcli.reproduce.formula_checks", computed)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("command", [EQUATIONS, REPRODUCE], ids=["equations", "reproduce"])
 def test_a_warm_run_prints_the_cold_bytes_in_every_format(tmp_path, monkeypatch, command):
     env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
@@ -226,6 +227,7 @@ def test_a_numpy_scalar_is_not_cached_as_a_float():
         rows_to_json([row])
 
 
+@pytest.mark.slow
 def test_check_never_reads_the_cache(tmp_path, monkeypatch):
     """`pendcli check` is the CI's drift detector: the key cannot see an environment that
     changes a BLAS kernel, so it always computes."""
@@ -278,6 +280,7 @@ def test_a_warm_report_is_the_cold_report(tmp_path, monkeypatch):
             assert (tmp_path / "warm" / name).read_bytes() == cold_bytes, name
 
 
+@pytest.mark.slow
 def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
     import sys
 

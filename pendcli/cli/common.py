@@ -95,16 +95,15 @@ CacheOption = Annotated[
 
 
 @contextmanager
-def result_cache(use: bool) -> Iterator[ResultCache]:
-    """The run's result cache; at the end, one status line if it could not be written."""
+def result_cache(use: bool, quiet: bool = False) -> Iterator[ResultCache]:
+    """The run's result cache; after the run, one status line if it could not be written
+    (none under ``quiet``, none after an error: that error is the one line)."""
     from pendcli.reproduce import result_cache as open_cache
 
     cache = open_cache(use)
-    try:
-        yield cache
-    finally:
-        if cache.problem is not None:
-            say(cache.problem)
+    yield cache
+    if cache.problem is not None and not quiet:
+        say(cache.problem)
 
 
 def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, object]) -> None:

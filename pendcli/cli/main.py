@@ -157,7 +157,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "pendcli equations --status misprint --notes",
     ),
     "cache info": ("pendcli cache info",),
-    "cache clear": ("pendcli cache clear", "PENDCLI_CACHE=off pendcli reproduce   no cache"),
+    "cache clear": ("pendcli cache clear", "pendcli reproduce --no-cache   all computed afresh"),
     "tradeoff": ("pendcli tradeoff --quick", "pendcli tradeoff integral_pi --plot wp.png"),
     "explain": (
         "pendcli explain -p lecornu     each wrong digit: its mechanism and odds",
@@ -516,7 +516,7 @@ def reproduce(
         from pendcli.report import check_out_folder
 
         check_out_folder(out)
-    with result_cache(cache) as stored:
+    with result_cache(cache, quiet) as stored:
         result = reproduce_all(
             resolve_papers(paper),
             formulas=formulas,
