@@ -13,16 +13,9 @@ settings.register_profile("pendcli", deadline=None)
 settings.load_profile("pendcli")
 
 
-def _private_result_cache() -> None:
-    """The result cache (pendcli/core/cache.py) in one fresh folder per test session (per
-    xdist worker), never the user's ~/.cache/pendcli: no test is served a result stored
-    outside it."""
-    import atexit
-    import shutil
-    import tempfile
-
-    os.environ["PENDCLI_CACHE"] = tempfile.mkdtemp(prefix="pendcli-test-cache-")
-    atexit.register(shutil.rmtree, os.environ["PENDCLI_CACHE"], ignore_errors=True)
-
-
-_private_result_cache()
+# The result cache (pendcli/core/cache.py) is off in every test and every process a test
+# starts: no test is served a result stored outside it (the user's ~/.cache/pendcli), nor one
+# an earlier test stored, which would make a test of determinism, of the forked workers or of
+# an interrupt compare a computation with a copy of itself. tests/test_cache.py gives each of
+# its tests a folder of its own.
+os.environ["PENDCLI_CACHE"] = "off"
