@@ -6,7 +6,12 @@
 * ``pendcli reproduce --format json`` against ``python -c "import scipy.special,
   scipy.integrate"`` (target: within 1.8x, issue 14),
 
-each as the median wall time of several interleaved runs of a fresh interpreter, and the
+each as the median wall time of several interleaved runs of a fresh interpreter (the
+result cache off); against the import floor B (``python -c "import sympy, scipy.special,
+scipy.integrate, matplotlib.pyplot, mpmath"``), cold (``PENDCLI_CACHE=off``) and warm (the
+result cache filled by the warm-up run), the CPU and wall time of ``pendcli equations
+--format json`` (target: CPU within 2x B), ``pendcli reproduce --out DIR`` (wall within 4x
+B) and ``pendcli reproduce --format json`` (wall within 1.8x the scipy import); and the
 modules that cost most at import (``python -X importtime``); pendcli against its peers in the
 same process (``scipy.special.jn_zeros``, ``mpmath.beta``, ``solve_ivp``, ``scipy.special.ellipk``:
 time per call, ratio, and the largest relative difference of the two answers); the growth of
@@ -64,19 +69,127 @@ def _commands() -> dict[str, list[str]]:
 
 
 def _wall(cmd: list[str]) -> float:
-    env = dict(os.environ, NO_COLOR="1", COLUMNS="100")
+    return _timed(cmd)[0]
+
+
+def _timed(cmd: list[str], env: dict[str, str] | None = None) -> tuple[float, float]:
+    """(wall, CPU) seconds of one run: CPU is user + system of the process and every child
+    it waited for (a forked worker's too), as the kernel accounts them. The result cache is
+    off unless ``env`` names one."""
+    variables = {**os.environ, "NO_COLOR": "1", "COLUMNS": "100", "PENDCLI_CACHE": "off"}
+    variables.update(env or {})
     start = time.perf_counter()
     # A session of its own: a Ctrl-C stops this run (which then kills the child), not the
     # child first, whose failure would read as a broken command.
-    subprocess.run(
+    proc = subprocess.Popen(
         cmd,
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
-        env=env,
-        check=True,
+        env=variables,
         start_new_session=True,
     )
-    return time.perf_counter() - start
+    try:
+        _, status, usage = os.wait4(proc.pid, 0)
+    except BaseException:
+        proc.kill()
+        raise
+    wall = time.perf_counter() - start
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    if proc.returncode != 0:
+        raise subprocess.CalledProcessError(proc.returncode, cmd)
+    return wall, usage.ru_utime + usage.ru_stime
+
+
+# The import floor B of the work (issue 23) and what is measured against it:
+# label -> (the reference label, the measure the target names, the target ratio)
+FLOOR = "B: import sympy, scipy.special, scipy.integrate, matplotlib.pyplot, mpmath"
+SCIPY = "import scipy.special, scipy.integrate"
+FLOOR_TARGETS: dict[str, tuple[str, str, float]] = {
+    "pendcli equations --format json": (FLOOR, "CPU", 2.0),
+    "pendcli reproduce --out DIR": (FLOOR, "wall", 4.0),
+    "pendcli reproduce --format json": (SCIPY, "wall", REPRODUCE_TARGET),
+}
+
+
+def _floor_commands(folder: Path) -> dict[str, list[str]]:
+    py = sys.executable
+    cli = _pendcli_command()
+    return {
+        FLOOR: [
+            py,
+            "-c",
+            "import sympy, scipy.special, scipy.integrate, matplotlib.pyplot, mpmath",
+        ],
+        SCIPY: [py, "-c", "import scipy.special, scipy.integrate"],
+        "pendcli equations --format json": [*cli, "equations", "--format", "json"],
+        "pendcli reproduce --out DIR": [
+            *cli,
+            "reproduce",
+            "--out",
+            str(folder / "out"),
+            "--quiet",
+            "--format",
+            "json",
+        ],
+        "pendcli reproduce --format json": [*cli, "reproduce", "--format", "json", "--quiet"],
+    }
+
+
+# (label, "cold" / "warm" / "" for a reference) -> (median wall, median CPU)
+FloorTimes = dict[tuple[str, str], tuple[float, float]]
+
+
+def floor_times(runs: int = 3) -> FloorTimes:
+    """Median wall and CPU of each floor command over ``runs`` interleaved runs, after one
+    warm-up (which fills the warm runs' result cache, a temporary folder)."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="pendcli-bench-") as tmp:
+        folder = Path(tmp)
+        warm = {"PENDCLI_CACHE": str(folder / "cache")}
+        cases = []
+        for label, cmd in _floor_commands(folder).items():
+            modes = ("cold", "warm") if label in FLOOR_TARGETS else ("",)
+            cases += [((label, mode), cmd, warm if mode == "warm" else None) for mode in modes]
+        samples: dict[tuple[str, str], list[tuple[float, float]]] = {c[0]: [] for c in cases}
+        for _, cmd, env in cases:
+            _timed(cmd, env)
+        for _ in range(runs):
+            for key, cmd, env in cases:
+                samples[key].append(_timed(cmd, env))
+    return {
+        key: (statistics.median(w for w, _ in v), statistics.median(c for _, c in v))
+        for key, v in samples.items()
+    }
+
+
+def floor_lines(times: FloorTimes, runs: int) -> list[str]:
+    """The floor table: each command cold and warm, its ratio in the measure its target names."""
+    lines = [
+        'Down to the import floor B, the imports the work needs (`python -c "import sympy, '
+        'scipy.special, scipy.integrate, matplotlib.pyplot, mpmath"`): median wall and CPU '
+        f"(user + system, workers included) of {runs} interleaved runs; cold: "
+        "`PENDCLI_CACHE=off`, everything computed; warm: the result cache filled by a first "
+        "run (its key: the code, the tables and the library versions).",
+        "",
+        "| command | cache | wall (s) | CPU (s) | ratio | target |",
+        "|---|---|---:|---:|---:|---|",
+    ]
+    for label in (FLOOR, SCIPY):
+        wall, cpu = times[label, ""]
+        lines.append(f"| `{label.removeprefix('B: ')}` | | {wall:.2f} | {cpu:.2f} | 1 | |")
+    for label, (reference, measure, target) in FLOOR_TARGETS.items():
+        ref = times[reference, ""][0 if measure == "wall" else 1]
+        name = "B" if reference == FLOOR else "the scipy import"
+        for mode in ("cold", "warm"):
+            wall, cpu = times[label, mode]
+            ratio = (wall if measure == "wall" else cpu) / ref
+            verdict = "met" if ratio <= target else "missed"
+            lines.append(
+                f"| `{label}` | {mode} | {wall:.2f} | {cpu:.2f} | {measure} {ratio:.2f}x {name} "
+                f"| <= {target}x ({verdict}) |"
+            )
+    return [*lines, ""]
 
 
 def startup_times(runs: int = 7) -> dict[str, float]:
@@ -422,9 +535,13 @@ def section(
     runs: int,
     peers: list[dict[str, str]] | None = None,
     growth: list[dict[str, str]] | None = None,
+    floor: FloorTimes | None = None,
+    floor_runs: int = 3,
 ) -> str:
     """The README section as Markdown (no timestamps: the same measurements give the same text)."""
     lines = _startup_lines(times, runs)
+    if floor:
+        lines += floor_lines(floor, floor_runs)
     lines += ["Largest imports (`python -X importtime`, self time summed per package):", ""]
     for label, items in costs.items():
         lines.append(f"- `pendcli {label}`: " + ", ".join(f"{n} {t:.3f} s" for n, t in items))
@@ -479,18 +596,23 @@ def run(
     root: Path | None = None,
     growth: bool | None = None,
     readme: Path | None = None,
+    floor: bool | None = None,
+    floor_runs: int = 3,
 ) -> str:
     """Every measurement, one after the other (never two at once), as the README section.
 
     The measured tables, their date and (``readme``, when it has the markers) the README are
     written together at the end (:func:`pendcli.core.files.write_set`): a run stopped before
     leaves all of them as they were. The cost-growth table (minutes) is left out of a
-    ``quick`` run unless ``growth`` asks.
+    ``quick`` run unless ``growth`` asks, and so is the floor table (minutes: every
+    equation checked ``floor_runs`` + 1 times) unless ``floor`` asks.
     """
     from pendcli.core.files import write_set
 
     growth = not quick if growth is None else growth
+    floor = not quick if floor is None else floor
     times = startup_times(runs)
+    floored = floor_times(floor_runs) if floor else None
     costs = {
         "--help": import_costs(["--help"]),
         "reproduce --format json": import_costs(["reproduce", "--format", "json", "--quiet"]),
@@ -498,7 +620,7 @@ def run(
     peers = peer_ratios(quick)
     sized = growth_rows(quick) if growth else []
     measured = measure_tables(quick) if tables else committed_tables(root)
-    text = section(times, costs, measured, runs, peers, sized)
+    text = section(times, costs, measured, runs, peers, sized, floored, floor_runs)
     files: dict[Path, str | bytes | None] = {**table_files(measured, root)} if tables else {}
     new_readme = with_section(readme, text) if readme is not None else None
     if new_readme is not None and readme is not None:
@@ -527,9 +649,23 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("--tables-root", type=Path, help="tables folder (default: the package's)")
     parser.add_argument("--no-growth", action="store_true", help="skip the cost-growth table")
+    parser.add_argument("--no-floor", action="store_true", help="skip the import-floor table")
+    parser.add_argument(
+        "--floor-runs", type=int, default=3, help="runs per import-floor command (median)"
+    )
     args = parser.parse_args(argv)
     growth = False if args.no_growth else None
-    text = run(args.runs, args.quick, not args.no_tables, args.tables_root, growth, args.write)
+    floor = False if args.no_floor else None
+    text = run(
+        args.runs,
+        args.quick,
+        not args.no_tables,
+        args.tables_root,
+        growth,
+        args.write,
+        floor,
+        args.floor_runs,
+    )
     if args.write is not None and with_section(args.write, text) is not None:
         print(f"bench: updated {args.write}", file=sys.stderr)
     else:

@@ -28,6 +28,7 @@ from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 from pendcli.reproduce import ReproduceResult
 
 if TYPE_CHECKING:
+    from pendcli.core.cache import ResultCache
     from pendcli.core.rows import EquationRow
     from pendcli.tradeoff import Point
 
@@ -231,9 +232,15 @@ def write_report(
     measure: bool = False,
     jobs: int | None = None,
     pdf: bool = False,
+    cache: ResultCache | None = None,
 ) -> list[Path]:
     """Write report.md, claims.json, the per-paper CSVs and every figure into ``out`` (and,
     with ``pdf``, each HTML page printed to PDF by headless Chromium).
+
+    With a ``cache`` (:func:`pendcli.reproduce.result_cache`), the report's files are read
+    from it when a report of the same result was stored (its key: every field of every row
+    of ``result``, and the code, tables and versions), else written and stored; never with
+    ``measure`` (timings of now) or ``pdf`` (Chromium's output is not pendcli's).
 
     The whole folder is built beside ``out`` and swapped in at the end, under ``out``'s lock
     (a concurrent run is refused): files of an earlier report that this one does not write
@@ -254,11 +261,66 @@ def write_report(
         paper_text(key)
     written: list[Path] = []
 
+    params = None if cache is None or measure or pdf else {"result": result_digest(result)}
+
     def fill(folder: Path) -> None:
-        written.extend(_fill(result, folder, quiet, measure, jobs, pdf))
+        stored = cache.get("report", params) if cache is not None and params else None
+        if stored is None or not _unpack(stored, folder, written):
+            written.extend(_fill(result, folder, quiet, measure, jobs, pdf))
+            if cache is not None and params:
+                cache.put("report", params, _pack(folder, written))
 
     replace_owned_folder(target, fill, "--out")
     return [target / p for p in (*written, Path(MANIFEST))]
+
+
+def result_digest(result: ReproduceResult) -> str:
+    """SHA-256 over every field of every row of ``result`` (and its papers, in order)."""
+    import hashlib
+    import json
+
+    from pendcli.core.cache import rows_to_json
+
+    rows = {
+        name: {key: rows_to_json(table[key]) for key in sorted(table)}
+        for name, table in (
+            ("claims", result.claims),
+            ("formulas", result.formulas),
+            ("equations", result.equations),
+        )
+    }
+    every = {"papers": list(result.papers), **rows, "stability": result.stability}
+    return hashlib.sha256(json.dumps(every, sort_keys=True).encode()).hexdigest()
+
+
+def _pack(folder: Path, names: list[Path]) -> dict[str, Any]:
+    """The report's files (relative name -> base64 of the bytes), to be stored."""
+    import base64
+
+    files = {n.as_posix(): base64.b64encode((folder / n).read_bytes()).decode() for n in names}
+    return {"files": files}
+
+
+def _unpack(entry: Any, folder: Path, written: list[Path]) -> bool:
+    """Write a stored report into ``folder`` (and its names into ``written``); False, with
+    nothing written, when the entry is not a stored report."""
+    import base64
+    import binascii
+
+    files = entry.get("files") if isinstance(entry, dict) else None
+    if not isinstance(files, dict) or not files:
+        return False
+    try:
+        decoded = {Path(n): base64.b64decode(d, validate=True) for n, d in files.items()}
+    except (TypeError, ValueError, binascii.Error):
+        return False
+    if any(n.is_absolute() or ".." in n.parts for n in decoded):
+        return False
+    for name, data in decoded.items():
+        (folder / name).parent.mkdir(parents=True, exist_ok=True)
+        (folder / name).write_bytes(data)
+    written.extend(decoded)
+    return True
 
 
 def _fill(

@@ -7,13 +7,14 @@ Python binds a submodule to its package's attribute of the same name).
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import sys
 import types
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pendcli.core.claims import ClaimRow, FormulaRow
 from pendcli.core.rows import EquationRow
@@ -27,7 +28,20 @@ from pendcli.papers.registry import evaluate, formula_checks
 from pendcli.render.columns import Column, Row, Section
 from pendcli.summary import disagrees
 
-__all__ = ["VERDICT_NAMES", "ReproduceResult", "parse_verdicts", "reproduce_all"]
+if TYPE_CHECKING:
+    from pathlib import Path
+
+    from pendcli.core.cache import ResultCache
+    from pendcli.core.paper import Paper
+
+__all__ = [
+    "VERDICT_NAMES",
+    "ReproduceResult",
+    "ledger_rows",
+    "parse_verdicts",
+    "reproduce_all",
+    "result_cache",
+]
 
 
 @dataclass
@@ -199,45 +213,190 @@ def reproduce_all(
     stability: bool = False,
     jobs: int | None = None,
     equations: bool = False,
+    cache: ResultCache | None = None,
 ) -> ReproduceResult:
     """Evaluate the claims (and, if asked, the formula checks, the equation ledger and the
     stability measurements).
 
     With two cores this process and a forked worker share the steps, each taking the next one
     when free (``jobs=1`` or ``PENDCLI_JOBS=1``: all here). A progress bar on stderr counts the
-    steps done, only on a terminal and when not ``quiet``.
+    steps done, only on a terminal and when not ``quiet``. With a ``cache``
+    (:func:`result_cache`), each paper's claims, formula checks and ledger (and the stability
+    table) are read from it when stored, else computed and stored; without one (the library's
+    default, and `pendcli check`'s) everything is computed.
     """
     from pendcli.core.workers import ForkedWorkers, job_count
 
-    steps = _steps(keys, formulas, equations, stability)
-    result = ReproduceResult(papers=keys)
+    wanted = _wanted(keys, formulas, equations, stability)
+    stored = _cached(cache, wanted, keys)
+    steps = _steps(keys, formulas, equations, stability, stored)
     workers = job_count(jobs, len(steps)) - 1
     if workers:
         _preload(steps, keys)
     order = _costliest_first(steps)
-    with ForkedWorkers(workers) as pool, _progress(quiet, len(steps)) as advance:
-        run = functools.partial(_run_step, papers=keys)
-        values = pool.share(order, run, lambda step, _: advance(f"{step[0]}: {step[1]}", 1))
+    with contextlib.ExitStack() as lent:
+        _lend_formula_rows(lent, stored, steps)
+        with ForkedWorkers(workers) as pool, _progress(quiet, len(steps)) as advance:
+            run = functools.partial(_run_step, papers=keys)
+            values = pool.share(order, run, lambda step, _: advance(f"{step[0]}: {step[1]}", 1))
     by_step = dict(zip(order, values, strict=True))
+    computed: dict[Wanted, Any] = {}
     ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]] = {}
-    for step in steps:  # stored in one order whoever computed what, so the output is too
-        _store(result, ledger_parts, *step, by_step[step])
+    for step in steps:  # gathered in one order whoever computed what, so the output is too
+        _gather(computed, ledger_parts, *step, by_step[step])
     for key, parts in ledger_parts.items():  # the ledger's parts, back in its order
-        result.equations[key] = [
+        computed[key, "equations"] = [
             row for _, rows in sorted(parts, key=lambda p: p[0]) for row in rows
         ]
+    if cache is not None:
+        for item, value in computed.items():
+            _store_in_cache(cache, item, value, keys)
+    return _result(keys, wanted, {**stored, **computed})
+
+
+# (paper key or "all", what): one cached unit, "claims", "formulas", "equations" (a whole
+# ledger) or "stability" (the table of every paper asked for)
+Wanted = tuple[str, str]
+
+
+def _wanted(
+    keys: tuple[str, ...], formulas: bool, equations: bool, stability: bool
+) -> list[Wanted]:
+    out = [(k, "claims") for k in keys]
+    out += [(k, "formulas") for k in keys if formulas]
+    out += [(k, "equations") for k in keys if equations]
+    return out + ([("all", "stability")] if stability else [])
+
+
+def result_cache(use: bool = True) -> ResultCache:
+    """This run's result cache (:mod:`pendcli.core.cache`): its folder from
+    ``$PENDCLI_CACHE`` (off: ``use`` False or ``PENDCLI_CACHE=off``), its key over pendcli's
+    code, every registered paper's own package, the tables folder in use and the versions."""
+    from pendcli.core.cache import ResultCache, cache_folder
+    from pendcli.core.tables import tables_dir
+    from pendcli.papers.registry import all_papers
+
+    return ResultCache(cache_folder() if use else None, tables_dir(), _paper_sources(all_papers()))
+
+
+def _paper_sources(papers: Iterable[Paper]) -> list[Path]:
+    """The package folder each paper's code lives in (its ``recompute``'s top-level package)."""
+    from pathlib import Path
+
+    folders = []
+    for found in papers:
+        top = str(getattr(found.recompute, "__module__", "") or "").split(".")[0]
+        module = sys.modules.get(top)
+        where = getattr(module, "__file__", None)
+        if where:
+            folders.append(Path(where).resolve().parent)
+    return folders
+
+
+# How each cached unit is written and read back (the stability table is plain JSON already).
+_ROW_CLASSES: dict[str, type] = {
+    "claims": ClaimRow,
+    "formulas": FormulaRow,
+    "equations": EquationRow,
+}
+
+
+def _params(item: Wanted, keys: tuple[str, ...]) -> dict[str, Any]:
+    key, what = item
+    return {"papers": list(keys)} if what == "stability" else {"paper": key}
+
+
+def _cached(
+    cache: ResultCache | None, wanted: list[Wanted], keys: tuple[str, ...]
+) -> dict[Wanted, Any]:
+    """What ``cache`` holds of ``wanted``; an entry that does not read back as rows is a miss."""
+    if cache is None or not cache.enabled:
+        return {}
+    found: dict[Wanted, Any] = {}
+    for item in wanted:
+        value = cache.get(item[1], _params(item, keys))
+        if value is None:
+            continue
+        try:
+            found[item] = _decoded(item[1], value)
+        except (TypeError, ValueError, KeyError, AttributeError):
+            continue  # written by other code under a colliding key, or damaged: recompute
+    return found
+
+
+def _decoded(what: str, value: Any) -> Any:
+    from pendcli.core.cache import rows_from_json
+
+    if what in _ROW_CLASSES:
+        return rows_from_json(_ROW_CLASSES[what], value)
+    if not isinstance(value, list) or not all(
+        isinstance(row, dict) and all(isinstance(v, str) for v in row.values()) for row in value
+    ):
+        raise TypeError("not a list of rows of text")
+    return value
+
+
+def _store_in_cache(cache: ResultCache, item: Wanted, value: Any, keys: tuple[str, ...]) -> None:
+    from pendcli.core.cache import rows_to_json
+
+    try:
+        encoded = rows_to_json(value) if item[1] in _ROW_CLASSES else value
+    except TypeError:
+        return  # a value JSON cannot carry exactly: computed each time
+    cache.put(item[1], _params(item, keys), encoded)
+
+
+def ledger_rows(keys: tuple[str, ...], cache: ResultCache | None = None) -> list[EquationRow]:
+    """The equation ledgers of the papers ``keys`` (`pendcli equations`), each read from
+    ``cache`` when stored, else computed (and stored)."""
+    from pendcli.papers.registry import equation_rows
+
+    wanted = [(k, "equations") for k in keys]
+    stored = _cached(cache, wanted, keys)
+    rows: list[EquationRow] = []
+    for item in wanted:
+        if item not in stored:
+            stored[item] = equation_rows([item[0]])
+            if cache is not None:
+                _store_in_cache(cache, item, stored[item], keys)
+        rows += stored[item]
+    return rows
+
+
+def _result(
+    keys: tuple[str, ...], wanted: list[Wanted], values: dict[Wanted, Any]
+) -> ReproduceResult:
+    result = ReproduceResult(papers=keys)
+    for key, what in wanted:
+        if what == "stability":
+            result.stability = values[key, what]
+        else:
+            getattr(result, what)[key] = values[key, what]
     return result
 
 
-def _steps(keys: tuple[str, ...], formulas: bool, equations: bool, stability: bool) -> list[Step]:
-    """The steps of a run. The ledger is cut in two halves that two processes can share; the
-    first goes with the formula checks, whose rows it re-reads, so they are computed once."""
-    steps = [(k, "claims") for k in keys]
-    if formulas:
-        steps += [(k, "formulas+equations 0/2" if equations else "formulas") for k in keys]
-    if equations:
-        steps += [(k, f"equations {i}/2") for k in keys for i in ((1,) if formulas else (0, 1))]
-    if stability:
+def _steps(
+    keys: tuple[str, ...],
+    formulas: bool,
+    equations: bool,
+    stability: bool,
+    stored: dict[Wanted, Any] | None = None,
+) -> list[Step]:
+    """The steps of a run, for what is not ``stored``. The ledger is cut in two halves that
+    two processes can share; the first goes with the formula checks, whose rows it re-reads,
+    so they are computed once (stored formula rows are lent to it instead)."""
+    have = stored or {}
+    steps = [(k, "claims") for k in keys if (k, "claims") not in have]
+    for k in keys:
+        need_formulas = formulas and (k, "formulas") not in have
+        need_ledger = equations and (k, "equations") not in have
+        if need_formulas:
+            steps.append((k, "formulas+equations 0/2" if need_ledger else "formulas"))
+    for k in keys:
+        if equations and (k, "equations") not in have:
+            together = formulas and (k, "formulas") not in have
+            steps += [(k, f"equations {i}/2") for i in ((1,) if together else (0, 1))]
+    if stability and ("all", "stability") not in have:
         steps.append(("all", "stability"))
     return steps
 
@@ -319,24 +478,36 @@ def _ledger_step(key: str, what: str) -> Any:
     return (rows, (index, part)) if rows is not None else (index, part)
 
 
-def _store(
-    result: ReproduceResult,
+def _gather(
+    computed: dict[Wanted, Any],
     ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]],
     key: str,
     what: str,
     value: Any,
 ) -> None:
     if what == "claims":
-        result.claims[key] = value
+        computed[key, "claims"] = value
     elif what == "formulas":
-        result.formulas[key] = value
+        computed[key, "formulas"] = value
     elif what.startswith("equations"):
         ledger_parts.setdefault(key, []).append(value)
     elif what.startswith("formulas+equations"):
-        result.formulas[key], part = value
+        computed[key, "formulas"], part = value
         ledger_parts.setdefault(key, []).append(part)
     else:
-        result.stability = value
+        computed[key, "stability"] = value
+
+
+def _lend_formula_rows(
+    stack: contextlib.ExitStack, stored: dict[Wanted, Any], steps: list[Step]
+) -> None:
+    """Lend stored formula rows to the ledger's checks that re-read them (before the fork,
+    so a worker inherits them too), rather than integrate them again."""
+    from pendcli.core.claims import sharing_formula_rows
+
+    for key in dict.fromkeys(k for k, what in steps if what.startswith("equations")):
+        if (key, "formulas") in stored:
+            stack.enter_context(sharing_formula_rows(key, stored[key, "formulas"]))
 
 
 def _verdict_names() -> tuple[str, ...]:

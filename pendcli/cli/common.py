@@ -7,12 +7,15 @@ from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from enum import StrEnum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from pendcli.core.console import console
 from pendcli.render import OutputFormat, Section
+
+if TYPE_CHECKING:
+    from pendcli.core.cache import ResultCache
 
 
 class CheckFormat(StrEnum):
@@ -81,6 +84,26 @@ PlotOption = Annotated[
     Path | None,
     typer.Option("--plot", help="Also draw the comparison to this file (.png, .svg or .pdf)."),
 ]
+CacheOption = Annotated[
+    bool,
+    typer.Option(
+        "--cache/--no-cache",
+        help="Read and store results in the result cache ($PENDCLI_CACHE; off: compute "
+        "everything afresh). Its key covers the code, the tables and the library versions.",
+    ),
+]
+
+
+@contextmanager
+def result_cache(use: bool, quiet: bool = False) -> Iterator[ResultCache]:
+    """The run's result cache; after the run, one status line if it could not be written
+    (none under ``quiet``, none after an error: that error is the one line)."""
+    from pendcli.reproduce import result_cache as open_cache
+
+    cache = open_cache(use)
+    yield cache
+    if cache.problem is not None and not quiet:
+        say(cache.problem)
 
 
 def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, object]) -> None:

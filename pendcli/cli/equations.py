@@ -2,12 +2,24 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PaperOption, bad_value, busy, complete_statuses, emit
+from pendcli.cli.common import (
+    CacheOption,
+    FormatOption,
+    PaperOption,
+    bad_value,
+    busy,
+    complete_statuses,
+    emit,
+    result_cache,
+)
 from pendcli.render import OutputFormat
+
+if TYPE_CHECKING:
+    from pendcli.core.cache import ResultCache
 
 StatusOption = Annotated[
     str | None,
@@ -30,22 +42,22 @@ def equations(
     status: StatusOption = None,
     notes: NotesOption = False,
     fmt: FormatOption = OutputFormat.table,
+    cache: CacheOption = True,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
     from pendcli.core.ledger import coverage
-    from pendcli.core.ledger_coverage import ledger_text_coverage
     from pendcli.core.vocabulary import STATUSES
-    from pendcli.papers.registry import equation_rows, resolve_papers
+    from pendcli.papers.registry import resolve_papers
     from pendcli.render import Column
-    from pendcli.reproduce import EQUATION_KEYS
+    from pendcli.reproduce import EQUATION_KEYS, ledger_rows
     from pendcli.summary import compact_equation_columns
 
     if status is not None and status not in STATUSES:
         raise bad_value("--status", status, f"one of {', '.join(STATUSES)}")
-    with busy("checking every equation (sympy, ODEs)"):
-        rows = equation_rows(resolve_papers(paper))
-    counts = coverage(rows)
-    texts = {p: ledger_text_coverage(p).as_dict() for p in counts}
+    with result_cache(cache) as stored, busy("checking every equation (sympy, ODEs)"):
+        rows = ledger_rows(resolve_papers(paper), stored)
+        counts = coverage(rows)
+        texts = {p: _text_coverage(stored, p) for p in counts}
     shown = [r.as_dict() for r in rows if status is None or r.status == status]
     compact = fmt is OutputFormat.table and not notes
     columns = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
@@ -66,3 +78,16 @@ def equations(
         [*(s for s in sections if s[1]), ("coverage", tally, count_columns)],
         {"equations": shown, "coverage": {p: {**c, **texts[p]} for p, c in counts.items()}},
     )
+
+
+def _text_coverage(cache: ResultCache, paper: str) -> dict[str, object]:
+    """The ``$$`` blocks of the paper's text its ledger covers (cached with the ledger: the
+    ledger's validation imports sympy)."""
+    from pendcli.core.cache import cached_json
+    from pendcli.core.ledger_coverage import ledger_text_coverage
+
+    def compute() -> dict[str, object]:
+        return ledger_text_coverage(paper).as_dict()
+
+    found: dict[str, object] = cached_json(cache, "text-coverage", {"paper": paper}, compute)
+    return found

@@ -19,7 +19,14 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 from typer.core import TyperGroup
 
-from pendcli.cli.common import CheckFormat, FormatOption, PaperOption, complete_verdicts, emit
+from pendcli.cli.common import (
+    CacheOption,
+    CheckFormat,
+    FormatOption,
+    PaperOption,
+    complete_verdicts,
+    emit,
+)
 from pendcli.core.errors import PendcliError
 from pendcli.render import OutputFormat
 
@@ -30,6 +37,7 @@ if TYPE_CHECKING:
     Context = Any
     Parameter = Any
 
+    from pendcli.core.cache import ResultCache
     from pendcli.reproduce import ReproduceResult
 
 # Subcommands whose modules load only when named: `pendcli --help` then costs neither their
@@ -48,6 +56,7 @@ LAZY_COMMANDS: dict[str, tuple[str, str, str]] = {
         "Every numbered equation and stated result, checked: holds, fails, misprint, ...",
     ),
     "explain": ("pendcli.cli.explain", "explain", "How he got each wrong digit, and the odds."),
+    "cache": ("pendcli.cli.cache", "app", "The result cache: where it is, how big, emptying it."),
     "tradeoff": (
         "pendcli.cli.tradeoff",
         "tradeoff",
@@ -147,6 +156,8 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "pendcli equations -p tisserand",
         "pendcli equations --status misprint --notes",
     ),
+    "cache info": ("pendcli cache info",),
+    "cache clear": ("pendcli cache clear", "pendcli reproduce --no-cache   all computed afresh"),
     "tradeoff": ("pendcli tradeoff --quick", "pendcli tradeoff integral_pi --plot wp.png"),
     "explain": (
         "pendcli explain -p lecornu     each wrong digit: its mechanism and odds",
@@ -486,8 +497,10 @@ def reproduce(
             autocompletion=complete_verdicts,
         ),
     ] = None,
+    cache: CacheOption = True,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 unless --fail-on)."""
+    from pendcli.cli.common import result_cache
     from pendcli.core.errors import PendcliError
     from pendcli.papers.registry import resolve_papers
     from pendcli.reproduce import EQUATION_ONLY, reproduce_all
@@ -503,21 +516,23 @@ def reproduce(
         from pendcli.report import check_out_folder
 
         check_out_folder(out)
-    result = reproduce_all(
-        resolve_papers(paper),
-        formulas=formulas,
-        stability=(out is not None) if stability is None else stability,
-        equations=(out is not None) if equations is None else equations,
-        quiet=quiet or fmt is not OutputFormat.table,
-    )
-    compact = fmt is OutputFormat.table and not notes
-    emit(fmt, result.sections(compact, only_failing), result.document(only_failing))
-    if compact:
-        from pendcli.summary import CAUSE_LEGEND
+    with result_cache(cache, quiet) as stored:
+        result = reproduce_all(
+            resolve_papers(paper),
+            formulas=formulas,
+            stability=(out is not None) if stability is None else stability,
+            equations=(out is not None) if equations is None else equations,
+            quiet=quiet or fmt is not OutputFormat.table,
+            cache=stored,
+        )
+        compact = fmt is OutputFormat.table and not notes
+        emit(fmt, result.sections(compact, only_failing), result.document(only_failing))
+        if compact:
+            from pendcli.summary import CAUSE_LEGEND
 
-        print(CAUSE_LEGEND)
-    if out is not None:
-        _write_report(result, out, quiet, measure, pdf)
+            print(CAUSE_LEGEND)
+        if out is not None:
+            _write_report(result, out, quiet, measure, pdf, stored)
     if fail_names:
         _fail_on(result, fail_names, quiet)
 
@@ -543,12 +558,17 @@ def _fail_on(result: ReproduceResult, names: frozenset[str], quiet: bool) -> Non
 
 
 def _write_report(
-    result: ReproduceResult, out: Path, quiet: bool, measure: bool, pdf: bool
+    result: ReproduceResult,
+    out: Path,
+    quiet: bool,
+    measure: bool,
+    pdf: bool,
+    cache: ResultCache | None = None,
 ) -> None:
     from pendcli.cli.common import say
     from pendcli.report import write_report
 
-    written = write_report(result, out, quiet=quiet, measure=measure, pdf=pdf)
+    written = write_report(result, out, quiet=quiet, measure=measure, pdf=pdf, cache=cache)
     if not quiet:
         for key in result.papers:
             say(f"{key}: {result.tally(key)}")

@@ -1,0 +1,33 @@
+"""`pendcli cache`: where the result cache lives, and emptying it."""
+
+from __future__ import annotations
+
+import typer
+
+app = typer.Typer(
+    help="The result cache: where it is, how big, and emptying it.", no_args_is_help=True
+)
+
+
+@app.command("info")
+def info() -> None:
+    """Where the result cache is ($PENDCLI_CACHE, off, or the default), its entries and size."""
+    from pendcli.core.cache import ENV, cache_folder, entries
+
+    folder = cache_folder()
+    if folder is None:
+        print(f"off ({ENV}=off): every run computes")
+        return
+    found = entries(folder)
+    size = sum(size for _, size in found)
+    print(f"{folder}: {len(found)} entries, {size / 1e6:.1f} MB")
+
+
+@app.command("clear")
+def clear() -> None:
+    """Remove every entry of the result cache (the next run computes everything)."""
+    from pendcli.cli.common import say
+    from pendcli.reproduce import result_cache
+
+    cache = result_cache()
+    say(f"removed {cache.clear()} entries from {cache.folder}" if cache.folder else "cache off")

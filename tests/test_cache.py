@@ -1,0 +1,303 @@
+"""The result cache (pendcli/core/cache.py): a warm run prints the cold run's bytes, any byte
+changed in the code or the tables is a miss, and a damaged, disabled or unwritable cache
+never changes an output or fails a run."""
+
+from __future__ import annotations
+
+import json
+import multiprocessing
+import os
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+from cli_helpers import invoke
+
+import pendcli.papers.registry as registry
+from pendcli.core import cache as cache_module
+from pendcli.core.cache import (
+    ResultCache,
+    cache_folder,
+    content_digest,
+    rows_from_json,
+    rows_to_json,
+)
+from pendcli.core.rows import ClaimRow, EquationRow, FormulaRow
+from pendcli.core.tables import clear_table_cache, tables_dir
+
+FORMATS = ("table", "json", "csv", "markdown")
+# charbonnier: the smallest ledger (a few seconds), enough to run every cached unit
+EQUATIONS = ("equations", "-p", "charbonnier")
+REPRODUCE = ("reproduce", "-p", "charbonnier", "--equations", "--stability", "--notes")
+
+
+def _entries(folder: Path) -> list[Path]:
+    return sorted(folder.glob("*.json")) if folder.is_dir() else []
+
+
+def _refuse_to_compute(monkeypatch: pytest.MonkeyPatch) -> None:
+    """From here on, computing a claim, a formula check, a ledger or the stability table
+    fails the test: what follows must come from the cache."""
+
+    def computed(*_args: object, **_kwargs: object) -> None:
+        raise AssertionError("computed, not read from the cache")
+
+    for name in ("evaluate", "formula_checks", "equation_rows", "stability_rows"):
+        monkeypatch.setattr(registry, name, computed)
+    monkeypatch.setattr("pendcli.reproduce.evaluate", computed)
+    monkeypatch.setattr("pendcli.reproduce.formula_checks", computed)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("command", [EQUATIONS, REPRODUCE], ids=["equations", "reproduce"])
+def test_a_warm_run_prints_the_cold_bytes_in_every_format(tmp_path, monkeypatch, command):
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+    cold = {f: invoke(*command, "-f", f, "--no-cache", env=env) for f in FORMATS}
+    assert _entries(tmp_path / "cache") == []  # --no-cache neither reads nor writes
+    first = invoke(*command, "-f", "json", env=env)
+    assert first.code == 0, first.err
+    assert first.out == cold["json"].out
+    assert _entries(tmp_path / "cache")
+    _refuse_to_compute(monkeypatch)
+    for fmt in FORMATS:
+        warm = invoke(*command, "-f", fmt, env=env)
+        assert (warm.code, warm.err) == (0, "")
+        assert warm.out == cold[fmt].out, fmt
+
+
+def test_without_the_cache_the_run_computes(tmp_path, monkeypatch):
+    """The test above would pass if _refuse_to_compute refused nothing: here it must fail."""
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+    _refuse_to_compute(monkeypatch)
+    result = invoke(*EQUATIONS, "-f", "json", env=env)
+    assert result.code != 0 and "computed, not read from the cache" in result.err
+
+
+def _copy_tables(tmp_path: Path) -> Path:
+    copy = tmp_path / "tables"
+    shutil.copytree(tables_dir(), copy)
+    return copy
+
+
+def test_one_byte_changed_in_a_table_is_a_miss(tmp_path):
+    tables = _copy_tables(tmp_path)
+    before = ResultCache(tmp_path, tables).key("equations", {"paper": "charbonnier"})
+    ledger = tables / "equations" / "charbonnier.toml"
+    data = bytearray(ledger.read_bytes())
+    data[-2] ^= 0x01
+    ledger.write_bytes(bytes(data))
+    after = ResultCache(tmp_path, tables).key("equations", {"paper": "charbonnier"})
+    assert before != after
+    (tables / "papers" / "new.txt").write_bytes(b"")  # a new file, even empty
+    assert ResultCache(tmp_path, tables).key("equations", {"paper": "charbonnier"}) != after
+
+
+def test_one_byte_changed_in_a_source_file_is_a_miss(tmp_path):
+    package = tmp_path / "pendcli"
+    shutil.copytree(Path(cache_module.__file__).parent.parent, package, symlinks=True)
+    before = content_digest([("pendcli", package)])
+    source = package / "core" / "verdict.py"
+    data = bytearray(source.read_bytes())
+    data[len(data) // 2] ^= 0x01
+    source.write_bytes(bytes(data))
+    assert content_digest([("pendcli", package)]) != before
+    # a paper's own package (tests' sample paper) is part of the key the same way
+    paper = tmp_path / "paper"
+    paper.mkdir()
+    (paper / "model.py").write_text("X = 1\n", encoding="utf-8")
+    key = ResultCache(tmp_path, tables_dir(), [paper]).key("claims", {"paper": "p"})
+    (paper / "model.py").write_text("X = 2\n", encoding="utf-8")
+    assert ResultCache(tmp_path, tables_dir(), [paper]).key("claims", {"paper": "p"}) != key
+
+
+def test_the_parameters_and_the_tables_folder_are_in_the_key(tmp_path):
+    cache = ResultCache(tmp_path, tables_dir())
+    assert cache.key("claims", {"paper": "a"}) != cache.key("claims", {"paper": "b"})
+    assert cache.key("claims", {"paper": "a"}) != cache.key("formulas", {"paper": "a"})
+
+
+def test_a_changed_ledger_is_recomputed_not_served_stale(tmp_path):
+    tables = _copy_tables(tmp_path)
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache"), "PENDCLI_TABLES": str(tables)}
+    first = invoke(*EQUATIONS, "-f", "json", env=env)
+    assert first.code == 0, first.err
+    ledger = tables / "equations" / "charbonnier.toml"
+    text = ledger.read_text(encoding="utf-8")
+    statement = json.loads(first.out)["equations"][0]["statement"]
+    assert text.count(f'statement = "{statement}"') == 1
+    ledger.write_text(text.replace(statement, statement + " (edited)", 1), encoding="utf-8")
+    clear_table_cache()
+    second = invoke(*EQUATIONS, "-f", "json", env=env)
+    assert json.loads(second.out)["equations"][0]["statement"] == statement + " (edited)"
+
+
+@pytest.mark.parametrize("damage", ["truncated", "garbage", "empty", "other-json", "folder"])
+def test_a_damaged_entry_is_recomputed(tmp_path, damage):
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+    cold = invoke(*EQUATIONS, "-f", "json", env=env)
+    entries = _entries(tmp_path / "cache")
+    assert entries
+    for entry in entries:
+        data = entry.read_bytes()
+        if damage == "folder":
+            entry.unlink()
+            entry.mkdir()
+            continue
+        entry.write_bytes(
+            {
+                "truncated": data[: len(data) // 2],
+                "garbage": b"\xff\xfe not json",
+                "empty": b"",
+                "other-json": b'{"format": 1, "kind": "equations", "value": [{"id": 3}]}',
+            }[damage]
+        )
+    again = invoke(*EQUATIONS, "-f", "json", env=env)
+    assert (again.code, again.out) == (0, cold.out), again.err
+    if damage != "folder":  # rewritten whole
+        for entry in entries:
+            assert json.loads(entry.read_bytes())["format"] == cache_module.FORMAT
+
+
+def test_off_never_writes(tmp_path):
+    home, xdg = tmp_path / "home", tmp_path / "xdg"
+    env = {"PENDCLI_CACHE": "off", "HOME": str(home), "XDG_CACHE_HOME": str(xdg)}
+    result = invoke(*EQUATIONS, "-f", "json", env=env)
+    assert result.code == 0, result.err
+    assert not home.exists() and not xdg.exists()
+    assert cache_folder(env) is None
+
+
+def test_where_the_cache_lives():
+    assert cache_folder({"PENDCLI_CACHE": "/x/c"}) == Path("/x/c")
+    assert cache_folder({"PENDCLI_CACHE": "OFF"}) is None
+    assert cache_folder({"XDG_CACHE_HOME": "/x/xdg"}) == Path("/x/xdg/pendcli")
+    assert cache_folder({"XDG_CACHE_HOME": "relative"}) == Path.home() / ".cache" / "pendcli"
+    assert cache_folder({}) == Path.home() / ".cache" / "pendcli"
+
+
+def test_an_unwritable_folder_still_computes_with_one_status_line(tmp_path):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("not a folder", encoding="utf-8")
+    env = {"PENDCLI_CACHE": str(blocker / "cache")}
+    fresh = invoke(*EQUATIONS, "-f", "json", "--no-cache")
+    result = invoke(*EQUATIONS, "-f", "json", env=env)
+    assert (result.code, result.out) == (0, fresh.out)
+    lines = [line for line in result.err.splitlines() if line.strip()]
+    assert len(lines) == 1 and "cache" in lines[0] and "Traceback" not in result.err
+    quiet = invoke(*EQUATIONS, "-f", "json", "--quiet", env=env)
+    assert (quiet.code, quiet.err) == (0, "")
+
+
+def _put_many(folder: str, value: int) -> None:
+    cache = ResultCache(Path(folder), tables_dir())
+    for _ in range(20):
+        cache.put("claims", {"paper": "race"}, {"writer": value, "pad": "x" * 20000})
+
+
+def test_concurrent_writers_leave_a_whole_entry(tmp_path):
+    context = multiprocessing.get_context("fork")
+    writers = [context.Process(target=_put_many, args=(str(tmp_path), i)) for i in range(4)]
+    for w in writers:
+        w.start()
+    for w in writers:
+        w.join()
+    assert all(w.exitcode == 0 for w in writers)
+    value = ResultCache(tmp_path, tables_dir()).get("claims", {"paper": "race"})
+    assert value["writer"] in range(4) and len(value["pad"]) == 20000
+    assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".")] == []  # no temporaries
+
+
+def test_rows_round_trip_exactly():
+    from pendcli.papers.registry import evaluate, formula_checks
+
+    claims, formulas = evaluate("charbonnier"), formula_checks("charbonnier")
+    for cls, rows in ((ClaimRow, claims), (FormulaRow, formulas)):
+        back = rows_from_json(cls, json.loads(json.dumps(rows_to_json(rows))))
+        assert back == rows
+        assert [type(r.verdict) for r in back] == [type(r.verdict) for r in rows]
+    equation = EquationRow("a.eq.1", "a", "(1)", "I", "s", "holds", "", 2.0, "", (3, 4))
+    (back,) = rows_from_json(EquationRow, json.loads(json.dumps(rows_to_json([equation]))))
+    assert back.lines == (3, 4) and back.observed_order == 2.0
+
+
+def test_a_numpy_scalar_is_not_cached_as_a_float():
+    row = EquationRow("a.eq.1", "a", "(1)", "I", "s", "holds", "", np.float64(2.0), "")
+    with pytest.raises(TypeError, match="float64"):
+        rows_to_json([row])
+
+
+@pytest.mark.slow
+def test_check_never_reads_the_cache(tmp_path, monkeypatch):
+    """`pendcli check` is the CI's drift detector: the key cannot see an environment that
+    changes a BLAS kernel, so it always computes."""
+    calls = []
+    monkeypatch.setattr(ResultCache, "get", lambda self, *a: calls.append(a))
+    monkeypatch.setenv("PENDCLI_CACHE", str(tmp_path))
+    result = invoke("check", "--format", "json")
+    assert result.code in (0, 1), result.err
+    assert calls == [] and _entries(tmp_path) == []
+
+
+def test_cache_clear(tmp_path):
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+    invoke(*EQUATIONS, "-f", "json", env=env)
+    count = len(_entries(tmp_path / "cache"))
+    assert count
+    result = invoke("cache", "clear", env=env)
+    assert result.code == 0, result.err
+    assert str(count) in result.err
+    assert _entries(tmp_path / "cache") == []
+
+
+def test_the_cache_keeps_the_most_recent_entries(tmp_path, monkeypatch):
+    monkeypatch.setattr(cache_module, "KEEP", 3)
+    cache = ResultCache(tmp_path, tables_dir())
+    for i in range(5):
+        cache.put("claims", {"paper": f"p{i}"}, [i])
+        os.utime(cache.entry_path("claims", {"paper": f"p{i}"}), (i, i))
+    cache.put("claims", {"paper": "last"}, [9])
+    assert len(_entries(tmp_path)) == 3
+    assert cache.get("claims", {"paper": "last"}) == [9]
+    assert cache.get("claims", {"paper": "p0"}) is None
+
+
+@pytest.mark.slow
+def test_a_warm_report_is_the_cold_report(tmp_path, monkeypatch):
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+    args = ("reproduce", "-p", "tisserand", "-q", "-f", "json")
+    cold = invoke(*args, "--out", str(tmp_path / "cold"), env=env)
+    assert cold.code == 0, cold.err
+    _refuse_to_compute(monkeypatch)
+    monkeypatch.setattr("pendcli.report._fill", lambda *a: pytest.fail("report not cached"))
+    warm = invoke(*args, "--out", str(tmp_path / "warm"), env=env)
+    assert (warm.code, warm.out) == (0, cold.out), warm.err
+    names = sorted(p.relative_to(tmp_path / "cold") for p in (tmp_path / "cold").rglob("*"))
+    assert names == sorted(p.relative_to(tmp_path / "warm") for p in (tmp_path / "warm").rglob("*"))
+    for name in names:
+        if (tmp_path / "cold" / name).is_file():
+            cold_bytes = (tmp_path / "cold" / name).read_bytes()
+            assert (tmp_path / "warm" / name).read_bytes() == cold_bytes, name
+
+
+@pytest.mark.slow
+def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
+    import sys
+
+    from pendcli import bench
+
+    quick = [sys.executable, "-c", "pass"]
+    monkeypatch.setattr(
+        bench,
+        "_floor_commands",
+        lambda folder: dict.fromkeys((bench.FLOOR, bench.SCIPY, *bench.FLOOR_TARGETS), quick),
+    )
+    times = bench.floor_times(runs=1)
+    assert set(times) == {
+        (bench.FLOOR, ""),
+        (bench.SCIPY, ""),
+        *((label, mode) for label in bench.FLOOR_TARGETS for mode in ("cold", "warm")),
+    }
+    text = "\n".join(bench.floor_lines(times, 1))
+    for label in bench.FLOOR_TARGETS:
+        assert f"| `{label}` | cold |" in text and f"| `{label}` | warm |" in text
