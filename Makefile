@@ -50,7 +50,7 @@ reproduce: $(RUNTIME)
 PYTEST := env -u PYTHONDONTWRITEBYTECODE PYTHONPYCACHEPREFIX=$(abspath $(VENV))/pycache \
 	PENDCLI_JOBS=1 $(BIN)/python -m pytest -q
 XDIST := -n 2 --dist worksteal
-TIMINGS := $(VENV)/test-timings.jsonl
+TIMINGS := $(abspath $(VENV))/test-timings.jsonl
 
 # The fast suite: every test but those marked slow (tests/conftest.py names the slow families
 # and why) and the browser test. Each test's CPU and wall seconds go to $(TIMINGS).

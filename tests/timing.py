@@ -31,6 +31,7 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     parser.addoption(
         "--timings-file",
         default=None,
+        type=os.path.abspath,  # a test may change the working directory
         help="append each test phase's wall and CPU seconds (JSON lines) to this file",
     )
 
