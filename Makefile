@@ -15,7 +15,7 @@ OUT ?= out
 # not depend on which Python made the venv.
 LOCK_FLAGS := --universal --fork-strategy fewest --python-version 3.11 --generate-hashes -q
 
-.PHONY: install reproduce test test-slow test-all test-durations test-browser check regen lint bench lock api clean
+.PHONY: help install reproduce test test-slow test-all test-durations test-browser check regen lint bench lock api clean
 
 install: $(STAMP)
 
@@ -105,3 +105,13 @@ api: $(STAMP)
 
 clean:
 	rm -rf $(OUT) .pytest_cache build *.egg-info
+
+help:
+	@echo "make install         the venv from the lock files"
+	@echo "make reproduce       every table and figure into out/ (OUT=...)"
+	@echo "make test            the fast suite: all but the slow and the browser tests"
+	@echo "make test-slow       only the slow tests (families named in tests/conftest.py)"
+	@echo "make test-browser    the HTML report in headless Chromium (skipped without it)"
+	@echo "make test-all        the fast and the slow tests, then the browser test"
+	@echo "make test-durations  tests not marked slow over 2 s of CPU in the last make test"
+	@echo "make check | regen | lint | bench | lock | api | clean"
