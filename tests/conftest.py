@@ -45,6 +45,7 @@ SLOW_FAMILIES = {
     "tests/test_fuzz.py::test_plot_paths": "each example draws and writes a figure",
     "tests/test_tisserand.py::test_figures_written": "draws and writes the paper's figures",
     "tests/test_json_schema.py::test_reproduce_*json_*": "a whole reproduce -f json",
+    "tests/test_summary.py::test_equations_command_*": "every Charbonnier check, via the CLI",
     "tests/test_html_report.py::test_pdf_printing_*": "whole reports, before Chromium is sought",
     "tests/test_ledger.py::test_evaluate_runs_each_check_*": "every ledger row's check",
     "tests/test_tisserand.py::test_quadrature_against_mpmath_elsewhere": "mpmath at 25 digits",
@@ -56,6 +57,7 @@ SLOW_FAMILIES = {
 }
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
+    "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
 }
 
 
