@@ -59,10 +59,14 @@ test: $(STAMP)
 	$(PYTEST) $(XDIST) -m "not slow and not browser" --timings-file $(TIMINGS)
 
 # The 2 s rule, from the last `make test`'s timings (run first if there are none): lists the
-# tests not marked slow over 2 s of CPU, exit 1 if any. No limit is put inside a test.
+# tests not marked slow over 2 s of CPU, exit 1 if any. No limit is put inside a test. CPU
+# seconds grow on a crowded machine too (about 1.5-3x at a load of 10 on 2 cores, and the
+# first test in a worker to use a shared fixture or cache pays for it): there, judge with
+# DURATION_LIMIT=4.
+DURATION_LIMIT ?= 2
 test-durations: $(STAMP)
 	@test -f $(TIMINGS) || $(MAKE) test
-	$(BIN)/python tests/durations.py $(TIMINGS)
+	$(BIN)/python tests/durations.py $(TIMINGS) --limit $(DURATION_LIMIT)
 
 # Only the slow tests: whole regenerations, real processes stopped by signals, mpmath references.
 test-slow: $(STAMP)
