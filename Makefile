@@ -15,7 +15,7 @@ OUT ?= out
 # not depend on which Python made the venv.
 LOCK_FLAGS := --universal --fork-strategy fewest --python-version 3.11 --generate-hashes -q
 
-.PHONY: install reproduce test test-browser check regen lint bench lock api clean
+.PHONY: help install reproduce test test-slow test-all test-durations test-browser check regen lint bench lock api clean
 
 install: $(STAMP)
 
@@ -44,13 +44,42 @@ reproduce: $(RUNTIME)
 
 # Two workers (this project's machines have 2 cores); tests use tmp_path, never shared paths.
 # PENDCLI_JOBS=1: with both cores busy running tests, reproduce's own forks only add work
-# (tests/test_report.py runs the forked paths explicitly).
+# (tests/test_report.py runs the forked paths explicitly). Bytecode is kept in .venv/pycache:
+# where PYTHONDONTWRITEBYTECODE is set, each worker and each CLI subprocess a test starts would
+# otherwise compile sympy, scipy, matplotlib and the tests from source again (3x the CPU).
+PYTEST := env -u PYTHONDONTWRITEBYTECODE PYTHONPYCACHEPREFIX=$(abspath $(VENV))/pycache \
+	PENDCLI_JOBS=1 $(BIN)/python -m pytest -q
+XDIST := -n 2 --dist worksteal
+TIMINGS := $(abspath $(VENV))/test-timings.jsonl
+
+# The fast suite: every test but those marked slow (tests/conftest.py names the slow families
+# and why) and the browser test. Each test's CPU and wall seconds go to $(TIMINGS).
 test: $(STAMP)
-	PENDCLI_JOBS=1 $(BIN)/python -m pytest -q -n 2 --dist worksteal
+	rm -f $(TIMINGS)
+	$(PYTEST) $(XDIST) -m "not slow and not browser" --timings-file $(TIMINGS)
+
+# The 2 s rule, from the last `make test`'s timings (run first if there are none): lists the
+# tests not marked slow over 2 s of CPU, exit 1 if any. No limit is put inside a test. CPU
+# seconds grow on a crowded machine too (about 1.5-3x at a load of 10 on 2 cores, and the
+# first test in a worker to use a shared fixture or cache pays for it): there, judge with
+# DURATION_LIMIT=4.
+DURATION_LIMIT ?= 2
+test-durations: $(STAMP)
+	@test -f $(TIMINGS) || $(MAKE) test
+	$(BIN)/python tests/durations.py $(TIMINGS) --limit $(DURATION_LIMIT)
+
+# Only the slow tests: whole regenerations, real processes stopped by signals, mpmath references.
+test-slow: $(STAMP)
+	$(PYTEST) $(XDIST) -m "slow and not browser"
+
+# Everything: the fast and the slow tests in one run, then the browser test.
+test-all: $(STAMP)
+	$(PYTEST) $(XDIST) -m "not browser"
+	$(MAKE) test-browser
 
 # The HTML report in headless Chromium (Debian package chromium); skipped where it is absent.
 test-browser: $(STAMP)
-	$(BIN)/python -m pytest -q -m browser
+	$(PYTEST) -m browser
 
 check: $(RUNTIME)
 	$(BIN)/pendcli check
@@ -80,3 +109,13 @@ api: $(STAMP)
 
 clean:
 	rm -rf $(OUT) .pytest_cache build *.egg-info
+
+help:
+	@echo "make install         the venv from the lock files"
+	@echo "make reproduce       every table and figure into out/ (OUT=...)"
+	@echo "make test            the fast suite: all but the slow and the browser tests"
+	@echo "make test-slow       only the slow tests (families named in tests/conftest.py)"
+	@echo "make test-browser    the HTML report in headless Chromium (skipped without it)"
+	@echo "make test-all        the fast and the slow tests, then the browser test"
+	@echo "make test-durations  tests not marked slow over 2 s of CPU in the last make test"
+	@echo "make check | regen | lint | bench | lock | api | clean"

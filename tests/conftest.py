@@ -12,10 +12,3 @@ from hypothesis import settings
 settings.register_profile("pendcli", deadline=None)
 settings.load_profile("pendcli")
 
-
-# The result cache (pendcli/core/cache.py) is off in every test and every process a test
-# starts: no test is served a result stored outside it (the user's ~/.cache/pendcli), nor one
-# an earlier test stored, which would make a test of determinism, of the forked workers or of
-# an interrupt compare a computation with a copy of itself. tests/test_cache.py gives each of
-# its tests a folder of its own.
-os.environ["PENDCLI_CACHE"] = "off"

@@ -1,0 +1,84 @@
+"""List the tests not marked ``slow`` that take over 2 s (issue 23), from ``--timings-file``.
+
+    python tests/durations.py TIMINGS [--limit 2] [--wall] [--top 20]
+
+A test's time is the sum of its phases (setup, call, teardown); a module fixture's work counts
+for the first test that asks for it, as it does in a run. By default the time is CPU seconds
+(the test process and the children it reaped), which a busy machine hardly moves; ``--wall``
+judges wall seconds instead, for a quiet machine. Exit status 1 when a test not marked ``slow``
+is over the limit (each named with its time), else 0. Nothing here limits a test while it runs.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections import defaultdict
+from pathlib import Path
+
+
+def read(path: Path) -> list[dict[str, object]]:
+    return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+
+
+def per_test(lines: list[dict[str, object]], key: str) -> dict[str, tuple[float, bool]]:
+    """Each test's seconds (summed over its phases) and whether it is marked slow."""
+    seconds: dict[str, float] = defaultdict(float)
+    slow: dict[str, bool] = {}
+    for line in lines:
+        if line["phase"] == "collect":
+            continue
+        test = str(line["test"])
+        seconds[test] += float(line[key])  # type: ignore[arg-type]
+        slow[test] = bool(line["slow"])
+    return {test: (seconds[test], slow[test]) for test in seconds}
+
+
+def per_file(tests: dict[str, tuple[float, bool]]) -> dict[str, float]:
+    files: dict[str, float] = defaultdict(float)
+    for test, (seconds, _) in tests.items():
+        files[test.split("::")[0]] += seconds
+    return files
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("timings", type=Path)
+    parser.add_argument("--limit", type=float, default=2.0, help="seconds (default 2)")
+    parser.add_argument("--wall", action="store_true", help="judge wall, not CPU, seconds")
+    parser.add_argument("--top", type=int, default=15, help="files and tests to show")
+    args = parser.parse_args(argv)
+    lines = read(args.timings)
+    key = "wall" if args.wall else "cpu"
+    tests = per_test(lines, key)
+    loads = [float(line["load"]) for line in lines]  # type: ignore[arg-type]
+    fast = [(s, t) for t, (s, slow) in tests.items() if not slow]
+    slow = [(s, t) for t, (s, slow) in tests.items() if slow]
+    fast_sum = sum(s for s, _ in fast)
+    print(
+        f"{len(tests)} tests, {len(slow)} marked slow; {key} seconds: fast {fast_sum:.1f}, "
+        f"slow {sum(s for s, _ in slow):.1f}; 1-min load {min(loads, default=0):.1f} to "
+        f"{max(loads, default=0):.1f}"
+    )
+    for line in lines:
+        if line["phase"] == "collect":
+            print(f"  {line['test']}: start-up and collection {line['cpu']} s CPU, ", end="")
+            print(f"{line['wall']} s wall")
+    print(f"files by {key} seconds (fast tests only):")
+    fast_files = per_file({t: (s, False) for s, t in fast})
+    for name, seconds in sorted(fast_files.items(), key=lambda kv: -kv[1])[: args.top]:
+        print(f"  {seconds:7.2f}  {name}")
+    print(f"slowest fast tests by {key} seconds:")
+    for seconds, test in sorted(fast, reverse=True)[: args.top]:
+        print(f"  {seconds:7.2f}  {test}")
+    over = sorted(((s, t) for s, t in fast if s > args.limit), reverse=True)
+    for seconds, test in over:
+        print(f"over {args.limit:g} s and not marked slow: {test} ({seconds:.2f} s {key})")
+    if not over:
+        print(f"no test over {args.limit:g} s {key} that is not marked slow")
+    return 1 if over else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
