@@ -1,0 +1,539 @@
+"""Lecornu (1894), lines 1–698: the references the printed forms are checked against (issue 19).
+
+Each ``reference_*`` returns a :class:`~pendcli.core.printed_check.Reference` mapping ledger
+symbols (``tables/equations/lecornu.toml`` [symbols]) to exact expressions taken from what the
+printed formula rests on: the bob's equations in x, y (lines 34–40), the chain rule of
+l = a + bt, the exact solutions of (9) (u = √x Z₁(2√x), Z₁ = J₁ or Y₁), the definitions
+(C = A + B/(φ₀φ'₀), ψ, γ, p), the solution of (27) by undetermined coefficients; never a
+second copy of the formula the row prints. The ``check_*`` functions are the independent
+checks of the rows added here (sympy identities, mpmath quadrature and root finding).
+
+sympy and mpmath are imported inside the functions (start-up stays fast).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+from typing import Any
+
+from pendcli.core.ledger_check import EquationCheck
+
+__all__ = [
+    "check_bob_equations",
+    "check_chain_rule",
+    "check_riccati",
+    "reference_bessel_general",
+    "reference_bessel_past_alpha_prime",
+    "reference_bessel_past_beta",
+    "reference_bessel_switches",
+    "reference_cartesian",
+    "reference_cartesian_uniform",
+    "reference_chain_rule",
+    "reference_compound",
+    "reference_curvature",
+    "reference_eq27",
+    "reference_graphical",
+    "reference_motion_in_l",
+    "reference_phi_series",
+    "reference_psi",
+    "reference_riccati",
+    "reference_slow_pendulum",
+    "reference_slow_vertical",
+    "reference_small_angle",
+    "reference_u_of_x",
+    "reference_zero_length",
+]
+
+
+def _symbols(*names: str) -> Any:
+    import sympy as sp
+
+    return [sp.Symbol(n, real=True) for n in names]
+
+
+def _reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:
+    from pendcli.core.printed_check import Reference
+
+    return Reference(exact, what=what, **kw)
+
+
+# --- § I: the equation of motion ------------------------------------------------------------
+
+
+def _bob_accelerations() -> tuple[Any, Any, dict[str, Any]]:
+    """ẍ, ÿ of x = l sin θ, y = l cos θ (line 34) for any l(t), θ(t), in the ledger's
+    derivative symbols; and the symbols themselves."""
+    import sympy as sp
+
+    t, length, dl, d2l, theta, dtheta, d2theta = _symbols(
+        "t", "l", "dl_dt", "d2l_dt2", "theta", "dtheta_dt", "d2theta_dt2"
+    )
+    big_l, big_theta = sp.Function("L")(t), sp.Function("Theta")(t)
+    jets = {
+        big_l.diff(t, 2): d2l,
+        big_theta.diff(t, 2): d2theta,
+        big_l.diff(t): dl,
+        big_theta.diff(t): dtheta,
+    }
+
+    def in_symbols(expr: Any) -> Any:
+        return expr.subs(jets).subs({big_l: length, big_theta: theta})
+
+    ax = in_symbols((big_l * sp.sin(big_theta)).diff(t, 2))
+    ay = in_symbols((big_l * sp.cos(big_theta)).diff(t, 2))
+    names = {"l": length, "dl_dt": dl, "d2l_dt2": d2l, "theta": theta, "d2theta_dt2": d2theta}
+    return ax, ay, names
+
+
+def _cartesian_exact(uniform: bool) -> dict[str, Any]:
+    """From lines 34–40: θ'' solved from x ÿ − y ẍ − g x = 0 (line 44, itself from 38 and 40),
+    the tension from x ẍ + y ÿ = −T l + g y; with ``uniform``, l = a + bt (line 62)."""
+    import sympy as sp
+
+    a, b, t, g, ten = _symbols("a", "b", "t", "g", "Ten")
+    ax, ay, s = _bob_accelerations()
+    length, theta = s["l"], s["theta"]
+    x, y = length * sp.sin(theta), length * sp.cos(theta)
+    # (38), (40): ẍ = −T x/l, ÿ = g − T y/l; eliminating T gives line 44
+    d2theta = sp.solve(sp.expand(x * ay - y * ax - g * x), s["d2theta_dt2"])[0]
+    tension = sp.simplify((g * y - (x * ax + y * ay)) / length)
+    exact = {
+        "d2theta_dt2": d2theta,
+        "Ten": tension,
+        "xc": x,
+        "yc": y,
+        "d2xc_dt2": -ten * x / length,
+        "d2yc_dt2": g - ten * y / length,
+    }
+    if uniform:
+        law = {length: a + b * t, s["dl_dt"]: b, s["d2l_dt2"]: 0}
+        exact = {k: v.subs(law, simultaneous=True) for k, v in exact.items()}
+    return exact
+
+
+def reference_cartesian() -> Any:
+    """Lines 34–44: x = l sin θ, y = l cos θ and the bob's equations (38), (40)."""
+    return _reference(_cartesian_exact(False), "x = l sin θ, y = l cos θ and (38), (40)")
+
+
+def reference_cartesian_uniform() -> Any:
+    """The same with l = a + bt (line 62): the source of (3) and (4)."""
+    return _reference(_cartesian_exact(True), "(38), (40) with l = a + bt")
+
+
+def _chain_rule() -> dict[str, Any]:
+    """l = a + bt: dθ/dt, d²θ/dt² of θ(t) = Θ(a + bt) by the chain rule (sympy)."""
+    import sympy as sp
+
+    a, b, t, dtheta_dl, d2theta_dl2 = _symbols("a", "b", "t", "dtheta_dl", "d2theta_dl2")
+    of_t = sp.Function("Theta")(a + b * t)
+    jet = {1: dtheta_dl, 2: d2theta_dl2}  # Θ's derivatives at l = a + bt
+
+    def in_l(expr: Any) -> Any:
+        return expr.replace(
+            lambda e: isinstance(e, sp.Subs), lambda e: jet[e.expr.derivative_count]
+        )
+
+    return {"dtheta_dt": in_l(of_t.diff(t)), "d2theta_dt2": in_l(of_t.diff(t, 2))}
+
+
+def reference_chain_rule() -> Any:
+    """Line 72: the chain rule of l = a + bt."""
+    return _reference(_chain_rule(), "the chain rule of l = a + bt")
+
+
+def reference_motion_in_l() -> Any:
+    """(3) in the variable l: θ'' of (3) by the chain rule, t = (l − a)/b."""
+    import sympy as sp
+
+    a, b, length, dtheta_dl = _symbols("a", "b", "l", "dtheta_dl")
+    d2theta_dt2 = _cartesian_exact(True)["d2theta_dt2"].subs(
+        a + sp.Symbol("b", real=True) * sp.Symbol("t", real=True), length
+    )
+    dtheta_dt = sp.Symbol("dtheta_dt", real=True)
+    exact = {
+        "d2theta_dl2": (d2theta_dt2 / b**2).subs(dtheta_dt, b * dtheta_dl),
+        "t": (length - a) / b,
+    }
+    return _reference(exact, "(3) in l by the chain rule")
+
+
+def reference_small_angle() -> Any:
+    """(5) (from (3) and the chain rule) with sin θ ≈ θ: θ scaled by ε, through ε¹."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    theta, dtheta_dl = _symbols("theta", "dtheta_dl")
+    base = reference_motion_in_l().exact
+    d2 = base["d2theta_dl2"].subs({theta: eps * theta, dtheta_dl: eps * dtheta_dl})
+    exact = {"theta": eps * theta, "dtheta_dl": eps * dtheta_dl, "d2theta_dl2": d2}
+    return _reference(exact, "(5) to first order in θ", scale=eps, order=2)
+
+
+def reference_riccati() -> Any:
+    """(7) with θ = e^∫z dl (θ' = zθ, θ'' = (z' + z²)θ), then z = v − 1/l."""
+    import sympy as sp
+
+    length, g, b, theta, zr, vr, dzr = _symbols("l", "g", "b", "theta", "zr", "vr", "dzr_dl")
+    # (7), l θ'' + 2θ' + (g/b²)θ = 0, with θ' = zθ and θ'' = (z' + z²)θ
+    eq7 = length * (dzr + zr**2) * theta + 2 * zr * theta + g / b**2 * theta
+    dz = sp.solve(eq7, dzr)[0]
+    dv = dz.subs(zr, vr - 1 / length) - sp.diff(-1 / length, length)
+    return _reference({"dzr_dl": dz, "dvr_dl": dv}, "(7) with θ = exp ∫z dl, z = v − 1/l")
+
+
+# --- § II: the Bessel solutions of (9) ------------------------------------------------------
+
+
+def _phi(x: Any, kind: str = "j") -> Any:
+    """√x Z₁(2√x): Z₁ = J₁ (φ, (10)) or Y₁ (the second solution of (9))."""
+    import sympy as sp
+
+    bessel = sp.besselj if kind == "j" else sp.bessely
+    return sp.sqrt(x) * bessel(1, 2 * sp.sqrt(x))
+
+
+def _general_u(x: Any, x0: Any, big_a: Any, big_b: Any) -> Any:
+    """The solution of (9) whose value and slope at x0 are Aφ0 and Aφ'0 + B/φ0 (line 348),
+    written in the independent basis √x J₁(2√x), √x Y₁(2√x)."""
+    import sympy as sp
+
+    s = sp.Dummy("s", positive=True)
+    j, y = _phi(s, "j"), _phi(s, "y")
+    dj, dy = j.diff(s), y.diff(s)
+    at = {s: x0}
+    u0 = big_a * j.subs(at)
+    du0 = big_a * dj.subs(at) + big_b / j.subs(at)
+    wronskian = (j * dy - dj * y).subs(at)
+    c1 = (u0 * dy.subs(at) - du0 * y.subs(at)) / wronskian
+    c2 = (du0 * j.subs(at) - u0 * dj.subs(at)) / wronskian
+    return c1 * _phi(x, "j") + c2 * _phi(x, "y")
+
+
+def _bessel_exact(switch: dict[str, Any] | None = None) -> dict[str, Any]:
+    """u, u', φ, φ', φ'' and the values φ_j, φ'_j at the named points; C = A + B/(φ0φ'0)."""
+
+    x, x0, big_a, big_b = _symbols("x", "x0", "A", "B")
+    u = _general_u(x, x0, big_a, big_b)
+    phi = _phi(x)
+    exact = {
+        "u": u,
+        "du_dx": u.diff(x),
+        "d2u_dx2": u.diff(x, 2),
+        "varphi": phi,
+        "dvarphi_dx": phi.diff(x),
+        "d2varphi_dx2": phi.diff(x, 2),
+        "C": big_a + big_b / (phi * phi.diff(x)).subs(x, x0),
+    }
+    for point in ("0", "1", "2", "k", "h"):
+        (where,) = _symbols(f"x{point}")
+        exact[f"varphi{point}"] = phi.subs(x, where)
+        exact[f"varphip{point}"] = phi.diff(x).subs(x, where)
+    exact.update(switch or {})
+    return exact
+
+
+def _u_over_phi_at(point: str) -> Any:
+    """A new constant of (17)-type at ``point``: u/φ there (the form u = A'φ + … at x = x_j)."""
+    import sympy as sp
+
+    x, where = _symbols("x", point)
+    exact = _bessel_exact()
+    return sp.Mul(exact["u"], 1 / exact["varphi"]).subs(x, where)
+
+
+def reference_bessel_general() -> Any:
+    """(17)–(22) between x0 and x in (1/10, 1/2), where φ and φ' have no root."""
+    return _reference(_bessel_exact(), "u of (9) from its value and slope at x0, √x J₁, √x Y₁")
+
+
+def reference_bessel_past_beta() -> Any:
+    """(17'), A': x0 in (3/2, 18/5) (between the roots 1.446 of φ' and 3.670 of φ), x1 and x
+    past β = 3.670 and below the next root 7.618 of φ'; A' = u(x1)/φ(x1)."""
+    import sympy as sp
+
+    exact = _bessel_exact({"Ap": _u_over_phi_at("x1")})
+    domain = {
+        "x0": (sp.Rational(3, 2), sp.Rational(18, 5)),
+        "x1": (sp.Rational(37, 10), sp.Rational(15, 2)),
+        "x": (sp.Rational(37, 10), sp.Rational(15, 2)),
+    }
+    return _reference(exact, "u of (9); A' = u/φ at x1 (line 316)", domain=domain)
+
+
+def reference_bessel_past_alpha_prime() -> Any:
+    """(21'), C': as above, and x2, x past α' = 7.618, below the root 12.31 of φ;
+    C' = (u + B/φ')/φ at x2 (the form (21') at x = x2)."""
+    import sympy as sp
+
+    x, x2, big_b = _symbols("x", "x2", "B")
+    exact = _bessel_exact()
+    c_prime = ((exact["u"] + big_b / exact["dvarphi_dx"]) / exact["varphi"]).subs(x, x2)
+    exact["Cp"] = c_prime
+    exact["Ap"] = _u_over_phi_at("x1")
+    domain = {
+        "x0": (sp.Rational(3, 2), sp.Rational(18, 5)),
+        "x1": (sp.Rational(37, 10), sp.Rational(15, 2)),
+        "x2": (sp.Rational(77, 10), sp.Rational(122, 10)),
+        "x": (sp.Rational(77, 10), sp.Rational(122, 10)),
+    }
+    return _reference(exact, "u of (9); C' = (u + B/φ')/φ at x2 (line 326)", domain=domain)
+
+
+def reference_bessel_switches() -> Any:
+    """The general rule (lines 330–342): x0 in (1/10, 1/2), before every root; x, x_k in
+    (37/10, 15/2), past φ' = 0 at 1.446 and φ = 0 at 3.670; x_h and the switch point x1 in
+    (3/2, 18/5), between them."""
+    import sympy as sp
+
+    domain = {
+        "x0": (sp.Rational(1, 10), sp.Rational(1, 2)),
+        "x": (sp.Rational(37, 10), sp.Rational(15, 2)),
+        "xk": (sp.Rational(37, 10), sp.Rational(15, 2)),
+        "xh": (sp.Rational(3, 2), sp.Rational(18, 5)),
+        "x1": (sp.Rational(3, 2), sp.Rational(18, 5)),
+    }
+    return _reference(_bessel_exact(), "u of (9) across the roots of φ' and φ", domain=domain)
+
+
+def reference_u_of_x() -> Any:
+    """(9) from (7): u = θl, x = gl/b², d²u/dx² = (b²/g)²(lθ'' + 2θ') with θ'' from (7)."""
+    import sympy as sp
+
+    length, g, b, theta, dtheta = _symbols("l", "g", "b", "theta", "dtheta_dl")
+    d2theta = sp.solve(length * sp.Symbol("q_") + 2 * dtheta + g / b**2 * theta, sp.Symbol("q_"))[0]
+    exact = {
+        "u": theta * length,
+        "x": g * length / b**2,
+        "d2u_dx2": (b**2 / g) ** 2 * (length * d2theta + 2 * dtheta),
+    }
+    return _reference(exact, "(7) with u = θl, l = (b²/g)x")
+
+
+def _trajectory(zl: Any, cl: Any) -> Any:
+    """The bob's path u(z) (lines 124, 134): a solution of (9) with x = z/c, here
+    √x J₁(2√x) + √x Y₁(2√x) (both kinds, so neither special case)."""
+    x = zl / cl
+    return _phi(x, "j") + _phi(x, "y")
+
+
+def reference_graphical() -> Any:
+    """x = z/c in (9): u(z) exact; h the ordinate at z = 0 of the tangent at (z, u)."""
+
+    zl, cl, at = _symbols("zl", "cl", "Z_")
+    u = _trajectory(zl, cl)
+    slope = u.diff(zl)
+    tangent = u + slope * (at - zl)
+    h = tangent.subs(at, 0)
+    exact = {"u": u, "du_dzl": slope, "d2u_dzl2": u.diff(zl, 2), "h": h, "dh_dzl": h.diff(zl)}
+    return _reference(exact, "the exact path u(z) of (9), x = z/c, and its tangent")
+
+
+def reference_curvature() -> Any:
+    """The curvature u''/(1 + u'²)^(3/2) of the exact path, at amplitude ε, through ε¹."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    zl, cl = _symbols("zl", "cl")
+    u = eps * _trajectory(zl, cl)
+    kappa = u.diff(zl, 2) / (1 + u.diff(zl) ** 2) ** sp.Rational(3, 2)
+    exact = {"u": u, "kappa": kappa, "theta": u / zl}
+    return _reference(exact, "the curvature of the exact path", scale=eps, order=2)
+
+
+def reference_phi_series() -> Any:
+    """φ = √x J₁(2√x) (the text's own identification, line 160), x scaled by ε, through ε⁴."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    (x,) = _symbols("x")
+    phi = _phi(eps * x)
+    return _reference(
+        {"x": eps * x, "varphi": phi, "dvarphi_dx": sp.diff(_phi(x), x).subs(x, eps * x)},
+        "φ = √x J₁(2√x)",
+        scale=eps,
+        order=5,
+    )
+
+
+def reference_zero_length() -> Any:
+    """z = 2√x → 0 (x scaled by ε², z by ε): the limit is the ε⁰ term."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    x, z = _symbols("x", "z")
+    return _reference(
+        {"x": eps**2 * x, "z": eps * z, "varphi": _phi(eps**2 * x)},
+        "J₁ near 0",
+        scale=eps,
+        order=1,
+    )
+
+
+def reference_compound() -> Any:
+    """Line 84, l' = l + R²/l, with l = a + bt; bt/a small: b scaled by ε, through ε¹."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    a, b, t, rg = _symbols("a", "b", "t", "Rg")
+    length = a + eps * b * t
+    return _reference(
+        {"lp": length + rg**2 / length, "b": eps * b}, "l' = l + R²/l", scale=eps, order=2
+    )
+
+
+# --- § II, the slowly varying pendulum ------------------------------------------------------
+
+
+def _forced_oscillator(rhs: Any, tau: Any, degree: int) -> Any:
+    """The solution of U'' + U = rhs(τ) with U(0) = U'(0) = 0, rhs a polynomial in τ times
+    cos τ, sin τ: undetermined coefficients (a polynomial of ``degree`` on each), solved
+    linearly."""
+    import sympy as sp
+
+    a = sp.symbols(f"a0:{degree + 1}")
+    c = sp.symbols(f"c0:{degree + 1}")
+    trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau) + sum(
+        c[k] * tau**k for k in range(degree + 1)
+    ) * sp.sin(tau)
+    residual = sp.expand(trial.diff(tau, 2) + trial - rhs)
+    equations = []
+    for trig in (sp.cos(tau), sp.sin(tau)):
+        part = sp.Poly(residual.coeff(trig), tau)
+        equations.extend(part.all_coeffs())
+    equations += [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
+    solution = sp.solve(equations, [*a, *c], dict=True)[0]
+    return sp.expand(trial.subs(solution).subs({k: 0 for k in (*a, *c)}))
+
+
+@cache
+def _eq27_solution() -> tuple[Any, Any, Any]:
+    """(27) with u(0) = 0, u'(0) = γ to p² (line 638): u0 = sin γt and, in τ = γt (line 626),
+    u_n'' + u_n = −τ u_(n−1)'', u_n(0) = u_n'(0) = 0 (line 628)."""
+    import sympy as sp
+
+    t, gamma, p = _symbols("t", "gamma", "p")
+    tau = sp.Dummy("tau")
+    parts = [sp.sin(tau)]
+    for n in (1, 2):
+        parts.append(_forced_oscillator(-tau * parts[-1].diff(tau, 2), tau, 2 * n))
+    u = sum(part * p**k for k, part in enumerate(parts)).subs(tau, gamma * t)
+    return u, t, p
+
+
+def reference_eq27() -> Any:
+    """(28) against (27) solved to p² (γ kept); for (29), θ = u/(1 + pγt) to p² (line 678,
+    the constant factor a dropped)."""
+    import sympy as sp
+
+    u, t, p = _eq27_solution()
+    (gamma,) = _symbols("gamma")
+    theta = sp.expand(sp.series(u / (1 + p * gamma * t), p, 0, 3).removeO())
+    return _reference({"u": u, "theta": theta}, "(27) solved to p²", scale=p, order=3)
+
+
+def _slow_exact(psi_value: Any) -> dict[str, Any]:
+    """(22) with l = a + bt (line 583), γ = √(g/a), p = b/√(ga) (line 585), R = ρa^(3/4)
+    (line 589) and φ = 2/p + ψ, i.e. ψ the phase of sin(γt − ψ) as (25) uses it."""
+    import sympy as sp
+
+    a, g, t, rho, p = _symbols("a", "g", "t", "rho", "p")
+    gamma = sp.sqrt(g / a)
+    b = p * sp.sqrt(g * a)
+    length = a + b * t
+    phi = 2 / p + psi_value
+    big_r = rho * a ** sp.Rational(3, 4)
+    theta = big_r * length ** sp.Rational(-3, 4) * sp.sin(2 / b * sp.sqrt(g * length) - phi)
+    return {"theta": theta, "gamma": gamma, "r": gamma, "b": b, "R": big_r, "phi": phi}
+
+
+def reference_slow_pendulum() -> Any:
+    """(22) in t, to first order in p (lines 581–595)."""
+    (psi,) = _symbols("psi")
+    (p,) = _symbols("p")
+    return _reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, ρ", scale=p, order=2)
+
+
+def reference_slow_vertical() -> Any:
+    """The same with the pendulum vertical at t = 0 (line 599): ψ = 0."""
+    (p,) = _symbols("p")
+    return _reference(_slow_exact(0), "(22) vertical at t = 0", scale=p, order=2)
+
+
+def reference_psi() -> Any:
+    """ψ as the phase of (22)'s sine at t = 0 once written sin(γt − ψ): −(2/p − φ)."""
+    import sympy as sp
+
+    a, g, p, phi = _symbols("a", "g", "p", "phi")
+    b = p * sp.sqrt(g * a)
+    argument_at_0 = 2 / b * sp.sqrt(g * a) - phi  # (22)'s argument at l = a
+    return _reference({"psi": -argument_at_0}, "the phase of (22) at t = 0")
+
+
+# --- checks of the rows added for issue 19 --------------------------------------------------
+
+
+def check_bob_equations() -> EquationCheck:
+    """Lines 42–48: with x = l sin θ, y = l cos θ, x ÿ − y ẍ = −d(l²θ')/dt for every l(t),
+    θ(t); so line 44 is line 48 (sympy)."""
+    import sympy as sp
+
+    t = sp.Symbol("t")
+    length, theta = sp.Function("l")(t), sp.Function("theta")(t)
+    x, y = length * sp.sin(theta), length * sp.cos(theta)
+    lhs = x * y.diff(t, 2) - y * x.diff(t, 2)
+    areal = (length**2 * theta.diff(t)).diff(t)
+    ok = sp.simplify(lhs + areal) == 0 and sp.simplify(x * sp.Symbol("g") - x * sp.Symbol("g")) == 0
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    return equation_check(ok, "sympy", "x ÿ − y ẍ + d(l²θ')/dt simplifies to 0, and gx = gl sin θ")
+
+
+def check_chain_rule() -> EquationCheck:
+    """Line 72: θ(t) = Θ(a + bt) gives θ' = bΘ', θ'' = b²Θ'' (sympy, Θ arbitrary)."""
+    import sympy as sp
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    a, b, t, s = sp.symbols("a b t s")
+    big = sp.Function("Theta")
+    theta = big(a + b * t)
+    at = {s: a + b * t}
+    first = sp.simplify(theta.diff(t) - b * big(s).diff(s).subs(at))
+    second = sp.simplify(theta.diff(t, 2) - b**2 * big(s).diff(s, 2).subs(at))
+    return equation_check(
+        first == 0 and second == 0,
+        "sympy",
+        "dθ/dt − b dθ/dl and d²θ/dt² − b² d²θ/dl² simplify to 0 for θ(t) = Θ(a + bt)",
+    )
+
+
+def check_riccati() -> EquationCheck:
+    """Line 102 (and (8)) numerically: θ from (7) by an ODE solve, z = θ'/θ, then the residual
+    of dz/dl + z² + 2z/l + g/(b²l) by finite differences (mpmath, 30 digits)."""
+    import mpmath
+
+    with mpmath.workdps(30):
+        k = mpmath.mpf(3) / 2  # g/b² in 1/m
+        f = mpmath.odefun(lambda x, y: [y[1], -(2 * y[1] + k * y[0]) / x], 1, [1, 0])
+        worst = mpmath.mpf(0)
+        for length in (mpmath.mpf("1.3"), mpmath.mpf("2.2"), mpmath.mpf("3.1")):
+
+            def z(x: Any) -> Any:
+                theta, dtheta = f(x)
+                return dtheta / theta
+
+            dz = mpmath.diff(z, length)
+            residual = dz + z(length) ** 2 + 2 * z(length) / length + k / length
+            v = z(length) + 1 / length
+            dv = dz - 1 / length**2
+            residual8 = dv + v**2 + k / length
+            worst = max(worst, abs(residual), abs(residual8))
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    return equation_check(
+        worst < 1e-6,
+        "numeric",
+        f"θ of (7) by mpmath.odefun from l = 1: "
+        f"the residuals of line 102 and of (8) are at most {float(worst):.1e}",
+    )
