@@ -21,7 +21,12 @@ from pendcli.core.ledger_check import EquationCheck
 __all__ = [
     "check_bob_equations",
     "check_chain_rule",
+    "check_curvature",
+    "check_eq16",
     "check_riccati",
+    "check_second_form",
+    "check_x_is_xi",
+    "reference_at_beta",
     "reference_bessel_general",
     "reference_bessel_past_alpha_prime",
     "reference_bessel_past_beta",
@@ -31,9 +36,12 @@ __all__ = [
     "reference_chain_rule",
     "reference_compound",
     "reference_curvature",
+    "reference_elongation_root",
     "reference_eq27",
     "reference_graphical",
+    "reference_initial_data",
     "reference_motion_in_l",
+    "reference_phi_prime_series",
     "reference_phi_series",
     "reference_psi",
     "reference_riccati",
@@ -41,6 +49,7 @@ __all__ = [
     "reference_slow_vertical",
     "reference_small_angle",
     "reference_u_of_x",
+    "reference_x_is_xi",
     "reference_zero_length",
 ]
 
@@ -330,30 +339,33 @@ def reference_graphical() -> Any:
 
 
 def reference_curvature() -> Any:
-    """The curvature u''/(1 + u'²)^(3/2) of the exact path, at amplitude ε, through ε¹."""
-    import sympy as sp
-
-    eps = sp.Symbol("eps_", positive=True)
+    """The curvature of the exact path at small slopes (« au même degré d'approximation »,
+    line 140): κ = d²u/dz², u(z) of (9) with x = z/c; θ = u/z (l = z, line 134)."""
     zl, cl = _symbols("zl", "cl")
-    u = eps * _trajectory(zl, cl)
-    kappa = u.diff(zl, 2) / (1 + u.diff(zl) ** 2) ** sp.Rational(3, 2)
-    exact = {"u": u, "kappa": kappa, "theta": u / zl}
-    return _reference(exact, "the curvature of the exact path", scale=eps, order=2)
+    u = _trajectory(zl, cl)
+    kappa = u.diff(zl, 2)
+    at_c = (kappa / u).subs(zl, cl)  # the constant K of κ = K u, if there were one
+    exact = {"u": u, "kappa": kappa, "theta": u / zl, "K": at_c}
+    return _reference(exact, "the exact path's u''")
 
 
-def reference_phi_series() -> Any:
-    """φ = √x J₁(2√x) (the text's own identification, line 160), x scaled by ε, through ε⁴."""
+def _phi_series(order: int) -> Any:
     import sympy as sp
 
     eps = sp.Symbol("eps_", positive=True)
     (x,) = _symbols("x")
-    phi = _phi(eps * x)
-    return _reference(
-        {"x": eps * x, "varphi": phi, "dvarphi_dx": sp.diff(_phi(x), x).subs(x, eps * x)},
-        "φ = √x J₁(2√x)",
-        scale=eps,
-        order=5,
-    )
+    exact = {"x": eps * x, "varphi": _phi(eps * x), "dvarphi_dx": _phi(x).diff(x).subs(x, eps * x)}
+    return _reference(exact, "φ = √x J₁(2√x)", scale=eps, order=order)
+
+
+def reference_phi_series() -> Any:
+    """φ = √x J₁(2√x) (the text's own identification, line 160), x scaled by ε, through ε⁴."""
+    return _phi_series(5)
+
+
+def reference_phi_prime_series() -> Any:
+    """The same through ε³, the last term (11) prints."""
+    return _phi_series(4)
 
 
 def reference_zero_length() -> Any:
@@ -536,4 +548,182 @@ def check_riccati() -> EquationCheck:
         "numeric",
         f"θ of (7) by mpmath.odefun from l = 1: "
         f"the residuals of line 102 and of (8) are at most {float(worst):.1e}",
+    )
+
+
+def _elongation_root() -> Any:
+    """The first x > 0 where θ ∝ φ/x = J₁(2√x)/√x is stationary (mpmath, 40 digits, the
+    derivative taken analytically: d/dx J₁(2√x)/√x = J₁'(2√x)/x − J₁(2√x)/(2x√x))."""
+    import mpmath
+
+    with mpmath.workdps(40):
+
+        def slope(x: Any) -> Any:
+            root = mpmath.sqrt(x)
+            return mpmath.besselj(1, 2 * root, derivative=1) / x - mpmath.besselj(1, 2 * root) / (
+                2 * x * root
+            )
+
+        return mpmath.findroot(slope, 6.5)
+
+
+def mpmath_str(value: Any) -> str:
+    import mpmath
+
+    return mpmath.nstr(value, 40)
+
+
+def reference_elongation_root() -> Any:
+    """x = ξ, the first elongation (where d(φ/x)/dx = 0, found numerically), z = 2√ξ."""
+    import sympy as sp
+
+    xi = sp.Float(mpmath_str(_elongation_root()), 40)
+    return _reference({"x": xi, "z": 2 * sp.sqrt(xi)}, "the first root of d(φ/x)/dx = 0")
+
+
+def reference_x_is_xi() -> Any:
+    """Line 112, x = gl/b², at the elongation x = ξ."""
+    g, length, b = _symbols("g", "l", "b")
+    return _reference({"xi": g * length / b**2}, "x = gl/b² at x = ξ")
+
+
+def reference_at_beta() -> Any:
+    """u of (9) at β, the first root of φ (β = j₁,₁²/4: φ = √x J₁(2√x))."""
+    import mpmath
+    import sympy as sp
+
+    with mpmath.workdps(30):
+        beta = sp.Float(str(mpmath.besseljzero(1, 1) ** 2 / 4), 30)
+    (x,) = _symbols("x")
+    exact = {k: v.subs(x, beta) for k, v in _bessel_exact().items()}
+    return _reference(exact, "u of (9) at the root β = 3.670 of φ")
+
+
+def reference_initial_data() -> Any:
+    """u = θl, x = gl/b² at t = 0 (l = a): u0 = aθ0, u'0 = (b²/g)(θ0 + a ω0/b) by the chain
+    rule; A, B solved from u0 = Aφ0, u'0 = Aφ'0 + B/φ0 ((17), (18) at x0); C = A + B/(φ0φ'0)."""
+    import sympy as sp
+
+    a, b, g, theta0, omega0, phi0, dphi0, big_a, big_b = _symbols(
+        "a", "b", "g", "theta0", "omega0", "varphi0", "varphip0", "A", "B"
+    )
+    u0 = a * theta0
+    du0 = b**2 / g * (theta0 + a * omega0 / b)  # d(θl)/dx = (dl/dx)(θ + l dθ/dl)
+    solved = sp.solve([u0 - big_a * phi0, du0 - big_a * dphi0 - big_b / phi0], [big_a, big_b])
+    exact = {
+        "u0": u0,
+        "up0": du0,
+        "A": solved[big_a],
+        "B": solved[big_b],
+        "C": solved[big_a] + solved[big_b] / (phi0 * dphi0),
+    }
+    return _reference(exact, "the initial data θ0, ω0 at l = a")
+
+
+def check_x_is_xi() -> EquationCheck:
+    """Lines 192-194: l = (b²/g)ξ solved for b > 0 is √(gl/ξ) (sympy)."""
+    import sympy as sp
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    length, b, g, xi = sp.symbols("l b g xi", positive=True)
+    roots = sp.solve(sp.Eq(length, b**2 / g * xi), b)
+    ok = len(roots) == 1 and sp.simplify(roots[0] - sp.sqrt(g * length / xi)) == 0
+    return equation_check(ok, "sympy", f"l = (b²/g)ξ gives b = {roots}")
+
+
+def _numeric_u(x0: Any, u0: Any, du0: Any) -> Any:
+    """u of (9) from x0 by mpmath's Taylor ODE solver (independent of the Bessel forms)."""
+    import mpmath
+
+    return mpmath.odefun(lambda x, y: [y[1], -y[0] / x], x0, [u0, du0])
+
+
+def check_second_form() -> EquationCheck:
+    """Line 298 and (21): u = Cφ − B/φ' + Bφ∫dx/(xφ'²), C = A + B/(φ0φ'0), against u of (9)
+    solved numerically from u0 = Aφ0, u'0 = Aφ'0 + B/φ0 (mpmath odefun and quad)."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    with mpmath.workdps(25):
+
+        def phi(x: Any) -> Any:
+            return mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
+
+        def dphi(x: Any) -> Any:
+            return mpmath.besselj(0, 2 * mpmath.sqrt(x))
+
+        x0, big_a, big_b = mpmath.mpf("0.3"), mpmath.mpf("0.7"), mpmath.mpf("-0.4")
+        u = _numeric_u(x0, big_a * phi(x0), big_a * dphi(x0) + big_b / phi(x0))
+        big_c = big_a + big_b / (phi(x0) * dphi(x0))
+        worst = mpmath.mpf(0)
+        for x in (mpmath.mpf("0.6"), mpmath.mpf("1.1"), mpmath.mpf("1.4")):
+            integral = mpmath.quad(lambda s: 1 / (s * dphi(s) ** 2), [x0, x])
+            form = big_c * phi(x) - big_b / dphi(x) + big_b * phi(x) * integral
+            worst = max(worst, abs(form - u(x)[0]))
+    return equation_check(
+        worst < 1e-12,
+        "numeric",
+        f"against (9) by mpmath.odefun from x0 = 0.3 to x = 1.4 (below "
+        f"the root 1.446 of φ'): largest difference {float(worst):.1e}",
+    )
+
+
+def check_curvature() -> EquationCheck:
+    """Lines 140-142: the curvature u''/(1 + u'²)^(3/2) of the path u(z) of (9) (x = z/c,
+    u = ε(√x J₁ + √x Y₁)), by mpmath: κ/u is not constant along the path, κz/u is."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    with mpmath.workdps(25):
+        c, eps = mpmath.mpf(1), mpmath.mpf("1e-6")
+
+        def u(z: Any) -> Any:
+            x = z / c
+            root = mpmath.sqrt(x)
+            return eps * root * (mpmath.besselj(1, 2 * root) + mpmath.bessely(1, 2 * root))
+
+        def kappa(z: Any) -> Any:
+            return mpmath.diff(u, z, 2) / (1 + mpmath.diff(u, z) ** 2) ** 1.5
+
+        points = (mpmath.mpf("0.9"), mpmath.mpf("2.3"), mpmath.mpf("4.1"))
+        per_u = [kappa(z) / u(z) for z in points]
+        per_theta = [kappa(z) * z / u(z) for z in points]
+    spread = max(per_u) - min(per_u)
+    constant = max(abs(v + 1 / c) for v in per_theta)
+    return equation_check(
+        spread < 1e-9,
+        "numeric",
+        f"κ/u at z = 0.9, 2.3, 4.1 (c = 1): {', '.join(mpmath.nstr(v, 5) for v in per_u)}; "
+        f"κz/u differs from −1/c by at most {float(constant):.1e}",
+        corrected="κ ≈ −u/(cz) = −(g/b²)θ: proportional to the angle θ = u/z, not to u"
+        if constant < 1e-9
+        else "",
+    )
+
+
+def check_eq16() -> EquationCheck:
+    """(16): ξ = z²/4 (z = 2√x, sympy), and b²/(4g) with the adopted b = 0,35 m/s (line 218)
+    against the printed 0,00313 m, at its three significant digits, for g = 9,80 and 9,81."""
+    import sympy as sp
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    z = sp.Symbol("z", positive=True)
+    xi = (z / 2) ** 2  # x at z = 2√x
+    identity = sp.simplify(sp.Rational(1) * xi - z**2 / 4) == 0
+    b = sp.Rational(35, 100)
+    coefficients = {g: b**2 / (4 * g) for g in (sp.Rational(980, 100), sp.Rational(981, 100))}
+    printed = sp.Rational(313, 100000)
+    half_unit = sp.Rational(1, 200000)
+    close = {g: abs(c - printed) <= half_unit for g, c in coefficients.items()}
+    shown = ", ".join(f"g = {float(g)}: {float(c):.6f}" for g, c in coefficients.items())
+    return equation_check(
+        identity and any(close.values()),
+        "sympy",
+        f"ξ = z²/4 exactly; b²/(4g) with b = 0,35: {shown}; 0,00313 is b²/(4g) rounded for "
+        f"g = 9,80 ({'yes' if close[sp.Rational(980, 100)] else 'no'}), for g = 9,81 "
+        f"({'yes' if close[sp.Rational(981, 100)] else 'no'}, 0,00312)",
     )
