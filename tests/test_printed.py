@@ -38,6 +38,8 @@ INCONSISTENT = {
     "charbonnier.result.ec-monomial",
     # line 80, (6): d²(θl)/dt² (L T^-2) beside (g/b²) sin θ (L^-1): the derivative is in l.
     "lecornu.eq.6",
+    # line 640, (28): (2γ²t³ − 3γt) adds a time to a number: 2γ³t³ (as (29) prints 10γ³t³).
+    "lecornu.eq.28",
     # line 561: (π² − 12b)/(16g) adds a number to a speed b: (π² − 12)b/(16g).
     "lecornu.result.vertical_to_elongation",
     # lines 920-932: the same (π² ± 12b), and 1/g for b/g at line 920.

@@ -22,9 +22,13 @@ __all__ = [
     "check_bob_equations",
     "check_chain_rule",
     "check_curvature",
+    "check_elongation_lengths",
     "check_eq16",
+    "check_half_period_root",
     "check_riccati",
     "check_second_form",
+    "check_shortening",
+    "check_theta_in_time",
     "check_x_is_xi",
     "reference_at_beta",
     "reference_bessel_general",
@@ -35,9 +39,12 @@ __all__ = [
     "reference_cartesian_uniform",
     "reference_chain_rule",
     "reference_compound",
+    "reference_cr_note",
     "reference_curvature",
+    "reference_elongation_lengths",
     "reference_elongation_root",
     "reference_eq27",
+    "reference_eq27_from_9",
     "reference_graphical",
     "reference_initial_data",
     "reference_motion_in_l",
@@ -45,6 +52,9 @@ __all__ = [
     "reference_phi_series",
     "reference_psi",
     "reference_riccati",
+    "reference_root_epsilon",
+    "reference_shortening",
+    "reference_slow_exact",
     "reference_slow_pendulum",
     "reference_slow_vertical",
     "reference_small_angle",
@@ -441,7 +451,7 @@ def reference_eq27() -> Any:
     u, t, p = _eq27_solution()
     (gamma,) = _symbols("gamma")
     theta = sp.expand(sp.series(u / (1 + p * gamma * t), p, 0, 3).removeO())
-    return _reference({"u": u, "theta": theta}, "(27) solved to p²", scale=p, order=3)
+    return _reference({"uA": u, "theta": theta}, "(27) solved to p²", scale=p, order=3)
 
 
 def _slow_exact(psi_value: Any) -> dict[str, Any]:
@@ -455,7 +465,9 @@ def _slow_exact(psi_value: Any) -> dict[str, Any]:
     length = a + b * t
     phi = 2 / p + psi_value
     big_r = rho * a ** sp.Rational(3, 4)
-    theta = big_r * length ** sp.Rational(-3, 4) * sp.sin(2 / b * sp.sqrt(g * length) - phi)
+    # (2/b)√(gl) − φ = (2/p)(√(1 + pγt) − 1) − ψ, rationalised so that its series in p exists
+    argument = 2 * gamma * t / (sp.sqrt(1 + p * gamma * t) + 1) - psi_value
+    theta = big_r * length ** sp.Rational(-3, 4) * sp.sin(argument)
     return {"theta": theta, "gamma": gamma, "r": gamma, "b": b, "R": big_r, "phi": phi}
 
 
@@ -464,6 +476,12 @@ def reference_slow_pendulum() -> Any:
     (psi,) = _symbols("psi")
     (p,) = _symbols("p")
     return _reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, ρ", scale=p, order=2)
+
+
+def reference_slow_exact() -> Any:
+    """(22) in t, exactly (lines 581-587)."""
+    (psi,) = _symbols("psi")
+    return _reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, R")
 
 
 def reference_slow_vertical() -> Any:
@@ -726,4 +744,210 @@ def check_eq16() -> EquationCheck:
         f"ξ = z²/4 exactly; b²/(4g) with b = 0,35: {shown}; 0,00313 is b²/(4g) rounded for "
         f"g = 9,80 ({'yes' if close[sp.Rational(980, 100)] else 'no'}), for g = 9,81 "
         f"({'yes' if close[sp.Rational(981, 100)] else 'no'}, 0,00312)",
+    )
+
+
+def reference_cr_note() -> Any:
+    """The 1894 note's formula against (22) (as for (25)), with k = p and ω = ψ + p/8."""
+    (psi, p) = _symbols("psi", "p")
+    exact = _slow_exact(psi)
+    exact.update({"k": p, "omega": psi + p / 8})
+    return _reference(exact, "(22) with k = p, ω = ψ + p/8", scale=p, order=2)
+
+
+def reference_eq27_from_9() -> Any:
+    """(9) in t: x = (1 + pγt)/p² (line 614), so d²u/dx² = (p/γ)² d²u/dt², with (9)'s
+    d²u/dx² = −u/x."""
+    p, gamma, t, u = _symbols("p", "gamma", "t", "u")
+    x = (1 + p * gamma * t) / p**2
+    return _reference({"d2u_dt2": (gamma / p) ** 2 * (-u / x), "r": gamma}, "(9) in t")
+
+
+@cache
+def _epsilon_root() -> tuple[Any, Any]:
+    """The root γt = π + ε of (27)'s solution to p² (not (28) as printed): ε = e1 p + e2 p²."""
+    import sympy as sp
+
+    u, t, p = _eq27_solution()
+    (gamma,) = _symbols("gamma")
+    e1, e2 = sp.symbols("e1 e2")
+    eps = e1 * p + e2 * p**2
+    at_root = sp.series(u.subs(t, (sp.pi + eps) / gamma), p, 0, 3).removeO()
+    first = sp.solve(sp.expand(at_root).coeff(p, 1), e1)[0]
+    second = sp.solve(sp.expand(at_root.subs(e1, first)).coeff(p, 2), e2)[0]
+    return sp.simplify(first * p + second * p**2), p
+
+
+def reference_root_epsilon() -> Any:
+    """Lines 642-664: ε the root of u = 0 near γt = π, t = (π + ε)/γ, γ = √(g/a),
+    b = p√(ga); through p²."""
+    import sympy as sp
+
+    eps, p = _epsilon_root()
+    a, g = _symbols("a", "g")
+    exact = {
+        "epsilon": eps,
+        "t": (sp.pi + eps) / sp.sqrt(g / a),
+        "gamma": sp.sqrt(g / a),
+        "b": p * sp.sqrt(g * a),
+    }
+    return _reference(exact, "the root of (27)'s solution near γt = π", scale=p, order=3)
+
+
+def reference_shortening() -> Any:
+    """(3) with b → −b (line 694: « nous mettons en évidence le signe de b »), then z = a/b − t,
+    s = g/b (line 696): dθ/dt = −dθ/dz, d²θ/dt² = d²θ/dz²."""
+    a, b, t, g, zt, dtheta_dzt = _symbols("a", "b", "t", "g", "zt", "dtheta_dzt")
+    import sympy as sp
+
+    exact = _cartesian_exact(True)
+    d2 = exact["d2theta_dt2"].subs(b, -b)  # θ'' of (3) for l = a − bt
+    dtheta_dt = sp.Symbol("dtheta_dt", real=True)
+    in_z = d2.subs({t: a / b - zt, dtheta_dt: -dtheta_dzt}, simultaneous=True)
+    return _reference(
+        {"d2theta_dt2": d2, "d2theta_dzt2": in_z, "s": g / b}, "(3) for l = a − bt, z = a/b − t"
+    )
+
+
+def reference_elongation_lengths() -> Any:
+    """Lines 541-547: l from (23) and φ from (24) written at l'' (exact, no approximation)."""
+    import sympy as sp
+
+    b, g, lpp, lam = _symbols("b", "g", "lpp", "lam")
+    phi = 2 / b * sp.sqrt(g * lpp) - (2 * lam + 1) * sp.pi / 2 + 3 * b / (4 * sp.sqrt(g * lpp))
+    length = b**2 / (4 * g) * (phi + lam * sp.pi) ** 2
+    return _reference({"phi": phi, "l": length}, "(23) at l, (24) at l''")
+
+
+def check_elongation_lengths() -> EquationCheck:
+    """Lines 543-547 numerically: for b = 0,1, g = 9,81, λ = 7, φ = 0,3, l from (23) and l''
+    the root of (24) (mpmath.findroot); both printed right sides against (4g/b²)(l'' − l)."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    with mpmath.workdps(30):
+        b, g, lam, phi = mpmath.mpf("0.1"), mpmath.mpf("9.81"), 7, mpmath.mpf("0.3")
+        length = b**2 / (4 * g) * (phi + lam * mpmath.pi) ** 2
+        eq24 = lambda y: (  # noqa: E731
+            2 / b * mpmath.sqrt(g * y)
+            - phi
+            - (2 * lam + 1) * mpmath.pi / 2
+            + 3 * b / (4 * mpmath.sqrt(g * y))
+        )
+        lpp = mpmath.findroot(eq24, length * 1.1)
+        lhs = 4 * g / b**2 * (lpp - length)
+        small = mpmath.pi / 2 - 3 * b / (4 * mpmath.sqrt(g * lpp))
+        first = (lam * mpmath.pi + phi + small) ** 2 - (lam * mpmath.pi + phi) ** 2
+        second = 2 * (lam * mpmath.pi + phi) * small + small**2
+        worst = max(abs(lhs - first), abs(lhs - second))
+    return equation_check(
+        worst < 1e-20, "numeric", f"l'' by findroot of (24): differences at most {float(worst):.1e}"
+    )
+
+
+def _orders(errors: list[Any], ps: list[Any]) -> list[float]:
+    import mpmath
+
+    return [
+        float(mpmath.log(errors[i] / errors[i + 1]) / mpmath.log(ps[i] / ps[i + 1]))
+        for i in range(len(errors) - 1)
+    ]
+
+
+def check_theta_in_time() -> EquationCheck:
+    """Lines 583-591: (22) at l = a + bt against the form in γ, p (equal) and the first-order
+    form (its error falls as p², observed over p = 0,02 … 0,005; mpmath)."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    with mpmath.workdps(30):
+        a, g, big_r, phi, t = (mpmath.mpf(v) for v in ("1", "9.81", "0.2", "0.4", "0.7"))
+        gamma = mpmath.sqrt(g / a)
+        exact_gap, errors, ps = (
+            mpmath.mpf(0),
+            [],
+            [mpmath.mpf(v) for v in ("0.02", "0.01", "0.005")],
+        )
+        for p in ps:
+            b = p * mpmath.sqrt(g * a)
+            eq22 = (
+                big_r
+                * (a + b * t) ** -0.75
+                * mpmath.sin(2 / b * mpmath.sqrt(g * (a + b * t)) - phi)
+            )
+            in_p = (
+                big_r
+                * a**-0.75
+                * (1 + p * gamma * t) ** -0.75
+                * mpmath.sin(2 / p * mpmath.sqrt(1 + p * gamma * t) - phi)
+            )
+            rho = big_r * a**-0.75
+            first = (
+                rho
+                * (1 - 0.75 * p * gamma * t)
+                * mpmath.sin(2 / p + gamma * t - p * gamma**2 * t**2 / 4 - phi)
+            )
+            exact_gap = max(exact_gap, abs(eq22 - in_p))
+            errors.append(abs(eq22 - first))
+        orders = _orders(errors, ps)
+    return equation_check(
+        exact_gap < 1e-25 and all(o > 1.8 for o in orders),
+        "numeric",
+        f"(22) = the γ, p form to {float(exact_gap):.0e}; the first-order form's error "
+        f"{', '.join(f'{float(e):.1e}' for e in errors)}, observed order "
+        f"{', '.join(f'{o:.2f}' for o in orders)} (claimed: through p)",
+    )
+
+
+def check_half_period_root() -> EquationCheck:
+    """Lines 642-664: the first zero after t = 0 of (27)'s solution (mpmath.odefun from
+    u(0) = 0, u'(0) = γ, γ = 1), against γt = π + pπ²/4 + 3p²π/32: the error falls as p³."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    ps = [mpmath.mpf(v) for v in ("0.04", "0.02", "0.01")]
+    errors = []
+    with mpmath.workdps(20):
+        for p in ps:
+            u = mpmath.odefun(lambda t, y, p=p: [y[1], -y[0] / (1 + p * t)], 0, [0, 1])
+            root = mpmath.findroot(lambda t, u=u: u(t)[0], mpmath.pi * (1 + p))
+            claimed = mpmath.pi + p * mpmath.pi**2 / 4 + 3 * p**2 * mpmath.pi / 32
+            errors.append(abs(root - claimed))
+        orders = _orders(errors, ps)
+    return equation_check(
+        all(o > 2.7 for o in orders),
+        "numeric",
+        f"zero of (27) by odefun: error of π + pπ²/4 + 3p²π/32 at p = 0.04, 0.02, 0.01: "
+        f"{', '.join(f'{float(e):.1e}' for e in errors)}, observed order "
+        f"{', '.join(f'{o:.2f}' for o in orders)} (claimed 3)",
+        observed_order=min(orders),
+    )
+
+
+def check_shortening() -> EquationCheck:
+    """Lines 694-698: (1) with l = a − bt gives (a − bt)θ'' − 2bθ' + g sin θ = 0; with
+    z = a/b − t and s = g/b it is z θ_zz + 2θ_z + s sin θ = 0 (sympy, θ arbitrary)."""
+    import sympy as sp
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    a, b, g, t, z = sp.symbols("a b g t z", positive=True)
+    big = sp.Function("Theta")
+    theta = big(a / b - t)
+    length = a - b * t
+    eq1 = length * theta.diff(t, 2) + 2 * length.diff(t) * theta.diff(t) + g * sp.sin(theta)
+    printed = length * theta.diff(t, 2) - 2 * b * theta.diff(t) + g * sp.sin(theta)
+    in_z = z * big(z).diff(z, 2) + 2 * big(z).diff(z) + g / b * sp.sin(big(z))
+    ok = (
+        sp.simplify(eq1 - printed) == 0
+        and sp.simplify((eq1 / b).doit().subs(t, a / b - z).doit() - in_z) == 0
+    )
+    return equation_check(
+        ok,
+        "sympy",
+        "(1) with l = a − bt minus line 694, and line 694 / b "
+        "in z = a/b − t minus (30), simplify to 0",
     )
