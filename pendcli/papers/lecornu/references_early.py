@@ -28,6 +28,14 @@ __all__ = [
     "check_riccati",
     "check_second_form",
     "check_shortening",
+    "check_table_amplitudes",
+    "check_table_intervals",
+    "check_table_j0",
+    "check_table_j1_roots",
+    "check_table_lengths",
+    "check_table_speeds",
+    "check_table_times",
+    "check_table_vertical_lengths",
     "check_theta_in_time",
     "check_x_is_xi",
     "reference_at_beta",
@@ -951,3 +959,121 @@ def check_shortening() -> EquationCheck:
         "(1) with l = a − bt minus line 694, and line 694 / b "
         "in z = a/b − t minus (30), simplify to 0",
     )
+
+
+# --- the numerical tables of lines 206-256 (b = 0,35 m/s, a pendulum of 1 m at z = 17,96) ----
+# Each printed value is judged against the value computed, to the printed decimals, rounded or
+# chopped (line 210: « Je néglige les décimales qui suivent la seconde »).
+
+
+def _matches(printed: float, value: Any, decimals: int) -> bool:
+    import mpmath
+
+    scale = mpmath.mpf(10) ** decimals
+    rounded = mpmath.nint(value * scale) / scale
+    chopped = (mpmath.floor(abs(value) * scale) / scale) * mpmath.sign(value)
+    return any(abs(printed - float(v)) < 1e-9 for v in (rounded, chopped))
+
+
+def _table_check(
+    what: str, printed: list[float], computed: list[Any], decimals: int
+) -> EquationCheck:
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    wrong = [(p, c) for p, c in zip(printed, computed, strict=True) if not _matches(p, c, decimals)]
+    shown = ", ".join(mpmath.nstr(c, decimals + 2) for c in computed)
+    corrected = ", ".join(f"{float(c):.{decimals}f}" for c in computed) if wrong else ""
+    off = "; ".join(f"{p} printed, {float(c):.{decimals + 2}f} computed" for p, c in wrong)
+    return equation_check(
+        not wrong,
+        "numeric",
+        f"{what}: computed {shown}"
+        + (
+            f"; off: {off}"
+            if wrong
+            else "; every printed value is the computed one rounded or chopped"
+        ),
+        corrected=corrected,
+    )
+
+
+def _j2_roots() -> list[Any]:
+    import mpmath
+
+    return [mpmath.besseljzero(2, k) for k in range(1, 6)]
+
+
+def check_table_speeds() -> EquationCheck:
+    """Line 216: b = √(g/ξ) for l = 1 m, ξ = z²/4 at the five roots of J₂ (g = 9,81)."""
+    import mpmath
+
+    speeds = [mpmath.sqrt(mpmath.mpf("9.81") / (z**2 / 4)) for z in _j2_roots()]
+    return _table_check("√(g/ξ) in m/s", [1.22, 0.74, 0.54, 0.42, 0.35], speeds, 2)
+
+
+def check_table_lengths() -> EquationCheck:
+    """Line 224: the lengths at the elongations, l = (z/17,96)² m by (16) with l = 1 m at the
+    largest root (exact roots of J₂, mpmath)."""
+    roots = _j2_roots()[::-1]
+    lengths = [(z / roots[0]) ** 2 for z in roots]
+    return _table_check("(z/z₅)² in m", [1, 0.68, 0.42, 0.22, 0.08], lengths, 2)
+
+
+def check_table_times() -> EquationCheck:
+    """Line 228: the instants (1 − l)/0,35 of the elongations, from the lengths as printed at
+    line 224 (the text's own step); the exact roots give 0, 0,918, 1,661, 2,230, 2,624."""
+    import mpmath
+
+    lengths = [mpmath.mpf(v) for v in ("1", "0.68", "0.42", "0.22", "0.08")]
+    times = [(1 - v) / mpmath.mpf("0.35") for v in lengths]
+    return _table_check("(1 − l)/0,35 in s", [0, 0.94, 1.66, 2.23, 2.63], times, 2)
+
+
+def check_table_intervals() -> EquationCheck:
+    """Line 232: the intervals between the elongations and the zero length (1/0,35 = 2,86 s
+    after the start), from the lengths as printed at line 224."""
+    import mpmath
+
+    lengths = [mpmath.mpf(v) for v in ("1", "0.68", "0.42", "0.22", "0.08", "0")]
+    gaps = [(lengths[i] - lengths[i + 1]) / mpmath.mpf("0.35") for i in range(5)]
+    return _table_check("Δl/0,35 in s", [0.94, 0.72, 0.57, 0.40, 0.23], gaps, 2)
+
+
+def check_table_j0() -> EquationCheck:
+    """Line 240: J₀ at the roots of (15) as printed (5,14 … 17,96), mpmath; at the exact roots
+    J₀ is −0,1323, +0,0645, −0,0400, +0,0279, −0,0209."""
+    import mpmath
+
+    values = [mpmath.besselj(0, mpmath.mpf(z)) for z in ("5.14", "8.41", "11.62", "14.80", "17.96")]
+    return _table_check("J₀(z)", [-0.130, 0.072, -0.040, 0.027, -0.021], values, 3)
+
+
+def check_table_amplitudes() -> EquationCheck:
+    """Line 246: θ/θ0 = J₀(z)/J₀(17,96) at the elongations (line 236's θ = (g/b²)J₀(z)), and
+    1/J₀(17,96) at zero length (line 242's limit 1), exact roots of J₂ (mpmath)."""
+    import mpmath
+
+    roots = _j2_roots()[::-1]
+    base = mpmath.besselj(0, roots[0])
+    ratios = [mpmath.besselj(0, z) / base for z in roots] + [1 / base]
+    return _table_check("θ/θ0", [1, -1.27, 1.86, -3.45, 6.19, -47.62], ratios, 2)
+
+
+def check_table_j1_roots() -> EquationCheck:
+    """Line 252: the roots of J₁ below 20, from the largest (mpmath.besseljzero)."""
+    import mpmath
+
+    roots = [mpmath.besseljzero(1, k) for k in range(6, 0, -1)]
+    return _table_check("j₁,k", [19.61, 16.47, 13.32, 10.17, 7.01, 3.83], roots, 2)
+
+
+def check_table_vertical_lengths() -> EquationCheck:
+    """Line 256: the lengths at the verticals « en vertu de (16) », 0,00313 z² m at the roots
+    as printed at line 252."""
+    import mpmath
+
+    roots = [mpmath.mpf(v) for v in ("19.61", "16.47", "13.32", "10.17", "7.01", "3.83")]
+    lengths = [mpmath.mpf("0.00313") * z**2 for z in roots]
+    return _table_check("0,00313 z² in m", [1.21, 0.85, 0.55, 0.32, 0.15, 0.04], lengths, 2)
