@@ -67,6 +67,7 @@ def _namespace(names: tuple[str, ...], functions: tuple[str, ...]) -> dict[str, 
 
     space: dict[str, Any] = {f: getattr(sp, f) for f in FUNCTIONS}
     space.update({"pi": sp.pi, "Rational": sp.Rational, "Integer": sp.Integer, "Float": sp.Float})
+    space["oo"] = sp.oo  # an infinite limit of an integral, ∫_0^∞
     space["Integral"] = sp.Integral  # Integral(f, (x, a, b)), the paper's ∫_a^b f dx
     space["Derivative"] = sp.Derivative  # Derivative(f, t, 2): d²f/dt², left unevaluated
     space.update({n: sp.Symbol(n, real=True) for n in names})
