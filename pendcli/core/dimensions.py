@@ -2,8 +2,9 @@
 
 Every equation's two sides, every sum's terms and every argument of sin, cos, tan, exp, log,
 the inverse functions and besselj (order and argument) must agree (arguments: be
-dimensionless); a power of a dimensioned quantity needs a rational exponent. The verdict is ``consistent``, ``dimensionless`` (every
-quantity a pure number) or ``inconsistent`` with the first disagreement found.
+dimensionless); a power of a dimensioned quantity needs a rational exponent. The verdict is
+``consistent``, ``dimensionless`` (every quantity a pure number) or ``inconsistent`` with the
+first disagreement found.
 """
 
 from __future__ import annotations

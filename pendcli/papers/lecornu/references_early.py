@@ -25,6 +25,8 @@ __all__ = [
     "check_elongation_lengths",
     "check_eq16",
     "check_half_period_root",
+    "check_integral_solution",
+    "check_quadrature_identities",
     "check_riccati",
     "check_second_form",
     "check_shortening",
@@ -55,10 +57,13 @@ __all__ = [
     "reference_eq27_from_9",
     "reference_graphical",
     "reference_initial_data",
+    "reference_integral_solution",
+    "reference_large_lambda",
     "reference_motion_in_l",
     "reference_phi_prime_series",
     "reference_phi_series",
     "reference_psi",
+    "reference_quadrature",
     "reference_riccati",
     "reference_root_epsilon",
     "reference_shortening",
@@ -1077,3 +1082,99 @@ def check_table_vertical_lengths() -> EquationCheck:
     roots = [mpmath.mpf(v) for v in ("19.61", "16.47", "13.32", "10.17", "7.01", "3.83")]
     lengths = [mpmath.mpf("0.00313") * z**2 for z in roots]
     return _table_check("0,00313 z² in m", [1.21, 0.85, 0.55, 0.32, 0.15, 0.04], lengths, 2)
+
+
+def reference_integral_solution() -> Any:
+    """Lines 386-402: v, w as the integrals they are set to (line 388, 392), u = C(v + w sin α);
+    their second derivatives in x taken under the integral sign (sympy)."""
+    import sympy as sp
+
+    x, alpha, omega, big_c = _symbols("x", "alpha", "omega", "C")
+    half = (omega, 0, sp.pi / 2)
+    v = x * sp.Integral(sp.cos(2 * sp.sqrt(x) * sp.cos(omega) + alpha) * sp.sin(omega) ** 2, half)
+    w = x * sp.Integral(sp.exp(-2 * sp.sqrt(x) * sp.tan(omega)) / sp.cos(omega) ** 3, half)
+    u = big_c * (v + w * sp.sin(alpha))
+    exact = {"v": v, "w": w, "u": u, "d2v_dx2": v.diff(x, 2), "d2w_dx2": w.diff(x, 2)}
+    exact["d2u_dx2"] = u.diff(x, 2)
+    return _reference(exact, "v, w of lines 388, 392, differentiated under ∫")
+
+
+def reference_quadrature() -> Any:
+    """Lines 416-434: identities between definite integrals, judged by quadrature alone;
+    a (here aa) a fixed number above 1, h (here hh) above 2a√x and below 3 (line 442)."""
+    import sympy as sp
+
+    domain = {
+        "aa": (sp.Rational(11, 10), sp.Rational(3, 2)),
+        "hh": (sp.Rational(22, 10), sp.Rational(29, 10)),
+    }
+    return _reference({}, "quadrature", domain=domain)
+
+
+def reference_large_lambda() -> Any:
+    """Line 422: (1 + λ²)^(1/2) for large λ: λ = 1/ε, through ε³."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    return _reference({"lam": 1 / eps}, "λ = 1/ε", scale=eps, order=5)
+
+
+def check_integral_solution() -> EquationCheck:
+    """Lines 396-402 numerically: v, w by mpmath.quad, their second derivatives by
+    mpmath.diff, at x = 0,3 and 0,8 with α = 0,4."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    with mpmath.workdps(20):
+        alpha = mpmath.mpf("0.4")
+
+        def v(x: Any) -> Any:
+            def f(om: Any) -> Any:
+                return mpmath.cos(2 * mpmath.sqrt(x) * mpmath.cos(om) + alpha) * mpmath.sin(om) ** 2
+
+            return x * mpmath.quad(f, [0, mpmath.pi / 2])
+
+        def w(x: Any) -> Any:
+            # with λ = tg ω (line 418, itself checked below by quad)
+            f = lambda s: mpmath.exp(-2 * s * mpmath.sqrt(x)) * mpmath.sqrt(1 + s**2)  # noqa: E731
+            return x * mpmath.quad(f, [0, 1, mpmath.inf])
+
+        worst = mpmath.mpf(0)
+        for x in (mpmath.mpf("0.3"), mpmath.mpf("0.8")):
+            rv = x * mpmath.diff(v, x, 2) + v(x) + mpmath.sqrt(x) / 2 * mpmath.sin(alpha)
+            rw = x * mpmath.diff(w, x, 2) + w(x) - mpmath.sqrt(x) / 2
+            worst = max(worst, abs(rv), abs(rw))
+    return equation_check(
+        worst < 1e-8,
+        "numeric",
+        f"x v'' + v + (√x/2) sin α and x w'' + w − √x/2 "
+        f"by quad and diff at x = 0,3, 0,8: at most {float(worst):.1e}",
+    )
+
+
+def check_quadrature_identities() -> EquationCheck:
+    """Lines 418, 430, 434 at x = 0,2, a = 1,3, h = 2,5 by mpmath.quad (independent of the
+    engine's points)."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    with mpmath.workdps(20):
+        x, a, h = mpmath.mpf("0.2"), mpmath.mpf("1.3"), mpmath.mpf("2.5")
+        r = mpmath.sqrt(x)
+        left = mpmath.quad(
+            lambda om: mpmath.exp(-2 * r * mpmath.tan(om)) / mpmath.cos(om) ** 3,
+            [0, mpmath.pi / 4, mpmath.pi / 2],
+        )
+        right = mpmath.quad(
+            lambda s: mpmath.exp(-2 * s * r) * mpmath.sqrt(1 + s**2), [0, mpmath.inf]
+        )
+        moment = mpmath.quad(lambda s: mpmath.exp(-2 * s * r) * s, [a, mpmath.inf])
+        closed = mpmath.exp(-2 * a * r) * (1 + 2 * a * r) / (4 * x)
+        e1 = mpmath.quad(lambda s: mpmath.exp(-2 * s * r) / s, [a, mpmath.inf])
+        split = mpmath.quad(lambda q: mpmath.exp(-q) / q, [2 * a * r, h]) + mpmath.e1(h)
+        worst = max(abs(left - right), abs(moment - closed), abs(e1 - split))
+    return equation_check(
+        worst < 1e-12, "numeric", f"three identities by quad: at most {float(worst):.1e}"
+    )
