@@ -81,6 +81,12 @@ def _altered(tmp_path: Path, old: str, new: str) -> tuple[dict[str, LedgerRow], 
         ),
         # (30): 2 dθ/dz -> dθ/dz
         ("lecornu.eq.30", "+ 2*dtheta_dzt +", "+ dtheta_dzt +"),
+        # line 555: −3b/(4g) -> −5b/(4g)
+        (
+            "lecornu.result.quarter_time",
+            "- 3*b/(4*g) + pi**2*b/(16*g)'",
+            "- 5*b/(4*g) + pi**2*b/(16*g)'",
+        ),
         # line 656: 3pπ/8 -> 5pπ/8 in the final ε
         ("lecornu.result.epsilon_steps", "= p/4*(pi**2 + 3*p*pi/8)'", "= p/4*(pi**2 + 5*p*pi/8)'"),
     ],

@@ -27,6 +27,7 @@ __all__ = [
     "check_half_period_root",
     "check_integral_solution",
     "check_quadrature_identities",
+    "check_quarter_time",
     "check_riccati",
     "check_second_form",
     "check_shortening",
@@ -64,6 +65,8 @@ __all__ = [
     "reference_phi_series",
     "reference_psi",
     "reference_quadrature",
+    "reference_quarter_oscillation",
+    "reference_quarter_time",
     "reference_riccati",
     "reference_root_epsilon",
     "reference_shortening",
@@ -1177,4 +1180,63 @@ def check_quadrature_identities() -> EquationCheck:
         worst = max(abs(left - right), abs(moment - closed), abs(e1 - split))
     return equation_check(
         worst < 1e-12, "numeric", f"three identities by quad: at most {float(worst):.1e}"
+    )
+
+
+def _quarter_oscillation(scale: Any) -> dict[str, Any]:
+    """Lines 549-555: from a vertical at l ((23): φ = (2/b)√(gl) − λπ) to the next elongation
+    l'' ((24) solved exactly: y = √(gl'') is the larger root of 2y/b + 3b/(4y) = (2/b)√(gl) + π/2),
+    with b scaled by ``scale`` (b²/(gl) small)."""
+    import sympy as sp
+
+    b, g, length = _symbols("b", "g", "l")
+    small_b = scale * b
+    k = 2 / small_b * sp.sqrt(g * length) + sp.pi / 2
+    y = (k * small_b + sp.sqrt(k**2 * small_b**2 - 6 * small_b**2)) / 4
+    return {"lpp": y**2 / g, "b": small_b}
+
+
+def reference_quarter_oscillation() -> Any:
+    """Line 551, through ε⁰ (the orders 1/ε and 1)."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    return _reference(_quarter_oscillation(eps), "(23), (24) solved for l''", scale=eps, order=1)
+
+
+def reference_quarter_time() -> Any:
+    """Line 555, through ε (the orders 1 and b)."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    return _reference(_quarter_oscillation(eps), "(23), (24) solved for l''", scale=eps, order=2)
+
+
+def check_quarter_time() -> EquationCheck:
+    """Lines 549-555: l'' by findroot of (24) from the vertical at l = 1 (g = 9,81); the error
+    of π/2 √(l/g) − 3b/(4g) + π²b/(16g) for (l'' − l)/b falls as b² (mpmath)."""
+    import mpmath
+
+    from pendcli.papers.lecornu.equations_common import equation_check
+
+    errors, bs = [], [mpmath.mpf(v) for v in ("0.02", "0.01", "0.005")]
+    with mpmath.workdps(30):
+        g, length = mpmath.mpf("9.81"), mpmath.mpf(1)
+        for b in bs:
+            k = 2 / b * mpmath.sqrt(g * length) + mpmath.pi / 2
+            y = mpmath.findroot(lambda y, b=b, k=k: 2 * y / b + 3 * b / (4 * y) - k, mpmath.sqrt(g))
+            exact = (y**2 / g - length) / b
+            claimed = (
+                mpmath.pi / 2 * mpmath.sqrt(length / g)
+                - 3 * b / (4 * g)
+                + mpmath.pi**2 * b / (16 * g)
+            )
+            errors.append(abs(exact - claimed))
+        orders = _orders(errors, bs)
+    return equation_check(
+        all(o > 1.8 for o in orders),
+        "numeric",
+        f"errors {', '.join(f'{float(e):.1e}' for e in errors)} at b = 0,02 … 0,005, observed "
+        f"order {', '.join(f'{o:.2f}' for o in orders)} (claimed: through b)",
+        observed_order=min(orders),
     )
