@@ -74,6 +74,7 @@ __all__ = [
     "reference_slow_pendulum",
     "reference_slow_vertical",
     "reference_small_angle",
+    "reference_successive_elongations",
     "reference_u_of_x",
     "reference_x_is_xi",
     "reference_zero_length",
@@ -1240,3 +1241,14 @@ def check_quarter_time() -> EquationCheck:
         f"order {', '.join(f'{o:.2f}' for o in orders)} (claimed: through b)",
         observed_order=min(orders),
     )
+
+
+def reference_successive_elongations() -> Any:
+    """Line 577: l' = l + bπ√(l/g), the length half a period later (line 523), b scaled by ε
+    (b/√(gl) small), through ε."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    b, g, length = _symbols("b", "g", "l")
+    exact = {"lp": length + eps * b * sp.pi * sp.sqrt(length / g), "b": eps * b}
+    return _reference(exact, "l' = l + bπ√(l/g)", scale=eps, order=2)
