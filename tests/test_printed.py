@@ -41,6 +41,12 @@ INCONSISTENT = {
     "charbonnier.result.ec-monomial",
     # line 80, (6): d²(θl)/dt² (L T^-2) beside (g/b²) sin θ (L^-1): the derivative is in l.
     "lecornu.eq.6",
+    # line 640, (28): (2γ²t³ − 3γt) adds a time to a number: 2γ³t³ (as (29) prints 10γ³t³).
+    "lecornu.eq.28",
+    # line 565: the same (3π² + 12b)/(16g), (π² − 12b)/(16g).
+    "lecornu.result.largest_length_comparison",
+    # line 577: √(b/(gl)) has the dimension √(T/L): b/√(gl) is meant.
+    "lecornu.result.elongation_ratio",
     # line 561: (π² − 12b)/(16g) adds a number to a speed b: (π² − 12)b/(16g).
     "lecornu.result.vertical_to_elongation",
     # lines 920-932: the same (π² ± 12b), and 1/g for b/g at line 920.

@@ -1,9 +1,10 @@
 """Dimensional analysis of a parsed formula from the ledger's declared dimensions.
 
-Every equation's two sides, every sum's terms and every argument of sin, cos, tan, exp, log
-and the inverse functions must agree (arguments: be dimensionless); a power of a dimensioned
-quantity needs a rational exponent. The verdict is ``consistent``, ``dimensionless`` (every
-quantity a pure number) or ``inconsistent`` with the first disagreement found.
+Every equation's two sides, every sum's terms and every argument of sin, cos, tan, exp, log,
+the inverse functions and besselj (order and argument) must agree (arguments: be
+dimensionless); a power of a dimensioned quantity needs a rational exponent. The verdict is
+``consistent``, ``dimensionless`` (every quantity a pure number) or ``inconsistent`` with the
+first disagreement found.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ Verdict = Literal["consistent", "inconsistent", "dimensionless"]
 DIMENSION_VERDICTS: tuple[Verdict, ...] = ("consistent", "inconsistent", "dimensionless")
 # base letter -> exponent: a Fraction, or a sympy expression for a symbolic power (vⁿ)
 Dim = dict[str, Any]
-_TRANSCENDENTAL = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log")
+_TRANSCENDENTAL = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "besselj")
 
 
 class _Mismatch(Exception):

@@ -33,6 +33,7 @@ _RESERVED = (
     *FUNCTIONS,
     ELLIPSIS,
     "pi",
+    "oo",
     "Rational",
     "Integer",
     "Float",

@@ -24,7 +24,7 @@ from pendcli.core.errors import PendcliError
 __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula"]
 
 # The functions a formula may call (besides the paper's declared function names).
-FUNCTIONS = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt")
+FUNCTIONS = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt", "besselj")
 ELLIPSIS = "etc"  # the name "..." becomes, a symbol no ledger may declare
 # a base letter and its power: a rational (T^-2, L^1/2) or, in brackets, an expression in
 # the paper's symbols (L^(1-n): a coefficient of vⁿ)
@@ -67,6 +67,7 @@ def _namespace(names: tuple[str, ...], functions: tuple[str, ...]) -> dict[str, 
 
     space: dict[str, Any] = {f: getattr(sp, f) for f in FUNCTIONS}
     space.update({"pi": sp.pi, "Rational": sp.Rational, "Integer": sp.Integer, "Float": sp.Float})
+    space["oo"] = sp.oo  # an infinite limit of an integral, ∫_0^∞
     space["Integral"] = sp.Integral  # Integral(f, (x, a, b)), the paper's ∫_a^b f dx
     space["Derivative"] = sp.Derivative  # Derivative(f, t, 2): d²f/dt², left unevaluated
     space.update({n: sp.Symbol(n, real=True) for n in names})

@@ -132,6 +132,7 @@ from pendcli.papers.lecornu.equations_small import (
     result_roots_interlace,
     result_zero_length_limit,
 )
+from pendcli.papers.lecornu.references_early import *  # noqa: F403 (issue 19, lines 1-698)
 
 __all__ = [
     "eq_1",
