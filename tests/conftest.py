@@ -12,3 +12,69 @@ from hypothesis import settings
 settings.register_profile("pendcli", deadline=None)
 settings.load_profile("pendcli")
 
+
+# The result cache (pendcli/core/cache.py) is off in every test and every process a test
+# starts: no test is served a result stored outside it (the user's ~/.cache/pendcli), nor one
+# an earlier test stored, which would make a test of determinism, of the forked workers or of
+# an interrupt compare a computation with a copy of itself. tests/test_cache.py gives each of
+# its tests a folder of its own.
+os.environ["PENDCLI_CACHE"] = "off"
+
+from fnmatch import fnmatch  # noqa: E402
+
+import pytest  # noqa: E402
+
+# Per-test wall and CPU seconds (--timings-file), read by tests/durations.py (the 2 s rule).
+from timing import (  # noqa: E402, F401
+    pytest_addoption,
+    pytest_collection_finish,
+    pytest_runtest_call,
+    pytest_runtest_setup,
+    pytest_runtest_teardown,
+)
+
+# The slow families (issue 23): `make test` runs the rest, `make test-slow` these, CI both. A
+# test is in a family when its id without parameters (file::function) matches a pattern, or
+# when it asks for a fixture named below; each says why it cannot be fast. Whatever the
+# families miss, `make test-durations` lists (a test not marked slow over 2 s).
+SLOW_FAMILIES = {
+    "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
+    "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
+    "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
+    "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
+    "tests/test_terminal_fit.py::*": "each command's whole output at two widths",
+    "tests/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
+    "tests/test_summary.py::test_only_failing_*": "a whole reproduce of a paper, in a process",
+    "tests/test_cli.py::test_ascii_only_locale": "each command in a fresh process",
+    "tests/test_cli.py::test_file_size_limit_names_the_plot_*": "a figure drawn in a process",
+    "tests/test_report.py::test_report_of_one_paper_*": "a report's figures in forked workers",
+    "tests/test_charbonnier.py::test_formulas_figure_*": "every formula row's figure",
+    "tests/test_fuzz.py::test_formulas_plot_folder": "each example draws and writes a figure",
+    "tests/test_fuzz.py::test_plot_paths": "each example draws and writes a figure",
+    "tests/test_tisserand.py::test_figures_written": "draws and writes the paper's figures",
+    "tests/test_json_schema.py::test_reproduce_*json_*": "a whole reproduce -f json",
+    "tests/test_summary.py::test_equations_command_*": "every Charbonnier check, via the CLI",
+    "tests/test_html_report.py::test_pdf_printing_*": "whole reports, before Chromium is sought",
+    "tests/test_ledger.py::test_evaluate_runs_each_check_*": "every ledger row's check",
+    "tests/test_tisserand.py::test_quadrature_against_mpmath_elsewhere": "mpmath at 25 digits",
+    "tests/test_tisserand.py::test_series_error_figure_against_mpmath": "mpmath at 25 digits",
+    "tests/test_tisserand_extremes.py::test_near_planar_fourier_*": "mpmath at 25 digits",
+    "tests/test_lecornu_extremes.py::test_largest_count_correctly_rounded": "mpmath zeros",
+    "tests/test_charbonnier_extremes.py::test_quad_domain_is_measured": "a grid of quadratures",
+    "tests/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
+}
+SLOW_FIXTURES = {
+    "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
+    "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
+}
+
+
+@pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    for item in items:
+        family = item.nodeid.split("[", 1)[0]
+        reasons = [why for pattern, why in SLOW_FAMILIES.items() if fnmatch(family, pattern)]
+        names = getattr(item, "fixturenames", ())
+        reasons += [why for name, why in SLOW_FIXTURES.items() if name in names]
+        if reasons and item.get_closest_marker("slow") is None:
+            item.add_marker(pytest.mark.slow(reason=reasons[0]))
