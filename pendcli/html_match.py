@@ -34,17 +34,19 @@ _GREEK = (
     "varepsilon|epsilon|varphi|lambda|Lambda|theta|Theta|alpha|gamma|Gamma|Delta|delta|omega|"
     "Omega|sigma|beta|zeta|kappa|phi|Phi|psi|Psi|rho|eta|tau|chi|mu|nu|xi|pi|Pi"
 )
-_FUNCTIONS = "Integral|Derivative|sqrt|asin|acos|atan|sin|cos|tan|tang|tg|exp|log|arc"
+_FUNCTIONS = "Integral|Derivative|besselj|sqrt|asin|acos|atan|sin|cos|tan|tang|tg|exp|log|arc|lam"
 _SPELLING = {"varepsilon": "epsilon", "varphi": "phi", "tang": "tan", "tg": "tan", "asin": "sin",
-             "acos": "cos", "atan": "tan", "Integral": "int", "Derivative": "d"}  # fmt: skip
+             "acos": "cos", "atan": "tan", "Integral": "int", "Derivative": "d", "lam": "lambda",
+             "exp": "e", "besselj": "J", "oo": "infty"}  # fmt: skip
 # TeX commands that carry no atom of the formula (layout, grouping, spacing).
 _LAYOUT = {"frac", "dfrac", "tfrac", "left", "right", "quad", "qquad", "cdot", "text", "mathrm",
            "mathbf", "operatorname", "begin", "end", "dots", "cdots", "ldots", "big", "Big",
            "bigg", "Bigg", "circ", "prime", "limits", "displaystyle", "mathit", "arc"}  # fmt: skip
-_PRINTED_WORDS = {"arcmin", "arcsec", "degree", "oo"}  # units of a printed angle, infinity
+_PRINTED_WORDS = {"arcmin", "arcsec", "degree"}  # the units of a printed angle
 _TEX_ATOM = re.compile(r"(\\[A-Za-z]+|[A-Za-z])'*(?:_(?:\{([A-Za-z0-9]+)\}|([A-Za-z0-9])))?|(\d+)")
 _TEX_NAMED = re.compile(r"\\(?:mathbf|mathrm|mathit|operatorname)\s*\{([^{}]*)\}")
 _TEX_FUNCTION = {"arctang": "tan", "arctg": "tan", "tang": "tan", "tg": "tan", "arcsin": "sin"}
+_TEX_UNIT = re.compile(r"\^\s*(?:\{\s*(?:sec|m|mm|h|min|s)\s*\}|m\b)")
 _PRINTED_IDENT = re.compile(r"[A-Za-z_][A-Za-z_0-9]*|\d+")
 _DERIVATIVE = re.compile(rf"\bd(\d*)((?:{_GREEK})|[A-Za-z])(\w*?)_d([A-Za-z])(\d*)\b")
 _IDENT_PARTS = re.compile(rf"({_GREEK}|{_FUNCTIONS})|([A-Za-z])|(\d+)")
@@ -60,6 +62,7 @@ def atoms_of_tex(tex: str) -> Counter[str]:
     """The atoms of a TeX formula: ``\\frac{3}{8} u_0 u_1`` is 3, 8, u_0, u_1 (a subscript
     belongs to its letter)."""
     tex = re.sub(r"\\text\s*\{[^{}]*\}", " ", tex)  # words between the formulas
+    tex = _TEX_UNIT.sub(" ", tex)  # 0^{sec}, 94 and 0^m, 35: the unit is no atom
     tex = _TEX_NAMED.sub(_named, tex)
     out: Counter[str] = Counter()
     for base, group, single, number in _TEX_ATOM.findall(tex):
