@@ -45,6 +45,8 @@ INCONSISTENT = {
     # lines 1004, 1008: c² cos θ/(l² sin³θ) beside l θ'' (l³ is due), and the l-form's
     # derivatives printed in t (d²θ/dt² beside dθ/dt: L T^-2 against T^-1).
     "lecornu.result.conical_linear_form",
+    # line 1102: 1/ρ² (a pure number: ρ is the amplitude of (50)) = 1/(a + bt)² (L^-2): 1/l².
+    "lecornu.result.inverse_square_length",
 }
 
 

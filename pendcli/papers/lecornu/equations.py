@@ -132,6 +132,7 @@ from pendcli.papers.lecornu.equations_small import (
     result_roots_interlace,
     result_zero_length_limit,
 )
+from pendcli.papers.lecornu.references_late import *  # noqa: F403  (l19b: lines 699-1135)
 
 __all__ = [
     "eq_1",
