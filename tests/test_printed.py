@@ -45,6 +45,10 @@ INCONSISTENT = {
     # lines 1004, 1008: c² cos θ/(l² sin³θ) beside l θ'' (l³ is due), and the l-form's
     # derivatives printed in t (d²θ/dt² beside dθ/dt: L T^-2 against T^-1).
     "lecornu.result.conical_linear_form",
+    # line 706: z w''s is a pure number beside z u'' (T^-1; s = g/b is a rate): w''s², w's².
+    "lecornu.result.s_expansion",
+    # line 916: T' recalled from line 561 with the same (π² − 12b)/(16g).
+    "lecornu.result.t_prime_recalled",
     # line 1102: 1/ρ² (a pure number: ρ is the amplitude of (50)) = 1/(a + bt)² (L^-2): 1/l².
     "lecornu.result.inverse_square_length",
 }

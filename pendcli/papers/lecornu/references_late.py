@@ -19,31 +19,59 @@ from pendcli.core.ledger_check import EquationCheck
 from pendcli.papers.lecornu.equations_common import equation_check
 
 __all__ = [
+    "reference_31",
+    "reference_amplitude_series",
     "reference_area_theorem",
+    "reference_beta_delta",
+    "reference_cn_solution",
     "reference_conical_cartesian",
     "reference_conical_l_form",
     "reference_conical_phases",
     "reference_conical_polar",
     "reference_conical_small",
+    "reference_eps_reduced",
+    "reference_eps_split",
+    "reference_eq3_in_u",
+    "reference_eq37",
+    "reference_eq39",
+    "reference_eq40",
+    "reference_eq41",
+    "reference_eq42",
+    "reference_eq42_prime",
     "reference_eq43",
+    "reference_identity",
+    "reference_k3_neglected",
     "reference_lambda_substitution",
     "reference_omega_pair",
+    "reference_ordinary_pendulum",
+    "reference_osculating",
+    "reference_phase_derivatives",
     "reference_plane_angles",
     "reference_polar_angle",
+    "reference_polar_trajectory",
     "reference_primitive_angles",
     "reference_rotated_phases",
     "reference_rotated_planes",
+    "reference_s_coefficients",
     "reference_slow_length",
     "reference_slow_pair",
     "reference_small_theta",
+    "reference_t_equals_t_prime",
+    "result_amplitude_series_numeric",
     "result_area_small_angle",
+    "result_cn_numeric",
     "result_conical_cartesian_numeric",
     "result_conical_polar_numeric",
     "result_conical_small_angles_numeric",
+    "result_delta_solution_numeric",
     "result_inverse_square_length",
+    "result_k3_neglected_numeric",
     "result_lambda_numeric",
+    "result_osculating_numeric",
     "result_polar_angle_numeric",
+    "result_polar_trajectory_numeric",
     "result_rotated_planes_numeric",
+    "result_s_quadratures_numeric",
     "result_trajectory_after_52",
 ]
 
@@ -650,4 +678,645 @@ def result_trajectory_after_52() -> EquationCheck:
         f"{printed[-1]:.2e}",
         observed_order=check.observed_order,
         claimed_order=2,
+    )
+
+
+# --- § III from (30): the fast shortening, in powers of s = g/b (lines 699-732) ----------
+
+
+def _s_coefficients() -> tuple[Any, list[Any]]:
+    """(30), z θ'' + 2θ' + s sin θ = 0, with θ = U + Vs + Ws² (line 702): the coefficients
+    of s⁰, s¹, s² of its left side (a series in s), in the ledger's symbols."""
+    import sympy as sp
+
+    s, z = _symbols("s", "z")
+    names = ("U", "dU_dz", "d2U_dz2", "V", "dV_dz", "d2V_dz2", "W", "dW_dz", "d2W_dz2")
+    u, du, d2u, v, dv, d2v, w, dw, d2w = _symbols(*names)
+    theta, dtheta, d2theta = (
+        u + v * s + w * s**2,
+        du + dv * s + dw * s**2,
+        d2u + d2v * s + d2w * s**2,
+    )
+    left = z * d2theta + 2 * dtheta + s * sp.sin(theta)
+    series = sp.expand(sp.series(left, s, 0, 3).removeO())
+    return s, [series.coeff(s, n) for n in range(3)]
+
+
+def reference_s_coefficients() -> Any:
+    """Lines 704-714: u'', v'', w'' solved from the s⁰, s¹, s² coefficients of (30) with
+    θ = u + vs + ws² (each coefficient is linear in its second derivative)."""
+    s, coefficients = _s_coefficients()
+    exact = {}
+    for name, coefficient in zip(("U", "V", "W"), coefficients, strict=True):
+        (second,) = _symbols(f"d2{name}_dz2")
+        exact[second.name] = -coefficient.subs(second, 0) / coefficient.coeff(second)
+    return _reference(exact, "(30) with θ = u + vs + ws²", scale=s, order=3)
+
+
+@cache
+def _series_31() -> Any:
+    """θ = α + vs + ws² for β = 0 (u = α): v, w solved from the coefficient equations
+    (z²v')' = −z sin α, (z²w')' = −z v cos α with v = v' = w = w' = 0 at z0, by sympy
+    integration of rational functions of z."""
+    import sympy as sp
+
+    s, z, z0, alpha = _symbols("s", "z", "z0", "alpha")
+    zeta = sp.Symbol("zeta", positive=True)
+
+    def solve(source: Any) -> Any:
+        # z v'' + 2v' = f  <=>  (z² v')' = z f
+        slope = sp.integrate((zeta * source.subs(z, zeta)), (zeta, z0, z)) / z**2
+        return sp.integrate(slope.subs(z, zeta), (zeta, z0, z))
+
+    v = sp.simplify(solve(-sp.sin(alpha)))
+    w = solve(-v * sp.cos(alpha))
+    return alpha + v * s + w * s**2, v
+
+
+def reference_31() -> Any:
+    """(31): θ through s² for β = 0, solved from (30) (lines 708-714)."""
+    import sympy as sp
+
+    theta, _ = _series_31()
+    domain = {"z": (sp.Rational(1, 10), sp.Rational(9, 10)), "z0": (1, 2)}
+    return _reference({"theta": theta}, "(30) through s², β = 0", domain=domain)
+
+
+def reference_polar_trajectory() -> Any:
+    """Line 730: (31) without its s² term at z = l/b, and A, B, C its coefficients of l⁰,
+    l¹, l⁻¹ (computed; θ then holds only if no other power of l occurs)."""
+    import sympy as sp
+
+    s, z, alpha, length, b = _symbols("s", "z", "alpha", "l", "b")
+    _, v = _series_31()
+    theta = sp.expand(alpha + s * v.subs(z, length / b))
+    exact = {"theta": theta}
+    for name, power in (("A31", 0), ("B31", 1), ("C31", -1)):
+        exact[name] = theta.coeff(length, power)
+    return _reference(exact, "(31) to order s at z = l/b")
+
+
+# --- § III, the slow lengthening: (32)-(38) (lines 734-816) -------------------------------
+
+
+def _eq3_in_u(b: Any) -> dict[str, Any]:
+    """(3), (a + bt)θ'' + 2bθ' + g sin θ = 0, solved for θ'' and written in u = √(g/a)t:
+    dθ/du = θ'√(a/g), d²θ/du² = θ''a/g; u and p = b/√(ga) from line 736."""
+    import sympy as sp
+
+    a, g, t, theta, dth = _symbols("a", "g", "t", "theta", "dtheta_dt")
+    second = -(2 * b * dth + g * sp.sin(theta)) / (a + b * t)
+    return {
+        "d2theta_du2": second * a / g,
+        "dtheta_du": dth * sp.sqrt(a / g),
+        "u": sp.sqrt(g / a) * t,
+        "p": b / sp.sqrt(g * a),
+    }
+
+
+def reference_eq3_in_u() -> Any:
+    """(32) from (3) in the variables of line 736."""
+    (b,) = _symbols("b")
+    return _reference(_eq3_in_u(b), "(3) in u = √(g/a)t, p = b/√(ga)")
+
+
+def reference_ordinary_pendulum() -> Any:
+    """(33): (3) with b = 0 (p = 0), in u."""
+    import sympy as sp
+
+    return _reference(_eq3_in_u(sp.Integer(0)), "(3) with b = 0, in u")
+
+
+def reference_cn_solution() -> Any:
+    """(34)-(35), lines 754-764: the textbook solution of (33) with amplitude θ0,
+    sin(θ/2) = k cd v = k cn v/dn v (k = sin(θ0/2), v = u + C), written with φ = am v:
+    cn v = cos φ, sn v = sin φ, dn v = √(1 − k² sin²φ); d/du = dn v · d/dφ."""
+    import sympy as sp
+
+    k, phi, u, c = _symbols("k", "phi", "u", "C")
+    dn = sp.sqrt(1 - k**2 * sp.sin(phi) ** 2)
+    theta = 2 * sp.asin(k * sp.cos(phi) / dn)
+    first = sp.diff(theta, phi) * dn
+    exact = {
+        "theta": theta,
+        "theta0": 2 * sp.asin(k),
+        "kp": sp.sqrt(1 - k**2),
+        "cnv": sp.cos(phi),
+        "snv": sp.sin(phi),
+        "dnv": dn,
+        "dtheta_du": first,
+        "d2theta_du2": sp.diff(first, phi) * dn,
+    }
+    del u, c
+    return _reference(exact, "sin(θ/2) = k cd v, the solution of (33)")
+
+
+def result_cn_numeric() -> EquationCheck:
+    """(35) and lines 756-764 numerically with mpmath's Jacobi functions (k = 0.6, v = 0.7):
+    θ = 2 arctg((k/k') cn v) solves (33), its derivatives are the printed ones, and it
+    depends on u + C only (∂θ/∂C = ∂θ/∂u)."""
+    import mpmath
+
+    with mpmath.workdps(30):
+        k = mpmath.mpf("0.6")
+        kp = mpmath.sqrt(1 - k**2)
+
+        def theta(u: Any, c: Any = 0) -> Any:
+            return 2 * mpmath.atan(k / kp * mpmath.ellipfun("cn", u + c, m=k**2))
+
+        v = mpmath.mpf("0.7")
+        sn, cn, dn = (mpmath.ellipfun(n, v, m=k**2) for n in ("sn", "cn", "dn"))
+        first, second = mpmath.diff(theta, v), mpmath.diff(theta, v, 2)
+        gaps = (
+            abs(second + mpmath.sin(theta(v))),
+            abs(first + 2 * k * kp * sn * dn / (kp**2 + k**2 * cn**2)),
+            abs(second + 2 * k * kp * cn / dn**2),
+            abs(mpmath.diff(lambda c: theta(v - mpmath.mpf("0.2"), c), mpmath.mpf("0.2")) - first),
+        )
+    worst = max(gaps)
+    return equation_check(
+        worst < 1e-20, "numeric", f"mpmath cn, sn, dn at k = 0.6, v = 0.7: {float(worst):.1e}"
+    )
+
+
+def _partial_chain() -> Any:
+    """The total u-derivative of a function of (u, k(u), C(u)), from its partial
+    derivatives (th_u, th_k, th_C, th_uu, th_uk, th_uC), with dC/du from (36)."""
+    import sympy as sp
+
+    names = ("theta", "th_u", "th_k", "th_C", "th_uu", "th_uk", "th_uC", "dk_du", "dC_du")
+    theta, th_u, th_k, th_c, th_uu, th_uk, th_uc, dk, dc = _symbols(*names)
+    partial = {theta: (th_u, th_k, th_c), th_u: (th_uu, th_uk, th_uc)}
+
+    def total(f: Any) -> Any:
+        du, dkk, dcc = partial[f]
+        return du + dkk * dk + dcc * dc
+
+    osculating = sp.solve(th_k * dk + th_c * dc, dc)[0]  # (36)
+    return total, osculating, (theta, th_u, dc)
+
+
+def reference_osculating() -> Any:
+    """Lines 770-774: dθ/du and d²θ/du² by the chain rule with (36)."""
+    total, osculating, (theta, th_u, dc) = _partial_chain()
+    first = total(theta).subs(dc, osculating)
+    second = total(th_u).subs(dc, osculating)
+    return _reference(
+        {"dtheta_du": first, "d2theta_du2": second, "dC_du": osculating}, "the chain rule, (36)"
+    )
+
+
+def reference_eq37() -> Any:
+    """(37): dk/du, dC/du solved from (32), written with lines 770-774, and (36); the
+    printed remark θ_uu + sin θ = 0 (the partial θ solves (33))."""
+    import sympy as sp
+
+    total, _, (theta, th_u, dc) = _partial_chain()
+    p, u, th_k, th_c, th_uu = _symbols("p", "u", "th_k", "th_C", "th_uu")
+    (dk,) = _symbols("dk_du")
+    first, second = total(theta), total(th_u)
+    motion = second + sp.sin(theta) + p * (u * second + 2 * first)
+    motion = motion.subs(sp.sin(theta), -th_uu)
+    solved = sp.solve([motion, th_k * dk + th_c * dc], [dk, dc], dict=True)[0]
+    return _reference({"dk_du": solved[dk], "dC_du": solved[dc]}, "(32), (36)")
+
+
+@cache
+def _amplitude_series() -> Any:
+    """am u through k³: u = F(φ, k) = ∫₀^φ dφ/√(1 − k² sin²φ), its integrand's series in
+    k integrated, then inverted as φ = u + k² c(u) (c solved from the k² coefficient)."""
+    import sympy as sp
+
+    k, phi, u = _symbols("k", "phi", "u")
+    integrand = sp.series(1 / sp.sqrt(1 - k**2 * sp.sin(phi) ** 2), k, 0, 4).removeO()
+    elliptic_f = sp.integrate(sp.expand(integrand), (phi, 0, phi))
+    c = sp.Symbol("c")
+    guess = u + k**2 * c
+    residual = sp.expand(sp.series(elliptic_f.subs(phi, guess) - u, k, 0, 4).removeO())
+    return guess.subs(c, sp.solve(residual.coeff(k, 2), c)[0])
+
+
+def reference_amplitude_series() -> Any:
+    """Lines 786-816: φ = am u through k³, cn u = cos am u, k' = √(1 − k²), θ = (35) at
+    C = 0, f(u) its definition (line 814); a series in k through k³."""
+    import sympy as sp
+
+    k, u = _symbols("k", "u")
+    am = _amplitude_series()
+    kp = sp.sqrt(1 - k**2)
+    exact = {
+        "phi": am,
+        "cnu": sp.cos(am),
+        "kp": kp,
+        "theta": 2 * sp.atan(k / kp * sp.cos(am)),
+        "fu": 9 * sp.cos(u) - sp.cos(3 * u) + 12 * u * sp.sin(u),
+    }
+    return _reference(exact, "am u through k³, (35) at C = 0", scale=k, order=4)
+
+
+def result_amplitude_series_numeric() -> EquationCheck:
+    """Lines 786-816 numerically: θ = 2 arctg((k/k') cn u) (mpmath's Jacobi cn) against
+    2k cos u + (k³/24)(9 cos u + 12u sin u − cos 3u) at u = 1.3 for k = 0.08, 0.04, 0.02:
+    the difference falls as k⁵ (θ is odd in k: no k⁴ term), within the printed « erreur de
+    l'ordre k⁴ »."""
+    import mpmath
+
+    u = mpmath.mpf("1.3")
+    residuals = []
+    with mpmath.workdps(30):
+        for k in (mpmath.mpf("0.08"), mpmath.mpf("0.04"), mpmath.mpf("0.02")):
+            exact = 2 * mpmath.atan(k / mpmath.sqrt(1 - k**2) * mpmath.ellipfun("cn", u, m=k**2))
+            series = 2 * k * mpmath.cos(u)
+            series += k**3 / 24 * (9 * mpmath.cos(u) + 12 * u * mpmath.sin(u) - mpmath.cos(3 * u))
+            residuals.append(abs(exact - series))
+        order = float(mpmath.log(residuals[1] / residuals[2]) / mpmath.log(2))
+    shown = ", ".join(f"{float(r):.2e}" for r in residuals)
+    return equation_check(
+        order > 3.7,
+        "numeric",
+        f"θ − (38) at u = 1.3, k = 0.08, 0.04, 0.02: {shown}"
+        f" (observed order {order:.2f}; claimed: error of order k⁴)",
+        observed_order=order,
+        claimed_order=4,
+    )
+
+
+# --- § III, (39)-(42'): the perturbation of (38) by the lengthening (lines 818-934) -------
+
+
+def _u_symbols() -> list[Any]:
+    return _symbols("u", "k", "p")
+
+
+def _forced_solution(source: Any) -> Any:
+    """The solution of y'' + y = source with y(0) = y'(0) = 0, source a sum of uⁿ cos mu,
+    uⁿ sin mu (m = 1, 3): undetermined coefficients (n <= 4), solved by sympy."""
+    import sympy as sp
+    from sympy.simplify.fu import TR8
+
+    (u,) = _symbols("u")
+    unknowns, guess = [], sp.Integer(0)
+    for n in range(5):
+        for m in (1, 3):
+            a, b = sp.symbols(f"a{n}_{m} b{n}_{m}")
+            unknowns += [a, b]
+            guess += a * u**n * sp.cos(m * u) + b * u**n * sp.sin(m * u)
+    residual = sp.expand(TR8(sp.expand(guess.diff(u, 2) + guess - source)))
+    equations = [
+        residual.coeff(f(m * u)).coeff(u, n)
+        for n in range(6)
+        for m in (1, 3)
+        for f in (sp.cos, sp.sin)
+    ]
+    equations += [guess.subs(u, 0), guess.diff(u).subs(u, 0)]
+    solved = sp.solve(equations, unknowns, dict=True)[0]
+    return sp.expand(guess.subs(solved).subs({c: 0 for c in unknowns}))
+
+
+@cache
+def _slow_finite() -> dict[str, Any]:
+    """ω of (38), F of (39) and its k, k³ coefficients A, B, β and δ solved with zero
+    initial values ((40) split in powers of k), θ = ω + p(kβ + k³δ)."""
+    import sympy as sp
+
+    u, k, p = _u_symbols()
+    f = 9 * sp.cos(u) + 12 * u * sp.sin(u) - sp.cos(3 * u)
+    omega = 2 * k * sp.cos(u) + k**3 / 24 * f
+    forcing = sp.expand(-(u * omega.diff(u, 2) + 2 * omega.diff(u)))
+    big_a, big_b = forcing.coeff(k, 1), forcing.coeff(k, 3)
+    beta = _forced_solution(big_a)
+    delta = _forced_solution(big_b + 2 * beta * sp.cos(u) ** 2)
+    theta = omega + p * (k * beta + k**3 * delta)
+    return {
+        "f": f,
+        "omega": omega,
+        "F": forcing,
+        "A": big_a,
+        "B": big_b,
+        "beta": beta,
+        "delta": delta,
+        "theta": theta,
+    }
+
+
+def reference_eq39() -> Any:
+    """(39): (32) with θ = ω + pε, ω a solution of (33) (ω'' = −sin ω): ε'' solved from
+    (32) exactly, compared at order p⁰; F its definition (line 824)."""
+    import sympy as sp
+
+    u, _, p = _u_symbols()
+    omega, domega, eps, deps = _symbols("omega", "domega_du", "eps", "deps_du")
+    q = sp.Symbol("q", real=True)
+    d2omega = -sp.sin(omega)
+    theta, first, second = omega + p * eps, domega + p * deps, d2omega + p * q
+    motion = sp.expand(second + sp.sin(theta) + p * (u * second + 2 * first))
+    solved = -motion.subs(q, 0) / motion.coeff(q)
+    exact = {"d2eps_du2": solved, "d2omega_du2": d2omega, "F": -(u * d2omega + 2 * domega)}
+    return _reference(exact, "(32) with θ = ω + pε", scale=p, order=1)
+
+
+def reference_eq40() -> Any:
+    """(40): (39) with ω of (38) (F computed from it), A and B its k and k³ coefficients,
+    f and its derivatives from (38); a series in k through k³."""
+    import sympy as sp
+
+    u, k, _ = _u_symbols()
+    (eps,) = _symbols("eps")
+    chain = _slow_finite()
+    exact = {
+        "d2eps_du2": chain["F"] - eps * sp.cos(chain["omega"]),
+        "A40": chain["A"],
+        "B40": chain["B"],
+        "fu": chain["f"],
+        "dfu": chain["f"].diff(u),
+        "d2fu": chain["f"].diff(u, 2),
+    }
+    return _reference(exact, "(39) with ω of (38)", scale=k, order=4)
+
+
+def reference_eps_split() -> Any:
+    """Lines 836-856: ε = α + kβ + k²γ + k³δ (line 838) in (40); the second derivatives
+    solved from its k⁰ … k³ coefficients (A, B kept as names); α = γ = 0, the solutions
+    with zero initial values of α'' + α = 0 and γ'' + γ = 2α cos²u."""
+    import sympy as sp
+
+    u, k, _ = _u_symbols()
+    names = ("alpha_e", "beta_e", "gamma_e", "delta_e")
+    parts = _symbols(*names)
+    seconds = _symbols(*(f"d2{n[:-2]}_du2" for n in names))
+    big_a, big_b = _symbols("A40", "B40")
+    eps = sum(k**n * x for n, x in enumerate(parts))
+    d2eps = sum(k**n * x for n, x in enumerate(seconds))
+    left = sp.expand(d2eps + (1 - 2 * k**2 * sp.cos(u) ** 2) * eps - big_a * k - big_b * k**3)
+    exact: dict[str, Any] = {"eps": eps}
+    for n, second in enumerate(seconds):
+        coefficient = left.coeff(k, n)
+        exact[second.name] = -coefficient.subs(second, 0) / coefficient.coeff(second)
+    return _reference(exact, "(40), ε split in powers of k")
+
+
+def reference_eps_reduced() -> Any:
+    """Lines 850-856: as reference_eps_split, with α = γ = 0."""
+    split = reference_eps_split()
+    zero = {sp_name: 0 for sp_name in ("alpha_e", "gamma_e")}
+    import sympy as sp
+
+    exact = {
+        n: sp.sympify(v).subs({sp.Symbol(m, real=True): 0 for m in zero})
+        for n, v in split.exact.items()
+    }
+    return _reference({**exact, **zero}, "(40) split, α = γ = 0")
+
+
+def reference_beta_delta() -> Any:
+    """Lines 858-880: β and δ solved with zero initial values, A and B computed from (38),
+    f and its derivatives, β'' and δ'' those of the solutions."""
+    u, _, _ = _u_symbols()
+    chain = _slow_finite()
+    exact = {
+        "beta_e": chain["beta"],
+        "delta_e": chain["delta"],
+        "A40": chain["A"],
+        "B40": chain["B"],
+        "fu": chain["f"],
+        "dfu": chain["f"].diff(u),
+        "d2fu": chain["f"].diff(u, 2),
+        "d2delta_du2": chain["delta"].diff(u, 2),
+        "d2beta_du2": chain["beta"].diff(u, 2),
+    }
+    return _reference(exact, "β, δ solved from (40) with zero initial values")
+
+
+def reference_eq41() -> Any:
+    """(41) and lines 888-900: θ = ω + p(kβ + k³δ) solved here; its value and slope at
+    u = π/2; rg = √(g/a) (the text's r)."""
+    import sympy as sp
+
+    u, _, _ = _u_symbols()
+    theta = _slow_finite()["theta"]
+    slope = theta.diff(u)
+    exact = {
+        "theta": theta,
+        "theta_pi2": theta.subs(u, sp.pi / 2),
+        "dtheta_du_pi2": slope.subs(u, sp.pi / 2),
+    }
+    (rg,) = _symbols("rg")
+    exact["dtheta_dt_pi2"] = rg * exact["dtheta_du_pi2"]
+    return _reference(exact, "θ = ω + p(kβ + k³δ) solved from (38)-(40)")
+
+
+@cache
+def _half_oscillation() -> Any:
+    """γT = π/2 − θ/θ_u at u = π/2 (line 904) for θ of reference_eq41: the series in p to
+    first order, each part in k through k² (the orders (42) keeps), as a function of a, g,
+    b, k (γ = √(g/a), p = b/√(ga))."""
+    import sympy as sp
+
+    _, k, p = _u_symbols()
+    a, g, b = _symbols("a", "g", "b")
+    exact = reference_eq41().exact
+    ratio = exact["theta_pi2"] / exact["dtheta_du_pi2"]
+    in_p = sp.series(ratio, p, 0, 2).removeO()
+    kept = sum(sp.series(sp.expand(in_p.coeff(p, n)), k, 0, 3).removeO() * p**n for n in (0, 1))
+    gamma = sp.sqrt(g / a)
+    return sp.expand((sp.pi / 2 - kept).subs(p, b / sp.sqrt(g * a)) / gamma)
+
+
+def reference_eq42() -> Any:
+    """(42): the half-oscillation computed from θ of (41) as solved here (line 904)."""
+    return _reference({"T": _half_oscillation()}, "π/2γ − θ/θ' at u = π/2, θ solved here")
+
+
+def reference_eq42_prime() -> Any:
+    """(42'): (42) with k = sin(θ0/2), through θ0²."""
+    import sympy as sp
+
+    k, theta0 = _symbols("k", "theta0")
+    half = _half_oscillation().subs(k, sp.sin(theta0 / 2))
+    kept = sp.series(half, theta0, 0, 3).removeO()
+    return _reference({"T": kept}, "(42) with k = sin(θ0/2), through θ0²")
+
+
+def reference_t_equals_t_prime() -> Any:
+    """Lines 918-932: T (and each T' of the same half-oscillation, reversed) the duration
+    of (42) at k = 0, l = a + bT; b scaled by ε (first order in b)."""
+    import sympy as sp
+
+    k, a, b = _symbols("k", "a", "b")
+    scale = sp.Symbol("epsilon", positive=True)
+    duration = _half_oscillation().subs(k, 0).subs(b, scale * b)
+    exact = {"b": scale * b, "T": duration, "Tp": duration, "l": a + scale * b * duration}
+    return _reference(exact, "(42) at k = 0, to first order in b", scale=scale, order=2)
+
+
+def reference_identity() -> Any:
+    """No substitution: the formula is an identity in its own symbols (checked at random
+    rational points)."""
+    return _reference({}, "an identity")
+
+
+def reference_phase_derivatives() -> Any:
+    """Line 782: θ of (35) is a function G(u + C, k): its partial derivatives."""
+    import sympy as sp
+
+    u, c, k = _symbols("u", "C", "k")
+    big_g = sp.Function("G")(u + c, k)
+    exact = {
+        "th_u": big_g.diff(u),
+        "th_C": big_g.diff(c),
+        "th_uu": big_g.diff(u, 2),
+        "th_uC": big_g.diff(u, c),
+    }
+    return _reference(exact, "θ = G(u + C, k)")
+
+
+def reference_k3_neglected() -> Any:
+    """Lines 888-892: the O(p) solution of (48) in u (as for (50)) at ψ = 3p/4 − π/2."""
+    import sympy as sp
+
+    u, p, rho = _symbols("u", "p", "rho")
+    theta = _slow_solution(rho, 3 * p / 4 - sp.pi / 2, u)
+    return _reference({"theta": theta}, "(48) to O(p), ψ = 3p/4 − π/2", scale=p, order=2)
+
+
+def result_k3_neglected_numeric() -> EquationCheck:
+    """Lines 888-892 numerically: (1 + pu)θ'' + 2pθ' + θ = 0 (scipy ODE) from the initial
+    values of (25) at ψ = 3p/4 − π/2, against ρ cos u + (pρ/4)(u² sin u − 3u cos u + 3 sin u)
+    (ρ = 1, u in [0, 2π]): the residual falls as p²."""
+    import numpy as np
+
+    from pendcli.papers.lecornu.equations_common import P_SWEEP, judged_series, linear_reduced_ode
+
+    grid = np.linspace(0, 2 * np.pi, 300)
+    starts, slopes = [], []
+    for p in P_SWEEP:
+        psi = 0.75 * p - np.pi / 2
+        starts.append(-np.sin(psi))  # (25) at t = 0
+        slopes.append(np.cos(psi) + 0.75 * p * np.sin(psi))
+    solved = linear_reduced_ode(P_SWEEP, tuple(starts), tuple(slopes), 2 * np.pi)(grid)
+    c, s = np.cos(grid), np.sin(grid)
+    residuals = []
+    for j, p in enumerate(P_SWEEP):
+        printed = c + p / 4 * (grid**2 * s - 3 * grid * c + 3 * s)
+        residuals.append(float(np.max(np.abs(solved[j] - printed))))
+    return judged_series(residuals, 2, "line 890 against (3) linearised")
+
+
+def result_s_quadratures_numeric() -> EquationCheck:
+    """Lines 716-722 numerically (α = 0.3, β = 0.2, z0 = 1, at z = 1.5): the nested
+    quadratures v, w (scipy quad; w's applied to −v cos u) against the solutions of
+    v''z + 2v' = −sin u, w''z + 2w' = −v cos u with v = v' = w = w' = 0 at z0 (scipy ODE,
+    rtol 1e-12)."""
+    import math
+
+    from scipy.integrate import quad, solve_ivp
+
+    alpha, beta, z0, z = 0.3, 0.2, 1.0, 1.5
+
+    def u(x: float) -> float:
+        return alpha + beta / x
+
+    def rhs(x: float, s: list[float]) -> list[float]:
+        v, dv, _w, dw = s
+        return [dv, (-2 * dv - math.sin(u(x))) / x, dw, (-2 * dw - v * math.cos(u(x))) / x]
+
+    ode = solve_ivp(rhs, (z0, z), [0, 0, 0, 0], rtol=1e-12, atol=1e-14, dense_output=True)
+
+    def nested(f: Any, x: float) -> float:
+        return quad(lambda y: quad(lambda w: w * f(w), z0, y)[0] / y**2, z0, x)[0]
+
+    v = -nested(lambda x: math.sin(u(x)), z)
+    w = nested(lambda x: -math.cos(u(x)) * ode.sol(x)[0], z)
+    worst = max(abs(v - ode.y[0, -1]), abs(w - ode.y[2, -1]))
+    return equation_check(
+        worst < 1e-9, "numeric", f"nested quadratures against the ODE at z = 1.5: {worst:.1e}"
+    )
+
+
+def result_polar_trajectory_numeric() -> EquationCheck:
+    """Line 730 numerically: (31) without its s² term at z = l/b, fitted by A + Bl + C/l
+    through three lengths (mpmath), reproduces a fourth exactly (α = 0.4, s = 0.05,
+    z0 = 2, b = 0.7)."""
+    import mpmath
+
+    alpha, s, z0, b = mpmath.mpf("0.4"), mpmath.mpf("0.05"), mpmath.mpf(2), mpmath.mpf("0.7")
+    with mpmath.workdps(30):
+
+        def theta(length: Any) -> Any:
+            z = length / b
+            return alpha - s * mpmath.sin(alpha) / (2 * z) * (z - z0) ** 2
+
+        lengths = [mpmath.mpf(x) for x in ("0.3", "0.8", "1.1")]
+        matrix = mpmath.matrix([[1, x, 1 / x] for x in lengths])
+        a, bb, c = mpmath.lu_solve(matrix, mpmath.matrix([theta(x) for x in lengths]))
+        x = mpmath.mpf("0.55")
+        gap = abs(theta(x) - (a + bb * x + c / x))
+    return equation_check(
+        gap < 1e-25, "numeric", f"A + Bl + C/l through three lengths, at a fourth: {float(gap):.1e}"
+    )
+
+
+def result_delta_solution_numeric() -> EquationCheck:
+    """Line 880 numerically: δ'' + δ = B + 2β cos²u (B as line 872 expands it, β of line 860)
+    solved by scipy's ODE solver (rtol 1e-12) from δ = δ' = 0; at u = 1.5 the printed 32δ
+    differs, the corrected 64δ agrees."""
+    import math
+
+    from scipy.integrate import solve_ivp
+
+    def source(u: float) -> float:
+        c, s, c3, s3 = math.cos(u), math.sin(u), math.cos(3 * u), math.sin(3 * u)
+        big_b = -(-12 * u**2 * s + 39 * u * c + 6 * s + 9 * u * c3 + 6 * s3) / 24
+        beta = (u**2 * s - 3 * u * c + 3 * s) / 2
+        return big_b + 2 * beta * c**2
+
+    u = 1.5
+    ode = solve_ivp(lambda x, y: [y[1], source(x) - y[0]], (0, u), [0, 0], rtol=1e-12, atol=1e-14)
+    delta = float(ode.y[0, -1])
+    c, s, c3, s3 = math.cos(u), math.sin(u), math.cos(3 * u), math.sin(3 * u)
+    printed = (-4 * u**3 * c + 11 * u**2 * s - u * c - u**2 * s3 - 3 * u * c3 + 4 * s) / 32
+    corrected = -8 * u**3 * c - 50 * u**2 * s - 66 * u * c - 2 * u**2 * s3 + 6 * u * c3
+    corrected = (corrected + 87 * s - 9 * s3) / 64
+    good = abs(corrected - delta)
+    return equation_check(
+        abs(printed - delta) < 1e-9,
+        "numeric",
+        f"δ(1.5) = {delta:.9f} by the ODE; printed {printed:.9f}, corrected {corrected:.9f} "
+        f"(differs by {good:.1e})",
+        corrected="64δ = −8u³ cos u − 50u² sin u − 66u cos u − 2u² sin 3u + 6u cos 3u "
+        "+ 87 sin u − 9 sin 3u"
+        if good < 1e-9
+        else None,
+    )
+
+
+def result_osculating_numeric() -> EquationCheck:
+    """Lines 770-774 numerically: for Θ(u, k, C) = k² eᵘ + Cu (any function),
+    k(u) = 0.5 + sin(u)/3 and C(u) solving (36), C' = −Θ_k k'/Θ_C (by quadrature from
+    u = 1), the total dθ/du is ∂Θ/∂u and d²θ/du² is Θ_uu + Θ_uk k' + Θ_uC C' (mpmath)."""
+    import mpmath
+
+    with mpmath.workdps(30):
+
+        def k_of(u: Any) -> Any:
+            return mpmath.mpf("0.5") + mpmath.sin(u) / 3
+
+        def c_rate(u: Any) -> Any:
+            dk = mpmath.cos(u) / 3
+            return -2 * k_of(u) * mpmath.exp(u) * dk / u  # Θ_k = 2k eᵘ, Θ_C = u
+
+        def c_of(u: Any) -> Any:
+            return mpmath.mpf("0.2") + mpmath.quad(c_rate, [1, u])
+
+        def theta(u: Any) -> Any:
+            return k_of(u) ** 2 * mpmath.exp(u) + c_of(u) * u
+
+        u = mpmath.mpf("1.4")
+        k, dk = k_of(u), mpmath.cos(u) / 3
+        th_u, th_uu = k**2 * mpmath.exp(u) + c_of(u), k**2 * mpmath.exp(u)
+        th_uk, th_uc = 2 * k * mpmath.exp(u), mpmath.mpf(1)
+        chain = th_uu + th_uk * dk + th_uc * c_rate(u)
+        worst = max(abs(mpmath.diff(theta, u) - th_u), abs(mpmath.diff(theta, u, 2) - chain))
+    return equation_check(
+        worst < 1e-15, "numeric", f"the chain rule with (36), mpmath: {float(worst):.1e}"
     )
