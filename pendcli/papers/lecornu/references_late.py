@@ -119,12 +119,14 @@ def _conical_state() -> dict[str, Any]:
     }
 
 
+@cache
 def reference_conical_cartesian() -> Any:
     """Lines 942-946, the motion in x, y, z, with r, r', r'' computed from it and c its
     constant of areas."""
     return _reference(_conical_state(), "x'' = −Tx/l, y'' = −Ty/l, z'' = −Tz/l + g")
 
 
+@cache
 def reference_conical_polar() -> Any:
     """r = l sin θ, z = l cos θ (lines 988-990) and their derivatives along t (l, θ varying);
     the printed d/dt(l² dθ/dt) by the chain rule."""
@@ -143,16 +145,16 @@ def reference_conical_polar() -> Any:
     return _reference(exact, "r = l sin θ, z = l cos θ", rates={"t": time})
 
 
+@cache
 def reference_eq43() -> Any:
     """(43) from lines 984-992: r z'' − z r'' − g r + c² z/r³ = 0 with r = l sin θ,
     z = l cos θ, solved for θ'' (l = a + bt, l'' = 0); the printed d/dt by the chain rule."""
     import sympy as sp
 
-    a, b, t, theta, dth = _symbols("a", "b", "t", "theta", "dtheta_dt")
+    a, b, t, dth = _symbols("a", "b", "t", "dtheta_dt")
     second = _eq43_second_derivative(a + b * t)
     rates = {"t": {"l": b, "theta": dth, "dtheta_dt": second}}
     domain = {"theta": (sp.Rational(3, 10), sp.Rational(12, 10))}
-    del theta
     return _reference({"l": a + b * t}, "lines 984-992, l = a + bt", rates=rates, domain=domain)
 
 
@@ -236,6 +238,7 @@ def _along(rates: dict[Any, Any]) -> Any:
     return along
 
 
+@cache
 def reference_area_theorem() -> Any:
     """(44) from the area theorem of line 954: c = x y' − y x' with x = r cos φ,
     y = r sin φ, r = l sin θ (l, θ, φ varying)."""
@@ -255,7 +258,7 @@ def _eq43_second_derivative(length: Any) -> Any:
     ``length`` with l' = b, l'' = 0."""
     import sympy as sp
 
-    theta, dth, g, c, b = _symbols("theta", "dtheta_dt", "g", "c", "b")
+    g, c, b = _symbols("g", "c", "b")
     d2th = sp.Symbol("q", real=True)
     polar = reference_conical_polar().exact
     subs = {sp.Symbol("dl_dt", real=True): b, sp.Symbol("d2l_dt2", real=True): 0}
@@ -264,10 +267,10 @@ def _eq43_second_derivative(length: Any) -> Any:
     d2r, d2z = polar["d2r_dt2"].subs(subs), polar["d2Z_dt2"].subs(subs)
     motion = sp.expand(r * d2z - z * d2r - g * r + c**2 * z / r**3)
     solved = -motion.subs(d2th, 0) / motion.coeff(d2th)  # linear in θ''
-    del theta, dth
     return solved.subs(sp.Symbol("l", real=True), length)
 
 
+@cache
 def reference_conical_l_form() -> Any:
     """Lines 1002-1008: θ'' from (43) with l' = b (l kept), and the derivatives in l,
     dθ/dl = θ'/b, d²θ/dl² = θ''/b²."""
@@ -294,6 +297,7 @@ def _small_conical_u() -> Any:
     return second.subs(u, sp.Symbol("uc", real=True))
 
 
+@cache
 def reference_conical_small() -> Any:
     """Lines 1010-1016: (43) for small angles with θ = u/l, x = gl/b², u = v√(bc/g)."""
     import sympy as sp
@@ -311,6 +315,7 @@ def reference_conical_small() -> Any:
 # --- § IV, (46)-(52) and the trajectory (lines 1052-1135) --------------------------------
 
 
+@cache
 def reference_omega_pair() -> Any:
     """Lines 1054-1062: ω1 = ω/√A, ω2 = √A ω(∫dx/ω² + B) (written Iw for ∫dx/ω²), their
     x-derivatives by the chain rule with dIw/dx = 1/ω², and v of line 1050."""
@@ -347,11 +352,13 @@ def _plane_angles() -> dict[str, Any]:
     return out
 
 
+@cache
 def reference_plane_angles() -> Any:
     """(48), (49): θi = K ωi(x)/l with ωi solving (9) and (46)."""
     return _reference(_plane_angles(), "θi = √(bc/g) ωi(gl/b²)/l, (9), (46)")
 
 
+@cache
 def reference_polar_angle() -> Any:
     """Lines 1084-1086: θ1 = θ cos φ, θ2 = θ sin φ (φ the polar angle of (θ1, θ2)), and c
     from (49): c = l²(θ1θ2' − θ2θ1'), θ and φ varying."""
@@ -397,6 +404,7 @@ def _slow_solution(rho: Any, psi: Any, u: Any) -> Any:
     return zero.subs(at, simultaneous=True) + p * first.subs(at, simultaneous=True)
 
 
+@cache
 def reference_slow_pair() -> Any:
     """(50): θi the O(p) solution of (48) about ρi sin(γt − ψi) (γ = √(g/a))."""
 
@@ -408,6 +416,7 @@ def reference_slow_pair() -> Any:
     return _reference(exact, "(48) to O(p)", scale=p, order=2)
 
 
+@cache
 def reference_conical_phases() -> Any:
     """(51): c = l²(θ1θ2' − θ2θ1') from (49) with θi of (50) at t = 0 (l = a), γ = √(g/a)."""
     import sympy as sp
@@ -421,6 +430,7 @@ def reference_conical_phases() -> Any:
     return _reference(exact, "(49) at t = 0 with (50)")
 
 
+@cache
 def reference_rotated_phases() -> Any:
     """(52): the O(p) solutions about ρ1 cos u and ρ2 sin u (ψ1 = −π/2, ψ2 = 0, u = γt,
     the phases chosen at line 1110), and c from (49) at t = 0 as for (51)."""
@@ -435,6 +445,7 @@ def reference_rotated_phases() -> Any:
     return _reference(exact, "(48) to O(p), ψ1 = −π/2, ψ2 = 0", scale=p, order=2)
 
 
+@cache
 def reference_rotated_planes() -> Any:
     """Line 1108: the planes turned by ω; each θi = ρi sin(u − ψi) written Im(Zi e^{iu}),
     Zi = ρi e^{−iψi}: Z1' = Z1 cos ω + Z2 sin ω, Z2' = −Z1 sin ω + Z2 cos ω."""
@@ -481,6 +492,7 @@ def result_conical_small_angles_numeric() -> EquationCheck:
     )
 
 
+@cache
 def reference_lambda_substitution() -> Any:
     """Lines 1018-1042: v = λω with ω a solution of (9) (ω'' = −ω/x) and v of (45):
     v', v'' by the product rule (sympy), λ'' from (45), A the value of the first integral."""
@@ -500,6 +512,7 @@ def reference_lambda_substitution() -> Any:
     return _reference(exact, "(45), (9), v = λω", rates=rates)
 
 
+@cache
 def reference_primitive_angles() -> Any:
     """(47): θ = (v/l)√(bc/g), θi = (ωi/l)√(bc/g) (lines 1066-1070) with v = √(ω1² + ω2²)
     (line 1062)."""
@@ -511,6 +524,7 @@ def reference_primitive_angles() -> Any:
     return _reference(exact, "lines 1062-1070")
 
 
+@cache
 def reference_small_theta() -> Any:
     """θ scaled by ε (a series in the angle): line 1088's « pour le degré d'approximation
     adopté », θ² neglected beside 1."""
@@ -521,6 +535,7 @@ def reference_small_theta() -> Any:
     return _reference({"theta": scale * theta}, "θ -> εθ", scale=scale, order=4)
 
 
+@cache
 def reference_slow_length() -> Any:
     """l = a + bt with b = pγa (p = b/√(ga), γ = √(g/a)): a series in p."""
 
@@ -702,6 +717,7 @@ def _s_coefficients() -> tuple[Any, list[Any]]:
     return s, [series.coeff(s, n) for n in range(3)]
 
 
+@cache
 def reference_s_coefficients() -> Any:
     """Lines 704-714: u'', v'', w'' solved from the s⁰, s¹, s² coefficients of (30) with
     θ = u + vs + ws² (each coefficient is linear in its second derivative)."""
@@ -733,6 +749,7 @@ def _series_31() -> Any:
     return alpha + v * s + w * s**2, v
 
 
+@cache
 def reference_31() -> Any:
     """(31): θ through s² for β = 0, solved from (30) (lines 708-714)."""
     import sympy as sp
@@ -742,6 +759,7 @@ def reference_31() -> Any:
     return _reference({"theta": theta}, "(30) through s², β = 0", domain=domain)
 
 
+@cache
 def reference_polar_trajectory() -> Any:
     """Line 730: (31) without its s² term at z = l/b, and A, B, C its coefficients of l⁰,
     l¹, l⁻¹ (computed; θ then holds only if no other power of l occurs)."""
@@ -774,12 +792,14 @@ def _eq3_in_u(b: Any) -> dict[str, Any]:
     }
 
 
+@cache
 def reference_eq3_in_u() -> Any:
     """(32) from (3) in the variables of line 736."""
     (b,) = _symbols("b")
     return _reference(_eq3_in_u(b), "(3) in u = √(g/a)t, p = b/√(ga)")
 
 
+@cache
 def reference_ordinary_pendulum() -> Any:
     """(33): (3) with b = 0 (p = 0), in u."""
     import sympy as sp
@@ -787,13 +807,14 @@ def reference_ordinary_pendulum() -> Any:
     return _reference(_eq3_in_u(sp.Integer(0)), "(3) with b = 0, in u")
 
 
+@cache
 def reference_cn_solution() -> Any:
     """(34)-(35), lines 754-764: the textbook solution of (33) with amplitude θ0,
     sin(θ/2) = k cd v = k cn v/dn v (k = sin(θ0/2), v = u + C), written with φ = am v:
     cn v = cos φ, sn v = sin φ, dn v = √(1 − k² sin²φ); d/du = dn v · d/dφ."""
     import sympy as sp
 
-    k, phi, u, c = _symbols("k", "phi", "u", "C")
+    k, phi = _symbols("k", "phi")
     dn = sp.sqrt(1 - k**2 * sp.sin(phi) ** 2)
     theta = 2 * sp.asin(k * sp.cos(phi) / dn)
     first = sp.diff(theta, phi) * dn
@@ -807,7 +828,6 @@ def reference_cn_solution() -> Any:
         "dtheta_du": first,
         "d2theta_du2": sp.diff(first, phi) * dn,
     }
-    del u, c
     return _reference(exact, "sin(θ/2) = k cd v, the solution of (33)")
 
 
@@ -856,6 +876,7 @@ def _partial_chain() -> Any:
     return total, osculating, (theta, th_u, dc)
 
 
+@cache
 def reference_osculating() -> Any:
     """Lines 770-774: dθ/du and d²θ/du² by the chain rule with (36)."""
     total, osculating, (theta, th_u, dc) = _partial_chain()
@@ -866,6 +887,7 @@ def reference_osculating() -> Any:
     )
 
 
+@cache
 def reference_eq37() -> Any:
     """(37): dk/du, dC/du solved from (32), written with lines 770-774, and (36); the
     printed remark θ_uu + sin θ = 0 (the partial θ solves (33))."""
@@ -896,6 +918,7 @@ def _amplitude_series() -> Any:
     return guess.subs(c, sp.solve(residual.coeff(k, 2), c)[0])
 
 
+@cache
 def reference_amplitude_series() -> Any:
     """Lines 786-816: φ = am u through k³, cn u = cos am u, k' = √(1 − k²), θ = (35) at
     C = 0, f(u) its definition (line 814); a series in k through k³."""
@@ -999,6 +1022,7 @@ def _slow_finite() -> dict[str, Any]:
     }
 
 
+@cache
 def reference_eq39() -> Any:
     """(39): (32) with θ = ω + pε, ω a solution of (33) (ω'' = −sin ω): ε'' solved from
     (32) exactly, compared at order p⁰; F its definition (line 824)."""
@@ -1015,6 +1039,7 @@ def reference_eq39() -> Any:
     return _reference(exact, "(32) with θ = ω + pε", scale=p, order=1)
 
 
+@cache
 def reference_eq40() -> Any:
     """(40): (39) with ω of (38) (F computed from it), A and B its k and k³ coefficients,
     f and its derivatives from (38); a series in k through k³."""
@@ -1034,6 +1059,7 @@ def reference_eq40() -> Any:
     return _reference(exact, "(39) with ω of (38)", scale=k, order=4)
 
 
+@cache
 def reference_eps_split() -> Any:
     """Lines 836-856: ε = α + kβ + k²γ + k³δ (line 838) in (40); the second derivatives
     solved from its k⁰ … k³ coefficients (A, B kept as names); α = γ = 0, the solutions
@@ -1055,6 +1081,7 @@ def reference_eps_split() -> Any:
     return _reference(exact, "(40), ε split in powers of k")
 
 
+@cache
 def reference_eps_reduced() -> Any:
     """Lines 850-856: as reference_eps_split, with α = γ = 0."""
     split = reference_eps_split()
@@ -1068,6 +1095,7 @@ def reference_eps_reduced() -> Any:
     return _reference({**exact, **zero}, "(40) split, α = γ = 0")
 
 
+@cache
 def reference_beta_delta() -> Any:
     """Lines 858-880: β and δ solved with zero initial values, A and B computed from (38),
     f and its derivatives, β'' and δ'' those of the solutions."""
@@ -1087,6 +1115,7 @@ def reference_beta_delta() -> Any:
     return _reference(exact, "β, δ solved from (40) with zero initial values")
 
 
+@cache
 def reference_eq41() -> Any:
     """(41) and lines 888-900: θ = ω + p(kβ + k³δ) solved here; its value and slope at
     u = π/2; rg = √(g/a) (the text's r)."""
@@ -1122,11 +1151,13 @@ def _half_oscillation() -> Any:
     return sp.expand((sp.pi / 2 - kept).subs(p, b / sp.sqrt(g * a)) / gamma)
 
 
+@cache
 def reference_eq42() -> Any:
     """(42): the half-oscillation computed from θ of (41) as solved here (line 904)."""
     return _reference({"T": _half_oscillation()}, "π/2γ − θ/θ' at u = π/2, θ solved here")
 
 
+@cache
 def reference_eq42_prime() -> Any:
     """(42'): (42) with k = sin(θ0/2), through θ0²."""
     import sympy as sp
@@ -1137,6 +1168,7 @@ def reference_eq42_prime() -> Any:
     return _reference({"T": kept}, "(42) with k = sin(θ0/2), through θ0²")
 
 
+@cache
 def reference_t_equals_t_prime() -> Any:
     """Lines 918-932: T (and each T' of the same half-oscillation, reversed) the duration
     of (42) at k = 0, l = a + bT; b scaled by ε (first order in b)."""
@@ -1149,12 +1181,14 @@ def reference_t_equals_t_prime() -> Any:
     return _reference(exact, "(42) at k = 0, to first order in b", scale=scale, order=2)
 
 
+@cache
 def reference_identity() -> Any:
     """No substitution: the formula is an identity in its own symbols (checked at random
     rational points)."""
     return _reference({}, "an identity")
 
 
+@cache
 def reference_phase_derivatives() -> Any:
     """Line 782: θ of (35) is a function G(u + C, k): its partial derivatives."""
     import sympy as sp
@@ -1170,6 +1204,7 @@ def reference_phase_derivatives() -> Any:
     return _reference(exact, "θ = G(u + C, k)")
 
 
+@cache
 def reference_k3_neglected() -> Any:
     """Lines 888-892: the O(p) solution of (48) in u (as for (50)) at ψ = 3p/4 − π/2."""
     import sympy as sp
