@@ -50,6 +50,7 @@ __all__ = [
     "reference_polar_angle",
     "reference_polar_trajectory",
     "reference_primitive_angles",
+    "reference_printed_41",
     "reference_rotated_phases",
     "reference_rotated_planes",
     "reference_s_coefficients",
@@ -66,6 +67,7 @@ __all__ = [
     "result_delta_solution_numeric",
     "result_inverse_square_length",
     "result_k3_neglected_numeric",
+    "result_k4_examples",
     "result_lambda_numeric",
     "result_osculating_numeric",
     "result_polar_angle_numeric",
@@ -73,6 +75,7 @@ __all__ = [
     "result_rotated_planes_numeric",
     "result_s_quadratures_numeric",
     "result_trajectory_after_52",
+    "result_zero_initial_speed_numeric",
 ]
 
 
@@ -1354,4 +1357,64 @@ def result_osculating_numeric() -> EquationCheck:
         worst = max(abs(mpmath.diff(theta, u) - th_u), abs(mpmath.diff(theta, u, 2) - chain))
     return equation_check(
         worst < 1e-15, "numeric", f"the chain rule with (36), mpmath: {float(worst):.1e}"
+    )
+
+
+K4_EXAMPLES = (
+    "lecornu.k4.theta20",
+    "lecornu.k4.theta20_below_one_thousandth",
+    "lecornu.k4.swing180",
+)
+
+
+def result_k4_examples() -> EquationCheck:
+    """Line 816: k⁴ = sin⁴(θ0/2) is 0,00091 (< 1/1000) for θ0 = 20° and 0,25 for a swing of
+    180°, as the claims of tables/published/lecornu.toml judge them against their
+    recomputation."""
+    from pendcli.papers.registry import evaluate
+
+    rows = {r.id: r for r in evaluate("lecornu")}
+    chosen = [rows[i] for i in K4_EXAMPLES]
+    parts = [f"{r.id} printed {r.published}: {r.verdict}" for r in chosen]
+    return equation_check(
+        all(r.verdict == "agrees" for r in chosen), "numeric", "claims " + "; ".join(parts)
+    )
+
+
+@cache
+def reference_printed_41() -> Any:
+    """Line 886's « Cette formule donne dθ/dt = 0 pour t = 0 »: (41) as the ledger
+    transcribes it (row lecornu.eq.41), its u-derivative at u = 0 (dθ/dt = γ dθ/du)."""
+    import sympy as sp
+
+    from pendcli.core.ledger import load_ledger
+    from pendcli.core.printed import parse_formula
+
+    ledger = load_ledger("lecornu")
+    row = next(r for r in ledger.rows if r.id == "lecornu.eq.41")
+    assert row.printed is not None
+    ((_, theta),) = parse_formula(row.id, row.printed, dict(ledger.symbols)).equations
+    (u,) = _symbols("u")
+    return _reference({"dtheta_du0": sp.diff(theta, u).subs(u, 0)}, "(41) as printed")
+
+
+def result_zero_initial_speed_numeric() -> EquationCheck:
+    """Line 886: (41) as the ledger transcribes it, evaluated by mpmath and differentiated
+    numerically at u = 0 (k = 0.3, p = 0.05): dθ/du = 0."""
+    import mpmath
+    import sympy as sp
+
+    from pendcli.core.ledger import load_ledger
+    from pendcli.core.printed import parse_formula
+
+    ledger = load_ledger("lecornu")
+    row = next(r for r in ledger.rows if r.id == "lecornu.eq.41")
+    assert row.printed is not None
+    ((_, theta),) = parse_formula(row.id, row.printed, dict(ledger.symbols)).equations
+    u, k, p = _u_symbols()
+    function = sp.lambdify((u, k, p), theta, modules="mpmath")
+    with mpmath.workdps(30):
+        slope = mpmath.diff(lambda x: function(x, mpmath.mpf("0.3"), mpmath.mpf("0.05")), 0)
+    return equation_check(
+        abs(slope) < 1e-25, "numeric", f"dθ/du of (41) at u = 0 by mpmath: {float(slope):.1e}"
     )
