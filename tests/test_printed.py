@@ -54,6 +54,12 @@ INCONSISTENT = {
     # lines 1004, 1008: c² cos θ/(l² sin³θ) beside l θ'' (l³ is due), and the l-form's
     # derivatives printed in t (d²θ/dt² beside dθ/dt: L T^-2 against T^-1).
     "lecornu.result.conical_linear_form",
+    # line 706: z w''s is a pure number beside z u'' (T^-1; s = g/b is a rate): w''s², w's².
+    "lecornu.result.s_expansion",
+    # line 916: T' recalled from line 561 with the same (π² − 12b)/(16g).
+    "lecornu.result.t_prime_recalled",
+    # line 1102: 1/ρ² (a pure number: ρ is the amplitude of (50)) = 1/(a + bt)² (L^-2): 1/l².
+    "lecornu.result.inverse_square_length",
 }
 
 
@@ -93,7 +99,7 @@ def test_printed_numbers_occur_in_the_rows_span(ledger: object, row: LedgerRow) 
 
 @pytest.mark.parametrize(("ledger", "row"), _all())
 def test_dimensions_as_recorded(ledger: object, row: LedgerRow) -> None:
-    verdicts = row_dimensions(row, dict(ledger.symbols))  # type: ignore[attr-defined]
+    verdicts = row_dimensions(row, ledger.symbols_for(row))  # type: ignore[attr-defined]
     if "printed" in verdicts:
         bad = verdicts["printed"].verdict == "inconsistent"
         assert bad == (row.id in INCONSISTENT), f"{row.id}: {verdicts['printed'].detail}"
@@ -185,7 +191,7 @@ def _reference_rows() -> list[object]:
 def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
     ledger: object, row: LedgerRow
 ) -> None:
-    computed, problem = verify_printed(row, dict(ledger.symbols), TISSERAND_CHECKS)  # type: ignore[attr-defined]
+    computed, problem = verify_printed(row, ledger.symbols_for(row), TISSERAND_CHECKS)  # type: ignore[attr-defined]
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
@@ -204,7 +210,8 @@ def _altered_copy(tmp_path: Path, old: str, new: str) -> Path:
 
 def _row(root: Path, row_id: str) -> tuple[LedgerRow, dict[str, str]]:
     ledger = load_ledger("tisserand", root)
-    return next(r for r in ledger.rows if r.id == row_id), dict(ledger.symbols)
+    row = next(r for r in ledger.rows if r.id == row_id)
+    return row, ledger.symbols_for(row)
 
 
 @pytest.mark.parametrize(

@@ -28,6 +28,7 @@ from pendcli.core.ledger_formulas import (
     printed_status,
     row_dimensions,
     validate_formulas,
+    validate_scopes,
     validate_symbols,
 )
 from pendcli.core.rows import EquationRow
@@ -134,6 +135,19 @@ class Ledger:
     rows: tuple[LedgerRow, ...]
     # [symbols]: (name, dimension) pairs the formulas of the rows are written in.
     symbols: tuple[tuple[str, str], ...] = ()
+    # [[scope]]: a stretch of the text where some letters mean something else (Lecornu's u is
+    # a length in § I and a pure number from (32) on): (first, last line), its (name, dim).
+    scopes: tuple[tuple[tuple[int, int], tuple[tuple[str, str], ...]], ...] = ()
+
+    def symbols_for(self, row: LedgerRow) -> dict[str, str]:
+        """The symbols ``row``'s formulas are written in: [symbols], then the names of the
+        scope whose lines hold the row's first line, which take precedence."""
+        table = dict(self.symbols)
+        first = row.lines[0] if row.lines is not None else 0
+        for (low, high), names in self.scopes:
+            if low <= first <= high:
+                table.update(names)
+        return table
 
     def labels(self) -> Counter[str]:
         """How many rows each printed label has (stated results, with no label, excluded)."""
@@ -163,7 +177,7 @@ def load_ledger(paper: str, root: Path | None = None) -> Ledger:
 
 def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Ledger:
     """Validate a parsed ledger: unknown keys, missing fields and bad values are errors."""
-    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation", "symbols"))
+    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation", "symbols", "scope"))
     header = raw.get("ledger")
     if not isinstance(header, dict) or header.get("paper") != paper:
         raise PendcliError(f"{path}: [ledger] must be a table with paper = {paper!r}")
@@ -185,8 +199,10 @@ def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Led
     text_path = root / text.removeprefix("tables/")
     _check_text_fields(path, rows, text_path)
     symbols = validate_symbols(path, raw.get("symbols"))
-    validate_formulas(path, rows, dict(symbols))
-    return Ledger(paper, text_path, path, tuple(rows), symbols)
+    scopes = validate_scopes(path, raw.get("scope"), dict(symbols))
+    ledger = Ledger(paper, text_path, path, tuple(rows), symbols, scopes)
+    validate_formulas(path, rows, ledger.symbols_for)
+    return ledger
 
 
 def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: Iterable[str]) -> None:
@@ -370,8 +386,9 @@ def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> lis
     out = []
     for row in rows[start:stop]:
         check = run_check(row, checks)
-        dims = row_dimensions(row, dict(ledger.symbols)).get("printed")
-        computed, contradiction = verify_printed(row, dict(ledger.symbols), checks)
+        symbols = ledger.symbols_for(row)
+        dims = row_dimensions(row, symbols).get("printed")
+        computed, contradiction = verify_printed(row, symbols, checks)
         problem = verify(row, check) or contradiction
         out.append(Evaluated(row, check, problem, dims, computed))
     return out

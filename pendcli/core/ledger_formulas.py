@@ -7,7 +7,7 @@ naming the row; sympy is imported only when some row carries a formula.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -57,9 +57,41 @@ def validate_symbols(path: Path, raw: object) -> tuple[tuple[str, str], ...]:
     return tuple(sorted(raw.items()))
 
 
-def validate_formulas(path: Path, rows: Iterable[LedgerRow], symbols: Mapping[str, str]) -> None:
-    """Parse every formula field of every row; the first bad one is an error naming it."""
+def validate_scopes(
+    path: Path, raw: object, symbols: Mapping[str, str]
+) -> tuple[tuple[tuple[int, int], tuple[tuple[str, str], ...]], ...]:
+    """``[[scope]]`` tables (``lines = [first, last]``, ``what``, ``symbols = {...}``): the
+    letters a stretch of the text uses with another meaning; each name must be one [symbols]
+    declares too (a scope changes what a name means, never adds one silently)."""
+    if raw is None:
+        return ()
+    if not isinstance(raw, list):
+        raise PendcliError(f"{path}: [[scope]] must be an array of tables")
+    out = []
+    for index, scope in enumerate(raw):
+        where = f"{path}: [[scope]] {index + 1}"
+        lines = scope.get("lines") if isinstance(scope, dict) else None
+        if not (isinstance(lines, list) and len(lines) == 2
+                and all(type(n) is int for n in lines) and 1 <= lines[0] <= lines[1]):  # fmt: skip
+            raise PendcliError(f"{where}: lines = [first, last], 1 <= first <= last")
+        unknown = sorted(set(scope) - {"lines", "what", "symbols"})
+        if unknown or not isinstance(scope.get("what"), str) or not scope["what"].strip():
+            raise PendcliError(f"{where}: keys lines, what (why the letters differ), symbols")
+        names = validate_symbols(Path(where), scope.get("symbols"))
+        undeclared = [n for n, _ in names if n not in symbols]
+        if undeclared or not names:
+            raise PendcliError(f"{where}: names not in [symbols]: {undeclared or 'none given'}")
+        out.append(((lines[0], lines[1]), names))
+    return tuple(out)
+
+
+def validate_formulas(
+    path: Path, rows: Iterable[LedgerRow], symbols_for: Callable[[LedgerRow], Mapping[str, str]]
+) -> None:
+    """Parse every formula field of every row (in the symbols of its place in the text); the
+    first bad one is an error naming it."""
     for row in rows:
+        symbols = symbols_for(row)
         for field in FORMULA_FIELDS:
             if getattr(row, field) is not None:
                 if not symbols:

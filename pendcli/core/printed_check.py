@@ -40,7 +40,9 @@ class Reference:
     ``orders``: left-side symbol name -> the order its equation is compared through;
     ``reading``: the reference the reading is judged against, when the slip is the text's
     cross-reference itself (the printed form is judged against the equation the text cites,
-    the reading against the one it should cite)."""
+    the reading against the one it should cite);
+    ``rates``: variable name -> {symbol name -> its derivative in that variable}, how a printed
+    ``Derivative(f, t)`` is evaluated (the chain rule; an unlisted symbol is a constant)."""
 
     exact: Mapping[str, Any]
     scale: Any = None
@@ -49,6 +51,7 @@ class Reference:
     what: str = ""
     orders: Mapping[str, int] = field(default_factory=dict)
     reading: Reference | None = None
+    rates: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
@@ -69,6 +72,8 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
     names = {s.name: s for s in residual.free_symbols}
     exact = {names[n]: v for n, v in reference.exact.items() if n in names}
     expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
+    if reference.rates:
+        expr = _along_the_rates(expr, reference.rates)
     expr = expr.subs(exact, simultaneous=True)
     # a derivative of the reference's explicit functions is taken (integrals stay for quadrature)
     expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
@@ -81,6 +86,26 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
     if ok or "not a number" not in why or expr.has(sp.Integral):
         return ok, why
     return (True, "simplifies to 0") if sp.simplify(expr) == 0 else (False, why)
+
+
+def _along_the_rates(expr: Any, rates: Mapping[str, Mapping[str, Any]]) -> Any:
+    """Each ``Derivative(f, x, n)`` of ``expr`` by the chain rule along ``rates[x]`` (the
+    printed d/dt of a product of declared symbols: l² dθ/dt -> 2l l' θ' + l² θ'')."""
+    import sympy as sp
+
+    def total(f: Any, x: Any) -> Any:
+        rate = rates.get(x.name, {})
+        terms = (sp.diff(f, s) * (1 if s == x else rate.get(s.name, 0)) for s in f.free_symbols)
+        return sp.Add(*terms)
+
+    def evaluate(derivative: Any) -> Any:
+        f = derivative.expr
+        for x, count in derivative.variable_count:
+            for _ in range(count):
+                f = total(f, x)
+        return f
+
+    return expr.replace(lambda e: isinstance(e, sp.Derivative), evaluate)
 
 
 def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:

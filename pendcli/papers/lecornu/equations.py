@@ -133,6 +133,7 @@ from pendcli.papers.lecornu.equations_small import (
     result_zero_length_limit,
 )
 from pendcli.papers.lecornu.references_early import *  # noqa: F403 (issue 19, lines 1-698)
+from pendcli.papers.lecornu.references_late import *  # noqa: F403  (l19b: lines 699-1135)
 
 __all__ = [
     "eq_1",

@@ -1,0 +1,261 @@
+"""Lecornu, lines 699-1135 (§ III from (30), § IV): every row carries its printed form, every
+checked row's status is computed from it (pendcli/papers/lecornu/references_late.py), a
+changed coefficient or a misprint set to its reading is refused, and the findings of these
+lines are verified a second, numeric way."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from pendcli.core.dimensions import check_dimensions
+from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, load_ledger, verify_printed
+from pendcli.core.printed import parse_dimension, parse_formula
+from pendcli.core.printed_check import formula_passes
+from pendcli.papers.lecornu import equations as CHECKS
+
+ROOT = Path(__file__).resolve().parent.parent
+TABLES = ROOT / "tables"
+FIRST = 699  # lines 1-698 are another part of the ledger
+# Checked rows of these lines without a reference, and why.
+NO_REFERENCE = {
+    # nested integrals with a variable bound: their only closed form is themselves
+    "lecornu.result.s_quadratures",
+    # a statement about functions (λ², v solve (45)), checked by sympy and by an ODE
+    "lecornu.result.conical_general_integral",
+    # bare expressions (the axes) and a ratio in prose: nothing to equate
+    "lecornu.result.homothety_ratio",
+}
+
+
+def _late_rows() -> list[LedgerRow]:
+    return [r for r in load_ledger("lecornu", TABLES).rows if r.lines and r.lines[0] >= FIRST]
+
+
+def _params(rows: list[LedgerRow]) -> list[object]:
+    return [pytest.param(r, id=r.id) for r in rows]
+
+
+def test_every_row_has_its_printed_form() -> None:
+    assert [r.id for r in _late_rows() if r.printed is None] == []
+
+
+def test_every_checked_row_has_a_reference() -> None:
+    rows = _late_rows()
+    missing = {r.id for r in rows if r.status in CHECKED_STATUSES and r.reference is None}
+    assert missing == NO_REFERENCE
+
+
+@pytest.mark.parametrize("row", _params([r for r in _late_rows() if r.reference]))
+def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row: LedgerRow) -> None:
+    ledger = load_ledger("lecornu", TABLES)
+    computed, problem = verify_printed(row, ledger.symbols_for(row), CHECKS)
+    assert problem is None, problem
+    assert computed is not None and computed.startswith(f"{row.status}:")
+
+
+@pytest.mark.parametrize("row", _params([r for r in _late_rows() if r.wrong_term]))
+def test_a_wrong_term_is_printed_in_its_lines(row: LedgerRow) -> None:
+    # editing the text to the reading (e.g. (52)'s u cos u to − u sin u) breaks this
+    lines = (TABLES / "papers" / "lecornu.txt").read_text(encoding="utf-8").splitlines()
+    assert row.lines is not None and row.wrong_term is not None
+    span = "\n".join(lines[row.lines[0] - 1 : row.lines[1]])
+    assert row.wrong_term in span
+
+
+def _altered_copy(tmp_path: Path, old: str, new: str) -> Path:
+    root = tmp_path / "tables"
+    shutil.copytree(TABLES, root)
+    path = root / "equations" / "lecornu.toml"
+    text = path.read_text(encoding="utf-8")
+    assert text.count(old) == 1, old
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return root
+
+
+def _problem(root: Path, row_id: str) -> tuple[str | None, str | None]:
+    ledger = load_ledger("lecornu", root)
+    row = next(r for r in ledger.rows if r.id == row_id)
+    return verify_printed(row, ledger.symbols_for(row), CHECKS)
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        # (31): the s² bracket's −5zz0 -> −4zz0
+        ("lecornu.eq.31", "(z**2 - 5*z*z0 - 2*z0**2)", "(z**2 - 4*z*z0 - 2*z0**2)"),
+        # (38): 12u sin u -> 11u sin u
+        (
+            "lecornu.eq.38",
+            "12*u*sin(u) - cos(3*u)) = 2*k*cos(u) + k**3/24*fu",
+            "11*u*sin(u) - cos(3*u)) = 2*k*cos(u) + k**3/24*fu",
+        ),
+        # (40): A = 2u cos u + 4 sin u -> 2u cos u + 3 sin u
+        ("lecornu.eq.40", "A40 = 2*u*cos(u) + 4*sin(u)", "A40 = 2*u*cos(u) + 3*sin(u)"),
+        # line 1012: b²c²/g² -> b²c²/g
+        ("lecornu.result.conical_small_angles", "b**2*c**2/g**2*1/uc**3", "b**2*c**2/g*1/uc**3"),
+        # (50): the 3/4 of θ1 -> 1/4
+        (
+            "lecornu.eq.50",
+            "theta1 = rho1*(1 - 3/4*p*gamma*t)",
+            "theta1 = rho1*(1 - 1/4*p*gamma*t)",
+        ),
+        # line 1108: 2ρ1ρ2 cos(ψ2 − ψ1) cos 2ω -> ρ1ρ2 …
+        (
+            "lecornu.result.rotated_planes",
+            "+ 2*rho1*rho2*cos(psi2 - psi1)*cos(2*omega)",
+            "+ rho1*rho2*cos(psi2 - psi1)*cos(2*omega)",
+        ),
+        # (43): g l sin θ -> g sin θ
+        (
+            "lecornu.eq.43",
+            "Derivative(l**2*dtheta_dt, t) + g*l*sin(theta)",
+            "Derivative(l**2*dtheta_dt, t) + g*sin(theta)",
+        ),
+    ],
+)
+def test_a_changed_coefficient_stops_a_row_holding(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    computed, problem = _problem(_altered_copy(tmp_path, old, new), row_id)
+    assert problem is not None and problem.startswith("recorded holds, but the printed form")
+    assert computed is not None and not computed.startswith("holds")
+
+
+def _printed_line(row_id: str) -> str:
+    row = next(r for r in load_ledger("lecornu", TABLES).rows if r.id == row_id)
+    return f"printed = '{row.printed}'"
+
+
+def _reading_line(row_id: str) -> str:
+    row = next(r for r in load_ledger("lecornu", TABLES).rows if r.id == row_id)
+    return f"printed = '{row.reading_formula}'"
+
+
+@pytest.mark.parametrize(
+    "row_id",
+    [
+        "lecornu.eq.52",
+        "lecornu.result.s_expansion",
+        "lecornu.result.conical_linear_form",
+        "lecornu.result.trajectory_after_52",
+        "lecornu.result.inverse_square_length",
+        "lecornu.eq.51",
+    ],
+)
+def test_a_misprint_whose_printed_form_is_its_reading_is_refused(
+    tmp_path: Path, row_id: str
+) -> None:
+    root = _altered_copy(tmp_path, _printed_line(row_id), _reading_line(row_id))
+    _, problem = _problem(root, row_id)
+    assert problem is not None
+    assert problem.startswith("recorded misprint, but the printed form gives holds")
+
+
+# --- the findings of these lines, each verified a second way ------------------------------
+
+
+def _symbols() -> dict[str, str]:
+    """The symbols of these lines (the scope from (30) on included)."""
+    ledger = load_ledger("lecornu", TABLES)
+    return ledger.symbols_for(next(r for r in ledger.rows if r.lines and r.lines[0] >= FIRST))
+
+
+def _formula(text: str) -> object:
+    return parse_formula("test", text, _symbols())
+
+
+def _dimension_verdict(text: str) -> str:
+    dims = {k: parse_dimension(k, v) for k, v in _symbols().items()}
+    return check_dimensions(_formula(text), dims).verdict  # type: ignore[arg-type]
+
+
+def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
+    """Line 1008: l θ_tt + 2θ_t + (g/b²) sin θ − … is not (43) in l; with d²θ/dl², dθ/dl
+    (and l³) it is. Symbolic (the engine, each slip alone) and dimensional here; numeric:
+    (43) integrated by mpmath, the two forms evaluated along the solution."""
+    reference = CHECKS.reference_conical_l_form()
+    l3 = "c**2*cos(theta)/(b**2*l**3*sin(theta)**3) = 0"
+    in_t = f"l*d2theta_dt2 + 2*dtheta_dt + g/b**2*sin(theta) - {l3}"
+    in_l = f"l*d2theta_dl2 + 2*dtheta_dl + g/b**2*sin(theta) - {l3}"
+    assert not formula_passes(_formula(in_t), reference)[0]  # type: ignore[arg-type]
+    assert formula_passes(_formula(in_l), reference)[0]  # type: ignore[arg-type]
+    assert _dimension_verdict(in_t) == "inconsistent"
+    assert _dimension_verdict(in_l) == "consistent"
+
+    import mpmath
+
+    a, b, g, c = (mpmath.mpf(x) for x in ("1", "0.3", "9.81", "0.4"))
+    with mpmath.workdps(25):
+
+        def rhs(t: object, y: list[object]) -> list[object]:
+            theta, dtheta = y
+            length = a + b * t  # type: ignore[operator]
+            return [
+                dtheta,
+                (-2 * b * length * dtheta - g * length * mpmath.sin(theta))  # type: ignore[operator]
+                / length**2
+                + c**2 * mpmath.cos(theta) / (length**4 * mpmath.sin(theta) ** 3),
+            ]
+
+        solution = mpmath.odefun(rhs, 0, [mpmath.mpf("0.6"), mpmath.mpf(0)])
+        t = mpmath.mpf("0.5")
+        theta, dtheta = solution(t)
+        d2theta = rhs(t, [theta, dtheta])[1]
+        length = a + b * t
+        tail = g / b**2 * mpmath.sin(theta) - c**2 * mpmath.cos(theta) / (
+            b**2 * length**3 * mpmath.sin(theta) ** 3
+        )
+        as_printed = length * d2theta + 2 * dtheta + tail
+        as_read = length * d2theta / b**2 + 2 * dtheta / b + tail
+    assert abs(as_read) < 1e-15 < 1e-3 < abs(as_printed)
+
+
+def test_the_trajectory_after_52_has_its_arctangent_argument_inverted() -> None:
+    """Line 1126: symbolic (the engine against (48) to O(p)) and numeric (an ODE)."""
+    reference = CHECKS.reference_rotated_phases()
+    left = "(x/rho1)**2 + (y/rho2)**2 - 1 = -3*p/2*atan"
+    assert not formula_passes(_formula(f"{left}(rho2*y/(rho1*x))"), reference)[0]  # type: ignore[arg-type]
+    assert formula_passes(_formula(f"{left}(rho1*y/(rho2*x))"), reference)[0]  # type: ignore[arg-type]
+    numeric = CHECKS.result_trajectory_after_52()
+    assert numeric.holds and "as printed" in numeric.detail
+
+
+def test_line_880_solves_neither_delta_equation() -> None:
+    """Line 880's 32δ: symbolic (sympy: its δ'' + δ is the printed right side of line 876 but
+    ¾ sin u for ½ sin u) and numeric (the corrected δ-equation by an ODE)."""
+    import sympy as sp
+    from sympy.simplify.fu import TR8
+
+    u = sp.Symbol("u", real=True)
+    delta = (
+        -4 * u**3 * sp.cos(u)
+        + 11 * u**2 * sp.sin(u)
+        - u * sp.cos(u)
+        - u**2 * sp.sin(3 * u)
+        - 3 * u * sp.cos(3 * u)
+        + 4 * sp.sin(u)
+    ) / 32
+    printed_rhs = (
+        sp.Rational(3, 4) * u**2 * sp.sin(u)
+        + sp.Rational(5, 8) * u * sp.cos(u)
+        + sp.sin(u) / 2
+        + u**2 * sp.sin(3 * u) / 4
+        + sp.Rational(3, 8) * u * sp.cos(3 * u)
+        + sp.sin(3 * u) / 2
+    )
+    gap = sp.expand(TR8(sp.expand(delta.diff(u, 2) + delta - printed_rhs)))
+    assert gap == sp.sin(u) / 4
+    check = CHECKS.result_delta_solution_numeric()
+    assert not check.holds and check.corrected
+
+
+def test_line_1102_prints_rho_for_l() -> None:
+    """Line 1102's 1/ρ²: dimensionally (a pure number beside 1/(a + bt)², L⁻²) and by the
+    engine (ρ, the amplitude of (50), is no length)."""
+    printed = "1/rho**2 = 1/(a + b*t)**2"
+    assert _dimension_verdict(printed) == "inconsistent"
+    assert _dimension_verdict("1/l**2 = 1/(a + b*t)**2") == "consistent"
+    assert CHECKS.result_inverse_square_length().holds
