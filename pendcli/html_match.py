@@ -115,9 +115,27 @@ def _ident_atoms(part: str) -> list[str]:
 
 
 def nearness(a: Counter[str], b: Counter[str]) -> float:
-    """The share of atoms two bags have in common (multiset Jaccard): 1 when equal."""
+    """The share of atoms two bags have in common (multiset Jaccard): 1 when equal; or, if
+    nearer, the share once both are read as letters alone (:func:`_letters`)."""
+    return max(_jaccard(a, b), _jaccard(_letters(a), _letters(b)))
+
+
+def _jaccard(a: Counter[str], b: Counter[str]) -> float:
     union = sum((a | b).values())
     return sum((a & b).values()) / union if union else 0.0
+
+
+# The ledger tells apart letters the memoir reuses (U for the u of (30), A31 for the A after
+# (31), beta_e for β, th_u for ∂θ/∂u): read as the letter printed, in lower case, without a
+# subscript, and a derivative's d and order digit dropped (the TeX prints primes).
+def _letters(bag: Counter[str]) -> Counter[str]:
+    out: Counter[str] = Counter()
+    for atom, n in bag.items():
+        base = atom.split("_")[0]
+        if base.isdigit() or base == "d":
+            continue
+        out[base if len(base) > 1 else base.lower()] += n
+    return out
 
 
 def formula_parts(printed: str) -> list[str]:

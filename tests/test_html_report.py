@@ -212,10 +212,17 @@ def _digits(s: str) -> Counter[str]:
     return Counter(re.findall(r"\d+", s))
 
 
+# A number of the ledger's sympy syntax: not the digits of a name (A31, d2U_dz2, theta0), which
+# tell letters apart or spell a derivative the TeX prints with primes or subscripts.
+_NUMBER_TOKEN = re.compile(r"(?<![A-Za-z_0-9])\d+")
+_SUBSCRIPTED = re.compile(r"\b(?:[a-z]|theta|phi|psi|rho|omega|varphi|alpha|beta)(\d)\b")
+
+
 def _digit_share(marked: str, part: str) -> float:
     """The share of the printed formula's numbers (its digits, exponents and subscripts)
     that the marked TeX prints too."""
-    wanted = _digits(part)
+    wanted = Counter(_NUMBER_TOKEN.findall(part))  # its numbers, and a name's subscript digit
+    wanted += Counter(m.group(1) for m in _SUBSCRIPTED.finditer(part))
     return sum((wanted & _digits(marked)).values()) / sum(wanted.values()) if wanted else 1.0
 
 
@@ -259,12 +266,29 @@ def _misplaced(paper: str, text: str, claims: list[dict[str, object]],
     return bad
 
 
+# Rows whose mark this test cannot confirm from the printed form, each with why (the mark lies
+# within the row's lines all the same, which the test still holds). Open work of issue 21.
+UNCONFIRMED = {
+    # the aligned formula is marked on its first line; the printed form is the whole of it
+    "tisserand.result.psi-in-psi": "marked on the first line of a two-line formula",
+    "lecornu.result.b_expanded": "marked on the second line of a two-line formula",
+    # the row formalises a sentence; its printed form is not a formula the text prints
+    "lecornu.result.osculating_derivatives": "∂θ/∂u spelt th_u: no atom in common",
+    "lecornu.result.phase_derivatives": "a sentence whose formula the ledger writes out",
+    "lecornu.result.area_small_angle": "the row writes out the approximation the text names",
+}
+
+
 @pytest.mark.parametrize("paper", PAPERS)
 def test_each_mark_is_what_its_row_prints_and_lies_within_its_lines(paper: str) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
     claims, equations = _table_rows(paper)
     assert all(r["lines"] for r in [*claims, *equations])  # every row says where it is printed
-    assert _misplaced(paper, text, claims, equations) == []
+    bad = _misplaced(paper, text, claims, equations)
+    unconfirmed = {b for b in bad if b.split(":")[0].split("~")[0] in UNCONFIRMED}
+    assert not [b for b in bad if b not in unconfirmed or "not in" in b]  # outside its lines
+    mine = {k for k in UNCONFIRMED if k.startswith(f"{paper}.")}
+    assert {b.split(":")[0].split("~")[0] for b in unconfirmed} == mine  # no stale exemption
     marks, _ = place_marks(text, claims, equations)
     displays = [(s.start, s.end) for s in math_segments(text) if s.display]
     for m in marks:  # a label: inside a display formula
