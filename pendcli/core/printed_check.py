@@ -19,7 +19,7 @@ The status follows:
 from __future__ import annotations
 
 import random
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -33,15 +33,19 @@ _DIGITS = 20
 
 @dataclass(frozen=True)
 class Reference:
-    """Symbol name -> exact sympy expression; ``scale``/``order``: compare a truncated series
+    """Symbol name -> exact sympy expression (a declared function's name -> a callable of its
+    arguments, e.g. a ``sympy.Lambda``); ``scale``/``order``: compare a truncated series
     (the residual's series in ``scale`` must vanish through ``scale**(order - 1)``);
-    ``domain``: symbol name -> (low, high) for the random points (default (1/10, 1/2))."""
+    ``domain``: symbol name -> (low, high) for the random points (default (1/10, 1/2));
+    ``transform``: applied to the residual before the substitution (a total derivative, a
+    change of variable the notation leaves implicit)."""
 
     exact: Mapping[str, Any]
     scale: Any = None
     order: int | None = None
     domain: Mapping[str, tuple[Any, Any]] = field(default_factory=dict)
     what: str = ""
+    transform: Callable[[Any], Any] | None = None
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
@@ -58,12 +62,15 @@ def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
 def _equation_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
     import sympy as sp
 
-    names = {s.name: s for s in residual.free_symbols}
-    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
     expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
-    expr = expr.subs(exact, simultaneous=True)
+    if reference.transform is not None:
+        expr = reference.transform(expr)
+    names = {s.name: s for s in expr.free_symbols}
+    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
+    # the symbols first: a function's value is an expression in the unsubstituted symbols
+    expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
     if reference.scale is not None and reference.order is not None:
-        expr = sp.series(expr, reference.scale, 0, reference.order).removeO()
+        expr = _truncated(expr, reference.scale, reference.order)
     # The random points first: cheap, and decisive when the residual is not 0; simplify only
     # where a point gives no number. An integral is never simplified (sympy's antiderivatives
     # can take minutes).
@@ -71,6 +78,30 @@ def _equation_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
     if ok or "not a number" not in why or expr.has(sp.Integral):
         return ok, why
     return (True, "simplifies to 0") if sp.simplify(expr) == 0 else (False, why)
+
+
+def _truncated(expr: Any, scale: Any, order: int) -> Any:
+    """The series of ``expr`` in ``scale`` below ``order`` (sympy's series of a polynomial
+    with unevaluated integrals for coefficients can take minutes)."""
+    import sympy as sp
+
+    if expr.is_polynomial(scale):  # its Taylor coefficients, by differentiation
+        terms, term = [], expr
+        for j in range(order):
+            terms.append(term.subs(scale, 0) * scale**j / sp.factorial(j))
+            term = sp.diff(term, scale)
+        return sum(terms)
+    return sp.series(expr, scale, 0, order).removeO()
+
+
+def _functions_replaced(expr: Any, reference: Reference) -> Any:
+    """Each call of a declared function the reference gives (``E_c(pi)``) by its value."""
+    from sympy.core.function import AppliedUndef
+
+    def given(e: Any) -> bool:
+        return isinstance(e, AppliedUndef) and callable(reference.exact.get(type(e).__name__))
+
+    return expr.replace(given, lambda e: reference.exact[type(e).__name__](*e.args))
 
 
 def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:
