@@ -23,8 +23,8 @@ TABLES = ROOT / "tables"
 # prose only (no formula to transcribe).
 TRANSCRIBED = {
     "tisserand": {"tisserand.result.inverse-square-coefficient"},
-    # the general solution is a sentence; I_n(π)'s products 2·4…n are not transcribed yet
-    "charbonnier": {"charbonnier.result.general-solution", "charbonnier.result.in-pi"},
+    # the products 2·4…n of I_n(π) and of Δα in n° 16, 2° have no notation here
+    "charbonnier": {"charbonnier.result.in-pi", "charbonnier.result.delta-alpha-closed"},
 }
 # The printed forms whose two sides (or terms) differ in dimension: each is a misprint row
 # whose reading is consistent (verified by hand against tables/papers/<paper>.txt).
@@ -36,6 +36,8 @@ INCONSISTENT = {
     # line 435: E_c = B_n/(n+1) k^(n+1) αⁿ l0ⁿ sin^(n+1) kt is [F]·T^-1 where the integral
     # E_c = ∫ F cos kt dt is [F]·T (k² too many, whatever the dimension of F): a fails row.
     "charbonnier.result.ec-monomial",
+    # lines 227-229: E_c = (1/(k²α))∫₀^θ φ dv, v a speed, upper limit an angle (for θ').
+    "charbonnier.result.e-angle-integrals",
     # line 80, (6): d²(θl)/dt² (L T^-2) beside (g/b²) sin θ (L^-1): the derivative is in l.
     "lecornu.eq.6",
     # line 561: (π² − 12b)/(16g) adds a number to a speed b: (π² − 12)b/(16g).
