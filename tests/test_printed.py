@@ -24,8 +24,8 @@ TABLES = ROOT / "tables"
 TRANSCRIBED = {
     # the aside of line 202 is a claim of tables/published/tisserand.toml (a bound in mm)
     "tisserand": {"tisserand.result.displacement"},
-    # the general solution is a sentence; I_n(π)'s products 2·4…n are not transcribed yet
-    "charbonnier": {"charbonnier.result.general-solution", "charbonnier.result.in-pi"},
+    # the products 2·4…n of I_n(π) and of Δα in n° 16, 2° have no notation here
+    "charbonnier": {"charbonnier.result.in-pi", "charbonnier.result.delta-alpha-closed"},
 }
 # The printed forms whose two sides (or terms) differ in dimension: each is a misprint row
 # whose reading is consistent (verified by hand against tables/papers/<paper>.txt).
@@ -39,6 +39,8 @@ INCONSISTENT = {
     # line 435: E_c = B_n/(n+1) k^(n+1) αⁿ l0ⁿ sin^(n+1) kt is [F]·T^-1 where the integral
     # E_c = ∫ F cos kt dt is [F]·T (k² too many, whatever the dimension of F): a fails row.
     "charbonnier.result.ec-monomial",
+    # lines 227-229: E_c = (1/(k²α))∫₀^θ φ dv, v a speed, upper limit an angle (for θ').
+    "charbonnier.result.e-angle-integrals",
     # line 80, (6): d²(θl)/dt² (L T^-2) beside (g/b²) sin θ (L^-1): the derivative is in l.
     "lecornu.eq.6",
     # line 640, (28): (2γ²t³ − 3γt) adds a time to a number: 2γ³t³ (as (29) prints 10γ³t³).

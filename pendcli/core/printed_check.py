@@ -20,7 +20,7 @@ may carry one quantity further than another). The status follows:
 from __future__ import annotations
 
 import random
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -34,7 +34,8 @@ _DIGITS = 20
 
 @dataclass(frozen=True)
 class Reference:
-    """Symbol name -> exact sympy expression; ``scale``/``order``: compare a truncated series
+    """Symbol name -> exact sympy expression (a declared function's name -> a callable of its
+    arguments, e.g. a ``sympy.Lambda``); ``scale``/``order``: compare a truncated series
     (the residual's series in ``scale`` must vanish through ``scale**(order - 1)``);
     ``domain``: symbol name -> (low, high) for the random points (default (1/10, 1/2));
     ``orders``: left-side symbol name -> the order its equation is compared through;
@@ -42,7 +43,9 @@ class Reference:
     cross-reference itself (the printed form is judged against the equation the text cites,
     the reading against the one it should cite);
     ``rates``: variable name -> {symbol name -> its derivative in that variable}, how a printed
-    ``Derivative(f, t)`` is evaluated (the chain rule; an unlisted symbol is a constant)."""
+    ``Derivative(f, t)`` is evaluated (the chain rule; an unlisted symbol is a constant);
+    ``transform``: applied to the residual before the substitution (a total derivative, a
+    change of variable the notation leaves implicit)."""
 
     exact: Mapping[str, Any]
     scale: Any = None
@@ -52,6 +55,7 @@ class Reference:
     orders: Mapping[str, int] = field(default_factory=dict)
     reading: Reference | None = None
     rates: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
+    transform: Callable[[Any], Any] | None = None
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
@@ -69,16 +73,19 @@ def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
 def _equation_passes(residual: Any, reference: Reference, order: int | None) -> tuple[bool, str]:
     import sympy as sp
 
-    names = {s.name: s for s in residual.free_symbols}
-    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
     expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
+    if reference.transform is not None:
+        expr = reference.transform(expr)
     if reference.rates:
         expr = _along_the_rates(expr, reference.rates)
-    expr = expr.subs(exact, simultaneous=True)
+    names = {s.name: s for s in expr.free_symbols}
+    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
+    # the symbols first: a function's value is an expression in the unsubstituted symbols
+    expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
     # a derivative of the reference's explicit functions is taken (integrals stay for quadrature)
     expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
     if reference.scale is not None and order is not None:
-        expr = sp.series(expr, reference.scale, 0, order).removeO()
+        expr = _truncated(expr, reference.scale, order)
     # The random points first: cheap, and decisive when the residual is not 0; simplify only
     # where a point gives no number. An integral is never simplified (sympy's antiderivatives
     # can take minutes).
@@ -106,6 +113,30 @@ def _along_the_rates(expr: Any, rates: Mapping[str, Mapping[str, Any]]) -> Any:
         return f
 
     return expr.replace(lambda e: isinstance(e, sp.Derivative), evaluate)
+
+
+def _truncated(expr: Any, scale: Any, order: int) -> Any:
+    """The series of ``expr`` in ``scale`` below ``order`` (sympy's series of a polynomial
+    with unevaluated integrals for coefficients can take minutes)."""
+    import sympy as sp
+
+    if expr.is_polynomial(scale):  # its Taylor coefficients, by differentiation
+        terms, term = [], expr
+        for j in range(order):
+            terms.append(term.subs(scale, 0) * scale**j / sp.factorial(j))
+            term = sp.diff(term, scale)
+        return sum(terms)
+    return sp.series(expr, scale, 0, order).removeO()
+
+
+def _functions_replaced(expr: Any, reference: Reference) -> Any:
+    """Each call of a declared function the reference gives (``E_c(pi)``) by its value."""
+    from sympy.core.function import AppliedUndef
+
+    def given(e: Any) -> bool:
+        return isinstance(e, AppliedUndef) and callable(reference.exact.get(type(e).__name__))
+
+    return expr.replace(given, lambda e: reference.exact[type(e).__name__](*e.args))
 
 
 def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:

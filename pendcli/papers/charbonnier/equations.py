@@ -216,3 +216,57 @@ def result_principal_motion() -> EquationCheck:
         method="sympy",
         detail="as (3) and n° 3: " + "; ".join(p.detail for p in parts),
     )
+
+
+def result_delta_alpha_closed() -> EquationCheck:
+    """n° 16, 2°: I_n(π) in −(b_n/g)(αgT/π)ⁿ I_n(π) replaced by the products of n° 15,
+    2·(2·4…n)/(1·3·5…(n+1)) (n even), π·(1·3·5…n)/(2·4·6…(n+1)) (n odd), against an mpmath
+    quadrature of ∫₀^π sin^(n+1) x dx for n = 0..7 (the common factor cancels)."""
+    import mpmath
+
+    worst = 0.0
+    with mpmath.workdps(30):
+        for n in range(8):
+            odd = n % 2
+            top = mpmath.fprod(range(1 if odd else 2, n + 1, 2))  # 1·3…n or 2·4…n
+            bottom = mpmath.fprod(range(2 if odd else 1, n + 2, 2))  # 2·4…(n+1) or 1·3…(n+1)
+            product = (mpmath.pi if odd else 2) * top / bottom
+            quadrature = mpmath.quad(lambda x, m=n: mpmath.sin(x) ** (m + 1), [0, mpmath.pi])
+            worst = max(worst, float(abs(product / quadrature - 1)))
+    return EquationCheck(
+        holds=worst < 1e-20,
+        method="numeric",
+        detail=f"the products against ∫₀^π sin^(n+1) for n = 0..7: worst relative gap {worst:.1e}",
+    )
+
+
+# --- the statuses computed from the printed forms (issue 19) ---------------------------
+# ``reference = "reference_…"`` names a function of references.py (re-exported here, as the
+# engine reads it from this module); ``check = "printed_<slug>"`` is the check of a row whose
+# status rests on its printed form alone: the engine's verdict against that reference.
+
+
+def printed_form_check(row_id: str) -> EquationCheck:
+    """The check of ``row_id`` as its printed form earns it (core/printed_check)."""
+    from pendcli.core.ledger import load_ledger
+    from pendcli.core.ledger_formulas import printed_status
+
+    ledger = load_ledger("charbonnier")
+    row = next(r for r in ledger.rows if r.id == row_id)
+    if row.reference is None:
+        return EquationCheck(holds=False, method="sympy", detail=f"{row_id} has no reference")
+    status, why = printed_status(row, dict(ledger.symbols), __getattr__(row.reference)())
+    corrected = row.corrected_formula if status == "fails" else None
+    holds = status in ("holds", "misprint")
+    return EquationCheck(holds=holds, method="sympy", detail=why, corrected=corrected)
+
+
+def __getattr__(name: str) -> Any:
+    from pendcli.papers.charbonnier import references
+
+    if name.startswith("reference_") and name in references.__all__:
+        return getattr(references, name)
+    if name.startswith("printed_"):
+        row_id = "charbonnier.result." + name.removeprefix("printed_").replace("_", "-")
+        return lambda: printed_form_check(row_id)
+    raise AttributeError(name)

@@ -1,0 +1,182 @@
+"""Charbonnier's ledger bound to its text (issue 19): every status with a reference computed
+from the printed form; a changed coefficient stops a row holding; a misprint whose printed
+form is its reading is refused; the slips found are verified by an independent numeric
+method (mpmath quadrature, an ODE)."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import mpmath
+import pytest
+
+from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
+from pendcli.core.ledger_coverage import ledger_text_coverage
+from pendcli.papers.charbonnier import equations as CHECKS
+
+ROOT = Path(__file__).resolve().parent.parent
+TABLES = ROOT / "tables"
+
+
+def _reference_rows() -> list[object]:
+    ledger = load_ledger("charbonnier", TABLES)
+    return [pytest.param(ledger, r, id=r.id) for r in ledger.rows if r.reference]
+
+
+@pytest.mark.parametrize(("ledger", "row"), _reference_rows())
+def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
+    ledger: object, row: LedgerRow
+) -> None:
+    computed, problem = verify_printed(row, dict(ledger.symbols), CHECKS)  # type: ignore[attr-defined]
+    assert problem is None, problem
+    assert computed is not None and computed.startswith(f"{row.status}:")
+
+
+def test_every_block_is_covered_and_every_formula_row_has_a_reference() -> None:
+    coverage = ledger_text_coverage("charbonnier")
+    assert (coverage.blocks, coverage.covered) == (86, 86)
+    rows = load_ledger("charbonnier", TABLES).rows
+    checked = [r for r in rows if r.status in ("holds", "misprint", "fails") and r.printed]
+    assert all(r.reference for r in checked), [r.id for r in checked if not r.reference]
+    for row in rows:
+        if row.status in ("misprint", "fails"):
+            assert row.wrong_term, row.id
+            lines = (TABLES / "papers" / "charbonnier.txt").read_text("utf-8").splitlines()
+            assert row.lines is not None
+            span = "\n".join(lines[row.lines[0] - 1 : row.lines[1]])
+            assert row.wrong_term in span, f"{row.id}: {row.wrong_term!r} not in its span"
+
+
+def _altered(tmp_path: Path, row_id: str, old: str, new: str) -> tuple[LedgerRow, dict[str, str]]:
+    root = tmp_path / "tables"
+    shutil.copytree(TABLES, root)
+    path = root / "equations" / "charbonnier.toml"
+    text = path.read_text(encoding="utf-8")
+    start = text.index(f'id = "{row_id}"')
+    end = text.find("[[equation]]", start)
+    end = len(text) if end < 0 else end
+    block = text[start:end]
+    assert block.count(old) == 1, old
+    path.write_text(text[:start] + block.replace(old, new) + text[end:], encoding="utf-8")
+    ledger = load_ledger("charbonnier", root)
+    return next(r for r in ledger.rows if r.id == row_id), dict(ledger.symbols)
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        ("charbonnier.eq.1", "2/l*dl_dt", "3/l*dl_dt"),  # the Coriolis term of (1)
+        ("charbonnier.eq.1", "g*l*sin(theta) = 0;", "g*sin(theta) = 0;"),  # the moment
+        ("charbonnier.result.order-system", "d2theta_2_dt2 + k**2", "d2theta_2_dt2 + 2*k**2"),
+        ("charbonnier.result.taylor-phi", "dtheta_1_dt*phi_thetap", "dtheta_1_dt*phi_theta"),
+        ("charbonnier.result.variation-integrals", "N = -1/k", "N = 1/k"),
+        ("charbonnier.result.theta1-solution", "k*theta_1 =", "theta_1 ="),
+        ("charbonnier.eq.6", "epsilon/(k**2*alpha)", "epsilon/(k*alpha)"),
+        ("charbonnier.result.turning-time", "k*t = pi + epsilon", "k*t = pi - epsilon"),
+        ("charbonnier.result.arc-integrals", "1/(k**2*alpha*l0)*S(nu)", "1/(k*alpha*l0)*S(nu)"),
+        ("charbonnier.result.es-in-speed", "1/k*1/(k*alpha*l0)**2", "1/(k*alpha*l0)**2"),
+        ("charbonnier.result.height", "g*Delta_y = -tau", "g*Delta_y = tau"),
+        ("charbonnier.result.recurrence", "n*I(n - 2, x)", "(n - 1)*I(n - 2, x)"),
+        ("charbonnier.result.delta-alpha", "k**(n - 2)", "k**(n - 1)"),
+    ],
+)
+def test_a_changed_coefficient_stops_a_row_holding(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    row, symbols = _altered(tmp_path, row_id, old, new)
+    computed, problem = verify_printed(row, symbols, CHECKS)
+    assert problem is not None and problem.startswith("recorded holds, but the printed form")
+    assert computed is not None and not computed.startswith("holds")
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        ("charbonnier.eq.5", "k*x*sin(k*t) - epsilon", "k*alpha*sin(k*t) - epsilon"),
+        ("charbonnier.result.friction-count", "P = x/2*g/b0", "P = alpha/2*g/b0"),
+        (
+            "charbonnier.result.integration-by-parts",
+            "n*Integral(cos(x)*sin(x)**(n - 1)",
+            "n*Integral(cos(x)**2*sin(x)**(n - 1)",
+        ),
+        ("charbonnier.result.lowest-speed-air", "*E(pi/2)'", "*E_s(pi/2)'"),
+    ],
+)
+def test_a_misprint_whose_printed_form_is_its_reading_is_refused(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    row, symbols = _altered(tmp_path, row_id, old, new)
+    _, problem = verify_printed(row, symbols, CHECKS)
+    assert problem is not None
+    assert problem.startswith("recorded misprint, but the printed form gives holds")
+
+
+def test_n13_with_the_e_c_of_9_as_printed_fails_too(tmp_path: Path) -> None:
+    """(9) corrected carried to n° 13: with E_c(π/2), (9) as printed, the printed form fails
+    and only the E_s reading holds."""
+    old, new = "-c/l0*E(pi/2)'", "-c/l0*E_c(pi/2)'"
+    row, symbols = _altered(tmp_path, "charbonnier.result.lowest-speed-air", old, new)
+    computed, problem = verify_printed(row, symbols, CHECKS)
+    assert problem is None
+    assert computed is not None and computed.startswith("misprint: the printed form fails")
+
+
+# --- the slips, verified by a second, numeric method -------------------------------------
+
+
+def test_the_integration_by_parts_needs_cos_squared() -> None:
+    """n° 15, line 455: I_n = −cos x sinⁿx + n∫cos x sin^(n−1)x dx is false (n = 2, 3, x = 1),
+    with cos² x it holds (mpmath quadrature)."""
+    with mpmath.workdps(30):
+        for n in (2, 3):
+            x = mpmath.mpf(1)
+            i_n = mpmath.quad(lambda y, m=n: mpmath.sin(y) ** (m + 1), [0, x])
+            head = -mpmath.cos(x) * mpmath.sin(x) ** n
+            printed = head + n * mpmath.quad(
+                lambda y, m=n: mpmath.cos(y) * mpmath.sin(y) ** (m - 1), [0, x]
+            )
+            read = head + n * mpmath.quad(
+                lambda y, m=n: mpmath.cos(y) ** 2 * mpmath.sin(y) ** (m - 1), [0, x]
+            )
+            assert abs(read - i_n) < mpmath.mpf(10) ** -25
+            assert abs(printed - i_n) > mpmath.mpf(10) ** -2
+
+
+def test_e_c_is_an_integral_in_the_angular_speed() -> None:
+    """n° 8, line 229: E_c(t) = ∫₀ᵗ φ cos ks ds equals (1/(k²α))∫₀^θ' φ dθ' (θ' = kα sin ks on
+    the first quarter), not (1/(k²α))∫₀^θ φ dθ'; φ(s) = 1 + s², k = 1.3, α = 0.4, t = 0.7."""
+    k, alpha, t = mpmath.mpf("1.3"), mpmath.mpf("0.4"), mpmath.mpf("0.7")
+    phi = lambda s: 1 + s**2  # noqa: E731
+    e_c = mpmath.quad(lambda s: phi(s) * mpmath.cos(k * s), [0, t])
+    time_at = lambda w: mpmath.asin(w / (k * alpha)) / k  # noqa: E731
+    speed = k * alpha * mpmath.sin(k * t)
+    angle = -alpha * mpmath.cos(k * t)
+    read = mpmath.quad(lambda w: phi(time_at(w)), [0, speed]) / (k**2 * alpha)
+    # the printed upper limit, the angle θ (negative on the first quarter), in place of θ'
+    printed = mpmath.quad(lambda w: phi(time_at(w)), [0, angle]) / (k**2 * alpha)
+    assert abs(read - e_c) < 1e-12
+    assert abs(printed - e_c) > 0.1 * abs(e_c)
+
+
+def test_the_speed_at_the_lowest_point_is_e_s_by_the_ode() -> None:
+    """(9) and n° 13, 3°: integrate θ'' + k²θ + (c/l0)F(l0θ') = 0 (F = v², scipy, tight
+    tolerances) to the lowest point θ = 0; (θ' − kα)/(c/l0) there is −E_s(π/2), not −E_c(π/2)."""
+    import numpy as np
+    from scipy.integrate import quad, solve_ivp
+
+    k, alpha, l0, c = 1.0, 0.2, 1.0, 1e-5
+    force = lambda v: v * v  # noqa: E731
+    phi = lambda s: force(k * alpha * l0 * np.sin(k * s))  # noqa: E731
+
+    def rhs(_t: float, y: np.ndarray) -> list[float]:
+        return [y[1], -(k**2) * y[0] - c / l0 * force(l0 * y[1])]
+
+    lowest = lambda _t, y: y[0]  # noqa: E731
+    lowest.terminal, lowest.direction = True, 1  # type: ignore[attr-defined]
+    run = solve_ivp(rhs, (0, 10), [-alpha, 0.0], rtol=1e-12, atol=1e-14, events=lowest)
+    shift = (run.y_events[0][0][1] - k * alpha) / (c / l0)
+    e_s = quad(lambda s: phi(s) * np.sin(k * s), 0, np.pi / (2 * k), epsabs=1e-14)[0]
+    e_c = quad(lambda s: phi(s) * np.cos(k * s), 0, np.pi / (2 * k), epsabs=1e-14)[0]
+    assert abs(shift + e_s) < 1e-3 * e_s
+    assert abs(shift + e_c) > 0.1 * e_c
