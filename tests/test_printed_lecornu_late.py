@@ -111,8 +111,8 @@ def _problem(root: Path, row_id: str) -> tuple[str | None, str | None]:
         # (43): g l sin θ -> g sin θ
         (
             "lecornu.eq.43",
-            "Derivative(l**2*dtheta_dt, t) + g*l*sin(theta)",
-            "Derivative(l**2*dtheta_dt, t) + g*sin(theta)",
+            "Derivative(l**2*dtheta_dt, t) + g*l*sin(theta) - c**2",
+            "Derivative(l**2*dtheta_dt, t) + g*sin(theta) - c**2",
         ),
     ],
 )
