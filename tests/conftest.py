@@ -62,6 +62,12 @@ SLOW_FAMILIES = {
     "tests/test_lecornu_extremes.py::test_largest_count_correctly_rounded": "mpmath zeros",
     "tests/test_charbonnier_extremes.py::test_quad_domain_is_measured": "a grid of quadratures",
     "tests/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
+    "tests/test_cache.py::test_a_changed_ledger_*": "a paper's whole ledger, cold, twice",
+    "tests/test_cache.py::test_an_unwritable_folder_*": "a paper's whole ledger, cold, twice",
+    "tests/test_cache.py::test_a_damaged_entry_*": "a paper's whole ledger, cold, in a process",
+    "tests/test_cache.py::test_off_never_writes": "a paper's whole ledger, cold, in a process",
+    "tests/test_cache.py::test_cache_clear": "a paper's whole ledger, cold, in a process",
+    "tests/test_summary.py::test_ledger_halves_*": "the whole ledger, in two processes",
 }
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
