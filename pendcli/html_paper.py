@@ -102,7 +102,7 @@ def _prose(piece: str) -> str:
 
 
 def _call(mark: Placement, number: int) -> str:
-    return f'<sup class="call"><a href="#note-{_attr(mark.key)}">{number}</a></sup>'
+    return f'<sup class="call"><a href="#note-{_attr(mark.key)}">[{number}]</a></sup>'
 
 
 def _attr(value: str) -> str:
@@ -169,7 +169,7 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
             lambda i: f"<msup><mrow {_open(inside[i])}>",
             lambda i: (
                 f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
-                f"{numbers[inside[i].key]}</a></mtext></msup>"
+                f"[{numbers[inside[i].key]}]</a></mtext></msup>"
             ),
         )
     stats.formulas += 1
