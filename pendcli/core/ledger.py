@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, fields
 from functools import cache
 from pathlib import Path
@@ -40,6 +40,7 @@ if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
     from pendcli.core.dimensions import DimensionCheck
     from pendcli.core.paper import Paper
+    from pendcli.core.printed_check import Reference
 
 __all__ = [
     "CHECKED_STATUSES",
@@ -55,6 +56,7 @@ __all__ = [
     "labels_in_text",
     "load_ledger",
     "parse_ledger",
+    "row_printed_status",
     "run_check",
     "verify",
 ]
@@ -401,10 +403,7 @@ def verify_printed(
     recorded status or None); (None, None) for a row without a reference."""
     if row.reference is None:
         return None, None
-    function = getattr(checks, row.reference, None)
-    if not callable(function):
-        raise PendcliError(f"pendcli.papers.{row.paper}.equations has no {row.reference!r}")
-    status, why = printed_status(row, symbols, function())
+    status, why = row_printed_status(row, symbols, checks)
     if status != row.status:
         found = status or "no status the ledger may record"
         return (
@@ -412,6 +411,35 @@ def verify_printed(
             f"recorded {row.status}, but the printed form gives {found}: {why}",
         )
     return f"{status}: {why}", None
+
+
+def row_printed_status(
+    row: LedgerRow, symbols: Mapping[str, str], checks: ModuleType | None
+) -> tuple[str | None, str]:
+    """The status ``row``'s printed form earns against its reference (a function of
+    ``checks``) and why, computed once per row and symbol table: a paper's check of a row
+    whose status rests on its printed form asks the same question as the ledger's own check."""
+    assert row.reference is not None
+    return _printed_status(row, tuple(sorted(symbols.items())), checks)
+
+
+@cache
+def _printed_status(
+    row: LedgerRow, symbols: tuple[tuple[str, str], ...], checks: ModuleType | None
+) -> tuple[str | None, str]:
+    assert row.reference is not None
+    return printed_status(row, dict(symbols), _reference(checks, row.paper, row.reference))
+
+
+@cache
+def _reference(checks: ModuleType | None, paper: str, name: str) -> Reference:
+    # one Reference per name, shared by every row that cites it (building one can take a
+    # second of sympy: solving, integrating, expanding)
+    function = getattr(checks, name, None)
+    if not callable(function):
+        raise PendcliError(f"pendcli.papers.{paper}.equations has no {name!r}")
+    result: Reference = function()
+    return result
 
 
 def equation_rows(

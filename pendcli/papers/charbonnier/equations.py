@@ -248,14 +248,16 @@ def result_delta_alpha_closed() -> EquationCheck:
 
 def printed_form_check(row_id: str) -> EquationCheck:
     """The check of ``row_id`` as its printed form earns it (core/printed_check)."""
-    from pendcli.core.ledger import load_ledger
-    from pendcli.core.ledger_formulas import printed_status
+    import sys
+
+    from pendcli.core.ledger import load_ledger, row_printed_status
 
     ledger = load_ledger("charbonnier")
     row = next(r for r in ledger.rows if r.id == row_id)
     if row.reference is None:
         return EquationCheck(holds=False, method="sympy", detail=f"{row_id} has no reference")
-    status, why = printed_status(row, dict(ledger.symbols), __getattr__(row.reference)())
+    # the ledger's own computation of the row's status, shared (not done twice)
+    status, why = row_printed_status(row, dict(ledger.symbols), sys.modules[__name__])
     corrected = row.corrected_formula if status == "fails" else None
     holds = status in ("holds", "misprint")
     return EquationCheck(holds=holds, method="sympy", detail=why, corrected=corrected)
