@@ -9,7 +9,9 @@ copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes whe
 rational points (to 20 digits), or simplifies to 0 where a point gives no number; with a
 ``scale`` and an ``order``, when its series in the scale vanishes below that order (an
 equation whose left side is a symbol named in ``orders`` uses that order: a summary formula
-may carry one quantity further than another). The status follows:
+may carry one quantity further than another; such a series is first proved numerically, its
+coefficients by Cauchy's integral about 0 at random rational points, and sympy's series is
+taken only where that proof does not go through). The status follows:
 
 * ``holds``: the printed form passes;
 * ``misprint``: the printed form fails and its ``reading_formula`` passes;
