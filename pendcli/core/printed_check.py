@@ -211,6 +211,10 @@ def computed_status(
     printed: Formula, reading: Formula | None, corrected: Formula | None, reference: Reference
 ) -> tuple[str | None, str]:
     """The status the printed form earns (None: none the ledger may record) and why."""
+    from pendcli.core.printed_numeric import Numbers, numeric_status
+
+    if isinstance(reference, Numbers):  # printed numbers, judged by their printed digits
+        return numeric_status(printed, reading, corrected, reference)
     ok, why = formula_passes(printed, reference)
     if ok:
         return "holds", f"the printed form holds: {why}"
