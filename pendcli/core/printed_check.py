@@ -154,7 +154,7 @@ def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:
         shown = ", ".join(f"{k}={v}" for k, v in point.items())
         if not value.is_number:
             return False, f"the residual is not a number at {shown}"
-        if abs(value) > sp.Float(10) ** (5 - _DIGITS):
+        if abs(value) > _FLOOR and abs(value) > _TOLERANCE * _size_at(expr, free, point):
             return False, f"residual {sp.N(value, 6)} at {shown}"
     return True, f"vanishes at {POINTS} random rational points"
 
@@ -205,6 +205,21 @@ def _integrals_by_quadrature(expr: Any) -> Any:
             bounds = [sp.N(b, _DIGITS + 5)._to_mpmath(mpmath.mp.prec) for b in (low, high)]
             values[integral] = sp.Float(mpmath.quad(integrand, bounds), _DIGITS + 5)
     return expr.subs(values)
+
+
+# The residual is refused when above _TOLERANCE relative to the size of its terms (the sum of
+# their absolute values at the point): 1e-15 of a term of 1e6 is rounding, 1e-15 of one of
+# 1e-12 is not. Below _FLOOR (the working precision's rounding) it is 0 whatever its terms.
+_TOLERANCE = 10.0 ** (5 - _DIGITS)
+_FLOOR = 10.0 ** -(_DIGITS + 8)
+
+
+def _size_at(expr: Any, free: list[Any], point: dict[Any, Any]) -> Any:
+    """The sum of the absolute values of ``expr``'s terms at ``point`` (the residual's scale)."""
+    import sympy as sp
+
+    size = sp.Add(*(abs(term) for term in sp.Add.make_args(expr)))
+    return abs(_evaluator(size, free)(point))
 
 
 def computed_status(

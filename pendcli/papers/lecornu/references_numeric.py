@@ -12,6 +12,7 @@ number, the claim that prints the same number, so that the ledger and the table 
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from itertools import pairwise
 from typing import Any
 
@@ -47,7 +48,7 @@ def _published(claim_id: str) -> Any:
     return mpmath.mpf(f"{number.value:.{number.decimals or 0}f}")
 
 
-def _numbers(values: list[Any], what: str, claims: list[str | None], **kw: Any) -> Any:
+def _numbers(values: list[Any], what: str, claims: Sequence[str | None], **kw: Any) -> Any:
     from pendcli.core.printed_numeric import Numbers
     from pendcli.papers.lecornu.model import printed_number
 
