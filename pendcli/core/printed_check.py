@@ -207,19 +207,30 @@ def _integrals_by_quadrature(expr: Any) -> Any:
     return expr.subs(values)
 
 
-# The residual is refused when above _TOLERANCE relative to the size of its terms (the sum of
-# their absolute values at the point): 1e-15 of a term of 1e6 is rounding, 1e-15 of one of
-# 1e-12 is not. Below _FLOOR (the working precision's rounding) it is 0 whatever its terms.
+# The residual is refused when above _TOLERANCE relative to its size (its terms' absolute
+# values summed through sums and products, at the point): 1e-15 of terms of 1e6 is
+# rounding, 1e-15 of terms of 1e-12 is not. Below _FLOOR (far under the working precision's
+# rounding) it is 0 whatever its terms, and the size is not computed.
 _TOLERANCE = 10.0 ** (5 - _DIGITS)
 _FLOOR = 10.0 ** -(_DIGITS + 8)
 
 
 def _size_at(expr: Any, free: list[Any], point: dict[Any, Any]) -> Any:
-    """The sum of the absolute values of ``expr``'s terms at ``point`` (the residual's scale)."""
+    """The size of ``expr`` at ``point``: the value of ``expr`` with every sum a sum of
+    absolute values (ε·(a − b) has size |ε|·(|a| + |b|), the scale its cancellation is on)."""
+    return abs(_evaluator(_magnitude(expr), free)(point))
+
+
+def _magnitude(expr: Any) -> Any:
     import sympy as sp
 
-    size = sp.Add(*(abs(term) for term in sp.Add.make_args(expr)))
-    return abs(_evaluator(size, free)(point))
+    if expr.is_Add:
+        return sp.Add(*(_magnitude(a) for a in expr.args))
+    if expr.is_Mul:
+        return sp.Mul(*(_magnitude(a) for a in expr.args))
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0:
+        return _magnitude(expr.base) ** expr.exp
+    return abs(expr)
 
 
 def computed_status(

@@ -31,8 +31,9 @@ Which printed numbers there are: a ``;``-separated part that is a bare number or
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
+from itertools import pairwise
 from typing import Any
 
 from pendcli.core.numbers import PrintedNumber, parse_printed
@@ -43,25 +44,42 @@ from pendcli.core.vocabulary import Verdict
 
 __all__ = ["Numbers", "numeric_status", "printed_numbers", "untied"]
 
-_ENTRY = re.compile(r"^\s*(?:([A-Za-z_]\w*)\s*=\s*)?([+-]?\d+(?:\.\d+)?)\s*$")
-_DECIMAL = re.compile(r"(?<![\w.])\d+\.\d+(?![\w.])")
+_NUMBER = r"[+-]?\d+(?:\.\d+)?"
+# a number, a name = number pair; a fraction (1/5) and a unit symbol after it (0.5*metre)
+_ENTRY = re.compile(
+    rf"^\s*(?:([A-Za-z_]\w*)\s*=\s*)?({_NUMBER}(?:/\d+)?)(?:\s*\*\s*[A-Za-z_]\w*)?\s*$"
+)
+# an angle as the ledger writes 1°7'33'': 1*degree + 7*arcmin + 33*arcsec (in brackets or not)
+_UNIT = r"\d+(?:\.\d+)?\s*\*\s*(?:degree|arcmin|arcsec)"
+_ANGLE = rf"\(?\s*{_UNIT}(?:\s*\+\s*{_UNIT})*\s*\)?"
+_IN_FORMULA = re.compile(rf"(?P<angle>{_ANGLE})|(?<![\w.])(?P<decimal>\d+\.\d+)(?![\w.])")
+_NAMED_ANGLE = re.compile(rf"^\s*([A-Za-z_]\w*)\s*=\s*({_ANGLE})\s*$")
+_SIGNS = {"degree": "°", "arcmin": "'", "arcsec": "''"}
+_EQUALS = re.compile(r"(?<![=<>!])=(?!=)")  # as pendcli.core.printed splits a chain
 _PASSING = (Verdict.AGREES, Verdict.TRUNCATED)
+Values = Sequence[Any] | Callable[[Mapping[str, float]], Sequence[Any]]
 
 
 @dataclass(frozen=True)
 class Numbers:
     """The computed value of each printed number of a row, in printed order (mpmath or any
-    real number); ``what``: the model they come from; ``identity``: the reference for the
-    formula's equations without a printed number (None: the formula has none);
-    ``published``: for each printed number, the claim of the published table that prints it
-    too (None: no claim does), so that a number is transcribed once and the ledger's copy is
-    refused when it differs (value or printed places)."""
+    real number), or a function of the row's ``inputs`` giving them; ``inputs``: the names of
+    ``name = value`` pairs that are the data of the computation (the example's amplitudes),
+    not judged but passed, as printed (an angle in degrees), to ``values``; ``what``: the
+    model; ``identity``: the reference for the formula's equations without a printed number
+    (None: the formula has none); ``published``: for each printed number (inputs included),
+    the claim of the published table that prints it too (None: no claim does), so that a
+    number is transcribed once and the ledger's copy is refused when it differs; ``bounds``:
+    the names of pairs the text gives as a bound (« au plus »), judged as an upper bound
+    (the computed value, rounded to the printed precision, at most the printed one)."""
 
-    values: Sequence[Any]
+    values: Values
     what: str = ""
     identity: Reference | None = None
     # per printed number: (claim id, its published number) when a claims table prints it too
     published: Sequence[tuple[str, PrintedNumber] | None] = ()
+    inputs: tuple[str, ...] = ()
+    bounds: tuple[str, ...] = ()  # names printed as « at most »: judged as upper bounds
 
 
 @dataclass(frozen=True)
@@ -69,18 +87,34 @@ class _Entry:
     place: int  # 1-based, in printed order
     name: str  # the name of a ``name = value`` pair, else ""
     number: PrintedNumber
+    signed: bool = True  # its sign is printed (a whole part); inside a formula it is notation
+
+
+def _angle_text(match: str) -> str:
+    """``(1*degree + 7*arcmin + 33*arcsec)`` -> ``1°7'33''`` (as numbers.parse_printed reads)."""
+    units = re.findall(r"(\d+(?:\.\d+)?)\s*\*\s*(degree|arcmin|arcsec)", match)
+    return "".join(f"{value}{_SIGNS[unit]}" for value, unit in units)
+
+
+def _numbers_in(text: str) -> list[tuple[str, str, bool]]:
+    """(name, printed text, sign printed) of each printed number of one ``;`` part or side."""
+    named = _NAMED_ANGLE.match(text)  # first: 30*arcmin is an angle, not 30 of a unit
+    if named:
+        return [(named.group(1), _angle_text(named.group(2)), True)]
+    whole = _ENTRY.match(text)
+    if whole:
+        return [(whole.group(1) or "", whole.group(2), True)]
+    found = []
+    for m in _IN_FORMULA.finditer(text):
+        shown = _angle_text(m.group("angle")) if m.group("angle") else m.group(0)
+        found.append(("", shown, False))
+    return found
 
 
 def printed_numbers(source: str) -> list[_Entry]:
     """The printed numbers of a formula's text, in order (see the module docstring)."""
-    texts: list[tuple[str, str]] = []
-    for part in source.split(";"):
-        whole = _ENTRY.match(part)
-        if whole:
-            texts.append((whole.group(1) or "", whole.group(2)))
-        else:
-            texts.extend(("", m.group(0)) for m in _DECIMAL.finditer(part))
-    return [_Entry(i + 1, n, parse_printed(t)) for i, (n, t) in enumerate(texts)]
+    texts = [found for part in source.split(";") for found in _numbers_in(part)]
+    return [_Entry(i + 1, n, parse_printed(t), sign) for i, (n, t, sign) in enumerate(texts)]
 
 
 def _shown(entry: _Entry) -> str:
@@ -91,27 +125,31 @@ def _judged(
     entries: list[_Entry], numbers: Numbers, rounded: frozenset[int] = frozenset()
 ) -> tuple[bool, str]:
     """Whether every entry passes against its computed value (an entry whose place is in
-    ``rounded`` only when the computed value rounds to it)."""
-    if len(entries) != len(numbers.values):
-        return False, f"{len(entries)} printed numbers, {len(numbers.values)} computed"
+    ``rounded`` only when the computed value rounds to it); inputs are passed, not judged."""
+    given = {e.name: e.number.value for e in entries if e.name in numbers.inputs}
+    judged = [e for e in entries if e.name not in numbers.inputs]
+    values = numbers.values(given) if callable(numbers.values) else numbers.values
+    if len(judged) != len(values):
+        return False, f"{len(judged)} printed numbers, {len(values)} computed"
     said, wrong = [], []
-    for entry, value in zip(entries, numbers.values, strict=True):
-        verdict = judge(entry.number, float(value)).verdict
+    for entry, value in zip(judged, values, strict=True):
+        comparison = "upper-bound" if entry.name in numbers.bounds else "equal"
+        verdict = judge(entry.number, float(value), comparison).verdict
         said.append(f"{entry.number.text} {verdict.value} ({float(value):.6g})")
         passing = (Verdict.AGREES,) if entry.place in rounded else _PASSING
         if verdict not in passing:
             wrong.append(f"{_shown(entry)}: computed {float(value):.6g}, {verdict.value}")
+    data = "".join(f", {name} = {value:g}" for name, value in given.items())
     if wrong:
-        return False, f"{len(wrong)} of {len(entries)} off: " + "; ".join(wrong)
+        return False, f"{len(wrong)} of {len(judged)} off{data}: " + "; ".join(wrong)
     against = f" against {numbers.what}" if numbers.what else ""
-    return True, f"every number passes{against}: " + ", ".join(said)
+    return True, f"every number passes{against}{data}: " + ", ".join(said)
 
 
 def _identities(formula: Formula, numbers: Numbers) -> tuple[bool, str]:
-    """The equations without a printed number, checked as identities."""
-    import sympy as sp
-
-    kept = tuple(e for e in formula.equations if e[0] is not None and not _has_float(e, sp))
+    """The equations without a printed number on either side, checked as identities."""
+    marks = zip(formula.equations, _numbered(formula.source), strict=True)
+    kept = tuple(e for e, numbered in marks if e[0] is not None and not numbered)
     if not kept:
         return True, ""
     if numbers.identity is None:
@@ -120,9 +158,17 @@ def _identities(formula: Formula, numbers: Numbers) -> tuple[bool, str]:
     return ok, f"; identities: {why}"
 
 
-def _has_float(equation: tuple[Any, Any], sp: Any) -> bool:
-    """Whether an equation holds a printed number (a decimal, or a side that is a number)."""
-    return any(side is not None and (side.has(sp.Float) or side.is_number) for side in equation)
+def _numbered(source: str) -> list[bool]:
+    """For each equation of ``source``, in the order pendcli.core.printed parses them,
+    whether one of its two sides holds a printed number."""
+    out = []
+    for part in source.split(";"):
+        sides = _EQUALS.split(part)
+        if len(sides) == 1 or _ENTRY.match(part) or _NAMED_ANGLE.match(part):
+            out.extend([True] * max(1, len(sides) - 1))  # a number, or a name = number pair
+            continue
+        out.extend(bool(_numbers_in(a) or _numbers_in(b)) for a, b in pairwise(sides))
+    return out
 
 
 def _passes(formula: Formula, numbers: Numbers, rounded: frozenset[int] = frozenset()) -> Any:
@@ -141,7 +187,7 @@ def _changes(printed: Formula, corrected: Formula) -> tuple[frozenset[int], str 
     off = [
         f"{_shown(c)} for {p.number.text}"
         for p, c in pairs
-        if p.number.decimals != c.number.decimals
+        if p.number.resolution != c.number.resolution
     ]
     changed = frozenset(c.place for p, c in pairs if p.number.value != c.number.value)
     return changed, (f"other printed places: {'; '.join(off)}" if off else None)
@@ -157,7 +203,8 @@ def untied(printed: Formula, numbers: Numbers) -> str | None:
         if tie is None:
             continue
         claim, number = tie
-        if (entry.number.value, entry.number.decimals) != (number.value, number.decimals):
+        value = number.value if entry.signed else abs(number.value)  # a formula's sign: notation
+        if (entry.number.value, entry.number.resolution) != (value, number.resolution):
             off.append(f"{_shown(entry)} is not claim {claim}'s {number.text}")
     return "; ".join(off) or None
 
