@@ -296,3 +296,65 @@ def test_a_fails_row_set_to_its_correction_is_refused(
     )
     _, problem = _verified("lecornu.result.table_times", rows, tmp_path / "both" / "tables")
     assert "recorded fails, but the printed form gives holds" in problem
+
+
+# --- Tisserand's numerical application, and the identity rows of Lecornu's § II --------------
+
+TISSERAND_LEDGER = "equations/tisserand.toml"
+
+
+def _verified_in(paper: str, row_id: str, root: Path = TABLES) -> tuple[str | None, str | None]:
+    from pendcli.core.ledger import check_module
+    from pendcli.papers.registry import paper as paper_named
+
+    ledger = load_ledger(paper, root)
+    row = next(r for r in ledger.rows if r.id == row_id)
+    return verify_printed(row, ledger.symbols_for(row), check_module(paper_named(paper)))
+
+
+@pytest.mark.parametrize(
+    ("paper", "row_id", "status"),
+    [
+        ("tisserand", "tisserand.result.numerical-application", "misprint"),
+        ("tisserand", "tisserand.result.displacement", "holds"),
+        ("lecornu", "lecornu.result.table_26", "holds"),
+        ("lecornu", "lecornu.result.largest_length_comparison", "misprint"),
+    ],
+)
+def test_the_rows_status_is_computed(paper: str, row_id: str, status: str) -> None:
+    computed, problem = _verified_in(paper, row_id)
+    assert problem is None, problem
+    assert computed is not None and computed.startswith(f"{status}:")
+
+
+def test_tisserands_amplitudes_in_minutes_give_none_of_his_coefficients() -> None:
+    # the misprint's two sides: 30', 15' give about 1'' for 1°7'33''; 30°, 15° give it
+    computed, _ = _verified_in("tisserand", "tisserand.result.numerical-application")
+    assert computed is not None
+    printed_side, reading_side = computed.split("the reading holds")
+    assert "3 of 3 off, theta0 = 0.5, theta1 = 0.25" in printed_side
+    assert "1°7'33'' agrees" in reading_side and "2'42'' agrees" in reading_side
+
+
+@pytest.mark.parametrize(
+    ("paper", "row_id", "old", "new"),
+    [
+        # the misprint's printed set to its reading: refused (recorded misprint, computed holds)
+        ("tisserand", "tisserand.result.numerical-application",
+         "printed = 'theta0 = 30*arcmin; theta1 = 15*arcmin;",
+         "printed = 'theta0 = 30*degree; theta1 = 15*degree;"),
+        ("lecornu", "lecornu.result.largest_length_comparison",
+         "printed = 'dasc = (3*pi**2 + 12*b)/(16*g); ddesc = (pi**2 - 12*b)/(16*g)'",
+         "printed = 'dasc = (3*pi**2 + 12)*b/(16*g); ddesc = (pi**2 - 12)*b/(16*g)'"),
+        # one coefficient of a holds row: refused
+        ("lecornu", "lecornu.result.table_26", "tv2 = pi*sqrt(a/g) + pi**2*b/(4*g)",
+         "tv2 = pi*sqrt(a/g) + pi**2*b/(8*g)"),
+        ("tisserand", "tisserand.result.displacement", "shift = mm/5'", "shift = mm/6'"),
+    ],
+)  # fmt: skip
+def test_an_edit_of_the_printed_form_is_refused_naming_the_row(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, paper: str, row_id: str, old: str, new: str
+) -> None:
+    _altered(tmp_path, monkeypatch, (f"equations/{paper}.toml", old, new))
+    _, problem = _verified_in(paper, row_id, tmp_path / "tables")
+    assert problem is not None and problem.startswith("recorded "), row_id

@@ -24,8 +24,11 @@ equations of the formula that hold no printed number are checked as identities a
 * otherwise nothing the ledger may record: the row is refused.
 
 Which printed numbers there are: a ``;``-separated part that is a bare number or
-``name = number`` is one entry (its sign included); in any other part each decimal literal
-(digits, a point, digits) is one, and an integer there (the 4 of b²/(4g)) is notation.
+``name = number`` (a fraction, a unit symbol after it: ``l = 0.5*metre``; ``shift = mm/5``
+for « un cinquième de millimètre ») is one entry, its sign included; so is an angle
+``name = 30*arcmin`` (``1*degree + 7*arcmin + 33*arcsec`` is 1°7'33'', known to the second).
+In any other part each decimal literal (digits, a point, digits) and each angle is one, its
+sign being the formula's notation, and an integer there (the 4 of b²/(4g)) is notation.
 """
 
 from __future__ import annotations
@@ -55,6 +58,8 @@ _ANGLE = rf"\(?\s*{_UNIT}(?:\s*\+\s*{_UNIT})*\s*\)?"
 _IN_FORMULA = re.compile(rf"(?P<angle>{_ANGLE})|(?<![\w.])(?P<decimal>\d+\.\d+)(?![\w.])")
 _NAMED_ANGLE = re.compile(rf"^\s*([A-Za-z_]\w*)\s*=\s*({_ANGLE})\s*$")
 _SIGNS = {"degree": "°", "arcmin": "'", "arcsec": "''"}
+# a fraction of a unit printed in words (« un cinquième de millimètre »): shift = mm/5
+_PER = re.compile(r"^\s*([A-Za-z_]\w*)\s*=\s*[A-Za-z_]\w*\s*/\s*(\d+)\s*$")
 _EQUALS = re.compile(r"(?<![=<>!])=(?!=)")  # as pendcli.core.printed splits a chain
 _PASSING = (Verdict.AGREES, Verdict.TRUNCATED)
 Values = Sequence[Any] | Callable[[Mapping[str, float]], Sequence[Any]]
@@ -104,6 +109,9 @@ def _numbers_in(text: str) -> list[tuple[str, str, bool]]:
     whole = _ENTRY.match(text)
     if whole:
         return [(whole.group(1) or "", whole.group(2), True)]
+    per = _PER.match(text)
+    if per:
+        return [(per.group(1), f"1/{per.group(2)}", True)]
     found = []
     for m in _IN_FORMULA.finditer(text):
         shown = _angle_text(m.group("angle")) if m.group("angle") else m.group(0)
@@ -164,7 +172,7 @@ def _numbered(source: str) -> list[bool]:
     out = []
     for part in source.split(";"):
         sides = _EQUALS.split(part)
-        if len(sides) == 1 or _ENTRY.match(part) or _NAMED_ANGLE.match(part):
+        if len(sides) == 1 or any(p.match(part) for p in (_ENTRY, _NAMED_ANGLE, _PER)):
             out.extend([True] * max(1, len(sides) - 1))  # a number, or a name = number pair
             continue
         out.extend(bool(_numbers_in(a) or _numbers_in(b)) for a, b in pairwise(sides))
