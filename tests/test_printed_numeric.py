@@ -319,6 +319,7 @@ def _verified_in(paper: str, row_id: str, root: Path = TABLES) -> tuple[str | No
         ("tisserand", "tisserand.result.displacement", "holds"),
         ("lecornu", "lecornu.result.table_26", "holds"),
         ("lecornu", "lecornu.result.largest_length_comparison", "misprint"),
+        ("lecornu", "lecornu.result.c_equals_4_over_pi", "holds"),
     ],
 )
 def test_the_rows_status_is_computed(paper: str, row_id: str, status: str) -> None:
@@ -350,6 +351,9 @@ def test_tisserands_amplitudes_in_minutes_give_none_of_his_coefficients() -> Non
         ("lecornu", "lecornu.result.table_26", "tv2 = pi*sqrt(a/g) + pi**2*b/(4*g)",
          "tv2 = pi*sqrt(a/g) + pi**2*b/(8*g)"),
         ("tisserand", "tisserand.result.displacement", "shift = mm/5'", "shift = mm/6'"),
+        ("lecornu", "lecornu.result.c_equals_4_over_pi", "; C = 4/pi'", "; C = 3/pi'"),
+        ("lecornu", "lecornu.result.c_equals_4_over_pi", "*sin(omega)**2, (omega, 0, pi/2)); C",
+         "*sin(omega)**3, (omega, 0, pi/2)); C"),
     ],
 )  # fmt: skip
 def test_an_edit_of_the_printed_form_is_refused_naming_the_row(

@@ -17,7 +17,7 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
-__all__ = ["reference_largest_length", "reference_table_26"]
+__all__ = ["reference_c_equals_4_over_pi", "reference_largest_length", "reference_table_26"]
 
 
 def _symbols(*names: str) -> Any:
@@ -77,3 +77,17 @@ def reference_largest_length() -> Any:
         "ddesc": quarter - (times["tv2"] - times["te1"]),
     }
     return Reference(exact, what="quarter period at the largest length, first order in b")
+
+
+def reference_c_equals_4_over_pi() -> Any:
+    """Lines 408-412: φ = √x J₁(2√x), the series (10); C the ratio of the two limits the text
+    takes at x = 0, lim φ/x over lim ∫₀^(π/2) cos(2√x cos ω) sin²ω dω (sympy)."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    x, omega = _symbols("x", "omega")
+    varphi = sp.sqrt(x) * sp.besselj(1, 2 * sp.sqrt(x))
+    integral = sp.integrate(sp.sin(omega) ** 2, (omega, 0, sp.pi / 2))  # the integrand at x = 0
+    constant = sp.limit(varphi / x, x, 0, "+") / integral
+    return Reference({"varphi": varphi, "C": constant}, what="(10) and its limit at x = 0")
