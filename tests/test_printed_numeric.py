@@ -320,6 +320,7 @@ def _verified_in(paper: str, row_id: str, root: Path = TABLES) -> tuple[str | No
         ("lecornu", "lecornu.result.table_26", "holds"),
         ("lecornu", "lecornu.result.largest_length_comparison", "misprint"),
         ("lecornu", "lecornu.result.c_equals_4_over_pi", "holds"),
+        ("lecornu", "lecornu.result.amplitude_factor", "holds"),
     ],
 )
 def test_the_rows_status_is_computed(paper: str, row_id: str, status: str) -> None:
@@ -352,6 +353,8 @@ def test_tisserands_amplitudes_in_minutes_give_none_of_his_coefficients() -> Non
          "tv2 = pi*sqrt(a/g) + pi**2*b/(8*g)"),
         ("tisserand", "tisserand.result.displacement", "shift = mm/5'", "shift = mm/6'"),
         ("lecornu", "lecornu.result.c_equals_4_over_pi", "; C = 4/pi'", "; C = 3/pi'"),
+        ("lecornu", "lecornu.result.amplitude_factor", "theta = R*cos(3*b/", "theta = R*cos(2*b/"),
+        ("lecornu", "lecornu.result.amplitude_factor", "= R/l**(3/4)'", "= R/l**(1/2)'"),
         ("lecornu", "lecornu.result.c_equals_4_over_pi", "*sin(omega)**2, (omega, 0, pi/2)); C",
          "*sin(omega)**3, (omega, 0, pi/2)); C"),
     ],

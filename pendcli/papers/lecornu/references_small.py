@@ -17,7 +17,12 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
-__all__ = ["reference_c_equals_4_over_pi", "reference_largest_length", "reference_table_26"]
+__all__ = [
+    "reference_amplitude_factor",
+    "reference_c_equals_4_over_pi",
+    "reference_largest_length",
+    "reference_table_26",
+]
 
 
 def _symbols(*names: str) -> Any:
@@ -91,3 +96,22 @@ def reference_c_equals_4_over_pi() -> Any:
     integral = sp.integrate(sp.sin(omega) ** 2, (omega, 0, sp.pi / 2))  # the integrand at x = 0
     constant = sp.limit(varphi / x, x, 0, "+") / integral
     return Reference({"varphi": varphi, "C": constant}, what="(10) and its limit at x = 0")
+
+
+def reference_amplitude_factor() -> Any:
+    """Lines 569-573: θ of (22) (asymptotic), R l^(-3/4) sin((2/b)√(gl) − φ), at an
+    elongation, where (24) gives the phase (2λ + 1)π/2 − 3b/(4√(gl)) (λ = 0: |θ| is the same
+    for every λ). The first equality is exact (through b⁷); « en négligeant le carré de
+    b/√(gl) », the second through b¹."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    big_r, length, b, g = _symbols("R", "l", "b", "g")
+    phase = sp.pi / 2 - 3 * b / (4 * sp.sqrt(g * length))  # (24) with λ = 0
+    theta = big_r * length ** sp.Rational(-3, 4) * sp.sin(phase)
+    domain = {"b": (sp.Rational(1, 100), sp.Rational(1, 20))}  # b small against √(gl)
+    return Reference(
+        {"theta": theta}, scale=b, order=2, orders={"theta": 8}, domain=domain,
+        what="(22) at the phase (24) of an elongation",
+    )  # fmt: skip
