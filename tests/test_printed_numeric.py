@@ -321,6 +321,7 @@ def _verified_in(paper: str, row_id: str, root: Path = TABLES) -> tuple[str | No
         ("lecornu", "lecornu.result.largest_length_comparison", "misprint"),
         ("lecornu", "lecornu.result.c_equals_4_over_pi", "holds"),
         ("lecornu", "lecornu.result.amplitude_factor", "holds"),
+        ("charbonnier", "charbonnier.result.in-pi", "holds"),
     ],
 )
 def test_the_rows_status_is_computed(paper: str, row_id: str, status: str) -> None:
@@ -355,6 +356,10 @@ def test_tisserands_amplitudes_in_minutes_give_none_of_his_coefficients() -> Non
         ("lecornu", "lecornu.result.c_equals_4_over_pi", "; C = 4/pi'", "; C = 3/pi'"),
         ("lecornu", "lecornu.result.amplitude_factor", "theta = R*cos(3*b/", "theta = R*cos(2*b/"),
         ("lecornu", "lecornu.result.amplitude_factor", "= R/l**(3/4)'", "= R/l**(1/2)'"),
+        ("charbonnier", "charbonnier.result.in-pi", "Ipi_even = 2*factorial2(n)/factorial2(n + 1)",
+         "Ipi_even = 2*factorial2(n)/factorial2(n + 2)"),
+        ("charbonnier", "charbonnier.result.in-pi", "Ipi_odd = pi*factorial2(n)",
+         "Ipi_odd = 2*factorial2(n)"),
         ("lecornu", "lecornu.result.c_equals_4_over_pi", "*sin(omega)**2, (omega, 0, pi/2)); C",
          "*sin(omega)**3, (omega, 0, pi/2)); C"),
     ],
