@@ -278,6 +278,9 @@ UNCONFIRMED = {
     "lecornu.result.area_small_angle": "the row writes out the approximation the text names",
     "charbonnier.result.amplitude": "« cos kt ne diffère de -1 »: the sentence's cos kt",
     "charbonnier.result.i0-i-1": "∫ dx: the integrand 1 the row writes, the TeX leaves implicit",
+    # n19: printed numbers in words, a product written as a double factorial
+    "tisserand.result.displacement": "« un cinquième de millimètre »: words, the row's mm/5",
+    "charbonnier.result.in-pi": "2·4…n/(1·3·5…(n+1)): the row's factorial2(n)/factorial2(n+1)",
 }
 
 

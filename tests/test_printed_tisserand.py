@@ -188,8 +188,8 @@ def test_a_repeat_with_a_changed_coefficient_is_not_a_repeat() -> None:
     assert not repeats_its_row(changed, rows["tisserand.eq.3"], symbols)
 
 
-def test_every_checked_row_but_the_numerical_asides_has_a_reference() -> None:
+def test_every_checked_row_has_a_reference() -> None:
+    # the numerical asides too: their printed numbers are judged by core/printed_numeric (n19)
     rows, _ = _ledger()
-    asides = {"tisserand.result.numerical-application", "tisserand.result.displacement"}
     checked = [r for r in rows.values() if r.status in ("holds", "fails", "misprint")]
-    assert sorted(r.id for r in checked if not r.reference) == sorted(asides)
+    assert [r.id for r in checked if not r.reference] == []

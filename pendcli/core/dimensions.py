@@ -22,6 +22,7 @@ DIMENSION_VERDICTS: tuple[Verdict, ...] = ("consistent", "inconsistent", "dimens
 # base letter -> exponent: a Fraction, or a sympy expression for a symbolic power (vⁿ)
 Dim = dict[str, Any]
 _TRANSCENDENTAL = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "besselj")
+_OF_NUMBERS = (*_TRANSCENDENTAL, "factorial2")  # n!!: Charbonnier's I_n(π) (n19)
 
 
 class _Mismatch(Exception):
@@ -152,7 +153,7 @@ def _power(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
 
 def _function(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
     name = type(expr).__name__
-    if name in _TRANSCENDENTAL:
+    if name in _OF_NUMBERS:
         for arg in expr.args:
             d = _dim(arg, dims, seen)
             if d:

@@ -24,7 +24,10 @@ from pendcli.core.errors import PendcliError
 __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula"]
 
 # The functions a formula may call (besides the paper's declared function names).
-FUNCTIONS = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt", "besselj")
+FUNCTIONS = (
+    *("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt", "besselj"),
+    "factorial2",  # n!! = n(n − 2)(n − 4)…: Charbonnier's 2·4…n and 1·3·5…(n+1)
+)
 ELLIPSIS = "etc"  # the name "..." becomes, a symbol no ledger may declare
 # a base letter and its power: a rational (T^-2, L^1/2) or, in brackets, an expression in
 # the paper's symbols (L^(1-n): a coefficient of vⁿ)

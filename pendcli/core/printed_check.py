@@ -247,7 +247,7 @@ def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:
         shown = ", ".join(f"{k}={v}" for k, v in point.items())
         if not value.is_number:
             return False, f"the residual is not a number at {shown}"
-        if abs(value) > sp.Float(10) ** (5 - _DIGITS):
+        if abs(value) > _FLOOR and abs(value) > _TOLERANCE * _size_at(expr, free, point):
             return False, f"residual {sp.N(value, 6)} at {shown}"
     return True, f"vanishes at {POINTS} random rational points"
 
@@ -300,10 +300,40 @@ def _integrals_by_quadrature(expr: Any) -> Any:
     return expr.subs(values)
 
 
+# The residual is refused when above _TOLERANCE relative to its size (its terms' absolute
+# values summed through sums and products, at the point): 1e-15 of terms of 1e6 is
+# rounding, 1e-15 of terms of 1e-12 is not. Below _FLOOR (far under the working precision's
+# rounding) it is 0 whatever its terms, and the size is not computed.
+_TOLERANCE = 10.0 ** (5 - _DIGITS)
+_FLOOR = 10.0 ** -(_DIGITS + 8)
+
+
+def _size_at(expr: Any, free: list[Any], point: dict[Any, Any]) -> Any:
+    """The size of ``expr`` at ``point``: the value of ``expr`` with every sum a sum of
+    absolute values (ε·(a − b) has size |ε|·(|a| + |b|), the scale its cancellation is on)."""
+    return abs(_evaluator(_magnitude(expr), free)(point))
+
+
+def _magnitude(expr: Any) -> Any:
+    import sympy as sp
+
+    if expr.is_Add:
+        return sp.Add(*(_magnitude(a) for a in expr.args))
+    if expr.is_Mul:
+        return sp.Mul(*(_magnitude(a) for a in expr.args))
+    if expr.is_Pow and expr.exp.is_Integer and expr.exp > 0:
+        return _magnitude(expr.base) ** expr.exp
+    return abs(expr)
+
+
 def computed_status(
     printed: Formula, reading: Formula | None, corrected: Formula | None, reference: Reference
 ) -> tuple[str | None, str]:
     """The status the printed form earns (None: none the ledger may record) and why."""
+    from pendcli.core.printed_numeric import Numbers, numeric_status
+
+    if isinstance(reference, Numbers):  # printed numbers, judged by their printed digits
+        return numeric_status(printed, reading, corrected, reference)
     ok, why = formula_passes(printed, reference)
     if ok:
         return "holds", f"the printed form holds: {why}"

@@ -268,6 +268,10 @@ def __getattr__(name: str) -> Any:
 
     if name.startswith("reference_") and name in references.__all__:
         return getattr(references, name)
+    if name == "reference_in_pi":  # n19: lines 486-489
+        from pendcli.papers.charbonnier.references_in_pi import reference_in_pi
+
+        return reference_in_pi
     if name.startswith("printed_"):
         row_id = "charbonnier.result." + name.removeprefix("printed_").replace("_", "-")
         return lambda: printed_form_check(row_id)

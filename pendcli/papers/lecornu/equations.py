@@ -134,6 +134,8 @@ from pendcli.papers.lecornu.equations_small import (
 )
 from pendcli.papers.lecornu.references_early import *  # noqa: F403 (issue 19, lines 1-698)
 from pendcli.papers.lecornu.references_late import *  # noqa: F403  (l19b: lines 699-1135)
+from pendcli.papers.lecornu.references_numeric import *  # noqa: F403  (n19: lines 206-256)
+from pendcli.papers.lecornu.references_small import *  # noqa: F403  (n19: lines 565-610)
 
 __all__ = [
     "eq_1",

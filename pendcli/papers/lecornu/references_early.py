@@ -741,26 +741,31 @@ def check_curvature() -> EquationCheck:
 
 def check_eq16() -> EquationCheck:
     """(16): ξ = z²/4 (z = 2√x, sympy), and b²/(4g) with the adopted b = 0,35 m/s (line 218)
-    against the printed 0,00313 m, at its three significant digits, for g = 9,80 and 9,81."""
+    and the table's g (assumed 9,81, not printed), exact rationals, against the printed
+    0,00313 m rounded half up at its five decimals; the g it would need is reported."""
+    from fractions import Fraction
+
     import sympy as sp
 
     from pendcli.papers.lecornu.equations_common import equation_check
+    from pendcli.papers.lecornu.model import constant, printed_number
 
     z = sp.Symbol("z", positive=True)
-    xi = (z / 2) ** 2  # x at z = 2√x
-    identity = sp.simplify(sp.Rational(1) * xi - z**2 / 4) == 0
-    b = sp.Rational(35, 100)
-    coefficients = {g: b**2 / (4 * g) for g in (sp.Rational(980, 100), sp.Rational(981, 100))}
-    printed = sp.Rational(313, 100000)
-    half_unit = sp.Rational(1, 200000)
-    close = {g: abs(c - printed) <= half_unit for g, c in coefficients.items()}
-    shown = ", ".join(f"g = {float(g)}: {float(c):.6f}" for g, c in coefficients.items())
+    identity = sp.simplify((z / 2) ** 2 - z**2 / 4) == 0  # x at z = 2√x
+    b, g = Fraction(str(constant("speed"))), Fraction(str(constant("g")))
+    number = printed_number("lecornu.coefficient_b2_4g")
+    places = number.decimals or 0
+    coefficient = b**2 / (4 * g)
+    rounded = Fraction(int(coefficient * 10**places + Fraction(1, 2)), 10**places)
+    printed = Fraction(number.text.replace(",", "."))
+    g_max = b**2 / (4 * (printed - Fraction(1, 2 * 10**places)))
     return equation_check(
-        identity and any(close.values()),
+        identity and rounded == printed,
         "sympy",
-        f"ξ = z²/4 exactly; b²/(4g) with b = 0,35: {shown}; 0,00313 is b²/(4g) rounded for "
-        f"g = 9,80 ({'yes' if close[sp.Rational(980, 100)] else 'no'}), for g = 9,81 "
-        f"({'yes' if close[sp.Rational(981, 100)] else 'no'}, 0,00312)",
+        f"ξ = z²/4 exactly; b²/(4g) = {float(coefficient):.7f} for b = {float(b)}, "
+        f"g = {float(g)}, which prints {float(rounded):.{places}f}; {number.text} needs "
+        f"g ≤ {float(g_max):.4f}",
+        corrected=f"{float(rounded):.{places}f} z²" if rounded != printed else "",
     )
 
 
@@ -1041,13 +1046,19 @@ def check_table_times() -> EquationCheck:
 
 
 def check_table_intervals() -> EquationCheck:
-    """Line 232: the intervals between the elongations and the zero length (1/0,35 = 2,86 s
-    after the start), from the lengths as printed at line 224."""
-    import mpmath
+    """Line 232: the intervals between the limit positions, the differences of the instants
+    of line 228 and of the zero length (2,86 s, line 230), in exact rationals from the
+    published table (the printed instants, never retyped)."""
+    from fractions import Fraction
+    from itertools import pairwise
 
-    lengths = [mpmath.mpf(v) for v in ("1", "0.68", "0.42", "0.22", "0.08", "0")]
-    gaps = [(lengths[i] - lengths[i + 1]) / mpmath.mpf("0.35") for i in range(5)]
-    return _table_check("Δl/0,35 in s", [0.94, 0.72, 0.57, 0.40, 0.23], gaps, 2)
+    from pendcli.papers.lecornu.model import printed_number
+
+    ids = [f"lecornu.example.time.{k}" for k in range(1, 6)] + ["lecornu.example.time_zero_length"]
+    instants = [Fraction(f"{printed_number(i).value:.2f}") for i in ids]
+    gaps = [later - sooner for sooner, later in pairwise(instants)]
+    printed = [printed_number(f"lecornu.example.interval.{k}").value for k in range(1, 6)]
+    return _table_check("differences of the printed instants in s", printed, gaps, 2)
 
 
 def check_table_j0() -> EquationCheck:

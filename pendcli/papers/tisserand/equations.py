@@ -15,6 +15,7 @@ from typing import Any
 
 from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
+from pendcli.papers.tisserand.references_numeric import *  # noqa: F403  (n19: lines 192-202)
 
 ORDER = 3  # series in x kept through x² (fourth order in the angles)
 
