@@ -46,6 +46,10 @@ class Reference:
     ``Derivative(f, t)`` is evaluated (the chain rule; an unlisted symbol is a constant);
     ``transform``: applied to the residual before the substitution (a total derivative, a
     change of variable the notation leaves implicit);
+    ``bounded``: with a ``scale``, an equation passes when its residual stays finite as the
+    scale tends to 0+ (sympy's limit, the other symbols at a random rational point): the
+    text's « égal à un nombre fini augmenté de … », an expansion at a singular point whose
+    growing parts (negative powers, logarithms) must agree;
     ``rounded``: the formula's decimals are the paper's roundings: an equation holding one
     decimal passes when the value that makes it hold is a constant within half a unit of
     the decimal's last printed digit (``0.13`` stands for any number in [0.125, 0.135])."""
@@ -60,6 +64,7 @@ class Reference:
     rates: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
     transform: Callable[[Any], Any] | None = None
     rounded: bool = False
+    bounded: bool = False
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
@@ -71,7 +76,9 @@ def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
                 return False, f"{rhs}: {why}"
             continue
         order = reference.orders.get(getattr(lhs, "name", ""), reference.order)
-        if reference.rounded and _decimals(lhs - rhs):
+        if reference.bounded and reference.scale is not None:
+            ok, why = _bounded_passes(lhs - rhs, reference)
+        elif reference.rounded and _decimals(lhs - rhs):
             ok, why = _rounded_passes(lhs - rhs, reference, order, formula.source)
         else:
             ok, why = _equation_passes(lhs - rhs, reference, order)
@@ -119,6 +126,23 @@ def _substituted(residual: Any, reference: Reference) -> Any:
     exact = {names[n]: v for n, v in reference.exact.items() if n in names}
     expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
     return expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+
+
+def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
+    """``reference.bounded``: the residual's limit as the scale tends to 0+ is finite."""
+    import sympy as sp
+
+    expr = _substituted(residual, reference)
+    generator = random.Random(19)
+    point = {}
+    for s in sorted(expr.free_symbols - {reference.scale}, key=lambda s: s.name):
+        low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
+        point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
+    limit = sp.limit(expr.subs(point), reference.scale, 0, "+")
+    shown = ", ".join(f"{k}={v}" for k, v in point.items())
+    if limit.is_finite:
+        return True, f"finite as {reference.scale} -> 0+ (limit {sp.N(limit, 6)} at {shown})"
+    return False, f"the residual tends to {limit} as {reference.scale} -> 0+ at {shown}"
 
 
 def _decimals(expr: Any) -> set[Any]:

@@ -1541,28 +1541,28 @@ def _phase_at(length: Any, zero: Any) -> Any:
 
 @cache
 def reference_vertical_passages() -> Any:
-    """(23) and line 517: θ of (22) vanishes where its sine's argument is a multiple λπ of π;
-    the first passage of the pair, at the length l, is λ = m."""
+    """(23): θ of (22) vanishes where its sine's argument is a multiple λπ of π."""
     import sympy as sp
 
     length, lam = _symbols("l", "lam")
-    return _reference(
-        {"phi": _phase_at(length, lam * sp.pi), "m23": lam}, "(22) = 0 at l: argument λπ"
-    )
+    return _reference({"phi": _phase_at(length, lam * sp.pi)}, "(22) = 0 at l: argument λπ")
 
 
 @cache
 def reference_next_passage() -> Any:
-    """Lines 519-527: l' the length of the next vertical passage ((22) = 0 with argument
-    (λ + 1)π), the first one at l; b scaled by ε (π²b²/(4gl) neglected), through ε."""
+    """Lines 519-527: the first passage at l, its argument λπ (λ = m, line 519), l' the
+    length of the next ((22) = 0 with argument (λ + 1)π); b scaled by ε (π²b²/(4gl)
+    neglected), through ε."""
     import sympy as sp
 
     length, b, g, lam = _symbols("l", "b", "g", "lam")
     eps = sp.Symbol("eps_", positive=True)
     phi = _phase_at(length, lam * sp.pi)
     following = b**2 / (4 * g) * (phi + (lam + 1) * sp.pi) ** 2  # (22)'s argument (λ + 1)π
+    exact = {"lp": following.subs(b, eps * b), "b": eps * b, "m23": lam}
+    exact["phi"] = phi.subs(b, eps * b)
     return _reference(
-        {"lp": following.subs(b, eps * b), "b": eps * b},
+        exact,
         "(22) = 0 at l and l', b -> εb",
         scale=eps,
         order=2,
@@ -1748,3 +1748,217 @@ def reference_variation_of_constants() -> Any:
     names = ("u0", "u1", "u2")
     exact = {name: part.subs(tau, gamma * t) for name, part in zip(names, parts, strict=True)}
     return _reference(exact, "the hierarchy of (27) solved by undetermined coefficients")
+
+
+__all__ += ["reference_homothety", "result_homothety_axes_numeric"]
+
+
+@cache
+def reference_homothety() -> Any:
+    """Lines 1128-1134: the trace (x, y) = (θ1, θ2) of (52) (as read: the O(p) solutions of
+    (48) about ρ1 cos u, ρ2 sin u) lies on the ellipse of axes sρ1, sρ2 homothetic to the
+    one of axes ρ1, ρ2, s = √((x/ρ1)² + (y/ρ2)²); after half a turn (u -> u + π) the ratio
+    is s(u + π)/s(u). Through p."""
+    import sympy as sp
+
+    u, rho1, rho2 = _symbols("u", "rho1", "rho2")
+    phases = reference_rotated_phases()
+    one, two = phases.exact["theta1"], phases.exact["theta2"]
+    size = sp.sqrt((one / rho1) ** 2 + (two / rho2) ** 2)
+    exact = {"x": one, "y": two, "axis1": rho1 * size, "axis2": rho2 * size}
+    exact["hom_ratio"] = size.subs(u, u + sp.pi) / size
+    return _reference(
+        exact, "(48) to O(p), the ellipse through the trace", scale=phases.scale, order=phases.order
+    )
+
+
+def result_homothety_axes_numeric() -> EquationCheck:
+    """Lines 1130-1134 numerically: the two components of (3) linearised (scipy ODE, the
+    initial values of (52) at u = 0, ρ1 = 1, ρ2 = 0.4); the trace's size
+    s = √((x/ρ1)² + (y/ρ2)²) against 1 − (3p/4) arctg(ρ1y/(ρ2x)) (the axes as read: residual
+    O(p²)) and arctg(ρ2y/(ρ1x)) (as printed: O(p)), for u in (0, 1.4]; and s(u + π)/s(u) at
+    u = 0.7 against 1 − 3pπ/4."""
+    import numpy as np
+
+    from pendcli.papers.lecornu.equations_common import P_SWEEP, judged_series, linear_reduced_ode
+
+    rho1, rho2, end = 1.0, 0.4, 1.4 + np.pi
+    grid = np.linspace(0.05, 1.4, 200)
+    one = linear_reduced_ode(P_SWEEP, (1.0,) * 5, tuple(-0.75 * p for p in P_SWEEP), end)
+    two = linear_reduced_ode(P_SWEEP, (0.0,) * 5, (1.0,) * 5, end)
+    xs, ys = one(grid), two(grid)
+    read, printed, ratios = [], [], []
+    for j, p in enumerate(P_SWEEP):
+        x, y = rho1 * xs[j], rho2 * ys[j]
+        size = np.sqrt((x / rho1) ** 2 + (y / rho2) ** 2)
+        read.append(float(np.max(np.abs(size - 1 + 0.75 * p * np.arctan2(rho1 * y, rho2 * x)))))
+        printed.append(float(np.max(np.abs(size - 1 + 0.75 * p * np.arctan2(rho2 * y, rho1 * x)))))
+        later = np.hypot(one(np.array([0.7 + np.pi]))[j], two(np.array([0.7 + np.pi]))[j])
+        now = np.hypot(one(np.array([0.7]))[j], two(np.array([0.7]))[j])
+        ratios.append(float(abs(later[0] / now[0] - (1 - 0.75 * np.pi * p))))
+    check = judged_series(read, 2, "the axes as read (ρ1y/(ρ2x))")
+    ratio = judged_series(ratios, 2, "s(u + π)/s(u) − (1 − 3pπ/4)")
+    return equation_check(
+        check.holds and ratio.holds and printed[-1] > 100 * read[-1],
+        "numeric",
+        f"{check.detail}; {ratio.detail}; as printed (ρ2y/(ρ1x)) the residual at "
+        f"p = {P_SWEEP[-1]} is {printed[-1]:.2e}",
+        observed_order=check.observed_order,
+        claimed_order=2,
+    )
+
+
+__all__ += ["reference_coefficient_solutions"]
+
+
+def _zero_start_double_quadrature(forcing: Any, z: Any, z0: Any) -> Any:
+    """The solution of z y'' + 2y' = f (that is (z²y')' = z f) with y(z0) = y'(z0) = 0:
+    y = ∫_z0^z dz/z² ∫_z0^z z f dz (sympy integrals, left unevaluated)."""
+    import sympy as sp
+
+    return sp.Integral(sp.Integral(z * forcing, (z, z0, z)) / z**2, (z, z0, z))
+
+
+def _coefficient_transform(residual: Any) -> Any:
+    """Lines 716-722 (``U = …``, ``V = …``, ``W = …``): the residual y − Y(z) of the
+    coefficient y of s⁰, s, s² becomes D(y) − D(Y) + κ1 (y − Y)(z0) + κ2 (y − Y)'(z0),
+    D = z d²/dz² + 2 d/dz, with D(y) and the values at z0 from lines 710-716: D(u) = 0,
+    D(v) = −sin u, D(w) = −v cos u, v = w = v' = w' = 0 at z0 (u's values there are its
+    free constants α, β). Both vanish if and only if Y solves y's problem."""
+    import sympy as sp
+
+    z, z0, alpha, beta = _symbols("z", "z0", "alpha", "beta")
+    big_u, big_v, big_w = _symbols("U", "V", "W")
+    kappa1, kappa2 = _symbols("kappa1_b19", "kappa2_b19")
+    u = alpha + beta / z  # the general solution of z u'' + 2u' = 0: (z²u')' = 0
+    v = -_zero_start_double_quadrature(sp.sin(u), z, z0)
+    operator = {big_u: sp.S.Zero, big_v: -sp.sin(u), big_w: -v * sp.cos(u)}
+    (name,) = [s for s in operator if residual.has(s)]
+    solution = name - residual  # Y(z)
+
+    def empty(e: Any) -> bool:
+        return isinstance(e, sp.Integral) and e.limits[0][1] == e.limits[0][2]
+
+    def at_start(f: Any) -> Any:
+        return f.subs(z, z0).replace(empty, lambda e: sp.S.Zero)
+
+    first = solution.diff(z)
+    gap = operator[name] - (z * first.diff(z) + 2 * first)
+    if name != big_u:  # v, w start at 0 with zero slope
+        gap += kappa1 * at_start(solution) + kappa2 * at_start(first)
+    return sp.expand(gap)  # the integrals, atoms here, cancel term by term
+
+
+@cache
+def reference_coefficient_solutions() -> Any:
+    """Lines 716-722: u, v, w judged as solutions of the equations of lines 710-714 with the
+    initial values of line 716 (the differential operator applied by sympy to the printed
+    integrals; nothing integrated)."""
+    return _reference(
+        {}, "lines 710-716: z y'' + 2y' and the values at z0", transform=_coefficient_transform
+    )
+
+
+__all__ += ["reference_conical_solution"]
+
+
+@cache
+def _conical_solution() -> dict[str, Any]:
+    """A solution of (45) (mpmath's Taylor ODE solver at 30 digits from x = 1, v = 1.1,
+    v' = 0.3), ω = √x J1(2√x) a solution of (9), λ = v/ω (line 1018), ∫dx/ω² from x = 2
+    (quadrature), A the first integral (ω²λ')² + 1/λ² at x = 2 (line 1038) and B its second
+    constant: √(Aλ² − 1)/A at x = 2 (line 1042 integrated from there)."""
+    import mpmath
+
+    with mpmath.workdps(30):
+        solution = mpmath.odefun(
+            lambda x, s: [s[1], -s[0] / x + 1 / s[0] ** 3],
+            1,
+            [mpmath.mpf("1.1"), mpmath.mpf("0.3")],
+        )
+
+        def omega(x: Any) -> Any:
+            return mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
+
+        def lam(x: Any) -> Any:
+            return solution(x)[0] / omega(x)
+
+        def lam_slope(x: Any) -> Any:
+            v, dv = solution(x)
+            return (dv * omega(x) - v * mpmath.diff(omega, x)) / omega(x) ** 2
+
+        two = mpmath.mpf(2)
+        big_a = (omega(two) ** 2 * lam_slope(two)) ** 2 + 1 / lam(two) ** 2
+        big_b = mpmath.sqrt(big_a * lam(two) ** 2 - 1) / big_a
+    return {
+        "v": lambda x: solution(x)[0],
+        "omega": omega,
+        "lam": lam,
+        "A": big_a,
+        "B": big_b,
+        "Iw": lambda x: mpmath.quad(lambda s: 1 / omega(s) ** 2, [two, x]),
+    }
+
+
+@cache
+def reference_conical_solution() -> Any:
+    """Lines 1044-1052 against a solution of (45) computed numerically (mpmath ODE, 30
+    digits): v, ω, λ, ∫dx/ω² as functions of x (sympy functions evaluated by mpmath), A and
+    B from the state at x = 2; x drawn in (2, 3) (λ grows with ∫dx/ω² there: the branch of
+    line 1042's square root)."""
+    import mpmath
+    import sympy as sp
+    from sympy.utilities.lambdify import implemented_function
+
+    (x,) = _symbols("x")
+    numeric = _conical_solution()
+
+    def at_30_digits(f: Any) -> Any:
+        def value(point: Any) -> Any:
+            with mpmath.workdps(30):
+                return f(mpmath.mpf(str(sp.Float(point, 30))))
+
+        return value
+
+    exact = {
+        name: implemented_function(f"{name}_b19", at_30_digits(numeric[name]))(x)
+        for name in ("v", "omega", "lam", "Iw")
+    }
+    exact["A45"] = sp.Float(mpmath.nstr(numeric["A"], 32), 30)
+    exact["B45"] = sp.Float(mpmath.nstr(numeric["B"], 32), 30)
+    domain = {"x": (sp.Integer(2), sp.Integer(3))}
+    return _reference(exact, "a solution of (45) by mpmath's ODE solver", domain=domain)
+
+
+__all__ += ["reference_small_x"]
+
+
+@cache
+def reference_small_x() -> Any:
+    """Lines 448-460 as x -> 0: u = C x (π/(4√x))[cos α J1(2√x) − sin α Y1(2√x)] (the
+    second (18) in closed form, lecornu.eq.18.definite-integral's check; J1, Y1 by their
+    series at 0, through the terms that do not vanish with x), θ = u/l with
+    C = (b²/g)k (line 406); x and l scaled by ε. Each residual must stay finite as ε -> 0+:
+    the parts that grow as x -> 0 (1/x, log x) must agree, a finite remainder (the text's
+    « nombre fini », F) is free."""
+    import sympy as sp
+
+    x, length, alpha, big_c, k, b, g = _symbols("x", "l", "alpha", "C", "k", "b", "g")
+    eps = sp.Symbol("eps_", positive=True)
+
+    def ratio(at: Any) -> Any:  # u/(Cx) of the second (18), through o(1) as x -> 0
+        z = 2 * sp.sqrt(at)
+        # DLMF 10.2.2 and 10.8.1: J1(z) = z/2 − z³/16 + …, Y1(z) = −2/(πz)
+        # + (2/π) log(z/2) J1(z) − (z/(2π))(ψ(1) + ψ(2)) + O(z³ log z)
+        j1 = z / 2 - z**3 / 16
+        y1 = -2 / (sp.pi * z) + 2 / sp.pi * sp.log(z / 2) * j1
+        y1 -= z / (2 * sp.pi) * (sp.polygamma(0, 1) + sp.polygamma(0, 2))
+        return sp.pi / (4 * sp.sqrt(at)) * (sp.cos(alpha) * j1 - sp.sin(alpha) * y1)
+
+    small = eps * x
+    exact = {"x": small, "u": big_c * small * ratio(small), "l": eps * length}
+    exact["theta"] = k * ratio(g * eps * length / b**2)
+    domain = {"alpha": (sp.Rational(3, 10), sp.Rational(12, 10))}
+    return _reference(
+        exact, "the second (18) in closed form, x -> εx", scale=eps, domain=domain, bounded=True
+    )
