@@ -50,7 +50,14 @@ class Reference:
     ``rates``: variable name -> {symbol name -> its derivative in that variable}, how a printed
     ``Derivative(f, t)`` is evaluated (the chain rule; an unlisted symbol is a constant);
     ``transform``: applied to the residual before the substitution (a total derivative, a
-    change of variable the notation leaves implicit)."""
+    change of variable the notation leaves implicit);
+    ``bounded``: with a ``scale``, an equation passes when its residual stays finite as the
+    scale tends to 0+ (sympy's limit, the other symbols at a random rational point): the
+    text's « égal à un nombre fini augmenté de … », an expansion at a singular point whose
+    growing parts (negative powers, logarithms) must agree;
+    ``rounded``: the formula's decimals are the paper's roundings: an equation holding one
+    decimal passes when the value that makes it hold is a constant within half a unit of
+    the decimal's last printed digit (``0.13`` stands for any number in [0.125, 0.135])."""
 
     exact: Mapping[str, Any]
     scale: Any = None
@@ -61,15 +68,25 @@ class Reference:
     reading: Reference | None = None
     rates: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
     transform: Callable[[Any], Any] | None = None
+    rounded: bool = False
+    bounded: bool = False
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
     """Whether every equation of ``formula`` holds under ``reference``, and why not."""
     for lhs, rhs in formula.equations:
         if lhs is None:
+            ok, why = _inequality_passes(rhs, reference)
+            if not ok:
+                return False, f"{rhs}: {why}"
             continue
         order = reference.orders.get(getattr(lhs, "name", ""), reference.order)
-        ok, why = _equation_passes(lhs - rhs, reference, order)
+        if reference.bounded and reference.scale is not None:
+            ok, why = _bounded_passes(lhs - rhs, reference)
+        elif reference.rounded and _decimals(lhs - rhs):
+            ok, why = _rounded_passes(lhs - rhs, reference, order, formula.source)
+        else:
+            ok, why = _equation_passes(lhs - rhs, reference, order)
         if not ok:
             return False, f"{lhs} = {rhs}: {why}"
     return True, "every equation holds" + (f" against {reference.what}" if reference.what else "")
@@ -100,6 +117,130 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
     if ok or "not a number" not in why or expr.has(sp.Integral):
         return ok, why
     return (True, "simplifies to 0") if sp.simplify(expr) == 0 else (False, why)
+
+
+def _substituted(residual: Any, reference: Reference) -> Any:
+    """``residual`` (« … » set to 0) after the reference's transform, rates, substitution,
+    functions and derivatives: what :func:`_equation_passes` evaluates, before a series."""
+    import sympy as sp
+
+    expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
+    if reference.transform is not None:
+        expr = reference.transform(expr)
+    if reference.rates:
+        expr = _along_the_rates(expr, reference.rates)
+    names = {s.name: s for s in expr.free_symbols}
+    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
+    expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
+    return expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+
+
+def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
+    """``reference.bounded``: the residual's limit as the scale tends to 0+ is finite."""
+    import sympy as sp
+
+    expr = _substituted(residual, reference)
+    generator = random.Random(19)
+    point = {}
+    for s in sorted(expr.free_symbols - {reference.scale}, key=lambda s: s.name):
+        low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
+        point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
+    limit = sp.limit(expr.subs(point), reference.scale, 0, "+")
+    shown = ", ".join(f"{k}={v}" for k, v in point.items())
+    if limit.is_finite:
+        return True, f"finite as {reference.scale} -> 0+ (limit {sp.N(limit, 6)} at {shown})"
+    return False, f"the residual tends to {limit} as {reference.scale} -> 0+ at {shown}"
+
+
+def _decimals(expr: Any) -> set[Any]:
+    import sympy as sp
+
+    return set(expr.atoms(sp.Float))
+
+
+def _rounded_passes(
+    residual: Any, reference: Reference, order: int | None, source: str
+) -> tuple[bool, str]:
+    """An equation holding one printed decimal (``reference.rounded``): the value that makes
+    it hold (it enters linearly) must be a constant within half a unit of the decimal's last
+    printed digit."""
+    import sympy as sp
+
+    decimals = _decimals(residual)
+    if len(decimals) != 1:
+        return False, f"{len(decimals)} decimals in one equation: which is rounded is unclear"
+    (printed,) = decimals
+    unknown = sp.Dummy("decimal")
+    linear = residual.subs(printed, unknown)
+    slope = sp.diff(linear, unknown)
+    if slope == 0 or slope.has(unknown):
+        return False, f"the decimal {printed} does not enter linearly"
+    needed = -linear.subs(unknown, 0) / slope
+    value = _value_somewhere(needed, reference, order)
+    if value is None:
+        return False, f"the value the decimal {printed} stands for is not a number"
+    ok, why = _equation_passes(needed - value, reference, order)
+    if not ok:
+        return False, f"the decimal {printed} stands for no constant ({why})"
+    half = _half_unit(printed, source)
+    shown = sp.N(value, 6)
+    if abs(value - printed) > half:
+        return False, f"{sp.N(printed, 6)} is not {shown} rounded (to ±{half})"
+    return True, f"{sp.N(printed, 6)} is {shown} rounded"
+
+
+def _value_somewhere(expr: Any, reference: Reference, order: int | None) -> Any:
+    """``expr``'s value under the reference at the middle of each symbol's domain (None when
+    that is no number): the constant a rounded decimal is compared with."""
+    import sympy as sp
+
+    expr = _substituted(expr, reference)
+    if reference.scale is not None and order is not None:
+        expr = _truncated(expr, reference.scale, order)
+    middle = {}
+    for s in expr.free_symbols:
+        low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
+        middle[s] = (low + high) / 2
+    value = sp.N(expr.subs(middle), _DIGITS)
+    return value if value.is_number else None
+
+
+def _half_unit(decimal: Any, source: str) -> Any:
+    """Half a unit of the last digit with which ``decimal`` is printed in ``source``."""
+    import re
+
+    import sympy as sp
+
+    for token in re.findall(r"\d*\.\d+", source):
+        if sp.Float(token) == abs(decimal):
+            return sp.Rational(5, 10 ** (len(token.split(".")[1]) + 1))
+    return sp.Rational(0)
+
+
+def _inequality_passes(expr: Any, reference: Reference) -> tuple[bool, str]:
+    """A bare ``a < b`` (``<=``, ``>``, ``>=``): the margin (greater side minus lesser,
+    under the reference) is positive (non-negative) at the random points; any other bare
+    expression states nothing to compare."""
+    import sympy as sp
+    from sympy.core.relational import Relational
+
+    if not isinstance(expr, Relational) or isinstance(expr, (sp.Eq, sp.Ne)):
+        return True, "a bare expression"
+    margin = _substituted(expr.gts - expr.lts, reference)
+    strict = expr.rel_op in ("<", ">")
+    generator = random.Random(19)
+    free = sorted(margin.free_symbols, key=lambda s: s.name)
+    at = _evaluator(margin, free)
+    for _ in range(POINTS):
+        point = {}
+        for s in free:
+            low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
+            point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
+        value = at(point)
+        shown = ", ".join(f"{k}={v}" for k, v in point.items())
+        if not value.is_number or not (value > 0 if strict else value >= 0):
+            return False, f"margin {sp.N(value, 6)} at {shown}"
+    return True, f"the margin is positive at {POINTS} random rational points"
 
 
 def _along_the_rates(expr: Any, rates: Mapping[str, Mapping[str, Any]]) -> Any:

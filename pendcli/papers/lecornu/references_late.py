@@ -1418,3 +1418,547 @@ def result_zero_initial_speed_numeric() -> EquationCheck:
     return equation_check(
         abs(slope) < 1e-25, "numeric", f"dθ/du of (41) at u = 0 by mpmath: {float(slope):.1e}"
     )
+
+
+# --- b19: lines 420-676 (§ II, the integral's tail, (20)-(24), the slowly varying pendulum) --
+# (appended here for issue 19; lines 1-698 are otherwise in references_early.py)
+
+__all__ += [
+    "check_small_p_integrals",
+    "check_tail_expansion",
+    "reference_elongation_arc",
+    "reference_elongation_condition",
+    "reference_eq21_from_20",
+    "reference_eq22_from_21",
+    "reference_mean_pendulum",
+    "reference_next_passage",
+    "reference_small_p_series",
+    "reference_tail_expansion",
+    "reference_vertical_passages",
+    "reference_vertical_to_elongation",
+]
+
+
+def _upper_limit_derivative(name: str, lower: Any) -> Any:
+    """The transform of an identity between integrals ∫_lower^h (a function of their common
+    upper limit h = ``name``): its h-derivative plus κ times its value at h = lower (κ a
+    fresh symbol the random points sample): both vanish if and only if the identity holds,
+    and neither needs an integral done."""
+    import sympy as sp
+
+    h = sp.Symbol(name, real=True)
+    kappa = sp.Symbol("kappa_b19", real=True)
+
+    def empty(e: Any) -> bool:
+        return isinstance(e, sp.Integral) and e.limits[0][1] == e.limits[0][2]
+
+    def transform(residual: Any) -> Any:
+        at_lower = residual.subs(h, lower).replace(empty, lambda e: sp.S.Zero)
+        return residual.diff(h) + kappa * at_lower
+
+    return transform
+
+
+@cache
+def reference_tail_expansion() -> Any:
+    """Lines 426-428: identities between integrals ∫_a^∞ (a the text's fixed number above 1,
+    aa here), judged by their a-derivative (the integrands at λ = a; both sides vanish as
+    a → ∞); the root's series in 1/a with a√x, the weight's argument, held fixed:
+    a = 1/ε, x -> ε²x, through ε⁶."""
+    import sympy as sp
+
+    aa, x = _symbols("aa", "x")
+    eps = sp.Symbol("eps_", positive=True)
+    return _reference(
+        {"aa": 1 / eps, "x": eps**2 * x},
+        "the a-derivative, a = 1/ε, a√x fixed",
+        transform=lambda residual: residual.diff(aa),
+        scale=eps,
+        order=7,
+    )
+
+
+@cache
+def reference_small_p_series() -> Any:
+    """Line 440: an identity between integrals ∫_(2a√x)^h, judged by its h-derivative (the
+    integrands at p = h) and its value at h = 2a√x; the exponential's series is truncated
+    as printed, so h is scaled by ε (through ε: the terms 1/p, 1, p of the integrands)."""
+    import sympy as sp
+
+    aa, hh, x = _symbols("aa", "hh", "x")
+    eps = sp.Symbol("eps_", positive=True)
+    return _reference(
+        {"hh": eps * hh},
+        "the h-derivative and the value at h = 2a√x, h -> εh",
+        transform=_upper_limit_derivative("hh", 2 * aa * sp.sqrt(x)),
+        scale=eps,
+        order=2,
+    )
+
+
+def _twenty(x: Any) -> Any:
+    """(20): u = A x^(1/4) cos 2√x + B x^(1/4) sin 2√x (p = 1/4, line 468)."""
+    import sympy as sp
+
+    big_a, big_b = _symbols("A", "B")
+    root = 2 * sp.sqrt(x)
+    return x ** sp.Rational(1, 4) * (big_a * sp.cos(root) + big_b * sp.sin(root))
+
+
+@cache
+def reference_eq21_from_20() -> Any:
+    """(21): θ = u/l (line 110) with u of (20) at x = gl/b²."""
+    length, b, g = _symbols("l", "b", "g")
+    return _reference({"theta": _twenty(g * length / b**2) / length}, "(20), θ = u/l, x = gl/b²")
+
+
+def _twenty_two_constants() -> dict[str, Any]:
+    """A, B of (20)-(21) through the « deux nouvelles constantes » R, φ of (22):
+    A cos X + B sin X = (b²/g)^(1/4) R sin(X − φ) for every X."""
+    import sympy as sp
+
+    b, g, big_r, phi = _symbols("b", "g", "R", "phi")
+    big_a, big_b = _symbols("A", "B")
+    scale = (b**2 / g) ** sp.Rational(1, 4) * big_r
+    return {big_a: -scale * sp.sin(phi), big_b: scale * sp.cos(phi)}
+
+
+@cache
+def reference_eq22_from_21() -> Any:
+    """(22): (21) with A, B written through R, φ."""
+    length, b, g = _symbols("l", "b", "g")
+    theta = _twenty(g * length / b**2) / length
+    return _reference({"theta": theta.subs(_twenty_two_constants())}, "(21) with A, B from R, φ")
+
+
+def _phase_at(length: Any, zero: Any) -> Any:
+    """φ for which (22)'s sine argument (2/b)√(gl) − φ equals ``zero`` at ``length``."""
+    import sympy as sp
+
+    b, g = _symbols("b", "g")
+    return 2 / b * sp.sqrt(g * length) - zero
+
+
+@cache
+def reference_vertical_passages() -> Any:
+    """(23): θ of (22) vanishes where its sine's argument is a multiple λπ of π."""
+    import sympy as sp
+
+    length, lam = _symbols("l", "lam")
+    return _reference({"phi": _phase_at(length, lam * sp.pi)}, "(22) = 0 at l: argument λπ")
+
+
+@cache
+def reference_next_passage() -> Any:
+    """Lines 519-527: the first passage at l, its argument λπ (λ = m, line 519), l' the
+    length of the next ((22) = 0 with argument (λ + 1)π); b scaled by ε (π²b²/(4gl)
+    neglected), through ε."""
+    import sympy as sp
+
+    length, b, g, lam = _symbols("l", "b", "g", "lam")
+    eps = sp.Symbol("eps_", positive=True)
+    phi = _phase_at(length, lam * sp.pi)
+    following = b**2 / (4 * g) * (phi + (lam + 1) * sp.pi) ** 2  # (22)'s argument (λ + 1)π
+    exact = {"lp": following.subs(b, eps * b), "b": eps * b, "m23": lam}
+    exact["phi"] = phi.subs(b, eps * b)
+    return _reference(
+        exact,
+        "(22) = 0 at l and l', b -> εb",
+        scale=eps,
+        order=2,
+    )
+
+
+def _elongation_tangent(length: Any) -> Any:
+    """tg of (22)'s argument X at an elongation: dθ/dl = R l^(-3/4)(X' cos X − 3 sin X/(4l))
+    vanishes (sympy's derivative of (22), its cos X and sin X coefficients)."""
+    import sympy as sp
+
+    big_r, phi = _symbols("R", "phi")
+    arc = sp.Symbol("X_b19", real=True)
+    ell = sp.Symbol("l_b19", positive=True)
+    argument = _phase_at(ell, 0) - phi
+    theta = big_r * ell ** sp.Rational(-3, 4) * sp.sin(argument)
+    slope = sp.expand(theta.diff(ell).subs(argument, arc))
+    tangent = -slope.coeff(sp.cos(arc)) / slope.coeff(sp.sin(arc))
+    return tangent.subs(ell, length)
+
+
+@cache
+def reference_elongation_condition() -> Any:
+    """Line 535: the φ for which l is an elongation of (22): X = arctg of the tangent found."""
+    import sympy as sp
+
+    (length,) = _symbols("l")
+    phi = _phase_at(length, sp.atan(_elongation_tangent(length)))
+    return _reference({"phi": phi}, "dθ/dl = 0 for θ of (22)")
+
+
+@cache
+def reference_elongation_arc() -> Any:
+    """(24): the same arc written (2λ + 1)π/2 − arctg(1/tangent) (λ an integer), b scaled
+    by ε (b/√(gl) small), through ε²."""
+    import sympy as sp
+
+    length, lam, b = _symbols("l", "lam", "b")
+    eps = sp.Symbol("eps_", positive=True)
+    arc = (2 * lam + 1) * sp.pi / 2 - sp.atan(1 / _elongation_tangent(length))
+    phi = _phase_at(length, arc).subs(b, eps * b)
+    return _reference({"phi": phi, "b": eps * b}, "dθ/dl = 0, b -> εb", scale=eps, order=3)
+
+
+@cache
+def reference_vertical_to_elongation() -> Any:
+    """Lines 559-563: (l'' − l)/b, the time from the vertical at l to the next elongation
+    l'' ((23), (24) solved for l'', as for line 555), through b; the printed decimal 0,13
+    a rounding."""
+    from pendcli.papers.lecornu.references_early import reference_quarter_time
+
+    quarter = reference_quarter_time()
+    return _reference(
+        dict(quarter.exact),
+        "(23), (24) solved for l'', decimals rounded",
+        scale=quarter.scale,
+        order=quarter.order,
+        rounded=True,
+    )
+
+
+@cache
+def reference_mean_pendulum() -> Any:
+    """Lines 666-676: t the period of (27)'s solution to p² (reference_root_epsilon, through
+    p²), l = a + bt/2 the length at t/2 (line 666); the printed decimals roundings."""
+    from pendcli.papers.lecornu.references_early import reference_root_epsilon
+
+    root = reference_root_epsilon()
+    (a,) = _symbols("a")
+    exact = dict(root.exact)
+    exact["l"] = a + exact["b"] * exact["t"] / 2
+    return _reference(
+        exact,
+        "the root of (27)'s solution, l = a + bt/2",
+        scale=root.scale,
+        order=root.order,
+        rounded=True,
+    )
+
+
+def check_tail_expansion() -> EquationCheck:
+    """Lines 426-428 numerically (mpmath.quad at x = 0,2, a = 1,3): ∫_a^∞ e^(−2λ√x)(1 + λ²)^½
+    against ∫ e λ + ½∫ e/λ + ∫ e(−1/(8λ³) + 1/(16λ⁵)) (what remains is the series' next
+    term, ≤ 5/(128·6a⁶)), and the last integral below (1/8)∫dλ/λ³ = 1/(16a²)."""
+    import mpmath
+
+    with mpmath.workdps(20):
+        x, a = mpmath.mpf("0.2"), mpmath.mpf("1.3")
+
+        def weighted(f: Any) -> Any:
+            weight = 2 * mpmath.sqrt(x)
+            return mpmath.quad(lambda s: mpmath.exp(-weight * s) * f(s), [a, mpmath.inf])
+
+        whole = weighted(lambda s: mpmath.sqrt(1 + s**2))
+        last = weighted(lambda s: -1 / (8 * s**3) + 1 / (16 * s**5))
+        split = weighted(lambda s: s) + weighted(lambda s: 1 / s) / 2 + last
+        gap, bound = abs(whole - split), mpmath.quad(lambda s: 1 / s**3, [a, mpmath.inf]) / 8
+        ok = gap < 5 / (128 * 6 * a**6) and abs(last) < bound
+        ok = ok and abs(bound - 1 / (16 * a**2)) < 1e-18
+    return equation_check(
+        bool(ok),
+        "numeric",
+        f"quad: the split misses {float(gap):.1e} (the next term's bound "
+        f"{float(5 / (128 * 6 * a**6)):.1e}); |last| = {float(abs(last)):.2e} < 1/(16a²) = "
+        f"{float(bound):.2e}",
+    )
+
+
+def check_small_p_integrals() -> EquationCheck:
+    """Lines 440-446 numerically (mpmath.quad at x = 0,2, a = 1,3, h = 2,5, with the whole
+    series: the integrand (e^(−p) − 1 + p)/p for « p/(1·2) − p²/(1·2·3) + … »):
+    ∫e^(−p)dp/p = log h − log(2a√x) − h + 2a√x + that integral, which lies below
+    ∫p dp/2 = h²/4 − a²x."""
+    import mpmath
+
+    with mpmath.workdps(20):
+        x, a, h = mpmath.mpf("0.2"), mpmath.mpf("1.3"), mpmath.mpf("2.5")
+        low = 2 * a * mpmath.sqrt(x)
+        rest = mpmath.quad(lambda q: (mpmath.exp(-q) - 1 + q) / q, [low, h])
+        left = mpmath.quad(lambda q: mpmath.exp(-q) / q, [low, h])
+        gap = abs(left - (mpmath.log(h) - mpmath.log(low) - h + low + rest))
+        half = mpmath.quad(lambda q: q / 2, [low, h])
+        ok = gap < 1e-18 and rest < half and abs(half - (h**2 / 4 - a**2 * x)) < 1e-18
+    return equation_check(
+        bool(ok),
+        "numeric",
+        f"quad: line 440 to {float(gap):.1e}; the rest {float(rest):.4f} < ∫p dp/2 = "
+        f"{float(half):.4f} = h²/4 − a²x",
+    )
+
+
+__all__ += ["reference_quarter_power", "reference_variation_of_constants"]
+
+
+@cache
+def reference_quarter_power() -> Any:
+    """Lines 466-499: v = x^p cos 2√x, w = x^p sin 2√x (lines 470, 490), u = Av + Bw ((20),
+    « la fonction u, définie par l'équation (20) »), their derivatives by sympy, and p = 1/4,
+    the exponent the text fixes at line 468 before it differentiates."""
+    import sympy as sp
+
+    x, big_a, big_b = _symbols("x", "A", "B")
+    quarter = sp.Rational(1, 4)
+    v = x**quarter * sp.cos(2 * sp.sqrt(x))
+    w = x**quarter * sp.sin(2 * sp.sqrt(x))
+    u = big_a * v + big_b * w
+    exact = {"v": v, "w": w, "u": u, "p": quarter, "dv_dx": v.diff(x)}
+    exact.update({"d2v_dx2": v.diff(x, 2), "d2w_dx2": w.diff(x, 2), "d2u_dx2": u.diff(x, 2)})
+    return _reference(exact, "v, w, u = Av + Bw with p = 1/4, differentiated")
+
+
+def _zero_start_forced(rhs: Any, tau: Any, degree: int) -> Any:
+    """The solution of y'' + y = rhs(τ) with y(0) = y'(0) = 0, rhs a polynomial in τ times
+    cos τ and sin τ: undetermined coefficients (polynomials of ``degree``), solved by
+    sympy's linear solver."""
+    import sympy as sp
+
+    a = sp.symbols(f"a0:{degree + 1}")
+    c = sp.symbols(f"c0:{degree + 1}")
+    trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau)
+    trial += sum(c[k] * tau**k for k in range(degree + 1)) * sp.sin(tau)
+    residual = sp.expand(trial.diff(tau, 2) + trial - rhs)
+    equations = [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
+    for trig in (sp.cos(tau), sp.sin(tau)):
+        equations.extend(sp.Poly(residual.coeff(trig), tau).all_coeffs())
+    (solution,) = sp.linsolve(equations, [*a, *c])
+    return sp.expand(trial.subs(dict(zip((*a, *c), solution, strict=True))))
+
+
+@cache
+def reference_variation_of_constants() -> Any:
+    """Lines 624-634: u0 the general solution A sin γt + B cos γt of u0'' + γ²u0 = 0, and
+    u1, u2 the solutions of u_n'' + γ²u_n = −γt u_(n−1)'' that start at 0 with zero slope
+    (line 628), by undetermined coefficients."""
+    import sympy as sp
+
+    t, gamma, big_a, big_b = _symbols("t", "gamma", "A", "B")
+    tau = sp.Symbol("tau_b19", real=True)  # γt: the hierarchy is then free of γ
+    parts = [big_a * sp.sin(tau) + big_b * sp.cos(tau)]
+    for n in (1, 2):
+        forcing = sp.expand(-tau * parts[-1].diff(tau, 2))
+        parts.append(_zero_start_forced(forcing, tau, 2 * n))
+    names = ("u0", "u1", "u2")
+    exact = {name: part.subs(tau, gamma * t) for name, part in zip(names, parts, strict=True)}
+    return _reference(exact, "the hierarchy of (27) solved by undetermined coefficients")
+
+
+__all__ += ["reference_homothety", "result_homothety_axes_numeric"]
+
+
+@cache
+def reference_homothety() -> Any:
+    """Lines 1128-1134: the trace (x, y) = (θ1, θ2) of (52) (as read: the O(p) solutions of
+    (48) about ρ1 cos u, ρ2 sin u) lies on the ellipse of axes sρ1, sρ2 homothetic to the
+    one of axes ρ1, ρ2, s = √((x/ρ1)² + (y/ρ2)²); after half a turn (u -> u + π) the ratio
+    is s(u + π)/s(u). Through p."""
+    import sympy as sp
+
+    u, rho1, rho2 = _symbols("u", "rho1", "rho2")
+    phases = reference_rotated_phases()
+    one, two = phases.exact["theta1"], phases.exact["theta2"]
+    size = sp.sqrt((one / rho1) ** 2 + (two / rho2) ** 2)
+    exact = {"x": one, "y": two, "axis1": rho1 * size, "axis2": rho2 * size}
+    exact["hom_ratio"] = size.subs(u, u + sp.pi) / size
+    return _reference(
+        exact, "(48) to O(p), the ellipse through the trace", scale=phases.scale, order=phases.order
+    )
+
+
+def result_homothety_axes_numeric() -> EquationCheck:
+    """Lines 1130-1134 numerically: the two components of (3) linearised (scipy ODE, the
+    initial values of (52) at u = 0, ρ1 = 1, ρ2 = 0.4); the trace's size
+    s = √((x/ρ1)² + (y/ρ2)²) against 1 − (3p/4) arctg(ρ1y/(ρ2x)) (the axes as read: residual
+    O(p²)) and arctg(ρ2y/(ρ1x)) (as printed: O(p)), for u in (0, 1.4]; and s(u + π)/s(u) at
+    u = 0.7 against 1 − 3pπ/4."""
+    import numpy as np
+
+    from pendcli.papers.lecornu.equations_common import P_SWEEP, judged_series, linear_reduced_ode
+
+    rho1, rho2, end = 1.0, 0.4, 1.4 + np.pi
+    grid = np.linspace(0.05, 1.4, 200)
+    one = linear_reduced_ode(P_SWEEP, (1.0,) * 5, tuple(-0.75 * p for p in P_SWEEP), end)
+    two = linear_reduced_ode(P_SWEEP, (0.0,) * 5, (1.0,) * 5, end)
+    xs, ys = one(grid), two(grid)
+    read, printed, ratios = [], [], []
+    for j, p in enumerate(P_SWEEP):
+        x, y = rho1 * xs[j], rho2 * ys[j]
+        size = np.sqrt((x / rho1) ** 2 + (y / rho2) ** 2)
+        read.append(float(np.max(np.abs(size - 1 + 0.75 * p * np.arctan2(rho1 * y, rho2 * x)))))
+        printed.append(float(np.max(np.abs(size - 1 + 0.75 * p * np.arctan2(rho2 * y, rho1 * x)))))
+        later = np.hypot(one(np.array([0.7 + np.pi]))[j], two(np.array([0.7 + np.pi]))[j])
+        now = np.hypot(one(np.array([0.7]))[j], two(np.array([0.7]))[j])
+        ratios.append(float(abs(later[0] / now[0] - (1 - 0.75 * np.pi * p))))
+    check = judged_series(read, 2, "the axes as read (ρ1y/(ρ2x))")
+    ratio = judged_series(ratios, 2, "s(u + π)/s(u) − (1 − 3pπ/4)")
+    return equation_check(
+        check.holds and ratio.holds and printed[-1] > 100 * read[-1],
+        "numeric",
+        f"{check.detail}; {ratio.detail}; as printed (ρ2y/(ρ1x)) the residual at "
+        f"p = {P_SWEEP[-1]} is {printed[-1]:.2e}",
+        observed_order=check.observed_order,
+        claimed_order=2,
+    )
+
+
+__all__ += ["reference_coefficient_solutions"]
+
+
+def _zero_start_double_quadrature(forcing: Any, z: Any, z0: Any) -> Any:
+    """The solution of z y'' + 2y' = f (that is (z²y')' = z f) with y(z0) = y'(z0) = 0:
+    y = ∫_z0^z dz/z² ∫_z0^z z f dz (sympy integrals, left unevaluated)."""
+    import sympy as sp
+
+    return sp.Integral(sp.Integral(z * forcing, (z, z0, z)) / z**2, (z, z0, z))
+
+
+def _coefficient_transform(residual: Any) -> Any:
+    """Lines 716-722 (``U = …``, ``V = …``, ``W = …``): the residual y − Y(z) of the
+    coefficient y of s⁰, s, s² becomes D(y) − D(Y) + κ1 (y − Y)(z0) + κ2 (y − Y)'(z0),
+    D = z d²/dz² + 2 d/dz, with D(y) and the values at z0 from lines 710-716: D(u) = 0,
+    D(v) = −sin u, D(w) = −v cos u, v = w = v' = w' = 0 at z0 (u's values there are its
+    free constants α, β). Both vanish if and only if Y solves y's problem."""
+    import sympy as sp
+
+    z, z0, alpha, beta = _symbols("z", "z0", "alpha", "beta")
+    big_u, big_v, big_w = _symbols("U", "V", "W")
+    kappa1, kappa2 = _symbols("kappa1_b19", "kappa2_b19")
+    u = alpha + beta / z  # the general solution of z u'' + 2u' = 0: (z²u')' = 0
+    v = -_zero_start_double_quadrature(sp.sin(u), z, z0)
+    operator = {big_u: sp.S.Zero, big_v: -sp.sin(u), big_w: -v * sp.cos(u)}
+    (name,) = [s for s in operator if residual.has(s)]
+    solution = name - residual  # Y(z)
+
+    def empty(e: Any) -> bool:
+        return isinstance(e, sp.Integral) and e.limits[0][1] == e.limits[0][2]
+
+    def at_start(f: Any) -> Any:
+        return f.subs(z, z0).replace(empty, lambda e: sp.S.Zero)
+
+    first = solution.diff(z)
+    gap = operator[name] - (z * first.diff(z) + 2 * first)
+    if name != big_u:  # v, w start at 0 with zero slope
+        gap += kappa1 * at_start(solution) + kappa2 * at_start(first)
+    return sp.expand(gap)  # the integrals, atoms here, cancel term by term
+
+
+@cache
+def reference_coefficient_solutions() -> Any:
+    """Lines 716-722: u, v, w judged as solutions of the equations of lines 710-714 with the
+    initial values of line 716 (the differential operator applied by sympy to the printed
+    integrals; nothing integrated)."""
+    return _reference(
+        {}, "lines 710-716: z y'' + 2y' and the values at z0", transform=_coefficient_transform
+    )
+
+
+__all__ += ["reference_conical_solution"]
+
+
+@cache
+def _conical_solution() -> dict[str, Any]:
+    """A solution of (45) (mpmath's Taylor ODE solver at 30 digits from x = 1, v = 1.1,
+    v' = 0.3), ω = √x J1(2√x) a solution of (9), λ = v/ω (line 1018), ∫dx/ω² from x = 2
+    (quadrature), A the first integral (ω²λ')² + 1/λ² at x = 2 (line 1038) and B its second
+    constant: √(Aλ² − 1)/A at x = 2 (line 1042 integrated from there)."""
+    import mpmath
+
+    with mpmath.workdps(30):
+        solution = mpmath.odefun(
+            lambda x, s: [s[1], -s[0] / x + 1 / s[0] ** 3],
+            1,
+            [mpmath.mpf("1.1"), mpmath.mpf("0.3")],
+        )
+
+        def omega(x: Any) -> Any:
+            return mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
+
+        def lam(x: Any) -> Any:
+            return solution(x)[0] / omega(x)
+
+        def lam_slope(x: Any) -> Any:
+            v, dv = solution(x)
+            return (dv * omega(x) - v * mpmath.diff(omega, x)) / omega(x) ** 2
+
+        two = mpmath.mpf(2)
+        big_a = (omega(two) ** 2 * lam_slope(two)) ** 2 + 1 / lam(two) ** 2
+        big_b = mpmath.sqrt(big_a * lam(two) ** 2 - 1) / big_a
+    return {
+        "v": lambda x: solution(x)[0],
+        "omega": omega,
+        "lam": lam,
+        "A": big_a,
+        "B": big_b,
+        "Iw": lambda x: mpmath.quad(lambda s: 1 / omega(s) ** 2, [two, x]),
+    }
+
+
+@cache
+def reference_conical_solution() -> Any:
+    """Lines 1044-1052 against a solution of (45) computed numerically (mpmath ODE, 30
+    digits): v, ω, λ, ∫dx/ω² as functions of x (sympy functions evaluated by mpmath), A and
+    B from the state at x = 2; x drawn in (2, 3) (λ grows with ∫dx/ω² there: the branch of
+    line 1042's square root)."""
+    import mpmath
+    import sympy as sp
+    from sympy.utilities.lambdify import implemented_function
+
+    (x,) = _symbols("x")
+    numeric = _conical_solution()
+
+    def at_30_digits(f: Any) -> Any:
+        def value(point: Any) -> Any:
+            with mpmath.workdps(30):
+                return f(mpmath.mpf(str(sp.Float(point, 30))))
+
+        return value
+
+    exact = {
+        name: implemented_function(f"{name}_b19", at_30_digits(numeric[name]))(x)
+        for name in ("v", "omega", "lam", "Iw")
+    }
+    exact["A45"] = sp.Float(mpmath.nstr(numeric["A"], 32), 30)
+    exact["B45"] = sp.Float(mpmath.nstr(numeric["B"], 32), 30)
+    domain = {"x": (sp.Integer(2), sp.Integer(3))}
+    return _reference(exact, "a solution of (45) by mpmath's ODE solver", domain=domain)
+
+
+__all__ += ["reference_small_x"]
+
+
+@cache
+def reference_small_x() -> Any:
+    """Lines 448-460 as x -> 0: u = C x (π/(4√x))[cos α J1(2√x) − sin α Y1(2√x)] (the
+    second (18) in closed form, lecornu.eq.18.definite-integral's check; J1, Y1 by their
+    series at 0, through the terms that do not vanish with x), θ = u/l with
+    C = (b²/g)k (line 406); x and l scaled by ε. Each residual must stay finite as ε -> 0+:
+    the parts that grow as x -> 0 (1/x, log x) must agree, a finite remainder (the text's
+    « nombre fini », F) is free."""
+    import sympy as sp
+
+    x, length, alpha, big_c, k, b, g = _symbols("x", "l", "alpha", "C", "k", "b", "g")
+    eps = sp.Symbol("eps_", positive=True)
+
+    def ratio(at: Any) -> Any:  # u/(Cx) of the second (18), through o(1) as x -> 0
+        z = 2 * sp.sqrt(at)
+        # DLMF 10.2.2 and 10.8.1: J1(z) = z/2 − z³/16 + …, Y1(z) = −2/(πz)
+        # + (2/π) log(z/2) J1(z) − (z/(2π))(ψ(1) + ψ(2)) + O(z³ log z)
+        j1 = z / 2 - z**3 / 16
+        y1 = -2 / (sp.pi * z) + 2 / sp.pi * sp.log(z / 2) * j1
+        y1 -= z / (2 * sp.pi) * (sp.polygamma(0, 1) + sp.polygamma(0, 2))
+        return sp.pi / (4 * sp.sqrt(at)) * (sp.cos(alpha) * j1 - sp.sin(alpha) * y1)
+
+    small = eps * x
+    exact = {"x": small, "u": big_c * small * ratio(small), "l": eps * length}
+    exact["theta"] = k * ratio(g * eps * length / b**2)
+    domain = {"alpha": (sp.Rational(3, 10), sp.Rational(12, 10))}
+    return _reference(
+        exact, "the second (18) in closed form, x -> εx", scale=eps, domain=domain, bounded=True
+    )
