@@ -22,6 +22,7 @@ DIMENSION_VERDICTS: tuple[Verdict, ...] = ("consistent", "inconsistent", "dimens
 # base letter -> exponent: a Fraction, or a sympy expression for a symbolic power (vⁿ)
 Dim = dict[str, Any]
 _TRANSCENDENTAL = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "besselj")
+_TRANSCENDENTAL += ("factorial2",)  # d19: n!!, of a pure number
 
 
 class _Mismatch(Exception):
@@ -106,6 +107,9 @@ def _dim(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
         return _integral(expr, dims, seen)
     if isinstance(expr, sp.Derivative):
         return _derivative(expr, dims, seen)
+    if isinstance(expr, sp.core.relational.Relational):  # an inequality: its sides agree
+        _agree(_dim(expr.lhs, dims, seen), _dim(expr.rhs, dims, seen), f"the sides of {expr}")
+        return {}
     return _function(expr, dims, seen)
 
 

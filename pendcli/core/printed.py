@@ -25,6 +25,8 @@ __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula
 
 # The functions a formula may call (besides the paper's declared function names).
 FUNCTIONS = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt", "besselj")
+# d19: n!! for the paper's products 2·4…n, 1·3·5…(n+1) (n° 15-16 of Charbonnier)
+FUNCTIONS += ("factorial2",)
 ELLIPSIS = "etc"  # the name "..." becomes, a symbol no ledger may declare
 # a base letter and its power: a rational (T^-2, L^1/2) or, in brackets, an expression in
 # the paper's symbols (L^(1-n): a coefficient of vⁿ)

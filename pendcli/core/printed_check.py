@@ -45,7 +45,10 @@ class Reference:
     ``rates``: variable name -> {symbol name -> its derivative in that variable}, how a printed
     ``Derivative(f, t)`` is evaluated (the chain rule; an unlisted symbol is a constant);
     ``transform``: applied to the residual before the substitution (a total derivative, a
-    change of variable the notation leaves implicit)."""
+    change of variable the notation leaves implicit);
+    ``cases``: the references the formula's first equations are judged against, one each
+    (a formula printed « pour n pair » and « pour n impair »); a later equation, against
+    this reference."""
 
     exact: Mapping[str, Any]
     scale: Any = None
@@ -56,21 +59,43 @@ class Reference:
     reading: Reference | None = None
     rates: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
     transform: Callable[[Any], Any] | None = None
+    cases: tuple[Reference, ...] = ()
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
-    """Whether every equation of ``formula`` holds under ``reference``, and why not."""
-    for lhs, rhs in formula.equations:
+    """Whether every equation (and inequality) of ``formula`` holds under ``reference``, and
+    why not."""
+    for index, (lhs, rhs) in enumerate(formula.equations):
+        against = reference.cases[index] if index < len(reference.cases) else reference
         if lhs is None:
+            if _is_relation(rhs):
+                ok, why = _relation_passes(rhs, against)
+                if not ok:
+                    return False, f"{rhs}: {why}"
             continue
-        order = reference.orders.get(getattr(lhs, "name", ""), reference.order)
-        ok, why = _equation_passes(lhs - rhs, reference, order)
+        order = against.orders.get(getattr(lhs, "name", ""), against.order)
+        ok, why = _equation_passes(lhs - rhs, against, order)
         if not ok:
             return False, f"{lhs} = {rhs}: {why}"
     return True, "every equation holds" + (f" against {reference.what}" if reference.what else "")
 
 
 def _equation_passes(residual: Any, reference: Reference, order: int | None) -> tuple[bool, str]:
+    import sympy as sp
+
+    expr = _substituted(residual, reference, order)
+    # The random points first: cheap, and decisive when the residual is not 0; simplify only
+    # where a point gives no number. An integral is never simplified (sympy's antiderivatives
+    # can take minutes).
+    ok, why = _vanishes_at_points(expr, reference)
+    if ok or "not a number" not in why or expr.has(sp.Integral):
+        return ok, why
+    return (True, "simplifies to 0") if sp.simplify(expr) == 0 else (False, why)
+
+
+def _substituted(residual: Any, reference: Reference, order: int | None) -> Any:
+    """``residual`` with « … » set to 0, the reference's transform, rates and values put in,
+    its derivatives taken and, for a series, truncated below ``order``."""
     import sympy as sp
 
     expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
@@ -83,16 +108,34 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
     # the symbols first: a function's value is an expression in the unsubstituted symbols
     expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
     # a derivative of the reference's explicit functions is taken (integrals stay for quadrature)
-    expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+    expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit(deep=False))
     if reference.scale is not None and order is not None:
         expr = _truncated(expr, reference.scale, order)
-    # The random points first: cheap, and decisive when the residual is not 0; simplify only
-    # where a point gives no number. An integral is never simplified (sympy's antiderivatives
-    # can take minutes).
-    ok, why = _vanishes_at_points(expr, reference)
-    if ok or "not a number" not in why or expr.has(sp.Integral):
-        return ok, why
-    return (True, "simplifies to 0") if sp.simplify(expr) == 0 else (False, why)
+    return expr
+
+
+def _is_relation(expr: Any) -> bool:
+    from sympy.core.relational import Relational
+
+    return isinstance(expr, Relational) and not expr.is_Equality
+
+
+def _relation_passes(relation: Any, reference: Reference) -> tuple[bool, str]:
+    """A printed inequality (``a > b``, ``a >= b``, ``<``, ``<=``: a sign, « toujours
+    positive », « diminuée »): the greater side less the lesser, substituted as an equation's
+    residual, is ≥ 0 at every random point (d − |d| vanishes there); a strict one besides is
+    not 0 there (d does not vanish)."""
+    import sympy as sp
+
+    gap = _substituted(relation.gts - relation.lts, reference, reference.order)
+    ok, why = _vanishes_at_points(gap - sp.Abs(gap), reference)
+    if not ok:
+        return False, f"negative: {why}" if "not a number" not in why else why
+    if relation.rel_op in (">", "<"):
+        zero, _ = _vanishes_at_points(gap, reference)
+        if zero:
+            return False, f"0 at {POINTS} random rational points, not strictly"
+    return True, f"holds at {POINTS} random rational points"
 
 
 def _along_the_rates(expr: Any, rates: Mapping[str, Mapping[str, Any]]) -> Any:
