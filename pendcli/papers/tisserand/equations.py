@@ -1008,6 +1008,4 @@ def reference_third_approximation() -> Any:
     base = reference_in_kpt_order_4()
     r = sp.Rational
     domain = {"u0": (r(1, 2), r(7, 10)), "u1": (r(1, 10), r(3, 10))}
-    return Reference(
-        base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what
-    )
+    return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
