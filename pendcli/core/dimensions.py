@@ -21,8 +21,8 @@ Verdict = Literal["consistent", "inconsistent", "dimensionless"]
 DIMENSION_VERDICTS: tuple[Verdict, ...] = ("consistent", "inconsistent", "dimensionless")
 # base letter -> exponent: a Fraction, or a sympy expression for a symbolic power (vⁿ)
 Dim = dict[str, Any]
-_TRANSCENDENTAL = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "besselj")
-_TRANSCENDENTAL += ("factorial2",)  # d19: n!!, of a pure number
+_TRANSCENDENTAL: tuple[str, ...] = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log")
+_TRANSCENDENTAL += ("besselj", "factorial2")  # factorial2: n!!, of a pure number
 
 
 class _Mismatch(Exception):

@@ -24,9 +24,9 @@ from pendcli.core.errors import PendcliError
 __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula"]
 
 # The functions a formula may call (besides the paper's declared function names).
-FUNCTIONS = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "sqrt", "besselj")
-# d19: n!! for the paper's products 2·4…n, 1·3·5…(n+1) (n° 15-16 of Charbonnier)
-FUNCTIONS += ("factorial2",)
+# factorial2: n!!, the paper's products 2·4…n, 1·3·5…(n+1) (Charbonnier n° 16, 2°)
+FUNCTIONS: tuple[str, ...] = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log")
+FUNCTIONS += ("sqrt", "besselj", "factorial2")
 ELLIPSIS = "etc"  # the name "..." becomes, a symbol no ledger may declare
 # a base letter and its power: a rational (T^-2, L^1/2) or, in brackets, an expression in
 # the paper's symbols (L^(1-n): a coefficient of vⁿ)

@@ -9,7 +9,11 @@ copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes whe
 rational points (to 20 digits), or simplifies to 0 where a point gives no number; with a
 ``scale`` and an ``order``, when its series in the scale vanishes below that order (an
 equation whose left side is a symbol named in ``orders`` uses that order: a summary formula
-may carry one quantity further than another). The status follows:
+may carry one quantity further than another). A bare inequality (``a > b``: a sign or a
+bound a sentence asserts) passes when its greater side less its lesser, substituted alike,
+is ≥ 0 at the points (and, strict, not 0 at all of them); a reference's ``cases`` judge a
+formula's first equations each against its own (« pour n pair », « pour n impair »). The
+status follows:
 
 * ``holds``: the printed form passes;
 * ``misprint``: the printed form fails and its ``reading_formula`` passes;
