@@ -217,6 +217,7 @@ ENGINE_ONLY_CHANGES = [
     ("charbonnier.result.work-total", "= -tau/", "= tau/"),
     ("charbonnier.result.lowest-air", "c/(k**4*alpha**2", "c/(k**3*alpha**2"),
     ("charbonnier.result.i0-i-1", "= 1 - cos(x)", "= 2 - cos(x)"),
+    ("charbonnier.result.i-at-pi", "I(-1, pi) = pi", "I(-1, pi) = pi/2"),
     ("charbonnier.result.work-positive", "E_s(t) > 0", "E_s(t) < 0"),
     ("charbonnier.result.es-symmetry", "= 2*E_s(pi/2)", "= 3*E_s(pi/2)"),
     ("charbonnier.result.es-symmetry", "E_s(pi) > 0", "E_s(pi) < 0"),
