@@ -5,6 +5,7 @@ method (mpmath quadrature, an ODE)."""
 
 from __future__ import annotations
 
+import dataclasses
 import shutil
 from pathlib import Path
 
@@ -13,6 +14,7 @@ import pytest
 
 from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
 from pendcli.core.ledger_coverage import ledger_text_coverage
+from pendcli.core.ledger_formulas import row_formula
 from pendcli.papers.charbonnier import equations as CHECKS
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -180,3 +182,170 @@ def test_the_speed_at_the_lowest_point_is_e_s_by_the_ode() -> None:
     e_c = quad(lambda s: phi(s) * np.cos(k * s), 0, np.pi / (2 * k), epsabs=1e-14)[0]
     assert abs(shift + e_s) < 1e-3 * e_s
     assert abs(shift + e_c) > 0.1 * e_c
+
+
+# --- d19: every row whose only check is the engine's verdict, and the prose rows ---------
+# (row, old, new): one coefficient, sign, argument or relation of what the row prints
+
+ENGINE_ONLY_CHANGES = [
+    ("charbonnier.result.sine-to-arc", "= theta + ...", "= 2*theta + ..."),
+    ("charbonnier.result.rise-equals-descent", "theta = alpha", "theta = -alpha"),
+    (
+        "charbonnier.result.expanded-equation",
+        "+ epsilon*k**2*theta_1 +",
+        "+ 2*epsilon*k**2*theta_1 +",
+    ),
+    (
+        "charbonnier.result.theta1-equation-principal",
+        "k*alpha*sin(k*t), t)",
+        "2*k*alpha*sin(k*t), t)",
+    ),
+    ("charbonnier.result.theta1-derivative", "-k*M*sin(k*t)", "k*M*sin(k*t)"),
+    ("charbonnier.result.turning-time-inversion", "pi + epsilon", "pi + 2*epsilon"),
+    ("charbonnier.result.period-condition", "E_c(pi)", "E_c(pi/2)"),
+    ("charbonnier.result.amplitude", "alpha - epsilon/k", "alpha - 2*epsilon/k"),
+    ("charbonnier.result.amplitude-condition", "E_s(pi)", "E_s(pi/2)"),
+    ("charbonnier.result.lowest-time", "k*t = pi/2 + epsilon", "k*t = pi/2 - epsilon"),
+    ("charbonnier.result.resisted-motion", "c/(l0*k)*", "2*c/(l0*k)*"),
+    (
+        "charbonnier.result.resisted-integrals",
+        "F(k*alpha*l0*sin(k*t))*sin(k*t)",
+        "F(2*k*alpha*l0*sin(k*t))*sin(k*t)",
+    ),
+    ("charbonnier.result.speed", "dnu_dt = k**2*alpha", "dnu_dt = k*alpha"),
+    ("charbonnier.result.amplitude-air", "-c/(k*l0)", "-c/(k**2*l0)"),
+    ("charbonnier.result.work-total", "= -tau/", "= tau/"),
+    ("charbonnier.result.lowest-air", "c/(k**4*alpha**2", "c/(k**3*alpha**2"),
+    ("charbonnier.result.i0-i-1", "= 1 - cos(x)", "= 2 - cos(x)"),
+    ("charbonnier.result.i-at-pi", "I(-1, pi) = pi", "I(-1, pi) = pi/2"),
+    ("charbonnier.result.work-positive", "E_s(t) > 0", "E_s(t) < 0"),
+    ("charbonnier.result.es-symmetry", "= 2*E_s(pi/2)", "= 3*E_s(pi/2)"),
+    ("charbonnier.result.es-symmetry", "E_s(pi) > 0", "E_s(pi) < 0"),
+    ("charbonnier.result.period-constant-resistance", "E_c(pi)", "E_c(pi/2)"),
+    ("charbonnier.result.lowest-air-signs", "Delta_T_half > 0", "Delta_T_half < 0"),
+    ("charbonnier.result.lowest-air-signs", "Delta_thetap_m < 0", "Delta_thetap_m > 0"),
+    ("charbonnier.result.ec-pi-monomial", "E_c(pi)", "E_c(pi/2)"),
+    ("charbonnier.result.friction-independent", "Delta_x, alpha", "Delta_x, g"),
+    ("charbonnier.result.infinite-count", "<= 0", ">= 0"),
+    ("charbonnier.result.infinite-count", "1 + Delta_x/alpha > 0", "1 + Delta_x/alpha < 0"),
+]
+
+
+@pytest.mark.parametrize(("row_id", "old", "new"), ENGINE_ONLY_CHANGES)
+def test_a_changed_coefficient_stops_an_engine_only_row_holding(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    row, symbols = _altered(tmp_path, row_id, old, new)
+    computed, problem = verify_printed(row, symbols, CHECKS)
+    assert problem is not None and problem.startswith("recorded holds, but the printed form")
+    assert computed is not None and not computed.startswith("holds")
+
+
+def test_every_engine_only_holds_row_has_a_mutation() -> None:
+    """A row whose check is the engine's verdict alone (check = "printed_…") and that holds is
+    mutated above; the rows of the older list count too."""
+    rows = load_ledger("charbonnier", TABLES).rows
+    engine_only = {
+        r.id for r in rows if (r.check or "").startswith("printed_") and r.status == "holds"
+    }
+    older = {
+        "charbonnier.result.order-system",
+        "charbonnier.result.taylor-phi",
+        "charbonnier.result.variation-integrals",
+        "charbonnier.result.theta1-solution",
+        "charbonnier.result.turning-time",
+        "charbonnier.result.arc-integrals",
+        "charbonnier.result.es-in-speed",
+        "charbonnier.result.height",
+    }
+    mutated = {row_id for row_id, _, _ in ENGINE_ONLY_CHANGES} | older
+    assert engine_only - mutated == set()
+
+
+def _misprint_rows() -> list[object]:
+    rows = load_ledger("charbonnier", TABLES).rows
+    return [pytest.param(r, id=r.id) for r in rows if r.status == "misprint" and r.reference]
+
+
+@pytest.mark.parametrize("row", _misprint_rows())
+def test_every_misprint_printed_as_its_reading_is_refused(row: LedgerRow) -> None:
+    symbols = dict(load_ledger("charbonnier", TABLES).symbols)
+    read = dataclasses.replace(row, printed=row.reading_formula)
+    _, problem = verify_printed(read, symbols, CHECKS)
+    assert problem is not None
+    assert problem.startswith("recorded misprint, but the printed form gives holds"), problem
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        # the even formula's factor 2 of I_n(π), and the two formulas' parities swapped
+        ("charbonnier.result.delta-alpha-closed", "(alpha*g*T/pi)**n*2*", "(alpha*g*T/pi)**n*3*"),
+        ("charbonnier.result.delta-alpha-closed", "(alpha*g*T/pi)**n*pi", "(alpha*g*T/pi)**n*2"),
+        ("charbonnier.result.e-angle-integrals", "(thetap, 0, thetap)", "(thetap, 0, 2*thetap)"),
+        ("charbonnier.result.ec-integral", "(alpha*l0)**n*k**(n - 1)", "(alpha*l0)**n*k**n"),
+        ("charbonnier.result.es-integral", "k**(n - 1)*(alpha", "k**(n - 2)*(alpha"),
+    ],
+)
+def test_a_changed_coefficient_of_a_reading_is_refused(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    row, symbols = _altered(tmp_path, row_id, old, new)
+    _, problem = verify_printed(row, symbols, CHECKS)
+    assert problem is not None and problem.startswith("recorded misprint, but the printed form")
+
+
+def test_the_closed_forms_are_judged_per_parity() -> None:
+    """n° 16, 2°: the even formula is wrong for odd n and the odd one for even n (I_1(π) =
+    π/2 against the even rule's 2·1/2 = 1), so a parity-blind reference would refuse them."""
+    from pendcli.core.printed_check import formula_passes
+
+    ledger = load_ledger("charbonnier", TABLES)
+    row = next(r for r in ledger.rows if r.id == "charbonnier.result.delta-alpha-closed")
+    assert row.reading_formula is not None
+    read = row_formula(row.id, row.reading_formula, dict(ledger.symbols))
+    both = CHECKS.reference_monomial_parity()
+    assert formula_passes(read, both)[0]
+    swapped = dataclasses.replace(both, cases=both.cases[::-1])
+    assert not formula_passes(read, swapped)[0]
+
+
+def test_friction_has_a_finite_count_by_the_same_formula() -> None:
+    """n° 16, 1°: the formula that says P is infinite for n ≥ 1 fails for n = 0 (F = B_0),
+    where Δα/α = −2b0/(gα) grows as α falls and P = αg/(2b0) is finite."""
+    from pendcli.core.printed_check import formula_passes
+
+    ledger = load_ledger("charbonnier", TABLES)
+    row = next(r for r in ledger.rows if r.id == "charbonnier.result.infinite-count")
+    assert row.printed is not None
+    printed = row_formula(row.id, row.printed, dict(ledger.symbols))
+    assert formula_passes(printed, CHECKS.reference_monomial_decay())[0]
+    assert not formula_passes(printed, CHECKS.reference_friction())[0]
+
+
+def test_the_closed_forms_against_an_ode() -> None:
+    """n° 16, 2° by a second, numeric method: θ'' + k²θ + (c/l0)B_n(l0θ')ⁿ = 0 integrated over
+    one simple oscillation (scipy, tight tolerances; θ' > 0 there); the loss of amplitude over
+    c against −(b_n/g)(αgT/π)ⁿ times 2·(2·4…n)/(1·3·5…(n+1)) (n even) or
+    π·(1·3·5…n)/(2·4·6…(n+1)) (n odd), for n = 0..4."""
+    import math
+
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    k, alpha, l0, c, big = 1.1, 0.3, 1.0, 1e-6, 1.0
+    g, period = k * k * l0, math.pi / k
+    for n in range(5):
+
+        def rhs(_t: float, y: np.ndarray, m: int = n) -> list[float]:
+            return [y[1], -(k**2) * y[0] - c / l0 * big * (l0 * max(y[1], 0.0)) ** m]
+
+        stop = lambda _t, y: y[1]  # noqa: E731
+        stop.terminal, stop.direction = True, -1  # type: ignore[attr-defined]
+        run = solve_ivp(rhs, (0, 10), [-alpha, 0.0], rtol=1e-12, atol=1e-15, events=stop)
+        shift = (run.y_events[0][0][0] - alpha) / c
+        top = math.prod(range(1 if n % 2 else 2, n + 1, 2))
+        bottom = math.prod(range(2 if n % 2 else 1, n + 2, 2))
+        closed = -(big / g) * (alpha * g * period / math.pi) ** n * (math.pi if n % 2 else 2)
+        closed *= top / bottom
+        assert abs(shift - closed) < 1e-3 * abs(closed), (n, shift, closed)

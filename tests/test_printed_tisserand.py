@@ -193,3 +193,32 @@ def test_every_checked_row_has_a_reference() -> None:
     rows, _ = _ledger()
     checked = [r for r in rows.values() if r.status in ("holds", "fails", "misprint")]
     assert [r.id for r in checked if not r.reference] == []
+
+
+# --- d19: the sentences that cite formulas (lines 126, 154, 190, 206) --------------------
+
+CITED_CHANGES = [
+    ("result.what-gives-the-motion", "reading_formula", "17/512", "18/512"),
+    ("result.what-gives-the-motion", "reading_formula", "atan(u1/u0*", "atan(u0/u1*"),
+    ("result.axis-and-ellipse-motion", "reading_formula", "17/512", "18/512"),
+    ("result.axis-and-ellipse-motion", "reading_formula", "= u1/u0*tan", "= u0/u1*tan"),
+    ("result.third-approximation", "printed", "/sin(2*kp*t) > 0", "/sin(2*kp*t) < 0"),
+    ("result.third-approximation", "printed", "11*(u0**2 + u1**2)/256", "12*(u0**2 + u1**2)/256"),
+    ("result.periodic-term-cited", "printed", "3/32", "3/31"),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("row_id", "field", "old", "new"), CITED_CHANGES)
+def test_a_changed_coefficient_of_a_citing_sentence_is_refused(
+    row_id: str, field: str, old: str, new: str
+) -> None:
+    test_one_changed_coefficient_is_refused(row_id, field, old, new)
+
+
+@pytest.mark.parametrize(
+    "row_id", ["result.what-gives-the-motion", "result.axis-and-ellipse-motion"]
+)
+def test_a_sentence_citing_13_carries_its_slip(row_id: str) -> None:
+    """Lines 126 and 154 take ψ from (13): as printed (sin² 4k't) it fails, so the rows are
+    misprints on both sides; with (13) read, the printed form holds and the row is refused."""
+    test_a_slip_whose_printed_form_is_its_reading_is_refused(row_id, "reading_formula", "misprint")

@@ -11,7 +11,11 @@ rational points (to 20 digits), or simplifies to 0 where a point gives no number
 equation whose left side is a symbol named in ``orders`` uses that order: a summary formula
 may carry one quantity further than another; such a series is first proved numerically, its
 coefficients by Cauchy's integral about 0 at random rational points, and sympy's series is
-taken only where that proof does not go through). The status follows:
+taken only where that proof does not go through). A bare inequality (``a > b``: a sign or a
+bound a sentence asserts) passes when its greater side less its lesser, substituted alike,
+is ≥ 0 at the points (and, strict, not 0 at all of them); a reference's ``cases`` judge a
+formula's first equations each against its own (« pour n pair », « pour n impair »). The
+status follows:
 
 * ``holds``: the printed form passes;
 * ``misprint``: the printed form fails and its ``reading_formula`` passes;
@@ -57,7 +61,10 @@ class Reference:
     growing parts (negative powers, logarithms) must agree;
     ``rounded``: the formula's decimals are the paper's roundings: an equation holding one
     decimal passes when the value that makes it hold is a constant within half a unit of
-    the decimal's last printed digit (``0.13`` stands for any number in [0.125, 0.135])."""
+    the decimal's last printed digit (``0.13`` stands for any number in [0.125, 0.135]);
+    ``cases``: the references the formula's first equations are judged against, one each
+    (a formula printed « pour n pair » and « pour n impair »); a later equation, against
+    this reference."""
 
     exact: Mapping[str, Any]
     scale: Any = None
@@ -70,23 +77,27 @@ class Reference:
     transform: Callable[[Any], Any] | None = None
     rounded: bool = False
     bounded: bool = False
+    cases: tuple[Reference, ...] = ()
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
-    """Whether every equation of ``formula`` holds under ``reference``, and why not."""
-    for lhs, rhs in formula.equations:
+    """Whether every equation (and inequality) of ``formula`` holds under ``reference``, and
+    why not."""
+    for index, (lhs, rhs) in enumerate(formula.equations):
+        against = reference.cases[index] if index < len(reference.cases) else reference
         if lhs is None:
-            ok, why = _inequality_passes(rhs, reference)
-            if not ok:
-                return False, f"{rhs}: {why}"
+            if _is_relation(rhs):
+                ok, why = _relation_passes(rhs, against)
+                if not ok:
+                    return False, f"{rhs}: {why}"
             continue
-        order = reference.orders.get(getattr(lhs, "name", ""), reference.order)
-        if reference.bounded and reference.scale is not None:
-            ok, why = _bounded_passes(lhs - rhs, reference)
-        elif reference.rounded and _decimals(lhs - rhs):
-            ok, why = _rounded_passes(lhs - rhs, reference, order, formula.source)
+        order = against.orders.get(getattr(lhs, "name", ""), against.order)
+        if against.bounded and against.scale is not None:
+            ok, why = _bounded_passes(lhs - rhs, against)
+        elif against.rounded and _decimals(lhs - rhs):
+            ok, why = _rounded_passes(lhs - rhs, against, order, formula.source)
         else:
-            ok, why = _equation_passes(lhs - rhs, reference, order)
+            ok, why = _equation_passes(lhs - rhs, against, order)
         if not ok:
             return False, f"{lhs} = {rhs}: {why}"
     return True, "every equation holds" + (f" against {reference.what}" if reference.what else "")
@@ -95,17 +106,7 @@ def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
 def _equation_passes(residual: Any, reference: Reference, order: int | None) -> tuple[bool, str]:
     import sympy as sp
 
-    expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
-    if reference.transform is not None:
-        expr = reference.transform(expr)
-    if reference.rates:
-        expr = _along_the_rates(expr, reference.rates)
-    names = {s.name: s for s in expr.free_symbols}
-    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
-    # the symbols first: a function's value is an expression in the unsubstituted symbols
-    expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
-    # a derivative of the reference's explicit functions is taken (integrals stay for quadrature)
-    expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+    expr = _substituted(residual, reference)
     if reference.scale is not None and order is not None:
         if _taylor_vanishes(expr, reference, order):
             return True, f"vanishes at {POINTS} random rational points"
@@ -120,8 +121,8 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
 
 
 def _substituted(residual: Any, reference: Reference) -> Any:
-    """``residual`` (« … » set to 0) after the reference's transform, rates, substitution,
-    functions and derivatives: what :func:`_equation_passes` evaluates, before a series."""
+    """``residual`` with « … » set to 0, the reference's transform, rates and values put in
+    and its derivatives taken: what :func:`_equation_passes` evaluates, before a series."""
     import sympy as sp
 
     expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
@@ -131,8 +132,36 @@ def _substituted(residual: Any, reference: Reference) -> Any:
         expr = _along_the_rates(expr, reference.rates)
     names = {s.name: s for s in expr.free_symbols}
     exact = {names[n]: v for n, v in reference.exact.items() if n in names}
+    # the symbols first: a function's value is an expression in the unsubstituted symbols
     expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
-    return expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+    # a derivative of the reference's explicit functions is taken (integrals stay for quadrature)
+    return expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit(deep=False))
+
+
+def _is_relation(expr: Any) -> bool:
+    from sympy.core.relational import Relational
+
+    return isinstance(expr, Relational) and not expr.is_Equality
+
+
+def _relation_passes(relation: Any, reference: Reference) -> tuple[bool, str]:
+    """A printed inequality (``a > b``, ``a >= b``, ``<``, ``<=``: a sign, « toujours
+    positive », « diminuée »): the greater side less the lesser, substituted as an equation's
+    residual, is ≥ 0 at every random point (d − |d| vanishes there); a strict one besides is
+    not 0 there (d does not vanish)."""
+    import sympy as sp
+
+    gap = _substituted(relation.gts - relation.lts, reference)
+    if reference.scale is not None and reference.order is not None:
+        gap = _truncated(gap, reference.scale, reference.order)
+    ok, why = _vanishes_at_points(gap - sp.Abs(gap), reference)
+    if not ok:
+        return False, f"negative: {why}" if "not a number" not in why else why
+    if relation.rel_op in (">", "<"):
+        zero, _ = _vanishes_at_points(gap, reference)
+        if zero:
+            return False, f"0 at {POINTS} random rational points, not strictly"
+    return True, f"holds at {POINTS} random rational points"
 
 
 def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
@@ -215,32 +244,6 @@ def _half_unit(decimal: Any, source: str) -> Any:
         if sp.Float(token) == abs(decimal):
             return sp.Rational(5, 10 ** (len(token.split(".")[1]) + 1))
     return sp.Rational(0)
-
-
-def _inequality_passes(expr: Any, reference: Reference) -> tuple[bool, str]:
-    """A bare ``a < b`` (``<=``, ``>``, ``>=``): the margin (greater side minus lesser,
-    under the reference) is positive (non-negative) at the random points; any other bare
-    expression states nothing to compare."""
-    import sympy as sp
-    from sympy.core.relational import Relational
-
-    if not isinstance(expr, Relational) or isinstance(expr, (sp.Eq, sp.Ne)):
-        return True, "a bare expression"
-    margin = _substituted(expr.gts - expr.lts, reference)
-    strict = expr.rel_op in ("<", ">")
-    generator = random.Random(19)
-    free = sorted(margin.free_symbols, key=lambda s: s.name)
-    at = _evaluator(margin, free)
-    for _ in range(POINTS):
-        point = {}
-        for s in free:
-            low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
-            point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
-        value = at(point)
-        shown = ", ".join(f"{k}={v}" for k, v in point.items())
-        if not value.is_number or not (value > 0 if strict else value >= 0):
-            return False, f"margin {sp.N(value, 6)} at {shown}"
-    return True, f"the margin is positive at {POINTS} random rational points"
 
 
 def _along_the_rates(expr: Any, rates: Mapping[str, Mapping[str, Any]]) -> Any:

@@ -20,22 +20,28 @@ from pendcli.core.printed_check import Reference
 
 __all__ = [
     "reference_air",
+    "reference_air_first_oscillation",
     "reference_air_points",
     "reference_amplitude_unchanged",
     "reference_angle_integrals",
+    "reference_constant_resistance",
     "reference_differentiated",
     "reference_expansion",
     "reference_first_order",
     "reference_friction",
+    "reference_friction_in_g_and_t",
     "reference_in",
     "reference_linear_perturbation",
     "reference_linearised",
     "reference_lowest_point",
     "reference_monomial",
+    "reference_monomial_decay",
+    "reference_monomial_parity",
     "reference_monomial_points",
     "reference_newton",
     "reference_period_unchanged",
     "reference_principal_motion",
+    "reference_principal_turn",
     "reference_remarkable_points",
     "reference_sine_inverted",
     "reference_taylor",
@@ -649,3 +655,89 @@ def reference_in() -> Reference:
 
     exact = {"I": _in_definition()}
     return Reference(exact, domain={"n": (sp.Integer(2), sp.Integer(5))}, what="I_n's definition")
+
+
+# --- d19: the closed forms of n° 16, 2° and the prose of n° 3, 12, 13, 15, 16 ------------
+
+
+def _monomial_case(power: Any) -> Reference:
+    """Δα of F(v) = B_n vⁿ for the exponent ``power`` (n itself set to it), through c."""
+    (c,) = _ledger("c")
+    exact = _monomial(phase=True, power=power)
+    exact["n"] = power
+    return Reference(exact, scale=c, order=2, domain=_monomial_domain(), what="F = B_n vⁿ")
+
+
+def reference_monomial_parity() -> Reference:
+    """n° 16, 2°: the first formula (« pour n pair ») against Δα of F = B_n vⁿ for n = 0, 2, 4,
+    the second (« pour n impair ») for n = 1, 3, 5 (2·floor(n) − 2 and 2·floor(n) − 1 at the
+    random n in [1, 4)); Δα from Duhamel's integral, never from I_n(π)."""
+    import sympy as sp
+
+    (n,) = _ledger("n")
+    even, odd = _monomial_case(2 * sp.floor(n) - 2), _monomial_case(2 * sp.floor(n) - 1)
+    return Reference(
+        odd.exact,
+        scale=odd.scale,
+        order=odd.order,
+        domain=odd.domain,
+        what="F = B_n vⁿ, n even then n odd",
+        cases=(even, odd),
+    )
+
+
+def reference_air_first_oscillation() -> Reference:
+    """n° 12, 3°: E_s of the time on the first simple oscillation (0 < kt < π), F = q0 + q1v +
+    q2v² with positive q's (F > 0, as n° 11 assumes)."""
+    import sympy as sp
+
+    base = reference_air()
+    domain = {"t": (sp.Rational(1, 10), sp.Integer(3)), "k": (sp.Rational(1, 2), sp.Integer(1))}
+    return Reference(base.exact, domain=domain, transform=base.transform, what=base.what)
+
+
+def reference_friction_in_g_and_t() -> Reference:
+    """n° 16, 1°: Δα for n = 0 (F = B_0) written in g and T (k = π/T, l0 = gT²/π²), so that
+    its derivatives in α and in T say whether it depends on them; through c."""
+    import sympy as sp
+
+    c, k, l0, g, big_t = _ledger("c", "k", "l0", "g", "T")
+    exact = _monomial(phase=True, power=0)
+    in_g_t = {k: sp.pi / big_t, l0: g * big_t**2 / sp.pi**2}
+    shift = exact["Delta_alpha"].subs(in_g_t, simultaneous=True)
+    return Reference(
+        {"Delta_x": shift},
+        scale=c,
+        order=2,
+        domain={"c": (sp.Rational(1, 2), sp.Integer(1))},
+        what="Δα of F = B_0 in g and T",
+    )
+
+
+def reference_monomial_decay() -> Reference:
+    """n° 16, 1°: Δα of F = B_n vⁿ for n in [1, 4) with c small (c < 1/10), so that one simple
+    oscillation keeps a positive fraction of the amplitude; through c."""
+    import sympy as sp
+
+    base = reference_monomial_points()
+    domain = {**base.domain, "c": (sp.Rational(1, 100), sp.Rational(1, 20))}
+    return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
+
+
+def reference_constant_resistance() -> Reference:
+    """n° 13, 1°: ΔT and E_c(π) for a constant resistance F = B_0 (E of kt), through c."""
+    (c,) = _ledger("c")
+    exact = _monomial(phase=True, power=0)
+    return Reference(exact, scale=c, order=2, domain=_monomial_domain(), what="F = B_0")
+
+
+def reference_principal_turn() -> Reference:
+    """n° 3: the principal motion at the end of the simple oscillation, t = T (θ0' = 0 again),
+    T found as in reference_principal_motion."""
+    import sympy as sp
+
+    (t,) = _ledger("t")
+    base = reference_principal_motion()
+    at_end = {t: base.exact["T"]}
+    exact = {"theta": base.exact["theta"].subs(at_end), "t": base.exact["T"]}
+    return Reference(exact, domain={"alpha": (sp.Rational(1, 10), sp.Integer(1))}, what="θ0 at T")

@@ -979,3 +979,34 @@ def reference_resal() -> Any:
     base = reference_motion(3, "(4), (5), (3): k'' to order 1, dφ'/dt to order 2", {"kpp": 2})
     exact = {**base.exact, "dphip_dt": base.exact["kp"] * motion_series(3)["P"]}
     return Reference(exact, scale=base.scale, order=3, what=base.what, orders=base.orders)
+
+
+# --- d19: the sentences that cite the formulas (lines 126, 154, 190) ----------------------
+
+
+def reference_cited_in_kpt() -> Any:
+    """Lines 126 and 154: the exact motion in τ = k't through the fourth order, with φ1 and
+    φ = φ1 + φ' as functions of τ (φ1 = arctan((u1/u0) tan ψ) of (9), at the exact ψ(τ)), so
+    that the formulas a sentence cites, ψ (13), φ' (15), tan φ1 (10), are judged at one time."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    base = reference_in_kpt_order_4()
+    _, _, _, _, u0, u1, *_ = series_symbols()
+    phi1 = sp.atan(u1 / u0 * sp.tan(base.exact["psi"]))
+    exact = {**base.exact, "phi1": phi1, "phi": phi1 + base.exact["phip"]}
+    return Reference(exact, scale=base.scale, order=base.order, what="(4), (5), (3) in k't")
+
+
+def reference_third_approximation() -> Any:
+    """Line 190: the exact motion in τ = k't through the fourth order, θ0 > θ1 (u0 > u1, the
+    apsides' order), for the sign of φ''s periodic term."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    base = reference_in_kpt_order_4()
+    r = sp.Rational
+    domain = {"u0": (r(1, 2), r(7, 10)), "u1": (r(1, 10), r(3, 10))}
+    return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
