@@ -106,6 +106,9 @@ def _dim(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
         return _integral(expr, dims, seen)
     if isinstance(expr, sp.Derivative):
         return _derivative(expr, dims, seen)
+    if isinstance(expr, sp.core.relational.Relational):  # an inequality: its sides agree
+        _agree(_dim(expr.lhs, dims, seen), _dim(expr.rhs, dims, seen), f"the sides of {expr}")
+        return {}
     return _function(expr, dims, seen)
 
 

@@ -26,7 +26,7 @@ from typing import Any
 
 from pendcli.core.printed import ELLIPSIS, Formula
 
-__all__ = ["Reference", "computed_status", "formula_passes"]
+__all__ = ["Reference", "computed_status", "formula_passes", "judged"]
 
 POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
 _DIGITS = 20
@@ -45,7 +45,12 @@ class Reference:
     ``rates``: variable name -> {symbol name -> its derivative in that variable}, how a printed
     ``Derivative(f, t)`` is evaluated (the chain rule; an unlisted symbol is a constant);
     ``transform``: applied to the residual before the substitution (a total derivative, a
-    change of variable the notation leaves implicit)."""
+    change of variable the notation leaves implicit);
+    ``cases``: symbol name -> value maps, each added to ``exact`` in turn: the formula must
+    pass in every case (a claim « chaque fois que », at each root of a function);
+    ``conditions``: the model's own equation (its residual) for each printed equation in
+    order, None to skip: a printed equation that is a condition for roots, not an identity
+    (φ/x = φ' with φ, φ' by their series), passes when lhs − rhs − condition vanishes."""
 
     exact: Mapping[str, Any]
     scale: Any = None
@@ -56,6 +61,8 @@ class Reference:
     reading: Reference | None = None
     rates: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)
     transform: Callable[[Any], Any] | None = None
+    cases: tuple[Mapping[str, Any], ...] = ()
+    conditions: tuple[Any, ...] = ()
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
@@ -211,14 +218,101 @@ def computed_status(
     printed: Formula, reading: Formula | None, corrected: Formula | None, reference: Reference
 ) -> tuple[str | None, str]:
     """The status the printed form earns (None: none the ledger may record) and why."""
-    ok, why = formula_passes(printed, reference)
+    ok, why = judged(printed, reference)
     if ok:
         return "holds", f"the printed form holds: {why}"
     for status, other in (("misprint", reading), ("fails", corrected)):
         if other is not None:
             against = reference.reading if status == "misprint" and reference.reading else reference
-            other_ok, other_why = formula_passes(other, against)
+            other_ok, other_why = judged(other, against)
             if other_ok:
                 return status, f"the printed form fails ({why}); the {status} form holds"
             return None, f"the printed form fails ({why}) and so does its {status} ({other_why})"
     return None, f"the printed form fails ({why}) and the row gives no reading or correction"
+
+
+# --- prose claims (issue 19, a19): cases, conditions for roots, inequalities ----------------
+
+
+def judged(formula: Formula, reference: Reference) -> tuple[bool, str]:
+    """:func:`formula_passes`, with the reference's ``cases`` (every one must pass) and
+    ``conditions``, and each bare inequality (``a < b``, ``a <= b``) judged by
+    :func:`inequality_holds`."""
+    from dataclasses import replace
+
+    if reference.cases:
+        why = ""
+        for index, case in enumerate(reference.cases, 1):
+            one = replace(reference, exact=_in_case(reference.exact, case), cases=())
+            ok, why = judged(formula, one)
+            if not ok:
+                return False, f"case {index} of {len(reference.cases)}: {why}"
+        return True, f"{why}, in each of {len(reference.cases)} cases"
+    if reference.conditions:
+        pairs = zip(formula.equations, reference.conditions, strict=False)
+        shifted = [(l, r if c is None or l is None else r + c) for (l, r), c in pairs]
+        formula = Formula(formula.source, (*shifted, *formula.equations[len(shifted) :]))
+    for lhs, rhs in formula.equations:
+        if lhs is None and _is_inequality(rhs):
+            ok, why = inequality_holds(rhs, reference)
+            if not ok:
+                return False, f"{rhs}: {why}"
+    return formula_passes(formula, reference)
+
+
+def _in_case(exact: Mapping[str, Any], case: Mapping[str, Any]) -> dict[str, Any]:
+    """``exact`` with the case's values substituted into its expressions, and the case's."""
+    import sympy as sp
+
+    def at(value: Any) -> Any:
+        if not isinstance(value, sp.Basic):
+            return value
+        names = {s.name: s for s in value.free_symbols}
+        return value.subs({names[n]: v for n, v in case.items() if n in names}, simultaneous=True)
+
+    return {**{k: at(v) for k, v in exact.items()}, **case}
+
+
+def _is_inequality(expr: Any) -> bool:
+    import sympy as sp
+
+    return isinstance(expr, (sp.StrictLessThan, sp.LessThan, sp.StrictGreaterThan, sp.GreaterThan))
+
+
+def inequality_holds(relation: Any, reference: Reference) -> tuple[bool, str]:
+    """``a < b`` (``<=``, ``>``, ``>=``) under the reference, at random rational points of the
+    reference's ``domain`` (30 digits): a strict one must hold by more than the engine's
+    tolerance. A symbol the reference neither gives nor bounds leaves it undetermined (it
+    does not hold): an inequality is true only over the range its reference states."""
+    import sympy as sp
+
+    less = relation.rel_op in ("<", "<=")
+    small, big = (relation.lhs, relation.rhs) if less else (relation.rhs, relation.lhs)
+    expr = big - small  # the claim: expr > 0 (strict) or >= 0
+    if reference.transform is not None:
+        expr = reference.transform(expr)
+    if reference.rates:
+        expr = _along_the_rates(expr, reference.rates)
+    names = {s.name: s for s in expr.free_symbols}
+    exact = {names[n]: v for n, v in reference.exact.items() if n in names}
+    expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
+    expr = expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit())
+    free = sorted(expr.free_symbols, key=lambda s: s.name)
+    unbounded = [s.name for s in free if s.name not in reference.domain]
+    if unbounded:
+        return False, f"undetermined: the reference fixes no value or range of {unbounded}"
+    generator = random.Random(19)
+    tolerance = sp.Float(10) ** (5 - _DIGITS)
+    strict = relation.rel_op in ("<", ">")
+    for _ in range(POINTS):
+        point = {}
+        for s in free:
+            low, high = reference.domain[s.name]
+            point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
+        value = sp.N(_integrals_by_quadrature(expr.subs(point)), _DIGITS + 10)
+        shown = ", ".join(f"{k}={v}" for k, v in point.items()) or "the reference's values"
+        if not value.is_number or not value.is_real:
+            return False, f"not a real number at {shown}"
+        if value < tolerance if strict else value < -tolerance:
+            return False, f"the margin is {sp.N(value, 6)} at {shown}"
+    return True, "the inequality holds" + (f" at {POINTS} random points" if free else "")
