@@ -1421,12 +1421,12 @@ def _between(exact: dict[str, Any], low: Any, high: Any) -> Any:
 
 def reference_area() -> Any:
     """Lines 144-152: the path u(z) of (10)'s motion (x = z/c), h the ordinate of its tangent
-    at z = 0 (line 126); h = (1/c)∫u dz judged between z1 and z2 (_between); the cases: two
+    at z = 0 (line 126); h = (1/c)∫u dz judged between z1 and any z (_between); the cases: two
     pairs of consecutive elongations (h = 0 at both) and a pair with the same h ≠ 0 (the
     second point found by a scan for h(z2) = h(z1))."""
     import mpmath
 
-    zl, cl, zl1, zl2 = _symbols("zl", "cl", "zl1", "zl2")
+    zl, cl, zl1 = _symbols("zl", "cl", "zl1")
     u = _phi(zl / cl)  # J₁ only: the quadratures of Y₁ cost seconds
     exact = {"u": u, "h": u - zl * u.diff(zl)}
     elongations = _roots_of("bessel", "tangent", 0.5, 40)[:3]
@@ -1449,7 +1449,7 @@ def reference_area() -> Any:
     pairs = [*itertools.pairwise(elongations), (first, second)]
     cases = tuple({"zl1": cl * _float40(p), "zl2": cl * _float40(q)} for p, q in pairs)
     return _reference(
-        exact, "the path u(z) of (10)'s motion", cases=cases, transform=_between(exact, zl1, zl2)
+        exact, "the path u(z) of (10)'s motion", cases=cases, transform=_between(exact, zl1, zl)
     )
 
 
