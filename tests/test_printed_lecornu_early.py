@@ -10,6 +10,8 @@ from pathlib import Path
 import pytest
 
 from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
+from pendcli.core.printed import Formula, parse_formula
+from pendcli.core.printed_check import computed_status, judged
 from pendcli.papers.lecornu import equations as CHECKS
 from pendcli.papers.lecornu import references_early
 
@@ -142,3 +144,195 @@ def test_the_new_numeric_checks_can_fail() -> None:
     assert not curvature.holds and curvature.corrected
     root = references_early.check_half_period_root()
     assert root.holds and root.observed_order is not None and root.observed_order > 2.7
+
+
+# --- a19: the rows of lines 1-420 whose status is now computed (issue 19) -------------------
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        # line 48: g l sin θ -> 2 g l sin θ
+        ("lecornu.result.areal_form", "t) + g*l*sin(theta) = 0'", "t) + 2*g*l*sin(theta) = 0'"),
+        # line 138: the slope, not u'', vanishes at the vertical
+        ("lecornu.result.inflection_at_vertical", "'u = 0; d2u_dzl2 = 0'", "'u = 0; du_dzl = 0'"),
+        # line 146: h = (2/c)∫u dz
+        ("lecornu.result.area_theorem", "'h = 1/cl*Integral(u, zl)", "'h = 2/cl*Integral(u, zl)"),
+        # (12): φ/x = 2φ'
+        (
+            "lecornu.eq.12",
+            "b**2/g*theta = dvarphi_dx; varphi/x = dvarphi_dx'",
+            "b**2/g*theta = dvarphi_dx; varphi/x = 2*dvarphi_dx'",
+        ),
+        # (13): 3·4x² -> 3·5x²
+        (
+            "lecornu.eq.13",
+            "+ 3*4*x**2/(1*2*3*4)**2 - ... = 0'",
+            "+ 3*5*x**2/(1*2*3*4)**2 - ... = 0'",
+        ),
+        # line 204: within a fortieth of the interval of the mean (the first root is 9 % off)
+        (
+            "lecornu.result.roots_interlace",
+            "(zeta1 + zeta2)/2 - z < (zeta2 - zeta1)/4'",
+            "(zeta1 + zeta2)/2 - z < (zeta2 - zeta1)/40'",
+        ),
+        # line 286: twice through the vertical
+        ("lecornu.result.one_vertical_between_j1_zeros", "nvert = 1'", "nvert = 2'"),
+        # line 286: l = (b²/g)z1² (the 4 lost)
+        (
+            "lecornu.result.one_vertical_between_j1_zeros",
+            "'l1 = b**2/(4*g)*zeta1**2",
+            "'l1 = b**2/g*zeta1**2",
+        ),
+        # line 376: the limit −2/q²
+        ("lecornu.result.limit_u_at_zero", "lim0 = -1/q**2", "lim0 = -2/q**2"),
+        # line 378: the limit of u, +B/q²
+        ("lecornu.result.limit_u_at_zero", "ulim = -B/q**2", "ulim = B/q**2"),
+        # line 370: φ/p² ∫dx/x² = φ/p²[1/x0 + 1/x]
+        ("lecornu.result.limit_u_at_zero", "*(1/x0 - 1/x)", "*(1/x0 + 1/x)"),
+        # (18) of line 384: cos(3√x cos ω + α)
+        (
+            "lecornu.eq.18.definite-integral",
+            "u = C*x*(Integral(cos(2*sqrt(x)",
+            "u = C*x*(Integral(cos(3*sqrt(x)",
+        ),
+    ],
+)
+def test_a19_a_changed_coefficient_is_refused(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    rows, symbols = _altered(tmp_path, old, new)
+    computed, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    assert problem is not None and problem.startswith(f"recorded {rows[row_id].status}, but")
+    assert computed is not None and not computed.startswith(rows[row_id].status)
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        # (6) printed with its reading's d²/dl²
+        (
+            "lecornu.eq.6",
+            "printed = 'Derivative(theta*l, t, 2)",
+            "printed = 'Derivative(theta*l, l, 2)",
+        ),
+        # (19) of line 406 printed with its reading's dω/cos³ω
+        (
+            "lecornu.eq.19.definite-integral",
+            "tan(omega))/cos(omega)**2, (omega, 0, pi/2)))'",
+            "tan(omega))/cos(omega)**3, (omega, 0, pi/2)))'",
+        ),
+    ],
+)
+def test_a19_a_misprint_printed_as_its_reading_is_refused(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    rows, symbols = _altered(tmp_path, old, new)
+    _, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    assert problem is not None
+    assert problem.startswith("recorded misprint, but the printed form gives holds")
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        # the compound pendulum corrected with 3bθ' for 2bθ'
+        (
+            "lecornu.result.compound_pendulum",
+            "d2theta_dt2 = -2*b*dtheta_dt - g*sin(theta)'",
+            "d2theta_dt2 = -3*b*dtheta_dt - g*sin(theta)'",
+        ),
+        # the first member of (13) corrected to J2(2√x)/x²
+        ("lecornu.result.eq13_is_j2", "besselj(2, 2*sqrt(x))/x'", "besselj(2, 2*sqrt(x))/x**2'"),
+    ],
+)
+def test_a19_a_wrong_correction_is_refused(tmp_path: Path, row_id: str, old: str, new: str) -> None:
+    rows, symbols = _altered(tmp_path, old, new)
+    _, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    assert problem is not None and "and so does its fails" in problem
+
+
+@pytest.mark.parametrize(
+    ("row_id", "old", "new"),
+    [
+        (
+            "lecornu.result.compound_pendulum",
+            "printed = '(a + Rg**2/a + b*(1 - Rg**2/a**2)*t)*d2theta_dt2 = -2*b*(1 - Rg**2/a**2)*",
+            "printed = '(a + Rg**2/a + b*(1 - Rg**2/a**2)*t)*d2theta_dt2 = -2*b*",
+        ),
+        (
+            "lecornu.result.eq13_is_j2",
+            "printed = 'm13 = besselj(2, 2*sqrt(x))'",
+            "printed = 'm13 = besselj(2, 2*sqrt(x))/x'",
+        ),
+    ],
+)
+def test_a19_a_fails_row_printed_as_its_correction_is_refused(
+    tmp_path: Path, row_id: str, old: str, new: str
+) -> None:
+    rows, symbols = _altered(tmp_path, old, new)
+    _, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    assert problem is not None and problem.startswith(
+        "recorded fails, but the printed form gives holds"
+    )
+
+
+def _formula(text: str) -> Formula:
+    symbols = load_ledger("lecornu", TABLES).symbols
+    return parse_formula("test", text, dict(symbols))
+
+
+def test_the_cross_reference_of_line_276_is_judged_against_both_equations() -> None:
+    """What (10) gives leaves the sign of d(u/φ)/dx undetermined (u, u' free); (20) fixes it;
+    citing (20) for the printed form too (no reading reference) makes the row hold."""
+    from dataclasses import replace
+
+    reference = references_early.reference_monotone_as_cited()
+    claim = _formula("B*Derivative(u/varphi, x) > 0")
+    ok, why = judged(claim, reference)
+    assert not ok and "undetermined" in why and "du_dx" in why
+    assert reference.reading is not None and judged(claim, reference.reading)[0]
+    assert not judged(_formula("B*Derivative(u/varphi, x) < 0"), reference.reading)[0]
+    as_20 = replace(reference.reading, reading=None)
+    assert computed_status(claim, claim, None, as_20)[0] == "holds"
+
+
+def test_an_inequality_needs_a_margin_and_a_range() -> None:
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    at_two = Reference({"z": sp.Integer(2)})
+    assert judged(_formula("z < 3"), at_two)[0]
+    assert not judged(_formula("z < 2"), at_two)[0]  # strict: no margin
+    assert judged(_formula("z <= 2"), at_two)[0]
+    assert not judged(_formula("z >= 3"), at_two)[0]
+    ranged = Reference({}, domain={"z": (sp.Integer(1), sp.Integer(2))})
+    assert judged(_formula("z**2 < 4*z"), ranged)[0]
+    assert not judged(_formula("z**2 < 4*z"), Reference({}))[0]  # z unbounded
+
+
+def test_cases_substitute_into_the_exact_values_and_each_must_pass() -> None:
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    z = sp.Symbol("z", real=True)
+    roots = ({"z": sp.Integer(1)}, {"z": sp.Integer(2)})
+    reference = Reference({"u": (z - 1) * (z - 2)}, each_case=roots)
+    assert judged(_formula("u = 0"), reference)[0]
+    ok, why = judged(_formula("u = 0"), Reference({"u": (z - 1) * (z - 3)}, each_case=roots))
+    assert not ok and why.startswith("case 2 of 2")
+
+
+def test_a_condition_is_judged_as_the_models_equation() -> None:
+    """(12) with φ, φ' by their series (line 182) passes against its condition φ/x − φ', and
+    the same printed equation as an identity (no condition) does not."""
+    from dataclasses import replace
+
+    reference = references_early.reference_eq13()
+    line_182 = _formula(
+        "1 - 2*x/(1*2)**2 + 3*x**2/(1*2*3)**2 - ... = 1 - x/1**2 + x**2/(1*2)**2 - ..."
+    )
+    assert judged(line_182, replace(reference, conditions=reference.conditions[:1]))[0]
+    assert not judged(line_182, replace(reference, conditions=()))[0]

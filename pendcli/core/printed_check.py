@@ -32,7 +32,7 @@ from typing import Any
 
 from pendcli.core.printed import ELLIPSIS, Formula
 
-__all__ = ["Reference", "computed_status", "formula_passes"]
+__all__ = ["Reference", "computed_status", "formula_passes", "judged"]
 
 POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
 _DIGITS = 20
@@ -64,7 +64,12 @@ class Reference:
     the decimal's last printed digit (``0.13`` stands for any number in [0.125, 0.135]);
     ``cases``: the references the formula's first equations are judged against, one each
     (a formula printed « pour n pair » and « pour n impair »); a later equation, against
-    this reference."""
+    this reference;
+    ``each_case``: symbol name -> value maps, each added to ``exact`` in turn: the formula must
+    pass in every case (a claim « chaque fois que », at each root of a function);
+    ``conditions``: the model's own equation (its residual) for each printed equation in
+    order, None to skip: a printed equation that is a condition for roots, not an identity
+    (φ/x = φ' with φ, φ' by their series), passes when lhs − rhs − condition vanishes."""
 
     exact: Mapping[str, Any]
     scale: Any = None
@@ -78,6 +83,8 @@ class Reference:
     rounded: bool = False
     bounded: bool = False
     cases: tuple[Reference, ...] = ()
+    each_case: tuple[Mapping[str, Any], ...] = ()
+    conditions: tuple[Any, ...] = ()
 
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
@@ -147,21 +154,35 @@ def _is_relation(expr: Any) -> bool:
 def _relation_passes(relation: Any, reference: Reference) -> tuple[bool, str]:
     """A printed inequality (``a > b``, ``a >= b``, ``<``, ``<=``: a sign, « toujours
     positive », « diminuée »): the greater side less the lesser, substituted as an equation's
-    residual, is ≥ 0 at every random point (d − |d| vanishes there); a strict one besides is
-    not 0 there (d does not vanish)."""
+    residual, at random rational points of the reference's ``domain`` (30 digits); a strict
+    one must hold by more than the engine's tolerance, a wide one fall short of 0 by no more.
+    A symbol the reference neither gives nor bounds leaves it undetermined (it does not
+    hold): an inequality, unlike an identity, is true only over the range its reference
+    states."""
     import sympy as sp
 
     gap = _substituted(relation.gts - relation.lts, reference)
     if reference.scale is not None and reference.order is not None:
         gap = _truncated(gap, reference.scale, reference.order)
-    ok, why = _vanishes_at_points(gap - sp.Abs(gap), reference)
-    if not ok:
-        return False, f"negative: {why}" if "not a number" not in why else why
-    if relation.rel_op in (">", "<"):
-        zero, _ = _vanishes_at_points(gap, reference)
-        if zero:
-            return False, f"0 at {POINTS} random rational points, not strictly"
-    return True, f"holds at {POINTS} random rational points"
+    free = sorted(gap.free_symbols, key=lambda s: s.name)
+    unbounded = [s.name for s in free if s.name not in reference.domain]
+    if unbounded:
+        return False, f"undetermined: the reference fixes no value or range of {unbounded}"
+    generator = random.Random(19)
+    tolerance = sp.Float(10) ** (5 - _DIGITS)
+    strict = relation.rel_op in ("<", ">")
+    for _ in range(POINTS):
+        point = {}
+        for s in free:
+            low, high = reference.domain[s.name]
+            point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
+        value = sp.N(_integrals_by_quadrature(gap.subs(point)), _DIGITS + 10)
+        shown = ", ".join(f"{k}={v}" for k, v in point.items()) or "the reference's values"
+        if not value.is_number or not value.is_real:
+            return False, f"not a real number at {shown}"
+        if value < tolerance if strict else value < -tolerance:
+            return False, f"the margin is {sp.N(value, 6)} at {shown}"
+    return True, "the inequality holds" + (f" at {POINTS} random points" if free else "")
 
 
 def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
@@ -478,14 +499,50 @@ def computed_status(
 
     if isinstance(reference, Numbers):  # printed numbers, judged by their printed digits
         return numeric_status(printed, reading, corrected, reference)
-    ok, why = formula_passes(printed, reference)
+    ok, why = judged(printed, reference)
     if ok:
         return "holds", f"the printed form holds: {why}"
     for status, other in (("misprint", reading), ("fails", corrected)):
         if other is not None:
             against = reference.reading if status == "misprint" and reference.reading else reference
-            other_ok, other_why = formula_passes(other, against)
+            other_ok, other_why = judged(other, against)
             if other_ok:
                 return status, f"the printed form fails ({why}); the {status} form holds"
             return None, f"the printed form fails ({why}) and so does its {status} ({other_why})"
     return None, f"the printed form fails ({why}) and the row gives no reading or correction"
+
+
+# --- prose claims (issue 19, a19): each case, conditions for roots ----------------
+
+
+def judged(formula: Formula, reference: Reference) -> tuple[bool, str]:
+    """:func:`formula_passes`, in each of the reference's ``each_case`` (every one must pass)
+    and with its ``conditions``."""
+    from dataclasses import replace
+
+    if reference.each_case:
+        why = ""
+        for index, case in enumerate(reference.each_case, 1):
+            one = replace(reference, exact=_in_case(reference.exact, case), each_case=())
+            ok, why = judged(formula, one)
+            if not ok:
+                return False, f"case {index} of {len(reference.each_case)}: {why}"
+        return True, f"{why}, in each of {len(reference.each_case)} cases"
+    if reference.conditions:
+        pairs = zip(formula.equations, reference.conditions, strict=False)
+        shifted = [(l, r if c is None or l is None else r + c) for (l, r), c in pairs]
+        formula = Formula(formula.source, (*shifted, *formula.equations[len(shifted) :]))
+    return formula_passes(formula, reference)
+
+
+def _in_case(exact: Mapping[str, Any], case: Mapping[str, Any]) -> dict[str, Any]:
+    """``exact`` with the case's values substituted into its expressions, and the case's."""
+    import sympy as sp
+
+    def at(value: Any) -> Any:
+        if not isinstance(value, sp.Basic):
+            return value
+        names = {s.name: s for s in value.free_symbols}
+        return value.subs({names[n]: v for n, v in case.items() if n in names}, simultaneous=True)
+
+    return {**{k: at(v) for k, v in exact.items()}, **case}

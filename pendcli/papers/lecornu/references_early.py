@@ -13,6 +13,7 @@ sympy and mpmath are imported inside the functions (start-up stays fast).
 
 from __future__ import annotations
 
+import itertools
 from functools import cache
 from typing import Any
 
@@ -232,6 +233,12 @@ def _phi(x: Any, kind: str = "j") -> Any:
 def _general_u(x: Any, x0: Any, big_a: Any, big_b: Any) -> Any:
     """The solution of (9) whose value and slope at x0 are Aφ0 and Aφ'0 + B/φ0 (line 348),
     written in the independent basis √x J₁(2√x), √x Y₁(2√x)."""
+    c1, c2 = _basis_coefficients(x0, big_a, big_b)
+    return c1 * _phi(x, "j") + c2 * _phi(x, "y")
+
+
+def _basis_coefficients(x0: Any, big_a: Any, big_b: Any) -> tuple[Any, Any]:
+    """_general_u's coefficients of √x J₁(2√x) and √x Y₁(2√x) (the Wronskian at x0)."""
     import sympy as sp
 
     s = sp.Dummy("s", positive=True)
@@ -243,7 +250,7 @@ def _general_u(x: Any, x0: Any, big_a: Any, big_b: Any) -> Any:
     wronskian = (j * dy - dj * y).subs(at)
     c1 = (u0 * dy.subs(at) - du0 * y.subs(at)) / wronskian
     c2 = (du0 * j.subs(at) - u0 * dj.subs(at)) / wronskian
-    return c1 * _phi(x, "j") + c2 * _phi(x, "y")
+    return c1, c2
 
 
 def _bessel_exact(switch: dict[str, Any] | None = None) -> dict[str, Any]:
@@ -1263,3 +1270,385 @@ def reference_successive_elongations() -> Any:
     b, g, length = _symbols("b", "g", "l")
     exact = {"lp": length + eps * b * sp.pi * sp.sqrt(length / g), "b": eps * b}
     return _reference(exact, "l' = l + bπ√(l/g)", scale=eps, order=2)
+
+
+# --- a19: the references of the rows of lines 1-420 that had none (issue 19) ----------------
+
+__all__ += [
+    "reference_area",
+    "reference_areal",
+    "reference_compound_motion",
+    "reference_elongation_condition",
+    "reference_eq6",
+    "reference_eq13",
+    "reference_first_member_13",
+    "reference_inflection",
+    "reference_integral_18",
+    "reference_integral_19",
+    "reference_limit_at_zero",
+    "reference_monotone_as_cited",
+    "reference_one_vertical",
+    "reference_roots_interlace",
+]
+
+
+def reference_areal() -> Any:
+    """Line 48 from line 44: θ'' solved from x ÿ − y ẍ − g x = 0 (lines 34–40); the printed
+    d/dt of l²θ' taken by the chain rule (l' = dl/dt, (θ')' = θ'')."""
+    dl, dtheta, d2theta = _symbols("dl_dt", "dtheta_dt", "d2theta_dt2")
+    rates = {"t": {"l": dl, "theta": dtheta, "dtheta_dt": d2theta}}
+    return _reference(_cartesian_exact(False), "x ÿ − y ẍ − g x = 0 (line 44)", rates=rates)
+
+
+def reference_eq6() -> Any:
+    """(6) against (3): θ'' of (3) (written with l = a + bt) for a d²/dt², θ_ll of (3) in l
+    (the chain rule) for a d²/dl²; l' = b. The printed d²/dt² gives lθ'' + 2bθ' = −g sin θ,
+    not −(g/b²) sin θ."""
+
+    a, b, t, length = _symbols("a", "b", "t", "l")
+    dtheta, d2theta, dtheta_dl, d2theta_dl2 = _symbols(
+        "dtheta_dt", "d2theta_dt2", "dtheta_dl", "d2theta_dl2"
+    )
+    exact = dict(reference_motion_in_l().exact)
+    exact["d2theta_dt2"] = _cartesian_exact(True)["d2theta_dt2"].subs(a + b * t, length)
+    rates = {
+        "t": {"theta": dtheta, "dtheta_dt": d2theta, "l": b},
+        "l": {"theta": dtheta_dl, "dtheta_dl": d2theta_dl2},
+    }
+    del exact["t"]  # (3)'s θ'' is written in l, so no t is left to substitute
+    return _reference(exact, "(3), in t and in l", rates=rates)
+
+
+def reference_compound_motion() -> Any:
+    """Lines 92-94 against the compound pendulum itself: d/dt[(l² + R²)θ'] + g l sin θ = 0
+    (moment of inertia l² + R² per unit mass, l = a + bt the distance of the centre of
+    gravity), θ'' solved from it; bt/a small: b scaled by ε, through ε¹ (the order of the
+    printed l' = a + R²/a + b(1 − R²/a²)t)."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    a, b, t, rg, g, theta, dtheta, q = _symbols(
+        "a", "b", "t", "Rg", "g", "theta", "dtheta_dt", "q_"
+    )
+    length, rate = a + eps * b * t, eps * b
+    motion = (length**2 + rg**2) * q + 2 * length * rate * dtheta + g * length * sp.sin(theta)
+    d2theta = sp.solve(motion, q)[0]
+    exact = {"b": rate, "d2theta_dt2": d2theta}
+    return _reference(exact, "d/dt[(l² + R²)θ'] + g l sin θ = 0", scale=eps, order=2)
+
+
+def _scan_roots(f: Any, coarse: Any, low: float, high: float, steps: int) -> list[Any]:
+    """The roots of ``f`` (mpmath) in (low, high): a sign change of ``coarse`` (the same
+    function in floats, numpy) on a grid of ``steps``, refined by a bracketing solver on
+    ``f`` (mpmath, 40 digits)."""
+    import mpmath
+    import numpy as np
+
+    grid = np.linspace(low, high, steps + 1)
+    values = coarse(grid)
+    brackets = [(grid[k], grid[k + 1]) for k in range(steps) if values[k] * values[k + 1] < 0]
+    with mpmath.workdps(40):
+        return [mpmath.findroot(f, (mpmath.mpf(a), mpmath.mpf(b)), solver="anderson")
+                for a, b in brackets]  # fmt: skip
+
+
+def _cylinder(kind: str) -> tuple[Any, Any]:
+    """x -> √x Z₁(2√x) and its derivative Z₀(2√x) (Z = J, or J + Y: the path), in mpmath,
+    and the pair in floats (scipy)."""
+    import mpmath
+    from scipy.special import jv, yv
+
+    def z(order: int, s: Any) -> Any:
+        value = mpmath.besselj(order, s)
+        return value + mpmath.bessely(order, s) if kind == "path" else value
+
+    def z_float(order: int, s: Any) -> Any:
+        return jv(order, s) + yv(order, s) if kind == "path" else jv(order, s)
+
+    def exact(x: Any) -> tuple[Any, Any]:
+        s = 2 * mpmath.sqrt(x)
+        return mpmath.sqrt(x) * z(1, s), z(0, s)
+
+    def coarse(x: Any) -> tuple[Any, Any]:
+        s = 2 * x**0.5
+        return x**0.5 * z_float(1, s), z_float(0, s)
+
+    return exact, coarse
+
+
+def _roots_of(kind: str, which: str, low: float, high: float) -> list[Any]:
+    """The roots in x of U (``which`` = "zero"), of h = U − xU' (the tangent through the
+    point of suspension, "tangent"), of U' (the slope), for U = √x Z₁(2√x) (_cylinder)."""
+    exact, coarse = _cylinder(kind)
+
+    def pick(pair: tuple[Any, Any], x: Any) -> Any:
+        value, slope = pair
+        return {"zero": value, "tangent": value - x * slope, "slope": slope}[which]
+
+    return _scan_roots(
+        lambda x: pick(exact(x), x), lambda x: pick(coarse(x), x), low, high, int(20 * high)
+    )
+
+
+def _float40(value: Any) -> Any:
+    import sympy as sp
+
+    return sp.Float(mpmath_str(value), 40)
+
+
+def reference_inflection() -> Any:
+    """Line 138: the exact path u(z) of (9) (x = z/c, _trajectory) at each of its first four
+    zeros (the passages through the vertical, found by a scan, mpmath): its u''."""
+    zl, cl = _symbols("zl", "cl")
+    u = _trajectory(zl, cl)
+    zeros = _roots_of("path", "zero", 0.2, 60)[:4]
+    cases = tuple({"zl": cl * _float40(x)} for x in zeros)
+    exact = {"u": u, "du_dzl": u.diff(zl), "d2u_dzl2": u.diff(zl, 2)}
+    return _reference(exact, "the path u(z) of (9) at its zeros", each_case=cases)
+
+
+def _between(exact: dict[str, Any], low: Any, high: Any) -> Any:
+    """A transform: an identity with an indefinite integral ∫f dz (true up to a constant)
+    judged between two points, r(high) − r(low), each ∫f dz read as ∫_low^high f dz; the
+    reference's ``exact`` is substituted first (an integral's coefficient must not depend on
+    z, or a term F(low) is left and the residual is not a number)."""
+    import sympy as sp
+
+    def transform(expr: Any) -> Any:
+        names = {s.name: s for s in expr.free_symbols}
+        expr = expr.subs({names[n]: v for n, v in exact.items() if n in names}, simultaneous=True)
+        indefinite = [i for i in expr.atoms(sp.Integral) if len(i.limits[0]) == 1]
+        for number, integral in enumerate(indefinite):
+            variable = integral.limits[0][0]
+            antiderivative = sp.Function(f"F{number}_")
+            expr = expr.subs(integral, antiderivative(variable))
+            expr = expr.subs(variable, high) - expr.subs(variable, low)
+            definite = sp.Integral(integral.function, (variable, low, high))
+            expr = expr.subs(antiderivative(high), antiderivative(low) + definite)
+        return expr
+
+    return transform
+
+
+def reference_area() -> Any:
+    """Lines 144-152: the path u(z) of (10)'s motion (x = z/c), h the ordinate of its tangent
+    at z = 0 (line 126); h = (1/c)∫u dz judged between z1 and any z (_between); the cases: two
+    pairs of consecutive elongations (h = 0 at both) and a pair with the same h ≠ 0 (the
+    second point found by a scan for h(z2) = h(z1))."""
+    import mpmath
+
+    zl, cl, zl1 = _symbols("zl", "cl", "zl1")
+    u = _phi(zl / cl)  # J₁ only: the quadratures of Y₁ cost seconds
+    exact = {"u": u, "h": u - zl * u.diff(zl)}
+    elongations = _roots_of("bessel", "tangent", 0.5, 40)[:3]
+    first = elongations[0] + (elongations[1] - elongations[0]) / 3
+    exact_path, coarse_path = _cylinder("bessel")
+
+    def level(x: Any, pair: Any = exact_path) -> Any:
+        value, slope = pair(x)
+        return value - x * slope
+
+    with mpmath.workdps(40):
+        target = level(first)
+    second = _scan_roots(
+        lambda x: level(x) - target,
+        lambda x: level(x, coarse_path) - float(target),
+        float(elongations[1]),
+        40,
+        800,
+    )[0]
+    pairs = [*itertools.pairwise(elongations), (first, second)]
+    cases = tuple({"zl1": cl * _float40(p), "zl2": cl * _float40(q)} for p, q in pairs)
+    return _reference(
+        exact, "the path u(z) of (10)'s motion", each_case=cases, transform=_between(exact, zl1, zl)
+    )
+
+
+def _elongation_roots(count: int) -> list[Any]:
+    """x at the first elongations of (10)'s motion: where θ ∝ φ/x is stationary, i.e.
+    φ − xφ' = 0 (φ = √x J₁(2√x), φ' = J₀(2√x)), x > 0, by a scan (mpmath)."""
+    return _roots_of("bessel", "tangent", 0.5, 100)[:count]
+
+
+def reference_elongation_condition() -> Any:
+    """(12) and lines 170-178 at the first three elongations of θl = φ (θ = gφ/(b²x)
+    stationary, _elongation_roots): dθ = θ'(x)dx, dl/dx = b²/g."""
+    import sympy as sp
+
+    x, b, g = _symbols("x", "b", "g")
+    phi = _phi(x)
+    theta = g * phi / (b**2 * x)
+    exact = {
+        "varphi": phi,
+        "dvarphi_dx": phi.diff(x),
+        "theta": theta,
+        "dtheta": sp.diff(theta, x),
+        "l": b**2 * x / g,
+        "dl_dx": b**2 / g,
+    }
+    cases = tuple({"x": _float40(r)} for r in _elongation_roots(3))
+    return _reference(exact, "the elongations of θl = φ", each_case=cases)
+
+
+def reference_eq13() -> Any:
+    """Lines 182-188: (12)'s condition φ/x − φ' = 0 with φ = √x J₁(2√x), then divided by x
+    (« en divisant par x »), x scaled by ε through ε² (the terms printed)."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    (x,) = _symbols("x")
+    condition = _phi(x) / x - _phi(x).diff(x)
+    exact = {"x": eps * x}
+    return _reference(
+        exact, "(12) with φ = √x J₁(2√x)", scale=eps, order=3, conditions=(condition, condition / x)
+    )
+
+
+def reference_first_member_13() -> Any:
+    """Line 196: the first member of (13) as (13) is derived, (φ/x − φ')/x with
+    φ = √x J₁(2√x); x scaled by ε, through ε²."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    (x,) = _symbols("x")
+    member = ((_phi(x) / x - _phi(x).diff(x)) / x).subs(x, eps * x)
+    exact = {"x": eps * x, "m13": member}
+    return _reference(exact, "(12) divided by x", scale=eps, order=3)
+
+
+def reference_roots_interlace() -> Any:
+    """Lines 204-206 at the five elongations below z = 20 (_elongation_roots, z = 2√ξ) and
+    the roots of J₁ around each (mpmath.besseljzero)."""
+    import mpmath
+
+    roots = _elongation_roots(5)
+    with mpmath.workdps(40):
+        j1 = [mpmath.besseljzero(1, k) for k in range(1, 7)]
+        z = [2 * mpmath.sqrt(r) for r in roots]
+    cases = tuple(
+        {"z": _float40(z[k]), "zeta1": _float40(j1[k]), "zeta2": _float40(j1[k + 1])}
+        for k in range(5)
+    )
+    return _reference({}, "the elongations and the roots of J₁", each_case=cases)
+
+
+def reference_monotone_as_cited() -> Any:
+    """« L'équation (10) montre »: what (10) gives, φ = √x J₁(2√x) and φ', between the roots
+    3.670 and 12.31 of φ; it says nothing of u or u', so the sign of d(u/φ)/dx is not fixed by
+    it. The reading is judged against (20) (u' solved from it)."""
+    import sympy as sp
+
+    x, u, du, big_b, phi_s, dphi_s = _symbols("x", "u", "du_dx", "B", "varphi", "dvarphi_dx")
+    phi = _phi(x)
+    exact = {"varphi": phi, "dvarphi_dx": phi.diff(x)}
+    rates = {"x": {"u": du, "varphi": dphi_s}}
+    domain = {"x": (sp.Rational(37, 10), sp.Rational(61, 5)), "B": (sp.Rational(1, 10), 1)}
+    q = sp.Symbol("q_")
+    eq20 = (q * phi_s - u * dphi_s) / phi_s**2 - big_b / phi_s**2  # (20), d/dx by the rates
+    solved = sp.solve(eq20, q)[0].subs({phi_s: phi, dphi_s: phi.diff(x)}, simultaneous=True)
+    reading = _reference(
+        {**exact, "du_dx": solved}, "(20)", rates=rates, domain={**domain, "u": (-1, 1)}
+    )
+    return _reference(exact, "(10)", rates=rates, domain=domain, reading=reading)
+
+
+def _vertical_count(x0: Any, big_a: Any, big_b: Any, low: Any, high: Any) -> int:
+    """The sign changes, on 400 points strictly inside (low, high), of the solution of (9)
+    with u = Aφ, u' = Aφ' + B/φ at x0 (as _general_u; in floats: the basis √x J₁(2√x),
+    √x Y₁(2√x) and its derivative J₀, Y₀ by scipy, the coefficients by numpy)."""
+    import numpy as np
+    from scipy.special import jv, yv
+
+    def basis(x: Any) -> Any:
+        s = 2 * np.sqrt(x)
+        return np.array([[np.sqrt(x) * jv(1, s), np.sqrt(x) * yv(1, s)], [jv(0, s), yv(0, s)]])
+
+    start = float(x0)
+    phi0, dphi0 = basis(start)[:, 0]
+    data = [float(big_a) * phi0, float(big_a) * dphi0 + float(big_b) / phi0]
+    c1, c2 = np.linalg.solve(basis(start), data)
+    x = np.linspace(float(low), float(high), 402)[1:-1]
+    values = c1 * basis(x)[0, 0] + c2 * basis(x)[0, 1]
+    return int(np.sum(values[:-1] * values[1:] < 0))
+
+
+def reference_one_vertical() -> Any:
+    """Line 286 for three solutions of (9) (A, B at x0, B ≠ 0) and each of the first four
+    pairs of consecutive roots α < β of φ (a scan of √x J₁(2√x), mpmath): l = (b²/g)x at
+    α, β (line 112), z1, z2 the roots of J₁ (mpmath.besseljzero), nvert the sign changes of u
+    between α and β."""
+    import mpmath
+    import sympy as sp
+
+    b, g = _symbols("b", "g")
+    roots = _roots_of("bessel", "zero", 1, 80)
+    with mpmath.workdps(40):
+        j1 = [mpmath.besseljzero(1, k) for k in range(1, 6)]
+    solutions = [(sp.Rational(3, 10), 1, 1), (sp.Rational(5, 2), sp.Rational(-7, 10), 2),
+                 (8, sp.Rational(1, 5), sp.Rational(-3, 10))]  # fmt: skip
+    cases = []
+    for k in range(4):
+        alpha, beta = roots[k], roots[k + 1]
+        for x0, big_a, big_b in solutions:
+            cases.append({
+                "zeta1": _float40(j1[k]),
+                "zeta2": _float40(j1[k + 1]),
+                "l1": b**2 / g * _float40(alpha),
+                "l2": b**2 / g * _float40(beta),
+                "nvert": sp.Integer(_vertical_count(x0, big_a, big_b, alpha, beta)),
+            })  # fmt: skip
+    return _reference({}, "the zeros of u between the roots of φ", each_case=tuple(cases))
+
+
+def reference_limit_at_zero() -> Any:
+    """Lines 364-380: φ = Mx (M = φ/x, line 364); p the mean value of line 370 (1/p² the mean
+    of 1/M² under the weight 1/x² over (x, x0)); q its limit as x → 0, M(0) (the weight
+    concentrates at 0); the limits of φ∫dx/φ² (the solution of (9) with value 0, slope 1/φ0
+    at x0) and of u (_general_u) as x → 0, from the basis: √x J₁(2√x) → 0 and √x Y₁(2√x) →
+    its sympy limit; θ = u/l, l = (b²/g)x."""
+    import sympy as sp
+
+    x, x0, big_a, big_b, b, g, u = _symbols("x", "x0", "A", "B", "b", "g", "u")
+    s = sp.Dummy("s", positive=True)
+    phi = _phi(x)
+    at_zero = sp.limit(_phi(s, "y"), s, 0)
+    mean = (1 / x0 - 1 / x) / sp.Integral(1 / _phi(s) ** 2, (s, x0, x))
+    exact = {
+        "varphi": phi,
+        "M": phi / x,
+        "p": sp.sqrt(mean),
+        "q": sp.limit(_phi(s) / s, s, 0),
+        "lim0": _basis_coefficients(x0, 0, 1)[1] * at_zero,
+        "ulim": _basis_coefficients(x0, big_a, big_b)[1] * at_zero,
+        "theta": u / (b**2 * x / g),
+    }
+    return _reference(exact, "(9)'s solutions near x = 0")
+
+
+def _solves_nine(variable: str, to_x: Any = None) -> Any:
+    """A transform: the printed right side F of ``variable = F`` (the residual is variable − F)
+    judged as a solution of (9), x F'' + F = 0 (differentiated under ∫ by sympy); ``to_x``:
+    (l, (b²/g)x) when F is θ(l), so that u = θl is tried."""
+    (x,) = _symbols("x")
+
+    def transform(expr: Any) -> Any:
+        names = {s.name: s for s in expr.free_symbols}
+        f = names[variable] - expr
+        if to_x is not None:
+            old, new = to_x
+            f = f.subs(old, new) * new
+        return x * f.diff(x, 2) + f
+
+    return transform
+
+
+def reference_integral_18() -> Any:
+    """(18) of line 384: its right side solves (9), x u'' + u = 0."""
+    return _reference({}, "(9), x u'' + u = 0", transform=_solves_nine("u"))
+
+
+def reference_integral_19() -> Any:
+    """(19) of line 406: θl, with l = (b²/g)x (line 112), solves (9)."""
+    b, g, x, length = _symbols("b", "g", "x", "l")
+    transform = _solves_nine("theta", (length, b**2 / g * x))
+    return _reference({}, "(9) for u = θl, l = (b²/g)x", transform=transform)
