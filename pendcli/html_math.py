@@ -71,13 +71,21 @@ def to_mathml(tex: str, display: bool) -> str | None:
 def wrap_marks(tex: str, spans: list[tuple[int, int, int]]) -> str:
     """``tex`` with each (start, end, number) span wrapped in its colour group.
 
-    Spans are relative to ``tex``, sorted and disjoint; a span whose braces do not balance
-    (it would break the formula) is widened to the enclosing balanced text by the caller.
+    Spans are relative to ``tex``, each disjoint from the others or holding them whole (a
+    wrong table entry around its claim's mark), the outer first where two are equal; a span
+    whose braces do not balance (it would break the formula) is widened to the enclosing
+    balanced text by the caller.
     """
+    # at one place: groups close before others open, inner ones close first, outer open first
+    events = sorted(
+        [(start, 1, -end, rank, number) for rank, (start, end, number) in enumerate(spans)]
+        + [(end, 0, -start, -rank, number) for rank, (start, end, number) in enumerate(spans)]
+    )
     out, pos = [], 0
-    for start, end, number in spans:
-        out += [tex[pos:start], "{\\color{", _COLOUR.format(number), "}", tex[start:end], "}"]
-        pos = end
+    for at, opens, _, _, number in events:
+        out.append(tex[pos:at])
+        out.append("{\\color{" + _COLOUR.format(number) + "}" if opens else "}")
+        pos = at
     out.append(tex[pos:])
     return "".join(out)
 

@@ -136,11 +136,20 @@ def _render_span(page_text: str, a: int, b: int, marks: Sequence[Placement],
 
 def _render_prose(text: str, a: int, b: int, marks: Sequence[Placement],
                   numbers: Mapping[str, int]) -> str:  # fmt: skip
+    """Prose [a, b) with its marks; a mark holding others (a wrong term around a claim's
+    number) is a ``<span>`` around them, since a link cannot hold a link."""
     out, pos = [], a
     for m in (m for m in marks if a <= m.start and m.end <= b and m.end > m.start):
+        if m.start < pos:  # held by the mark before, drawn inside it
+            continue
         out.append(_prose(text[pos : m.start]))
-        href = f"#row-{_attr(m.row_id)}"
-        out.append(f'<a {_open(m)} href="{href}">{_prose(text[m.start : m.end])}</a>')
+        held = [o for o in marks if o is not m and m.start <= o.start and o.end <= m.end]
+        if held:
+            body = _render_prose(text, m.start, m.end, held, numbers)
+            out.append(f"<span {_open(m)}>{body}</span>")
+        else:
+            href = f"#row-{_attr(m.row_id)}"
+            out.append(f'<a {_open(m)} href="{href}">{_prose(text[m.start : m.end])}</a>')
         out.append(_call(m, numbers[m.key]))
         pos = m.end
     out.append(_prose(text[pos:b]))

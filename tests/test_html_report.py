@@ -296,8 +296,12 @@ def test_each_mark_is_what_its_row_prints_and_lies_within_its_lines(paper: str) 
     for m in marks:  # a label: inside a display formula
         if re.fullmatch(r"\([0-9IVX]+'?\)", text[m.start : m.end]):
             assert any(a <= m.start < b for a, b in displays), m.key
-    spans = sorted((m.start, m.end) for m in marks if not m.whole)
+    spans = sorted((m.start, m.end) for m in marks if not m.whole and not m.nests)
     assert all(b <= c for (_, b), (c, _) in itertools.pairwise(spans))  # disjoint
+    for outer in (m for m in marks if m.nests):  # a wrong term around marks: holds them whole
+        assert outer.how == "term", outer.key
+        met = [(a, b) for a, b in spans if a < outer.end and outer.start < b]
+        assert met and all(outer.start <= a and b <= outer.end for a, b in met), outer.key
     assert {m.row_id for m in marks} == {str(r["id"]) for r in [*claims, *equations]}
 
 
@@ -444,6 +448,58 @@ def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(pape
         if correction:
             shown = str(escape(correction))
             assert sum(shown in body for body in own) == 1, (row["id"], own)
+
+
+def _wrong_term_faults(text: str, claims: list[dict[str, object]],
+                      equations: list[dict[str, object]]) -> list[str]:  # fmt: skip
+    """The misprint/fails rows whose wrong term is not recorded, not marked as printed within
+    their lines (lines counted here), not drawn in the page, or whose reading or correction
+    is not the note beside it, once in the edition."""
+    wrong = [r for r in equations if str(r["status"]) in ("misprint", "fails")]
+    marks = {m.key: m for m in place_marks(text, claims, equations)[0]}
+    page = paper_page("p", "", text, claims, (), equations)
+    edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
+    notes = dict(re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition))
+    bad = []
+    for row in wrong:
+        key, (first, last) = f"{row['id']}~term0", row["lines"]  # type: ignore[misc]
+        mark, shown = marks.get(key), str(escape(correction_of(row)))
+        drawn = rf'class="hl [^"]*\bwrong\b[^"]*" id="at-{re.escape(str(escape(key)))}"'
+        if not row["wrong_term"] or mark is None:
+            bad.append(f"{row['id']}: no wrong term marked ({row['wrong_term']!r})")
+        elif not _same(text[mark.start : mark.end], str(row["wrong_term"])):
+            bad.append(f"{key}: marks {text[mark.start : mark.end]!r}")
+        elif not first <= _line_of(text, mark.start) <= _line_of(text, mark.end - 1) <= last:
+            bad.append(f"{key}: outside its lines {row['lines']}")
+        elif not re.search(drawn, edition):
+            bad.append(f"{key}: not drawn in the page")
+        elif not shown or shown not in notes.get(str(escape(key)), ""):
+            bad.append(f"{key}: its note is not {shown!r}")
+        elif sum(shown in body for body in notes.values()) != 1:
+            bad.append(f"{key}: {shown!r} shown more than once")
+    return bad
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_every_misprint_or_failure_is_marked_at_its_wrong_term_with_its_note_once(
+    paper: str,
+) -> None:
+    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    claims, equations = _table_rows(paper)
+    assert len([r for r in equations if str(r["status"]) in ("misprint", "fails")]) >= 3
+    assert _wrong_term_faults(text, claims, equations) == []
+
+
+def test_the_wrong_term_check_sees_a_term_missing_or_not_printed_in_its_lines() -> None:
+    """Broken on purpose: (13)'s wrong term dropped, or one the OCR does not print in its
+    lines, is caught."""
+    text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
+    claims, equations = _table_rows("tisserand")
+    for term in (None, "\\sin^3 4k' t"):
+        broken = [{**r, "wrong_term": term} if r["id"] == "tisserand.eq.13" else r
+                  for r in equations]  # fmt: skip
+        faults = _wrong_term_faults(text, claims, broken)
+        assert [b.split(":")[0] for b in faults] == ["tisserand.eq.13"]
 
 
 @pytest.mark.parametrize("paper", PAPERS)
