@@ -253,9 +253,13 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
     segments = math_segments(text)
     numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
                                                      key=lambda m: m.start), 1)}  # fmt: skip
-    blocks = []
+    blocks: list[dict[str, object]] = []
     front = front_matter_end(text)
-    for a, b in paragraph_spans(text, segments):
+    breaks = page_breaks(text)
+    for a, b in _split_at(text, paragraph_spans(text, segments), breaks):
+        if (a, b) in breaks:
+            blocks.append(_page_break(text, a, b, breaks.index((a, b))))
+            continue
         inside = [m for m in marks if a <= m.start < b]
         notes = sorted([*inside, *(p for at, p in passages if a <= at < b)],
                        key=lambda m: numbers[m.key])  # fmt: skip
@@ -264,9 +268,49 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
             "html": markup(html.strip().replace("\n", "<br>")),
             "heading": text[a:b].lstrip().startswith("#"),
             "front": b <= front,
+            "pagebreak": "",
             "notes": [_note(m, numbers[m.key]) for m in notes],
         })  # fmt: skip
     return blocks
+
+
+# A running head or foot the OCR kept as a line of the text: the journal's foot at the bottom
+# of a signature's first page ("Ann. de Mathémat., 4^e série, t. VIII. (Avril 1908.) 10"),
+# or a page number alone ("( 146 )", "— 146 —").
+_RUNNING_HEAD = re.compile(
+    r"^[ \t]*(?:Ann\. de Math[ée]mat\.,[^\n$]*\(\w+ \d{4}\.?\)[ \t]*\d*"
+    r"|\([ \t]*\d{1,3}[ \t]*\)|— \d{1,3} —)[ \t]*$",
+    re.MULTILINE,
+)
+_PAGES = re.compile(r"\bp\. (\d+)\s*-\s*(\d+)")
+
+
+def page_breaks(text: str) -> list[tuple[int, int]]:
+    """The lines of ``text`` that are a page's running head or foot, not the paper's text."""
+    return [m.span() for m in _RUNNING_HEAD.finditer(text)]
+
+
+def _split_at(
+    text: str, spans: Sequence[tuple[int, int]], cuts: Sequence[tuple[int, int]]
+) -> list[tuple[int, int]]:
+    """The paragraphs, each running head inside one cut out as a block of its own."""
+    out = []
+    for a, b in spans:
+        for x, y in (c for c in cuts if a <= c[0] and c[1] <= b):
+            out += [(a, x), (x, y)]
+            a = y
+        out.append((a, b))
+    return [(a, b) for a, b in out if text[a:b].strip()]
+
+
+def _page_break(text: str, a: int, b: int, index: int) -> dict[str, object]:
+    """A running head as the edition's page break: the page it ends, counted from the first
+    page the cover gives (« p. 145-162 »), and the head's words, set apart from the text."""
+    pages = _PAGES.search(text[: front_matter_end(text)] or text[:2000])
+    page = int(pages.group(1)) + index if pages else None
+    label = f"p. {page} | p. {page + 1}" if page is not None else "page break"
+    return {"html": markup(_prose(text[a:b].strip())), "pagebreak": label, "heading": False,
+            "front": False, "notes": []}  # fmt: skip
 
 
 # The digitisation's cover page (NUMDAM's title page, copyright and terms of use) ends with
