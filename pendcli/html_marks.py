@@ -661,10 +661,21 @@ def _printed_terms(row: Row) -> list[str]:
     return [str(v) for v in value] if isinstance(value, list | tuple) else []
 
 
+# A unit the tables keep in the OCR's TeX (0^{sec},94; 1^m,22) as the paper sets it: raised
+_UNIT_FORMS = {"sec": "ˢᵉᶜ", "m": "ᵐ", "h": "ʰ", "s": "ˢ", "\\circ": "°"}
+_UNIT_TEX = re.compile(r"\^\{?(sec|m|h|s|\\circ)\}?")
+
+
+def printed_form(published: str) -> str:
+    """A printed number as the paper sets it, not as TeX: ``0^{sec},94`` is 0ˢᵉᶜ,94."""
+    return _UNIT_TEX.sub(lambda m: _UNIT_FORMS[m.group(1)], published)
+
+
 def _claim_note(row: Row) -> str:
     recomputed = number_text(row.get("recomputed"))
     unit = text_of(row, "unit")
-    text = f"printed {text_of(row, 'published')}, recomputed {recomputed} {unit}".rstrip()
+    printed = printed_form(text_of(row, "published"))
+    text = f"printed {printed}, recomputed {recomputed} {unit}".rstrip()
     cause = word_of(row.get("cause"))
     return f"{text}; {cause}" if cause and disagrees(row) else text
 

@@ -30,6 +30,7 @@ from pendcli.html_marks import (
     number_text,
     paragraph_spans,
     place_marks,
+    printed_form,
     sources_of,
     text_of,
     verdict_of,
@@ -266,7 +267,8 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
         html = _render_span(text, a, b, inside, segments, numbers, stats)
         blocks.append({
             "html": markup(html.strip().replace("\n", "<br>")),
-            "heading": text[a:b].lstrip().startswith("#"),
+            "heading": is_heading(text[a:b]),
+            "figure": bool(_FIGURE.fullmatch(text[a:b].strip())) and not inside,
             "front": b <= front,
             "pagebreak": "",
             "notes": [_note(m, numbers[m.key]) for m in notes],
@@ -310,7 +312,25 @@ def _page_break(text: str, a: int, b: int, index: int) -> dict[str, object]:
     page = int(pages.group(1)) + index if pages else None
     label = f"p. {page} | p. {page + 1}" if page is not None else "page break"
     return {"html": markup(_prose(text[a:b].strip())), "pagebreak": label, "heading": False,
-            "front": False, "notes": []}  # fmt: skip
+            "figure": False, "front": False, "notes": []}  # fmt: skip
+
+
+# A figure's caption alone on its line (the figure itself is not in the OCR text): « Fig. 2. »
+_FIGURE = re.compile(r"Fig\. \d+\.?")
+_NUMERAL = re.compile(r"[IVX]+\.(?:\s*—.*)?")
+
+
+def is_heading(paragraph: str) -> bool:
+    """A title of the paper or of a part: a Markdown heading, or one line in capitals
+    (« SUR LE PENDULE DE LONGUEUR VARIABLE », « II. — LE MOUVEMENT … ») or a part's numeral
+    alone (« I. »)."""
+    line = paragraph.strip()
+    if line.startswith("#"):
+        return True
+    if "$" in line or len(line) > 120 or line.count("\n") > 2:
+        return False
+    letters = [c for c in line if c.isalpha()]
+    return bool(_NUMERAL.fullmatch(line)) or (len(letters) >= 4 and line.upper() == line)
 
 
 # The digitisation's cover page (NUMDAM's title page, copyright and terms of use) ends with
@@ -327,14 +347,16 @@ def front_matter_end(text: str, within: int = 40) -> int:
 
 
 def _note(mark: Placement, number: int) -> dict[str, object]:
+    # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
+            "label": mark.row_id.split(".", 1)[-1],
             "word": mark.word, "text": mark.note, "finding": mark.finding}  # fmt: skip
 
 
 def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, object]]:
     return [
         {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
-         "source": text_of(r, "source"), "published": text_of(r, "published"),
+         "source": text_of(r, "source"), "published": printed_form(text_of(r, "published")),
          "unit": text_of(r, "unit"), "recomputed": number_text(r.get("recomputed")),
          "exact": number_text(r.get("exact")), "cause": word_of(r.get("cause")),
          "sources": sources_of(r), "note": text_of(r, "note")}
