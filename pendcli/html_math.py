@@ -82,14 +82,17 @@ _NOT_AN_ARGUMENT = r"(?!(?:<mrow>)?<mo[^>]*>(?:&#x00028;|&#x0005B;)|</)"
 def typeset(mathml: str) -> str:
     """latex2mathml's MathML as TeX sets it, where Chromium would not: a prime (T', φ'_0) is
     the prime glyph after its letter (as a superscript it is set twice raised and tiny, far
-    from the letter); sin, cos … have TeX's thin space before their argument (Chromium sets
-    ``<mi>cos</mi><mi>ω</mi>`` as one word, "cosω")."""
+    from the letter); sin, cos … have TeX's thin spaces around them (Chromium sets
+    ``<mi>l</mi><mi>cos</mi><mi>ω</mi>`` as one word, "lcosω")."""
     prime = r'<mo lspace="0" rspace="0">\g<p></mo>'
     out = re.sub(rf"<msup>({_ONE}){_PRIMES}</msup>", r"\1" + prime, mathml)
     out = re.sub(rf"<msubsup>({_ONE})({_ONE}){_PRIMES}</msubsup>",
                  r"<msub><mrow>\1" + prime + r"</mrow>\2</msub>", out)  # fmt: skip
     function = rf"({_FUNCTION}|<msup>{_FUNCTION}(?:{_ONE})</msup>)"
-    return re.sub(function + _NOT_AN_ARGUMENT, r'\1<mspace width="0.1667em" />', out)
+    out = re.sub(function + _NOT_AN_ARGUMENT, r'\1<mspace width="0.1667em" />', out)
+    # and after a letter or number before it: l sin θ, not "lsin θ"
+    before = rf"(</mi>|</mn>|</msub>|</msup>)(?=<msup>{_FUNCTION}|{_FUNCTION})"
+    return re.sub(before, r'\1<mspace width="0.1667em" />', out)
 
 
 def wrap_marks(tex: str, spans: list[tuple[int, int, int]]) -> str:

@@ -636,8 +636,9 @@ def test_hard_formulas_of_the_papers_convert_to_the_structure_tex_sets() -> None
     assert re.search(r"<mi>T</mi><mo [^>]*>&#x02032;</mo>", primed)
     assert re.search(r"<msub><mrow><mi>&#x003C6;</mi><mo [^>]*>&#x02032;</mo></mrow><mn>0</mn>",
                      primed)  # fmt: skip
-    spaced = _mathml(r"\cos \omega + \sin^2 \omega + \sin(x)")
-    assert re.search(r"<mi>cos</mi><mspace [^>]*/><mi>&#x003C9;</mi>", spaced)
+    spaced = _mathml(r"l \cos \omega + \sin^2 \omega + \sin(x)")
+    assert re.search(r"<mi>l</mi><mspace [^>]*/><mi>cos</mi><mspace [^>]*/><mi>&#x003C9;</mi>",
+                     spaced)  # fmt: skip
     assert re.search(r"<msup><mi>sin</mi><mn>2</mn></msup><mspace [^>]*/>", spaced)
     assert re.search(r"<mi>sin</mi><mo stretchy=\"false\">&#x00028;", spaced)  # sin(x): none
     unit = _mathml(r"0^{sec}, 94 \quad 1^m, 21 \quad x^m")
