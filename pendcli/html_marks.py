@@ -306,6 +306,7 @@ class Placement:
     # sentence of its lines), "string" (its printed string, searched outside any lines)
     how: str = ""
     whole: bool = False  # drawn around a whole formula, which may hold other marks
+    nests: bool = False  # drawn around other marks that it holds whole (a wrong table entry)
 
 
 @dataclass
@@ -343,7 +344,9 @@ def place_marks(
     for row in equations:
         if lines_region(text, row) is None:
             _place_equation(page, row)
-    return sorted(page.marks, key=lambda m: (m.start, not m.whole)), page.passages
+    # in reading order; of marks starting together, the outer first
+    order = sorted(page.marks, key=lambda m: (m.start, not m.whole, -m.end, not m.nests))
+    return order, page.passages
 
 
 def lines_of(row: Row) -> tuple[int, int] | None:
@@ -482,11 +485,11 @@ def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
     base, note = _row_base(row), _equation_note(row)
     terms = 0
     for i, printed in enumerate(_printed_terms(row)):
-        span = _find(page.text, [printed], a, b, page.taken)
+        span = _find(page.text, [printed], a, b, page.taken) or _around_marks(page, printed, a, b)
         if span is not None:
             _add(page, span, key=f"{id_of(row)}~term{i}", css=f"{css_of(row)} wrong",
                  note="" if terms else note, anchored=True, forms=(printed,), how="term",
-                 **base)  # fmt: skip
+                 nests=not _free(page, span), **base)  # fmt: skip
             terms += 1
     label = text_of(row, "equation")
     span = _label_place(page.text, label, page.segments, region) if label else None
@@ -498,6 +501,18 @@ def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
              forms=(label,), how="label", **base)  # fmt: skip
         return True
     return terms > 0
+
+
+def _around_marks(page: _Page, printed: str, a: int, b: int) -> tuple[int, int] | None:
+    """The first occurrence of ``printed`` in text[a:b] that holds whole the marks it meets:
+    a wrong table entry is drawn around its claim's mark (0^{sec}, 94 is both the claim's
+    printed number and the ledger row's wrong term), never across part of one."""
+    pattern = _pattern(printed)
+    for m in pattern.finditer(page.text, a, b) if pattern else ():
+        x, y = m.span()
+        if all(e <= x or s >= y or (x <= s and e <= y) for s, e in page.taken):
+            return x, y
+    return None
 
 
 def _place_quote(page: _Page, row: Row, region: tuple[int, int]) -> bool:
@@ -646,10 +661,21 @@ def _printed_terms(row: Row) -> list[str]:
     return [str(v) for v in value] if isinstance(value, list | tuple) else []
 
 
+# A unit the tables keep in the OCR's TeX (0^{sec},94; 1^m,22) as the paper sets it: raised
+_UNIT_FORMS = {"sec": "ˢᵉᶜ", "m": "ᵐ", "h": "ʰ", "s": "ˢ", "\\circ": "°"}
+_UNIT_TEX = re.compile(r"\^\{?(sec|m|h|s|\\circ)\}?")
+
+
+def printed_form(published: str) -> str:
+    """A printed number as the paper sets it, not as TeX: ``0^{sec},94`` is 0ˢᵉᶜ,94."""
+    return _UNIT_TEX.sub(lambda m: _UNIT_FORMS[m.group(1)], published)
+
+
 def _claim_note(row: Row) -> str:
     recomputed = number_text(row.get("recomputed"))
     unit = text_of(row, "unit")
-    text = f"printed {text_of(row, 'published')}, recomputed {recomputed} {unit}".rstrip()
+    printed = printed_form(text_of(row, "published"))
+    text = f"printed {printed}, recomputed {recomputed} {unit}".rstrip()
     cause = word_of(row.get("cause"))
     return f"{text}; {cause}" if cause and disagrees(row) else text
 

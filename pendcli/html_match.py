@@ -11,6 +11,7 @@ nearest, and how near (the share of atoms in common, 0 to 1).
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections import Counter
 from collections.abc import Sequence
@@ -34,7 +35,9 @@ _GREEK = (
     "varepsilon|epsilon|varphi|lambda|Lambda|theta|Theta|alpha|gamma|Gamma|Delta|delta|omega|"
     "Omega|sigma|beta|zeta|kappa|phi|Phi|psi|Psi|rho|eta|tau|chi|mu|nu|xi|pi|Pi"
 )
-_FUNCTIONS = "Integral|Derivative|besselj|sqrt|asin|acos|atan|sin|cos|tan|tang|tg|exp|log|arc|lam"
+_FUNCTIONS = (
+    "Integral|Derivative|besselj|partial|sqrt|asin|acos|atan|sin|cos|tan|tang|tg|exp|log|arc|lam"
+)
 _SPELLING = {"varepsilon": "epsilon", "varphi": "phi", "tang": "tan", "tg": "tan", "asin": "sin",
              "acos": "cos", "atan": "tan", "Integral": "int", "Derivative": "d", "lam": "lambda",
              "exp": "e", "besselj": "J", "oo": "infty"}  # fmt: skip
@@ -50,6 +53,10 @@ _TEX_UNIT = re.compile(r"\^\s*(?:\{\s*(?:sec|m|mm|h|min|s)\s*\}|m\b)")
 _PRINTED_IDENT = re.compile(r"[A-Za-z_][A-Za-z_0-9]*|\d+")
 _DERIVATIVE = re.compile(rf"\bd(\d*)((?:{_GREEK})|[A-Za-z])(\w*?)_d([A-Za-z])(\d*)\b")
 _IDENT_PARTS = re.compile(rf"({_GREEK}|{_FUNCTIONS})|([A-Za-z])|(\d+)")
+# the ledger's th_u, th_uk for ∂θ/∂u, ∂²θ/∂u∂k (the memoir's partial derivatives of θ)
+_PARTIAL = re.compile(r"\bth_([A-Za-z]+)\b")
+# ∫dx spelt Integral(1, (x, …)): the integrand 1 is not printed
+_UNIT_INTEGRAND = re.compile(r"\bIntegral\(\s*1\s*,")
 
 
 def _named(m: re.Match[str]) -> str:
@@ -62,6 +69,7 @@ def atoms_of_tex(tex: str) -> Counter[str]:
     """The atoms of a TeX formula: ``\\frac{3}{8} u_0 u_1`` is 3, 8, u_0, u_1 (a subscript
     belongs to its letter)."""
     tex = re.sub(r"\\text\s*\{[^{}]*\}", " ", tex)  # words between the formulas
+    tex = re.sub(r"\\(?:begin|end)\s*\{\w+\*?\}", " ", tex)  # \begin{aligned}: no atoms
     tex = _TEX_UNIT.sub(" ", tex)  # 0^{sec}, 94 and 0^m, 35: the unit is no atom
     tex = _TEX_NAMED.sub(_named, tex)
     out: Counter[str] = Counter()
@@ -82,6 +90,7 @@ def atoms_of_printed(printed: str) -> Counter[str]:
     u_0, u_1, k, t (trailing digits or ``_x`` are a subscript, a trailing ``p`` a prime)."""
     # a derivative spelt as one name: d2theta_dt2 is d 2 theta d t 2, as d²θ/dt² prints
     printed = _DERIVATIVE.sub(r"d \1 \2\3 d \4 \5", printed)
+    printed = _PARTIAL.sub(_partial, _UNIT_INTEGRAND.sub("Integral(", printed))
     out: Counter[str] = Counter()
     for ident in _PRINTED_IDENT.findall(printed):
         if ident in _PRINTED_WORDS:
@@ -97,6 +106,16 @@ def atoms_of_printed(printed: str) -> Counter[str]:
                 atoms += _ident_atoms(sub)
         out.update(atoms)
     return out
+
+
+def _partial(m: re.Match[str]) -> str:
+    """``th_uk`` as ∂²θ/∂u∂k prints: partial 2 theta partial u partial k (``th_uu`` as
+    ∂²θ/∂u²: partial 2 theta partial u 2)."""
+    variables = m.group(1)
+    order = f" {len(variables)}" if len(variables) > 1 else ""
+    runs = [(v, len(list(g))) for v, g in itertools.groupby(variables)]
+    below = " ".join(f"partial {v}" + (f" {n}" if n > 1 else "") for v, n in runs)
+    return f" partial{order} theta {below} "
 
 
 def _ident_atoms(part: str) -> list[str]:

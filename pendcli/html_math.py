@@ -22,6 +22,7 @@ __all__ = [
     "math_segments",
     "plain_math",
     "to_mathml",
+    "typeset",
     "wrap_marks",
 ]
 
@@ -58,6 +59,8 @@ def to_mathml(tex: str, display: bool) -> str | None:
     # latex2mathml reads aligned as plain text with literal &: an array aligns the same way.
     tex = re.sub(r"\\begin\{(?:aligned|align\*?|split)\}", r"\\begin{array}{rlrlrlrl}", tex)
     tex = re.sub(r"\\end\{(?:aligned|align\*?|split)\}", r"\\end{array}", tex)
+    # a unit printed as an exponent of a number (0^{sec}, 94; 1^m, 21) is a word, upright
+    tex = _UNIT.sub(lambda m: "^{\\text{" + (m.group(1) or m.group(2)) + "}}", tex)
     try:
         mathml = convert(tex.strip(), display="block" if display else "inline")
     except Exception:
@@ -65,19 +68,51 @@ def to_mathml(tex: str, display: bool) -> str | None:
     # An unknown command comes out as a token holding its backslash: not rendered.
     if re.search(r"<m[io][^>]*>(?:\\|&(?![#\w]+;))", mathml) or "<merror" in mathml:
         return None
-    return mathml
+    return typeset(mathml)
+
+
+_UNIT = re.compile(r"(?<=\d)\^\s*(?:\{\s*(sec|m|mm|h|min|s)\s*\}|(?<!\{)(m|h|s)(?![A-Za-z]))")
+_PRIMES = r"<mi>(?P<p>(?:&#x0203[234];)+)</mi>"
+_ONE = r"<mi>[^<]*</mi>|<mn>[^<]*</mn>|<mrow>(?:(?!</?mrow>).)*</mrow>"
+_FUNCTION = r"<mi>(?:sin|cos|tan|cot|sec|log|exp)</mi>"
+# sin(x), sin[…] take no space; nor a function ending its group
+_NOT_AN_ARGUMENT = r"(?!(?:<mrow>)?<mo[^>]*>(?:&#x00028;|&#x0005B;)|</)"
+
+
+def typeset(mathml: str) -> str:
+    """latex2mathml's MathML as TeX sets it, where Chromium would not: a prime (T', φ'_0) is
+    the prime glyph after its letter (as a superscript it is set twice raised and tiny, far
+    from the letter); sin, cos … have TeX's thin spaces around them (Chromium sets
+    ``<mi>l</mi><mi>cos</mi><mi>ω</mi>`` as one word, "lcosω")."""
+    prime = r'<mo lspace="0" rspace="0">\g<p></mo>'
+    out = re.sub(rf"<msup>({_ONE}){_PRIMES}</msup>", r"\1" + prime, mathml)
+    out = re.sub(rf"<msubsup>({_ONE})({_ONE}){_PRIMES}</msubsup>",
+                 r"<msub><mrow>\1" + prime + r"</mrow>\2</msub>", out)  # fmt: skip
+    function = rf"({_FUNCTION}|<msup>{_FUNCTION}(?:{_ONE})</msup>)"
+    out = re.sub(function + _NOT_AN_ARGUMENT, r'\1<mspace width="0.1667em" />', out)
+    # and after a letter or number before it: l sin θ, not "lsin θ"
+    before = rf"(</mi>|</mn>|</msub>|</msup>)(?=<msup>{_FUNCTION}|{_FUNCTION})"
+    return re.sub(before, r'\1<mspace width="0.1667em" />', out)
 
 
 def wrap_marks(tex: str, spans: list[tuple[int, int, int]]) -> str:
     """``tex`` with each (start, end, number) span wrapped in its colour group.
 
-    Spans are relative to ``tex``, sorted and disjoint; a span whose braces do not balance
-    (it would break the formula) is widened to the enclosing balanced text by the caller.
+    Spans are relative to ``tex``, each disjoint from the others or holding them whole (a
+    wrong table entry around its claim's mark), the outer first where two are equal; a span
+    whose braces do not balance (it would break the formula) is widened to the enclosing
+    balanced text by the caller.
     """
+    # at one place: groups close before others open, inner ones close first, outer open first
+    events = sorted(
+        [(start, 1, -end, rank, number) for rank, (start, end, number) in enumerate(spans)]
+        + [(end, 0, -start, -rank, number) for rank, (start, end, number) in enumerate(spans)]
+    )
     out, pos = [], 0
-    for start, end, number in spans:
-        out += [tex[pos:start], "{\\color{", _COLOUR.format(number), "}", tex[start:end], "}"]
-        pos = end
+    for at, opens, _, _, number in events:
+        out.append(tex[pos:at])
+        out.append("{\\color{" + _COLOUR.format(number) + "}" if opens else "}")
+        pos = at
     out.append(tex[pos:])
     return "".join(out)
 

@@ -30,6 +30,7 @@ from pendcli.html_marks import (
     number_text,
     paragraph_spans,
     place_marks,
+    printed_form,
     sources_of,
     text_of,
     verdict_of,
@@ -136,11 +137,20 @@ def _render_span(page_text: str, a: int, b: int, marks: Sequence[Placement],
 
 def _render_prose(text: str, a: int, b: int, marks: Sequence[Placement],
                   numbers: Mapping[str, int]) -> str:  # fmt: skip
+    """Prose [a, b) with its marks; a mark holding others (a wrong term around a claim's
+    number) is a ``<span>`` around them, since a link cannot hold a link."""
     out, pos = [], a
     for m in (m for m in marks if a <= m.start and m.end <= b and m.end > m.start):
+        if m.start < pos:  # held by the mark before, drawn inside it
+            continue
         out.append(_prose(text[pos : m.start]))
-        href = f"#row-{_attr(m.row_id)}"
-        out.append(f'<a {_open(m)} href="{href}">{_prose(text[m.start : m.end])}</a>')
+        held = [o for o in marks if o is not m and m.start <= o.start and o.end <= m.end]
+        if held:
+            body = _render_prose(text, m.start, m.end, held, numbers)
+            out.append(f"<span {_open(m)}>{body}</span>")
+        else:
+            href = f"#row-{_attr(m.row_id)}"
+            out.append(f'<a {_open(m)} href="{href}">{_prose(text[m.start : m.end])}</a>')
         out.append(_call(m, numbers[m.key]))
         pos = m.end
     out.append(_prose(text[pos:b]))
@@ -244,20 +254,83 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
     segments = math_segments(text)
     numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
                                                      key=lambda m: m.start), 1)}  # fmt: skip
-    blocks = []
+    blocks: list[dict[str, object]] = []
     front = front_matter_end(text)
-    for a, b in paragraph_spans(text, segments):
+    breaks = page_breaks(text)
+    for a, b in _split_at(text, paragraph_spans(text, segments), breaks):
+        if (a, b) in breaks:
+            blocks.append(_page_break(text, a, b, breaks.index((a, b))))
+            continue
         inside = [m for m in marks if a <= m.start < b]
         notes = sorted([*inside, *(p for at, p in passages if a <= at < b)],
                        key=lambda m: numbers[m.key])  # fmt: skip
         html = _render_span(text, a, b, inside, segments, numbers, stats)
         blocks.append({
             "html": markup(html.strip().replace("\n", "<br>")),
-            "heading": text[a:b].lstrip().startswith("#"),
+            "heading": is_heading(text[a:b]),
+            "figure": bool(_FIGURE.fullmatch(text[a:b].strip())) and not inside,
             "front": b <= front,
+            "pagebreak": "",
             "notes": [_note(m, numbers[m.key]) for m in notes],
         })  # fmt: skip
     return blocks
+
+
+# A running head or foot the OCR kept as a line of the text: the journal's foot at the bottom
+# of a signature's first page ("Ann. de Mathémat., 4^e série, t. VIII. (Avril 1908.) 10"),
+# or a page number alone ("( 146 )", "— 146 —").
+_RUNNING_HEAD = re.compile(
+    r"^[ \t]*(?:Ann\. de Math[ée]mat\.,[^\n$]*\(\w+ \d{4}\.?\)[ \t]*\d*"
+    r"|\([ \t]*\d{1,3}[ \t]*\)|— \d{1,3} —)[ \t]*$",
+    re.MULTILINE,
+)
+_PAGES = re.compile(r"\bp\. (\d+)\s*-\s*(\d+)")
+
+
+def page_breaks(text: str) -> list[tuple[int, int]]:
+    """The lines of ``text`` that are a page's running head or foot, not the paper's text."""
+    return [m.span() for m in _RUNNING_HEAD.finditer(text)]
+
+
+def _split_at(
+    text: str, spans: Sequence[tuple[int, int]], cuts: Sequence[tuple[int, int]]
+) -> list[tuple[int, int]]:
+    """The paragraphs, each running head inside one cut out as a block of its own."""
+    out = []
+    for a, b in spans:
+        for x, y in (c for c in cuts if a <= c[0] and c[1] <= b):
+            out += [(a, x), (x, y)]
+            a = y
+        out.append((a, b))
+    return [(a, b) for a, b in out if text[a:b].strip()]
+
+
+def _page_break(text: str, a: int, b: int, index: int) -> dict[str, object]:
+    """A running head as the edition's page break: the page it ends, counted from the first
+    page the cover gives (« p. 145-162 »), and the head's words, set apart from the text."""
+    pages = _PAGES.search(text[: front_matter_end(text)] or text[:2000])
+    page = int(pages.group(1)) + index if pages else None
+    label = f"p. {page} | p. {page + 1}" if page is not None else "page break"
+    return {"html": markup(_prose(text[a:b].strip())), "pagebreak": label, "heading": False,
+            "figure": False, "front": False, "notes": []}  # fmt: skip
+
+
+# A figure's caption alone on its line (the figure itself is not in the OCR text): « Fig. 2. »
+_FIGURE = re.compile(r"Fig\. \d+\.?")
+_NUMERAL = re.compile(r"[IVX]+\.(?:\s*—.*)?")
+
+
+def is_heading(paragraph: str) -> bool:
+    """A title of the paper or of a part: a Markdown heading, or one line in capitals
+    (« SUR LE PENDULE DE LONGUEUR VARIABLE », « II. — LE MOUVEMENT … ») or a part's numeral
+    alone (« I. »)."""
+    line = paragraph.strip()
+    if line.startswith("#"):
+        return True
+    if "$" in line or len(line) > 120 or line.count("\n") > 2:
+        return False
+    letters = [c for c in line if c.isalpha()]
+    return bool(_NUMERAL.fullmatch(line)) or (len(letters) >= 4 and line.upper() == line)
 
 
 # The digitisation's cover page (NUMDAM's title page, copyright and terms of use) ends with
@@ -274,14 +347,16 @@ def front_matter_end(text: str, within: int = 40) -> int:
 
 
 def _note(mark: Placement, number: int) -> dict[str, object]:
+    # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
+            "label": mark.row_id.split(".", 1)[-1],
             "word": mark.word, "text": mark.note, "finding": mark.finding}  # fmt: skip
 
 
 def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, object]]:
     return [
         {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
-         "source": text_of(r, "source"), "published": text_of(r, "published"),
+         "source": text_of(r, "source"), "published": printed_form(text_of(r, "published")),
          "unit": text_of(r, "unit"), "recomputed": number_text(r.get("recomputed")),
          "exact": number_text(r.get("exact")), "cause": word_of(r.get("cause")),
          "sources": sources_of(r), "note": text_of(r, "note")}
