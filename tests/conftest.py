@@ -68,7 +68,19 @@ SLOW_FAMILIES = {
     "tests/test_cache.py::test_off_never_writes": "a paper's whole ledger, cold, in a process",
     "tests/test_cache.py::test_cache_clear": "a paper's whole ledger, cold, in a process",
     "tests/test_summary.py::test_ledger_halves_*": "the whole ledger, in two processes",
+    "tests/test_printed_tisserand.py::test_the_misprinted_cross_reference_*": "(5)'s square "
+    "judged twice, each a sympy series of a square root to fourth order",
 }
+# Single cases of a parametrized test (its id without parameters, then a part of the
+# parameters' id): the heavy rows of a family whose other rows are fast.
+SLOW_CASES = {
+    ("tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused",
+     "result.square-from-formula-5-"): "(5)'s square to fourth order, series of a square root",
+    ("tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused",
+     "eq.13-"): "(13): its printed form, then its reading, each judged by a sympy series",
+    ("tests/test_html_report.py::test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
+     "lecornu"): "every Lecornu row and claim matched to its place in 1,135 lines of text",
+}  # fmt: skip
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
@@ -78,8 +90,10 @@ SLOW_FIXTURES = {
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
-        family = item.nodeid.split("[", 1)[0]
+        family, _, params = item.nodeid.partition("[")
         reasons = [why for pattern, why in SLOW_FAMILIES.items() if fnmatch(family, pattern)]
+        reasons += [why for (test, part), why in SLOW_CASES.items()
+                    if family == test and part in params]  # fmt: skip
         names = getattr(item, "fixturenames", ())
         reasons += [why for name, why in SLOW_FIXTURES.items() if name in names]
         if reasons and item.get_closest_marker("slow") is None:
