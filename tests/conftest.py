@@ -17,7 +17,7 @@ settings.load_profile("pendcli")
 # starts: no test is served a result stored outside it (the user's ~/.cache/pendcli), nor one
 # an earlier test stored, which would make a test of determinism, of the forked workers or of
 # an interrupt compare a computation with a copy of itself. tests/test_cache.py gives each of
-# its tests a folder of its own.
+# its tests a folder of its own; the tests of an output's form share one (shared_result_cache).
 os.environ["PENDCLI_CACHE"] = "off"
 
 from fnmatch import fnmatch  # noqa: E402
@@ -62,24 +62,42 @@ SLOW_FAMILIES = {
     "tests/test_lecornu_extremes.py::test_largest_count_correctly_rounded": "mpmath zeros",
     "tests/test_charbonnier_extremes.py::test_quad_domain_is_measured": "a grid of quadratures",
     "tests/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
-    "tests/test_cache.py::test_a_changed_ledger_*": "a paper's whole ledger, cold, twice",
-    "tests/test_cache.py::test_an_unwritable_folder_*": "a paper's whole ledger, cold, twice",
-    "tests/test_cache.py::test_a_damaged_entry_*": "a paper's whole ledger, cold, in a process",
-    "tests/test_cache.py::test_off_never_writes": "a paper's whole ledger, cold, in a process",
-    "tests/test_cache.py::test_cache_clear": "a paper's whole ledger, cold, in a process",
     "tests/test_summary.py::test_ledger_halves_*": "the whole ledger, in two processes",
+    "tests/test_printed_tisserand.py::test_the_misprinted_cross_reference_*": "(5)'s square "
+    "judged twice, each a sympy series of a square root to fourth order",
 }
+# Single cases of a parametrized test (its id without parameters, then a part of the
+# parameters' id): the heavy rows of a family whose other rows are fast.
+SLOW_CASES = {
+    ("tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused",
+     "result.square-from-formula-5-"): "(5)'s square to fourth order, series of a square root",
+    ("tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused",
+     "eq.13-"): "(13): its printed form, then its reading, each judged by a sympy series",
+    ("tests/test_html_report.py::test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
+     "lecornu"): "every Lecornu row and claim matched to its place in 1,135 lines of text",
+}  # fmt: skip
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
 }
 
 
+@pytest.fixture(scope="session")
+def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
+    """A result cache folder shared by the tests of an output's form (its schema, filters,
+    layout), which set PENDCLI_CACHE to it: a paper's ledger is then computed once per
+    worker, not once per such test. A warm run prints the cold run's bytes in every format
+    (tests/test_cache.py); no test of a computation uses it."""
+    return str(tmp_path_factory.mktemp("shared-result-cache"))
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
-        family = item.nodeid.split("[", 1)[0]
+        family, _, params = item.nodeid.partition("[")
         reasons = [why for pattern, why in SLOW_FAMILIES.items() if fnmatch(family, pattern)]
+        reasons += [why for (test, part), why in SLOW_CASES.items()
+                    if family == test and part in params]  # fmt: skip
         names = getattr(item, "fixturenames", ())
         reasons += [why for name, why in SLOW_FIXTURES.items() if name in names]
         if reasons and item.get_closest_marker("slow") is None:

@@ -1,12 +1,13 @@
 """List the tests not marked ``slow`` that take over 2 s (issue 23), from ``--timings-file``.
 
-    python tests/durations.py TIMINGS [--limit 2] [--wall] [--top 20]
+    python tests/durations.py TIMINGS [--limit 2] [--wall] [--top 20] [--slow]
 
 A test's time is the sum of its phases (setup, call, teardown); a module fixture's work counts
 for the first test that asks for it, as it does in a run. By default the time is CPU seconds
 (the test process and the children it reaped), which a busy machine hardly moves; ``--wall``
 judges wall seconds instead, for a quiet machine. Exit status 1 when a test not marked ``slow``
 is over the limit (each named with its time), else 0. Nothing here limits a test while it runs.
+``--slow`` lists the slow tests' files and tests instead (where `make test-slow` spends).
 """
 
 from __future__ import annotations
@@ -42,12 +43,26 @@ def per_file(tests: dict[str, tuple[float, bool]]) -> dict[str, float]:
     return files
 
 
+def show(kind: str, tests: list[tuple[float, str]], key: str, top: int) -> None:
+    """The files and the tests of ``kind`` (fast or slow) that took longest."""
+    print(f"files by {key} seconds ({kind} tests only):")
+    files = per_file({t: (s, False) for s, t in tests})
+    for name, seconds in sorted(files.items(), key=lambda kv: -kv[1])[:top]:
+        print(f"  {seconds:7.2f}  {name}")
+    print(f"slowest {kind} tests by {key} seconds:")
+    for seconds, test in sorted(tests, reverse=True)[:top]:
+        print(f"  {seconds:7.2f}  {test}")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("timings", type=Path)
     parser.add_argument("--limit", type=float, default=2.0, help="seconds (default 2)")
     parser.add_argument("--wall", action="store_true", help="judge wall, not CPU, seconds")
     parser.add_argument("--top", type=int, default=15, help="files and tests to show")
+    parser.add_argument(
+        "--slow", action="store_true", help="show the tests marked slow (no limit applies)"
+    )
     args = parser.parse_args(argv)
     lines = read(args.timings)
     key = "wall" if args.wall else "cpu"
@@ -65,13 +80,8 @@ def main(argv: list[str] | None = None) -> int:
         if line["phase"] == "collect":
             print(f"  {line['test']}: start-up and collection {line['cpu']} s CPU, ", end="")
             print(f"{line['wall']} s wall")
-    print(f"files by {key} seconds (fast tests only):")
-    fast_files = per_file({t: (s, False) for s, t in fast})
-    for name, seconds in sorted(fast_files.items(), key=lambda kv: -kv[1])[: args.top]:
-        print(f"  {seconds:7.2f}  {name}")
-    print(f"slowest fast tests by {key} seconds:")
-    for seconds, test in sorted(fast, reverse=True)[: args.top]:
-        print(f"  {seconds:7.2f}  {test}")
+    for kind, chosen in (("slow", slow),) if args.slow else (("fast", fast),):
+        show(kind, chosen, key, args.top)
     over = sorted(((s, t) for s, t in fast if s > args.limit), reverse=True)
     for seconds, test in over:
         print(f"over {args.limit:g} s and not marked slow: {test} ({seconds:.2f} s {key})")

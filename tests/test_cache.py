@@ -7,7 +7,9 @@ from __future__ import annotations
 import json
 import multiprocessing
 import os
+import re
 import shutil
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -27,9 +29,48 @@ from pendcli.core.rows import ClaimRow, EquationRow, FormulaRow
 from pendcli.core.tables import clear_table_cache, tables_dir
 
 FORMATS = ("table", "json", "csv", "markdown")
-# charbonnier: the smallest ledger (a few seconds), enough to run every cached unit
+# charbonnier, with its ledger cut to one row of each kind (_small_tables): every cached unit
 EQUATIONS = ("equations", "-p", "charbonnier")
 REPRODUCE = ("reproduce", "-p", "charbonnier", "--equations", "--stability", "--notes")
+
+
+def _small_tables(root: Path) -> Path:
+    """A copy of tables/ in ``root`` whose Charbonnier ledger keeps the first row of each kind
+    (status and formula fields: holds, misprint with its reading, fails with its correction,
+    a definition, a check without a printed form), so that every field an equation row caches
+    is cached: what these tests are about, in about a tenth of the whole ledger's sympy."""
+    tables = root / "tables"
+    shutil.copytree(tables_dir(), tables)
+    path = tables / "equations" / "charbonnier.toml"
+    raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    kinds: dict[tuple[object, ...], dict[str, object]] = {}
+    for row in raw["equation"]:
+        kinds.setdefault((row["status"], *sorted(k for k in row if k in SHAPE)), row)
+    assert len(kinds) >= 5, kinds.keys()
+    parts = [_toml_table("[ledger]", raw["ledger"]), _toml_table("[symbols]", raw["symbols"])]
+    parts += [_toml_table("[[equation]]", row) for row in kinds.values()]
+    path.write_text("\n\n".join(parts) + "\n", encoding="utf-8")
+    return tables
+
+
+SHAPE = ("check", "reference", "printed", "reading_formula", "corrected_formula")
+
+
+def _toml_table(header: str, table: dict[str, object]) -> str:
+    # a JSON string, integer or list of integers is the same TOML value; keys bare where they
+    # may be (as the committed ledger writes them), else quoted ("E()")
+    lines = [f"{_key(k)} = {json.dumps(v, ensure_ascii=False)}" for k, v in table.items()]
+    return "\n".join([header, *lines])
+
+
+def _key(name: str) -> str:
+    return name if re.fullmatch(r"[A-Za-z0-9_-]+", name) else json.dumps(name)
+
+
+@pytest.fixture(scope="module")
+def small_tables(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """_small_tables, shared by the tests that only read it."""
+    return _small_tables(tmp_path_factory.mktemp("small"))
 
 
 def _entries(folder: Path) -> list[Path]:
@@ -51,8 +92,10 @@ def _refuse_to_compute(monkeypatch: pytest.MonkeyPatch) -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("command", [EQUATIONS, REPRODUCE], ids=["equations", "reproduce"])
-def test_a_warm_run_prints_the_cold_bytes_in_every_format(tmp_path, monkeypatch, command):
-    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+def test_a_warm_run_prints_the_cold_bytes_in_every_format(
+    tmp_path, monkeypatch, command, small_tables
+):
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache"), "PENDCLI_TABLES": str(small_tables)}
     cold = {f: invoke(*command, "-f", f, "--no-cache", env=env) for f in FORMATS}
     assert _entries(tmp_path / "cache") == []  # --no-cache neither reads nor writes
     first = invoke(*command, "-f", "json", env=env)
@@ -118,7 +161,7 @@ def test_the_parameters_and_the_tables_folder_are_in_the_key(tmp_path):
 
 
 def test_a_changed_ledger_is_recomputed_not_served_stale(tmp_path):
-    tables = _copy_tables(tmp_path)
+    tables = _small_tables(tmp_path)
     env = {"PENDCLI_CACHE": str(tmp_path / "cache"), "PENDCLI_TABLES": str(tables)}
     first = invoke(*EQUATIONS, "-f", "json", env=env)
     assert first.code == 0, first.err
@@ -133,8 +176,8 @@ def test_a_changed_ledger_is_recomputed_not_served_stale(tmp_path):
 
 
 @pytest.mark.parametrize("damage", ["truncated", "garbage", "empty", "other-json", "folder"])
-def test_a_damaged_entry_is_recomputed(tmp_path, damage):
-    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+def test_a_damaged_entry_is_recomputed(tmp_path, damage, small_tables):
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache"), "PENDCLI_TABLES": str(small_tables)}
     cold = invoke(*EQUATIONS, "-f", "json", env=env)
     entries = _entries(tmp_path / "cache")
     assert entries
@@ -159,9 +202,10 @@ def test_a_damaged_entry_is_recomputed(tmp_path, damage):
             assert json.loads(entry.read_bytes())["format"] == cache_module.FORMAT
 
 
-def test_off_never_writes(tmp_path):
+def test_off_never_writes(tmp_path, small_tables):
     home, xdg = tmp_path / "home", tmp_path / "xdg"
     env = {"PENDCLI_CACHE": "off", "HOME": str(home), "XDG_CACHE_HOME": str(xdg)}
+    env["PENDCLI_TABLES"] = str(small_tables)
     result = invoke(*EQUATIONS, "-f", "json", env=env)
     assert result.code == 0, result.err
     assert not home.exists() and not xdg.exists()
@@ -176,11 +220,12 @@ def test_where_the_cache_lives():
     assert cache_folder({}) == Path.home() / ".cache" / "pendcli"
 
 
-def test_an_unwritable_folder_still_computes_with_one_status_line(tmp_path):
+def test_an_unwritable_folder_still_computes_with_one_status_line(tmp_path, small_tables):
     blocker = tmp_path / "a-file"
     blocker.write_text("not a folder", encoding="utf-8")
-    env = {"PENDCLI_CACHE": str(blocker / "cache")}
-    fresh = invoke(*EQUATIONS, "-f", "json", "--no-cache")
+    tables = {"PENDCLI_TABLES": str(small_tables)}
+    env = {"PENDCLI_CACHE": str(blocker / "cache"), **tables}
+    fresh = invoke(*EQUATIONS, "-f", "json", "--no-cache", env=tables)
     result = invoke(*EQUATIONS, "-f", "json", env=env)
     assert (result.code, result.out) == (0, fresh.out)
     lines = [line for line in result.err.splitlines() if line.strip()]
@@ -239,8 +284,8 @@ def test_check_never_reads_the_cache(tmp_path, monkeypatch):
     assert calls == [] and _entries(tmp_path) == []
 
 
-def test_cache_clear(tmp_path):
-    env = {"PENDCLI_CACHE": str(tmp_path / "cache")}
+def test_cache_clear(tmp_path, small_tables):
+    env = {"PENDCLI_CACHE": str(tmp_path / "cache"), "PENDCLI_TABLES": str(small_tables)}
     invoke(*EQUATIONS, "-f", "json", env=env)
     count = len(_entries(tmp_path / "cache"))
     assert count

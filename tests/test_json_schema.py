@@ -123,8 +123,9 @@ def test_every_disagreement_is_explained():
             assert len(str(row["note"])) > 20, row["id"]
 
 
-def test_reproduce_equations_json_matches_the_schema():
-    # Charbonnier's ledger is the cheapest to run (under a second); the keys are the same.
+def test_reproduce_equations_json_matches_the_schema(monkeypatch, shared_result_cache):
+    # Charbonnier's ledger is the cheapest to run; the keys are the same.
+    monkeypatch.setenv("PENDCLI_CACHE", shared_result_cache)  # a test of the form, not values
     code, out, err = invoke("reproduce", "-f", "json", "--equations", "--paper", "charbonnier")
     assert code == 0, err
     doc = json.loads(out)

@@ -11,6 +11,7 @@ from collections import Counter
 from pathlib import Path
 
 import pytest
+from ledgers import committed_ledger
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import (
@@ -22,7 +23,6 @@ from pendcli.core.ledger import (
     coverage,
     evaluate,
     labels_in_text,
-    load_ledger,
     parse_ledger,
     run_check,
     verify,
@@ -57,7 +57,7 @@ def test_text_is_byte_for_byte_the_one_recorded(name: str) -> None:
 
 @pytest.mark.parametrize("paper", _papers())
 def test_every_printed_label_has_a_row(paper: str) -> None:
-    ledger = load_ledger(paper, TABLES)
+    ledger = committed_ledger(paper)
     printed = Counter(labels_in_text(ledger.text.read_text(encoding="utf-8")))
     have = ledger.labels()
     missing = {label: n - have[label] for label, n in printed.items() if have[label] < n}
@@ -73,7 +73,7 @@ def _rows() -> list[object]:
         pytest.param(row, id=row.id)
         for paper in _papers()
         if paper in present
-        for row in load_ledger(paper, TABLES).rows
+        for row in committed_ledger(paper).rows
     ]
 
 

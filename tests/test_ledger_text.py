@@ -7,9 +7,10 @@ import re
 from pathlib import Path
 
 import pytest
+from ledgers import committed_ledger
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, labels_in_text, load_ledger, parse_ledger
+from pendcli.core.ledger import LedgerRow, labels_in_text, parse_ledger
 from pendcli.core.text_blocks import blocks_covered, display_blocks
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -45,7 +46,7 @@ def _numbers(text: str) -> set[str]:
 
 
 def _rows() -> list[object]:
-    return [pytest.param(r, id=r.id) for p in PAPERS for r in load_ledger(p, TABLES).rows]
+    return [pytest.param(r, id=r.id) for p in PAPERS for r in committed_ledger(p).rows]
 
 
 @pytest.mark.parametrize("row", _rows())

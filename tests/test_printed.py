@@ -9,6 +9,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from ledgers import committed_ledger
 
 from pendcli.core.dimensions import check_dimensions
 from pendcli.core.errors import PendcliError
@@ -84,7 +85,7 @@ INCONSISTENT = {
 
 
 def _rows(paper: str) -> list[object]:
-    ledger = load_ledger(paper, TABLES)
+    ledger = committed_ledger(paper)
     return [pytest.param(ledger, r, id=r.id) for r in ledger.rows]
 
 
@@ -94,7 +95,7 @@ def _all() -> list[object]:
 
 @pytest.mark.parametrize("paper", sorted(TRANSCRIBED))
 def test_every_row_with_a_formula_has_its_printed_form(paper: str) -> None:
-    rows = load_ledger(paper, TABLES).rows
+    rows = committed_ledger(paper).rows
     missing = [r.id for r in rows if r.printed is None and r.id not in TRANSCRIBED[paper]]
     assert not missing, f"{paper}: rows without printed: {missing}"
 
@@ -222,7 +223,7 @@ def test_formulas_parse_with_declared_names_only() -> None:
 
 
 def _reference_rows() -> list[object]:
-    ledger = load_ledger("tisserand", TABLES)
+    ledger = committed_ledger("tisserand")
     return [pytest.param(ledger, r, id=r.id) for r in ledger.rows if r.reference]
 
 

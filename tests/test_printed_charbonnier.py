@@ -11,6 +11,7 @@ from pathlib import Path
 
 import mpmath
 import pytest
+from ledgers import committed_ledger
 
 from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
 from pendcli.core.ledger_coverage import ledger_text_coverage
@@ -22,7 +23,7 @@ TABLES = ROOT / "tables"
 
 
 def _reference_rows() -> list[object]:
-    ledger = load_ledger("charbonnier", TABLES)
+    ledger = committed_ledger("charbonnier")
     return [pytest.param(ledger, r, id=r.id) for r in ledger.rows if r.reference]
 
 
@@ -38,7 +39,7 @@ def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
 def test_every_block_is_covered_and_every_formula_row_has_a_reference() -> None:
     coverage = ledger_text_coverage("charbonnier")
     assert (coverage.blocks, coverage.covered) == (86, 86)
-    rows = load_ledger("charbonnier", TABLES).rows
+    rows = committed_ledger("charbonnier").rows
     checked = [r for r in rows if r.status in ("holds", "misprint", "fails") and r.printed]
     assert all(r.reference for r in checked), [r.id for r in checked if not r.reference]
     for row in rows:

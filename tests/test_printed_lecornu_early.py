@@ -8,6 +8,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from ledgers import committed_ledger
 
 from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
 from pendcli.core.printed import Formula, parse_formula
@@ -21,7 +22,7 @@ LAST_LINE = 698
 
 
 def _early_rows() -> list[LedgerRow]:
-    return [r for r in load_ledger("lecornu", TABLES).rows if r.lines and r.lines[0] <= LAST_LINE]
+    return [r for r in committed_ledger("lecornu").rows if r.lines and r.lines[0] <= LAST_LINE]
 
 
 def _referenced() -> list[object]:
@@ -30,7 +31,7 @@ def _referenced() -> list[object]:
 
 @pytest.mark.parametrize("row", _referenced())
 def test_the_computed_status_is_the_recorded_one(row: LedgerRow) -> None:
-    symbols = load_ledger("lecornu", TABLES).symbols_for(row)
+    symbols = committed_ledger("lecornu").symbols_for(row)
     computed, problem = verify_printed(row, symbols, CHECKS)
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")

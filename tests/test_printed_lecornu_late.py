@@ -9,6 +9,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from ledgers import committed_ledger
 
 from pendcli.core.dimensions import check_dimensions
 from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, load_ledger, verify_printed
@@ -27,7 +28,7 @@ NO_REFERENCE: set[str] = set()
 
 
 def _late_rows() -> list[LedgerRow]:
-    return [r for r in load_ledger("lecornu", TABLES).rows if r.lines and r.lines[0] >= FIRST]
+    return [r for r in committed_ledger("lecornu").rows if r.lines and r.lines[0] >= FIRST]
 
 
 def _params(rows: list[LedgerRow]) -> list[object]:
@@ -46,7 +47,7 @@ def test_every_checked_row_has_a_reference() -> None:
 
 @pytest.mark.parametrize("row", _params([r for r in _late_rows() if r.reference]))
 def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row: LedgerRow) -> None:
-    ledger = load_ledger("lecornu", TABLES)
+    ledger = committed_ledger("lecornu")
     computed, problem = verify_printed(row, ledger.symbols_for(row), CHECKS)
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
@@ -121,12 +122,12 @@ def test_a_changed_coefficient_stops_a_row_holding(
 
 
 def _printed_line(row_id: str) -> str:
-    row = next(r for r in load_ledger("lecornu", TABLES).rows if r.id == row_id)
+    row = next(r for r in committed_ledger("lecornu").rows if r.id == row_id)
     return f"printed = '{row.printed}'"
 
 
 def _reading_line(row_id: str) -> str:
-    row = next(r for r in load_ledger("lecornu", TABLES).rows if r.id == row_id)
+    row = next(r for r in committed_ledger("lecornu").rows if r.id == row_id)
     return f"printed = '{row.reading_formula}'"
 
 
@@ -155,7 +156,7 @@ def test_a_misprint_whose_printed_form_is_its_reading_is_refused(
 
 def _symbols() -> dict[str, str]:
     """The symbols of these lines (the scope from (30) on included)."""
-    ledger = load_ledger("lecornu", TABLES)
+    ledger = committed_ledger("lecornu")
     return ledger.symbols_for(next(r for r in ledger.rows if r.lines and r.lines[0] >= FIRST))
 
 
@@ -184,7 +185,9 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
     import mpmath
 
     a, b, g, c = (mpmath.mpf(x) for x in ("1", "0.3", "9.81", "0.4"))
-    with mpmath.workdps(25):
+    # 15 digits: the reading's residual along the solution is then ~1e-14, the printed form's
+    # ~87; at 25 digits the Taylor integrator took 4 s of CPU for the same verdict
+    with mpmath.workdps(15):
 
         def rhs(t: object, y: list[object]) -> list[object]:
             theta, dtheta = y
@@ -206,7 +209,7 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
         )
         as_printed = length * d2theta + 2 * dtheta + tail
         as_read = length * d2theta / b**2 + 2 * dtheta / b + tail
-    assert abs(as_read) < 1e-15 < 1e-3 < abs(as_printed)
+    assert abs(as_read) < 1e-12 < 1e-3 < abs(as_printed)
 
 
 def test_the_trajectory_after_52_has_its_arctangent_argument_inverted() -> None:

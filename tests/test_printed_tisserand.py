@@ -12,9 +12,10 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from ledgers import committed_ledger
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, equation_rows, load_ledger, verify_printed
+from pendcli.core.ledger import LedgerRow, equation_rows, verify_printed
 from pendcli.core.ledger_formulas import row_formula
 from pendcli.papers.registry import paper as registered_paper
 from pendcli.papers.tisserand import equations as TISSERAND
@@ -24,7 +25,7 @@ TABLES = ROOT / "tables"
 
 
 def _ledger() -> tuple[dict[str, LedgerRow], dict[str, str]]:
-    ledger = load_ledger("tisserand", TABLES)
+    ledger = committed_ledger("tisserand")
     return {r.id: r for r in ledger.rows}, dict(ledger.symbols)
 
 

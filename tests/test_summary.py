@@ -63,11 +63,12 @@ def test_only_failing_keeps_just_what_does_not_hold():
     assert "Summary: printed numbers" in text
 
 
-def test_equations_command_lists_each_label_and_filters_by_status():
+def test_equations_command_lists_each_label_and_filters_by_status(monkeypatch, shared_result_cache):
     import json
 
     from cli_helpers import assert_clean_error, invoke
 
+    monkeypatch.setenv("PENDCLI_CACHE", shared_result_cache)  # the ledger once, then filtered
     code, out, err = invoke("equations", "--paper", "charbonnier")
     assert code == 0, err
     for label in [f"({n})" for n in range(1, 10)] + ["(p)", "(q)"]:

@@ -34,8 +34,10 @@ COMMANDS = [
 ]
 
 
-def _render(args, width, monkeypatch):
+def _render(args, width, monkeypatch, cache):
+    # a command's rows computed at the first width, read back at the others (conftest.py)
     monkeypatch.setenv("COLUMNS", str(width))
+    monkeypatch.setenv("PENDCLI_CACHE", str(cache))
     code, out, err = invoke(*args)
     assert code == 0, err
     return out
@@ -43,10 +45,10 @@ def _render(args, width, monkeypatch):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("args", COMMANDS, ids=" ".join)
-def test_no_token_is_cut_at_80_or_120_columns(args, monkeypatch):
-    whole = set(_render(args, 1000, monkeypatch).split())
+def test_no_token_is_cut_at_80_or_120_columns(args, monkeypatch, shared_result_cache):
+    whole = set(_render(args, 1000, monkeypatch, shared_result_cache).split())
     for width in (80, 120):
-        out = _render(args, width, monkeypatch)
+        out = _render(args, width, monkeypatch, shared_result_cache)
         cut = [t for t in out.split() if t not in whole and t.strip("─?")]
         assert not cut, f"{width} columns: {cut[:10]}"
         wide = [line for line in out.splitlines() if len(line) > width]

@@ -57,6 +57,7 @@ def parse_dimension(where: str, text: str) -> dict[str, Any]:
     return {k: v for k, v in out.items() if v != 0}
 
 
+@cache  # a ledger names ~100 exponents ("-2", "1/2"); sympify parses each in ~5 ms
 def _power(text: str) -> Any:
     import sympy as sp
 
