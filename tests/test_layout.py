@@ -40,3 +40,24 @@ def test_every_paper_has_its_own_folder() -> None:
         folder = ROOT / "pendcli" / "papers" / key
         for part in ("__init__", "model", "claims", "formulas", "speed", "stability"):
             assert (folder / f"{part}.py").is_file(), f"{key} has no {part}.py"
+
+
+def test_the_star_imported_reference_modules_name_nothing_twice() -> None:
+    """lecornu/equations.py star-imports its reference modules: a name two of them define
+    would silently take the later one's meaning (a19's and b19's reference_elongation_condition
+    did, and (12) was judged against (23)'s condition)."""
+    import ast
+    import importlib
+
+    source = (ROOT / "pendcli" / "papers" / "lecornu" / "equations.py").read_text()
+    starred, explicit = [], []
+    for node in ast.parse(source).body:
+        if isinstance(node, ast.ImportFrom) and node.module:
+            names = [a.name for a in node.names]
+            (starred.append(node.module) if names == ["*"] else explicit.extend(names))
+    assert len(starred) >= 2
+    seen: dict[str, str] = {name: "equations.py" for name in explicit}
+    for module in starred:
+        for name in importlib.import_module(module).__all__:
+            assert name not in seen, f"{name} is exported by {module} and {seen[name]}"
+            seen[name] = module

@@ -1278,7 +1278,7 @@ __all__ += [
     "reference_area",
     "reference_areal",
     "reference_compound_motion",
-    "reference_elongation_condition",
+    "reference_elongations_of_12",
     "reference_eq6",
     "reference_eq13",
     "reference_first_member_13",
@@ -1470,7 +1470,7 @@ def _elongation_roots(count: int) -> list[Any]:
     return _roots_of("bessel", "tangent", 0.5, 100)[:count]
 
 
-def reference_elongation_condition() -> Any:
+def reference_elongations_of_12() -> Any:
     """(12) and lines 170-178 at the first three elongations of θl = φ (θ = gφ/(b²x)
     stationary, _elongation_roots): dθ = θ'(x)dx, dl/dx = b²/g."""
     import sympy as sp

@@ -1008,5 +1008,8 @@ def reference_third_approximation() -> Any:
 
     base = reference_in_kpt_order_4()
     r = sp.Rational
+    # an inequality holds only over the range stated: small amplitudes (the scale s of the
+    # series) and τ over (0, π) but its zero π/2, where the quotient is continued
     domain = {"u0": (r(1, 2), r(7, 10)), "u1": (r(1, 10), r(3, 10))}
+    domain.update(s=(r(1, 100), r(1, 10)), tau=(r(1, 10), r(3)))
     return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
