@@ -63,16 +63,26 @@ SLOW_FAMILIES = {
     "tests/test_charbonnier_extremes.py::test_quad_domain_is_measured": "a grid of quadratures",
     "tests/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
     "tests/test_summary.py::test_ledger_halves_*": "the whole ledger, in two processes",
+    "tests/test_equations_tisserand.py::test_resals_rate_*": "two ODE integrations of the "
+    "apsidal motion and the series of the motion to fifth order",
     "tests/test_printed_tisserand.py::test_the_misprinted_cross_reference_*": "(5)'s square "
     "judged twice, each a sympy series of a square root to fourth order",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.
+LATE_STATUS = (
+    "tests/test_printed_lecornu_late.py::"
+    "test_the_status_computed_from_the_printed_form_is_the_recorded_one"
+)
 SLOW_CASES = {
     ("tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused",
      "result.square-from-formula-5-"): "(5)'s square to fourth order, series of a square root",
     ("tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused",
      "eq.13-"): "(13): its printed form, then its reading, each judged by a sympy series",
+    ("tests/test_printed_lecornu_early.py::test_the_computed_status_is_the_recorded_one",
+     "lecornu.result.half_period_root"): "its printed form judged by a sympy series (3-4 s)",
+    **{(LATE_STATUS, f"lecornu.result.{r}]"): "its printed form judged by a sympy series (3-4 s)"
+       for r in ("am_series", "arctg_series", "trajectory_after_52")},
     ("tests/test_html_report.py::test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
      "lecornu"): "every Lecornu row and claim matched to its place in 1,135 lines of text",
 }  # fmt: skip
