@@ -278,6 +278,15 @@ UNCONFIRMED = {
     "lecornu.result.area_small_angle": "the row writes out the approximation the text names",
     "charbonnier.result.amplitude": "« cos kt ne diffère de -1 »: the sentence's cos kt",
     "charbonnier.result.i0-i-1": "∫ dx: the integrand 1 the row writes, the TeX leaves implicit",
+    # d19: sentences the row writes as the formula (or the sign) they assert
+    "charbonnier.result.sine-to-arc": "« le sinus pourra être réduit à l'arc »: sin θ = θ",
+    "charbonnier.result.rise-equals-descent": "« l'arc de remontée est égal »: θ = α at T",
+    "charbonnier.result.work-positive": "« toujours positive »: E_s > 0",
+    "charbonnier.result.es-symmetry": "« un axe de symétrie »: the symmetry written out",
+    "charbonnier.result.period-constant-resistance": "« Il en est de même »: E_c(π) = 0",
+    "charbonnier.result.i-at-pi": "« I_0 devient égal à 2 »: I(0, π) = 2",
+    "charbonnier.result.friction-independent": "« Δx est indépendant »: its derivatives",
+    "charbonnier.result.infinite-count": "« P devient infini »: the decay written out",
 }
 
 
