@@ -285,6 +285,15 @@ UNCONFIRMED = {
     # n19: printed numbers in words, a product written as a double factorial
     "tisserand.result.displacement": "« un cinquième de millimètre »: words, the row's mm/5",
     "charbonnier.result.in-pi": "2·4…n/(1·3·5…(n+1)): the row's factorial2(n)/factorial2(n+1)",
+    # d19: sentences the row writes as the formula (or the sign) they assert
+    "charbonnier.result.sine-to-arc": "« le sinus pourra être réduit à l'arc »: sin θ = θ",
+    "charbonnier.result.rise-equals-descent": "« l'arc de remontée est égal »: θ = α at T",
+    "charbonnier.result.work-positive": "« toujours positive »: E_s > 0",
+    "charbonnier.result.es-symmetry": "« un axe de symétrie »: the symmetry written out",
+    "charbonnier.result.period-constant-resistance": "« Il en est de même »: E_c(π) = 0",
+    "charbonnier.result.i-at-pi": "« I_0 devient égal à 2 »: I(0, π) = 2",
+    "charbonnier.result.friction-independent": "« Δx est indépendant »: its derivatives",
+    "charbonnier.result.infinite-count": "« P devient infini »: the decay written out",
 }
 
 

@@ -581,7 +581,14 @@ def reference_air_points() -> Reference:
     """n° 13: the remarkable points for F(v) = q0 + q1v + q2v² (E of kt), through c."""
     (c,) = _ledger("c")
     exact = _air(phase=True)
-    return Reference(exact, scale=c, order=2, transform=_along_the_arc(), what="F in the air")
+    return Reference(
+        exact,
+        scale=c,
+        order=2,
+        domain=_positive_air_domain(),
+        transform=_along_the_arc(),
+        what="F in the air",
+    )
 
 
 def _monomial(phase: bool, power: Any = None) -> dict[str, Any]:
@@ -693,7 +700,19 @@ def reference_air_first_oscillation() -> Reference:
 
     base = reference_air()
     domain = {"t": (sp.Rational(1, 10), sp.Integer(3)), "k": (sp.Rational(1, 2), sp.Integer(1))}
+    domain.update(_positive_air_domain())
     return Reference(base.exact, domain=domain, transform=base.transform, what=base.what)
+
+
+def _positive_air_domain() -> dict[str, tuple[Any, Any]]:
+    """The range over which n° 12-13's signs are asserted: an amplitude, a length and a
+    resistance F = q0 + q1v + q2v² with positive q's (as n° 11 assumes), a small c."""
+    import sympy as sp
+
+    positive = (sp.Rational(1, 10), sp.Rational(1, 2))
+    domain = dict.fromkeys(("alpha", "l0", "q0", "q1", "q2"), positive)
+    domain.update(k=(sp.Rational(1, 2), sp.Integer(1)), c=(sp.Rational(1, 100), sp.Rational(1, 20)))
+    return domain
 
 
 def reference_friction_in_g_and_t() -> Reference:
