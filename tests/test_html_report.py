@@ -276,6 +276,7 @@ UNCONFIRMED = {
     "lecornu.result.osculating_derivatives": "∂θ/∂u spelt th_u: no atom in common",
     "lecornu.result.phase_derivatives": "a sentence whose formula the ledger writes out",
     "lecornu.result.area_small_angle": "the row writes out the approximation the text names",
+    "lecornu.result.inflection_at_vertical": "« une inflexion »: a sentence, no formula (a19)",
     "charbonnier.result.amplitude": "« cos kt ne diffère de -1 »: the sentence's cos kt",
     "charbonnier.result.i0-i-1": "∫ dx: the integrand 1 the row writes, the TeX leaves implicit",
 }
