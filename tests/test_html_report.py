@@ -278,6 +278,7 @@ UNCONFIRMED = {
     # l²θ² dφ/dt = l² sin²θ dφ/dt + …, which no formula of its lines prints: its nearest
     # formula shares 0.44 of its atoms (< NEAR), so it is marked at the first formula there
     "lecornu.result.area_small_angle": "the row writes out the approximation the text names",
+    "lecornu.result.inflection_at_vertical": "« une inflexion »: a sentence, no formula (a19)",
     # cos kt = −1 is printed half as TeX, half as prose (« $\cos kt$ ne diffère de -1 »): the
     # mark is on the $\cos kt$, a prose mark cannot reach into a formula, and the -1 of the
     # prose is not in the marked TeX the digit check reads
