@@ -1279,6 +1279,7 @@ __all__ += [
     "reference_areal",
     "reference_compound_motion",
     "reference_elongations_of_12",
+    "reference_amplitude_j0",
     "reference_eq6",
     "reference_eq13",
     "reference_first_member_13",
@@ -1488,6 +1489,25 @@ def reference_elongations_of_12() -> Any:
     }
     cases = tuple({"x": _float40(r)} for r in _elongation_roots(3))
     return _reference(exact, "the elongations of θl = φ", each_case=cases)
+
+
+def reference_amplitude_j0() -> Any:
+    """Lines 234-236: θ = φ/l at the maxima, the same elongations (φ − xφ' = 0, i.e. J₂(z) = 0
+    with z = 2√x, where 2J₁(z)/z = J₀(z)); l = (b²/g)x; lengths in metres (the memoir's φ is
+    a pure number « multipliée par une constante arbitraire », line 160, here one metre)."""
+    import sympy as sp
+
+    x, b, g = _symbols("x", "b", "g")
+    phi = _phi(x)
+    exact = {
+        "varphi": phi,
+        "theta": g * phi / (b**2 * x),
+        "l": b**2 * x / g,
+        "z": 2 * sp.sqrt(x),
+        "metre": sp.Integer(1),
+    }
+    cases = tuple({"x": _float40(r)} for r in _elongation_roots(3))
+    return _reference(exact, "θl = φ of (10) at its elongations", each_case=cases)
 
 
 def reference_eq13() -> Any:
