@@ -279,9 +279,6 @@ UNCONFIRMED = {
     # formula shares 0.44 of its atoms (< NEAR), so it is marked at the first formula there
     "lecornu.result.area_small_angle": "the row writes out the approximation the text names",
     "lecornu.result.inflection_at_vertical": "« une inflexion »: a sentence, no formula (a19)",
-    # b19: the m of line 519 (\overline{m+1}) is the ledger's m23, a name the matcher
-    # cannot read as the text's m
-    "lecornu.result.oscillation_time_increase": "the text's m spelt m23 (b19)",
     # cos kt = −1 is printed half as TeX, half as prose (« $\cos kt$ ne diffère de -1 »): the
     # mark is on the $\cos kt$, a prose mark cannot reach into a formula, and the -1 of the
     # prose is not in the marked TeX the digit check reads

@@ -1559,7 +1559,7 @@ def reference_next_passage() -> Any:
     eps = sp.Symbol("eps_", positive=True)
     phi = _phase_at(length, lam * sp.pi)
     following = b**2 / (4 * g) * (phi + (lam + 1) * sp.pi) ** 2  # (22)'s argument (λ + 1)π
-    exact = {"lp": following.subs(b, eps * b), "b": eps * b, "m23": lam}
+    exact = {"lp": following.subs(b, eps * b), "b": eps * b, "mm": lam}
     exact["phi"] = phi.subs(b, eps * b)
     return _reference(
         exact,
