@@ -1129,6 +1129,9 @@ def reference_quadrature() -> Any:
     domain = {
         "aa": (sp.Rational(11, 10), sp.Rational(3, 2)),
         "hh": (sp.Rational(22, 10), sp.Rational(29, 10)),
+        # x stated, not left to the default: an inequality holds only over a stated range
+        # (line 442's: 2a√x < h, here at most 2·1,5·√0,5 = 2,12 < 2,2)
+        "x": (sp.Rational(1, 10), sp.Rational(1, 2)),
     }
     return _reference({}, "quadrature", domain=domain)
 
