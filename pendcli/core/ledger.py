@@ -419,27 +419,45 @@ def row_printed_status(
     """The status ``row``'s printed form earns against its reference (a function of
     ``checks``) and why, computed once per row and symbol table: a paper's check of a row
     whose status rests on its printed form asks the same question as the ledger's own check."""
+    from pendcli.core.tables import tables_dir
+
     assert row.reference is not None
-    return _printed_status(row, tuple(sorted(symbols.items())), checks)
+    # keyed on the tables folder too: a reference may read the published numbers
+    return _printed_status(row, tuple(sorted(symbols.items())), checks, str(tables_dir()))
 
 
 @cache
 def _printed_status(
-    row: LedgerRow, symbols: tuple[tuple[str, str], ...], checks: ModuleType | None
+    row: LedgerRow, symbols: tuple[tuple[str, str], ...], checks: ModuleType | None, tables: str
 ) -> tuple[str | None, str]:
     assert row.reference is not None
-    return printed_status(row, dict(symbols), _reference(checks, row.paper, row.reference))
+    reference = _reference(checks, row.paper, row.reference, tables)
+    return printed_status(row, dict(symbols), reference)
 
 
 @cache
-def _reference(checks: ModuleType | None, paper: str, name: str) -> Reference:
-    # one Reference per name, shared by every row that cites it (building one can take a
-    # second of sympy: solving, integrating, expanding)
+def _reference(checks: ModuleType | None, paper: str, name: str, tables: str) -> Reference:
+    # one Reference per name and tables folder, shared by every row that cites it (building
+    # one can take a second of sympy: solving, integrating, expanding)
     function = getattr(checks, name, None)
     if not callable(function):
         raise PendcliError(f"pendcli.papers.{paper}.equations has no {name!r}")
     result: Reference = function()
     return result
+
+
+def _clear_reference_caches() -> None:
+    _printed_status.cache_clear()
+    _reference.cache_clear()
+
+
+def _register_reference_caches() -> None:
+    from pendcli.core.tables import on_table_change
+
+    on_table_change(_clear_reference_caches)
+
+
+_register_reference_caches()
 
 
 def equation_rows(

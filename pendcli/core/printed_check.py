@@ -476,7 +476,11 @@ _FLOOR = 10.0 ** -(_DIGITS + 8)
 def _size_at(expr: Any, free: list[Any], point: dict[Any, Any]) -> Any:
     """The size of ``expr`` at ``point``: the value of ``expr`` with every sum a sum of
     absolute values (ε·(a − b) has size |ε|·(|a| + |b|), the scale its cancellation is on)."""
-    return abs(_evaluator(_magnitude(expr), free)(point))
+    import sympy as sp
+
+    size = abs(_evaluator(_magnitude(expr), free)(point))
+    # a size with an unevaluated function in it (a transform's F0_): the absolute tolerance
+    return size if getattr(size, "is_comparable", False) else sp.Integer(1)
 
 
 def _magnitude(expr: Any) -> Any:

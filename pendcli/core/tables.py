@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import os
 import tomllib
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -261,8 +261,20 @@ def load_paper_table(key: str, root: Path | None = None) -> PaperTable:
 
 
 def clear_table_cache() -> None:
-    """Forget every table read (after a table file or ``$PENDCLI_TABLES`` changes)."""
+    """Forget every table read (after a table file or ``$PENDCLI_TABLES`` changes), and what
+    was computed from them (the ledger's references, which may read the published numbers)."""
     _cached_table.cache_clear()
+    for clear in _DEPENDENT_CACHES:
+        clear()
+
+
+# cache_clear of the caches computed from the tables (registered by their modules)
+_DEPENDENT_CACHES: list[Callable[[], None]] = []
+
+
+def on_table_change(clear: Callable[[], None]) -> None:
+    """Have :func:`clear_table_cache` call ``clear`` too."""
+    _DEPENDENT_CACHES.append(clear)
 
 
 @cache
