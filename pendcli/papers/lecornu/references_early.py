@@ -1278,11 +1278,11 @@ def reference_successive_elongations() -> Any:
 # --- a19: the references of the rows of lines 1-420 that had none (issue 19) ----------------
 
 __all__ += [
+    "reference_amplitude_j0",
     "reference_area",
     "reference_areal",
     "reference_compound_motion",
     "reference_elongations_of_12",
-    "reference_amplitude_j0",
     "reference_eq6",
     "reference_eq13",
     "reference_first_member_13",
