@@ -329,3 +329,47 @@ def test_cases_judge_each_equation_against_its_own_reference() -> None:
     assert formula_passes(formula, both)[0]
     assert not formula_passes(formula, dataclasses.replace(both, cases=(odd, even)))[0]
     assert not formula_passes(formula, even)[0] and not formula_passes(formula, odd)[0]
+
+
+# --- any holds row, not only the hand-picked ones: a number of its printed form changed ----
+
+_NUMBER = re.compile(r"(?<![A-Za-z_0-9.])\d+(?:\.\d+)?(?![A-Za-z_0-9])")
+
+
+def _holds_rows_with_a_number() -> list[tuple[str, LedgerRow]]:
+    # an inequality is left out: loosening its bound (Δθ'_m < 0 -> < 1) is still true
+    return [
+        (paper, row)
+        for paper in ("tisserand", "charbonnier", "lecornu")
+        for row in committed_ledger(paper).rows
+        if row.status == "holds" and row.reference and row.printed
+        and _NUMBER.search(row.printed) and not re.search("[<>]", row.printed)
+    ]  # fmt: skip
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", range(24))
+def test_a_random_number_of_a_random_holds_row_changed_stops_it_holding(seed: int) -> None:
+    """The issue's test, on rows nobody picked: a seeded random holds row, one of its printed
+    numbers changed by one in its last digit, no longer holds (60 such changes tried by hand
+    on 2026-12-02: every one refused)."""
+    import dataclasses
+    import importlib
+    import random
+
+    from pendcli.core.ledger_formulas import printed_status
+
+    generator = random.Random(seed)
+    rows = _holds_rows_with_a_number()
+    assert len(rows) > 150
+    paper, row = generator.choice(rows)
+    assert row.printed is not None and row.reference is not None
+    number = generator.choice(list(_NUMBER.finditer(row.printed)))
+    text = number.group(0)
+    changed = text[:-1] + str((int(text[-1]) + 1) % 10) if "." in text else str(int(text) + 1)
+    printed = row.printed[: number.start()] + changed + row.printed[number.end() :]
+    mutant = dataclasses.replace(row, printed=printed)
+    checks = importlib.import_module(f"pendcli.papers.{paper}.equations")
+    symbols = committed_ledger(paper).symbols_for(mutant)
+    status, why = printed_status(mutant, symbols, getattr(checks, row.reference)())
+    assert status != "holds", f"{row.id}: {text} -> {changed} at {number.start()}: {why}"
