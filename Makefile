@@ -95,8 +95,8 @@ lint: $(STAMP)
 	$(BIN)/ruff format --check pendcli tests
 	$(BIN)/mypy pendcli
 
-bench: $(RUNTIME)
-	$(BIN)/python -m pendcli.bench --write docs/benchmarks.md
+bench: $(STAMP)
+	$(BIN)/python -m pendcli.bench --write docs/benchmarks.md --summary README.md
 
 # The API page (docs/api/pendcli.html): pdoc over the names `import pendcli` offers. They load
 # lazily, so they are fetched first (pdoc reads the module's __dict__).

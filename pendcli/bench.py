@@ -78,6 +78,9 @@ def _timed(cmd: list[str], env: dict[str, str] | None = None) -> tuple[float, fl
     off unless ``env`` names one."""
     variables = {**os.environ, "NO_COLOR": "1", "COLUMNS": "100", "PENDCLI_CACHE": "off"}
     variables.update(env or {})
+    # As a user runs it: bytecode written and read. Where PYTHONDONTWRITEBYTECODE is set every
+    # run would compile sympy and scipy from source again (4 s of B's 6 s on this machine).
+    variables.pop("PYTHONDONTWRITEBYTECODE", None)
     start = time.perf_counter()
     # A session of its own: a Ctrl-C stops this run (which then kills the child), not the
     # child first, whose failure would read as a broken command.
@@ -598,21 +601,30 @@ def run(
     readme: Path | None = None,
     floor: bool | None = None,
     floor_runs: int = 3,
+    summary: Path | None = None,
+    checkout: bool | None = None,
 ) -> str:
     """Every measurement, one after the other (never two at once), as the README section.
 
-    The measured tables, their date and (``readme``, when it has the markers) the README are
-    written together at the end (:func:`pendcli.core.files.write_set`): a run stopped before
-    leaves all of them as they were. The cost-growth table (minutes) is left out of a
-    ``quick`` run unless ``growth`` asks, and so is the floor table (minutes: every
-    equation checked ``floor_runs`` + 1 times) unless ``floor`` asks.
+    The measured tables, their date, (``readme``, when it has the markers) docs/benchmarks.md
+    and (``summary``) the README's timings block are written together at the end
+    (:func:`pendcli.core.files.write_set`): a run stopped before leaves all of them as they
+    were. The cost-growth table (minutes) is left out of a ``quick`` run unless ``growth``
+    asks, and so are the floor table (minutes: every equation checked ``floor_runs`` + 1
+    times) unless ``floor`` asks, and the suite and install timings unless ``checkout`` asks.
     """
+    from pendcli import bench_summary
     from pendcli.core.files import write_set
 
     growth = not quick if growth is None else growth
     floor = not quick if floor is None else floor
+    checkout = not quick if checkout is None else checkout
+    load_before = os.getloadavg()[0]
     times = startup_times(runs)
     floored = floor_times(floor_runs) if floor else None
+    root_dir = bench_summary.checkout_root() if checkout else None
+    suite = bench_summary.suite_time(root_dir) if root_dir else None
+    install = bench_summary.install_time(root_dir) if root_dir else None
     costs = {
         "--help": import_costs(["--help"]),
         "reproduce --format json": import_costs(["reproduce", "--format", "json", "--quiet"]),
@@ -620,13 +632,79 @@ def run(
     peers = peer_ratios(quick)
     sized = growth_rows(quick) if growth else []
     measured = measure_tables(quick) if tables else committed_tables(root)
+    load = (load_before, os.getloadavg()[0])
     text = section(times, costs, measured, runs, peers, sized, floored, floor_runs)
+    heads = headlines(times, floored, suite, install)
+    tag = bench_summary.measurement_tag([text, *map(str, heads)])
+    text = _tagged(text, tag, load, heads)
     files: dict[Path, str | bytes | None] = {**table_files(measured, root)} if tables else {}
     new_readme = with_section(readme, text) if readme is not None else None
     if new_readme is not None and readme is not None:
         files[readme] = new_readme
+    if summary is not None and summary.is_file():
+        block = bench_summary.summary_lines(heads, tag, load)
+        new_summary = bench_summary.with_summary(summary.read_text("utf-8"), block)
+        if new_summary is not None:
+            files[summary] = new_summary
     write_set(files)
     return text
+
+
+def _tagged(text: str, tag: str, load: tuple[float, float], heads: list[Any]) -> str:
+    """The section with its measurement tag, the machine's load, and the suite and install."""
+    from pendcli import bench_summary
+
+    extra = [h for h in heads if h.what.startswith(("`make test`", "install"))]
+    lines = [
+        f"Measurement `{tag}` (the README's timings block carries the same tag); one-minute "
+        f"load average {load[0]:.2f} at the start, {load[1]:.2f} at the end (2 cores: a load "
+        "above 1 slows every figure).",
+        "",
+    ]
+    if extra:
+        lines += [*bench_summary.summary_lines(extra, tag)[2:], ""]
+    head, _, rest = text.partition("\n\n")
+    return "\n".join([head, "", *lines, rest])
+
+
+def headlines(
+    times: dict[str, float],
+    floor: FloorTimes | None,
+    suite: tuple[float, float] | None,
+    install: tuple[float, float] | None,
+) -> list[Any]:
+    """The figures the README states, each with its ratio and target, from this run."""
+    from pendcli.bench_summary import INSTALL_TARGET, SUITE_TARGET, Headline
+
+    def met(value: float, target: float, unit: str = "x") -> str:
+        return f"<= {target:g}{unit} ({'met' if value <= target else 'missed'})"
+
+    help_r = times["pendcli --help"] / times["import typer"]
+    scipy = times["import scipy.special, scipy.integrate"]
+    repro_r = times["pendcli reproduce --format json"] / scipy
+    heads = [
+        Headline("`pendcli --help`", times["pendcli --help"], None,
+                 f"wall {help_r:.2f}x `import typer`", met(help_r, HELP_TARGET)),
+        Headline("`pendcli reproduce --format json`", times["pendcli reproduce --format json"],
+                 None, f"wall {repro_r:.2f}x the scipy import", met(repro_r, REPRODUCE_TARGET)),
+    ]  # fmt: skip
+    for label, (reference, measure, target) in FLOOR_TARGETS.items() if floor else ():
+        assert floor is not None
+        if reference != FLOOR:
+            continue
+        ref = floor[reference, ""][0 if measure == "wall" else 1]
+        for mode in ("cold", "warm"):
+            wall, cpu = floor[label, mode]
+            ratio = (wall if measure == "wall" else cpu) / ref
+            heads.append(Headline(f"`{label}`, {mode}", wall, cpu,
+                                  f"{measure} {ratio:.2f}x B", met(ratio, target)))  # fmt: skip
+    if suite is not None:
+        what = "`make test` (the fast suite)"
+        heads.append(Headline(what, *suite, "", met(suite[0], SUITE_TARGET, " s wall")))
+    if install is not None:
+        what = "install from nothing (`make reproduce`'s venv)"
+        heads.append(Headline(what, *install, "", met(install[0], INSTALL_TARGET, " s wall")))
+    return heads
 
 
 def committed_tables(root: Path | None = None) -> dict[str, list[Point]]:
@@ -653,6 +731,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--floor-runs", type=int, default=3, help="runs per import-floor command (median)"
     )
+    parser.add_argument("--summary", type=Path, help="README whose timings block to update")
+    parser.add_argument(
+        "--no-checkout", action="store_true", help="skip timing the test suite and the install"
+    )
     args = parser.parse_args(argv)
     growth = False if args.no_growth else None
     floor = False if args.no_floor else None
@@ -665,6 +747,8 @@ def main(argv: list[str] | None = None) -> int:
         args.write,
         floor,
         args.floor_runs,
+        args.summary,
+        False if args.no_checkout else None,
     )
     if args.write is not None and with_section(args.write, text) is not None:
         print(f"bench: updated {args.write}", file=sys.stderr)

@@ -458,8 +458,8 @@ EquationsOption = Annotated[
     bool | None,
     typer.Option(
         "--equations/--no-equations",
-        help="Check every numbered equation too (the ledger: several seconds of sympy and "
-        "ODE work). Default: only with --out.",
+        help="Check every numbered equation too (the ledger: sympy and ODE work, its cost "
+        "measured in docs/benchmarks.md). Default: only with --out.",
     ),
 ]
 

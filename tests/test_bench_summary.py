@@ -1,0 +1,68 @@
+"""make bench: one measurement behind every timing the README states (issue 23)."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from pendcli import bench, bench_summary
+
+STARTUP = {
+    "import typer": 0.05,
+    "pendcli --help": 0.06,  # 1.2x: met (target 1.3)
+    "import scipy.special, scipy.integrate": 0.40,
+    "pendcli reproduce --format json": 0.80,  # 2.0x: missed (target 1.8)
+}
+
+
+def _floor() -> bench.FloorTimes:
+    times: bench.FloorTimes = {(bench.FLOOR, ""): (1.0, 2.0), (bench.SCIPY, ""): (0.4, 0.4)}
+    for label in bench.FLOOR_TARGETS:
+        times[label, "cold"] = (9.0, 30.0)
+        times[label, "warm"] = (0.5, 0.25)
+    return times
+
+
+def test_each_headline_is_its_figure_over_its_reference_judged_against_its_target() -> None:
+    heads = {h.what: h for h in bench.headlines(STARTUP, _floor(), (30.0, 50.0), (12.0, 8.0))}
+    assert heads["`pendcli --help`"].ratio == "wall 1.20x `import typer`"
+    assert heads["`pendcli --help`"].target == "<= 1.3x (met)"
+    assert heads["`pendcli reproduce --format json`"].target == "<= 1.8x (missed)"
+    # CPU against B's 2.0 s of CPU; wall against B's 1.0 s of wall
+    cold = heads["`pendcli equations --format json`, cold"]
+    assert (cold.ratio, cold.target) == ("CPU 15.00x B", "<= 2x (missed)")
+    warm = heads["`pendcli equations --format json`, warm"]
+    assert (warm.ratio, warm.target) == ("CPU 0.12x B", "<= 2x (met)")
+    out = heads["`pendcli reproduce --out DIR`, cold"]
+    assert (out.ratio, out.target) == ("wall 9.00x B", "<= 4x (missed)")
+    assert heads["`make test` (the fast suite)"].target == "<= 25 s wall (missed)"
+    assert heads["install from nothing (`make reproduce`'s venv)"].target == "<= 15 s wall (met)"
+
+
+def test_the_readme_block_is_replaced_between_its_markers_only() -> None:
+    text = f"a\n{bench_summary.SUMMARY_START}\nold\n{bench_summary.SUMMARY_END}\nb\n"
+    new = bench_summary.with_summary(text, ["x", "y"])
+    assert new == f"a\n{bench_summary.SUMMARY_START}\nx\ny\n{bench_summary.SUMMARY_END}\nb\n"
+    assert bench_summary.with_summary("no markers", ["x"]) is None
+
+
+def test_the_tag_changes_with_any_figure() -> None:
+    one = bench.headlines(STARTUP, _floor(), (30.0, 50.0), None)
+    other = bench.headlines(STARTUP, _floor(), (30.5, 50.0), None)
+    assert bench_summary.measurement_tag(list(map(str, one))) != bench_summary.measurement_tag(
+        list(map(str, other))
+    )
+
+
+def test_the_readme_and_the_benchmarks_page_come_from_one_measurement() -> None:
+    """The README's timings and docs/benchmarks.md carry the same tag: written by one run."""
+    root = Path(__file__).resolve().parent.parent
+    readme = (root / "README.md").read_text("utf-8")
+    page = (root / "docs" / "benchmarks.md").read_text("utf-8")
+    block = readme.split(bench_summary.SUMMARY_START, 1)[1].split(bench_summary.SUMMARY_END)[0]
+    tags = re.findall(r"measurement `([0-9a-f]{12})`", block)
+    if not tags:
+        pytest.fail("the README's timings block was never written by `make bench`")
+    assert re.search(rf"Measurement `{tags[0]}`", page), "docs/benchmarks.md is another run's"
