@@ -20,9 +20,11 @@ settings.load_profile("pendcli")
 # its tests a folder of its own; the tests of an output's form share one (shared_result_cache).
 os.environ["PENDCLI_CACHE"] = "off"
 
+from collections import defaultdict  # noqa: E402
 from fnmatch import fnmatch  # noqa: E402
 
 import pytest  # noqa: E402
+import suite_split  # noqa: E402
 
 # Per-test wall and CPU seconds (--timings-file), read by tests/durations.py (the 2 s rule).
 from timing import (  # noqa: E402, F401
@@ -83,12 +85,48 @@ SLOW_CASES = {
      "lecornu.result.half_period_root"): "its printed form judged by a sympy series (3-4 s)",
     **{(LATE_STATUS, f"lecornu.result.{r}]"): "its printed form judged by a sympy series (3-4 s)"
        for r in ("am_series", "arctg_series", "trajectory_after_52")},
+    ("tests/test_printed_lecornu_early.py::test_the_computed_status_is_the_recorded_one",
+     "lecornu.result.small_x_asymptotics]"): "its residual's growing parts as x -> 0, by "
+     "sympy series of Bessel-type terms (4-5 s)",
+    ("tests/test_printed_lecornu_late.py::test_a_changed_growing_part_is_refused",
+     "1/5*log(x)"): "the small-x residual's series, judged again after the edit (4 s)",
+    ("tests/test_printed_lecornu_late.py::test_a_changed_coefficient_is_refused_in_a_late_b19_row",
+     "homothety_ratio"): "the homothety's reading against (52)'s trace to O(p) (3-4 s)",
     ("tests/test_html_report.py::test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
      "lecornu"): "every Lecornu row and claim matched to its place in 1,135 lines of text",
 }  # fmt: skip
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
+}
+# The long families of like cases (issue 23): one case per committed ledger row, or one edit of
+# the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps
+# the cases of rank 0, n, 2n, ... (n below) in the order of the parameters, among those not slow
+# already: the first case always, and the rest spread over the list (a ledger's rows run in
+# the order of the paper's lines, so its fast cases span the paper). tests/test_suite_split.py
+# checks that each family keeps a fast case and leaves the rest to the slow run.
+REPRESENTATIVES = {
+    "tests/test_ledger.py::test_check_agrees_with_recorded_status": 6,
+    "tests/test_printed.py::test_the_status_computed_from_the_printed_form_is_the_recorded_one": 5,
+    "tests/test_printed.py::test_a_changed_coefficient_stops_a_row_holding": 3,
+    "tests/test_printed_charbonnier.py::test_the_status_computed_from_the_printed_form_*": 6,
+    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_a_row_holding": 4,
+    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_an_engine_only_*": 4,
+    "tests/test_printed_charbonnier.py::test_a_misprint_whose_printed_form_is_its_reading_*": 2,
+    "tests/test_printed_charbonnier.py::test_every_misprint_printed_as_its_reading_is_refused": 3,
+    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_of_a_reading_is_refused": 3,
+    "tests/test_printed_lecornu_early.py::test_the_computed_status_is_the_recorded_one": 8,
+    "tests/test_printed_lecornu_early.py::test_a_changed_coefficient_is_refused": 3,
+    "tests/test_printed_lecornu_early.py::test_a_misprint_printed_as_its_reading_is_refused": 2,
+    "tests/test_printed_lecornu_early.py::test_a19_*": 2,
+    "tests/test_printed_lecornu_late.py::test_the_status_computed_from_the_printed_form_*": 6,
+    "tests/test_printed_lecornu_late.py::test_a_changed_coefficient_*": 4,
+    "tests/test_printed_lecornu_late.py::test_a_misprint_whose_printed_form_is_its_reading_*": 3,
+    "tests/test_printed_lecornu_late.py::test_a_changed_growing_part_is_refused": 2,
+    "tests/test_printed_numeric.py::test_an_edit_of_the_printed_form_is_refused_naming_the_row": 3,
+    "tests/test_printed_numeric.py::test_one_printed_digit_changed_in_a_holds_row_*": 2,
+    "tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused": 4,
+    "tests/test_printed_tisserand.py::test_a_changed_coefficient_of_a_citing_sentence_*": 3,
 }
 
 
@@ -102,7 +140,8 @@ def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
 
 
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    members: dict[str, list[pytest.Item]] = defaultdict(list)
     for item in items:
         family, _, params = item.nodeid.partition("[")
         reasons = [why for pattern, why in SLOW_FAMILIES.items() if fnmatch(family, pattern)]
@@ -110,5 +149,30 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
                     if family == test and part in params]  # fmt: skip
         names = getattr(item, "fixturenames", ())
         reasons += [why for name, why in SLOW_FIXTURES.items() if name in names]
-        if reasons and item.get_closest_marker("slow") is None:
-            item.add_marker(pytest.mark.slow(reason=reasons[0]))
+        if reasons:
+            _mark_slow(item, reasons[0])
+        for pattern in REPRESENTATIVES:
+            if fnmatch(family, pattern):
+                members[pattern].append(item)
+    split = {pattern: [0, 0] for pattern in REPRESENTATIVES}
+    for pattern, family_items in members.items():
+        # the rank among the family's cases that are not slow already, in parameter order
+        # (callspec indices), whatever order the items came in
+        fast = [i for i in family_items if i.get_closest_marker("slow") is None]
+        fast.sort(key=lambda i: (i.nodeid.partition("[")[0], _param_indices(i)))
+        for rank, item in enumerate(fast):
+            if rank % REPRESENTATIVES[pattern]:
+                _mark_slow(item, "a case of a long family past its fast representatives")
+        split[pattern] = [len(range(0, len(fast), REPRESENTATIVES[pattern])), len(family_items)]
+    config.stash[suite_split.FAMILY_SPLIT] = {k: (v[0], v[1]) for k, v in split.items()}
+    config.stash[suite_split.COLLECTED] = [item.nodeid for item in items]
+
+
+def _param_indices(item: pytest.Item) -> tuple[int, ...]:
+    callspec = getattr(item, "callspec", None)
+    return tuple(callspec.indices.values()) if callspec is not None else ()
+
+
+def _mark_slow(item: pytest.Item, reason: str) -> None:
+    if item.get_closest_marker("slow") is None:
+        item.add_marker(pytest.mark.slow(reason=reason))
