@@ -75,9 +75,12 @@ test-durations: $(STAMP)
 test-slow: $(STAMP)
 	$(PYTEST) $(XDIST) -m "slow and not browser"
 
-# Everything: the fast and the slow tests in one run, then the browser test.
+# Everything: the fast and the slow tests in one run (one collection per worker, and each
+# reference a worker builds serves the fast and the slow cases that cite it), then the
+# browser test. Its timings feed `make test-durations` as `make test`'s do (slow ones exempt).
 test-all: $(STAMP)
-	$(PYTEST) $(XDIST) -m "not browser"
+	rm -f $(TIMINGS)
+	$(PYTEST) $(XDIST) -m "not browser" --timings-file $(TIMINGS)
 	$(MAKE) test-browser
 
 # The HTML report in headless Chromium (Debian package chromium); skipped where it is absent.
