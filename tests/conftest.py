@@ -162,17 +162,18 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         for pattern in REPRESENTATIVES:
             if _matches(family, pattern):
                 members[pattern].append(item)
-    split = {pattern: [0, 0] for pattern in REPRESENTATIVES}
+    split = dict.fromkeys(REPRESENTATIVES, (0, 0))
     for pattern, family_items in members.items():
         # the rank among the family's cases that are not slow already, in parameter order
-        # (callspec indices), whatever order the items came in
+        # (callspec indices), whatever order the items came in: each xdist worker marks alike
         fast = [i for i in family_items if i.get_closest_marker("slow") is None]
         fast.sort(key=lambda i: (i.nodeid.partition("[")[0], _param_indices(i)))
+        stride = REPRESENTATIVES[pattern]
         for rank, item in enumerate(fast):
-            if rank % REPRESENTATIVES[pattern]:
+            if rank % stride:
                 _mark_slow(item, "a case of a long family past its fast representatives")
-        split[pattern] = [len(range(0, len(fast), REPRESENTATIVES[pattern])), len(family_items)]
-    config.stash[suite_split.FAMILY_SPLIT] = {k: (v[0], v[1]) for k, v in split.items()}
+        split[pattern] = (-(-len(fast) // stride), len(family_items))
+    config.stash[suite_split.FAMILY_SPLIT] = split
     config.stash[suite_split.COLLECTED] = [item.nodeid for item in items]
 
 
