@@ -20,9 +20,12 @@ settings.load_profile("pendcli")
 # its tests a folder of its own; the tests of an output's form share one (shared_result_cache).
 os.environ["PENDCLI_CACHE"] = "off"
 
-from fnmatch import fnmatch  # noqa: E402
+from collections import defaultdict  # noqa: E402
+from fnmatch import fnmatchcase  # noqa: E402
+from functools import cache  # noqa: E402
 
 import pytest  # noqa: E402
+import suite_split  # noqa: E402
 
 # Per-test wall and CPU seconds (--timings-file), read by tests/durations.py (the 2 s rule).
 from timing import (  # noqa: E402, F401
@@ -67,6 +70,12 @@ SLOW_FAMILIES = {
     "apsidal motion and the series of the motion to fifth order",
     "tests/test_printed_tisserand.py::test_the_misprinted_cross_reference_*": "(5)'s square "
     "judged twice, each a sympy series of a square root to fourth order",
+    # both edits of lines 448-460 are judged against the small-x residual's reference, whose
+    # series alone costs 2.5-4 s: the family has no case under 2 s to keep fast
+    "tests/test_printed_lecornu_late.py::test_a_changed_growing_part_is_refused": "the small-x "
+    "residual's growing parts, sympy series of Bessel-type terms (2.5-4 s a case)",
+    "tests/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
+    "`equations` runs of a ledger in one test (2.1-2.3 s)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.
@@ -83,12 +92,49 @@ SLOW_CASES = {
      "lecornu.result.half_period_root"): "its printed form judged by a sympy series (3-4 s)",
     **{(LATE_STATUS, f"lecornu.result.{r}]"): "its printed form judged by a sympy series (3-4 s)"
        for r in ("am_series", "arctg_series", "trajectory_after_52")},
+    ("tests/test_printed_lecornu_early.py::test_the_computed_status_is_the_recorded_one",
+     "lecornu.result.small_x_asymptotics]"): "its residual's growing parts as x -> 0, by "
+     "sympy series of Bessel-type terms (4-5 s)",
+    ("tests/test_printed_lecornu_late.py::test_a_changed_coefficient_is_refused_in_a_late_b19_row",
+     "homothety_ratio"): "the homothety's reading against (52)'s trace to O(p) (3-4 s)",
     ("tests/test_html_report.py::test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
      "lecornu"): "every Lecornu row and claim matched to its place in 1,135 lines of text",
 }  # fmt: skip
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
+}
+# The long families of like cases (issue 23): one case per committed ledger row, or one edit of
+# the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps
+# the cases of rank 0, n, 2n, ... (n below) in the order of the parameters, among those not slow
+# already: the first case always, and the rest spread over the list (a ledger's rows run in
+# the order of the paper's lines, so its fast cases span the paper). tests/test_suite_split.py
+# checks that each family keeps a fast case and leaves the rest to the slow run.
+REPRESENTATIVES = {
+    "tests/test_ledger.py::test_check_agrees_with_recorded_status": 6,
+    "tests/test_printed.py::test_the_status_computed_from_the_printed_form_is_the_recorded_one": 5,
+    "tests/test_printed.py::test_a_changed_coefficient_stops_a_row_holding": 3,
+    "tests/test_printed_charbonnier.py::test_the_status_computed_from_the_printed_form_*": 6,
+    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_a_row_holding": 4,
+    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_an_engine_only_*": 4,
+    "tests/test_printed_charbonnier.py::test_a_misprint_whose_printed_form_is_its_reading_*": 2,
+    "tests/test_printed_charbonnier.py::test_every_misprint_printed_as_its_reading_is_refused": 3,
+    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_of_a_reading_is_refused": 3,
+    "tests/test_printed_lecornu_early.py::test_the_computed_status_is_the_recorded_one": 12,
+    "tests/test_printed_lecornu_early.py::test_a_changed_coefficient_is_refused": 3,
+    "tests/test_printed_lecornu_early.py::test_a_misprint_printed_as_its_reading_is_refused": 2,
+    "tests/test_printed_lecornu_early.py::test_a19_*": 2,
+    "tests/test_printed_lecornu_late.py::test_the_status_computed_from_the_printed_form_*": 6,
+    "tests/test_printed_lecornu_late.py::test_a_changed_coefficient_*": 4,
+    "tests/test_printed_lecornu_late.py::test_a_misprint_whose_printed_form_is_its_reading_*": 3,
+    "tests/test_printed_numeric.py::test_an_edit_of_the_printed_form_is_refused_naming_the_row": 3,
+    "tests/test_printed_numeric.py::test_one_printed_digit_changed_in_a_holds_row_*": 2,
+    "tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused": 4,
+    "tests/test_printed_tisserand.py::test_a_changed_coefficient_of_a_citing_sentence_*": 3,
+    # the fault families: each case edits or damages a copy of tables/ and runs a command
+    "tests/test_faults.py::test_a_cut_or_damaged_committed_table_is_a_named_error": 2,
+    "tests/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2": 2,
+    "tests/test_attack_signals.py::test_a_set_interrupted_is_all_old_or_all_new": 2,
 }
 
 
@@ -102,13 +148,45 @@ def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
 
 
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
-def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    members: dict[str, list[pytest.Item]] = defaultdict(list)
     for item in items:
         family, _, params = item.nodeid.partition("[")
-        reasons = [why for pattern, why in SLOW_FAMILIES.items() if fnmatch(family, pattern)]
+        reasons = [why for pattern, why in SLOW_FAMILIES.items() if _matches(family, pattern)]
         reasons += [why for (test, part), why in SLOW_CASES.items()
                     if family == test and part in params]  # fmt: skip
         names = getattr(item, "fixturenames", ())
         reasons += [why for name, why in SLOW_FIXTURES.items() if name in names]
-        if reasons and item.get_closest_marker("slow") is None:
-            item.add_marker(pytest.mark.slow(reason=reasons[0]))
+        if reasons:
+            _mark_slow(item, reasons[0])
+        for pattern in REPRESENTATIVES:
+            if _matches(family, pattern):
+                members[pattern].append(item)
+    split = dict.fromkeys(REPRESENTATIVES, (0, 0))
+    for pattern, family_items in members.items():
+        # the rank among the family's cases that are not slow already, in parameter order
+        # (callspec indices), whatever order the items came in: each xdist worker marks alike
+        fast = [i for i in family_items if i.get_closest_marker("slow") is None]
+        fast.sort(key=lambda i: (i.nodeid.partition("[")[0], _param_indices(i)))
+        stride = REPRESENTATIVES[pattern]
+        for rank, item in enumerate(fast):
+            if rank % stride:
+                _mark_slow(item, "a case of a long family past its fast representatives")
+        split[pattern] = (-(-len(fast) // stride), len(family_items))
+    config.stash[suite_split.FAMILY_SPLIT] = split
+    config.stash[suite_split.COLLECTED] = [item.nodeid for item in items]
+
+
+@cache  # a family id is asked about once per pattern: 3,800 items, 60 patterns
+def _matches(family: str, pattern: str) -> bool:
+    return fnmatchcase(family, pattern)
+
+
+def _param_indices(item: pytest.Item) -> tuple[int, ...]:
+    callspec = getattr(item, "callspec", None)
+    return tuple(callspec.indices.values()) if callspec is not None else ()
+
+
+def _mark_slow(item: pytest.Item, reason: str) -> None:
+    if item.get_closest_marker("slow") is None:
+        item.add_marker(pytest.mark.slow(reason=reason))

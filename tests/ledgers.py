@@ -4,10 +4,12 @@ for all of them. A test of an edited copy of tables/ loads that copy itself (loa
 
 from __future__ import annotations
 
+import tomllib
+from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
-from pendcli.core.ledger import Ledger, load_ledger
+from pendcli.core.ledger import Ledger, LedgerRow, load_ledger
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 
@@ -17,3 +19,30 @@ def committed_ledger(paper: str) -> Ledger:
     """``load_ledger(paper, TABLES)``, shared (a Ledger is frozen: its rows, symbols and
     scopes are tuples, and ``symbols_for`` returns a new dict each call)."""
     return load_ledger(paper, TABLES)
+
+
+@cache
+def _raw_rows(paper: str) -> tuple[dict[str, object], ...]:
+    with (TABLES / "equations" / f"{paper}.toml").open("rb") as file:
+        return tuple(tomllib.load(file)["equation"])
+
+
+def row_ids(
+    paper: str, keep: Callable[[dict[str, object]], bool] = lambda entry: True
+) -> list[str]:
+    """The ids of the committed rows whose TOML entry ``keep`` accepts, in ledger order, read
+    with tomllib alone: for a parametrize list, so that collecting the tests does not parse
+    every formula of the ledger (``committed_row`` loads and validates it at the first test)."""
+    return [str(entry["id"]) for entry in _raw_rows(paper) if keep(entry)]
+
+
+def first_line(entry: dict[str, object]) -> int:
+    """The first line of a raw entry's ``lines`` (0 without)."""
+    lines = entry.get("lines")
+    return int(lines[0]) if isinstance(lines, list) and lines else 0
+
+
+def committed_row(row_id: str) -> LedgerRow:
+    """Row ``row_id`` of its paper's committed (validated) ledger."""
+    ledger = committed_ledger(row_id.split(".")[0])
+    return next(r for r in ledger.rows if r.id == row_id)

@@ -27,8 +27,8 @@ def test_4_with_the_bracket_signs_swapped_does_not_solve_the_equation() -> None:
 
 
 def test_every_check_named_in_the_ledger_exists() -> None:
-    from pendcli.core.ledger import load_ledger
+    from ledgers import committed_ledger
 
-    for row in load_ledger("charbonnier").rows:
+    for row in committed_ledger("charbonnier").rows:
         if row.check is not None:
             assert callable(getattr(eq, row.check)), row.id

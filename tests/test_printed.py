@@ -5,15 +5,15 @@ numbers their span of the text prints, and are checked for dimensions."""
 from __future__ import annotations
 
 import re
-import shutil
 from pathlib import Path
 
 import pytest
 from ledgers import committed_ledger
+from mutations import altered_row
 
 from pendcli.core.dimensions import check_dimensions
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, load_ledger, parse_ledger, verify_printed
+from pendcli.core.ledger import LedgerRow, parse_ledger, verify_printed
 from pendcli.core.ledger_formulas import row_dimensions
 from pendcli.core.printed import parse_dimension, parse_formula
 from pendcli.papers.tisserand import equations as TISSERAND_CHECKS
@@ -239,24 +239,6 @@ def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
     assert computed is not None and computed.startswith(f"{row.status}:")
 
 
-def _altered_copy(tmp_path: Path, old: str, new: str) -> Path:
-    """A copy of tables/ (as PENDCLI_TABLES would name it) with one edit of the Tisserand
-    ledger; the edit must apply exactly once."""
-    root = tmp_path / "tables"
-    shutil.copytree(TABLES, root)
-    path = root / "equations" / "tisserand.toml"
-    text = path.read_text(encoding="utf-8")
-    assert text.count(old) == 1, old
-    path.write_text(text.replace(old, new), encoding="utf-8")
-    return root
-
-
-def _row(root: Path, row_id: str) -> tuple[LedgerRow, dict[str, str]]:
-    ledger = load_ledger("tisserand", root)
-    row = next(r for r in ledger.rows if r.id == row_id)
-    return row, ledger.symbols_for(row)
-
-
 @pytest.mark.parametrize(
     ("row_id", "old", "new"),
     [
@@ -272,20 +254,17 @@ def _row(root: Path, row_id: str) -> tuple[LedgerRow, dict[str, str]]:
         ("tisserand.eq.17", "1/rho1**2*sin(phi1)**2'", "1/rho0**2*sin(phi1)**2'"),
     ],
 )
-def test_a_changed_coefficient_stops_a_row_holding(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    row, symbols = _row(_altered_copy(tmp_path, old, new), row_id)
+def test_a_changed_coefficient_stops_a_row_holding(row_id: str, old: str, new: str) -> None:
+    row, symbols = altered_row("tisserand", row_id, old, new)
     computed, problem = verify_printed(row, symbols, TISSERAND_CHECKS)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
 
 
-def test_a_misprint_whose_printed_form_is_its_reading_is_refused(tmp_path: Path) -> None:
+def test_a_misprint_whose_printed_form_is_its_reading_is_refused() -> None:
     printed = "printed = 'tan(phi1)**2 = (u1**2*u0**2 - u**2)/(u0**2*u**2 - u1**2)'"
     reading = "printed = 'tan(phi1)**2 = u1**2/u0**2*(u0**2 - u**2)/(u**2 - u1**2)'"
-    root = _altered_copy(tmp_path, printed, reading)
-    row, symbols = _row(root, "tisserand.result.tan-sq-phi1")
+    row, symbols = altered_row("tisserand", "tisserand.result.tan-sq-phi1", printed, reading)
     _, problem = verify_printed(row, symbols, TISSERAND_CHECKS)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")

@@ -6,14 +6,14 @@ method (mpmath quadrature, an ODE)."""
 from __future__ import annotations
 
 import dataclasses
-import shutil
 from pathlib import Path
 
 import mpmath
 import pytest
-from ledgers import committed_ledger
+from ledgers import committed_ledger, committed_row, row_ids
+from mutations import altered_row
 
-from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
+from pendcli.core.ledger import LedgerRow, verify_printed
 from pendcli.core.ledger_coverage import ledger_text_coverage
 from pendcli.core.ledger_formulas import row_formula
 from pendcli.papers.charbonnier import equations as CHECKS
@@ -22,16 +22,10 @@ ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
 
 
-def _reference_rows() -> list[object]:
-    ledger = committed_ledger("charbonnier")
-    return [pytest.param(ledger, r, id=r.id) for r in ledger.rows if r.reference]
-
-
-@pytest.mark.parametrize(("ledger", "row"), _reference_rows())
-def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
-    ledger: object, row: LedgerRow
-) -> None:
-    computed, problem = verify_printed(row, dict(ledger.symbols), CHECKS)  # type: ignore[attr-defined]
+@pytest.mark.parametrize("row_id", row_ids("charbonnier", lambda entry: "reference" in entry))
+def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row_id: str) -> None:
+    row = committed_row(row_id)
+    computed, problem = verify_printed(row, dict(committed_ledger("charbonnier").symbols), CHECKS)
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
@@ -51,19 +45,9 @@ def test_every_block_is_covered_and_every_formula_row_has_a_reference() -> None:
             assert row.wrong_term in span, f"{row.id}: {row.wrong_term!r} not in its span"
 
 
-def _altered(tmp_path: Path, row_id: str, old: str, new: str) -> tuple[LedgerRow, dict[str, str]]:
-    root = tmp_path / "tables"
-    shutil.copytree(TABLES, root)
-    path = root / "equations" / "charbonnier.toml"
-    text = path.read_text(encoding="utf-8")
-    start = text.index(f'id = "{row_id}"')
-    end = text.find("[[equation]]", start)
-    end = len(text) if end < 0 else end
-    block = text[start:end]
-    assert block.count(old) == 1, old
-    path.write_text(text[:start] + block.replace(old, new) + text[end:], encoding="utf-8")
-    ledger = load_ledger("charbonnier", root)
-    return next(r for r in ledger.rows if r.id == row_id), dict(ledger.symbols)
+def _altered(row_id: str, old: str, new: str) -> tuple[LedgerRow, dict[str, str]]:
+    """Row ``row_id`` with one edit within its own [[equation]] block (tests/mutations.py)."""
+    return altered_row("charbonnier", row_id, old, new, within=row_id)
 
 
 @pytest.mark.parametrize(
@@ -84,10 +68,8 @@ def _altered(tmp_path: Path, row_id: str, old: str, new: str) -> tuple[LedgerRow
         ("charbonnier.result.delta-alpha", "k**(n - 2)", "k**(n - 1)"),
     ],
 )
-def test_a_changed_coefficient_stops_a_row_holding(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    row, symbols = _altered(tmp_path, row_id, old, new)
+def test_a_changed_coefficient_stops_a_row_holding(row_id: str, old: str, new: str) -> None:
+    row, symbols = _altered(row_id, old, new)
     computed, problem = verify_printed(row, symbols, CHECKS)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
@@ -107,19 +89,19 @@ def test_a_changed_coefficient_stops_a_row_holding(
     ],
 )
 def test_a_misprint_whose_printed_form_is_its_reading_is_refused(
-    tmp_path: Path, row_id: str, old: str, new: str
+    row_id: str, old: str, new: str
 ) -> None:
-    row, symbols = _altered(tmp_path, row_id, old, new)
+    row, symbols = _altered(row_id, old, new)
     _, problem = verify_printed(row, symbols, CHECKS)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
 
-def test_n13_with_the_e_c_of_9_as_printed_fails_too(tmp_path: Path) -> None:
+def test_n13_with_the_e_c_of_9_as_printed_fails_too() -> None:
     """(9) corrected carried to n° 13: with E_c(π/2), (9) as printed, the printed form fails
     and only the E_s reading holds."""
     old, new = "-c/l0*E(pi/2)'", "-c/l0*E_c(pi/2)'"
-    row, symbols = _altered(tmp_path, "charbonnier.result.lowest-speed-air", old, new)
+    row, symbols = _altered("charbonnier.result.lowest-speed-air", old, new)
     computed, problem = verify_printed(row, symbols, CHECKS)
     assert problem is None
     assert computed is not None and computed.startswith("misprint: the printed form fails")
@@ -234,9 +216,9 @@ ENGINE_ONLY_CHANGES = [
 
 @pytest.mark.parametrize(("row_id", "old", "new"), ENGINE_ONLY_CHANGES)
 def test_a_changed_coefficient_stops_an_engine_only_row_holding(
-    tmp_path: Path, row_id: str, old: str, new: str
+    row_id: str, old: str, new: str
 ) -> None:
-    row, symbols = _altered(tmp_path, row_id, old, new)
+    row, symbols = _altered(row_id, old, new)
     computed, problem = verify_printed(row, symbols, CHECKS)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
@@ -245,7 +227,7 @@ def test_a_changed_coefficient_stops_an_engine_only_row_holding(
 def test_every_engine_only_holds_row_has_a_mutation() -> None:
     """A row whose check is the engine's verdict alone (check = "printed_…") and that holds is
     mutated above; the rows of the older list count too."""
-    rows = load_ledger("charbonnier", TABLES).rows
+    rows = committed_ledger("charbonnier").rows
     engine_only = {
         r.id for r in rows if (r.check or "").startswith("printed_") and r.status == "holds"
     }
@@ -263,14 +245,14 @@ def test_every_engine_only_holds_row_has_a_mutation() -> None:
     assert engine_only - mutated == set()
 
 
-def _misprint_rows() -> list[object]:
-    rows = load_ledger("charbonnier", TABLES).rows
-    return [pytest.param(r, id=r.id) for r in rows if r.status == "misprint" and r.reference]
+def _misprint_ids() -> list[str]:
+    return row_ids("charbonnier", lambda e: e.get("status") == "misprint" and "reference" in e)
 
 
-@pytest.mark.parametrize("row", _misprint_rows())
-def test_every_misprint_printed_as_its_reading_is_refused(row: LedgerRow) -> None:
-    symbols = dict(load_ledger("charbonnier", TABLES).symbols)
+@pytest.mark.parametrize("row_id", _misprint_ids())
+def test_every_misprint_printed_as_its_reading_is_refused(row_id: str) -> None:
+    row = committed_row(row_id)
+    symbols = dict(committed_ledger("charbonnier").symbols)
     read = dataclasses.replace(row, printed=row.reading_formula)
     _, problem = verify_printed(read, symbols, CHECKS)
     assert problem is not None
@@ -288,10 +270,8 @@ def test_every_misprint_printed_as_its_reading_is_refused(row: LedgerRow) -> Non
         ("charbonnier.result.es-integral", "k**(n - 1)*(alpha", "k**(n - 2)*(alpha"),
     ],
 )
-def test_a_changed_coefficient_of_a_reading_is_refused(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    row, symbols = _altered(tmp_path, row_id, old, new)
+def test_a_changed_coefficient_of_a_reading_is_refused(row_id: str, old: str, new: str) -> None:
+    row, symbols = _altered(row_id, old, new)
     _, problem = verify_printed(row, symbols, CHECKS)
     assert problem is not None and problem.startswith("recorded misprint, but the printed form")
 
@@ -301,7 +281,7 @@ def test_the_closed_forms_are_judged_per_parity() -> None:
     π/2 against the even rule's 2·1/2 = 1), so a parity-blind reference would refuse them."""
     from pendcli.core.printed_check import formula_passes
 
-    ledger = load_ledger("charbonnier", TABLES)
+    ledger = committed_ledger("charbonnier")
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.delta-alpha-closed")
     assert row.reading_formula is not None
     read = row_formula(row.id, row.reading_formula, dict(ledger.symbols))
@@ -316,7 +296,7 @@ def test_friction_has_a_finite_count_by_the_same_formula() -> None:
     where Δα/α = −2b0/(gα) grows as α falls and P = αg/(2b0) is finite."""
     from pendcli.core.printed_check import formula_passes
 
-    ledger = load_ledger("charbonnier", TABLES)
+    ledger = committed_ledger("charbonnier")
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.infinite-count")
     assert row.printed is not None
     printed = row_formula(row.id, row.printed, dict(ledger.symbols))

@@ -4,13 +4,13 @@ printed form (one coefficient, or a misprint set to its reading) is refused, nam
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import pytest
-from ledgers import committed_ledger
+from ledgers import committed_ledger, committed_row, first_line, row_ids
+from mutations import altered_ledger
 
-from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
+from pendcli.core.ledger import LedgerRow, verify_printed
 from pendcli.core.printed import Formula, parse_formula
 from pendcli.core.printed_check import computed_status, judged
 from pendcli.papers.lecornu import equations as CHECKS
@@ -25,12 +25,13 @@ def _early_rows() -> list[LedgerRow]:
     return [r for r in committed_ledger("lecornu").rows if r.lines and r.lines[0] <= LAST_LINE]
 
 
-def _referenced() -> list[object]:
-    return [pytest.param(r, id=r.id) for r in _early_rows() if r.reference]
+def _referenced() -> list[str]:
+    return row_ids("lecornu", lambda e: 0 < first_line(e) <= LAST_LINE and "reference" in e)
 
 
-@pytest.mark.parametrize("row", _referenced())
-def test_the_computed_status_is_the_recorded_one(row: LedgerRow) -> None:
+@pytest.mark.parametrize("row_id", _referenced())
+def test_the_computed_status_is_the_recorded_one(row_id: str) -> None:
+    row = committed_row(row_id)
     symbols = committed_ledger("lecornu").symbols_for(row)
     computed, problem = verify_printed(row, symbols, CHECKS)
     assert problem is None, problem
@@ -44,14 +45,9 @@ def test_every_reference_is_exported_by_the_equations_module() -> None:
     assert used <= set(references_early.__all__) | set(dir(CHECKS))
 
 
-def _altered(tmp_path: Path, old: str, new: str) -> tuple[dict[str, LedgerRow], dict[str, str]]:
-    root = tmp_path / "tables"
-    shutil.copytree(TABLES, root)
-    path = root / "equations" / "lecornu.toml"
-    text = path.read_text(encoding="utf-8")
-    assert text.count(old) == 1, old
-    path.write_text(text.replace(old, new), encoding="utf-8")
-    ledger = load_ledger("lecornu", root)
+def _altered(old: str, new: str) -> tuple[dict[str, LedgerRow], dict[str, str]]:
+    """The rows of the ledger with one edit (tests/mutations.py), and its [symbols]."""
+    ledger = altered_ledger("lecornu", old, new)
     return {r.id: r for r in ledger.rows}, dict(ledger.symbols)
 
 
@@ -94,8 +90,8 @@ def _altered(tmp_path: Path, old: str, new: str) -> tuple[dict[str, LedgerRow], 
         ("lecornu.result.epsilon_steps", "= p/4*(pi**2 + 3*p*pi/8)'", "= p/4*(pi**2 + 5*p*pi/8)'"),
     ],
 )
-def test_a_changed_coefficient_is_refused(tmp_path: Path, row_id: str, old: str, new: str) -> None:
-    rows, symbols = _altered(tmp_path, old, new)
+def test_a_changed_coefficient_is_refused(row_id: str, old: str, new: str) -> None:
+    rows, symbols = _altered(old, new)
     computed, problem = verify_printed(rows[row_id], symbols, CHECKS)
     assert problem is not None and problem.startswith(f"recorded {rows[row_id].status}, but")
     assert computed is not None and not computed.startswith(rows[row_id].status)
@@ -120,20 +116,18 @@ def test_a_changed_coefficient_is_refused(tmp_path: Path, row_id: str, old: str,
         ),
     ],
 )
-def test_a_misprint_printed_as_its_reading_is_refused(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    rows, symbols = _altered(tmp_path, old, new)
+def test_a_misprint_printed_as_its_reading_is_refused(row_id: str, old: str, new: str) -> None:
+    rows, symbols = _altered(old, new)
     _, problem = verify_printed(rows[row_id], symbols, CHECKS)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
 
-def test_an_incomplete_correction_of_the_general_rule_is_refused(tmp_path: Path) -> None:
+def test_an_incomplete_correction_of_the_general_rule_is_refused() -> None:
     """The general rule's correction without the switch point's + 1/(φ1φ'1) term fails."""
     old = "Integral(varphi**(-2), (x, x0, x1)) + 1/(varphi1*varphip1) - 1/(varphik*varphipk)"
     new = "Integral(varphi**(-2), (x, x0, x1)) - 1/(varphik*varphipk)"
-    rows, symbols = _altered(tmp_path, old, new)
+    rows, symbols = _altered(old, new)
     _, problem = verify_printed(rows["lecornu.result.general_constants"], symbols, CHECKS)
     assert problem is not None and "and so does its fails" in problem
 
@@ -199,10 +193,8 @@ def test_the_new_numeric_checks_can_fail() -> None:
         ),
     ],
 )
-def test_a19_a_changed_coefficient_is_refused(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    rows, symbols = _altered(tmp_path, old, new)
+def test_a19_a_changed_coefficient_is_refused(row_id: str, old: str, new: str) -> None:
+    rows, symbols = _altered(old, new)
     computed, problem = verify_printed(rows[row_id], symbols, CHECKS)
     assert problem is not None and problem.startswith(f"recorded {rows[row_id].status}, but")
     assert computed is not None and not computed.startswith(rows[row_id].status)
@@ -225,10 +217,8 @@ def test_a19_a_changed_coefficient_is_refused(
         ),
     ],
 )
-def test_a19_a_misprint_printed_as_its_reading_is_refused(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    rows, symbols = _altered(tmp_path, old, new)
+def test_a19_a_misprint_printed_as_its_reading_is_refused(row_id: str, old: str, new: str) -> None:
+    rows, symbols = _altered(old, new)
     _, problem = verify_printed(rows[row_id], symbols, CHECKS)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
@@ -247,8 +237,8 @@ def test_a19_a_misprint_printed_as_its_reading_is_refused(
         ("lecornu.result.eq13_is_j2", "besselj(2, 2*sqrt(x))/x'", "besselj(2, 2*sqrt(x))/x**2'"),
     ],
 )
-def test_a19_a_wrong_correction_is_refused(tmp_path: Path, row_id: str, old: str, new: str) -> None:
-    rows, symbols = _altered(tmp_path, old, new)
+def test_a19_a_wrong_correction_is_refused(row_id: str, old: str, new: str) -> None:
+    rows, symbols = _altered(old, new)
     _, problem = verify_printed(rows[row_id], symbols, CHECKS)
     assert problem is not None and "and so does its fails" in problem
 
@@ -269,9 +259,9 @@ def test_a19_a_wrong_correction_is_refused(tmp_path: Path, row_id: str, old: str
     ],
 )
 def test_a19_a_fails_row_printed_as_its_correction_is_refused(
-    tmp_path: Path, row_id: str, old: str, new: str
+    row_id: str, old: str, new: str
 ) -> None:
-    rows, symbols = _altered(tmp_path, old, new)
+    rows, symbols = _altered(old, new)
     _, problem = verify_printed(rows[row_id], symbols, CHECKS)
     assert problem is not None and problem.startswith(
         "recorded fails, but the printed form gives holds"
@@ -279,7 +269,7 @@ def test_a19_a_fails_row_printed_as_its_correction_is_refused(
 
 
 def _formula(text: str) -> Formula:
-    symbols = load_ledger("lecornu", TABLES).symbols
+    symbols = committed_ledger("lecornu").symbols
     return parse_formula("test", text, dict(symbols))
 
 

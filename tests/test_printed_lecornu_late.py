@@ -5,14 +5,14 @@ lines are verified a second, numeric way."""
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
 import pytest
-from ledgers import committed_ledger
+from ledgers import committed_ledger, committed_row, first_line, row_ids
+from mutations import judged_after_edit, printed_line
 
 from pendcli.core.dimensions import check_dimensions
-from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, load_ledger, verify_printed
+from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, verify_printed
 from pendcli.core.printed import parse_dimension, parse_formula
 from pendcli.core.printed_check import formula_passes
 from pendcli.papers.lecornu import equations as CHECKS
@@ -31,8 +31,9 @@ def _late_rows() -> list[LedgerRow]:
     return [r for r in committed_ledger("lecornu").rows if r.lines and r.lines[0] >= FIRST]
 
 
-def _params(rows: list[LedgerRow]) -> list[object]:
-    return [pytest.param(r, id=r.id) for r in rows]
+def _late_ids(field: str) -> list[str]:
+    """The ids of these lines' rows that have ``field`` (read without parsing a formula)."""
+    return row_ids("lecornu", lambda entry: first_line(entry) >= FIRST and field in entry)
 
 
 def test_every_row_has_its_printed_form() -> None:
@@ -45,16 +46,17 @@ def test_every_checked_row_has_a_reference() -> None:
     assert missing == NO_REFERENCE
 
 
-@pytest.mark.parametrize("row", _params([r for r in _late_rows() if r.reference]))
-def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row: LedgerRow) -> None:
-    ledger = committed_ledger("lecornu")
+@pytest.mark.parametrize("row_id", _late_ids("reference"))
+def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row_id: str) -> None:
+    ledger, row = committed_ledger("lecornu"), committed_row(row_id)
     computed, problem = verify_printed(row, ledger.symbols_for(row), CHECKS)
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
 
-@pytest.mark.parametrize("row", _params([r for r in _late_rows() if r.wrong_term]))
-def test_a_wrong_term_is_printed_in_its_lines(row: LedgerRow) -> None:
+@pytest.mark.parametrize("row_id", _late_ids("wrong_term"))
+def test_a_wrong_term_is_printed_in_its_lines(row_id: str) -> None:
+    row = committed_row(row_id)
     # editing the text to the reading (e.g. (52)'s u cos u to − u sin u) breaks this
     lines = (TABLES / "papers" / "lecornu.txt").read_text(encoding="utf-8").splitlines()
     assert row.lines is not None and row.wrong_term is not None
@@ -62,20 +64,8 @@ def test_a_wrong_term_is_printed_in_its_lines(row: LedgerRow) -> None:
     assert row.wrong_term in span
 
 
-def _altered_copy(tmp_path: Path, old: str, new: str) -> Path:
-    root = tmp_path / "tables"
-    shutil.copytree(TABLES, root)
-    path = root / "equations" / "lecornu.toml"
-    text = path.read_text(encoding="utf-8")
-    assert text.count(old) == 1, old
-    path.write_text(text.replace(old, new), encoding="utf-8")
-    return root
-
-
-def _problem(root: Path, row_id: str) -> tuple[str | None, str | None]:
-    ledger = load_ledger("lecornu", root)
-    row = next(r for r in ledger.rows if r.id == row_id)
-    return verify_printed(row, ledger.symbols_for(row), CHECKS)
+def _problem(row_id: str, old: str, new: str) -> tuple[str | None, str | None]:
+    return judged_after_edit(CHECKS, row_id, old, new)
 
 
 @pytest.mark.parametrize(
@@ -113,22 +103,18 @@ def _problem(root: Path, row_id: str) -> tuple[str | None, str | None]:
         ),
     ],
 )
-def test_a_changed_coefficient_stops_a_row_holding(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    computed, problem = _problem(_altered_copy(tmp_path, old, new), row_id)
+def test_a_changed_coefficient_stops_a_row_holding(row_id: str, old: str, new: str) -> None:
+    computed, problem = _problem(row_id, old, new)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
 
 
 def _printed_line(row_id: str) -> str:
-    row = next(r for r in committed_ledger("lecornu").rows if r.id == row_id)
-    return f"printed = '{row.printed}'"
+    return printed_line(committed_ledger("lecornu"), row_id)
 
 
 def _reading_line(row_id: str) -> str:
-    row = next(r for r in committed_ledger("lecornu").rows if r.id == row_id)
-    return f"printed = '{row.reading_formula}'"
+    return printed_line(committed_ledger("lecornu"), row_id, "reading_formula")
 
 
 @pytest.mark.parametrize(
@@ -142,11 +128,8 @@ def _reading_line(row_id: str) -> str:
         "lecornu.eq.51",
     ],
 )
-def test_a_misprint_whose_printed_form_is_its_reading_is_refused(
-    tmp_path: Path, row_id: str
-) -> None:
-    root = _altered_copy(tmp_path, _printed_line(row_id), _reading_line(row_id))
-    _, problem = _problem(root, row_id)
+def test_a_misprint_whose_printed_form_is_its_reading_is_refused(row_id: str) -> None:
+    _, problem = _problem(row_id, _printed_line(row_id), _reading_line(row_id))
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
@@ -303,45 +286,35 @@ def test_line_1102_prints_rho_for_l() -> None:
         ),
     ],
 )
-def test_a_changed_coefficient_stops_a_b19_row_holding(
-    tmp_path: Path, row_id: str, old: str, new: str
-) -> None:
-    computed, problem = _problem(_altered_copy(tmp_path, old, new), row_id)
+def test_a_changed_coefficient_stops_a_b19_row_holding(row_id: str, old: str, new: str) -> None:
+    computed, problem = _problem(row_id, old, new)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
 
 
-def test_an_inequality_is_judged_on_its_margin(tmp_path: Path) -> None:
+def test_an_inequality_is_judged_on_its_margin() -> None:
     """Line 444: the bound turned round (< -> >) is refused, naming the row."""
     old = "..., (p, 2*aa*sqrt(x), hh)) < Integral(p/2"
-    computed, problem = _problem(
-        _altered_copy(tmp_path, old, old.replace(" < ", " > ")), "lecornu.result.small_p_bound"
-    )
+    row_id = "lecornu.result.small_p_bound"
+    computed, problem = _problem(row_id, old, old.replace(" < ", " > "))
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and "margin" in computed
 
 
-def test_the_vertical_to_elongation_misprint_set_to_its_reading_is_refused(
-    tmp_path: Path,
-) -> None:
+def test_the_vertical_to_elongation_misprint_set_to_its_reading_is_refused() -> None:
     row_id = "lecornu.result.vertical_to_elongation"
-    _, problem = _problem(
-        _altered_copy(tmp_path, _printed_line(row_id), _reading_line(row_id)), row_id
-    )
+    _, problem = _problem(row_id, _printed_line(row_id), _reading_line(row_id))
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
 
 @pytest.mark.parametrize(("decimal", "passes"), [("0.12", False), ("0.133", True)])
-def test_a_rounded_decimal_is_judged_to_its_last_digit(
-    tmp_path: Path, decimal: str, passes: bool
-) -> None:
+def test_a_rounded_decimal_is_judged_to_its_last_digit(decimal: str, passes: bool) -> None:
     """Line 563's 0,13 in the reading: (π² − 12)/16 = −0,1332 is not 0,12 rounded, and is
     0,133 rounded."""
     row_id = "lecornu.result.vertical_to_elongation"
     reading = _reading_line(row_id).replace("printed = '", "reading_formula = '")
-    root = _altered_copy(tmp_path, reading, reading.replace("- 0.13*b/g", f"- {decimal}*b/g"))
-    computed, problem = _problem(root, row_id)
+    computed, problem = _problem(row_id, reading, reading.replace("- 0.13*b/g", f"- {decimal}*b/g"))
     if passes:
         assert problem is None, problem
     else:
@@ -354,9 +327,8 @@ def test_the_mean_pendulum_correction_is_computed() -> None:
     (mpmath) against π√(l/g) at l = a + bt/2, their difference over b²/(g√(ag)) -> 0,674."""
     import mpmath
 
-    ledger = load_ledger("lecornu", TABLES)
-    row = next(r for r in ledger.rows if r.id == "lecornu.result.mean_pendulum")
-    computed, problem = verify_printed(row, ledger.symbols_for(row), CHECKS)
+    row = committed_row("lecornu.result.mean_pendulum")
+    computed, problem = verify_printed(row, committed_ledger("lecornu").symbols_for(row), CHECKS)
     assert problem is None and computed is not None and computed.startswith("fails:")
     assert "7*pi**3" in computed
     ratios = []
@@ -388,17 +360,16 @@ def test_the_mean_pendulum_correction_is_computed() -> None:
     ],
 )
 def test_a_changed_coefficient_is_refused_in_a_late_b19_row(
-    tmp_path: Path, row_id: str, old: str, new: str
+    row_id: str, old: str, new: str
 ) -> None:
-    computed, problem = _problem(_altered_copy(tmp_path, old, new), row_id)
+    computed, problem = _problem(row_id, old, new)
     assert problem is not None and problem.startswith("recorded")
     assert computed is not None and not computed.startswith("holds")
 
 
-def test_the_homothety_axes_set_to_their_reading_are_refused(tmp_path: Path) -> None:
+def test_the_homothety_axes_set_to_their_reading_are_refused() -> None:
     row_id = "lecornu.result.homothety_ratio"
-    root = _altered_copy(tmp_path, _printed_line(row_id), _reading_line(row_id))
-    _, problem = _problem(root, row_id)
+    _, problem = _problem(row_id, _printed_line(row_id), _reading_line(row_id))
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
@@ -424,10 +395,10 @@ def test_the_homothety_axes_carry_the_inverted_arctangent() -> None:
         ("theta = k*sin(alpha)/4*(b**2/(g*l) +", "theta = k*sin(alpha)/4*(b**2/(2*g*l) +"),
     ],
 )
-def test_a_changed_growing_part_is_refused(tmp_path: Path, old: str, new: str) -> None:
+def test_a_changed_growing_part_is_refused(old: str, new: str) -> None:
     """Lines 448-460: the residual must stay finite as x -> 0; a changed coefficient of
     1/x or log x makes it grow, and the row is refused, naming it."""
     row_id = "lecornu.result.small_x_asymptotics"
-    computed, problem = _problem(_altered_copy(tmp_path, old, new), row_id)
+    computed, problem = _problem(row_id, old, new)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and "tends to" in computed

@@ -7,7 +7,6 @@ printed on the row's lines), and mutations of those rows in a copy of tables/.""
 
 from __future__ import annotations
 
-import shutil
 from collections.abc import Iterator
 from fractions import Fraction
 from itertools import pairwise
@@ -15,6 +14,7 @@ from pathlib import Path
 
 import mpmath
 import pytest
+from mutations import altered_tables
 
 from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
 from pendcli.core.printed import parse_formula
@@ -214,13 +214,7 @@ def _altered(
 ) -> tuple[LedgerRow, ...]:
     """A copy of tables/ with ``(file, old, new)`` edits, which the run then reads (the
     references read the published table of $PENDCLI_TABLES); the ledger's rows."""
-    root = tmp_path / "tables"
-    shutil.copytree(TABLES, root)
-    for name, old, new in edits:
-        path = root / name
-        text = path.read_text(encoding="utf-8")
-        assert text.count(old) == 1, old
-        path.write_text(text.replace(old, new), encoding="utf-8")
+    root = altered_tables(tmp_path, *edits)
     monkeypatch.setenv("PENDCLI_TABLES", str(root))
     clear_table_cache()
     return load_ledger("lecornu", root).rows
