@@ -250,7 +250,7 @@ def _same_equation(formula_id: str, equation: Row) -> bool:
 
 
 def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple[int, Placement]],
-                 stats: RenderStats) -> list[dict[str, object]]:  # fmt: skip
+                 stats: RenderStats, rows: Mapping[str, Row]) -> list[dict[str, object]]:  # fmt: skip
     segments = math_segments(text)
     numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
                                                      key=lambda m: m.start), 1)}  # fmt: skip
@@ -271,7 +271,7 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
             "figure": bool(_FIGURE.fullmatch(text[a:b].strip())) and not inside,
             "front": b <= front,
             "pagebreak": "",
-            "notes": [_note(m, numbers[m.key]) for m in notes],
+            "notes": [_note(m, numbers[m.key], rows.get(m.row_id)) for m in notes],
         })  # fmt: skip
     return blocks
 
@@ -346,11 +346,18 @@ def front_matter_end(text: str, within: int = 40) -> int:
     return ends[-1] if ends else 0
 
 
-def _note(mark: Placement, number: int) -> dict[str, object]:
+def _note(mark: Placement, number: int, row: Row | None) -> dict[str, object]:
+    """A margin note. An agreeing number's note is short, its recomputed value alone (the
+    printed one is the marked text beside it, the verdict the colour of its label), so that
+    the notes beside a table of numbers run on little past it (Lecornu's tables)."""
+    text = mark.note
+    compact = not mark.finding and mark.how == "value" and row is not None and "recomputed" in row
+    if compact and row is not None:
+        text = f"{number_text(row.get('recomputed'))} {text_of(row, 'unit')}".strip()
     # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
-            "label": mark.row_id.split(".", 1)[-1],
-            "word": mark.word, "text": mark.note, "finding": mark.finding}  # fmt: skip
+            "label": mark.row_id.split(".", 1)[-1], "compact": compact,
+            "word": mark.word, "text": text, "finding": mark.finding}  # fmt: skip
 
 
 def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, object]]:
@@ -367,7 +374,7 @@ def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, 
 def formula_cell(r: Row) -> dict[str, object]:
     order = r.get("observed_order")
     return {"id": id_of(r), "css": css_of(r), "word": verdict_of(r),
-            "order": f"{order:.2f}" if isinstance(order, float) else ""}  # fmt: skip
+            "order": number_text(round(order, 2)) if isinstance(order, float) else ""}  # fmt: skip
 
 
 def _equation_rows(equations: Sequence[Row], cited: Mapping[str, Sequence[Row]],
@@ -415,7 +422,8 @@ def paper_page(
     merged = {id_of(f) for fs in cited.values() for f in fs}
     alone = [f for f in formulas if id_of(f) not in merged]
     findings = [id_of(r) for r in [*claims, *equations, *alone] if disagrees(r)]
-    blocks = _text_blocks(text, marks, passages, stats)
+    rows = {id_of(r): r for r in [*claims, *equations]}
+    blocks = _text_blocks(text, marks, passages, stats, rows)
     return render_template(
         "paper.html.j2",
         title=f"pendcli: {paper}", lang="fr", paper=paper, citation=citation, legend=_legend(),

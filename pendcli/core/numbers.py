@@ -23,7 +23,7 @@ from fractions import Fraction
 
 from pendcli.core.errors import PendcliError
 
-__all__ = ["PrintedNumber", "exact_number", "parse_printed"]
+__all__ = ["PrintedNumber", "edition_number", "exact_number", "parse_printed"]
 
 
 @dataclass(frozen=True)
@@ -193,3 +193,32 @@ def exact_number(printed: PrintedNumber) -> PrintedNumber:
     return PrintedNumber(
         text=printed.text, value=printed.value, resolution=None, kind="exact", exact=exact
     )
+
+
+# --- numbers written as the papers write them --------------------------------------------
+
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def edition_number(value: object, digits: int = 10) -> str:
+    """A recomputed number as the three papers print theirs, for the annotated edition.
+
+    A decimal comma (``5,135622302``, as the paper prints ``5,14``), the typeset minus sign
+    (``−0,130``) and no grouping of digits: none of the three papers groups its digits (the
+    longest printed decimal, 0,00313, has five). A power of ten is written ``1,2·10⁻⁵``, not
+    ``1.2e-05``. ``digits`` significant digits, trailing zeros dropped. Integers and text pass
+    through; the JSON and CSV outputs keep their machine form and do not use this.
+    """
+    if value is None:
+        return ""
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        return str(value)
+    if isinstance(value, int):
+        return str(value).replace("-", "\u2212")
+    if not math.isfinite(value):
+        return str(value)
+    mantissa, _, exponent = f"{value:.{digits}g}".partition("e")
+    text = mantissa.replace(".", ",").replace("-", "\u2212")
+    if exponent:
+        text += "·10" + str(int(exponent)).translate(_SUPERSCRIPT)
+    return text
