@@ -250,7 +250,8 @@ def _same_equation(formula_id: str, equation: Row) -> bool:
 
 
 def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple[int, Placement]],
-                 stats: RenderStats, rows: Mapping[str, Row]) -> list[dict[str, object]]:  # fmt: skip
+                 stats: RenderStats,
+                 rows: Mapping[str, Row]) -> list[dict[str, object]]:  # fmt: skip
     segments = math_segments(text)
     numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
                                                      key=lambda m: m.start), 1)}  # fmt: skip

@@ -1,0 +1,84 @@
+"""The edition's numbers as the papers write them: a decimal comma in the notes, the tables
+and the rendered formulas (the JSON and CSV outputs keep their decimal point)."""
+
+from __future__ import annotations
+
+import math
+import random
+import re
+from html import unescape
+
+import pytest
+
+from pendcli.core.numbers import edition_number
+from pendcli.core.tables import tables_dir
+from pendcli.html_math import math_segments, to_mathml
+from pendcli.html_paper import paper_page
+from pendcli.papers.registry import PAPERS
+from pendcli.papers.registry import paper as paper_of
+
+
+def _read_back(text: str) -> float:
+    """An edition number read back independently: comma as point, ·10ⁿ as a power of ten."""
+    digits = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
+    mantissa, _, power = text.replace("\u2212", "-").partition("·10")
+    return float(mantissa.replace(",", ".")) * 10.0 ** int(power.translate(digits) or "0")
+
+
+def test_an_edition_number_has_the_papers_decimal_comma_and_minus() -> None:
+    assert edition_number(5.135622302) == "5,135622302"
+    assert edition_number(-0.1322794874) == "\u22120,1322794874"
+    assert edition_number(1.2e-5) == "1,2·10⁻⁵"
+    assert edition_number(3) == "3" and edition_number(None) == "" and edition_number("x") == "x"
+
+
+def test_an_edition_number_reads_back_as_its_value_to_ten_digits() -> None:
+    rng = random.Random(21)
+    for _ in range(500):
+        value = rng.uniform(-1, 1) * 10.0 ** rng.randint(-12, 12)
+        text = edition_number(value)
+        assert "." not in text and "e" not in text and "-" not in text, text
+        assert math.isclose(_read_back(text), value, rel_tol=1e-9), (value, text)
+
+
+def test_the_edition_shows_recomputed_numbers_with_a_decimal_comma() -> None:
+    text = "Les racines sont:\n\n$$5,14 \\quad 8,41$$\n"
+    claims: list[dict[str, object]] = [
+        {"id": "p.a", "published": "5,14", "verdict": "agrees", "recomputed": 5.135622302},
+        {"id": "p.b", "published": "8,41", "verdict": "truncated", "recomputed": 8.41724414,
+         "cause": "truncation"},
+    ]  # fmt: skip
+    page = paper_page("p", "A citation", text, claims)
+    notes = re.findall(r'<p class="note[^"]*" id="note-[^"]+">(.*?)</p>', page, re.S)
+    shown = unescape(re.sub(r"<[^>]+>", "", " ".join(notes)))
+    assert "5,135622302" in shown and "recomputed 8,41724414" in shown, shown
+    assert not re.search(r"\d\.\d", shown), shown
+    cells = re.findall(r'<td class="num">([^<]*)</td>', page)
+    assert "5,135622302" in cells and not any(re.search(r"\d\.\d", c) for c in cells), cells
+
+
+def test_a_decimal_comma_in_a_formula_is_one_number_with_no_space() -> None:
+    tex = "5,14 \\quad 0^m,35 \\quad 0^{sec}, 94 \\quad f(a,b) \\quad 0,91, 1,66"
+    mathml = to_mathml(tex, False)
+    assert mathml is not None
+    assert "<mn>5,14</mn>" in mathml and "<mn>0,91</mn>" in mathml and "<mn>1,66</mn>" in mathml
+    # after a unit set as an exponent, and a list's comma or an argument's, as before
+    assert mathml.count('<mo lspace="0" rspace="0">,</mo>') == 2
+    assert mathml.count("<mo>&#x0002C;</mo>") == 2  # f(a,b) and the list's « 0,91, 1,66 »
+
+
+SEPARATED = r"<mn>(\d+)</mn>(?:<mrow>)?<mo>&#x0002C;</mo>(?:</mrow>)?<mn>(\d+)</mn>"
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_no_decimal_comma_of_the_papers_formulas_is_set_as_a_separator(paper: str) -> None:
+    text = paper_of(paper).tables(tables_dir()).text.read_text("utf-8")
+    split = []
+    for s in math_segments(text):
+        tex = text[s.tex_start : s.tex_end]
+        mathml = to_mathml(tex, s.display) or ""
+        # a comma between two numbers set as a separator: only where the TeX has a space
+        for m in re.finditer(SEPARATED, mathml):
+            if re.search(rf"{m.group(1)},{m.group(2)}", tex):
+                split.append((m.group(0), tex[:60]))
+    assert not split, split[:5]
