@@ -16,6 +16,7 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from pendcli.core.numbers import edition_quantity
 from pendcli.html_marks import (
     EQUATION_CAUSE,
     STATUS_CLASSES,
@@ -87,6 +88,9 @@ def render_stats(text: str) -> RenderStats:
 _STRAY_TEX = re.compile(r"\\[A-Za-z]+(?:\{[^{}]*\})?(?:_\{?\w+\}?)?|\b\w_\{[^{}]*\}")
 
 
+_PROSE_SUBSCRIPT = re.compile(r"(?<![\w&#;])([^\W\d_])_([A-Za-z0-9]{1,2}(?:-\d)?)(?![\w])")
+
+
 def _prose(piece: str) -> str:
     """Prose escaped, its stray TeX (``\\mathbf{E}_c`` outside dollars) read plainly, its
     Markdown emphasis kept."""
@@ -97,6 +101,10 @@ def _prose(piece: str) -> str:
     piece = re.sub(r"(?<=\d)\^e\b", "ᵉ", piece).replace("\t", "\u2003\u2003")
     out = str(
         escape(re.sub(r"(?<=\w)\^([0-9])(?!\d)", lambda m: plain_math("^" + m.group(1)), piece))
+    )
+    # a letter's subscript the OCR left in the prose (« I_n et I_n-2 », « E_c », « θ_m »)
+    out = _PROSE_SUBSCRIPT.sub(
+        lambda m: f"{m.group(1)}<sub>{m.group(2).replace('-', chr(0x2212))}</sub>", out
     )
     out = re.sub(r"\*\*(.+?)\*\*", r"<b>\1</b>", out)
     return re.sub(r"(?<![\w*])\*(?!\s)(.+?)(?<!\s)\*(?![\w*])", r"<i>\1</i>", out)
@@ -354,19 +362,24 @@ def _note(mark: Placement, number: int, row: Row | None) -> dict[str, object]:
     text = mark.note
     compact = not mark.finding and mark.how == "value" and row is not None and "recomputed" in row
     if compact and row is not None:
-        text = f"{number_text(row.get('recomputed'))} {text_of(row, 'unit')}".strip()
+        text = edition_quantity(row.get("recomputed"), text_of(row, "unit"))
     # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
             "label": mark.row_id.split(".", 1)[-1], "compact": compact,
             "word": mark.word, "text": text, "finding": mark.finding}  # fmt: skip
 
 
+def _cell(value: object, unit: str) -> str:
+    """A number of the claims table: an angle sexagesimal as printed, others a decimal comma."""
+    return edition_quantity(value, "angle") if unit == "angle" else number_text(value)
+
+
 def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, object]]:
     return [
         {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
          "source": text_of(r, "source"), "published": printed_form(text_of(r, "published")),
-         "unit": text_of(r, "unit"), "recomputed": number_text(r.get("recomputed")),
-         "exact": number_text(r.get("exact")), "cause": word_of(r.get("cause")),
+         "unit": text_of(r, "unit"), "recomputed": _cell(r.get("recomputed"), text_of(r, "unit")),
+         "exact": _cell(r.get("exact"), text_of(r, "unit")), "cause": word_of(r.get("cause")),
          "sources": sources_of(r), "note": text_of(r, "note")}
         for r in claims
     ]  # fmt: skip

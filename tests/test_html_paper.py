@@ -82,3 +82,24 @@ def test_no_decimal_comma_of_the_papers_formulas_is_set_as_a_separator(paper: st
             if re.search(rf"{m.group(1)},{m.group(2)}", tex):
                 split.append((m.group(0), tex[:60]))
     assert not split, split[:5]
+
+
+def test_an_angle_is_shown_sexagesimal_as_the_paper_prints_it() -> None:
+    from pendcli.core.numbers import edition_angle, edition_quantity, parse_printed
+
+    assert edition_angle(-1.125872042) == "\u22121°7′33,14″"
+    assert edition_quantity(0.0004685167801, "angle") == "1,69″"
+    assert edition_quantity(0.1965922697, "mm") == "0,1965922697 mm"
+    rng = random.Random(8)
+    for _ in range(300):  # read back by the parser of the printed numbers, to 0,005″
+        degrees = rng.uniform(-3, 3)
+        shown = edition_angle(degrees).replace("\u2212", "-").replace("′", "'").replace("″", "''")
+        assert abs(parse_printed(shown).value - degrees) <= 0.005 / 3600 + 1e-12, shown
+
+
+def test_a_subscript_the_ocr_left_in_the_prose_is_set_as_one() -> None:
+    from pendcli.html_paper import paper_page
+
+    page = paper_page("p", "c", "Une relation entre I_n et I_n-2 ; E_c et psi_sin2.\n", [])
+    assert "I<sub>n</sub> et I<sub>n\u22122</sub>" in page and "E<sub>c</sub>" in page
+    assert "psi_sin2" in page  # a name, not a subscript

@@ -23,7 +23,14 @@ from fractions import Fraction
 
 from pendcli.core.errors import PendcliError
 
-__all__ = ["PrintedNumber", "edition_number", "exact_number", "parse_printed"]
+__all__ = [
+    "PrintedNumber",
+    "edition_angle",
+    "edition_number",
+    "edition_quantity",
+    "exact_number",
+    "parse_printed",
+]
 
 
 @dataclass(frozen=True)
@@ -222,3 +229,24 @@ def edition_number(value: object, digits: int = 10) -> str:
     if exponent:
         text += "·10" + str(int(exponent)).translate(_SUPERSCRIPT)
     return text
+
+
+def edition_angle(degrees: float, decimals: int = 2) -> str:
+    """An angle in degrees as the papers print one, sexagesimal: ``−1°7′33,14″``, ``2′42,00″``,
+    ``1,69″`` (Tisserand's 1°7'33'', 2'42'', 2''), the seconds to ``decimals`` places, the
+    leading zero parts left out as the paper leaves them out."""
+    hundredths = round(abs(degrees) * 3600 * 10**decimals)
+    whole, fraction = divmod(hundredths, 10**decimals)
+    deg, rest = divmod(whole, 3600)
+    minutes, seconds = divmod(rest, 60)
+    parts = [f"{deg}°" if deg else "", f"{minutes}′" if deg or minutes else ""]
+    second = f"{seconds},{fraction:0{decimals}d}″" if decimals else f"{seconds}″"
+    return ("\u2212" if degrees < 0 and hundredths else "") + "".join(parts) + second
+
+
+def edition_quantity(value: object, unit: str = "") -> str:
+    """A recomputed value with its unit as the edition shows it: an ``angle`` (degrees) in
+    sexagesimal form, any other number with a decimal comma followed by its unit."""
+    if unit == "angle" and isinstance(value, float) and math.isfinite(value):
+        return edition_angle(value)
+    return f"{edition_number(value)} {unit}".strip() if value is not None else ""
