@@ -103,3 +103,20 @@ def test_a_subscript_the_ocr_left_in_the_prose_is_set_as_one() -> None:
     page = paper_page("p", "c", "Une relation entre I_n et I_n-2 ; E_c et psi_sin2.\n", [])
     assert "I<sub>n</sub> et I<sub>n\u22122</sub>" in page and "E<sub>c</sub>" in page
     assert "psi_sin2" in page  # a name, not a subscript
+
+
+def test_the_reports_findings_name_a_cause_once_and_break_ids_at_their_dots() -> None:
+    from pendcli.html_report import report_page
+
+    claims: list[dict[str, object]] = [
+        {"id": "p.b", "published": "8,41", "verdict": "discrepant", "cause": "arithmetic-slip"}
+    ]
+    equations: list[dict[str, object]] = [
+        {"id": "p.eq.6", "equation": "(6)", "status": "misprint", "reading": "x = 3"},
+        {"id": "p.result.compound_pendulum", "status": "fails", "corrected": "x = 2"},
+    ]
+    page = report_page(["p"], {"p": claims}, {}, {"p": equations})
+    cells = [unescape(re.sub(r"<[^>]+>", "", c)) for c in re.findall(r"<td>(.*?)</td>", page)]
+    assert "misprint" in cells and "misprint: misprint" not in cells, cells
+    assert "fails: derivation-error" in cells and "discrepant: arithmetic-slip" in cells, cells
+    assert "p.<wbr>result.<wbr>compound_pendulum</a>" in page
