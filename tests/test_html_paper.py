@@ -120,3 +120,16 @@ def test_the_reports_findings_name_a_cause_once_and_break_ids_at_their_dots() ->
     assert "misprint" in cells and "misprint: misprint" not in cells, cells
     assert "fails: derivation-error" in cells and "discrepant: arithmetic-slip" in cells, cells
     assert "p.<wbr>result.<wbr>compound_pendulum</a>" in page
+
+
+def test_a_claims_column_empty_for_every_row_is_left_out() -> None:
+    text = "Les racines sont:\n\n$$5,14 \\quad 8,41$$\n"
+    agree: list[dict[str, object]] = [
+        {"id": "p.a", "published": "5,14", "verdict": "agrees", "recomputed": 5.1356}
+    ]
+    header = re.search(r"<h2>Printed numbers</h2>.*?</tr>", paper_page("p", "c", text, agree), re.S)
+    assert header and "<th>cause</th>" not in header.group(0)
+    assert "<th>exact</th>" not in header.group(0)
+    slip = [{**agree[0], "verdict": "discrepant", "cause": "arithmetic-slip", "exact": 5.1}]
+    header = re.search(r"<h2>Printed numbers</h2>.*?</tr>", paper_page("p", "c", text, slip), re.S)
+    assert header and "<th>cause</th>" in header.group(0) and "<th>exact</th>" in header.group(0)
