@@ -355,14 +355,18 @@ def front_matter_end(text: str, within: int = 40) -> int:
     return ends[-1] if ends else 0
 
 
+MARGIN_DIGITS = 6  # an agreeing number's recomputed value in the margin; the table gives 10
+
+
 def _note(mark: Placement, number: int, row: Row | None) -> dict[str, object]:
-    """A margin note. An agreeing number's note is short, its recomputed value alone (the
-    printed one is the marked text beside it, the verdict the colour of its label), so that
-    the notes beside a table of numbers run on little past it (Lecornu's tables)."""
+    """A margin note. An agreeing number's note is short, its recomputed value alone to six
+    figures (the printed one is the marked text beside it, the verdict the colour of its
+    label, all ten figures in the table): two such notes share a line of the margin, so the
+    notes beside a table of numbers run on little past it (Lecornu's tables)."""
     text = mark.note
     compact = not mark.finding and mark.how == "value" and row is not None and "recomputed" in row
     if compact and row is not None:
-        text = edition_quantity(row.get("recomputed"), text_of(row, "unit"))
+        text = edition_quantity(row.get("recomputed"), text_of(row, "unit"), MARGIN_DIGITS)
     # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
             "label": mark.row_id.split(".", 1)[-1], "compact": compact,

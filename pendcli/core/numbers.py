@@ -244,9 +244,10 @@ def edition_angle(degrees: float, decimals: int = 2) -> str:
     return ("\u2212" if degrees < 0 and hundredths else "") + "".join(parts) + second
 
 
-def edition_quantity(value: object, unit: str = "") -> str:
+def edition_quantity(value: object, unit: str = "", digits: int = 10) -> str:
     """A recomputed value with its unit as the edition shows it: an ``angle`` (degrees) in
-    sexagesimal form, any other number with a decimal comma followed by its unit."""
+    sexagesimal form, any other number with a decimal comma (``digits`` significant digits)
+    followed by its unit."""
     if unit == "angle" and isinstance(value, float) and math.isfinite(value):
         return edition_angle(value)
-    return f"{edition_number(value)} {unit}".strip() if value is not None else ""
+    return f"{edition_number(value, digits)} {unit}".strip() if value is not None else ""
