@@ -153,9 +153,12 @@ const over = notes.filter((n) => box(n).left < right).length;
 const stacked = notes.filter((n, i) => i && box(n).top < box(notes[i - 1]).bottom - 0.5).length;
 const early = notes.filter((n) => box(n).top < own(n) - 1).length;
 const drift = Math.max(0, ...notes.map((n) => box(n).top - own(n)));
+// a table wider than the page hides its last columns behind a scroll
+const hidden = [...document.querySelectorAll(".wide")].filter((w) => w.scrollWidth > w.clientWidth)
+  .map((w) => w.previousElementSibling ? w.previousElementSibling.textContent.slice(0, 40) : "");
 document.body.insertAdjacentHTML("beforeend", "<pre id='probe'></pre>");
 document.getElementById("probe").textContent = JSON.stringify(
-  {gaps, over, stacked, early, drift, notes: notes.length});
+  {gaps, over, stacked, early, drift, hidden, notes: notes.length});
 </script>
 """
 MAX_GAP = 40  # px at 1280 px: a paragraph's margins and a displayed formula's padding
@@ -172,7 +175,9 @@ def _layout(page: Path) -> dict[str, object]:
 
 
 @pytest.mark.parametrize("paper", PAPERS)
-def test_the_margin_notes_do_not_hold_the_text_apart_nor_cover_it(pages: Path, paper: str) -> None:
+def test_the_notes_do_not_hold_the_text_apart_nor_cover_it_nor_a_table_hide(
+    pages: Path, paper: str
+) -> None:
     seen = _layout(pages / "papers" / f"{paper}.html")
     gaps = sorted(seen["gaps"], reverse=True)  # type: ignore[call-overload]
     assert gaps[0][0] <= MAX_GAP, f"white gaps between lines of text (px, at y): {gaps[:5]}"
@@ -180,6 +185,7 @@ def test_the_margin_notes_do_not_hold_the_text_apart_nor_cover_it(pages: Path, p
     assert seen["over"] == 0, f"{seen['over']} notes reach into the text column"
     assert seen["stacked"] == 0, f"{seen['stacked']} notes overlap the note before them"
     assert seen["early"] == 0, f"{seen['early']} notes start above their paragraph"
+    assert not seen["hidden"], f"tables wider than the page at 1280 px: {seen['hidden']}"
     print(f"{paper}: largest gap {gaps[0][0]} px, a note at most {seen['drift']:.0f} px below")
 
 
