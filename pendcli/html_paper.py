@@ -99,6 +99,7 @@ def _prose(piece: str) -> str:
     piece = _STRAY_TEX.sub(lambda m: plain_math(m.group(0)), piece)
     piece = re.sub(r"(?<=[^\W\d_])_([0-9])(?!\d)", lambda m: plain_math("_" + m.group(1)), piece)
     piece = re.sub(r"(?<=\d)\^e\b", "ᵉ", piece).replace("\t", "\u2003\u2003")
+    piece = re.sub(r"(?<=\d)\^o\b", "°", piece)  # « 1^o Durée … »: primo, printed 1°
     out = str(
         escape(re.sub(r"(?<=\w)\^([0-9])(?!\d)", lambda m: plain_math("^" + m.group(1)), piece))
     )

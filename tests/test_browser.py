@@ -153,12 +153,19 @@ const over = notes.filter((n) => box(n).left < right).length;
 const stacked = notes.filter((n, i) => i && box(n).top < box(notes[i - 1]).bottom - 0.5).length;
 const early = notes.filter((n) => box(n).top < own(n) - 1).length;
 const drift = Math.max(0, ...notes.map((n) => box(n).top - own(n)));
+// a mark around a whole formula holds the formula's box (not slivers beside it)
+const slivers = [...document.querySelectorAll(".edition .hl.whole")].filter((h) => {
+  const m = h.querySelector("math"); if (!m) return false;
+  const a = box(h), b = box(m);
+  return a.left > b.left + 1 || a.right < b.right - 1
+    || a.top > b.top + 1 || a.bottom < b.bottom - 1;
+}).map((h) => h.id);
 // a table wider than the page hides its last columns behind a scroll
 const hidden = [...document.querySelectorAll(".wide")].filter((w) => w.scrollWidth > w.clientWidth)
   .map((w) => w.previousElementSibling ? w.previousElementSibling.textContent.slice(0, 40) : "");
 document.body.insertAdjacentHTML("beforeend", "<pre id='probe'></pre>");
 document.getElementById("probe").textContent = JSON.stringify(
-  {gaps, over, stacked, early, drift, hidden, notes: notes.length});
+  {gaps, over, stacked, early, drift, hidden, slivers, notes: notes.length});
 </script>
 """
 MAX_GAP = 40  # px at 1280 px: a paragraph's margins and a displayed formula's padding
@@ -186,6 +193,7 @@ def test_the_notes_do_not_hold_the_text_apart_nor_cover_it_nor_a_table_hide(
     assert seen["stacked"] == 0, f"{seen['stacked']} notes overlap the note before them"
     assert seen["early"] == 0, f"{seen['early']} notes start above their paragraph"
     assert not seen["hidden"], f"tables wider than the page at 1280 px: {seen['hidden']}"
+    assert not seen["slivers"], f"marks not around their formula: {seen['slivers'][:5]}"
     print(f"{paper}: largest gap {gaps[0][0]} px, a note at most {seen['drift']:.0f} px below")
 
 

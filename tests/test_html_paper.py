@@ -103,6 +103,7 @@ def test_a_subscript_the_ocr_left_in_the_prose_is_set_as_one() -> None:
     page = paper_page("p", "c", "Une relation entre I_n et I_n-2 ; E_c et psi_sin2.\n", [])
     assert "I<sub>n</sub> et I<sub>n\u22122</sub>" in page and "E<sub>c</sub>" in page
     assert "psi_sin2" in page  # a name, not a subscript
+    assert "9. 1° Durée" in paper_page("p", "c", "9. 1^o Durée d'une oscillation.\n", [])
 
 
 def test_the_reports_findings_name_a_cause_once_and_break_ids_at_their_dots() -> None:
