@@ -60,9 +60,10 @@ def sources_of(row: Row) -> list[str]:
 
 
 def number_text(value: object) -> str:
-    if isinstance(value, float):
-        return f"{value:.10g}"
-    return "" if value is None else str(value)
+    """A recomputed number as the papers write theirs (decimal comma): the edition is French."""
+    from pendcli.core.numbers import edition_number
+
+    return edition_number(value)
 
 
 def disagrees(row: Row) -> bool:

@@ -61,6 +61,8 @@ def to_mathml(tex: str, display: bool) -> str | None:
     tex = re.sub(r"\\end\{(?:aligned|align\*?|split)\}", r"\\end{array}", tex)
     # a unit printed as an exponent of a number (0^{sec}, 94; 1^m, 21) is a word, upright
     tex = _UNIT.sub(lambda m: "^{\\text{" + (m.group(1) or m.group(2)) + "}}", tex)
+    # a decimal comma (5,14; 0^{sec},94) is part of its number: TeX's {,}, no space after it
+    tex = _AFTER_UNIT.sub(r"\1{,}", _DECIMAL_COMMA.sub("{,}", tex))
     try:
         mathml = convert(tex.strip(), display="block" if display else "inline")
     except Exception:
@@ -68,10 +70,23 @@ def to_mathml(tex: str, display: bool) -> str | None:
     # An unknown command comes out as a token holding its backslash: not rendered.
     if re.search(r"<m[io][^>]*>(?:\\|&(?![#\w]+;))", mathml) or "<merror" in mathml:
         return None
-    return typeset(mathml)
+    return typeset(decimal_numbers(mathml))
 
 
 _UNIT = re.compile(r"(?<=\d)\^\s*(?:\{\s*(sec|m|mm|h|min|s)\s*\}|(?<!\{)(m|h|s)(?![A-Za-z]))")
+_DECIMAL_COMMA = re.compile(r"(?<=\d),(?=\d)")
+_AFTER_UNIT = re.compile(r"(\^\{\\text\{[a-z]+\}\}),(?=\s*\d)")
+_GROUPED_COMMA = "<mrow><mo>&#x0002C;</mo></mrow>"
+
+
+def decimal_numbers(mathml: str) -> str:
+    """A decimal comma in latex2mathml's MathML (``{,}``: an operator, set with a space after
+    it, « 5, 14 ») as the paper prints it: one number ``<mn>5,14</mn>``, or, after a unit set
+    as an exponent (0ˢᵉᶜ,94) or beside a mark's edge, a comma with no space around it."""
+    out = re.sub(rf"<mn>(\d+)</mn>{_GROUPED_COMMA}<mn>(\d+)</mn>", r"<mn>\1,\2</mn>", mathml)
+    return out.replace(_GROUPED_COMMA, '<mo lspace="0" rspace="0">,</mo>')
+
+
 _PRIMES = r"<mi>(?P<p>(?:&#x0203[234];)+)</mi>"
 _ONE = r"<mi>[^<]*</mi>|<mn>[^<]*</mn>|<mrow>(?:(?!</?mrow>).)*</mrow>"
 _FUNCTION = r"<mi>(?:sin|cos|tan|cot|sec|log|exp)</mi>"

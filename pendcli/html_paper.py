@@ -16,6 +16,7 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from pendcli.core.numbers import edition_quantity
 from pendcli.html_marks import (
     EQUATION_CAUSE,
     STATUS_CLASSES,
@@ -87,6 +88,9 @@ def render_stats(text: str) -> RenderStats:
 _STRAY_TEX = re.compile(r"\\[A-Za-z]+(?:\{[^{}]*\})?(?:_\{?\w+\}?)?|\b\w_\{[^{}]*\}")
 
 
+_PROSE_SUBSCRIPT = re.compile(r"(?<![\w&#;])([^\W\d_])_([A-Za-z0-9]{1,2}(?:-\d)?)(?![\w])")
+
+
 def _prose(piece: str) -> str:
     """Prose escaped, its stray TeX (``\\mathbf{E}_c`` outside dollars) read plainly, its
     Markdown emphasis kept."""
@@ -95,8 +99,13 @@ def _prose(piece: str) -> str:
     piece = _STRAY_TEX.sub(lambda m: plain_math(m.group(0)), piece)
     piece = re.sub(r"(?<=[^\W\d_])_([0-9])(?!\d)", lambda m: plain_math("_" + m.group(1)), piece)
     piece = re.sub(r"(?<=\d)\^e\b", "ᵉ", piece).replace("\t", "\u2003\u2003")
+    piece = re.sub(r"(?<=\d)\^o\b", "°", piece)  # « 1^o Durée … »: primo, printed 1°
     out = str(
         escape(re.sub(r"(?<=\w)\^([0-9])(?!\d)", lambda m: plain_math("^" + m.group(1)), piece))
+    )
+    # a letter's subscript the OCR left in the prose (« I_n et I_n-2 », « E_c », « θ_m »)
+    out = _PROSE_SUBSCRIPT.sub(
+        lambda m: f"{m.group(1)}<sub>{m.group(2).replace('-', chr(0x2212))}</sub>", out
     )
     out = re.sub(r"\*\*(.+?)\*\*", r"<b>\1</b>", out)
     return re.sub(r"(?<![\w*])\*(?!\s)(.+?)(?<!\s)\*(?![\w*])", r"<i>\1</i>", out)
@@ -250,7 +259,8 @@ def _same_equation(formula_id: str, equation: Row) -> bool:
 
 
 def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple[int, Placement]],
-                 stats: RenderStats) -> list[dict[str, object]]:  # fmt: skip
+                 stats: RenderStats,
+                 rows: Mapping[str, Row]) -> list[dict[str, object]]:  # fmt: skip
     segments = math_segments(text)
     numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
                                                      key=lambda m: m.start), 1)}  # fmt: skip
@@ -271,7 +281,7 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
             "figure": bool(_FIGURE.fullmatch(text[a:b].strip())) and not inside,
             "front": b <= front,
             "pagebreak": "",
-            "notes": [_note(m, numbers[m.key]) for m in notes],
+            "notes": [_note(m, numbers[m.key], rows.get(m.row_id)) for m in notes],
         })  # fmt: skip
     return blocks
 
@@ -346,19 +356,35 @@ def front_matter_end(text: str, within: int = 40) -> int:
     return ends[-1] if ends else 0
 
 
-def _note(mark: Placement, number: int) -> dict[str, object]:
+MARGIN_DIGITS = 6  # an agreeing number's recomputed value in the margin; the table gives 10
+
+
+def _note(mark: Placement, number: int, row: Row | None) -> dict[str, object]:
+    """A margin note. An agreeing number's note is short, its recomputed value alone to six
+    figures (the printed one is the marked text beside it, the verdict the colour of its
+    label, all ten figures in the table): two such notes share a line of the margin, so the
+    notes beside a table of numbers run on little past it (Lecornu's tables)."""
+    text = mark.note
+    compact = not mark.finding and mark.how == "value" and row is not None and "recomputed" in row
+    if compact and row is not None:
+        text = edition_quantity(row.get("recomputed"), text_of(row, "unit"), MARGIN_DIGITS)
     # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
-            "label": mark.row_id.split(".", 1)[-1],
-            "word": mark.word, "text": mark.note, "finding": mark.finding}  # fmt: skip
+            "label": mark.row_id.split(".", 1)[-1], "compact": compact,
+            "word": mark.word, "text": text, "finding": mark.finding}  # fmt: skip
+
+
+def _cell(value: object, unit: str) -> str:
+    """A number of the claims table: an angle sexagesimal as printed, others a decimal comma."""
+    return edition_quantity(value, "angle") if unit == "angle" else number_text(value)
 
 
 def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, object]]:
     return [
         {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
          "source": text_of(r, "source"), "published": printed_form(text_of(r, "published")),
-         "unit": text_of(r, "unit"), "recomputed": number_text(r.get("recomputed")),
-         "exact": number_text(r.get("exact")), "cause": word_of(r.get("cause")),
+         "unit": text_of(r, "unit"), "recomputed": _cell(r.get("recomputed"), text_of(r, "unit")),
+         "exact": _cell(r.get("exact"), text_of(r, "unit")), "cause": word_of(r.get("cause")),
          "sources": sources_of(r), "note": text_of(r, "note")}
         for r in claims
     ]  # fmt: skip
@@ -367,7 +393,7 @@ def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, 
 def formula_cell(r: Row) -> dict[str, object]:
     order = r.get("observed_order")
     return {"id": id_of(r), "css": css_of(r), "word": verdict_of(r),
-            "order": f"{order:.2f}" if isinstance(order, float) else ""}  # fmt: skip
+            "order": number_text(round(order, 2)) if isinstance(order, float) else ""}  # fmt: skip
 
 
 def _equation_rows(equations: Sequence[Row], cited: Mapping[str, Sequence[Row]],
@@ -415,7 +441,8 @@ def paper_page(
     merged = {id_of(f) for fs in cited.values() for f in fs}
     alone = [f for f in formulas if id_of(f) not in merged]
     findings = [id_of(r) for r in [*claims, *equations, *alone] if disagrees(r)]
-    blocks = _text_blocks(text, marks, passages, stats)
+    rows = {id_of(r): r for r in [*claims, *equations]}
+    blocks = _text_blocks(text, marks, passages, stats, rows)
     return render_template(
         "paper.html.j2",
         title=f"pendcli: {paper}", lang="fr", paper=paper, citation=citation, legend=_legend(),

@@ -128,6 +128,75 @@ def test_a_paper_page_shows_no_tex_and_every_mark_and_link_lands(pages: Path, pa
     _screenshot(pages, page)
 
 
+# The edition's layout as drawn: the gap between consecutive paragraphs of text (the margin
+# notes must not hold the text apart), each note box against the text's right edge, against
+# the note before it, and against the top of its own paragraph (a note may run on below its
+# paragraph, never start above it).
+LAYOUT = """
+<script>
+const box = (e) => e.getBoundingClientRect();
+const drawn = (e) => {
+  const r = document.createRange(); r.selectNodeContents(e); return r.getBoundingClientRect(); };
+// the gaps between paragraphs, not across a page break of the edition (set apart on purpose)
+const gaps = []; let before = null;
+for (const e of document.querySelectorAll(".edition .txt, .edition .pagebreak")) {
+  const r = drawn(e);
+  if (e.classList.contains("pagebreak")) { before = null; continue; }
+  if (r.height === 0) continue;
+  if (before) gaps.push([Math.round(r.top - before.bottom), Math.round(r.top + scrollY)]);
+  before = r;
+}
+const right = Math.max(...[...document.querySelectorAll(".edition .txt")].map((t) => box(t).right));
+const notes = [...document.querySelectorAll(".edition .notes")];
+const own = (n) => box(n.parentElement.querySelector(".txt")).top;
+const over = notes.filter((n) => box(n).left < right).length;
+const stacked = notes.filter((n, i) => i && box(n).top < box(notes[i - 1]).bottom - 0.5).length;
+const early = notes.filter((n) => box(n).top < own(n) - 1).length;
+const drift = Math.max(0, ...notes.map((n) => box(n).top - own(n)));
+// a mark around a whole formula holds the formula's box (not slivers beside it)
+const slivers = [...document.querySelectorAll(".edition .hl.whole")].filter((h) => {
+  const m = h.querySelector("math"); if (!m) return false;
+  const a = box(h), b = box(m);
+  return a.left > b.left + 1 || a.right < b.right - 1
+    || a.top > b.top + 1 || a.bottom < b.bottom - 1;
+}).map((h) => h.id);
+// a table wider than the page hides its last columns behind a scroll
+const hidden = [...document.querySelectorAll(".wide")].filter((w) => w.scrollWidth > w.clientWidth)
+  .map((w) => w.previousElementSibling ? w.previousElementSibling.textContent.slice(0, 40) : "");
+document.body.insertAdjacentHTML("beforeend", "<pre id='probe'></pre>");
+document.getElementById("probe").textContent = JSON.stringify(
+  {gaps, over, stacked, early, drift, hidden, slivers, notes: notes.length});
+</script>
+"""
+MAX_GAP = 40  # px at 1280 px: a paragraph's margins and a displayed formula's padding
+
+
+def _layout(page: Path) -> dict[str, object]:
+    probe = page.with_name(f"{page.stem}-layout.html")
+    probe.write_text(page.read_text("utf-8").replace("</body>", LAYOUT + "</body>"), "utf-8")
+    dom = _chromium("--window-size=1280,2000", "--dump-dom", probe.as_uri())
+    probe.unlink()
+    found = re.search(r"<pre id=\"probe\">(.*?)</pre>", dom, re.S)
+    assert found, "the layout probe did not run"
+    return json.loads(html.unescape(found.group(1)))
+
+
+@pytest.mark.parametrize("paper", PAPERS)
+def test_the_notes_do_not_hold_the_text_apart_nor_cover_it_nor_a_table_hide(
+    pages: Path, paper: str
+) -> None:
+    seen = _layout(pages / "papers" / f"{paper}.html")
+    gaps = sorted(seen["gaps"], reverse=True)  # type: ignore[call-overload]
+    assert gaps[0][0] <= MAX_GAP, f"white gaps between lines of text (px, at y): {gaps[:5]}"
+    assert seen["notes"], "no margin notes drawn"
+    assert seen["over"] == 0, f"{seen['over']} notes reach into the text column"
+    assert seen["stacked"] == 0, f"{seen['stacked']} notes overlap the note before them"
+    assert seen["early"] == 0, f"{seen['early']} notes start above their paragraph"
+    assert not seen["hidden"], f"tables wider than the page at 1280 px: {seen['hidden']}"
+    assert not seen["slivers"], f"marks not around their formula: {seen['slivers'][:5]}"
+    print(f"{paper}: largest gap {gaps[0][0]} px, a note at most {seen['drift']:.0f} px below")
+
+
 def _within(lines: tuple[int, int], shown: list[tuple[int, int]]) -> bool:
     """A mark the browser shows lies within the row's lines (its data-lines)."""
     return any(lines[0] <= a and b <= lines[1] for a, b in shown)

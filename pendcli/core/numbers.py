@@ -23,7 +23,14 @@ from fractions import Fraction
 
 from pendcli.core.errors import PendcliError
 
-__all__ = ["PrintedNumber", "exact_number", "parse_printed"]
+__all__ = [
+    "PrintedNumber",
+    "edition_angle",
+    "edition_number",
+    "edition_quantity",
+    "exact_number",
+    "parse_printed",
+]
 
 
 @dataclass(frozen=True)
@@ -193,3 +200,54 @@ def exact_number(printed: PrintedNumber) -> PrintedNumber:
     return PrintedNumber(
         text=printed.text, value=printed.value, resolution=None, kind="exact", exact=exact
     )
+
+
+# --- numbers written as the papers write them --------------------------------------------
+
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def edition_number(value: object, digits: int = 10) -> str:
+    """A recomputed number as the three papers print theirs, for the annotated edition.
+
+    A decimal comma (``5,135622302``, as the paper prints ``5,14``), the typeset minus sign
+    (``−0,130``) and no grouping of digits: none of the three papers groups its digits (the
+    longest printed decimal, 0,00313, has five). A power of ten is written ``1,2·10⁻⁵``, not
+    ``1.2e-05``. ``digits`` significant digits, trailing zeros dropped. Integers and text pass
+    through; the JSON and CSV outputs keep their machine form and do not use this.
+    """
+    if value is None:
+        return ""
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        return str(value)
+    if isinstance(value, int):
+        return str(value).replace("-", "\u2212")
+    if not math.isfinite(value):
+        return str(value)
+    mantissa, _, exponent = f"{value:.{digits}g}".partition("e")
+    text = mantissa.replace(".", ",").replace("-", "\u2212")
+    if exponent:
+        text += "·10" + str(int(exponent)).translate(_SUPERSCRIPT)
+    return text
+
+
+def edition_angle(degrees: float, decimals: int = 2) -> str:
+    """An angle in degrees as the papers print one, sexagesimal: ``−1°7′33,14″``, ``2′42,00″``,
+    ``1,69″`` (Tisserand's 1°7'33'', 2'42'', 2''), the seconds to ``decimals`` places, the
+    leading zero parts left out as the paper leaves them out."""
+    hundredths = round(abs(degrees) * 3600 * 10**decimals)
+    whole, fraction = divmod(hundredths, 10**decimals)
+    deg, rest = divmod(whole, 3600)
+    minutes, seconds = divmod(rest, 60)
+    parts = [f"{deg}°" if deg else "", f"{minutes}′" if deg or minutes else ""]
+    second = f"{seconds},{fraction:0{decimals}d}″" if decimals else f"{seconds}″"
+    return ("\u2212" if degrees < 0 and hundredths else "") + "".join(parts) + second
+
+
+def edition_quantity(value: object, unit: str = "", digits: int = 10) -> str:
+    """A recomputed value with its unit as the edition shows it: an ``angle`` (degrees) in
+    sexagesimal form, any other number with a decimal comma (``digits`` significant digits)
+    followed by its unit."""
+    if unit == "angle" and isinstance(value, float) and math.isfinite(value):
+        return edition_angle(value)
+    return f"{edition_number(value, digits)} {unit}".strip() if value is not None else ""
