@@ -482,7 +482,7 @@ def _row_base(row: Row) -> dict[str, Any]:
 
 
 # The note of a row's second and later wrong terms: the reading or correction is shown once.
-ALSO_WRONG = "also wrong: the reading or correction is the note of this row's first wrong term"
+ALSO_WRONG = "also wrong; the reading or correction is in this row's note on its main wrong term"
 
 
 def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
