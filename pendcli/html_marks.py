@@ -327,10 +327,11 @@ def place_marks(
     """Every mark of the page, and the notes placed at a passage without a mark of their own.
 
     A row with ``lines`` is marked inside them: a claim by its printed string; a ledger row
-    by its wrong term (a misprint or a failure) or its label, else at the formula of those
-    lines that its printed form (or statement) is, else by its quoted words, else at their
-    first free formula or sentence. Wrong terms and labels go first for every row, so that
-    one row's whole formula does not take another row's label. A row without ``lines`` is
+    by its wrong terms (a misprint or a failure) or its label, and by the words of the text
+    it rests on (its ``quote``); else at the formula of those lines that its printed form (or
+    statement) is, else by its quoted words, else at their first free formula or sentence.
+    Wrong terms and labels go first for every row, then quotes, so that one row's whole
+    formula does not take another row's label or sentence. A row without ``lines`` is
     looked for inside its regions (:func:`_regions`), then by its printed string.
     """
     segments = math_segments(text)
@@ -338,7 +339,9 @@ def place_marks(
     for row in claims:
         _place_claim(page, row)
     bounded = [(row, span) for row in equations if (span := lines_region(text, row))]
-    unmarked = [(row, span) for row, span in bounded if not _place_specific(page, row, span)]
+    specific = [_place_specific(page, row, span) for row, span in bounded]
+    quoted = [_place_own_quotes(page, row, span) for row, span in bounded]
+    unmarked = [rs for rs, a, b in zip(bounded, specific, quoted, strict=True) if not (a or b)]
     for row, span in unmarked:
         if not _place_formulas(page, row, span) and not _place_quote(page, row, span):
             _place_generic(page, row, span)
@@ -479,9 +482,13 @@ def _row_base(row: Row) -> dict[str, Any]:
     return {"row_id": id_of(row), "word": verdict_of(row), "finding": disagrees(row)}
 
 
+# The note of a row's second and later wrong terms: the reading or correction is shown once.
+ALSO_WRONG = "also wrong; the reading or correction is in this row's note on its main wrong term"
+
+
 def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
-    """Inside the row's lines: its wrong terms (the first carries the reading or correction)
-    and its label. Whether anything was marked."""
+    """Inside the row's lines: its wrong terms (the first carries the reading or correction,
+    the others say where it is) and its label. Whether anything was marked."""
     a, b = region
     base, note = _row_base(row), _equation_note(row)
     terms = 0
@@ -489,8 +496,8 @@ def _place_specific(page: _Page, row: Row, region: tuple[int, int]) -> bool:
         span = _find(page.text, [printed], a, b, page.taken) or _around_marks(page, printed, a, b)
         if span is not None:
             _add(page, span, key=f"{id_of(row)}~term{i}", css=f"{css_of(row)} wrong",
-                 note="" if terms else note, anchored=True, forms=(printed,), how="term",
-                 nests=not _free(page, span), **base)  # fmt: skip
+                 note=ALSO_WRONG if terms else note, anchored=True, forms=(printed,),
+                 how="term", nests=not _free(page, span), **base)  # fmt: skip
             terms += 1
     label = text_of(row, "equation")
     span = _label_place(page.text, label, page.segments, region) if label else None
@@ -514,6 +521,64 @@ def _around_marks(page: _Page, printed: str, a: int, b: int) -> tuple[int, int] 
         if all(e <= x or s >= y or (x <= s and e <= y) for s, e in page.taken):
             return x, y
     return None
+
+
+def quotes_of(row: Row) -> list[str]:
+    """The words of the text the row rests on (its ``quote``: a string or a list)."""
+    value = row.get("quote")
+    if isinstance(value, str):
+        return [value] if value else []
+    return [str(v) for v in value] if isinstance(value, list | tuple) else []
+
+
+def _place_own_quotes(page: _Page, row: Row, region: tuple[int, int]) -> bool:
+    """Each of the row's ``quote``s, found verbatim inside its lines, marked as it is printed:
+    its prose, and the formulas it runs through, each a piece of the mark (a prose mark
+    cannot reach into a formula). A quote may hold a claim's mark whole (the claim's number
+    in the sentence). The first piece carries the note. Whether every quote was marked."""
+    pieces: list[tuple[tuple[int, int], bool, str]] = []
+    for quote in quotes_of(row):
+        span = _verbatim(page, quote, *region)
+        if span is None:
+            return False
+        pieces += [(piece, whole, quote) for piece, whole in _quote_pieces(page, *span)]
+    for i, (span, whole, quote) in enumerate(pieces):
+        base = {**_row_base(row), "finding": disagrees(row) and i == 0}  # its note, once
+        _add(page, span, key=id_of(row) if i == 0 else f"{id_of(row)}~quote{i}",
+             css=css_of(row), note="continued" if i else _equation_note(row), anchored=True,
+             forms=(quote,), how="quote", whole=whole, nests=not whole and not _free(page, span),
+             **base)  # fmt: skip
+    return bool(pieces)
+
+
+def _verbatim(page: _Page, quote: str, a: int, b: int) -> tuple[int, int] | None:
+    """The first occurrence of ``quote`` in text[a:b] that meets only marks it holds whole."""
+    at = page.text.find(quote, a, b)
+    while at >= 0:
+        x, y = at, at + len(quote)
+        if all(e <= x or s >= y or (x <= s and e <= y) for s, e in page.taken):
+            return x, y
+        at = page.text.find(quote, at + 1, b)
+    return None
+
+
+def _quote_pieces(page: _Page, a: int, b: int) -> list[tuple[tuple[int, int], bool]]:
+    """text[a:b] cut where formulas begin and end: its prose stretches and, of each formula
+    it meets, the TeX it covers (the whole formula where that part does not balance). Each
+    piece with whether it is drawn around a whole formula."""
+    out: list[tuple[tuple[int, int], bool]] = []
+    pos = a
+    for s in (s for s in page.segments if s.start < b and a < s.end):
+        if pos < s.start:
+            out.append((_strip(page.text, pos, s.start), False))
+        x, y = _strip(page.text, max(a, s.tex_start), min(b, s.tex_end))
+        if not balanced(page.text[x:y]):
+            x, y = _strip(page.text, s.tex_start, s.tex_end)
+        out.append(((x, y), (x, y) == _strip(page.text, s.tex_start, s.tex_end) and s.display))
+        pos = s.end
+    if pos < b:
+        out.append((_strip(page.text, pos, b), False))
+    return [(span, whole) for span, whole in out if re.search(r"\w", page.text[slice(*span)])]
 
 
 def _place_quote(page: _Page, row: Row, region: tuple[int, int]) -> bool:

@@ -208,7 +208,7 @@ def _ledger_fields(paper: str, rows: Sequence[Row]) -> list[Row]:
     if paper not in ledger_papers():
         return list(rows)
     recorded = {r.id: r for r in load_ledger(paper).rows}
-    keys = ("reading", "corrected", "wrong_term", "note")
+    keys = ("reading", "corrected", "wrong_term", "quote", "note")
     return [
         {**row, **{("ledger_note" if k == "note" else k): getattr(recorded[id_of(row)], k, None)
                    for k in keys}} if id_of(row) in recorded else row

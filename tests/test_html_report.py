@@ -17,6 +17,7 @@ from markupsafe import escape
 from pendcli.core.ledger import load_ledger
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.html_graph import layered_graph
+from pendcli.html_marks import Placement
 from pendcli.html_math import math_segments, plain_math, to_mathml
 from pendcli.html_report import (
     cited_formulas,
@@ -186,7 +187,7 @@ def _table_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, obj
     equations: list[dict[str, object]] = [
         {"id": r.id, "equation": r.equation, "section": r.section, "statement": r.statement,
          "status": r.status, "wrong_term": r.wrong_term, "note": r.note or "",
-         "lines": r.lines, "reading": r.reading, "corrected": r.corrected,
+         "lines": r.lines, "quote": r.quote, "reading": r.reading, "corrected": r.corrected,
          "printed": r.printed}
         for r in load_ledger(paper).rows
     ]  # fmt: skip
@@ -206,6 +207,34 @@ def _own_strings(row: dict[str, object]) -> set[str]:
     terms = {term} if isinstance(term, str) else set(term or ())  # type: ignore[arg-type]
     own = {str(row.get(k) or "") for k in ("published", "as_printed", "equation")}
     return {s for s in own | terms | quoted if s}
+
+
+def _quotes_of(row: dict[str, object]) -> list[str]:
+    """The row's ``quote`` field (a string or a list), read here."""
+    value = row.get("quote")
+    return [value] if isinstance(value, str) else [str(q) for q in value or ()]  # type: ignore[attr-defined]
+
+
+def _quote_is_printed(text: str, row: dict[str, object], mark: Placement,
+                      marks: Sequence[Placement]) -> bool:  # fmt: skip
+    """The pieces of a quote's mark lie within one verbatim occurrence of the quote inside
+    the row's lines (counted here) and cover every word of it: what they leave uncovered
+    is no more than the $ of a formula, blanks and punctuation."""
+    quote, (first, last) = mark.forms[0], row["lines"]  # type: ignore[misc]
+    pieces = [(o.start, o.end) for o in marks
+              if (o.row_id, o.how, o.forms) == (mark.row_id, "quote", mark.forms)]  # fmt: skip
+    lines = text.split("\n")
+    lo = sum(len(line) + 1 for line in lines[: first - 1])
+    hi = lo + len("\n".join(lines[first - 1 : last]))
+    at = text.find(quote, lo, hi)
+    while at >= 0:
+        if all(at <= a and b <= at + len(quote) for a, b in pieces):
+            left = list(text[at : at + len(quote)])
+            for a, b in pieces:
+                left[a - at : b - at] = " " * (b - a)
+            return not re.search(r"\w", "".join(left))
+        at = text.find(quote, at + 1, hi)
+    return False
 
 
 def _digits(s: str) -> Counter[str]:
@@ -259,6 +288,9 @@ def _misplaced(paper: str, text: str, claims: list[dict[str, object]],
             printed_ok = not row.get("printed") or _formula_is_printed(marked, m.forms[0], others)
             if not (inside and m.forms[0] in parts and printed_ok):
                 bad.append(f"{m.key}: {marked!r} is not {m.forms[0]!r}")
+        elif m.how == "quote" and m.forms[0] in _quotes_of(row):
+            if not _quote_is_printed(text, row, m, marks):
+                bad.append(f"{m.key}: {marked!r} is not {m.forms[0]!r} within its lines")
         elif m.how == "first":
             if row.get("printed"):  # a row with a printed form is placed by it
                 bad.append(f"{m.key}: at the first formula of its lines, not by its printed form")
@@ -267,47 +299,12 @@ def _misplaced(paper: str, text: str, claims: list[dict[str, object]],
     return bad
 
 
-# Rows whose mark this test cannot confirm from the printed form, each with why (the mark lies
-# within the row's lines all the same, which the test still holds). The two-line formulas
-# (\begin{aligned}: its name's letters were read as atoms), ∂θ/∂u spelt th_u and ∫dx spelt
-# Integral(1, …) are matched now; these two remain because the text does not print the row's
-# formula as one formula:
-UNCONFIRMED = {
-    # l²θ² dφ/dt = c (line 1086) is printed; the row's printed form is the identity with (44)
-    # the next sentence names in words (« identique, pour le degré d'approximation adopté »),
-    # l²θ² dφ/dt = l² sin²θ dφ/dt + …, which no formula of its lines prints: its nearest
-    # formula shares 0.44 of its atoms (< NEAR), so it is marked at the first formula there
-    "lecornu.result.area_small_angle": "the row writes out the approximation the text names",
-    "lecornu.result.inflection_at_vertical": "« une inflexion »: a sentence, no formula (a19)",
-    # cos kt = −1 is printed half as TeX, half as prose (« $\cos kt$ ne diffère de -1 »): the
-    # mark is on the $\cos kt$, a prose mark cannot reach into a formula, and the -1 of the
-    # prose is not in the marked TeX the digit check reads
-    "charbonnier.result.amplitude": "« cos kt ne diffère de -1 »: the sentence's cos kt",
-    # n19: printed numbers in words, a product written as a double factorial
-    "tisserand.result.displacement": "« un cinquième de millimètre »: words, the row's mm/5",
-    "charbonnier.result.in-pi": "2·4…n/(1·3·5…(n+1)): the row's factorial2(n)/factorial2(n+1)",
-    # d19: sentences the row writes as the formula (or the sign) they assert
-    "charbonnier.result.sine-to-arc": "« le sinus pourra être réduit à l'arc »: sin θ = θ",
-    "charbonnier.result.rise-equals-descent": "« l'arc de remontée est égal »: θ = α at T",
-    "charbonnier.result.work-positive": "« toujours positive »: E_s > 0",
-    "charbonnier.result.es-symmetry": "« un axe de symétrie »: the symmetry written out",
-    "charbonnier.result.period-constant-resistance": "« Il en est de même »: E_c(π) = 0",
-    "charbonnier.result.i-at-pi": "« I_0 devient égal à 2 »: I(0, π) = 2",
-    "charbonnier.result.friction-independent": "« Δx est indépendant »: its derivatives",
-    "charbonnier.result.infinite-count": "« P devient infini »: the decay written out",
-}
-
-
 @pytest.mark.parametrize("paper", PAPERS)
 def test_each_mark_is_what_its_row_prints_and_lies_within_its_lines(paper: str) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
     claims, equations = _table_rows(paper)
     assert all(r["lines"] for r in [*claims, *equations])  # every row says where it is printed
-    bad = _misplaced(paper, text, claims, equations)
-    unconfirmed = {b for b in bad if b.split(":")[0].split("~")[0] in UNCONFIRMED}
-    assert not [b for b in bad if b not in unconfirmed or "not in" in b]  # outside its lines
-    mine = {k for k in UNCONFIRMED if k.startswith(f"{paper}.")}
-    assert {b.split(":")[0].split("~")[0] for b in unconfirmed} == mine  # no stale exemption
+    assert _misplaced(paper, text, claims, equations) == []
     marks, _ = place_marks(text, claims, equations)
     displays = [(s.start, s.end) for s in math_segments(text) if s.display]
     for m in marks:  # a label: inside a display formula
@@ -315,8 +312,8 @@ def test_each_mark_is_what_its_row_prints_and_lies_within_its_lines(paper: str) 
             assert any(a <= m.start < b for a, b in displays), m.key
     spans = sorted((m.start, m.end) for m in marks if not m.whole and not m.nests)
     assert all(b <= c for (_, b), (c, _) in itertools.pairwise(spans))  # disjoint
-    for outer in (m for m in marks if m.nests):  # a wrong term around marks: holds them whole
-        assert outer.how == "term", outer.key
+    for outer in (m for m in marks if m.nests):  # a wrong term or quote around marks: whole
+        assert outer.how in ("term", "quote"), outer.key
         met = [(a, b) for a, b in spans if a < outer.end and outer.start < b]
         assert met and all(outer.start <= a and b <= outer.end for a, b in met), outer.key
     assert {m.row_id for m in marks} == {str(r["id"]) for r in [*claims, *equations]}
@@ -478,9 +475,9 @@ def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(pape
 
 def _wrong_term_faults(text: str, claims: list[dict[str, object]],
                       equations: list[dict[str, object]]) -> list[str]:  # fmt: skip
-    """The misprint/fails rows whose wrong term is not recorded, not marked as printed within
-    their lines (lines counted here), not drawn in the page, or whose reading or correction
-    is not the note beside it, once in the edition."""
+    """The misprint/fails rows whose wrong terms are not recorded, not each marked as printed
+    within their lines (lines counted here), not drawn in the page, or whose reading or
+    correction is not the note beside the first, once in the edition."""
     wrong = [r for r in equations if str(r["status"]) in ("misprint", "fails")]
     marks = {m.key: m for m in place_marks(text, claims, equations)[0]}
     page = paper_page("p", "", text, claims, (), equations)
@@ -488,22 +485,34 @@ def _wrong_term_faults(text: str, claims: list[dict[str, object]],
     notes = dict(re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition))
     bad = []
     for row in wrong:
-        key, (first, last) = f"{row['id']}~term0", row["lines"]  # type: ignore[misc]
-        mark, shown = marks.get(key), str(escape(correction_of(row)))
-        drawn = rf'class="hl [^"]*\bwrong\b[^"]*" id="at-{re.escape(str(escape(key)))}"'
-        if not row["wrong_term"] or mark is None:
-            bad.append(f"{row['id']}: no wrong term marked ({row['wrong_term']!r})")
-        elif not _same(text[mark.start : mark.end], str(row["wrong_term"])):
-            bad.append(f"{key}: marks {text[mark.start : mark.end]!r}")
-        elif not first <= _line_of(text, mark.start) <= _line_of(text, mark.end - 1) <= last:
-            bad.append(f"{key}: outside its lines {row['lines']}")
-        elif not re.search(drawn, edition):
-            bad.append(f"{key}: not drawn in the page")
-        elif not shown or shown not in notes.get(str(escape(key)), ""):
-            bad.append(f"{key}: its note is not {shown!r}")
-        elif sum(shown in body for body in notes.values()) != 1:
-            bad.append(f"{key}: {shown!r} shown more than once")
-    return bad
+        value, shown = row["wrong_term"], str(escape(correction_of(row)))
+        terms = [value] if isinstance(value, str) else list(value or ())  # type: ignore[call-overload]
+        if not terms:
+            bad.append(f"{row['id']}: no wrong term marked ({value!r})")
+        bad += [_term_fault(text, row, i, term, marks, edition) for i, term in enumerate(terms)]
+        key = str(escape(f"{row['id']}~term0"))
+        if terms and (not shown or shown not in notes.get(key, "")):
+            bad.append(f"{row['id']}~term0: its note is not {shown!r}")
+        elif terms and sum(shown in body for body in notes.values()) != 1:
+            bad.append(f"{row['id']}~term0: {shown!r} shown more than once")
+    return [b for b in bad if b]
+
+
+def _term_fault(text: str, row: dict[str, object], i: int, term: str,
+                marks: dict[str, Placement], edition: str) -> str:  # fmt: skip
+    """Why the row's i-th wrong term is not marked as printed within its lines ("" if it is)."""
+    key, (first, last) = f"{row['id']}~term{i}", row["lines"]  # type: ignore[misc]
+    mark = marks.get(key)
+    drawn = rf'class="hl [^"]*\bwrong\b[^"]*" id="at-{re.escape(str(escape(key)))}"'
+    if mark is None:
+        return f"{key}: no wrong term marked ({term!r})"
+    if not _same(text[mark.start : mark.end], term):
+        return f"{key}: marks {text[mark.start : mark.end]!r}"
+    if not first <= _line_of(text, mark.start) <= _line_of(text, mark.end - 1) <= last:
+        return f"{key}: outside its lines {row['lines']}"
+    if not re.search(drawn, edition):
+        return f"{key}: not drawn in the page"
+    return ""
 
 
 @pytest.mark.parametrize("paper", PAPERS)
@@ -525,7 +534,21 @@ def test_the_wrong_term_check_sees_a_term_missing_or_not_printed_in_its_lines() 
         broken = [{**r, "wrong_term": term} if r["id"] == "tisserand.eq.13" else r
                   for r in equations]  # fmt: skip
         faults = _wrong_term_faults(text, claims, broken)
-        assert [b.split(":")[0] for b in faults] == ["tisserand.eq.13"]
+        assert {b.split(":")[0].split("~")[0] for b in faults} == {"tisserand.eq.13"}
+
+
+def test_the_wrong_term_check_sees_a_second_term_that_is_not_printed() -> None:
+    """Broken on purpose: delta_rhs's second wrong term (the 3/8 of u cos 3u) changed to one
+    the text does not print is caught, as that term alone."""
+    text = (tables_dir() / "papers" / "lecornu.txt").read_text("utf-8")
+    claims, equations = _table_rows("lecornu")
+    row = next(r for r in equations if r["id"] == "lecornu.result.delta_rhs")
+    first, second = row["wrong_term"]  # type: ignore[misc]
+    assert second == "+ \\frac{3}{8} u \\cos 3u"
+    broken = [{**r, "wrong_term": (first, "+ \\frac{7}{8} u \\cos 3u")} if r is row else r
+              for r in equations]  # fmt: skip
+    faults = _wrong_term_faults(text, claims, broken)
+    assert [b.split(":")[0] for b in faults] == ["lecornu.result.delta_rhs~term1"]
 
 
 @pytest.mark.parametrize("paper", PAPERS)

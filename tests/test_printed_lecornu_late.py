@@ -61,7 +61,7 @@ def test_a_wrong_term_is_printed_in_its_lines(row_id: str) -> None:
     lines = (TABLES / "papers" / "lecornu.txt").read_text(encoding="utf-8").splitlines()
     assert row.lines is not None and row.wrong_term is not None
     span = "\n".join(lines[row.lines[0] - 1 : row.lines[1]])
-    assert row.wrong_term in span
+    assert all(term in span for term in row.wrong_terms)
 
 
 def _problem(row_id: str, old: str, new: str) -> tuple[str | None, str | None]:

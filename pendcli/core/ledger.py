@@ -63,9 +63,13 @@ __all__ = [
 
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
-# Where the row is printed, what it restates, and (issue 19) the printed form as a formula.
-TEXT_KEYS = ("lines", "restates", "printed", "reading_formula", "corrected_formula", "reference")
+# Where the row is printed (its lines, and the words of them it rests on), what it restates,
+# and (issue 19) the printed form as a formula.
+TEXT_KEYS = ("lines", "quote", "restates", "printed", "reading_formula", "corrected_formula",
+             "reference")  # fmt: skip
 ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "wrong_term", "note", *TEXT_KEYS)
+# Keys that take a string or a list of strings, each printed verbatim within the row's lines.
+PRINTED_KEYS = ("wrong_term", "quote")
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
 OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
 
@@ -119,14 +123,29 @@ class LedgerRow:
     check: str | None = None
     reading: str | None = None
     corrected: str | None = None
-    wrong_term: str | None = None  # the wrong term as the OCR text prints it (marked in the HTML)
+    # the wrong term(s) as the OCR text prints them (marked in the HTML)
+    wrong_term: str | tuple[str, ...] | None = None
     note: str | None = None
     lines: Span | None = None
+    # the words of the text the row rests on (a sentence, a phrase), verbatim from its lines
+    quote: str | tuple[str, ...] | None = None
     restates: str | None = None
     printed: str | None = None
     reading_formula: str | None = None
     corrected_formula: str | None = None
     reference: str | None = None
+
+    @property
+    def wrong_terms(self) -> tuple[str, ...]:
+        return _as_strings(self.wrong_term)
+
+    @property
+    def quotes(self) -> tuple[str, ...]:
+        return _as_strings(self.quote)
+
+
+def _as_strings(value: str | tuple[str, ...] | None) -> tuple[str, ...]:
+    return (value,) if isinstance(value, str) else value or ()
 
 
 @dataclass(frozen=True)
@@ -220,7 +239,8 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         raise PendcliError(f"{path}: [[equation]] #{index + 1} is not a table")
     where = f"{path}: {entry.get('id', f'[[equation]] #{index + 1}')}"
     _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
-    for key in (k for k in ROW_KEYS if k != "lines"):
+    printed = {k: _strings(where, k, entry[k]) for k in PRINTED_KEYS if k in entry}
+    for key in (k for k in ROW_KEYS if k != "lines" and k not in PRINTED_KEYS):
         value = entry.get(key)
         if key in REQUIRED_KEYS and value is None:
             raise PendcliError(f"{where}: missing {key!r}")
@@ -233,25 +253,52 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         )
     lines = entry.get("lines")
     span = None if lines is None else validate_span(where, lines)
-    row = LedgerRow(paper=paper, **{**entry, "lines": span, "status": Status(entry["status"])})
+    status = Status(entry["status"])
+    row = LedgerRow(paper=paper, **{**entry, **printed, "lines": span, "status": status})
     _check_identity(where, row)
     _check_status_fields(where, row)
     return row
 
 
+def _strings(where: str, key: str, value: object) -> str | tuple[str, ...]:
+    """A ``wrong_term`` or ``quote``: a non-empty string, or a non-empty list of them."""
+    items = value if isinstance(value, list) else [value]
+    if not items or not all(isinstance(v, str) and v.strip() for v in items):
+        raise PendcliError(f"{where}: {key!r} must be a non-empty string or list of strings")
+    return value if isinstance(value, str) else tuple(str(v) for v in items)
+
+
 def _check_text_fields(path: Path, rows: list[LedgerRow], text: Path) -> None:
-    """``lines`` within the paper's text (when the text is there to count) and ``restates``
-    naming another row of the ledger."""
+    """``lines`` within the paper's text (when the text is there to count), each wrong term
+    and quote printed verbatim within them, and ``restates`` naming another row."""
     from pendcli.core.tables import read_table_text
 
     ids = {r.id for r in rows}
     # not UTF-8 or empty: the text's own one-line error; missing: load_ledger says so
-    count = len(read_table_text(text, "paper text").splitlines()) if text.exists() else None
+    lines = read_table_text(text, "paper text").splitlines() if text.exists() else None
     for row in rows:
-        if row.lines is not None and count is not None:
-            validate_span(f"{path}: {row.id}", list(row.lines), count)
+        if row.lines is not None and lines is not None:
+            validate_span(f"{path}: {row.id}", list(row.lines), len(lines))
+        if lines is not None:
+            _check_printed_within_lines(f"{path}: {row.id}", row, lines, text.name)
         if row.restates is not None and (row.restates not in ids or row.restates == row.id):
             raise PendcliError(f"{path}: {row.id}: restates {row.restates!r}, not another row")
+
+
+def _check_printed_within_lines(where: str, row: LedgerRow, lines: list[str], text: str) -> None:
+    """Each wrong term and quote occurs, exactly as transcribed, within the row's lines."""
+    for key, items in (("wrong_term", row.wrong_terms), ("quote", row.quotes)):
+        if items and row.lines is None:
+            raise PendcliError(f"{where}: {key!r} needs 'lines' (where it is printed)")
+        if row.lines is None:
+            continue
+        first, last = row.lines
+        span = "\n".join(lines[first - 1 : last])
+        for item in items:
+            if item not in span:
+                raise PendcliError(
+                    f"{where}: {key} {item!r} is not in its lines [{first}, {last}] of {text}"
+                )
 
 
 def _check_identity(where: str, row: LedgerRow) -> None:
