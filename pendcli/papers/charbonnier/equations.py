@@ -14,6 +14,7 @@ from typing import Any
 
 from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
+from pendcli.papers.identities import vanishes_identically
 
 
 @cache
@@ -29,9 +30,7 @@ def _reuse(*ids: str) -> EquationCheck:
 
 
 def _identity(difference: Any, what: str) -> EquationCheck:
-    import sympy as sp
-
-    zero = sp.simplify(difference) == 0
+    zero = vanishes_identically(difference)
     return EquationCheck(
         holds=bool(zero),
         method="sympy",

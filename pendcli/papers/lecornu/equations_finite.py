@@ -18,6 +18,7 @@ from pendcli.papers.lecornu.equations_common import (
     from_formulas,
     is_zero,
     sympy_module,
+    taylor,
     trig_form,
     trig_text,
 )
@@ -173,7 +174,7 @@ def eq_39() -> EquationCheck:
     om, ep = sp.Function("omega")(uu), sp.Function("epsilon")(uu)
     th = om + p * ep
     eq32 = th.diff(uu, 2) + sp.sin(th) + p * (uu * th.diff(uu, 2) + 2 * th.diff(uu))
-    first = sp.series(eq32, p, 0, 2).removeO().coeff(p, 1)
+    first = sp.expand(taylor(eq32, p, 2)).coeff(p, 1)
     printed = ep.diff(uu, 2) + ep * sp.cos(om) + (uu * om.diff(uu, 2) + 2 * om.diff(uu))
     return equation_check(
         is_zero(first - printed), "sympy", "first order in p of (32) with θ = ω + pε"
@@ -193,7 +194,7 @@ def eq_40() -> EquationCheck:
     uu, f, beta = _f_beta()
     k = sp.Symbol("k")
     om = 2 * k * sp.cos(uu) + k**3 / 24 * f
-    cos_om = sp.series(sp.cos(om), k, 0, 3).removeO()
+    cos_om = taylor(sp.cos(om), k, 3)
     big_f = -(uu * om.diff(uu, 2) + 2 * om.diff(uu))
     a = 2 * uu * sp.cos(uu) + 4 * sp.sin(uu)
     b = -(uu * f.diff(uu, 2) + 2 * f.diff(uu)) / 24

@@ -15,6 +15,8 @@ from typing import Any
 
 from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
+from pendcli.core.tables import on_table_change
+from pendcli.papers.identities import vanishes_identically
 from pendcli.papers.tisserand.references_numeric import *  # noqa: F403  (n19: lines 192-202)
 
 ORDER = 3  # series in x kept through x² (fourth order in the angles)
@@ -34,9 +36,7 @@ def _reuse(*ids: str) -> EquationCheck:
 
 def identity_check(difference: Any, what: str, method: str = "sympy") -> EquationCheck:
     """Holds when the difference simplifies to 0 (sympy)."""
-    import sympy as sp
-
-    zero = sp.simplify(difference) == 0
+    zero = vanishes_identically(difference)
     return EquationCheck(
         holds=bool(zero),
         method=method,  # type: ignore[arg-type]
@@ -482,9 +482,9 @@ NUMERICAL_APPLICATION = (
 def _claims_agree(ids: tuple[str, ...]) -> EquationCheck:
     """The claims of tables/published/tisserand.toml named by ``ids``, as pendcli judges them
     against their recomputation (the printed precision of each)."""
-    from pendcli.papers.registry import evaluate
+    from pendcli.core.tables import tables_dir
 
-    rows = {r.id: r for r in evaluate("tisserand")}
+    rows = _judged_claims(str(tables_dir()))
     chosen = [rows[i] for i in ids]
     parts = [f"{r.id} printed {r.published}: {r.verdict}" for r in chosen]
     return EquationCheck(
@@ -492,6 +492,18 @@ def _claims_agree(ids: tuple[str, ...]) -> EquationCheck:
         method="numeric",
         detail="claims " + "; ".join(parts),
     )
+
+
+@cache
+def _judged_claims(tables: str) -> dict[str, Any]:
+    # once per tables folder (cleared when a table changes): two rows cite the example's
+    # claims, and each recomputation integrates the conical motion twice
+    from pendcli.papers.registry import evaluate
+
+    return {r.id: r for r in evaluate("tisserand")}
+
+
+on_table_change(_judged_claims.cache_clear)
 
 
 def result_numerical_application() -> EquationCheck:
