@@ -16,7 +16,7 @@ from typing import Any
 from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
 from pendcli.core.tables import on_table_change
-from pendcli.papers.identities import vanishes_identically
+from pendcli.papers.identities import simplified, vanishes_identically
 from pendcli.papers.tisserand.references_numeric import *  # noqa: F403  (n19: lines 192-202)
 
 ORDER = 3  # series in x kept through x² (fourth order in the angles)
@@ -299,8 +299,8 @@ def _integral_check(printed: Any, integrand: Any, what: str) -> EquationCheck:
     import sympy as sp
 
     psi = symbols()[7]
-    derivative = sp.simplify(sp.diff(printed, psi) - integrand)
-    at_zero = sp.simplify(printed.subs(psi, 0))
+    derivative = simplified(sp.diff(printed, psi) - integrand)
+    at_zero = simplified(printed.subs(psi, 0))
     zero = derivative == 0 and at_zero == 0
     return EquationCheck(
         holds=bool(zero),
