@@ -19,10 +19,10 @@ from pendcli.papers.lecornu.equations_common import (
     judged_series,
     linear_reduced_ode,
     sympy_module,
-    taylor,
 )
 from pendcli.papers.lecornu.equations_general import substitute_all
 from pendcli.papers.lecornu.equations_slow import eq25_residuals
+from pendcli.papers.taylor import taylor
 
 
 # ================================================================ IV. Pendule conique

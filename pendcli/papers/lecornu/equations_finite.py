@@ -18,10 +18,10 @@ from pendcli.papers.lecornu.equations_common import (
     from_formulas,
     is_zero,
     sympy_module,
-    taylor,
     trig_form,
     trig_text,
 )
+from pendcli.papers.taylor import taylor
 
 
 # ================================================================ III. Oscillations finies

@@ -21,10 +21,10 @@ from pendcli.papers.lecornu.equations_common import (
     judged_series,
     linear_reduced_ode,
     sympy_module,
-    taylor,
     trig_form,
     trig_text,
 )
+from pendcli.papers.taylor import taylor
 
 
 # ================================================================ II (end): (25)-(29)
