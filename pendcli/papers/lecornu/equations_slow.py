@@ -61,8 +61,8 @@ def result_cr_note_formula() -> EquationCheck:
             t - om
         )
 
-    first = sp.simplify(sp.series(note(1 - t**2) - eq25, p, 0, 2).removeO())
-    fixed = sp.simplify(sp.series(note(1 - 2 * t**2) - eq25, p, 0, 2).removeO())
+    first = sp.simplify(taylor(note(1 - t**2) - eq25, p, 2))
+    fixed = sp.simplify(taylor(note(1 - 2 * t**2) - eq25, p, 2))
     return equation_check(
         first == 0,
         "sympy",

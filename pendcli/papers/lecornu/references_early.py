@@ -18,6 +18,7 @@ from functools import cache
 from typing import Any
 
 from pendcli.core.ledger_check import EquationCheck
+from pendcli.papers.taylor import taylor
 
 __all__ = [
     "check_bob_equations",
@@ -487,7 +488,7 @@ def reference_eq27() -> Any:
 
     u, t, p = _eq27_solution()
     (gamma,) = _symbols("gamma")
-    theta = sp.expand(sp.series(u / (1 + p * gamma * t), p, 0, 3).removeO())
+    theta = sp.expand(taylor(u / (1 + p * gamma * t), p, 3))
     return _reference({"uA": u, "theta": theta}, "(27) solved to p²", scale=p, order=3)
 
 
@@ -814,7 +815,7 @@ def _epsilon_root() -> tuple[Any, Any]:
     (gamma,) = _symbols("gamma")
     e1, e2 = sp.symbols("e1 e2")
     eps = e1 * p + e2 * p**2
-    at_root = sp.series(u.subs(t, (sp.pi + eps) / gamma), p, 0, 3).removeO()
+    at_root = taylor(u.subs(t, (sp.pi + eps) / gamma), p, 3)
     first = sp.solve(sp.expand(at_root).coeff(p, 1), e1)[0]
     second = sp.solve(sp.expand(at_root.subs(e1, first)).coeff(p, 2), e2)[0]
     return sp.simplify(first * p + second * p**2), p

@@ -17,6 +17,7 @@ from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
 from pendcli.core.tables import on_table_change
 from pendcli.papers.identities import simplified, vanishes_identically
+from pendcli.papers.taylor import taylor
 from pendcli.papers.tisserand.references_numeric import *  # noqa: F403  (n19: lines 192-202)
 
 ORDER = 3  # series in x kept through x² (fourth order in the angles)
@@ -792,7 +793,7 @@ def motion_in_kpt(n: int) -> dict[str, Any]:
     s, _, _, psi, *_ = series_symbols()
     tau = sp.Symbol("tau", real=True)
     series = motion_series(n)
-    inverse_a = _below(sp.series(1 / series["A"], s, 0, n).removeO(), n)
+    inverse_a = _below(taylor(1 / series["A"], s, n), n)
     periodic = _below((series["kt"] - series["A"] * psi) * inverse_a, n)
     delta = sp.Integer(0)
     for _ in range((n + 1) // 2):
