@@ -14,6 +14,7 @@ from typing import Any
 
 from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
+from pendcli.papers.identities import vanishes_identically
 
 
 @cache
@@ -29,9 +30,7 @@ def _reuse(*ids: str) -> EquationCheck:
 
 
 def _identity(difference: Any, what: str) -> EquationCheck:
-    import sympy as sp
-
-    zero = sp.simplify(difference) == 0
+    zero = vanishes_identically(difference)
     return EquationCheck(
         holds=bool(zero),
         method="sympy",
@@ -66,6 +65,7 @@ def eq_2() -> EquationCheck:
     return _identity(linear - (sp.diff(theta, t, 2) + k**2 * theta), "linearised (1) − (2)")
 
 
+@cache  # n° 6 (result_principal_motion) cites it again
 def eq_3() -> EquationCheck:
     """(3): θ = −α cos kt solves (2) with θ(0) = −α, θ'(0) = 0; θ' = kα sin kt."""
     import sympy as sp
@@ -157,10 +157,11 @@ def result_recurrence() -> EquationCheck:
     import sympy as sp
 
     x, y = sp.symbols("x y", positive=True)
+    # I_n of n is I_(n−2) of n + 2: eight integrals (powers 0..7), not twelve
+    powers = {m: sp.integrate(sp.sin(y) ** m, (y, 0, x)) for m in range(8)}
     worst = []
     for n in range(1, 7):
-        i_n = sp.integrate(sp.sin(y) ** (n + 1), (y, 0, x))
-        i_m = sp.integrate(sp.sin(y) ** (n - 1), (y, 0, x))
+        i_n, i_m = powers[n + 1], powers[n - 1]
         worst.append(sp.simplify((n + 1) * i_n - (-sp.cos(x) * sp.sin(x) ** n + n * i_m)))
     zero = all(w == 0 for w in worst)
     return EquationCheck(
@@ -195,6 +196,7 @@ def result_lowest_point() -> EquationCheck:
     return _reuse("delta_T_half", "delta_v_m")
 
 
+@cache  # n° 6 (result_principal_motion) cites it again
 def result_period_and_top_speed() -> EquationCheck:
     """n° 3: T = π/k, the first return of dθ/dt = kα sin kt to 0 after t = 0, and
     θ'_m = kα, its value at kt = π/2 where d²θ/dt² = k²α cos kt vanishes."""

@@ -14,6 +14,7 @@ import numpy as np
 
 from pendcli.core.formula_engine import DEFAULT_REFERENCE, Study, judge
 from pendcli.core.ledger_check import EquationCheck, Method
+from pendcli.papers.identities import vanishes_identically
 
 Array = np.ndarray
 PI = math.pi
@@ -54,9 +55,8 @@ def sympy_module() -> Any:
 
 
 def is_zero(expr: Any) -> bool:
-    """expr is identically zero (sympy simplify after expansion)."""
-    sp = sympy_module()
-    return bool(sp.simplify(sp.expand(expr)) == 0)
+    """expr is identically zero (expand, cancel, then sympy simplify after expansion)."""
+    return vanishes_identically(expr, expand_first=True)
 
 
 def is_rational_zero(expr: Any) -> bool:

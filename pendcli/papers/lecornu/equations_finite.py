@@ -21,6 +21,7 @@ from pendcli.papers.lecornu.equations_common import (
     trig_form,
     trig_text,
 )
+from pendcli.papers.taylor import taylor
 
 
 # ================================================================ III. Oscillations finies
@@ -70,9 +71,7 @@ def result_s_expansion() -> EquationCheck:
     z, s = sp.symbols("z s", positive=True)
     u, v, w = (sp.Function(n)(z) for n in "uvw")
     th = u + v * s + w * s**2
-    expr = sp.expand(
-        sp.series(z * th.diff(z, 2) + 2 * th.diff(z) + s * sp.sin(th), s, 0, 3).removeO()
-    )
+    expr = sp.expand(taylor(z * th.diff(z, 2) + 2 * th.diff(z) + s * sp.sin(th), s, 3))
     ok = all_zero(
         expr.coeff(s, 0) - (z * u.diff(z, 2) + 2 * u.diff(z)),
         expr.coeff(s, 1) - (z * v.diff(z, 2) + 2 * v.diff(z) + sp.sin(u)),
@@ -173,7 +172,7 @@ def eq_39() -> EquationCheck:
     om, ep = sp.Function("omega")(uu), sp.Function("epsilon")(uu)
     th = om + p * ep
     eq32 = th.diff(uu, 2) + sp.sin(th) + p * (uu * th.diff(uu, 2) + 2 * th.diff(uu))
-    first = sp.series(eq32, p, 0, 2).removeO().coeff(p, 1)
+    first = sp.expand(taylor(eq32, p, 2)).coeff(p, 1)
     printed = ep.diff(uu, 2) + ep * sp.cos(om) + (uu * om.diff(uu, 2) + 2 * om.diff(uu))
     return equation_check(
         is_zero(first - printed), "sympy", "first order in p of (32) with θ = ω + pε"
@@ -193,7 +192,7 @@ def eq_40() -> EquationCheck:
     uu, f, beta = _f_beta()
     k = sp.Symbol("k")
     om = 2 * k * sp.cos(uu) + k**3 / 24 * f
-    cos_om = sp.series(sp.cos(om), k, 0, 3).removeO()
+    cos_om = taylor(sp.cos(om), k, 3)
     big_f = -(uu * om.diff(uu, 2) + 2 * om.diff(uu))
     a = 2 * uu * sp.cos(uu) + 4 * sp.sin(uu)
     b = -(uu * f.diff(uu, 2) + 2 * f.diff(uu)) / 24
@@ -261,7 +260,7 @@ def result_t_equals_t_prime() -> EquationCheck:
     big_t = sp.pi / 2 + (sp.pi**2 + 12) * p / 16  # (42) at k = 0
     length = 1 + p * big_t
     t_prime = sp.pi / 2 * sp.sqrt(length) - (sp.pi**2 - 12) * p / 16  # reversed motion
-    diff = sp.series(t_prime - big_t, p, 0, 2).removeO()
+    diff = taylor(t_prime - big_t, p, 2)
     return equation_check(is_zero(diff), "sympy", f"T' − T = {sp.simplify(diff)} + O(p²)")
 
 

@@ -24,6 +24,7 @@ from pendcli.papers.lecornu.equations_common import (
     trig_form,
     trig_text,
 )
+from pendcli.papers.taylor import taylor
 
 
 # ================================================================ II (end): (25)-(29)
@@ -60,8 +61,8 @@ def result_cr_note_formula() -> EquationCheck:
             t - om
         )
 
-    first = sp.simplify(sp.series(note(1 - t**2) - eq25, p, 0, 2).removeO())
-    fixed = sp.simplify(sp.series(note(1 - 2 * t**2) - eq25, p, 0, 2).removeO())
+    first = sp.simplify(taylor(note(1 - t**2) - eq25, p, 2))
+    fixed = sp.simplify(taylor(note(1 - 2 * t**2) - eq25, p, 2))
     return equation_check(
         first == 0,
         "sympy",
@@ -162,7 +163,7 @@ def eq_29() -> EquationCheck:
     sp = sympy_module()
     t, p = sp.symbols("t p", positive=True)
     u = eq28_solution(sp, t, p)
-    theta2 = sp.expand(sp.series(u / (1 + p * t), p, 0, 3).removeO()).coeff(p, 2) * 32
+    theta2 = sp.expand(taylor(u / (1 + p * t), p, 3)).coeff(p, 2) * 32
     s, c = sp.sin(t), sp.cos(t)
     printed2 = (10 * t**3 - 3 * t) * c + (3 - 43 * t**2 - t**4) * s
     found = trig_text(trig_form(theta2, t)).replace("u", "τ")

@@ -17,6 +17,7 @@ from typing import Any
 
 from pendcli.core.ledger_check import EquationCheck
 from pendcli.papers.lecornu.equations_common import equation_check
+from pendcli.papers.taylor import taylor
 
 __all__ = [
     "reference_31",
@@ -716,7 +717,7 @@ def _s_coefficients() -> tuple[Any, list[Any]]:
         d2u + d2v * s + d2w * s**2,
     )
     left = z * d2theta + 2 * dtheta + s * sp.sin(theta)
-    series = sp.expand(sp.series(left, s, 0, 3).removeO())
+    series = sp.expand(taylor(left, s, 3))
     return s, [series.coeff(s, n) for n in range(3)]
 
 
@@ -913,11 +914,11 @@ def _amplitude_series() -> Any:
     import sympy as sp
 
     k, phi, u = _symbols("k", "phi", "u")
-    integrand = sp.series(1 / sp.sqrt(1 - k**2 * sp.sin(phi) ** 2), k, 0, 4).removeO()
+    integrand = taylor(1 / sp.sqrt(1 - k**2 * sp.sin(phi) ** 2), k, 4)
     elliptic_f = sp.integrate(sp.expand(integrand), (phi, 0, phi))
     c = sp.Symbol("c")
     guess = u + k**2 * c
-    residual = sp.expand(sp.series(elliptic_f.subs(phi, guess) - u, k, 0, 4).removeO())
+    residual = sp.expand(taylor(elliptic_f.subs(phi, guess) - u, k, 4))
     return guess.subs(c, sp.solve(residual.coeff(k, 2), c)[0])
 
 
@@ -1148,8 +1149,8 @@ def _half_oscillation() -> Any:
     a, g, b = _symbols("a", "g", "b")
     exact = reference_eq41().exact
     ratio = exact["theta_pi2"] / exact["dtheta_du_pi2"]
-    in_p = sp.series(ratio, p, 0, 2).removeO()
-    kept = sum(sp.series(sp.expand(in_p.coeff(p, n)), k, 0, 3).removeO() * p**n for n in (0, 1))
+    in_p = taylor(ratio, p, 2)
+    kept = sum(taylor(sp.expand(in_p.coeff(p, n)), k, 3) * p**n for n in (0, 1))
     gamma = sp.sqrt(g / a)
     return sp.expand((sp.pi / 2 - kept).subs(p, b / sp.sqrt(g * a)) / gamma)
 
@@ -1167,7 +1168,7 @@ def reference_eq42_prime() -> Any:
 
     k, theta0 = _symbols("k", "theta0")
     half = _half_oscillation().subs(k, sp.sin(theta0 / 2))
-    kept = sp.series(half, theta0, 0, 3).removeO()
+    kept = taylor(half, theta0, 3)
     return _reference({"T": kept}, "(42) with k = sin(θ0/2), through θ0²")
 
 

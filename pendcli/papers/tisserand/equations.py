@@ -15,6 +15,9 @@ from typing import Any
 
 from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
+from pendcli.core.tables import on_table_change
+from pendcli.papers.identities import simplified, vanishes_identically
+from pendcli.papers.taylor import taylor
 from pendcli.papers.tisserand.references_numeric import *  # noqa: F403  (n19: lines 192-202)
 
 ORDER = 3  # series in x kept through x² (fourth order in the angles)
@@ -34,9 +37,7 @@ def _reuse(*ids: str) -> EquationCheck:
 
 def identity_check(difference: Any, what: str, method: str = "sympy") -> EquationCheck:
     """Holds when the difference simplifies to 0 (sympy)."""
-    import sympy as sp
-
-    zero = sp.simplify(difference) == 0
+    zero = vanishes_identically(difference)
     return EquationCheck(
         holds=bool(zero),
         method=method,  # type: ignore[arg-type]
@@ -299,8 +300,8 @@ def _integral_check(printed: Any, integrand: Any, what: str) -> EquationCheck:
     import sympy as sp
 
     psi = symbols()[7]
-    derivative = sp.simplify(sp.diff(printed, psi) - integrand)
-    at_zero = sp.simplify(printed.subs(psi, 0))
+    derivative = simplified(sp.diff(printed, psi) - integrand)
+    at_zero = simplified(printed.subs(psi, 0))
     zero = derivative == 0 and at_zero == 0
     return EquationCheck(
         holds=bool(zero),
@@ -482,9 +483,9 @@ NUMERICAL_APPLICATION = (
 def _claims_agree(ids: tuple[str, ...]) -> EquationCheck:
     """The claims of tables/published/tisserand.toml named by ``ids``, as pendcli judges them
     against their recomputation (the printed precision of each)."""
-    from pendcli.papers.registry import evaluate
+    from pendcli.core.tables import tables_dir
 
-    rows = {r.id: r for r in evaluate("tisserand")}
+    rows = _judged_claims(str(tables_dir()))
     chosen = [rows[i] for i in ids]
     parts = [f"{r.id} printed {r.published}: {r.verdict}" for r in chosen]
     return EquationCheck(
@@ -492,6 +493,18 @@ def _claims_agree(ids: tuple[str, ...]) -> EquationCheck:
         method="numeric",
         detail="claims " + "; ".join(parts),
     )
+
+
+@cache
+def _judged_claims(tables: str) -> dict[str, Any]:
+    # once per tables folder (cleared when a table changes): two rows cite the example's
+    # claims, and each recomputation integrates the conical motion twice
+    from pendcli.papers.registry import evaluate
+
+    return {r.id: r for r in evaluate("tisserand")}
+
+
+on_table_change(_judged_claims.cache_clear)
 
 
 def result_numerical_application() -> EquationCheck:
@@ -780,7 +793,7 @@ def motion_in_kpt(n: int) -> dict[str, Any]:
     s, _, _, psi, *_ = series_symbols()
     tau = sp.Symbol("tau", real=True)
     series = motion_series(n)
-    inverse_a = _below(sp.series(1 / series["A"], s, 0, n).removeO(), n)
+    inverse_a = _below(taylor(1 / series["A"], s, n), n)
     periodic = _below((series["kt"] - series["A"] * psi) * inverse_a, n)
     delta = sp.Integer(0)
     for _ in range((n + 1) // 2):
