@@ -333,6 +333,7 @@ def _taylor_vanishes(expr: Any, reference: Reference, order: int) -> bool:
         far = max(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
         near = min(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
         roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
+        real = not expr.has(sp.I)
         for _ in range(POINTS):
             values = [_random_value(generator, reference, s) for s in free]
             if not all(isinstance(q, sp.Rational) for q in values):
@@ -340,7 +341,8 @@ def _taylor_vanishes(expr: Any, reference: Reference, order: int) -> bool:
             args = [mpmath.mpf(q.p) / q.q for q in values]
             try:
                 # sums[j % count] = sum_k samples[k] roots[k]**-j, all j at once
-                sums = _fourier([function(radius * w, *args) for w in roots], roots)
+                samples = _circle_samples(function, radius, roots, args, real)
+                sums = _fourier(samples, roots)
                 for j in range(-(count // 2), order):
                     a = abs(sums[j % count])
                     bound = far ** (-j) if j >= 0 else min(near, 1) ** (-j)
@@ -349,6 +351,23 @@ def _taylor_vanishes(expr: Any, reference: Reference, order: int) -> bool:
             except (ArithmeticError, TypeError, ValueError, NameError, AttributeError):
                 return False
     return True
+
+
+def _circle_samples(
+    function: Callable[..., Any], radius: Any, roots: list[Any], args: list[Any], real: bool
+) -> list[Any]:
+    """``function(radius * w, *args)`` at each root of unity ``w``. A ``real`` expression
+    (no I in it) whose values at ±radius are real is taken to have real coefficients: its
+    lower half circle is the conjugate of its upper (f(z̄) = f(z)‾), half the evaluations.
+    Were the coefficients not real, the mirrored samples would jump across the real axis
+    and their low coefficients would not vanish: the proof then fails, never passes."""
+    import mpmath
+
+    half = len(roots) // 2
+    upper = [function(radius * w, *args) for w in roots[: half + 1]]
+    if real and mpmath.im(upper[0]) == 0 and mpmath.im(upper[half]) == 0:
+        return upper + [mpmath.conj(v) for v in reversed(upper[1:half])]
+    return upper + [function(radius * w, *args) for w in roots[half + 1 :]]
 
 
 def _fourier(samples: list[Any], roots: list[Any]) -> list[Any]:
