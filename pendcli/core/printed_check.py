@@ -493,8 +493,44 @@ def _compiled(arguments: tuple[Any, ...], expr: Any) -> Callable[..., Any]:
 
     key = (arguments, expr)
     if key not in _COMPILED:
-        _COMPILED[key] = sp.lambdify(arguments, expr, modules="mpmath", docstring_limit=0)
+        code = _integrals_shared(expr)
+        _COMPILED[key] = sp.lambdify(arguments, code, modules="mpmath", docstring_limit=0)
     return _COMPILED[key]
+
+
+# definite integral -> a function of its free symbols that remembers each quadrature
+_QUADRATURES: dict[Any, Any] = {}
+
+
+def _integrals_shared(expr: Any) -> Any:
+    """``expr`` with each definite integral a call of a function of its free symbols that
+    runs the same mpmath quadrature lambdify would, once per point and precision: a
+    residual's size, its printed and reading forms, evaluate the same integrals at the same
+    random points. Nested integrals are left as they are."""
+    import mpmath
+    import sympy as sp
+    from sympy.utilities.lambdify import implemented_function
+
+    integrals = expr.atoms(sp.Integral)
+    if not integrals or any(i.function.has(sp.Integral) for i in integrals):
+        return expr
+    calls = {}
+    for integral in integrals:
+        free = tuple(sorted(integral.free_symbols, key=lambda s: s.name))
+        if integral not in _QUADRATURES:
+            quadrature = sp.lambdify(free, integral, modules="mpmath", docstring_limit=0)
+            memo: dict[tuple[Any, ...], Any] = {}
+
+            def remembered(*args: Any, quadrature: Any = quadrature, memo: Any = memo) -> Any:
+                at = (mpmath.mp.prec, *args)
+                if at not in memo:
+                    memo[at] = quadrature(*args)
+                return memo[at]
+
+            name = f"quadrature_{len(_QUADRATURES)}"
+            _QUADRATURES[integral] = implemented_function(sp.Function(name), remembered)
+        calls[integral] = _QUADRATURES[integral](*free)
+    return expr.xreplace(calls)
 
 
 def _integrals_by_quadrature(expr: Any) -> Any:
