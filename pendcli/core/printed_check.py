@@ -320,7 +320,7 @@ def _taylor_vanishes(expr: Any, reference: Reference, order: int) -> bool:
         return False
     free = sorted(expr.free_symbols - {scale}, key=lambda s: s.name)
     try:
-        function = sp.lambdify([scale, *free], expr, modules="mpmath")
+        function = _compiled((scale, *free), expr)
     except (SyntaxError, TypeError, ValueError, NameError):
         return False
     generator = random.Random(23)
@@ -333,21 +333,55 @@ def _taylor_vanishes(expr: Any, reference: Reference, order: int) -> bool:
         far = max(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
         near = min(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
         roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
+        real = not expr.has(sp.I)
         for _ in range(POINTS):
             values = [_random_value(generator, reference, s) for s in free]
             if not all(isinstance(q, sp.Rational) for q in values):
                 return False
             args = [mpmath.mpf(q.p) / q.q for q in values]
             try:
-                samples = [function(radius * w, *args) for w in roots]
+                # sums[j % count] = sum_k samples[k] roots[k]**-j, all j at once
+                samples = _circle_samples(function, radius, roots, args, real)
+                sums = _fourier(samples, roots)
                 for j in range(-(count // 2), order):
-                    a = abs(mpmath.fsum(samples[k] * roots[-k * j % count] for k in range(count)))
+                    a = abs(sums[j % count])
                     bound = far ** (-j) if j >= 0 else min(near, 1) ** (-j)
                     if not mpmath.isfinite(a) or a / count > tolerance * bound:
                         return False
             except (ArithmeticError, TypeError, ValueError, NameError, AttributeError):
                 return False
     return True
+
+
+def _circle_samples(
+    function: Callable[..., Any], radius: Any, roots: list[Any], args: list[Any], real: bool
+) -> list[Any]:
+    """``function(radius * w, *args)`` at each root of unity ``w``. A ``real`` expression
+    (no I in it) whose values at ±radius are real is taken to have real coefficients: its
+    lower half circle is the conjugate of its upper (f(z̄) = f(z)‾), half the evaluations.
+    Were the coefficients not real, the mirrored samples would jump across the real axis
+    and their low coefficients would not vanish: the proof then fails, never passes."""
+    import mpmath
+
+    half = len(roots) // 2
+    upper = [function(radius * w, *args) for w in roots[: half + 1]]
+    if real and mpmath.im(upper[0]) == 0 and mpmath.im(upper[half]) == 0:
+        return upper + [mpmath.conj(v) for v in reversed(upper[1:half])]
+    return upper + [function(radius * w, *args) for w in roots[half + 1 :]]
+
+
+def _fourier(samples: list[Any], roots: list[Any]) -> list[Any]:
+    """The discrete Fourier transform ``X[j] = sum_k samples[k] * roots[k]**-j`` (``roots``:
+    the len(samples)-th roots of unity, a power of two of them) by the radix-2 FFT: the
+    Cauchy coefficients of :func:`_taylor_vanishes` in n log n products, not n² of them."""
+    count = len(samples)
+    if count == 1:
+        return list(samples)
+    even = _fourier(samples[0::2], roots[0::2])
+    odd = _fourier(samples[1::2], roots[0::2])
+    half = count // 2
+    turned = [odd[j] * roots[-j % count] for j in range(half)]
+    return [even[j] + turned[j] for j in range(half)] + [even[j] - turned[j] for j in range(half)]
 
 
 def _random_value(generator: random.Random, reference: Reference, symbol: Any) -> Any:
@@ -403,6 +437,7 @@ def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:
     generator = random.Random(19)
     free = sorted(expr.free_symbols, key=lambda s: s.name)
     at = _evaluator(expr, free)
+    size_at: list[Any] = []  # the size's evaluator, built at the first point that needs it
     for _ in range(POINTS):
         point = {}
         for s in free:
@@ -412,7 +447,7 @@ def _vanishes_at_points(expr: Any, reference: Reference) -> tuple[bool, str]:
         shown = ", ".join(f"{k}={v}" for k, v in point.items())
         if not value.is_number:
             return False, f"the residual is not a number at {shown}"
-        if abs(value) > _FLOOR and abs(value) > _TOLERANCE * _size_at(expr, free, point):
+        if abs(value) > _FLOOR and abs(value) > _TOLERANCE * _size_at(expr, free, point, size_at):
             return False, f"residual {sp.N(value, 6)} at {shown}"
     return True, f"vanishes at {POINTS} random rational points"
 
@@ -432,7 +467,7 @@ def _evaluator(expr: Any, free: list[Any]) -> Any:
         isinstance(f, sp.core.function.AppliedUndef) for f in expr.atoms(sp.Function)
     ):
         return by_evalf
-    function = sp.lambdify(free, expr, modules="mpmath")
+    function = _compiled(tuple(free), expr)
 
     def by_mpmath(point: dict[Any, Any]) -> Any:
         with mpmath.workdps(_DIGITS + 10):
@@ -447,6 +482,57 @@ def _evaluator(expr: Any, free: list[Any]) -> Any:
     return by_mpmath
 
 
+_COMPILED: dict[tuple[Any, ...], Callable[..., Any]] = {}
+
+
+def _compiled(arguments: tuple[Any, ...], expr: Any) -> Callable[..., Any]:
+    """``expr`` as an mpmath function of ``arguments``, lambdified once per expression: the
+    printed and the reading form, each point's size, share a residual's code. No docstring:
+    lambdify's prints the whole expression, a third of its time."""
+    import sympy as sp
+
+    key = (arguments, expr)
+    if key not in _COMPILED:
+        code = _integrals_shared(expr)
+        _COMPILED[key] = sp.lambdify(arguments, code, modules="mpmath", docstring_limit=0)
+    return _COMPILED[key]
+
+
+# definite integral -> a function of its free symbols that remembers each quadrature
+_QUADRATURES: dict[Any, Any] = {}
+
+
+def _integrals_shared(expr: Any) -> Any:
+    """``expr`` with each definite integral a call of a function of its free symbols that
+    runs the same mpmath quadrature lambdify would, once per point and precision: a
+    residual's size, its printed and reading forms, evaluate the same integrals at the same
+    random points. Nested integrals are left as they are."""
+    import mpmath
+    import sympy as sp
+    from sympy.utilities.lambdify import implemented_function
+
+    integrals = expr.atoms(sp.Integral)
+    if not integrals or any(i.function.has(sp.Integral) for i in integrals):
+        return expr
+    calls = {}
+    for integral in integrals:
+        free = tuple(sorted(integral.free_symbols, key=lambda s: s.name))
+        if integral not in _QUADRATURES:
+            quadrature = sp.lambdify(free, integral, modules="mpmath", docstring_limit=0)
+            memo: dict[tuple[Any, ...], Any] = {}
+
+            def remembered(*args: Any, quadrature: Any = quadrature, memo: Any = memo) -> Any:
+                at = (mpmath.mp.prec, *args)
+                if at not in memo:
+                    memo[at] = quadrature(*args)
+                return memo[at]
+
+            name = f"quadrature_{len(_QUADRATURES)}"
+            _QUADRATURES[integral] = implemented_function(sp.Function(name), remembered)
+        calls[integral] = _QUADRATURES[integral](*free)
+    return expr.xreplace(calls)
+
+
 def _integrals_by_quadrature(expr: Any) -> Any:
     """``expr`` (at a point) with each definite integral replaced by its mpmath quadrature:
     sympy's own numerical integration is several times slower for the same digits."""
@@ -458,7 +544,7 @@ def _integrals_by_quadrature(expr: Any) -> Any:
         (variable, low, high), *rest = integral.limits
         if rest or integral.function.free_symbols - {variable}:
             continue  # a multiple or a parametric integral: left to sympy
-        integrand = sp.lambdify(variable, integral.function, modules="mpmath")
+        integrand = _compiled((variable,), integral.function)
         with mpmath.workdps(_DIGITS + 5):
             bounds = [sp.N(b, _DIGITS + 5)._to_mpmath(mpmath.mp.prec) for b in (low, high)]
             values[integral] = sp.Float(mpmath.quad(integrand, bounds), _DIGITS + 5)
@@ -473,12 +559,15 @@ _TOLERANCE = 10.0 ** (5 - _DIGITS)
 _FLOOR = 10.0 ** -(_DIGITS + 8)
 
 
-def _size_at(expr: Any, free: list[Any], point: dict[Any, Any]) -> Any:
+def _size_at(expr: Any, free: list[Any], point: dict[Any, Any], built: list[Any]) -> Any:
     """The size of ``expr`` at ``point``: the value of ``expr`` with every sum a sum of
-    absolute values (ε·(a − b) has size |ε|·(|a| + |b|), the scale its cancellation is on)."""
+    absolute values (ε·(a − b) has size |ε|·(|a| + |b|), the scale its cancellation is on).
+    ``built``: empty, or the size's evaluator from an earlier point of the same ``expr``."""
     import sympy as sp
 
-    size = abs(_evaluator(_magnitude(expr), free)(point))
+    if not built:
+        built.append(_evaluator(_magnitude(expr), free))
+    size = abs(built[0](point))
     # a size with an unevaluated function in it (a transform's F0_): the absolute tolerance
     return size if getattr(size, "is_comparable", False) else sp.Integer(1)
 
