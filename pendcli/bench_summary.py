@@ -61,8 +61,10 @@ def checkout_root() -> Path | None:
     return root if all((root / name).exists() for name in needed) else None
 
 
-def _run(cmd: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, float]:
-    """(wall, CPU) of one command and every child it waited for; a failure raises."""
+def _run(
+    cmd: list[str], cwd: Path, env: dict[str, str], allowed: tuple[int, ...] = (0,)
+) -> tuple[float, float]:
+    """(wall, CPU) of one command and every child it waited for; another exit status raises."""
     start = time.perf_counter()
     proc = subprocess.Popen(
         cmd, cwd=cwd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
@@ -75,7 +77,7 @@ def _run(cmd: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, float]:
         raise
     wall = time.perf_counter() - start
     code = os.waitstatus_to_exitcode(status)
-    if code != 0:
+    if code not in allowed:
         err = proc.stderr.read().decode(errors="replace") if proc.stderr else ""
         raise subprocess.CalledProcessError(code, cmd, stderr=err)
     return wall, usage.ru_utime + usage.ru_stime
@@ -83,12 +85,14 @@ def _run(cmd: list[str], cwd: Path, env: dict[str, str]) -> tuple[float, float]:
 
 def suite_time(root: Path) -> tuple[float, float]:
     """Wall and CPU seconds of the fast suite, run as ``make test`` runs it (bytecode kept in
-    the venv's pycache, reproduce's own forks off: PENDCLI_JOBS=1)."""
+    the venv's pycache, reproduce's own forks off: PENDCLI_JOBS=1). A failing test still
+    leaves a time (exit 1; the test of this block's own tag fails until it is written once);
+    an error of pytest itself raises."""
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     env.update(
         PENDCLI_JOBS="1", NO_COLOR="1", PYTHONPYCACHEPREFIX=str(Path(sys.prefix) / "pycache")
     )
-    return _run([sys.executable, *SUITE_ARGS, *SUITE_MARKS], root, env)
+    return _run([sys.executable, *SUITE_ARGS, *SUITE_MARKS], root, env, allowed=(0, 1))
 
 
 def install_time(root: Path) -> tuple[float, float]:
