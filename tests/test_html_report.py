@@ -15,6 +15,7 @@ import pytest
 from markupsafe import escape
 
 from pendcli.core.ledger import load_ledger
+from pendcli.core.numbers import edition_text
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.html_graph import layered_graph
 from pendcli.html_marks import Placement
@@ -469,7 +470,7 @@ def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(pape
         own = [body for key, body in notes if unescape(key).split("~")[0] == row["id"]]
         assert own, row["id"]  # marked, with its note
         if correction:
-            shown = str(escape(correction))
+            shown = str(escape(edition_text(correction)))
             assert sum(shown in body for body in own) == 1, (row["id"], own)
 
 
@@ -485,7 +486,7 @@ def _wrong_term_faults(text: str, claims: list[dict[str, object]],
     notes = dict(re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition))
     bad = []
     for row in wrong:
-        value, shown = row["wrong_term"], str(escape(correction_of(row)))
+        value, shown = row["wrong_term"], str(escape(edition_text(correction_of(row))))
         terms = [value] if isinstance(value, str) else list(value or ())  # type: ignore[call-overload]
         if not terms:
             bad.append(f"{row['id']}: no wrong term marked ({value!r})")
