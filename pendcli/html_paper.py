@@ -111,6 +111,24 @@ def _prose(piece: str) -> str:
     return re.sub(r"(?<![\w*])\*(?!\s)(.+?)(?<!\s)\*(?![\w*])", r"<i>\1</i>", out)
 
 
+# A letter's TeX subscript in a note's words (« θ_0 = 30' », E_c(π), Δθ'_m, I_{n-2}): a
+# letter (or Δ and a letter) at the start of a word (not of an id's part, psi_sin2,
+# lecornu.x_bound), primes allowed, then one or two letters or digits or a braced group,
+# then the word's end.
+_NOTE_SUBSCRIPT = re.compile(
+    r"(?<![\w&#;.])(Δ?[^\W\d_](?:&#39;)*)_(?:\{([^{}]{1,6})\}|([A-Za-z0-9]{1,2}))(?!\w)"
+)
+
+
+def note_subscripts(text: str) -> Markup:
+    """A note's text escaped, its letters' TeX subscripts set as subscripts."""
+    from markupsafe import escape
+
+    return markup(_NOTE_SUBSCRIPT.sub(
+        lambda m: f"{m.group(1)}<sub>{(m.group(2) or m.group(3)).replace('-', chr(0x2212))}</sub>",
+        str(escape(text))))  # fmt: skip
+
+
 def _call(mark: Placement, number: int) -> str:
     if mark.continues:  # a later piece of a quote or formula: its first piece has the call
         return ""
@@ -193,9 +211,13 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
         body = mark_mathml(
             mathml,
             lambda i: f"{'' if inside[i].continues else '<msup>'}<mrow {_open(inside[i])}>",
-            lambda i: "" if inside[i].continues else (
-                f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
-                f"[{numbers[inside[i].key]}]</a></mtext></msup>"
+            lambda i: (
+                ""
+                if inside[i].continues
+                else (
+                    f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
+                    f"[{numbers[inside[i].key]}]</a></mtext></msup>"
+                )
             ),
         )
     stats.formulas += 1
@@ -377,6 +399,7 @@ def _note(mark: Placement, number: int, row: Row | None) -> dict[str, object]:
     compact = not mark.finding and mark.how == "value" and row is not None and "recomputed" in row
     if compact and row is not None:
         text = edition_quantity(row.get("recomputed"), text_of(row, "unit"), MARGIN_DIGITS)
+    text = note_subscripts(text)
     # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
             "label": mark.row_id.split(".", 1)[-1], "compact": compact,

@@ -158,13 +158,19 @@ def test_a_notes_detail_numbers_have_a_decimal_comma_but_not_its_names() -> None
     from pendcli.core.numbers import edition_text
 
     assert edition_text("holds (order 1.99); max residual 6.08e-02") == (
-        "holds (order 1,99); max residual 6,08·10⁻²")
+        "holds (order 1,99); max residual 6,08·10⁻²"
+    )
     assert edition_text("ratio -1.286 at z = 5.14.") == "ratio \u22121,286 at z = 5,14."
     kept = "lecornu.eq.25, table26.first, v1.2.3, DOP853, rtol 1e-12, 2.4…n, 1.3.5…, 1°-2°"
     assert edition_text(kept) == kept
     text = "Donc\n\n$$x = 1$$\n"
-    row = {"id": "p.eq.1", "status": "fails", "lines": [3, 3], "printed": "x = 1",
-           "corrected": "x = 3.66723 (order 1.99, see p.eq.25)"}
+    row = {
+        "id": "p.eq.1",
+        "status": "fails",
+        "lines": [3, 3],
+        "printed": "x = 1",
+        "corrected": "x = 3.66723 (order 1.99, see p.eq.25)",
+    }
     shown = _notes_text(paper_page("p", "c", text, [], (), [row]))
     assert "corrected: x = 3,66723 (order 1,99, see p.eq.25)" in shown, shown
     assert row["corrected"] == "x = 3.66723 (order 1.99, see p.eq.25)"
@@ -187,3 +193,25 @@ def test_a_quote_over_prose_and_a_formula_has_one_note_call() -> None:
     assert "continued" not in _notes_text(page)
     calls = len(re.findall(r'class="call"', page))
     assert calls == len(re.findall(r'<p class="note', page)), calls
+
+
+def test_a_subscript_in_a_notes_words_is_set_as_one_and_a_name_is_not() -> None:
+    """Broken on purpose: without it the note shows « θ_0 = 30' » and Δθ'_m raw."""
+    text = "Donc\n\n$$x = 1$$\n"
+    row = {
+        "id": "p.eq.1",
+        "status": "fails",
+        "lines": [3, 3],
+        "printed": "x = 1",
+        "corrected": "Δθ'_m = −ε E_s(π/2) and I_{n-2}; see psi_sin2 and p.x_bound",
+    }
+    page = paper_page("p", "c", text, [], (), [row])
+    (note,) = re.findall(r'<p class="note[^"]*" id="note-p.eq.1">(.*?)</p>', page, re.S)
+    assert "Δθ&#39;<sub>m</sub> = −ε E<sub>s</sub>(π/2) and I<sub>n\u22122</sub>" in note, note
+    assert "psi_sin2 and p.x_bound" in note and "<script" not in note
+    tisserand = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
+    from test_html_report import _table_rows
+
+    shown = paper_page("tisserand", "c", tisserand, *_table_rows("tisserand")[:1])
+    assert "« θ<sub>0</sub> = 30&#39;, θ<sub>1</sub> = 15&#39; »" in shown
+    assert "θ_0 = 30" not in _notes_text(shown)

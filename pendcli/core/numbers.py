@@ -28,8 +28,8 @@ __all__ = [
     "edition_angle",
     "edition_minus",
     "edition_number",
-    "edition_text",
     "edition_quantity",
+    "edition_text",
     "exact_number",
     "parse_printed",
 ]
