@@ -308,6 +308,9 @@ class Placement:
     how: str = ""
     whole: bool = False  # drawn around a whole formula, which may hold other marks
     nests: bool = False  # drawn around other marks that it holds whole (a wrong table entry)
+    # the key of the mark whose note it shares: a later piece of one quote or formula, which
+    # gets no note call or margin entry of its own
+    continues: str = ""
 
 
 @dataclass
@@ -545,9 +548,9 @@ def _place_own_quotes(page: _Page, row: Row, region: tuple[int, int]) -> bool:
     for i, (span, whole, quote) in enumerate(pieces):
         base = {**_row_base(row), "finding": disagrees(row) and i == 0}  # its note, once
         _add(page, span, key=id_of(row) if i == 0 else f"{id_of(row)}~quote{i}",
-             css=css_of(row), note="continued" if i else _equation_note(row), anchored=True,
+             css=css_of(row), note="" if i else _equation_note(row), anchored=True,
              forms=(quote,), how="quote", whole=whole, nests=not whole and not _free(page, span),
-             **base)  # fmt: skip
+             continues=id_of(row) if i else "", **base)  # fmt: skip
     return bool(pieces)
 
 
@@ -623,8 +626,8 @@ def _place_formulas(page: _Page, row: Row, region: tuple[int, int]) -> bool:
     for i, (span, whole, part) in enumerate(spans):
         base = {**_row_base(row), "finding": disagrees(row) and i == 0}  # its note, once
         _add(page, span, key=id_of(row) if i == 0 else f"{id_of(row)}~formula{i}",
-             css=css_of(row), note="continued" if i else note, anchored=True, forms=(part,),
-             how="formula", whole=whole, **base)  # fmt: skip
+             css=css_of(row), note="" if i else note, anchored=True, forms=(part,),
+             how="formula", whole=whole, continues=id_of(row) if i else "", **base)  # fmt: skip
     return bool(spans)
 
 
@@ -733,8 +736,11 @@ _UNIT_TEX = re.compile(r"\^\{?(sec|m|h|s|\\circ)\}?")
 
 
 def printed_form(published: str) -> str:
-    """A printed number as the paper sets it, not as TeX: ``0^{sec},94`` is 0ˢᵉᶜ,94."""
-    return _UNIT_TEX.sub(lambda m: _UNIT_FORMS[m.group(1)], published)
+    """A printed number as the paper sets it, not as TeX: ``0^{sec},94`` is 0ˢᵉᶜ,94, and
+    ``-1,27`` is −1,27 (the typeset minus of the page)."""
+    from pendcli.core.numbers import edition_minus
+
+    return edition_minus(_UNIT_TEX.sub(lambda m: _UNIT_FORMS[m.group(1)], published))
 
 
 def _claim_note(row: Row) -> str:

@@ -16,7 +16,7 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.numbers import edition_quantity
+from pendcli.core.numbers import edition_quantity, edition_text
 from pendcli.html_marks import (
     EQUATION_CAUSE,
     STATUS_CLASSES,
@@ -111,7 +111,27 @@ def _prose(piece: str) -> str:
     return re.sub(r"(?<![\w*])\*(?!\s)(.+?)(?<!\s)\*(?![\w*])", r"<i>\1</i>", out)
 
 
+# A letter's TeX subscript in a note's words (« θ_0 = 30' », E_c(π), Δθ'_m, I_{n-2}): a
+# letter (or Δ and a letter) at the start of a word (not of an id's part, psi_sin2,
+# lecornu.x_bound), primes allowed, then one or two letters or digits or a braced group,
+# then the word's end.
+_NOTE_SUBSCRIPT = re.compile(
+    r"(?<![\w&#;.])(Δ?[^\W\d_](?:&#39;)*)_(?:\{([^{}]{1,6})\}|([A-Za-z0-9]{1,2}))(?!\w)"
+)
+
+
+def note_subscripts(text: str) -> Markup:
+    """A note's text escaped, its letters' TeX subscripts set as subscripts."""
+    from markupsafe import escape
+
+    return markup(_NOTE_SUBSCRIPT.sub(
+        lambda m: f"{m.group(1)}<sub>{(m.group(2) or m.group(3)).replace('-', chr(0x2212))}</sub>",
+        str(escape(text))))  # fmt: skip
+
+
 def _call(mark: Placement, number: int) -> str:
+    if mark.continues:  # a later piece of a quote or formula: its first piece has the call
+        return ""
     return f'<sup class="call"><a href="#note-{_attr(mark.key)}">[{number}]</a></sup>'
 
 
@@ -125,8 +145,13 @@ def _open(mark: Placement) -> str:
     return (
         f'class="hl {_attr(mark.css)}{" whole" if mark.whole else ""}" id="at-{_attr(mark.key)}" '
         f'title="{_attr(mark.row_id)}: {_attr(mark.word)}" data-row="{_attr(mark.row_id)}" '
-        f'data-lines="{mark.lines[0]}-{mark.lines[1]}"'
+        f'data-lines="{mark.lines[0]}-{mark.lines[1]}" data-note="{_attr(note_key(mark))}"'
     )
+
+
+def note_key(mark: Placement) -> str:
+    """The key of the note a mark is called to: its own, or its first piece's."""
+    return mark.continues or mark.key
 
 
 def _render_span(page_text: str, a: int, b: int, marks: Sequence[Placement],
@@ -158,9 +183,9 @@ def _render_prose(text: str, a: int, b: int, marks: Sequence[Placement],
             body = _render_prose(text, m.start, m.end, held, numbers)
             out.append(f"<span {_open(m)}>{body}</span>")
         else:
-            href = f"#row-{_attr(m.row_id)}"
+            href = f"#note-{_attr(m.continues)}" if m.continues else f"#row-{_attr(m.row_id)}"
             out.append(f'<a {_open(m)} href="{href}">{_prose(text[m.start : m.end])}</a>')
-        out.append(_call(m, numbers[m.key]))
+        out.append(_call(m, numbers.get(m.key, 0)))
         pos = m.end
     out.append(_prose(text[pos:b]))
     return "".join(out)
@@ -185,16 +210,20 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
         stats.mathml += 1
         body = mark_mathml(
             mathml,
-            lambda i: f"<msup><mrow {_open(inside[i])}>",
+            lambda i: f"{'' if inside[i].continues else '<msup>'}<mrow {_open(inside[i])}>",
             lambda i: (
-                f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
-                f"[{numbers[inside[i].key]}]</a></mtext></msup>"
+                ""
+                if inside[i].continues
+                else (
+                    f'<mtext class="call"><a href="#note-{_attr(inside[i].key)}">'
+                    f"[{numbers[inside[i].key]}]</a></mtext></msup>"
+                )
             ),
         )
     stats.formulas += 1
     stats.widened += len(around)
     for m in around:
-        body = f"<span {_open(m)}>{body}</span>{_call(m, numbers[m.key])}"
+        body = f"<span {_open(m)}>{body}</span>{_call(m, numbers.get(m.key, 0))}"
     return f'<div class="display">{body}</div>' if s.display else body
 
 
@@ -262,8 +291,9 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
                  stats: RenderStats,
                  rows: Mapping[str, Row]) -> list[dict[str, object]]:  # fmt: skip
     segments = math_segments(text)
-    numbers = {m.key: i for i, m in enumerate(sorted([*marks, *(p for _, p in passages)],
-                                                     key=lambda m: m.start), 1)}  # fmt: skip
+    # one number per note: a later piece of a quote or formula is called to its first's
+    called = [m for m in [*marks, *(p for _, p in passages)] if not m.continues]
+    numbers = {m.key: i for i, m in enumerate(sorted(called, key=lambda m: m.start), 1)}
     blocks: list[dict[str, object]] = []
     front = front_matter_end(text)
     breaks = page_breaks(text)
@@ -272,7 +302,8 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
             blocks.append(_page_break(text, a, b, breaks.index((a, b))))
             continue
         inside = [m for m in marks if a <= m.start < b]
-        notes = sorted([*inside, *(p for at, p in passages if a <= at < b)],
+        notes = sorted([*(m for m in inside if not m.continues),
+                        *(p for at, p in passages if a <= at < b)],
                        key=lambda m: numbers[m.key])  # fmt: skip
         html = _render_span(text, a, b, inside, segments, numbers, stats)
         blocks.append({
@@ -364,10 +395,11 @@ def _note(mark: Placement, number: int, row: Row | None) -> dict[str, object]:
     figures (the printed one is the marked text beside it, the verdict the colour of its
     label, all ten figures in the table): two such notes share a line of the margin, so the
     notes beside a table of numbers run on little past it (Lecornu's tables)."""
-    text = mark.note
+    text = edition_text(mark.note)  # the detail's numbers as the paper writes its own
     compact = not mark.finding and mark.how == "value" and row is not None and "recomputed" in row
     if compact and row is not None:
         text = edition_quantity(row.get("recomputed"), text_of(row, "unit"), MARGIN_DIGITS)
+    text = note_subscripts(text)
     # the row's id without its paper's name, which the page is about (lecornu.eq.14: eq.14)
     return {"n": number, "key": mark.key, "row": mark.row_id, "css": mark.css.split()[0],
             "label": mark.row_id.split(".", 1)[-1], "compact": compact,

@@ -37,8 +37,10 @@ PROBE = """
 const visible = (e) => { const r = e.getBoundingClientRect(); return r.width > 0 && r.height > 0
   && getComputedStyle(e).visibility !== "hidden"; };
 const marks = [...document.querySelectorAll(".hl[id^='at-']")].map((m) => {
-  const key = m.id.slice(3), blk = m.closest(".blk");
-  const note = blk && blk.querySelector(`[id="note-${CSS.escape(key)}"]`);
+  const key = m.id.slice(3), blk = m.closest(".blk"), own = m.dataset.note || key;
+  // a later piece of a quote or formula shares its first piece's note, wherever that is
+  const note = own === key ? blk && blk.querySelector(`[id="note-${CSS.escape(key)}"]`)
+    : document.getElementById(`note-${own}`);
   return [key, visible(m), !!m.closest(".edition .txt"), !!note && visible(note),
           m.dataset.row || "", m.dataset.lines || ""];
 });

@@ -134,3 +134,84 @@ def test_a_claims_column_empty_for_every_row_is_left_out() -> None:
     slip = [{**agree[0], "verdict": "discrepant", "cause": "arithmetic-slip", "exact": 5.1}]
     header = re.search(r"<h2>Printed numbers</h2>.*?</tr>", paper_page("p", "c", text, slip), re.S)
     assert header and "<th>cause</th>" in header.group(0) and "<th>exact</th>" in header.group(0)
+
+
+def _notes_text(page: str) -> str:
+    notes = re.findall(r'<p class="note[^"]*" id="note-[^"]+">(.*?)</p>', page, re.S)
+    return unescape(re.sub(r"<[^>]+>", "", " || ".join(notes)))
+
+
+def test_a_printed_negative_value_is_shown_with_the_typeset_minus() -> None:
+    """« −1,27 » as the text sets it, in the note and the claims table; the row keeps -1,27."""
+    text = "La déviation est -1,27 ici.\n"
+    claims: list[dict[str, object]] = [{"id": "p.d", "published": "-1,27",
+        "verdict": "discrepant", "recomputed": -1.335486253, "cause": "propagated"}]  # fmt: skip
+    page = paper_page("p", "c", text, claims)
+    assert "printed \u22121,27, recomputed \u22121,335486253" in _notes_text(page)
+    assert '<td class="num">\u22121,27 </td>' in page
+    assert claims[0]["published"] == "-1,27"
+
+
+def test_a_notes_detail_numbers_have_a_decimal_comma_but_not_its_names() -> None:
+    """Numbers a detail string embeds take the decimal comma in the note; identifiers,
+    versions, code words and products printed with points do not."""
+    from pendcli.core.numbers import edition_text
+
+    assert edition_text("holds (order 1.99); max residual 6.08e-02") == (
+        "holds (order 1,99); max residual 6,08·10⁻²"
+    )
+    assert edition_text("ratio -1.286 at z = 5.14.") == "ratio \u22121,286 at z = 5,14."
+    kept = "lecornu.eq.25, table26.first, v1.2.3, DOP853, rtol 1e-12, 2.4…n, 1.3.5…, 1°-2°"
+    assert edition_text(kept) == kept
+    text = "Donc\n\n$$x = 1$$\n"
+    row = {
+        "id": "p.eq.1",
+        "status": "fails",
+        "lines": [3, 3],
+        "printed": "x = 1",
+        "corrected": "x = 3.66723 (order 1.99, see p.eq.25)",
+    }
+    shown = _notes_text(paper_page("p", "c", text, [], (), [row]))
+    assert "corrected: x = 3,66723 (order 1,99, see p.eq.25)" in shown, shown
+    assert row["corrected"] == "x = 3.66723 (order 1.99, see p.eq.25)"
+
+
+def test_a_quote_over_prose_and_a_formula_has_one_note_call() -> None:
+    """Charbonnier's « $\\cos kt$ ne diffère de -1 … »: two marked pieces, one call, one note;
+    the later piece links to the first's note (broken on purpose: with a call per piece the
+    page has two calls and a 'continued' note)."""
+    text = (tables_dir() / "papers" / "charbonnier.txt").read_text("utf-8")
+    from test_html_report import _table_rows
+
+    claims, equations = _table_rows("charbonnier")
+    page = paper_page("charbonnier", "c", text, claims, (), equations)
+    key = "charbonnier.result.amplitude"
+    pieces = re.findall(rf'id="at-{re.escape(key)}(~[^"]*)?"[^>]*data-note="([^"]*)"', page)
+    assert len(pieces) >= 2 and {note for _, note in pieces} == {key}, pieces
+    assert page.count(f'class="call"><a href="#note-{key}"') == 1
+    assert len(re.findall(rf'id="note-{re.escape(key)}[~"]', page)) == 1
+    assert "continued" not in _notes_text(page)
+    calls = len(re.findall(r'class="call"', page))
+    assert calls == len(re.findall(r'<p class="note', page)), calls
+
+
+def test_a_subscript_in_a_notes_words_is_set_as_one_and_a_name_is_not() -> None:
+    """Broken on purpose: without it the note shows « θ_0 = 30' » and Δθ'_m raw."""
+    text = "Donc\n\n$$x = 1$$\n"
+    row = {
+        "id": "p.eq.1",
+        "status": "fails",
+        "lines": [3, 3],
+        "printed": "x = 1",
+        "corrected": "Δθ'_m = −ε E_s(π/2) and I_{n-2}; see psi_sin2 and p.x_bound",
+    }
+    page = paper_page("p", "c", text, [], (), [row])
+    (note,) = re.findall(r'<p class="note[^"]*" id="note-p.eq.1">(.*?)</p>', page, re.S)
+    assert "Δθ&#39;<sub>m</sub> = −ε E<sub>s</sub>(π/2) and I<sub>n\u22122</sub>" in note, note
+    assert "psi_sin2 and p.x_bound" in note and "<script" not in note
+    tisserand = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
+    from test_html_report import _table_rows
+
+    shown = paper_page("tisserand", "c", tisserand, *_table_rows("tisserand")[:1])
+    assert "« θ<sub>0</sub> = 30&#39;, θ<sub>1</sub> = 15&#39; »" in shown
+    assert "θ_0 = 30" not in _notes_text(shown)

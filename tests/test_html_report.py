@@ -15,6 +15,7 @@ import pytest
 from markupsafe import escape
 
 from pendcli.core.ledger import load_ledger
+from pendcli.core.numbers import edition_text
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.html_graph import layered_graph
 from pendcli.html_marks import Placement
@@ -461,7 +462,10 @@ def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(pape
     claims, equations = _table_rows(paper)
     page = paper_page(paper, "", text, claims, (), equations)
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
-    notes = re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition)
+    notes = [
+        (k, _subscripts_as_tex(b))
+        for k, b in re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition)
+    ]
     wrong = [r for r in equations if str(r["status"]) in ("misprint", "fails")]
     assert len(wrong) >= 3
     for row in wrong:
@@ -469,8 +473,15 @@ def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(pape
         own = [body for key, body in notes if unescape(key).split("~")[0] == row["id"]]
         assert own, row["id"]  # marked, with its note
         if correction:
-            shown = str(escape(correction))
+            shown = _subscripts_as_tex(str(escape(edition_text(correction))))
             assert sum(shown in body for body in own) == 1, (row["id"], own)
+
+
+def _subscripts_as_tex(html: str) -> str:
+    """A note compared as the ledger writes it: a set subscript (<sub>m</sub>) and a TeX one
+    (_m, _{n-2}) read alike."""
+    plain = re.sub(r"<sub>(.*?)</sub>", r"_\1", html)
+    return re.sub(r"_\{([^{}]*)\}", r"_\1", plain).replace("\u2212", "-")
 
 
 def _wrong_term_faults(text: str, claims: list[dict[str, object]],
@@ -482,10 +493,14 @@ def _wrong_term_faults(text: str, claims: list[dict[str, object]],
     marks = {m.key: m for m in place_marks(text, claims, equations)[0]}
     page = paper_page("p", "", text, claims, (), equations)
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
-    notes = dict(re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition))
+    notes = {
+        k: _subscripts_as_tex(b)
+        for k, b in re.findall(r'<p class="note [^"]*" id="note-([^"]+)">(.*?)</p>', edition)
+    }
     bad = []
     for row in wrong:
-        value, shown = row["wrong_term"], str(escape(correction_of(row)))
+        value = row["wrong_term"]
+        shown = _subscripts_as_tex(str(escape(edition_text(correction_of(row)))))
         terms = [value] if isinstance(value, str) else list(value or ())  # type: ignore[call-overload]
         if not terms:
             bad.append(f"{row['id']}: no wrong term marked ({value!r})")

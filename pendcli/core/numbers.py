@@ -26,8 +26,10 @@ from pendcli.core.errors import PendcliError
 __all__ = [
     "PrintedNumber",
     "edition_angle",
+    "edition_minus",
     "edition_number",
     "edition_quantity",
+    "edition_text",
     "exact_number",
     "parse_printed",
 ]
@@ -251,3 +253,31 @@ def edition_quantity(value: object, unit: str = "", digits: int = 10) -> str:
     if unit == "angle" and isinstance(value, float) and math.isfinite(value):
         return edition_angle(value)
     return f"{edition_number(value, digits)} {unit}".strip() if value is not None else ""
+
+
+# A minus sign written as a hyphen before a number, at the start or after a blank, a bracket,
+# "=" or a separator: not a range (1°-2°), an exponent (1e-12) or a word's hyphen.
+_HYPHEN_MINUS = re.compile(r"(?<![^\s(\[=,;:«])-(?=\d)")
+# A number with a decimal point in a detail string (1.99, -1.286, 6.08e-02): not part of an
+# identifier (lecornu.eq.25, table26.first), a version (1.2.3), a word (DOP853, 1e-12) or
+# a product printed with points (2.4…n, 1.3.5…).
+_POINT_NUMBER = re.compile(r"(?<![\w.])(\d+)\.(\d+)(?:e([+-]?\d+))?(?!\w|\.\d|…)")
+
+
+def edition_minus(text: str) -> str:
+    """A printed value or form with the typeset minus (−1,27) where it has a hyphen-minus."""
+    return _HYPHEN_MINUS.sub("\u2212", text)
+
+
+def edition_text(detail: str) -> str:
+    """A note's detail string as the edition shows it: its numbers with a decimal comma
+    (``order 1,99``, ``6,08·10⁻²``) and the typeset minus; identifiers, versions and code
+    words are left as they are. The JSON and CSV outputs keep the string as it is."""
+
+    def comma(m: re.Match[str]) -> str:
+        text = f"{m.group(1)},{m.group(2)}"
+        if m.group(3):
+            text += "·10" + str(int(m.group(3))).translate(_SUPERSCRIPT)
+        return text
+
+    return edition_minus(_POINT_NUMBER.sub(comma, detail))
