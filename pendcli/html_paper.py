@@ -312,9 +312,21 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
             "figure": bool(_FIGURE.fullmatch(text[a:b].strip())) and not inside,
             "front": b <= front,
             "pagebreak": "",
-            "notes": [_note(m, numbers[m.key], rows.get(m.row_id)) for m in notes],
+            "notes": (drawn := [_note(m, numbers[m.key], rows.get(m.row_id)) for m in notes]),
+            "dense": _is_dense(drawn),
         })  # fmt: skip
     return blocks
+
+
+# A paragraph with this many findings (or notes in all) sets its notes below it, not in the
+# margin: beside Lecornu's tables of numbers a margin column of eleven three-line findings ran
+# 700 px below its table, and every later note after it.
+DENSE_FINDINGS, DENSE_NOTES = 4, 8
+
+
+def _is_dense(notes: list[dict[str, object]]) -> bool:
+    findings = sum(1 for n in notes if n.get("finding"))
+    return findings >= DENSE_FINDINGS or len(notes) >= DENSE_NOTES
 
 
 # A running head or foot the OCR kept as a line of the text: the journal's foot at the bottom

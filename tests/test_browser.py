@@ -146,10 +146,16 @@ for (const e of document.querySelectorAll(".edition .txt, .edition .pagebreak"))
   if (e.classList.contains("pagebreak")) { before = null; continue; }
   if (r.height === 0) continue;
   if (before) gaps.push([Math.round(r.top - before.bottom), Math.round(r.top + scrollY)]);
-  before = r;
+  // a dense paragraph's notes follow it (set apart on purpose, as a page break is)
+  before = e.parentElement.classList.contains("dense") ? null : r;
 }
 const right = Math.max(...[...document.querySelectorAll(".edition .txt")].map((t) => box(t).right));
-const notes = [...document.querySelectorAll(".edition .notes")];
+const notes = [...document.querySelectorAll(".edition .blk:not(.dense) > .notes")];
+// a dense paragraph's notes: below its text, inside the text column
+const below = [...document.querySelectorAll(".edition .blk.dense > .notes")].filter((n) => {
+  const t = box(n.parentElement.querySelector(".txt"));
+  return box(n).top < t.bottom - 1 || box(n).right > right + 1;
+}).length;
 const own = (n) => box(n.parentElement.querySelector(".txt")).top;
 const over = notes.filter((n) => box(n).left < right).length;
 const stacked = notes.filter((n, i) => i && box(n).top < box(notes[i - 1]).bottom - 0.5).length;
@@ -167,10 +173,13 @@ const hidden = [...document.querySelectorAll(".wide")].filter((w) => w.scrollWid
   .map((w) => w.previousElementSibling ? w.previousElementSibling.textContent.slice(0, 40) : "");
 document.body.insertAdjacentHTML("beforeend", "<pre id='probe'></pre>");
 document.getElementById("probe").textContent = JSON.stringify(
-  {gaps, over, stacked, early, drift, hidden, slivers, notes: notes.length});
+  {gaps, over, stacked, early, drift, below, hidden, slivers, notes: notes.length});
 </script>
 """
 MAX_GAP = 40  # px at 1280 px: a paragraph's margins and a displayed formula's padding
+# px: a margin note starts at most this far below its paragraph (beside it, not a screen
+# later); was 722 px beside Lecornu's tables before their notes were set below them
+MAX_DRIFT = 250
 
 
 def _layout(page: Path) -> dict[str, object]:
@@ -194,6 +203,8 @@ def test_the_notes_do_not_hold_the_text_apart_nor_cover_it_nor_a_table_hide(
     assert seen["over"] == 0, f"{seen['over']} notes reach into the text column"
     assert seen["stacked"] == 0, f"{seen['stacked']} notes overlap the note before them"
     assert seen["early"] == 0, f"{seen['early']} notes start above their paragraph"
+    assert seen["below"] == 0, f"{seen['below']} dense paragraphs' notes not below their text"
+    assert seen["drift"] <= MAX_DRIFT, f"a margin note {seen['drift']:.0f} px below its paragraph"
     assert not seen["hidden"], f"tables wider than the page at 1280 px: {seen['hidden']}"
     assert not seen["slivers"], f"marks not around their formula: {seen['slivers'][:5]}"
     print(f"{paper}: largest gap {gaps[0][0]} px, a note at most {seen['drift']:.0f} px below")
