@@ -73,34 +73,16 @@ def _wall(cmd: list[str]) -> float:
 
 
 def _timed(cmd: list[str], env: dict[str, str] | None = None) -> tuple[float, float]:
-    """(wall, CPU) seconds of one run: CPU is user + system of the process and every child
-    it waited for (a forked worker's too), as the kernel accounts them. The result cache is
-    off unless ``env`` names one."""
+    """(wall, CPU) seconds of one run (:func:`pendcli.bench_summary.timed_process`). The
+    result cache is off unless ``env`` names one."""
+    from pendcli.bench_summary import timed_process
+
     variables = {**os.environ, "NO_COLOR": "1", "COLUMNS": "100", "PENDCLI_CACHE": "off"}
     variables.update(env or {})
     # As a user runs it: bytecode written and read. Where PYTHONDONTWRITEBYTECODE is set every
     # run would compile sympy and scipy from source again (4 s of B's 6 s on this machine).
     variables.pop("PYTHONDONTWRITEBYTECODE", None)
-    start = time.perf_counter()
-    # A session of its own: a Ctrl-C stops this run (which then kills the child), not the
-    # child first, whose failure would read as a broken command.
-    proc = subprocess.Popen(
-        cmd,
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.DEVNULL,
-        env=variables,
-        start_new_session=True,
-    )
-    try:
-        _, status, usage = os.wait4(proc.pid, 0)
-    except BaseException:
-        proc.kill()
-        raise
-    wall = time.perf_counter() - start
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    if proc.returncode != 0:
-        raise subprocess.CalledProcessError(proc.returncode, cmd)
-    return wall, usage.ru_utime + usage.ru_stime
+    return timed_process(cmd, variables)
 
 
 # The import floor B of the work (issue 23) and what is measured against it:
@@ -715,10 +697,30 @@ def committed_tables(root: Path | None = None) -> dict[str, list[Point]]:
     return {name: tradeoff.read_table(path) for name, path in paths.items() if path.is_file()}
 
 
+def _has_timings_block(path: Path) -> bool:
+    from pendcli.bench_summary import with_summary
+
+    try:
+        return with_summary(path.read_text("utf-8"), []) is not None
+    except (OSError, UnicodeDecodeError):
+        return False
+
+
+def _positive(text: str) -> int:
+    """A count of runs: a whole number, 1 or more (argparse prints the one-line error)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number; expected >= 1") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{value} is out of range; expected >= 1")
+    return value
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m pendcli.bench", description=__doc__)
     parser.add_argument("--write", type=Path, help="README to update between the markers")
-    parser.add_argument("--runs", type=int, default=7, help="runs per command (median)")
+    parser.add_argument("--runs", type=_positive, default=7, help="runs per command (median)")
     parser.add_argument("--quick", action="store_true", help="tiny configuration (smoke test)")
     parser.add_argument(
         "--no-tables",
@@ -729,13 +731,20 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--no-growth", action="store_true", help="skip the cost-growth table")
     parser.add_argument("--no-floor", action="store_true", help="skip the import-floor table")
     parser.add_argument(
-        "--floor-runs", type=int, default=3, help="runs per import-floor command (median)"
+        "--floor-runs", type=_positive, default=3, help="runs per import-floor command (median)"
     )
     parser.add_argument("--summary", type=Path, help="README whose timings block to update")
     parser.add_argument(
         "--no-checkout", action="store_true", help="skip timing the test suite and the install"
     )
     args = parser.parse_args(argv)
+    if args.summary is not None and not _has_timings_block(args.summary):
+        from pendcli.bench_summary import SUMMARY_END, SUMMARY_START
+
+        parser.error(
+            f"--summary {args.summary}: no such file, or no {SUMMARY_START} ... {SUMMARY_END} "
+            "markers; give the README that has them"
+        )
     growth = False if args.no_growth else None
     floor = False if args.no_floor else None
     text = run(

@@ -31,6 +31,7 @@ __all__ = [
     "measurement_tag",
     "suite_time",
     "summary_lines",
+    "timed_process",
     "with_summary",
 ]
 
@@ -61,25 +62,35 @@ def checkout_root() -> Path | None:
     return root if all((root / name).exists() for name in needed) else None
 
 
-def _run(
-    cmd: list[str], cwd: Path, env: dict[str, str], allowed: tuple[int, ...] = (0,)
+def timed_process(
+    cmd: list[str],
+    env: dict[str, str],
+    cwd: Path | None = None,
+    allowed: tuple[int, ...] = (0,),
 ) -> tuple[float, float]:
-    """(wall, CPU) of one command and every child it waited for; another exit status raises."""
-    start = time.perf_counter()
-    proc = subprocess.Popen(
-        cmd, cwd=cwd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-        start_new_session=True,  # a Ctrl-C stops this run, which then kills the child
-    )  # fmt: skip
-    try:
-        _, status, usage = os.wait4(proc.pid, 0)
-    except BaseException:
-        proc.kill()
-        raise
-    wall = time.perf_counter() - start
-    code = os.waitstatus_to_exitcode(status)
-    if code not in allowed:
-        err = proc.stderr.read().decode(errors="replace") if proc.stderr else ""
-        raise subprocess.CalledProcessError(code, cmd, stderr=err)
+    """(wall, CPU) seconds of one run: CPU is user + system of the process and every child it
+    waited for (a forked worker's too), as the kernel accounts them. Output is discarded;
+    another exit status than ``allowed`` raises, with the run's stderr."""
+    with tempfile.TemporaryFile() as err:
+        start = time.perf_counter()
+        # A session of its own: a Ctrl-C stops this run (which then kills the child), not the
+        # child first, whose failure would read as a broken command.
+        proc = subprocess.Popen(
+            cmd, cwd=cwd, env=env, stdout=subprocess.DEVNULL, stderr=err,
+            start_new_session=True,
+        )  # fmt: skip
+        try:
+            _, status, usage = os.wait4(proc.pid, 0)
+        except BaseException:
+            proc.kill()
+            raise
+        wall = time.perf_counter() - start
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        if proc.returncode not in allowed:
+            err.seek(0)
+            raise subprocess.CalledProcessError(
+                proc.returncode, cmd, stderr=err.read().decode(errors="replace")
+            )
     return wall, usage.ru_utime + usage.ru_stime
 
 
@@ -92,7 +103,7 @@ def suite_time(root: Path) -> tuple[float, float]:
     env.update(
         PENDCLI_JOBS="1", NO_COLOR="1", PYTHONPYCACHEPREFIX=str(Path(sys.prefix) / "pycache")
     )
-    return _run([sys.executable, *SUITE_ARGS, *SUITE_MARKS], root, env, allowed=(0, 1))
+    return timed_process([sys.executable, *SUITE_ARGS, *SUITE_MARKS], env, root, allowed=(0, 1))
 
 
 def install_time(root: Path) -> tuple[float, float]:
@@ -104,7 +115,7 @@ def install_time(root: Path) -> tuple[float, float]:
         venv = Path(tmp) / "venv"
         python = _base_python()
         cmd = ["make", "-s", f"VENV={venv}", f"PYTHON={python}", f"{venv}/.runtime"]
-        return _run(cmd, root, env)
+        return timed_process(cmd, env, root)
 
 
 def _base_python() -> str:

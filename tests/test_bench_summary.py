@@ -66,3 +66,41 @@ def test_the_readme_and_the_benchmarks_page_come_from_one_measurement() -> None:
     if not tags:
         pytest.fail("the README's timings block was never written by `make bench`")
     assert re.search(rf"Measurement `{tags[0]}`", page), "docs/benchmarks.md is another run's"
+
+
+@pytest.mark.parametrize(
+    ("args", "says"),
+    [
+        (["--runs", "0"], "--runs: 0 is out of range; expected >= 1"),
+        (["--floor-runs", "x"], "--floor-runs: 'x' is not a whole number; expected >= 1"),
+        (["--summary", "/nonexistent/README.md"], "--summary /nonexistent/README.md: no such"),
+    ],
+)
+def test_a_bad_bench_argument_is_one_line_and_exit_2(args: list[str], says: str) -> None:
+    import subprocess
+    import sys
+
+    run = subprocess.run(
+        [sys.executable, "-m", "pendcli.bench", *args], capture_output=True, text=True
+    )
+    assert run.returncode == 2
+    assert says in run.stderr.strip().splitlines()[-1]
+    assert "Traceback" not in run.stderr
+
+
+def test_a_timed_run_accounts_its_children_and_raises_with_their_stderr() -> None:
+    """The CPU of a child's child is counted (a busy loop of ~0.2 s in a grandchild), an exit
+    status outside ``allowed`` raises with the run's stderr, one inside does not."""
+    import os
+    import subprocess
+    import sys
+
+    busy = "import time\nt = time.process_time()\nwhile time.process_time() - t < 0.2: pass"
+    child = f"import subprocess, sys; subprocess.run([sys.executable, '-c', {busy!r}])"
+    wall, cpu = bench_summary.timed_process([sys.executable, "-c", child], dict(os.environ))
+    assert cpu >= 0.2 and wall >= 0.2
+    fail = [sys.executable, "-c", "import sys; sys.stderr.write('broken'); sys.exit(3)"]
+    with pytest.raises(subprocess.CalledProcessError) as raised:
+        bench_summary.timed_process(fail, dict(os.environ))
+    assert raised.value.returncode == 3 and raised.value.stderr == "broken"
+    assert bench_summary.timed_process(fail, dict(os.environ), allowed=(3,))[0] > 0
