@@ -66,3 +66,7 @@ def test_ci_runs_the_slow_suite_and_make_test_leaves_it_out() -> None:
     assert '-m "not browser"' in _target(make, "test-all")
     assert "make test-all" in ci or {"make test", "make test-slow"} <= set(ci)
     assert "make test-durations" in ci
+    # and the README's own test command, as a user runs it
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    command = readme.split("```sh\n", 1)[1].split("```", 1)[0].splitlines()[1].split("#")[0]
+    assert command.strip() == "make test" and "make test" in ci
