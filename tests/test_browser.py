@@ -81,9 +81,12 @@ def pages(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return out
 
 
-def _probe(page: Path) -> dict[str, list]:  # type: ignore[type-arg]
+def _probe(page: Path, script: str | None = None) -> dict[str, list]:  # type: ignore[type-arg]
+    """What a script (PROBE unless given) finds in the page as Chromium draws it at 1280 px."""
     probe = page.with_name(f"{page.stem}-probe.html")
-    probe.write_text(page.read_text("utf-8").replace("</body>", PROBE + "</body>"), "utf-8")
+    probe.write_text(
+        page.read_text("utf-8").replace("</body>", (script or PROBE) + "</body>"), "utf-8"
+    )
     dom = _chromium("--window-size=1280,2000", "--dump-dom", probe.as_uri())
     probe.unlink()
     found = re.search(r"<pre id=\"probe\">(.*?)</pre>", dom, re.S)
@@ -183,13 +186,7 @@ MAX_DRIFT = 250
 
 
 def _layout(page: Path) -> dict[str, object]:
-    probe = page.with_name(f"{page.stem}-layout.html")
-    probe.write_text(page.read_text("utf-8").replace("</body>", LAYOUT + "</body>"), "utf-8")
-    dom = _chromium("--window-size=1280,2000", "--dump-dom", probe.as_uri())
-    probe.unlink()
-    found = re.search(r"<pre id=\"probe\">(.*?)</pre>", dom, re.S)
-    assert found, "the layout probe did not run"
-    return json.loads(html.unescape(found.group(1)))
+    return _probe(page, LAYOUT)
 
 
 @pytest.mark.parametrize("paper", PAPERS)

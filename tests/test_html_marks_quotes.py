@@ -16,7 +16,7 @@ from pendcli.core.tables import tables_dir
 from pendcli.html_marks import ALSO_WRONG, place_marks
 
 sys.path.insert(0, str(Path(__file__).parent))
-from test_html_report import _misplaced, _quote_is_printed, _table_rows
+from test_html_report import edition_rows, misplaced, quote_is_printed
 
 
 def _altered(tmp_path: Path, paper: str, old: str, new: str) -> Path:
@@ -72,7 +72,7 @@ def test_the_rows_with_two_wrong_terms_read_as_lists() -> None:
 
 def test_each_wrong_term_is_marked_and_only_the_first_carries_the_correction() -> None:
     text = (tables_dir() / "papers" / "lecornu.txt").read_text("utf-8")
-    marks = {m.key: m for m in place_marks(text, *_table_rows("lecornu"))[0]}
+    marks = {m.key: m for m in place_marks(text, *edition_rows("lecornu"))[0]}
     first = marks["lecornu.result.largest_length_comparison~term0"]
     second = marks["lecornu.result.largest_length_comparison~term1"]
     assert text[first.start : first.end] == "\\frac{3\\pi^2 + 12b}{16g}"
@@ -83,7 +83,7 @@ def test_each_wrong_term_is_marked_and_only_the_first_carries_the_correction() -
 def test_a_quote_runs_through_a_formula_as_pieces() -> None:
     """« $\\cos kt$ ne diffère de -1 »: the formula's TeX and the prose, two pieces."""
     text = (tables_dir() / "papers" / "charbonnier.txt").read_text("utf-8")
-    marks = [m for m in place_marks(text, *_table_rows("charbonnier"))[0]
+    marks = [m for m in place_marks(text, *edition_rows("charbonnier"))[0]
              if m.row_id == "charbonnier.result.amplitude"]  # fmt: skip
     assert [text[m.start : m.end] for m in marks][:2] == [
         "\\cos kt", "ne diffère de -1 que par un terme en ε^2"]  # fmt: skip
@@ -94,14 +94,14 @@ def test_the_quote_check_sees_a_piece_moved_or_missing() -> None:
     """Broken on purpose: a quote's piece shifted by three characters, or one piece of two
     dropped, is not the quote as printed."""
     text = (tables_dir() / "papers" / "charbonnier.txt").read_text("utf-8")
-    claims, equations = _table_rows("charbonnier")
+    claims, equations = edition_rows("charbonnier")
     row = next(r for r in equations if r["id"] == "charbonnier.result.amplitude")
     marks = [m for m in place_marks(text, claims, equations)[0] if m.row_id == row["id"]]
     pieces = [m for m in marks if m.forms == marks[0].forms]
-    assert len(pieces) == 2 and _quote_is_printed(text, row, pieces[0], pieces)
+    assert len(pieces) == 2 and quote_is_printed(text, row, pieces[0], pieces)
     moved = dataclasses.replace(pieces[1], start=pieces[1].start + 3, end=pieces[1].end + 3)
-    assert not _quote_is_printed(text, row, pieces[0], [pieces[0], moved])
-    assert not _quote_is_printed(text, row, pieces[0], [pieces[0]])
+    assert not quote_is_printed(text, row, pieces[0], [pieces[0], moved])
+    assert not quote_is_printed(text, row, pieces[0], [pieces[0]])
 
 
 def test_a_quote_outside_its_lines_falls_back_and_is_caught() -> None:
@@ -109,8 +109,8 @@ def test_a_quote_outside_its_lines_falls_back_and_is_caught() -> None:
     (sine-to-arc's sentence, marked already): its quote is not found there, so it has no
     mark of its own, and the check says so."""
     text = (tables_dir() / "papers" / "charbonnier.txt").read_text("utf-8")
-    claims, equations = _table_rows("charbonnier")
+    claims, equations = edition_rows("charbonnier")
     moved = [{**r, "lines": [72, 72]} if r["id"] == "charbonnier.result.rise-equals-descent"
              else r for r in equations]  # fmt: skip
-    bad = _misplaced("charbonnier", text, claims, moved)
+    bad = misplaced("charbonnier", text, claims, moved)
     assert bad == ["charbonnier.result.rise-equals-descent not marked"]

@@ -181,9 +181,9 @@ def test_a_quote_over_prose_and_a_formula_has_one_note_call() -> None:
     the later piece links to the first's note (broken on purpose: with a call per piece the
     page has two calls and a 'continued' note)."""
     text = (tables_dir() / "papers" / "charbonnier.txt").read_text("utf-8")
-    from test_html_report import _table_rows
+    from test_html_report import edition_rows
 
-    claims, equations = _table_rows("charbonnier")
+    claims, equations = edition_rows("charbonnier")
     page = paper_page("charbonnier", "c", text, claims, (), equations)
     key = "charbonnier.result.amplitude"
     pieces = re.findall(rf'id="at-{re.escape(key)}(~[^"]*)?"[^>]*data-note="([^"]*)"', page)
@@ -210,8 +210,8 @@ def test_a_subscript_in_a_notes_words_is_set_as_one_and_a_name_is_not() -> None:
     assert "Δθ&#39;<sub>m</sub> = −ε E<sub>s</sub>(π/2) and I<sub>n\u22122</sub>" in note, note
     assert "psi_sin2 and p.x_bound" in note and "<script" not in note
     tisserand = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    from test_html_report import _table_rows
+    from test_html_report import edition_rows
 
-    shown = paper_page("tisserand", "c", tisserand, *_table_rows("tisserand")[:1])
+    shown = paper_page("tisserand", "c", tisserand, *edition_rows("tisserand")[:1])
     assert "« θ<sub>0</sub> = 30&#39;, θ<sub>1</sub> = 15&#39; »" in shown
     assert "θ_0 = 30" not in _notes_text(shown)

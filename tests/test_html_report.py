@@ -178,7 +178,7 @@ def test_no_edge_of_the_propagation_graph_crosses_a_label(paper: str) -> None:
 # --- placement over the three papers' own rows ----------------------------------------------
 
 
-def _table_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, object]]]:
+def edition_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, object]]]:
     """The rows as the tables print them (no computation: placement needs only the strings)."""
     claims: list[dict[str, object]] = [
         {"id": c.id, "published": c.published, "as_printed": c.as_printed, "ocr": c.ocr,
@@ -216,7 +216,7 @@ def _quotes_of(row: dict[str, object]) -> list[str]:
     return [value] if isinstance(value, str) else [str(q) for q in value or ()]  # type: ignore[attr-defined]
 
 
-def _quote_is_printed(text: str, row: dict[str, object], mark: Placement,
+def quote_is_printed(text: str, row: dict[str, object], mark: Placement,
                       marks: Sequence[Placement]) -> bool:  # fmt: skip
     """The pieces of a quote's mark lie within one verbatim occurrence of the quote inside
     the row's lines (counted here) and cover every word of it: what they leave uncovered
@@ -264,7 +264,7 @@ def _formula_is_printed(marked: str, part: str, others: Sequence[str] = ()) -> b
     return share >= 0.75 and all(_digit_share(o, part) <= share for o in others)
 
 
-def _misplaced(paper: str, text: str, claims: list[dict[str, object]],
+def misplaced(paper: str, text: str, claims: list[dict[str, object]],
                equations: list[dict[str, object]]) -> list[str]:  # fmt: skip
     """The marks that are not their row's printed string, wrong term, label, quoted words or
     printed formula, or that lie outside their row's lines (lines counted here)."""
@@ -290,7 +290,7 @@ def _misplaced(paper: str, text: str, claims: list[dict[str, object]],
             if not (inside and m.forms[0] in parts and printed_ok):
                 bad.append(f"{m.key}: {marked!r} is not {m.forms[0]!r}")
         elif m.how == "quote" and m.forms[0] in _quotes_of(row):
-            if not _quote_is_printed(text, row, m, marks):
+            if not quote_is_printed(text, row, m, marks):
                 bad.append(f"{m.key}: {marked!r} is not {m.forms[0]!r} within its lines")
         elif m.how == "first":
             if row.get("printed"):  # a row with a printed form is placed by it
@@ -303,9 +303,9 @@ def _misplaced(paper: str, text: str, claims: list[dict[str, object]],
 @pytest.mark.parametrize("paper", PAPERS)
 def test_each_mark_is_what_its_row_prints_and_lies_within_its_lines(paper: str) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    claims, equations = _table_rows(paper)
+    claims, equations = edition_rows(paper)
     assert all(r["lines"] for r in [*claims, *equations])  # every row says where it is printed
-    assert _misplaced(paper, text, claims, equations) == []
+    assert misplaced(paper, text, claims, equations) == []
     marks, _ = place_marks(text, claims, equations)
     displays = [(s.start, s.end) for s in math_segments(text) if s.display]
     for m in marks:  # a label: inside a display formula
@@ -324,11 +324,11 @@ def test_the_placement_check_sees_a_mark_moved_to_a_neighbour() -> None:
     """Broken on purpose: a claim's lines shifted, and cos θ1's series checked against the
     cos θ printed just above it in the same lines, are both caught."""
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    claims, equations = _table_rows("tisserand")
+    claims, equations = edition_rows("tisserand")
     shifted = [{**c, "lines": [c["lines"][0] - 2, c["lines"][1] - 2]}  # type: ignore[index]
                if c["id"] == "tisserand.example.phi_sin2" else c for c in claims]  # fmt: skip
     assert any(b.startswith("tisserand.example.phi_sin2") for b in
-               _misplaced("tisserand", text, shifted, equations))  # fmt: skip
+               misplaced("tisserand", text, shifted, equations))  # fmt: skip
     series = next(r for r in equations if r["id"] == "tisserand.result.cos-series")
     cos_theta1 = str(series["printed"]).split(";")[2]
     own = r"\cos \theta_1 = 1 - \frac{1}{2} u_1^2 - \frac{1}{8} u_1^4"
@@ -341,7 +341,7 @@ def test_each_formula_of_a_printed_form_is_marked_at_its_own_formula() -> None:
     """The three series of « On a les développements suivants » each at its own line, and
     the numerical example's four formulas at theirs."""
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    marks = place_marks(text, *_table_rows("tisserand"))[0]
+    marks = place_marks(text, *edition_rows("tisserand"))[0]
     lines = {m.key: m.lines[0] for m in marks}
     assert [lines.get(k) for k in ("tisserand.result.cos-series",
             "tisserand.result.cos-series~formula1", "tisserand.result.cos-series~formula2")] == [
@@ -390,7 +390,7 @@ def test_the_issues_marks_sit_on_the_wrong_term(
     paper: str, key: str, printed: str, beside: str
 ) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    marks = {m.key: m for m in place_marks(text, *_table_rows(paper))[0]}
+    marks = {m.key: m for m in place_marks(text, *edition_rows(paper))[0]}
     mark = marks[key]
     assert text[mark.start : mark.end] == printed
     assert mark.anchored and mark.how in ("value", "term", "reading")
@@ -430,7 +430,7 @@ def test_every_ledger_row_is_marked_within_its_lines(paper: str) -> None:
     """On the page (its elements' data-lines) and in the text (the marks' own offsets,
     mapped to lines here, not by the code under test)."""
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    claims, equations = _table_rows(paper)
+    claims, equations = edition_rows(paper)
     page = paper_page(paper, "", text, claims, (), equations)
     assert _outside_lines(page, equations) == []
     lines = {str(r["id"]): r["lines"] for r in equations}
@@ -446,7 +446,7 @@ def test_every_ledger_row_is_marked_within_its_lines(paper: str) -> None:
 def test_the_lines_check_sees_a_row_placed_by_shifted_lines() -> None:
     """Broken on purpose: (13) placed by lines shifted ten lines down is outside its own."""
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    claims, equations = _table_rows("tisserand")
+    claims, equations = edition_rows("tisserand")
     shifted = [
         {**r, "lines": [r["lines"][0] + 10, r["lines"][1] + 10]}  # type: ignore[index]
         if r["id"] == "tisserand.eq.13" else r
@@ -459,7 +459,7 @@ def test_the_lines_check_sees_a_row_placed_by_shifted_lines() -> None:
 @pytest.mark.parametrize("paper", PAPERS)
 def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(paper: str) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    claims, equations = _table_rows(paper)
+    claims, equations = edition_rows(paper)
     page = paper_page(paper, "", text, claims, (), equations)
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
     notes = [
@@ -535,7 +535,7 @@ def test_every_misprint_or_failure_is_marked_at_its_wrong_term_with_its_note_onc
     paper: str,
 ) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    claims, equations = _table_rows(paper)
+    claims, equations = edition_rows(paper)
     assert len([r for r in equations if str(r["status"]) in ("misprint", "fails")]) >= 3
     assert _wrong_term_faults(text, claims, equations) == []
 
@@ -544,7 +544,7 @@ def test_the_wrong_term_check_sees_a_term_missing_or_not_printed_in_its_lines() 
     """Broken on purpose: (13)'s wrong term dropped, or one the OCR does not print in its
     lines, is caught."""
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    claims, equations = _table_rows("tisserand")
+    claims, equations = edition_rows("tisserand")
     for term in (None, "\\sin^3 4k' t"):
         broken = [{**r, "wrong_term": term} if r["id"] == "tisserand.eq.13" else r
                   for r in equations]  # fmt: skip
@@ -556,7 +556,7 @@ def test_the_wrong_term_check_sees_a_second_term_that_is_not_printed() -> None:
     """Broken on purpose: delta_rhs's second wrong term (the 3/8 of u cos 3u) changed to one
     the text does not print is caught, as that term alone."""
     text = (tables_dir() / "papers" / "lecornu.txt").read_text("utf-8")
-    claims, equations = _table_rows("lecornu")
+    claims, equations = edition_rows("lecornu")
     row = next(r for r in equations if r["id"] == "lecornu.result.delta_rhs")
     first, second = row["wrong_term"]  # type: ignore[misc]
     assert second == "+ \\frac{3}{8} u \\cos 3u"
@@ -571,7 +571,7 @@ def test_located_counts_only_rows_at_their_own_place(paper: str) -> None:
     """The page's counts, recounted here from the marks' offsets: a row is located when a
     mark of it within its lines is not merely the first formula or sentence there."""
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    claims, equations = _table_rows(paper)
+    claims, equations = edition_rows(paper)
     page = paper_page(paper, "", text, claims, (), equations)
     marks = place_marks(text, claims, equations)[0]
     for rows, name in ((claims, "printed numbers"), (equations, "equations and stated results")):
@@ -586,7 +586,7 @@ def test_located_counts_only_rows_at_their_own_place(paper: str) -> None:
 
 def test_the_cover_page_of_the_digitisation_is_shown_apart() -> None:
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    claims, equations = _table_rows("tisserand")
+    claims, equations = edition_rows("tisserand")
     page = paper_page("tisserand", "", text, claims, (), equations)
     front = page[page.index('<details class="front">') : page.index("</details>")]
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
@@ -714,7 +714,7 @@ def test_a_running_head_is_shown_as_the_editions_page_break_not_as_text() -> Non
     « quan- » and « tités »: the page shows it as the break between pp. 145 and 146, not in
     a paragraph of the text; the words either side stay in the text."""
     text = (tables_dir() / "papers" / "charbonnier.txt").read_text("utf-8")
-    page = paper_page("charbonnier", "", text, *_table_rows("charbonnier")[:1], ())
+    page = paper_page("charbonnier", "", text, *edition_rows("charbonnier")[:1], ())
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
     body = "".join(re.findall(r'<div class="txt[^"]*">(.*?)</div>', edition, re.S))
     assert "Avril 1908" not in body and "Ann. de Math" not in body
