@@ -148,6 +148,13 @@ def floor_times(runs: int = 3) -> FloorTimes:
     }
 
 
+def floor_ratio(times: FloorTimes, label: str, mode: str) -> float:
+    """A floor command's time over its reference's, in the measure its target names."""
+    reference, measure, _ = FLOOR_TARGETS[label]
+    which = 0 if measure == "wall" else 1
+    return times[label, mode][which] / times[reference, ""][which]
+
+
 def floor_lines(times: FloorTimes, runs: int) -> list[str]:
     """The floor table: each command cold and warm, its ratio in the measure its target names."""
     lines = [
@@ -164,11 +171,10 @@ def floor_lines(times: FloorTimes, runs: int) -> list[str]:
         wall, cpu = times[label, ""]
         lines.append(f"| `{label.removeprefix('B: ')}` | | {wall:.2f} | {cpu:.2f} | 1 | |")
     for label, (reference, measure, target) in FLOOR_TARGETS.items():
-        ref = times[reference, ""][0 if measure == "wall" else 1]
         name = "B" if reference == FLOOR else "the scipy import"
         for mode in ("cold", "warm"):
             wall, cpu = times[label, mode]
-            ratio = (wall if measure == "wall" else cpu) / ref
+            ratio = floor_ratio(times, label, mode)
             verdict = "met" if ratio <= target else "missed"
             lines.append(
                 f"| `{label}` | {mode} | {wall:.2f} | {cpu:.2f} | {measure} {ratio:.2f}x {name} "
@@ -674,10 +680,9 @@ def headlines(
         assert floor is not None
         if reference != FLOOR:
             continue
-        ref = floor[reference, ""][0 if measure == "wall" else 1]
         for mode in ("cold", "warm"):
             wall, cpu = floor[label, mode]
-            ratio = (wall if measure == "wall" else cpu) / ref
+            ratio = floor_ratio(floor, label, mode)
             heads.append(Headline(f"`{label}`, {mode}", wall, cpu,
                                   f"{measure} {ratio:.2f}x B", met(ratio, target)))  # fmt: skip
     if suite is not None:
