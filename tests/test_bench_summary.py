@@ -104,3 +104,21 @@ def test_a_timed_run_accounts_its_children_and_raises_with_their_stderr() -> Non
         bench_summary.timed_process(fail, dict(os.environ))
     assert raised.value.returncode == 3 and raised.value.stderr == "broken"
     assert bench_summary.timed_process(fail, dict(os.environ), allowed=(3,))[0] > 0
+
+
+def test_the_ledgers_floor_is_shown_as_its_share_of_b_in_cpu() -> None:
+    """What a cold `equations` pays before any check, as CPU over B's CPU (3.0 / 2.0)."""
+    times = {**_floor(), (bench.LEDGERS, ""): (2.5, 3.0)}
+    text = "\n".join(bench.floor_lines(times, 1))
+    assert f"| {bench.LEDGERS} | | 2.50 | 3.00 | CPU 1.50x B | |" in text
+    assert bench.LEDGERS not in "\n".join(bench.floor_lines(_floor(), 1))
+
+
+def test_the_ledgers_floor_command_reads_every_ledger(monkeypatch: pytest.MonkeyPatch) -> None:
+    from pendcli.core import ledger
+    from pendcli.papers.registry import ledger_papers
+
+    read: list[str] = []
+    monkeypatch.setattr(ledger, "load_ledger", lambda key: read.append(key))
+    exec(bench.READ_LEDGERS, {})
+    assert read == list(ledger_papers()) and len(read) == 3
