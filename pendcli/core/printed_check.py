@@ -36,7 +36,7 @@ __all__ = ["Reference", "computed_status", "formula_passes", "judged"]
 
 POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
 _DIGITS = 20
-# samples on the circle of _taylor_vanishes: the error goes as (radius / distance to the
+# samples on the circle of _cauchy_verdict: the error goes as (radius / distance to the
 # nearest singularity)**_CIRCLE_POINTS
 _CIRCLE_POINTS = 64
 
@@ -115,8 +115,9 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
 
     expr = _substituted(residual, reference)
     if reference.scale is not None and order is not None:
-        if _taylor_vanishes(expr, reference, order):
-            return True, f"vanishes at {POINTS} random rational points"
+        proved, why = _taylor_verdict(expr, reference, order)
+        if proved is not None:
+            return proved, why
         expr = _truncated(expr, reference.scale, order)
     # The random points first: cheap, and decisive when the residual is not 0; simplify only
     # where a point gives no number. An integral is never simplified (sympy's antiderivatives
@@ -301,56 +302,149 @@ def _truncated(expr: Any, scale: Any, order: int) -> Any:
     return sp.series(expr, scale, 0, order).removeO()
 
 
-def _taylor_vanishes(expr: Any, reference: Reference, order: int) -> bool:
+def _taylor_verdict(expr: Any, reference: Reference, order: int) -> tuple[bool | None, str]:
     """A quick proof that the series of ``expr`` in the scale vanishes below ``order`` (its
     Laurent coefficients: sympy's series keeps a pole's terms too) at random rational values
     of the other symbols: each coefficient by Cauchy's integral on a small circle about 0
     (the trapezoidal rule, exact far beyond 20 digits for a function analytic on the circle;
     a removable singularity at 0 costs nothing), every term bounded over the scale's domain
-    by 10**-(2 * digits). False decides nothing: ``expr`` is then truncated by sympy and
-    judged at the points as before (the verdict and its message come from there); an
-    expression that may not be meromorphic at 0 is left to sympy."""
+    by 10**-(2 * digits). A scale that enters through powers s**(p/q) (a branch point at 0)
+    is s = t**q, t > 0: a Puiseux series in s is a Laurent series in t, its terms below
+    s**order those below t**(q * order). (True, why): proved; (False, why): a coefficient
+    below the order is decisively not 0 (:func:`_cauchy_verdict`); (None, ""): decides
+    nothing, ``expr`` is then truncated by sympy and judged at the points as before."""
+    import sympy as sp
+
+    scale = reference.scale
+    low, high = reference.domain.get(scale.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
+    if expr.has(sp.Integral, sp.Derivative, sp.Subs) or not all(
+        isinstance(sp.sympify(b), sp.Rational) for b in (low, high)
+    ):
+        return None, ""
+    if _analytic_at_zero(expr, scale):
+        return _cauchy_verdict(expr, reference, order, scale, 1)
+    branch = _branch_denominator(expr, scale)
+    if branch is None or sp.sympify(low) <= 0:
+        return None, ""
+    root = sp.Dummy("root", positive=True)  # s = root**branch over the scale's domain s > 0
+    in_root = expr.subs(scale, root**branch)
+    # a root's base expanded: (t**2 b (c + d/(t**2 b)))**2 is 0 * zoo at t = 0, its expansion
+    # a polynomial in t whose value at 0 says whether the root branches there
+    in_root = in_root.replace(
+        lambda e: e.is_Pow and not e.exp.is_Integer and e.base.has(root),
+        lambda e: sp.expand(e.base) ** e.exp,
+    )
+    if not _analytic_at_zero(in_root, root):
+        return None, ""
+    return _cauchy_verdict(in_root, reference, branch * order, root, branch)
+
+
+def _branch_denominator(expr: Any, scale: Any) -> int | None:
+    """The least q such that every power of ``expr`` with a base 0 at scale = 0 has an
+    exponent in (1/q)Z (None: an exponent not rational, or none fractional)."""
+    import math
+
+    import sympy as sp
+
+    denominators = []
+    for node in sp.preorder_traversal(expr):
+        if isinstance(node, sp.Pow) and node.has(scale) and not node.exp.is_Integer:
+            if not node.exp.is_Rational:
+                return None
+            if node.base.subs(scale, 0) == 0:
+                denominators.append(int(node.exp.q))
+    return math.lcm(*denominators) if denominators else None
+
+
+def _cauchy_verdict(
+    expr: Any, reference: Reference, order: int, variable: Any, branch: int
+) -> tuple[bool | None, str]:
+    """:func:`_taylor_verdict` in ``variable`` (the scale, or its ``branch``-th root), whose
+    domain is the scale's domain's ``branch``-th root."""
     import mpmath
     import sympy as sp
 
-    scale, count = reference.scale, _CIRCLE_POINTS
-    if order >= count // 2 or expr.has(sp.Integral, sp.Derivative, sp.Subs):
-        return False
-    if not _analytic_at_zero(expr, scale):
-        return False
-    free = sorted(expr.free_symbols - {scale}, key=lambda s: s.name)
+    count = _CIRCLE_POINTS
+    if order >= count // 2:
+        return None, ""
+    free = sorted(expr.free_symbols - {variable}, key=lambda s: s.name)
     try:
-        function = _compiled((scale, *free), expr)
+        function = _compiled((variable, *free), expr)
     except (SyntaxError, TypeError, ValueError, NameError):
-        return False
+        return None, ""
     generator = random.Random(23)
-    low, high = reference.domain.get(scale.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
-    if not all(isinstance(sp.sympify(b), sp.Rational) for b in (low, high)):
-        return False
+    scale = reference.scale
+    bounds = reference.domain.get(scale.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
     with mpmath.workdps(3 * _DIGITS + 10):
         radius, tolerance = mpmath.mpf(1) / 100, mpmath.mpf(10) ** (-2 * _DIGITS)
-        # a_j = c_j radius**j; the term c_j s**j is at most |a_j| (s / radius)**j on the domain
-        far = max(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
-        near = min(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
+        # a_j = c_j radius**j; the term c_j t**j is at most |a_j| (t / radius)**j on the domain
+        ends = [mpmath.root(abs(mpmath.mpf(b.p) / b.q), branch) for b in map(sp.Rational, bounds)]
+        far, near = max(ends) / radius, min(ends) / radius
         roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
         real = not expr.has(sp.I)
         for _ in range(POINTS):
             values = [_random_value(generator, reference, s) for s in free]
             if not all(isinstance(q, sp.Rational) for q in values):
-                return False
+                return None, ""
             args = [mpmath.mpf(q.p) / q.q for q in values]
             try:
                 # sums[j % count] = sum_k samples[k] roots[k]**-j, all j at once
                 samples = _circle_samples(function, radius, roots, args, real)
                 sums = _fourier(samples, roots)
-                for j in range(-(count // 2), order):
-                    a = abs(sums[j % count])
-                    bound = far ** (-j) if j >= 0 else min(near, 1) ** (-j)
-                    if not mpmath.isfinite(a) or a / count > tolerance * bound:
-                        return False
+                failing = _lowest_failing(sums, order, far, near, tolerance)
+                if failing is not None and real:  # judged again on the whole circle
+                    samples = _circle_samples(function, radius, roots, args, False)
+                    sums = _fourier(samples, roots)
+                    failing = _lowest_failing(sums, order, far, near, tolerance)
             except (ArithmeticError, TypeError, ValueError, NameError, AttributeError):
-                return False
-    return True
+                return None, ""
+            if failing is None:
+                continue
+            if expr.has(sp.Float) or not _decisive(samples, sums, failing):
+                return None, ""
+            shown = ", ".join(f"{s}={q}" for s, q in zip(free, values, strict=True))
+            value = sums[failing % count] / count / radius**failing
+            if abs(mpmath.im(value)) < _CONVERGED * abs(value):  # rounding's imaginary part
+                value = mpmath.re(value)
+            power = sp.Rational(failing, branch)
+            where = f" at {shown}" if shown else ""
+            return False, f"the coefficient of {scale}**{power} is {mpmath.nstr(value, 6)}{where}"
+    return True, f"vanishes at {POINTS} random rational points"
+
+
+def _lowest_failing(sums: list[Any], order: int, far: Any, near: Any, tolerance: Any) -> Any:
+    """The lowest power j < ``order`` whose Cauchy coefficient is not below the tolerance
+    (-count/2 for one that is no number), or None."""
+    import mpmath
+
+    count = len(sums)
+    for j in range(-(count // 2), order):
+        a = abs(sums[j % count])
+        bound = far ** (-j) if j >= 0 else min(near, 1) ** (-j)
+        if not mpmath.isfinite(a):
+            return -(count // 2)
+        if a / count > tolerance * bound:
+            return j
+    return None
+
+
+# A coefficient of an exact residual (no decimal: a 20-digit Float leaves noise at 1e-20
+# that the points' tolerance forgives) is decisively not 0 when it exceeds _DECISIVE times
+# the largest sample on the circle while the coefficients about count/2 (what the
+# trapezoidal rule aliases onto the low ones) are below _CONVERGED times it: far above
+# the aliasing, the working precision's rounding and the points' relative tolerance.
+_DECISIVE, _CONVERGED = 1e-10, 1e-24
+
+
+def _decisive(samples: list[Any], sums: list[Any], power: int) -> bool:
+    import mpmath
+
+    count = len(samples)
+    peak = max(abs(v) for v in samples)
+    if not mpmath.isfinite(peak) or peak == 0:
+        return False
+    tail = max(abs(sums[j % count]) for j in range(count // 2 - 4, count // 2 + 5)) / count
+    return tail < _CONVERGED * peak and abs(sums[power % count]) / count > _DECISIVE * peak
 
 
 def _circle_samples(
@@ -373,7 +467,7 @@ def _circle_samples(
 def _fourier(samples: list[Any], roots: list[Any]) -> list[Any]:
     """The discrete Fourier transform ``X[j] = sum_k samples[k] * roots[k]**-j`` (``roots``:
     the len(samples)-th roots of unity, a power of two of them) by the radix-2 FFT: the
-    Cauchy coefficients of :func:`_taylor_vanishes` in n log n products, not n² of them."""
+    Cauchy coefficients of :func:`_cauchy_verdict` in n log n products, not n² of them."""
     count = len(samples)
     if count == 1:
         return list(samples)
