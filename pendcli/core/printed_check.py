@@ -25,12 +25,14 @@ status follows:
 
 from __future__ import annotations
 
+import itertools
 import random
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 from pendcli.core.printed import ELLIPSIS, Formula
+from pendcli.core.recent import Recent
 
 __all__ = ["Reference", "computed_status", "formula_passes", "judged"]
 
@@ -576,7 +578,12 @@ def _evaluator(expr: Any, free: list[Any]) -> Any:
     return by_mpmath
 
 
-_COMPILED: dict[tuple[Any, ...], Callable[..., Any]] = {}
+# residual -> its lambdified code; integral -> a function remembering its quadratures;
+# each integral's quadratures by point and precision: the most recent few thousand of each
+_COMPILED = Recent(4096)
+_QUADRATURES = Recent(1024)
+_QUADRATURES_EACH = 256
+_NAMES = itertools.count()  # a quadrature function's name, never reused after a forgotten one
 
 
 def _compiled(arguments: tuple[Any, ...], expr: Any) -> Callable[..., Any]:
@@ -586,14 +593,12 @@ def _compiled(arguments: tuple[Any, ...], expr: Any) -> Callable[..., Any]:
     import sympy as sp
 
     key = (arguments, expr)
-    if key not in _COMPILED:
+    function = _COMPILED.get(key)
+    if function is None:
         code = _integrals_shared(expr)
-        _COMPILED[key] = sp.lambdify(arguments, code, modules="mpmath", docstring_limit=0)
-    return _COMPILED[key]
-
-
-# definite integral -> a function of its free symbols that remembers each quadrature
-_QUADRATURES: dict[Any, Any] = {}
+        function = sp.lambdify(arguments, code, modules="mpmath", docstring_limit=0)
+        _COMPILED.put(key, function)
+    return function
 
 
 def _integrals_shared(expr: Any) -> Any:
@@ -601,9 +606,7 @@ def _integrals_shared(expr: Any) -> Any:
     runs the same mpmath quadrature lambdify would, once per point and precision: a
     residual's size, its printed and reading forms, evaluate the same integrals at the same
     random points. Nested integrals are left as they are."""
-    import mpmath
     import sympy as sp
-    from sympy.utilities.lambdify import implemented_function
 
     integrals = expr.atoms(sp.Integral)
     if not integrals or any(i.function.has(sp.Integral) for i in integrals):
@@ -611,20 +614,33 @@ def _integrals_shared(expr: Any) -> Any:
     calls = {}
     for integral in integrals:
         free = tuple(sorted(integral.free_symbols, key=lambda s: s.name))
-        if integral not in _QUADRATURES:
-            quadrature = sp.lambdify(free, integral, modules="mpmath", docstring_limit=0)
-            memo: dict[tuple[Any, ...], Any] = {}
-
-            def remembered(*args: Any, quadrature: Any = quadrature, memo: Any = memo) -> Any:
-                at = (mpmath.mp.prec, *args)
-                if at not in memo:
-                    memo[at] = quadrature(*args)
-                return memo[at]
-
-            name = f"quadrature_{len(_QUADRATURES)}"
-            _QUADRATURES[integral] = implemented_function(sp.Function(name), remembered)
-        calls[integral] = _QUADRATURES[integral](*free)
+        shared = _QUADRATURES.get(integral)
+        if shared is None:
+            shared = _remembered_quadrature(integral, free)
+            _QUADRATURES.put(integral, shared)
+        calls[integral] = shared(*free)
     return expr.xreplace(calls)
+
+
+def _remembered_quadrature(integral: Any, free: tuple[Any, ...]) -> Any:
+    """A sympy function of ``free`` whose mpmath code is ``integral``'s quadrature, each
+    (precision, point) computed once."""
+    import mpmath
+    import sympy as sp
+    from sympy.utilities.lambdify import implemented_function
+
+    quadrature = sp.lambdify(free, integral, modules="mpmath", docstring_limit=0)
+    memo = Recent(_QUADRATURES_EACH)
+
+    def remembered(*args: Any) -> Any:
+        at = (mpmath.mp.prec, *args)
+        value = memo.get(at)
+        if value is None:
+            value = quadrature(*args)
+            memo.put(at, value)
+        return value
+
+    return implemented_function(sp.Function(f"quadrature_{next(_NAMES)}"), remembered)
 
 
 def _integrals_by_quadrature(expr: Any) -> Any:
