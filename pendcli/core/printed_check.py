@@ -198,11 +198,92 @@ def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
     for s in sorted(expr.free_symbols - {reference.scale}, key=lambda s: s.name):
         low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
         point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
-    limit = sp.limit(expr.subs(point), reference.scale, 0, "+")
+    limit = _finite_limit(expr.subs(point), reference.scale)
+    if limit is None:
+        limit = sp.limit(expr.subs(point), reference.scale, 0, "+")
     shown = ", ".join(f"{k}={v}" for k, v in point.items())
     if limit.is_finite:
         return True, f"finite as {reference.scale} -> 0+ (limit {sp.N(limit, 6)} at {shown})"
     return False, f"the residual tends to {limit} as {reference.scale} -> 0+ at {shown}"
+
+
+def _finite_limit(expr: Any, scale: Any) -> Any:
+    """The limit of ``expr`` (a number but for ``scale``) as the scale tends to 0+, proved
+    finite by Cauchy's integral, or None (decides nothing; sympy's limit then judges). Each
+    log(scale**p R) is p log(scale) + log(R) (scale > 0), so that ``expr`` = P + Q log(scale)
+    with P, Q Laurent series in a root t of the scale: t**j log(t) outgrows t**j and is
+    outgrown by t**(j-1), so the sum is finite at 0+ exactly when P has no negative power
+    and Q no power up to t**0; the limit is then P's constant term."""
+    import mpmath
+    import sympy as sp
+
+    logarithm = sp.Dummy("log_scale")
+    if expr.has(sp.Integral, sp.Derivative, sp.Subs):
+        return None
+    split = expr.replace(
+        lambda e: isinstance(e, sp.log) and e.has(scale), lambda e: _log_split(e, scale, logarithm)
+    )
+    if split.has(sp.log(scale)) or sp.diff(split, logarithm, 2) != 0:
+        return None
+    rest, slope = split.subs(logarithm, 0), sp.diff(split, logarithm)
+    constants = []
+    for part, order in ((rest, 0), (slope, 1)):
+        in_root = _meromorphic_in_root(part, scale, positive=True)
+        if in_root is None or in_root[0].free_symbols - {in_root[1]}:
+            return None
+        sums = _laurent_sums(in_root[0], in_root[1])
+        if sums is None:
+            return None
+        with mpmath.workdps(3 * _DIGITS + 10):
+            one, tolerance = mpmath.mpf(1), mpmath.mpf(10) ** (-2 * _DIGITS)
+            if _lowest_failing(sums, order, one, one, tolerance) is not None:
+                return None
+            constants.append(sums[0] / len(sums))
+    value = constants[0]
+    if abs(mpmath.im(value)) > _CONVERGED * max(abs(value), 1):
+        return None
+    return sp.Float(mpmath.re(value), 3 * _DIGITS)
+
+
+def _log_split(log: Any, scale: Any, logarithm: Any) -> Any:
+    """log(scale**p R) -> p logarithm + log(R) (unchanged when R holds the scale)."""
+    import sympy as sp
+
+    power, others = sp.Integer(0), []
+    for factor in sp.Mul.make_args(log.args[0]):
+        base, exponent = factor.as_base_exp()
+        if base == scale and exponent.is_Rational:
+            power += exponent
+        elif factor.has(scale):
+            return log
+        else:
+            others.append(factor)
+    return power * logarithm + sp.log(sp.Mul(*others))
+
+
+def _laurent_sums(expr: Any, variable: Any) -> list[Any] | None:
+    """The Cauchy sums of ``expr`` (a function of ``variable`` alone) on the circle of
+    :func:`_cauchy_verdict`, the whole circle sampled (None: no number there)."""
+    import mpmath
+
+    try:
+        function = _compiled((variable,), expr)
+    except (SyntaxError, TypeError, ValueError, NameError):
+        return None
+    with mpmath.workdps(3 * _DIGITS + 10):
+        count = _CIRCLE_POINTS
+        roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
+        try:
+            sums = _fourier(_circle_samples(function, mpmath.mpf(1) / 100, roots, [], False), roots)
+        except (ArithmeticError, TypeError, ValueError, NameError, AttributeError):
+            return None
+        if not all(mpmath.isfinite(v) for v in sums):
+            return None
+        # the terms about count/2 small (no singularity near the circle but the one at 0),
+        # or all of them rounding (the expression is 0 to the working precision)
+        tail = max(abs(sums[j % count]) for j in range(count // 2 - 4, count // 2 + 5))
+        peak = max(abs(v) for v in sums)
+        return sums if tail < _CONVERGED * peak or peak < 10 ** -(3 * _DIGITS) else None
 
 
 def _decimals(expr: Any) -> set[Any]:
@@ -323,11 +404,23 @@ def _taylor_verdict(expr: Any, reference: Reference, order: int) -> tuple[bool |
         isinstance(sp.sympify(b), sp.Rational) for b in (low, high)
     ):
         return None, ""
-    if _analytic_at_zero(expr, scale):
-        return _cauchy_verdict(expr, reference, order, scale, 1)
-    branch = _branch_denominator(expr, scale)
-    if branch is None or sp.sympify(low) <= 0:
+    in_root = _meromorphic_in_root(expr, scale, positive=sp.sympify(low) > 0)
+    if in_root is None:
         return None, ""
+    variable, branch = in_root[1:]
+    return _cauchy_verdict(in_root[0], reference, branch * order, variable, branch)
+
+
+def _meromorphic_in_root(expr: Any, scale: Any, positive: bool) -> tuple[Any, Any, int] | None:
+    """(``expr`` in t, t, q) with scale = t**q (t > 0 when q > 1: a ``positive`` scale) and
+    ``expr`` in t analytic about 0 but for a pole (:func:`_analytic_at_zero`); None if not."""
+    import sympy as sp
+
+    if _analytic_at_zero(expr, scale):
+        return expr, scale, 1
+    branch = _branch_denominator(expr, scale)
+    if branch is None or not positive:
+        return None
     root = sp.Dummy("root", positive=True)  # s = root**branch over the scale's domain s > 0
     in_root = expr.subs(scale, root**branch)
     # a root's base expanded: (t**2 b (c + d/(t**2 b)))**2 is 0 * zoo at t = 0, its expansion
@@ -336,9 +429,7 @@ def _taylor_verdict(expr: Any, reference: Reference, order: int) -> tuple[bool |
         lambda e: e.is_Pow and not e.exp.is_Integer and e.base.has(root),
         lambda e: sp.expand(e.base) ** e.exp,
     )
-    if not _analytic_at_zero(in_root, root):
-        return None, ""
-    return _cauchy_verdict(in_root, reference, branch * order, root, branch)
+    return (in_root, root, branch) if _analytic_at_zero(in_root, root) else None
 
 
 def _branch_denominator(expr: Any, scale: Any) -> int | None:
