@@ -9,13 +9,14 @@ copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes whe
 rational points (to 20 digits), or simplifies to 0 where a point gives no number; with a
 ``scale`` and an ``order``, when its series in the scale vanishes below that order (an
 equation whose left side is a symbol named in ``orders`` uses that order: a summary formula
-may carry one quantity further than another; such a series is first proved numerically, its
-coefficients by Cauchy's integral about 0 at random rational points, and sympy's series is
-taken only where that proof does not go through). A bare inequality (``a > b``: a sign or a
-bound a sentence asserts) passes when its greater side less its lesser, substituted alike,
-is ≥ 0 at the points (and, strict, not 0 at all of them); a reference's ``cases`` judge a
-formula's first equations each against its own (« pour n pair », « pour n impair »). The
-status follows:
+may carry one quantity further than another; such a series is first judged numerically, its
+coefficients by Cauchy's integral about 0 at random rational points (in a root of the scale
+where it enters as s**(p/q)): proved, or refused when a coefficient below the order is far
+from 0, and sympy's series is taken only where that decides nothing). A bare inequality
+(``a > b``: a sign or a bound a sentence asserts) passes when its greater side less its
+lesser, substituted alike, is ≥ 0 at the points (and, strict, not 0 at all of them); a
+reference's ``cases`` judge a formula's first equations each against its own (« pour n
+pair », « pour n impair »). The status follows:
 
 * ``holds``: the printed form passes;
 * ``misprint``: the printed form fails and its ``reading_formula`` passes;
@@ -189,7 +190,8 @@ def _relation_passes(relation: Any, reference: Reference) -> tuple[bool, str]:
 
 
 def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
-    """``reference.bounded``: the residual's limit as the scale tends to 0+ is finite."""
+    """``reference.bounded``: the residual's limit as the scale tends to 0+ is finite (proved
+    by :func:`_finite_limit`, else sympy's limit)."""
     import sympy as sp
 
     expr = _substituted(residual, reference)
