@@ -1,6 +1,6 @@
-"""The engine's bounded memo (pendcli.core.recent, issue 23) forgets as functools.lru_cache
-does: the same keys computed anew, for a random sequence of uses, and never more kept than
-its size."""
+"""The engine's bounded memo (pendcli.core.printed_check.Recent, issue 23) forgets as
+functools.lru_cache does: the same keys computed anew, for a random sequence of uses, and
+never more kept than its size."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import random
 
 import pytest
 
-from pendcli.core.recent import Recent
+from pendcli.core.printed_check import Recent
 
 
 @pytest.mark.parametrize("size", [1, 3, 17])
