@@ -9,13 +9,14 @@ copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes whe
 rational points (to 20 digits), or simplifies to 0 where a point gives no number; with a
 ``scale`` and an ``order``, when its series in the scale vanishes below that order (an
 equation whose left side is a symbol named in ``orders`` uses that order: a summary formula
-may carry one quantity further than another; such a series is first proved numerically, its
-coefficients by Cauchy's integral about 0 at random rational points, and sympy's series is
-taken only where that proof does not go through). A bare inequality (``a > b``: a sign or a
-bound a sentence asserts) passes when its greater side less its lesser, substituted alike,
-is ≥ 0 at the points (and, strict, not 0 at all of them); a reference's ``cases`` judge a
-formula's first equations each against its own (« pour n pair », « pour n impair »). The
-status follows:
+may carry one quantity further than another; such a series is first judged numerically, its
+coefficients by Cauchy's integral about 0 at random rational points (in a root of the scale
+where it enters as s**(p/q)): proved, or refused when a coefficient below the order is far
+from 0, and sympy's series is taken only where that decides nothing). A bare inequality
+(``a > b``: a sign or a bound a sentence asserts) passes when its greater side less its
+lesser, substituted alike, is ≥ 0 at the points (and, strict, not 0 at all of them); a
+reference's ``cases`` judge a formula's first equations each against its own (« pour n
+pair », « pour n impair »). The status follows:
 
 * ``holds``: the printed form passes;
 * ``misprint``: the printed form fails and its ``reading_formula`` passes;
@@ -25,18 +26,20 @@ status follows:
 
 from __future__ import annotations
 
+import itertools
 import random
-from collections.abc import Callable, Mapping
+from collections import OrderedDict
+from collections.abc import Callable, Hashable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 from pendcli.core.printed import ELLIPSIS, Formula
 
-__all__ = ["Reference", "computed_status", "formula_passes", "judged"]
+__all__ = ["Recent", "Reference", "computed_status", "formula_passes", "judged"]
 
 POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
 _DIGITS = 20
-# samples on the circle of _taylor_vanishes: the error goes as (radius / distance to the
+# samples on the circle of _cauchy_verdict: the error goes as (radius / distance to the
 # nearest singularity)**_CIRCLE_POINTS
 _CIRCLE_POINTS = 64
 
@@ -115,8 +118,9 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
 
     expr = _substituted(residual, reference)
     if reference.scale is not None and order is not None:
-        if _taylor_vanishes(expr, reference, order):
-            return True, f"vanishes at {POINTS} random rational points"
+        proved, why = _taylor_verdict(expr, reference, order)
+        if proved is not None:
+            return proved, why
         expr = _truncated(expr, reference.scale, order)
     # The random points first: cheap, and decisive when the residual is not 0; simplify only
     # where a point gives no number. An integral is never simplified (sympy's antiderivatives
@@ -186,7 +190,8 @@ def _relation_passes(relation: Any, reference: Reference) -> tuple[bool, str]:
 
 
 def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
-    """``reference.bounded``: the residual's limit as the scale tends to 0+ is finite."""
+    """``reference.bounded``: the residual's limit as the scale tends to 0+ is finite (proved
+    by :func:`_finite_limit`, else sympy's limit)."""
     import sympy as sp
 
     expr = _substituted(residual, reference)
@@ -195,11 +200,92 @@ def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
     for s in sorted(expr.free_symbols - {reference.scale}, key=lambda s: s.name):
         low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
         point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
-    limit = sp.limit(expr.subs(point), reference.scale, 0, "+")
+    limit = _finite_limit(expr.subs(point), reference.scale)
+    if limit is None:
+        limit = sp.limit(expr.subs(point), reference.scale, 0, "+")
     shown = ", ".join(f"{k}={v}" for k, v in point.items())
     if limit.is_finite:
         return True, f"finite as {reference.scale} -> 0+ (limit {sp.N(limit, 6)} at {shown})"
     return False, f"the residual tends to {limit} as {reference.scale} -> 0+ at {shown}"
+
+
+def _finite_limit(expr: Any, scale: Any) -> Any:
+    """The limit of ``expr`` (a number but for ``scale``) as the scale tends to 0+, proved
+    finite by Cauchy's integral, or None (decides nothing; sympy's limit then judges). Each
+    log(scale**p R) is p log(scale) + log(R) (scale > 0), so that ``expr`` = P + Q log(scale)
+    with P, Q Laurent series in a root t of the scale: t**j log(t) outgrows t**j and is
+    outgrown by t**(j-1), so the sum is finite at 0+ exactly when P has no negative power
+    and Q no power up to t**0; the limit is then P's constant term."""
+    import mpmath
+    import sympy as sp
+
+    logarithm = sp.Dummy("log_scale")
+    if expr.has(sp.Integral, sp.Derivative, sp.Subs):
+        return None
+    split = expr.replace(
+        lambda e: isinstance(e, sp.log) and e.has(scale), lambda e: _log_split(e, scale, logarithm)
+    )
+    if split.has(sp.log(scale)) or sp.diff(split, logarithm, 2) != 0:
+        return None
+    rest, slope = split.subs(logarithm, 0), sp.diff(split, logarithm)
+    constants = []
+    for part, order in ((rest, 0), (slope, 1)):
+        in_root = _meromorphic_in_root(part, scale, positive=True)
+        if in_root is None or in_root[0].free_symbols - {in_root[1]}:
+            return None
+        sums = _laurent_sums(in_root[0], in_root[1])
+        if sums is None:
+            return None
+        with mpmath.workdps(3 * _DIGITS + 10):
+            one, tolerance = mpmath.mpf(1), mpmath.mpf(10) ** (-2 * _DIGITS)
+            if _lowest_failing(sums, order, one, one, tolerance) is not None:
+                return None
+            constants.append(sums[0] / len(sums))
+    value = constants[0]
+    if abs(mpmath.im(value)) > _CONVERGED * max(abs(value), 1):
+        return None
+    return sp.Float(mpmath.re(value), 3 * _DIGITS)
+
+
+def _log_split(log: Any, scale: Any, logarithm: Any) -> Any:
+    """log(scale**p R) -> p logarithm + log(R) (unchanged when R holds the scale)."""
+    import sympy as sp
+
+    power, others = sp.Integer(0), []
+    for factor in sp.Mul.make_args(log.args[0]):
+        base, exponent = factor.as_base_exp()
+        if base == scale and exponent.is_Rational:
+            power += exponent
+        elif factor.has(scale):
+            return log
+        else:
+            others.append(factor)
+    return power * logarithm + sp.log(sp.Mul(*others))
+
+
+def _laurent_sums(expr: Any, variable: Any) -> list[Any] | None:
+    """The Cauchy sums of ``expr`` (a function of ``variable`` alone) on the circle of
+    :func:`_cauchy_verdict`, the whole circle sampled (None: no number there)."""
+    import mpmath
+
+    try:
+        function = _compiled((variable,), expr)
+    except (SyntaxError, TypeError, ValueError, NameError):
+        return None
+    with mpmath.workdps(3 * _DIGITS + 10):
+        count = _CIRCLE_POINTS
+        roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
+        try:
+            sums = _fourier(_circle_samples(function, mpmath.mpf(1) / 100, roots, [], False), roots)
+        except (ArithmeticError, TypeError, ValueError, NameError, AttributeError):
+            return None
+        if not all(mpmath.isfinite(v) for v in sums):
+            return None
+        # the terms about count/2 small (no singularity near the circle but the one at 0),
+        # or all of them rounding (the expression is 0 to the working precision)
+        tail = max(abs(sums[j % count]) for j in range(count // 2 - 4, count // 2 + 5))
+        peak = max(abs(v) for v in sums)
+        return sums if tail < _CONVERGED * peak or peak < 10 ** -(3 * _DIGITS) else None
 
 
 def _decimals(expr: Any) -> set[Any]:
@@ -301,56 +387,159 @@ def _truncated(expr: Any, scale: Any, order: int) -> Any:
     return sp.series(expr, scale, 0, order).removeO()
 
 
-def _taylor_vanishes(expr: Any, reference: Reference, order: int) -> bool:
+def _taylor_verdict(expr: Any, reference: Reference, order: int) -> tuple[bool | None, str]:
     """A quick proof that the series of ``expr`` in the scale vanishes below ``order`` (its
     Laurent coefficients: sympy's series keeps a pole's terms too) at random rational values
     of the other symbols: each coefficient by Cauchy's integral on a small circle about 0
     (the trapezoidal rule, exact far beyond 20 digits for a function analytic on the circle;
     a removable singularity at 0 costs nothing), every term bounded over the scale's domain
-    by 10**-(2 * digits). False decides nothing: ``expr`` is then truncated by sympy and
-    judged at the points as before (the verdict and its message come from there); an
-    expression that may not be meromorphic at 0 is left to sympy."""
+    by 10**-(2 * digits). A scale that enters through powers s**(p/q) (a branch point at 0)
+    is s = t**q, t > 0: a Puiseux series in s is a Laurent series in t, its terms below
+    s**order those below t**(q * order). (True, why): proved; (False, why): a coefficient
+    below the order is decisively not 0 (:func:`_cauchy_verdict`); (None, ""): decides
+    nothing, ``expr`` is then truncated by sympy and judged at the points as before."""
+    import sympy as sp
+
+    scale = reference.scale
+    low, high = reference.domain.get(scale.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
+    if expr.has(sp.Integral, sp.Derivative, sp.Subs) or not all(
+        isinstance(sp.sympify(b), sp.Rational) for b in (low, high)
+    ):
+        return None, ""
+    in_root = _meromorphic_in_root(expr, scale, positive=sp.sympify(low) > 0)
+    if in_root is None:
+        return None, ""
+    variable, branch = in_root[1:]
+    return _cauchy_verdict(in_root[0], reference, branch * order, variable, branch)
+
+
+def _meromorphic_in_root(expr: Any, scale: Any, positive: bool) -> tuple[Any, Any, int] | None:
+    """(``expr`` in t, t, q) with scale = t**q (t > 0 when q > 1: a ``positive`` scale) and
+    ``expr`` in t analytic about 0 but for a pole (:func:`_analytic_at_zero`); None if not."""
+    import sympy as sp
+
+    if _analytic_at_zero(expr, scale):
+        return expr, scale, 1
+    branch = _branch_denominator(expr, scale)
+    if branch is None or not positive:
+        return None
+    root = sp.Dummy("root", positive=True)  # s = root**branch over the scale's domain s > 0
+    in_root = expr.subs(scale, root**branch)
+    # a root's base expanded: (t**2 b (c + d/(t**2 b)))**2 is 0 * zoo at t = 0, its expansion
+    # a polynomial in t whose value at 0 says whether the root branches there
+    in_root = in_root.replace(
+        lambda e: e.is_Pow and not e.exp.is_Integer and e.base.has(root),
+        lambda e: sp.expand(e.base) ** e.exp,
+    )
+    return (in_root, root, branch) if _analytic_at_zero(in_root, root) else None
+
+
+def _branch_denominator(expr: Any, scale: Any) -> int | None:
+    """The least q such that every power of ``expr`` with a base 0 at scale = 0 has an
+    exponent in (1/q)Z (None: an exponent not rational, or none fractional)."""
+    import math
+
+    import sympy as sp
+
+    denominators = []
+    for node in sp.preorder_traversal(expr):
+        if isinstance(node, sp.Pow) and node.has(scale) and not node.exp.is_Integer:
+            if not node.exp.is_Rational:
+                return None
+            if node.base.subs(scale, 0) == 0:
+                denominators.append(int(node.exp.q))
+    return math.lcm(*denominators) if denominators else None
+
+
+def _cauchy_verdict(
+    expr: Any, reference: Reference, order: int, variable: Any, branch: int
+) -> tuple[bool | None, str]:
+    """:func:`_taylor_verdict` in ``variable`` (the scale, or its ``branch``-th root), whose
+    domain is the scale's domain's ``branch``-th root."""
     import mpmath
     import sympy as sp
 
-    scale, count = reference.scale, _CIRCLE_POINTS
-    if order >= count // 2 or expr.has(sp.Integral, sp.Derivative, sp.Subs):
-        return False
-    if not _analytic_at_zero(expr, scale):
-        return False
-    free = sorted(expr.free_symbols - {scale}, key=lambda s: s.name)
+    count = _CIRCLE_POINTS
+    if order >= count // 2:
+        return None, ""
+    free = sorted(expr.free_symbols - {variable}, key=lambda s: s.name)
     try:
-        function = _compiled((scale, *free), expr)
+        function = _compiled((variable, *free), expr)
     except (SyntaxError, TypeError, ValueError, NameError):
-        return False
+        return None, ""
     generator = random.Random(23)
-    low, high = reference.domain.get(scale.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
-    if not all(isinstance(sp.sympify(b), sp.Rational) for b in (low, high)):
-        return False
+    scale = reference.scale
+    bounds = reference.domain.get(scale.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
     with mpmath.workdps(3 * _DIGITS + 10):
         radius, tolerance = mpmath.mpf(1) / 100, mpmath.mpf(10) ** (-2 * _DIGITS)
-        # a_j = c_j radius**j; the term c_j s**j is at most |a_j| (s / radius)**j on the domain
-        far = max(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
-        near = min(abs(mpmath.mpf(b.p) / b.q) for b in map(sp.Rational, (low, high))) / radius
+        # a_j = c_j radius**j; the term c_j t**j is at most |a_j| (t / radius)**j on the domain
+        ends = [mpmath.root(abs(mpmath.mpf(b.p) / b.q), branch) for b in map(sp.Rational, bounds)]
+        far, near = max(ends) / radius, min(ends) / radius
         roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
         real = not expr.has(sp.I)
         for _ in range(POINTS):
             values = [_random_value(generator, reference, s) for s in free]
             if not all(isinstance(q, sp.Rational) for q in values):
-                return False
+                return None, ""
             args = [mpmath.mpf(q.p) / q.q for q in values]
             try:
                 # sums[j % count] = sum_k samples[k] roots[k]**-j, all j at once
                 samples = _circle_samples(function, radius, roots, args, real)
                 sums = _fourier(samples, roots)
-                for j in range(-(count // 2), order):
-                    a = abs(sums[j % count])
-                    bound = far ** (-j) if j >= 0 else min(near, 1) ** (-j)
-                    if not mpmath.isfinite(a) or a / count > tolerance * bound:
-                        return False
+                failing = _lowest_failing(sums, order, far, near, tolerance)
+                if failing is not None and real:  # judged again on the whole circle
+                    samples = _circle_samples(function, radius, roots, args, False)
+                    sums = _fourier(samples, roots)
+                    failing = _lowest_failing(sums, order, far, near, tolerance)
             except (ArithmeticError, TypeError, ValueError, NameError, AttributeError):
-                return False
-    return True
+                return None, ""
+            if failing is None:
+                continue
+            if expr.has(sp.Float) or not _decisive(samples, sums, failing):
+                return None, ""
+            shown = ", ".join(f"{s}={q}" for s, q in zip(free, values, strict=True))
+            value = sums[failing % count] / count / radius**failing
+            if abs(mpmath.im(value)) < _CONVERGED * abs(value):  # rounding's imaginary part
+                value = mpmath.re(value)
+            power = sp.Rational(failing, branch)
+            where = f" at {shown}" if shown else ""
+            return False, f"the coefficient of {scale}**{power} is {mpmath.nstr(value, 6)}{where}"
+    return True, f"vanishes at {POINTS} random rational points"
+
+
+def _lowest_failing(sums: list[Any], order: int, far: Any, near: Any, tolerance: Any) -> Any:
+    """The lowest power j < ``order`` whose Cauchy coefficient is not below the tolerance
+    (-count/2 for one that is no number), or None."""
+    import mpmath
+
+    count = len(sums)
+    for j in range(-(count // 2), order):
+        a = abs(sums[j % count])
+        bound = far ** (-j) if j >= 0 else min(near, 1) ** (-j)
+        if not mpmath.isfinite(a):
+            return -(count // 2)
+        if a / count > tolerance * bound:
+            return j
+    return None
+
+
+# A coefficient of an exact residual (no decimal: a 20-digit Float leaves noise at 1e-20
+# that the points' tolerance forgives) is decisively not 0 when it exceeds _DECISIVE times
+# the largest sample on the circle while the coefficients about count/2 (what the
+# trapezoidal rule aliases onto the low ones) are below _CONVERGED times it: far above
+# the aliasing, the working precision's rounding and the points' relative tolerance.
+_DECISIVE, _CONVERGED = 1e-10, 1e-24
+
+
+def _decisive(samples: list[Any], sums: list[Any], power: int) -> bool:
+    import mpmath
+
+    count = len(samples)
+    peak = max(abs(v) for v in samples)
+    if not mpmath.isfinite(peak) or peak == 0:
+        return False
+    tail = max(abs(sums[j % count]) for j in range(count // 2 - 4, count // 2 + 5)) / count
+    return tail < _CONVERGED * peak and abs(sums[power % count]) / count > _DECISIVE * peak
 
 
 def _circle_samples(
@@ -373,7 +562,7 @@ def _circle_samples(
 def _fourier(samples: list[Any], roots: list[Any]) -> list[Any]:
     """The discrete Fourier transform ``X[j] = sum_k samples[k] * roots[k]**-j`` (``roots``:
     the len(samples)-th roots of unity, a power of two of them) by the radix-2 FFT: the
-    Cauchy coefficients of :func:`_taylor_vanishes` in n log n products, not n² of them."""
+    Cauchy coefficients of :func:`_cauchy_verdict` in n log n products, not n² of them."""
     count = len(samples)
     if count == 1:
         return list(samples)
@@ -482,7 +671,43 @@ def _evaluator(expr: Any, free: list[Any]) -> Any:
     return by_mpmath
 
 
-_COMPILED: dict[tuple[Any, ...], Callable[..., Any]] = {}
+class Recent:
+    """Key -> value for the ``size`` most recently used keys (a ``get`` or a ``put`` is a
+    use); the least recently used is forgotten first, as functools.lru_cache does: the
+    engine's compiled residuals and quadratures are shared by the rows of one command, and a
+    process that judges many ledgers (the test suite) must not keep them all for its life."""
+
+    def __init__(self, size: int) -> None:
+        if size < 1:
+            raise ValueError(f"a memo of {size} entries keeps nothing")
+        self.size = size
+        self._entries: OrderedDict[Hashable, Any] = OrderedDict()
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+    def __contains__(self, key: Hashable) -> bool:
+        return key in self._entries
+
+    def get(self, key: Hashable, default: Any = None) -> Any:
+        if key not in self._entries:
+            return default
+        self._entries.move_to_end(key)
+        return self._entries[key]
+
+    def put(self, key: Hashable, value: Any) -> None:
+        self._entries[key] = value
+        self._entries.move_to_end(key)
+        while len(self._entries) > self.size:
+            self._entries.popitem(last=False)
+
+
+# residual -> its lambdified code; integral -> a function remembering its quadratures;
+# each integral's quadratures by point and precision: the most recent few thousand of each
+_COMPILED = Recent(4096)
+_QUADRATURES = Recent(1024)
+_QUADRATURES_EACH = 256
+_NAMES = itertools.count()  # a quadrature function's name, never reused after a forgotten one
 
 
 def _compiled(arguments: tuple[Any, ...], expr: Any) -> Callable[..., Any]:
@@ -492,14 +717,12 @@ def _compiled(arguments: tuple[Any, ...], expr: Any) -> Callable[..., Any]:
     import sympy as sp
 
     key = (arguments, expr)
-    if key not in _COMPILED:
+    function = _COMPILED.get(key)
+    if function is None:
         code = _integrals_shared(expr)
-        _COMPILED[key] = sp.lambdify(arguments, code, modules="mpmath", docstring_limit=0)
-    return _COMPILED[key]
-
-
-# definite integral -> a function of its free symbols that remembers each quadrature
-_QUADRATURES: dict[Any, Any] = {}
+        function = sp.lambdify(arguments, code, modules="mpmath", docstring_limit=0)
+        _COMPILED.put(key, function)
+    return function
 
 
 def _integrals_shared(expr: Any) -> Any:
@@ -507,9 +730,7 @@ def _integrals_shared(expr: Any) -> Any:
     runs the same mpmath quadrature lambdify would, once per point and precision: a
     residual's size, its printed and reading forms, evaluate the same integrals at the same
     random points. Nested integrals are left as they are."""
-    import mpmath
     import sympy as sp
-    from sympy.utilities.lambdify import implemented_function
 
     integrals = expr.atoms(sp.Integral)
     if not integrals or any(i.function.has(sp.Integral) for i in integrals):
@@ -517,20 +738,33 @@ def _integrals_shared(expr: Any) -> Any:
     calls = {}
     for integral in integrals:
         free = tuple(sorted(integral.free_symbols, key=lambda s: s.name))
-        if integral not in _QUADRATURES:
-            quadrature = sp.lambdify(free, integral, modules="mpmath", docstring_limit=0)
-            memo: dict[tuple[Any, ...], Any] = {}
-
-            def remembered(*args: Any, quadrature: Any = quadrature, memo: Any = memo) -> Any:
-                at = (mpmath.mp.prec, *args)
-                if at not in memo:
-                    memo[at] = quadrature(*args)
-                return memo[at]
-
-            name = f"quadrature_{len(_QUADRATURES)}"
-            _QUADRATURES[integral] = implemented_function(sp.Function(name), remembered)
-        calls[integral] = _QUADRATURES[integral](*free)
+        shared = _QUADRATURES.get(integral)
+        if shared is None:
+            shared = _remembered_quadrature(integral, free)
+            _QUADRATURES.put(integral, shared)
+        calls[integral] = shared(*free)
     return expr.xreplace(calls)
+
+
+def _remembered_quadrature(integral: Any, free: tuple[Any, ...]) -> Any:
+    """A sympy function of ``free`` whose mpmath code is ``integral``'s quadrature, each
+    (precision, point) computed once."""
+    import mpmath
+    import sympy as sp
+    from sympy.utilities.lambdify import implemented_function
+
+    quadrature = sp.lambdify(free, integral, modules="mpmath", docstring_limit=0)
+    memo = Recent(_QUADRATURES_EACH)
+
+    def remembered(*args: Any) -> Any:
+        at = (mpmath.mp.prec, *args)
+        value = memo.get(at)
+        if value is None:
+            value = quadrature(*args)
+            memo.put(at, value)
+        return value
+
+    return implemented_function(sp.Function(f"quadrature_{next(_NAMES)}"), remembered)
 
 
 def _integrals_by_quadrature(expr: Any) -> Any:
