@@ -4,7 +4,9 @@
 residual); but a difference that vanishes as a rational function of its atoms (sin θ,
 √(1 − c²), L(t), ... taken as independent letters) is proved zero by ``cancel`` alone, and
 one that vanishes once sin²w = 1 − cos²w is used by a polynomial reduction, exactly and in
-milliseconds. Only what they leave goes to ``simplify``. A zero found so is a zero
+milliseconds; one whose value at a point allowed by its symbols' assumptions is, to 30
+digits, not 0 is not identically 0 (simplify's 0 would be a wrong answer). Only what they
+leave goes to ``simplify``. A zero found so is a zero
 ``simplify`` finds (the same exact identities), so no verdict changes; a difference that is
 not zero still gets the full ``simplify``. sympy is imported lazily.
 """
@@ -24,6 +26,8 @@ def vanishes_identically(difference: Any, expand_first: bool = False) -> bool:
     # first costs 1.2 s, cancelling it as it stands 0.05 s
     if sp.cancel(sp.together(difference)) == 0 or _zero_by_pythagoras(difference):
         return True
+    if nonzero_at_a_point(difference):  # what simplify cannot make 0 either, in milliseconds
+        return False
     return bool(sp.simplify(sp.expand(difference) if expand_first else difference) == 0)
 
 
@@ -53,3 +57,34 @@ def _zero_by_pythagoras(difference: Any) -> bool:
         lambda e: e.base ** (e.exp % 2) * (1 - sp.cos(e.base.args[0]) ** 2) ** (e.exp // 2),
     )
     return bool(sp.expand(reduced) == 0)
+
+
+def nonzero_at_a_point(difference: Any) -> bool:
+    """True when ``difference`` is provably not 0 at one point: every symbol, function value
+    and derivative (independent at a point, for a function left generic) a distinct positive
+    rational that its assumptions allow, and sympy's evalf (error-tracked, ``strict``) then
+    not 0. False when it cannot tell (an integral or other unevaluated atom, a pole, 0)."""
+    import sympy as sp
+    from sympy.core.function import AppliedUndef
+
+    if difference.has(sp.Integral, sp.Sum, sp.Piecewise, sp.Subs):
+        return False
+    jets = [d for d in difference.atoms(sp.Derivative) if isinstance(d.expr, AppliedUndef)]
+    atoms = [*jets, *difference.atoms(AppliedUndef), *difference.free_symbols]
+    point = {a: sp.Rational(7 + 3 * i, 11 + 2 * i) for i, a in enumerate(sorted(atoms, key=str))}
+    if any(_disallowed(value, atom) for atom, value in point.items()):
+        return False
+    try:
+        value = difference.xreplace(point)
+        if value.free_symbols or value.has(sp.Derivative, AppliedUndef, sp.zoo, sp.nan):
+            return False
+        number = sp.N(value, 30, strict=True)
+    except (sp.core.evalf.PrecisionExhausted, ValueError, TypeError, ZeroDivisionError):
+        return False
+    return bool(number.is_number and abs(number) > sp.Float(10) ** -20)
+
+
+def _disallowed(value: Any, atom: Any) -> bool:
+    """``value`` breaks one of ``atom``'s assumptions (an integer symbol, a negative one)."""
+    facts = getattr(atom, "assumptions0", {})
+    return any(getattr(value, f"is_{name}", None) is not truth for name, truth in facts.items())

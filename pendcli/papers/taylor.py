@@ -26,3 +26,18 @@ def taylor(expr: Any, var: Any, n: int) -> Any:
         terms.append(coefficient * var**j / sp.factorial(j))
         derivative = derivative.diff(var)
     return sp.Add(*terms)
+
+
+def degree_in(term: Any, var: Any) -> int:
+    """The degree in ``var`` of one expanded term (a monomial times factors free of var),
+    read off its powers: ``sp.degree`` builds a Poly over the term's whole domain, most of
+    the cost of truncating a long series term by term. A term where var is not a plain
+    power (inside a function, a negative or symbolic exponent) goes to ``sp.degree``."""
+    import sympy as sp
+
+    powers = term.as_powers_dict()
+    exponent = powers.get(var, sp.Integer(0))
+    plain = all(base == var or not base.has(var) for base in powers)
+    if plain and exponent.is_Integer and exponent >= 0:
+        return int(exponent)
+    return int(sp.degree(term, var))

@@ -138,6 +138,9 @@ def _cartesian_items(uniform: bool) -> tuple[tuple[str, Any], ...]:
     a, b, t, g, ten = _symbols("a", "b", "t", "g", "Ten")
     ax, ay, s = _bob_accelerations()
     length, theta = s["l"], s["theta"]
+    if uniform:  # the general items with the law substituted: one solve and simplify, not two
+        law = {length: a + b * t, s["dl_dt"]: b, s["d2l_dt2"]: 0}
+        return tuple((k, v.subs(law, simultaneous=True)) for k, v in _cartesian_items(False))
     x, y = length * sp.sin(theta), length * sp.cos(theta)
     # (38), (40): ẍ = −T x/l, ÿ = g − T y/l; eliminating T gives line 44
     d2theta = sp.solve(sp.expand(x * ay - y * ax - g * x), s["d2theta_dt2"])[0]
@@ -150,9 +153,6 @@ def _cartesian_items(uniform: bool) -> tuple[tuple[str, Any], ...]:
         "d2xc_dt2": -ten * x / length,
         "d2yc_dt2": g - ten * y / length,
     }
-    if uniform:
-        law = {length: a + b * t, s["dl_dt"]: b, s["d2l_dt2"]: 0}
-        exact = {k: v.subs(law, simultaneous=True) for k, v in exact.items()}
     return tuple(exact.items())
 
 

@@ -17,7 +17,7 @@ from pendcli.core.ledger import check_from_formula_rows
 from pendcli.core.ledger_check import EquationCheck
 from pendcli.core.tables import on_table_change
 from pendcli.papers.identities import simplified, vanishes_identically
-from pendcli.papers.taylor import taylor
+from pendcli.papers.taylor import degree_in, taylor
 from pendcli.papers.tisserand.references_numeric import *  # noqa: F403  (n19: lines 192-202)
 
 ORDER = 3  # series in x kept through x² (fourth order in the angles)
@@ -766,7 +766,7 @@ def _below(expr: Any, n: int) -> Any:
     import sympy as sp
 
     s = series_symbols()[0]
-    keep = [t for t in sp.Add.make_args(sp.expand(expr)) if sp.degree(t, s) < n]
+    keep = [t for t in sp.Add.make_args(sp.expand(expr)) if degree_in(t, s) < n]
     return sp.Add(*keep)
 
 
