@@ -298,7 +298,9 @@ PARSER_COMMANDS = [
 ]
 
 
-@settings(FAST, max_examples=60 * SCALE)
+# 40 examples (the file's default, was 60: 2.1 s CPU): each of the commands meets 2-3 bad values,
+# and PENDCLI_FUZZ_SCALE explores further
+@settings(FAST)
 @given(
     command=st.sampled_from(PARSER_COMMANDS),
     value=st.one_of(st.sampled_from(BAD_VALUES), st.text(max_size=6)),

@@ -8,6 +8,7 @@ import re
 import shutil
 from collections import Counter
 from collections.abc import Sequence
+from functools import cache
 from html import unescape
 from pathlib import Path
 
@@ -425,16 +426,24 @@ def _line_of(text: str, at: int) -> int:
     return text[:at].count("\n") + 1
 
 
+@cache  # three tests read the same page and marks of a paper (0.4-0.6 s for Lecornu's)
+def _page_and_marks(paper: str) -> tuple[str, str, tuple[Placement, ...]]:
+    """A paper's text, its page of the edition's rows, and the marks placed in its text."""
+    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    claims, equations = edition_rows(paper)
+    page = paper_page(paper, "", text, claims, (), equations)
+    return text, page, tuple(place_marks(text, claims, equations)[0])
+
+
 @pytest.mark.parametrize("paper", PAPERS)
 def test_every_ledger_row_is_marked_within_its_lines(paper: str) -> None:
     """On the page (its elements' data-lines) and in the text (the marks' own offsets,
     mapped to lines here, not by the code under test)."""
-    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    claims, equations = edition_rows(paper)
-    page = paper_page(paper, "", text, claims, (), equations)
+    text, page, placed = _page_and_marks(paper)
+    equations = edition_rows(paper)[1]
     assert _outside_lines(page, equations) == []
     lines = {str(r["id"]): r["lines"] for r in equations}
-    marks = [m for m in place_marks(text, claims, equations)[0] if m.row_id in lines]
+    marks = [m for m in placed if m.row_id in lines]
     for m in marks:
         first, last = lines[m.row_id]  # type: ignore[misc]
         assert first <= _line_of(text, m.start) and _line_of(text, m.end - 1) <= last, m.key
@@ -458,9 +467,8 @@ def test_the_lines_check_sees_a_row_placed_by_shifted_lines() -> None:
 
 @pytest.mark.parametrize("paper", PAPERS)
 def test_a_misprint_or_failure_has_its_reading_or_correction_beside_it_once(paper: str) -> None:
-    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
-    claims, equations = edition_rows(paper)
-    page = paper_page(paper, "", text, claims, (), equations)
+    page = _page_and_marks(paper)[1]
+    equations = edition_rows(paper)[1]
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
     notes = [
         (k, _subscripts_as_tex(b))
@@ -570,10 +578,8 @@ def test_the_wrong_term_check_sees_a_second_term_that_is_not_printed() -> None:
 def test_located_counts_only_rows_at_their_own_place(paper: str) -> None:
     """The page's counts, recounted here from the marks' offsets: a row is located when a
     mark of it within its lines is not merely the first formula or sentence there."""
-    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    text, page, marks = _page_and_marks(paper)
     claims, equations = edition_rows(paper)
-    page = paper_page(paper, "", text, claims, (), equations)
-    marks = place_marks(text, claims, equations)[0]
     for rows, name in ((claims, "printed numbers"), (equations, "equations and stated results")):
         lines = {str(r["id"]): r["lines"] for r in rows}
         inside = {m.row_id for m in marks if m.row_id in lines and m.how != "first"
