@@ -1,4 +1,4 @@
-"""The engine's bounded memo (pendcli.core.printed_check.Recent, issue 23) forgets as
+"""The engine's bounded memo (pendcli.core.recent.Recent, issue 23) forgets as
 functools.lru_cache does: the same keys computed anew, for a random sequence of uses, and
 never more kept than its size."""
 
@@ -9,7 +9,7 @@ import random
 
 import pytest
 
-from pendcli.core.printed_check import Recent
+from pendcli.core.recent import Recent
 
 
 @pytest.mark.parametrize("size", [1, 3, 17])

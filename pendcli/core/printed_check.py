@@ -28,14 +28,14 @@ from __future__ import annotations
 
 import itertools
 import random
-from collections import OrderedDict
-from collections.abc import Callable, Hashable, Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 from pendcli.core.printed import ELLIPSIS, Formula
+from pendcli.core.recent import Recent
 
-__all__ = ["Recent", "Reference", "computed_status", "formula_passes", "judged"]
+__all__ = ["Reference", "computed_status", "formula_passes", "judged"]
 
 POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
 _DIGITS = 20
@@ -669,37 +669,6 @@ def _evaluator(expr: Any, free: list[Any]) -> Any:
         return by_evalf(point)
 
     return by_mpmath
-
-
-class Recent:
-    """Key -> value for the ``size`` most recently used keys (a ``get`` or a ``put`` is a
-    use); the least recently used is forgotten first, as functools.lru_cache does: the
-    engine's compiled residuals and quadratures are shared by the rows of one command, and a
-    process that judges many ledgers (the test suite) must not keep them all for its life."""
-
-    def __init__(self, size: int) -> None:
-        if size < 1:
-            raise ValueError(f"a memo of {size} entries keeps nothing")
-        self.size = size
-        self._entries: OrderedDict[Hashable, Any] = OrderedDict()
-
-    def __len__(self) -> int:
-        return len(self._entries)
-
-    def __contains__(self, key: Hashable) -> bool:
-        return key in self._entries
-
-    def get(self, key: Hashable, default: Any = None) -> Any:
-        if key not in self._entries:
-            return default
-        self._entries.move_to_end(key)
-        return self._entries[key]
-
-    def put(self, key: Hashable, value: Any) -> None:
-        self._entries[key] = value
-        self._entries.move_to_end(key)
-        while len(self._entries) > self.size:
-            self._entries.popitem(last=False)
 
 
 # residual -> its lambdified code; integral -> a function remembering its quadratures;
