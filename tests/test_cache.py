@@ -352,3 +352,28 @@ def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
     text = "\n".join(bench.floor_lines(times, 1))
     for label in bench.FLOOR_TARGETS:
         assert f"| `{label}` | cold |" in text and f"| `{label}` | warm |" in text
+
+
+def test_another_version_of_a_library_is_another_key(tmp_path, monkeypatch):
+    """The key names every distribution installed beside the libraries pendcli computes with:
+    a library upgraded (its dist-info renamed) is a miss, never a result of the old one."""
+    import sys
+
+    from pendcli.core import cache, versions
+
+    site = tmp_path / "site"
+    (site / "fakelib").mkdir(parents=True)
+    (site / "fakelib" / "__init__.py").write_text("")
+    (site / "fakelib-1.0.dist-info").mkdir()
+    monkeypatch.syspath_prepend(str(site))
+    monkeypatch.setattr(versions, "DEPENDENCIES", ("fakelib",))
+    sys.modules.pop("fakelib", None)
+
+    def key() -> str:
+        return cache.ResultCache(tmp_path / "c", tmp_path / "tables").key("claims", {})
+
+    (tmp_path / "tables").mkdir()
+    before = key()
+    (site / "fakelib-1.0.dist-info").rename(site / "fakelib-1.1.dist-info")
+    assert key() != before
+    assert key() == key()

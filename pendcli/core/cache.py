@@ -110,12 +110,12 @@ def _installed() -> str:
     pendcli computes with (the folders holding numpy, scipy, ...), each with its version."""
     from importlib.util import find_spec
 
-    from pendcli.core.versions import LIBRARIES
+    from pendcli.core.versions import DEPENDENCIES
 
     found = [sys.version, sys.platform, os.uname().machine if hasattr(os, "uname") else ""]
     folders: dict[str, None] = {}
-    for name in LIBRARIES:
-        spec = find_spec(name) if name != "pendcli" else None  # pendcli: its files are hashed
+    for name in DEPENDENCIES:  # not pendcli: its files are hashed
+        spec = find_spec(name)
         if spec is not None and spec.origin:
             folders[str(Path(spec.origin).parent.parent)] = None
     for folder in folders:

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import platform
 
-LIBRARIES = (
-    "pendcli",
+# the libraries pendcli computes and renders with, beside pendcli itself
+DEPENDENCIES = (
     "numpy",
     "scipy",
     "mpmath",
@@ -21,6 +21,7 @@ LIBRARIES = (
     "latex2mathml",
     "grandalf",
 )
+LIBRARIES = ("pendcli", *DEPENDENCIES)
 
 
 def library_versions() -> list[tuple[str, str]]:
