@@ -228,7 +228,7 @@ def _finite_limit(expr: Any, scale: Any) -> Any:
     if split.has(sp.log(scale)) or sp.diff(split, logarithm, 2) != 0:
         return None
     rest, slope = split.subs(logarithm, 0), sp.diff(split, logarithm)
-    constants = []
+    value: Any = None
     for part, order in ((rest, 0), (slope, 1)):
         in_root = _meromorphic_in_root(part, scale, positive=True)
         if in_root is None or in_root[0].free_symbols - {in_root[1]}:
@@ -240,8 +240,8 @@ def _finite_limit(expr: Any, scale: Any) -> Any:
             one, tolerance = mpmath.mpf(1), mpmath.mpf(10) ** (-2 * _DIGITS)
             if _lowest_failing(sums, order, one, one, tolerance) is not None:
                 return None
-            constants.append(sums[0] / len(sums))
-    value = constants[0]
+            if order == 0:  # P's constant term: the limit, once Q (the next part) is proved
+                value = sums[0] / len(sums)
     if abs(mpmath.im(value)) > _CONVERGED * max(abs(value), 1):
         return None
     return sp.Float(mpmath.re(value), 3 * _DIGITS)
@@ -274,7 +274,7 @@ def _laurent_sums(expr: Any, variable: Any) -> list[Any] | None:
         return None
     with mpmath.workdps(3 * _DIGITS + 10):
         count = _CIRCLE_POINTS
-        roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
+        roots = _unit_roots(count)
         try:
             sums = _fourier(_circle_samples(function, mpmath.mpf(1) / 100, roots, [], False), roots)
         except (ArithmeticError, TypeError, ValueError, NameError, AttributeError):
@@ -283,7 +283,7 @@ def _laurent_sums(expr: Any, variable: Any) -> list[Any] | None:
             return None
         # the terms about count/2 small (no singularity near the circle but the one at 0),
         # or all of them rounding (the expression is 0 to the working precision)
-        tail = max(abs(sums[j % count]) for j in range(count // 2 - 4, count // 2 + 5))
+        tail = _aliased_tail(sums)
         peak = max(abs(v) for v in sums)
         return sums if tail < _CONVERGED * peak or peak < 10 ** -(3 * _DIGITS) else None
 
@@ -475,7 +475,7 @@ def _cauchy_verdict(
         # a_j = c_j radius**j; the term c_j t**j is at most |a_j| (t / radius)**j on the domain
         ends = [mpmath.root(abs(mpmath.mpf(b.p) / b.q), branch) for b in map(sp.Rational, bounds)]
         far, near = max(ends) / radius, min(ends) / radius
-        roots = [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
+        roots = _unit_roots(count)
         real = not expr.has(sp.I)
         for _ in range(POINTS):
             values = [_random_value(generator, reference, s) for s in free]
@@ -531,6 +531,13 @@ def _lowest_failing(sums: list[Any], order: int, far: Any, near: Any, tolerance:
 _DECISIVE, _CONVERGED = 1e-10, 1e-24
 
 
+def _aliased_tail(sums: list[Any]) -> Any:
+    """The largest Cauchy sum about count/2: what the trapezoidal rule aliases onto the low
+    coefficients, small once the circle has converged."""
+    count = len(sums)
+    return max(abs(sums[j % count]) for j in range(count // 2 - 4, count // 2 + 5))
+
+
 def _decisive(samples: list[Any], sums: list[Any], power: int) -> bool:
     import mpmath
 
@@ -538,7 +545,7 @@ def _decisive(samples: list[Any], sums: list[Any], power: int) -> bool:
     peak = max(abs(v) for v in samples)
     if not mpmath.isfinite(peak) or peak == 0:
         return False
-    tail = max(abs(sums[j % count]) for j in range(count // 2 - 4, count // 2 + 5)) / count
+    tail = _aliased_tail(sums) / count
     return tail < _CONVERGED * peak and abs(sums[power % count]) / count > _DECISIVE * peak
 
 
@@ -557,6 +564,13 @@ def _circle_samples(
     if real and mpmath.im(upper[0]) == 0 and mpmath.im(upper[half]) == 0:
         return upper + [mpmath.conj(v) for v in reversed(upper[1:half])]
     return upper + [function(radius * w, *args) for w in roots[half + 1 :]]
+
+
+def _unit_roots(count: int) -> list[Any]:
+    """The ``count``-th roots of unity at the working precision: the circle's directions."""
+    import mpmath
+
+    return [mpmath.expjpi(mpmath.mpf(2 * k) / count) for k in range(count)]
 
 
 def _fourier(samples: list[Any], roots: list[Any]) -> list[Any]:
