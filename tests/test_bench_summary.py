@@ -114,6 +114,30 @@ def test_the_ledgers_floor_is_shown_as_its_share_of_b_in_cpu() -> None:
     assert bench.LEDGERS not in "\n".join(bench.floor_lines(_floor(), 1))
 
 
+def test_the_references_floor_is_a_row_of_the_table_and_a_headline_as_its_share_of_b() -> None:
+    """Built references before any verdict: 7.0 s of CPU over B's 2.0 s is 3.50x B, in the
+    table beside the ledgers' row and among the README's headlines; absent, neither shows."""
+    times = {**_floor(), (bench.LEDGERS, ""): (2.5, 3.0), (bench.REFERENCES, ""): (6.0, 7.0)}
+    text = "\n".join(bench.floor_lines(times, 1))
+    assert f"| {bench.REFERENCES} | | 6.00 | 7.00 | CPU 3.50x B | |" in text
+    assert text.index(bench.LEDGERS) < text.index(bench.REFERENCES)
+    heads = {h.what: h for h in bench.headlines(STARTUP, times, None, None)}
+    assert (heads[bench.REFERENCES].cpu, heads[bench.REFERENCES].ratio) == (7.0, "CPU 3.50x B")
+    assert bench.REFERENCES not in {h.what for h in bench.headlines(STARTUP, _floor(), None, None)}
+
+
+def test_the_references_floor_command_builds_what_every_ledger_cites(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from pendcli.core import ledger
+    from pendcli.papers.registry import ledger_papers
+
+    built: list[str] = []
+    monkeypatch.setattr(ledger, "cited_references", lambda paper: built.append(paper.key))
+    exec(bench.BUILD_REFERENCES, {})
+    assert built == list(ledger_papers()) and len(built) == 3
+
+
 def test_the_ledgers_floor_command_reads_every_ledger(monkeypatch: pytest.MonkeyPatch) -> None:
     from pendcli.core import ledger
     from pendcli.papers.registry import ledger_papers

@@ -276,3 +276,18 @@ def test_a_stated_result_has_no_label() -> None:
 
 def test_checked_statuses_are_the_three() -> None:
     assert CHECKED_STATUSES == ("holds", "fails", "misprint")
+
+
+def test_the_cited_references_are_the_ledger_s_reference_names_each_built_once() -> None:
+    """The names read from the TOML with tomllib; a second call returns the same objects
+    (shared, not built again)."""
+    from pendcli.core.ledger import cited_references
+    from pendcli.core.printed_check import Reference
+
+    raw = tomllib.loads((TABLES / "equations" / "charbonnier.toml").read_text("utf-8"))
+    names = {e["reference"] for e in raw["equation"] if "reference" in e}
+    built = cited_references(paper("charbonnier"), TABLES)
+    assert set(built) == names and len(names) > 5
+    assert all(isinstance(r, Reference) for r in built.values())
+    again = cited_references(paper("charbonnier"), TABLES)
+    assert all(again[name] is built[name] for name in names)

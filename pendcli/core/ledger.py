@@ -50,6 +50,7 @@ __all__ = [
     "LedgerRow",
     "check_from_formula_rows",
     "check_module",
+    "cited_references",
     "coverage",
     "equation_rows",
     "evaluate",
@@ -491,6 +492,17 @@ def _reference(checks: ModuleType | None, paper: str, name: str, tables: str) ->
         raise PendcliError(f"pendcli.papers.{paper}.equations has no {name!r}")
     result: Reference = function()
     return result
+
+
+def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Reference]:
+    """Every reference the paper's ledger cites (``reference = "…"``), by name, each built once
+    and shared as :func:`row_printed_status` shares it: what a cold run pays before its first
+    verdict, the author's model done exactly."""
+    from pendcli.core.tables import tables_dir
+
+    checks = check_module(paper)
+    names = dict.fromkeys(r.reference for r in load_ledger(paper.key, root).rows if r.reference)
+    return {name: _reference(checks, paper.key, name, str(tables_dir())) for name in names}
 
 
 def _clear_reference_caches() -> None:
