@@ -225,18 +225,35 @@ def reproduce_all(
     table) are read from it when stored, else computed and stored; without one (the library's
     default, and `pendcli check`'s) everything is computed.
     """
-    from pendcli.core.workers import ForkedWorkers, job_count
-
     wanted = _wanted(keys, formulas, equations, stability)
     stored = _cached(cache, wanted, keys)
     steps = _steps(keys, formulas, equations, stability, stored)
+    computed = _computed(steps, keys, stored, quiet, jobs)
+    if cache is not None:
+        for item, value in computed.items():
+            _store_in_cache(cache, item, value, keys)
+    return _result(keys, wanted, {**stored, **computed})
+
+
+def _computed(
+    steps: list[Step],
+    keys: tuple[str, ...],
+    stored: dict[Wanted, Any],
+    quiet: bool,
+    jobs: int | None,
+    title: str = "reproducing",
+) -> dict[Wanted, Any]:
+    """The steps run, shared by this process and the forked workers (reproduce_all), and
+    gathered into one value per cached unit: a ledger's parts back in its order."""
+    from pendcli.core.workers import ForkedWorkers, job_count
+
     workers = job_count(jobs, len(steps)) - 1
     if workers:
         _preload(steps, keys)
     order = _costliest_first(steps)
     with contextlib.ExitStack() as lent:
         _lend_formula_rows(lent, stored, steps)
-        with ForkedWorkers(workers) as pool, _progress(quiet, len(steps)) as advance:
+        with ForkedWorkers(workers) as pool, _progress(quiet, len(steps), title) as advance:
             run = functools.partial(_run_step, papers=keys)
             values = pool.share(order, run, lambda step, _: advance(f"{step[0]}: {step[1]}", 1))
     by_step = dict(zip(order, values, strict=True))
@@ -248,10 +265,7 @@ def reproduce_all(
         computed[key, "equations"] = [
             row for _, rows in sorted(parts, key=lambda p: p[0]) for row in rows
         ]
-    if cache is not None:
-        for item, value in computed.items():
-            _store_in_cache(cache, item, value, keys)
-    return _result(keys, wanted, {**stored, **computed})
+    return computed
 
 
 # (paper key or "all", what): one cached unit, "claims", "formulas", "equations" (a whole
@@ -346,21 +360,24 @@ def _store_in_cache(cache: ResultCache, item: Wanted, value: Any, keys: tuple[st
     cache.put(item[1], _params(item, keys), encoded)
 
 
-def ledger_rows(keys: tuple[str, ...], cache: ResultCache | None = None) -> list[EquationRow]:
+def ledger_rows(
+    keys: tuple[str, ...],
+    cache: ResultCache | None = None,
+    quiet: bool = True,
+    jobs: int | None = None,
+) -> list[EquationRow]:
     """The equation ledgers of the papers ``keys`` (`pendcli equations`), each read from
-    ``cache`` when stored, else computed (and stored)."""
-    from pendcli.papers.registry import equation_rows
-
+    ``cache`` when stored, else computed (and stored): each ledger's two halves shared by this
+    process and a forked worker, as in :func:`reproduce_all` (``jobs=1``: all here)."""
     wanted = [(k, "equations") for k in keys]
     stored = _cached(cache, wanted, keys)
-    rows: list[EquationRow] = []
-    for item in wanted:
-        if item not in stored:
-            stored[item] = equation_rows([item[0]])
-            if cache is not None:
-                _store_in_cache(cache, item, stored[item], keys)
-        rows += stored[item]
-    return rows
+    steps = _steps(keys, False, True, False, stored, claims=False)
+    computed = _computed(steps, keys, stored, quiet, jobs, "checking every equation (sympy)")
+    if cache is not None:
+        for item, value in computed.items():
+            _store_in_cache(cache, item, value, keys)
+    found = {**stored, **computed}
+    return [row for item in wanted for row in found[item]]
 
 
 def _result(
@@ -381,12 +398,13 @@ def _steps(
     equations: bool,
     stability: bool,
     stored: dict[Wanted, Any] | None = None,
+    claims: bool = True,
 ) -> list[Step]:
     """The steps of a run, for what is not ``stored``. The ledger is cut in two halves that
     two processes can share; the first goes with the formula checks, whose rows it re-reads,
     so they are computed once (stored formula rows are lent to it instead)."""
     have = stored or {}
-    steps = [(k, "claims") for k in keys if (k, "claims") not in have]
+    steps = [(k, "claims") for k in keys if claims and (k, "claims") not in have]
     for k in keys:
         need_formulas = formulas and (k, "formulas") not in have
         need_ledger = equations and (k, "equations") not in have
@@ -402,7 +420,9 @@ def _steps(
 
 
 @contextmanager
-def _progress(quiet: bool, total: int) -> Iterator[Callable[[str, int], None]]:
+def _progress(
+    quiet: bool, total: int, title: str = "reproducing"
+) -> Iterator[Callable[[str, int], None]]:
     """A progress bar on stderr, only on a terminal and when not quiet (rich loads only then)."""
     if quiet or not sys.stderr.isatty():
         yield lambda _description, _steps: None
@@ -412,7 +432,7 @@ def _progress(quiet: bool, total: int) -> Iterator[Callable[[str, int], None]]:
     from pendcli.core.console import console
 
     with Progress(console=console(stderr=True), transient=True) as progress:
-        task = progress.add_task("reproducing", total=total)
+        task = progress.add_task(title, total=total)
         yield lambda description, steps: progress.update(
             task, description=description, advance=steps
         )

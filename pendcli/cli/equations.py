@@ -45,6 +45,7 @@ def equations(
     cache: CacheOption = True,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
+    from pendcli.core.console import is_quiet
     from pendcli.core.ledger import coverage
     from pendcli.core.vocabulary import STATUSES
     from pendcli.papers.registry import resolve_papers
@@ -54,10 +55,12 @@ def equations(
 
     if status is not None and status not in STATUSES:
         raise bad_value("--status", status, f"one of {', '.join(STATUSES)}")
-    with result_cache(cache) as stored, busy("checking every equation (sympy, ODEs)"):
-        rows = ledger_rows(resolve_papers(paper), stored)
-        counts = coverage(rows)
-        texts = {p: _text_coverage(stored, p) for p in counts}
+    with result_cache(cache) as stored:
+        # a progress bar of the ledgers' halves on a terminal (the workers fork before it)
+        rows = ledger_rows(resolve_papers(paper), stored, quiet=is_quiet())
+        with busy("reading the texts' display formulas"):
+            counts = coverage(rows)
+            texts = {p: _text_coverage(stored, p) for p in counts}
     shown = [r.as_dict() for r in rows if status is None or r.status == status]
     compact = fmt is OutputFormat.table and not notes
     columns = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
