@@ -81,8 +81,8 @@ def test_equations_command_lists_each_label_and_filters_by_status(monkeypatch, s
     assert_clean_error(*invoke("equations", "--status", "wrong")[::2])
 
 
-def test_ledger_halves_in_two_processes_give_the_ledger_in_order():
-    # reproduce cuts each ledger in two halves run in two processes; the rows must come back
+def test_ledger_parts_in_two_processes_give_the_ledger_in_order():
+    # reproduce cuts each ledger in parts run in two processes; the rows must come back
     # whole and in the ledger's order, equal to one direct evaluation.
     from pendcli.papers.registry import equation_rows
     from pendcli.reproduce import reproduce_all

@@ -163,24 +163,26 @@ def test_killing_reproduce_leaves_no_worker(tmp_path: Path) -> None:
                 os.kill(pid, signal.SIGKILL)
 
 
-def test_equations_shares_each_ledger_s_halves_and_gives_them_back_in_ledger_order(
+def test_equations_shares_each_ledger_s_parts_and_gives_them_back_in_ledger_order(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    """`pendcli equations` (reproduce.ledger_rows): each ledger cut in two halves, taken by
-    this process and a forked worker; the rows come back paper by paper, half by half,
-    whichever process computed them, and in one process the same list."""
+    """`pendcli equations` (reproduce.ledger_rows): each ledger cut in LEDGER_PARTS parts,
+    taken by this process and a forked worker; the rows come back paper by paper, part by
+    part, whichever process computed them, and in one process the same list."""
     from pendcli.papers import registry
-    from pendcli.reproduce import ledger_rows
+    from pendcli.reproduce import LEDGER_PARTS, ledger_rows
 
     def fake_rows(keys: list[str], part: tuple[int, int] = (0, 1)) -> list[object]:
-        time.sleep(0.2)  # long enough that the worker takes a half before this process ends
+        time.sleep(0.1)  # long enough that the worker takes a part before this process ends
         return [(keys[0], part, os.getpid())]
 
     monkeypatch.setattr(registry, "equation_rows", fake_rows)
     keys = ("tisserand", "lecornu")
     shared = ledger_rows(keys, jobs=2)
-    assert [(k, p) for k, p, _ in shared] == [(k, (i, 2)) for k in keys for i in (0, 1)]
-    assert {pid for *_, pid in shared} - {os.getpid()}  # a half computed by the worker
+    assert [(k, p) for k, p, _ in shared] == [
+        (k, (i, LEDGER_PARTS)) for k in keys for i in range(LEDGER_PARTS)
+    ]
+    assert {pid for *_, pid in shared} - {os.getpid()}  # a part computed by the worker
     alone = ledger_rows(keys, jobs=1)
     assert [(k, p) for k, p, _ in alone] == [(k, p) for k, p, _ in shared]
     assert {pid for *_, pid in alone} == {os.getpid()}

@@ -56,7 +56,7 @@ def equations(
     if status is not None and status not in STATUSES:
         raise bad_value("--status", status, f"one of {', '.join(STATUSES)}")
     with result_cache(cache) as stored:
-        # a progress bar of the ledgers' halves on a terminal (the workers fork before it)
+        # a progress bar of the ledgers' parts on a terminal (the workers fork before it)
         rows = ledger_rows(resolve_papers(paper), stored, quiet=is_quiet())
         with busy("reading the texts' display formulas"):
             counts = coverage(rows)
