@@ -164,7 +164,7 @@ def test_killing_reproduce_leaves_no_worker(tmp_path: Path) -> None:
 
 
 def test_equations_shares_each_ledger_s_parts_and_gives_them_back_in_ledger_order(
-    monkeypatch: pytest.MonkeyPatch,
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
     """`pendcli equations` (reproduce.ledger_rows): each ledger cut in LEDGER_PARTS parts,
     taken by this process and a forked worker; the rows come back paper by paper, part by
@@ -172,8 +172,16 @@ def test_equations_shares_each_ledger_s_parts_and_gives_them_back_in_ledger_orde
     from pendcli.papers import registry
     from pendcli.reproduce import LEDGER_PARTS, ledger_rows
 
+    parent, taken = os.getpid(), tmp_path / "a worker took a part"
+    # this process waits for the worker to take a part, however loaded the machine; a hang
+    # guard of 60 s in all: with no worker the assertion below then fails
+    wait_until = time.monotonic() + 60
+
     def fake_rows(keys: list[str], part: tuple[int, int] = (0, 1)) -> list[object]:
-        time.sleep(0.1)  # long enough that the worker takes a part before this process ends
+        if os.getpid() != parent:
+            taken.touch()
+        while os.getpid() == parent and not taken.exists() and time.monotonic() < wait_until:
+            time.sleep(0.01)
         return [(keys[0], part, os.getpid())]
 
     monkeypatch.setattr(registry, "equation_rows", fake_rows)
