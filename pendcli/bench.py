@@ -97,7 +97,7 @@ LEDGERS = "B, then the three ledgers read (every printed formula parsed)"
 # exactly, which every verdict on a printed form compares with. Above 2x B, no verdict
 # engine that builds these references in sympy can meet the 2x target cold.
 REFERENCES = "B, the ledgers read, then every cited reference built (once per name)"
-# the rows shown as a share of B's CPU: what a cold `equations` run pays before its verdicts
+# the rows shown as a share of B's CPU: what a cold `equations` run pays besides its verdicts
 PREFIXES = (LEDGERS, REFERENCES)
 FLOOR_TARGETS: dict[str, tuple[str, str, float]] = {
     "pendcli equations --format json": (FLOOR, "CPU", 2.0),
@@ -708,7 +708,7 @@ def headlines(
                  None, f"wall {repro_r:.2f}x the scipy import", met(repro_r, REPRODUCE_TARGET)),
     ]  # fmt: skip
     if floor is not None and (REFERENCES, "") in floor:
-        # what a cold `equations` pays before its first verdict, against its 2x target
+        # what a cold `equations` pays besides its verdicts, against its 2x target
         wall, cpu = floor[REFERENCES, ""]
         share = cpu / floor[FLOOR, ""][1]
         heads.append(Headline(REFERENCES, wall, cpu, f"CPU {share:.2f}x B", ""))

@@ -115,7 +115,7 @@ def test_the_ledgers_floor_is_shown_as_its_share_of_b_in_cpu() -> None:
 
 
 def test_the_references_floor_is_a_row_of_the_table_and_a_headline_as_its_share_of_b() -> None:
-    """Built references before any verdict: 7.0 s of CPU over B's 2.0 s is 3.50x B, in the
+    """Built references, without a verdict: 7.0 s of CPU over B's 2.0 s is 3.50x B, in the
     table beside the ledgers' row and among the README's headlines; absent, neither shows."""
     times = {**_floor(), (bench.LEDGERS, ""): (2.5, 3.0), (bench.REFERENCES, ""): (6.0, 7.0)}
     text = "\n".join(bench.floor_lines(times, 1))

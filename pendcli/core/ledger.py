@@ -496,8 +496,8 @@ def _reference(checks: ModuleType | None, paper: str, name: str, tables: str) ->
 
 def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Reference]:
     """Every reference the paper's ledger cites (``reference = "…"``), by name, each built once
-    and shared as :func:`row_printed_status` shares it: what a cold run pays before its first
-    verdict, the author's model done exactly."""
+    and shared as :func:`row_printed_status` shares it: what a cold run pays besides its
+    verdicts, the author's model done exactly."""
     from pendcli.core.tables import tables_dir
 
     checks = check_module(paper)
