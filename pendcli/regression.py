@@ -276,9 +276,12 @@ def run_check(
         # one; a lock file only a reader made would be left behind by an interrupt
         tables = kept_within_tolerance(folder, tables)  # noise below the check stays out
         changes = changed_cells(folder, tables)
-        removed = _rewrite(folder, tables)
+        # a set that holds these bytes already is left as it is (no swap: its files keep their
+        # times, so make and a watcher see no change where there is none)
+        same = _holds_already(folder, tables)
+        removed = [] if same else _rewrite(folder, tables)
         if not quiet:
-            _print_changes(out, changes, folder, len(tables))
+            _print_changes(out, changes, folder, 0 if same else len(tables))
             if removed:
                 out.print(
                     f"removed {len(removed)} table(s) no longer produced: {', '.join(removed)}"
@@ -306,6 +309,16 @@ def _load_ledgers(root: Path | None) -> None:
 
     for key in ledger_papers():
         load_ledger(key, root)
+
+
+def _holds_already(folder: Path, tables: dict[str, str]) -> bool:
+    """Whether ``folder`` holds exactly ``tables``: the same tables, byte for byte, no other."""
+    try:
+        if {p.name for p in folder.glob("*.csv")} != set(tables):
+            return False
+        return all((folder / n).read_bytes() == t.encode("utf-8") for n, t in tables.items())
+    except OSError:
+        return False
 
 
 def _lock_file(folder: Path) -> Path:
@@ -440,4 +453,7 @@ def _print_changes(out: Console, changes: list[Drift], folder: Path, count: int)
         _by_table(out, drift_rows(changes), keys, f"check --update: {len(changes)} change(s)")
     else:
         out.print("no value changed")
-    out.print(f"rewrote {count} tables in {folder}")
+    if count:
+        out.print(f"rewrote {count} tables in {folder}")
+    else:
+        out.print(f"no table rewritten: {folder} holds these bytes already")

@@ -66,6 +66,8 @@ SLOW_FAMILIES = {
     "tests/test_charbonnier_extremes.py::test_quad_domain_is_measured": "a grid of quadratures",
     "tests/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
     "tests/test_summary.py::test_ledger_parts_*": "the whole ledger, in two processes",
+    "tests/test_regression.py::test_check_update_leaves_*": "two whole `check --update` "
+    "regenerations (3 s of CPU alone)",
     "tests/test_equations_tisserand.py::test_resals_rate_*": "two ODE integrations of the "
     "apsidal motion and the series of the motion to fifth order",
     "tests/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "

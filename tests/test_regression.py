@@ -193,3 +193,37 @@ def test_check_update_keeps_what_moved_only_within_the_tolerance(tmp_path) -> No
     assert kept[1] == committed.splitlines()[1]  # the noise is not recorded
     assert kept[2] == real.splitlines()[2] != committed.splitlines()[2]  # the change is
     assert kept[3:] == committed.splitlines()[3:]
+
+
+def test_check_update_leaves_a_set_that_holds_its_bytes_as_it_is(tmp_path, monkeypatch, capsys):
+    """Untouched, `check --update` swaps nothing: the folder and each file keep their inode and
+    time, and it says so; with one committed cell moved beyond its tolerance it rewrites the
+    set, and that cell is the regenerated one again."""
+    from pendcli.core.tables import clear_table_cache, tables_dir
+    from pendcli.regression import run_check
+
+    shutil.copytree(tables_dir(), tmp_path / "tables")
+    monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
+    monkeypatch.setenv("COLUMNS", "200")
+    folder = tmp_path / "tables" / "regenerated"
+    clear_table_cache()
+
+    def stamps() -> dict[str, tuple[int, int]]:
+        paths = [folder, *folder.glob("*.csv")]
+        return {p.name: (p.stat().st_ino, p.stat().st_mtime_ns) for p in paths}
+
+    try:
+        before = stamps()
+        assert run_check(update=True) == 0
+        assert "no table rewritten" in capsys.readouterr().out
+        assert stamps() == before
+        path = folder / "lecornu-formulas.csv"
+        committed = path.read_text("utf-8")
+        path.write_text(_moved(committed, 1, "observed_order", 0.5), "utf-8")
+        clear_table_cache()
+        assert run_check(update=True) == 0
+        assert f"rewrote {len(before) - 1} tables" in capsys.readouterr().out
+        assert stamps()[folder.name][0] != before[folder.name][0]  # the set swapped
+        assert path.read_text("utf-8") == committed
+    finally:
+        clear_table_cache()
