@@ -18,7 +18,7 @@ STARTUP = {
 
 
 def _floor() -> bench.FloorTimes:
-    times: bench.FloorTimes = {(bench.FLOOR, ""): (1.0, 2.0), (bench.SCIPY, ""): (0.4, 0.4)}
+    times: bench.FloorTimes = {(bench.FLOOR, ""): (1.0, 2.0)}
     for label in bench.FLOOR_TARGETS:
         times[label, "cold"] = (9.0, 30.0)
         times[label, "warm"] = (0.5, 0.25)

@@ -341,12 +341,11 @@ def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
     monkeypatch.setattr(
         bench,
         "_floor_commands",
-        lambda folder: dict.fromkeys((bench.FLOOR, bench.SCIPY, *bench.FLOOR_TARGETS), quick),
+        lambda folder: dict.fromkeys((bench.FLOOR, *bench.FLOOR_TARGETS), quick),
     )
     times = bench.floor_times(runs=1)
     assert set(times) == {
         (bench.FLOOR, ""),
-        (bench.SCIPY, ""),
         *((label, mode) for label in bench.FLOOR_TARGETS for mode in ("cold", "warm")),
     }
     text = "\n".join(bench.floor_lines(times, 1))
