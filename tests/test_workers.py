@@ -121,6 +121,27 @@ def test_job_count(monkeypatch: pytest.MonkeyPatch) -> None:
     assert job_count(None, 3) == 3  # never more processes than tasks
     assert job_count(2, 5) == 2
     assert job_count(0, 5) == 1
+    monkeypatch.setenv("PENDCLI_JOBS", "")
+    assert job_count(None, 5) == min(2, os.cpu_count() or 1)  # unset or empty: the default
+
+
+@pytest.mark.parametrize("value", ["abc", "0", "-1", "2.5"])
+def test_a_bad_process_count_is_one_line_naming_the_variable_and_the_range(
+    value: str, tmp_path: Path
+) -> None:
+    """Through the real CLI: one line, exit 2, no traceback (it used to run with the default)."""
+    env = {**os.environ, "PENDCLI_JOBS": value, "PENDCLI_CACHE": str(tmp_path)}
+    done = subprocess.run(
+        [sys.executable, "-m", "pendcli", "equations", "-p", "tisserand", "-f", "json"],
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 2 and done.stdout == ""
+    assert done.stderr.strip().splitlines() == [
+        f"pendcli: error: PENDCLI_JOBS: {value!r} is not valid; expected a whole number of "
+        "processes, 1 or more"
+    ]
 
 
 def children(parent: int) -> list[int]:

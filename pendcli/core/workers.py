@@ -30,15 +30,21 @@ _NEXT: Any = None  # in a worker: the _Counter of the next item to take (see sha
 
 
 def job_count(requested: int | None, tasks: int) -> int:
-    """Processes to use for ``tasks`` items: ``requested``, else ``$PENDCLI_JOBS``, else up to
-    2 (this project's machines have two cores); 1 where ``fork`` is not available."""
+    """Processes to use for ``tasks`` items: ``requested``, else ``$PENDCLI_JOBS`` (a whole
+    number, 1 or more; anything else is refused), else up to 2 (this project's machines have
+    two cores); 1 where ``fork`` is not available."""
     import multiprocessing
 
     if "fork" not in multiprocessing.get_all_start_methods():
         return 1
     if requested is None:
-        env = os.environ.get("PENDCLI_JOBS", "")
-        requested = int(env) if env.isdigit() else min(2, os.cpu_count() or 1)
+        env = os.environ.get("PENDCLI_JOBS", "").strip()
+        if env and not (env.isdigit() and int(env) >= 1):
+            # a typo here used to be ignored silently: the run took the default instead
+            from pendcli.core.errors import invalid_value
+
+            raise invalid_value("PENDCLI_JOBS", env, "a whole number of processes, 1 or more")
+        requested = int(env) if env else min(2, os.cpu_count() or 1)
     return max(1, min(requested, tasks))
 
 
