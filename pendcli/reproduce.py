@@ -229,9 +229,7 @@ def reproduce_all(
     stored = _cached(cache, wanted, keys)
     steps = _steps(keys, formulas, equations, stability, stored)
     computed = _computed(steps, keys, stored, quiet, jobs)
-    if cache is not None:
-        for item, value in computed.items():
-            _store_in_cache(cache, item, value, keys)
+    _store_all(cache, computed, keys)
     return _result(keys, wanted, {**stored, **computed})
 
 
@@ -350,6 +348,15 @@ def _decoded(what: str, value: Any) -> Any:
     return value
 
 
+def _store_all(
+    cache: ResultCache | None, computed: dict[Wanted, Any], keys: tuple[str, ...]
+) -> None:
+    """Each computed unit into ``cache`` (none: nothing stored)."""
+    if cache is not None:
+        for item, value in computed.items():
+            _store_in_cache(cache, item, value, keys)
+
+
 def _store_in_cache(cache: ResultCache, item: Wanted, value: Any, keys: tuple[str, ...]) -> None:
     from pendcli.core.cache import rows_to_json
 
@@ -372,11 +379,10 @@ def ledger_rows(
     here)."""
     wanted = [(k, "equations") for k in keys]
     stored = _cached(cache, wanted, keys)
-    steps = _steps(keys, False, True, False, stored, claims=False)
+    steps = _steps(keys, formulas=False, equations=True, stability=False, stored=stored,
+                   claims=False)  # fmt: skip
     computed = _computed(steps, keys, stored, quiet, jobs, "checking every equation (sympy)")
-    if cache is not None:
-        for item, value in computed.items():
-            _store_in_cache(cache, item, value, keys)
+    _store_all(cache, computed, keys)
     found = {**stored, **computed}
     return [row for item in wanted for row in found[item]]
 
