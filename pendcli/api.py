@@ -134,5 +134,5 @@ def check(tables: str | Path | None = None) -> list[Drift]:
     from pendcli.reproduce import reproduce_all
 
     folder = (Path(tables) if tables is not None else tables_dir()).resolve() / "regenerated"
-    result = reproduce_all(PAPERS, formulas=True, quiet=True, jobs=1)
+    result = reproduce_all(PAPERS, formulas=True, equations=True, quiet=True, jobs=1)
     return find_drifts(folder, regenerated_tables(result))

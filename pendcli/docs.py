@@ -24,11 +24,11 @@ if TYPE_CHECKING:
 __all__ = ["SECTIONS", "ledger_section", "main", "sample_section", "schema_section", "splice"]
 
 
-def _reproduce_all() -> ReproduceResult:
+def _reproduce_all(equations: bool = False) -> ReproduceResult:
     from pendcli.papers.registry import PAPERS
     from pendcli.reproduce import reproduce_all
 
-    return reproduce_all(PAPERS, formulas=True, quiet=True)
+    return reproduce_all(PAPERS, formulas=True, equations=equations, quiet=True)
 
 
 def sample_section(result: ReproduceResult | None = None) -> str:
@@ -133,9 +133,13 @@ def main(argv: list[str]) -> int:
     ``--tables``: with the committed tables regenerated from the same run, all written as one
     set (``make regen``)."""
     readme = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
+    from dataclasses import replace
+
     from pendcli.core.tables import read_table_text
 
-    result = _reproduce_all()
+    # the ledger only for the committed tables; the README's sections show claims and formulas
+    full = _reproduce_all(equations="--tables" in argv)
+    result = replace(full, equations={})
     makers = {**SECTIONS, "sample": lambda: sample_section(result)}  # one run for all
     old: dict[Path, str] = {}
     new: dict[Path, str] = {}
@@ -153,7 +157,7 @@ def main(argv: list[str]) -> int:
     if "--tables" in argv:
         from pendcli.regression import regenerated_tables, rewrite_with
 
-        tables = regenerated_tables(result)
+        tables = regenerated_tables(full)
         removed = rewrite_with(tables, new)
         gone = f"; removed {', '.join(removed)}" if removed else ""
         names = ", ".join(str(p) for p in new)

@@ -1,11 +1,13 @@
 """The CI regression of tables: regenerate everything, compare with the committed CSVs.
 
-The committed tables live in ``tables/regenerated/``, one CSV per table: ``<paper>-claims.csv``
-and ``<paper>-formulas.csv``. :func:`run_check` recomputes them and fails (exit 1) on
+The committed tables live in ``tables/regenerated/``, one CSV per table: ``<paper>-claims.csv``,
+``<paper>-formulas.csv`` and, for a paper with an equation ledger, ``<paper>-equations.csv``
+(each ledger row's status, the dimensions of its printed form, the order it observes).
+:func:`run_check` recomputes them and fails (exit 1) on
 
-* a claim or formula added or removed,
+* a claim, formula or ledger row added or removed,
 * a changed published string (the printed value in ``tables/published`` was edited),
-* a changed verdict,
+* a changed verdict or ledger status (or the dimensions of a printed form, or its label or lines),
 * a numeric column that moved beyond its tolerance (:data:`TOLERANCES`, explicit per column).
 
 ``--update`` rewrites the committed tables instead. Tolerances are relative for values and
@@ -58,6 +60,7 @@ CLAIM_COLUMNS = (
     "from",
 )
 FORMULA_COLUMNS = ("id", "source", "claimed_order", "observed_order", "verdict", "cause", "from")
+EQUATION_COLUMNS = ("id", "equation", "lines", "status", "dimensions", "observed_order")
 
 # column -> (kind, tolerance). "rel": |now - then| <= tol * max(|then|, tiny);
 # "abs": |now - then| <= tol; "same": must be identical text.
@@ -68,6 +71,10 @@ TOLERANCES: dict[str, tuple[str, float]] = {
     "verdict": ("same", 0.0),
     "cause": ("same", 0.0),  # why a row disagrees, and the rows it inherits from
     "from": ("same", 0.0),
+    "equation": ("same", 0.0),  # a ledger row's label as printed, and where it is printed
+    "lines": ("same", 0.0),
+    "status": ("same", 0.0),  # the ledger's computed status, and its printed form's dimensions
+    "dimensions": ("same", 0.0),
     "recomputed": ("rel", 1e-9),  # closed forms, special functions: last-bit noise only
     "exact": ("rel", 1e-7),  # fuller models (quadrature, ODE at tight tolerance)
     "abs_diff": ("abs", 1e-9),
@@ -104,13 +111,27 @@ def _formula_rows(result: ReproduceResult, key: str) -> list[dict[str, object]]:
     return [_cells(r.as_dict(), FORMULA_COLUMNS) for r in result.formulas.get(key, [])]
 
 
+def _equation_rows(result: ReproduceResult, key: str) -> list[dict[str, object]]:
+    out = []
+    for row in result.equations.get(key, []):
+        first, last = row.lines if row.lines is not None else ("", "")
+        cells = {k: row.as_dict()[k] for k in EQUATION_COLUMNS if k != "lines"}
+        cells["lines"] = f"{first}-{last}" if row.lines is not None else ""
+        cells["dimensions"] = row.dimensions or ""
+        out.append(cells)
+    return out
+
+
 def regenerated_tables(result: ReproduceResult) -> dict[str, str]:
-    """File name -> CSV text for every regenerated table of a reproduce result."""
+    """File name -> CSV text for every regenerated table of a reproduce result (the ledger's
+    table only where the result holds the ledger: ``reproduce_all(..., equations=True)``)."""
     out: dict[str, str] = {}
     for key in result.papers:
         out[f"{key}-claims.csv"] = to_csv(_claim_rows(result, key), CLAIM_COLUMNS)
         if result.formulas.get(key):
             out[f"{key}-formulas.csv"] = to_csv(_formula_rows(result, key), FORMULA_COLUMNS)
+        if result.equations.get(key):
+            out[f"{key}-equations.csv"] = to_csv(_equation_rows(result, key), EQUATION_COLUMNS)
     return out
 
 
@@ -120,6 +141,8 @@ def expected_columns(name: str) -> tuple[str, ...] | None:
         return CLAIM_COLUMNS
     if name.endswith("-formulas.csv"):
         return FORMULA_COLUMNS
+    if name.endswith("-equations.csv"):
+        return EQUATION_COLUMNS
     return None
 
 
@@ -266,7 +289,7 @@ def run_check(
 
     folder = (root or tables_dir()).resolve() / "regenerated"
     _load_ledgers(root)
-    result = reproduce_all(keys(), formulas=True, quiet=quiet or fmt != "table")
+    result = reproduce_all(keys(), formulas=True, equations=True, quiet=quiet or fmt != "table")
     tables = regenerated_tables(result)
     out = console()
     if update:
@@ -294,8 +317,9 @@ def run_check(
         return 1 if drifts else 0
     n = sum(len(v) for v in result.claims.values())
     f = sum(len(v) for v in result.formulas.values())
+    e = sum(len(v) for v in result.equations.values())
     out.print(
-        f"check passed: {len(tables)} tables, {n} claims, {f} formulas match "
+        f"check passed: {len(tables)} tables, {n} claims, {f} formulas, {e} ledger rows match "
         f"tables/regenerated within tolerance"
     )
     return 0

@@ -137,6 +137,9 @@ def test_a_number_that_appears_or_vanishes_is_drift():
 
 
 def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
+    """Untouched, the check passes; one run with a printed value edited, a committed verdict
+    and a committed ledger status tampered names each of the three drifts by its row."""
+    from pendcli.api import check
     from pendcli.core.tables import clear_table_cache, tables_dir
     from pendcli.regression import run_check
 
@@ -148,13 +151,22 @@ def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
         path = tmp_path / "tables" / "published" / "charbonnier.toml"
         text = path.read_text(encoding="utf-8")
         path.write_text(text.replace('published = "2·2/(1·3)"', 'published = "2·2/(1·5)"'), "utf-8")
+        regenerated = tmp_path / "tables" / "regenerated"
+        claims = regenerated / "tisserand-claims.csv"
+        claims.write_text(claims.read_text("utf-8").replace("agrees", "discrepant", 1), "utf-8")
+        ledger = regenerated / "lecornu-equations.csv"
+        lines = ledger.read_text("utf-8").splitlines(keepends=True)
+        row = next(i for i, line in enumerate(lines) if ",holds," in line)
+        tampered_id = lines[row].split(",", 1)[0]
+        lines[row] = lines[row].replace(",holds,", ",fails,")
+        ledger.write_text("".join(lines), "utf-8")
         clear_table_cache()
-        assert run_check(quiet=True) == 1  # published string and verdict both drift
-        path.write_text(text, "utf-8")
-        csv_path = tmp_path / "tables" / "regenerated" / "charbonnier-claims.csv"
-        csv_path.write_text(csv_path.read_text("utf-8").replace("agrees", "discrepant", 1), "utf-8")
-        clear_table_cache()
-        assert run_check(quiet=True) == 1
+        drifts = {(d.table, d.id, d.column, d.committed, d.now) for d in check()}
+        tables = {d[:3] for d in drifts}
+        assert ("charbonnier-claims.csv", "charbonnier.I_pi.n2", "published") in tables
+        assert ("charbonnier-claims.csv", "charbonnier.I_pi.n2", "verdict") in tables
+        assert any(t == "tisserand-claims.csv" and c == "verdict" for t, _, c in tables)
+        assert ("lecornu-equations.csv", tampered_id, "status", "fails", "holds") in drifts
     finally:
         clear_table_cache()
 
@@ -227,3 +239,37 @@ def test_check_update_leaves_a_set_that_holds_its_bytes_as_it_is(tmp_path, monke
         assert path.read_text("utf-8") == committed
     finally:
         clear_table_cache()
+
+
+def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift() -> None:
+    """A reproduce result with ledger rows gives ``<paper>-equations.csv`` (id, label, lines,
+    status, dimensions, observed order); a status, a dimension verdict or a row that changes
+    is a drift naming the row, an observed order within 0.05 is not."""
+    from pendcli.core.rows import EquationRow
+    from pendcli.core.vocabulary import EquationStatus
+    from pendcli.regression import regenerated_tables
+    from pendcli.reproduce import ReproduceResult
+
+    def row(rid: str, status: str, order: float | None, dims: str = "consistent") -> EquationRow:
+        return EquationRow(rid, "p", "(1)", "§ 1", "x = y", EquationStatus(status), "", order,
+                           "", lines=(3, 4), dimensions=dims)  # fmt: skip
+
+    def table(*rows: EquationRow) -> str:
+        result = ReproduceResult(papers=("p",), equations={"p": list(rows)})
+        return regenerated_tables(result)["p-equations.csv"]
+
+    then = table(row("p.a", "holds", 2.0), row("p.b", "misprint", None), row("p.c", "holds", 1.0))
+    assert then.splitlines() == [
+        "id,equation,lines,status,dimensions,observed_order",
+        "p.a,(1),3-4,holds,consistent,2.0",
+        "p.b,(1),3-4,misprint,consistent,",
+        "p.c,(1),3-4,holds,consistent,1.0",
+    ]
+    now = table(row("p.a", "fails", 2.04), row("p.b", "misprint", None, "inconsistent"))
+    drifts = compare_tables("p-equations.csv", then, now)
+    found = {(d.id, d.column, d.committed, d.now) for d in drifts}
+    assert found == {
+        ("p.a", "status", "holds", "fails"),
+        ("p.b", "dimensions", "consistent", "inconsistent"),
+        ("p.c", "(row)", "present", "gone"),
+    }

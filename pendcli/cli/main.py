@@ -587,15 +587,17 @@ def check(
             "--format",
             "-f",
             help="table (the drift table), json, or junit (JUnit XML: a testcase per claim, "
-            "formula and table). Under GitHub Actions each drift is also an ::error annotation.",
+            "formula, ledger row and table). Under GitHub Actions each drift is also an ::error "
+            "annotation.",
             case_sensitive=False,
         ),
     ] = CheckFormat.table,
 ) -> None:
     """Regenerate every table and compare with the committed ones (exit 1 on any drift).
 
-    A number may move within its column's tolerance (the last bits another libm or scipy
-    changes); text (published, verdict, cause) must be identical. The drift table and
+    The tables are the claims, the formula checks and the equation ledgers' rows. A number
+    may move within its column's tolerance (the last bits another libm or scipy changes);
+    text (published, verdict, cause, a ledger row's status) must be identical. The drift table and
     --format json show each tolerance.
     """
     from pendcli.regression import run_check
