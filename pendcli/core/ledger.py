@@ -218,13 +218,22 @@ def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Led
             raise PendcliError(f"{path}: {row.id}: duplicate id")
         seen.add(row.id)
         rows.append(row)
-    text_path = root / text.removeprefix("tables/")
+    text_path = _text_inside(path, text, root)
     _check_text_fields(path, rows, text_path)
     symbols = validate_symbols(path, raw.get("symbols"))
     scopes = validate_scopes(path, raw.get("scope"), dict(symbols))
     ledger = Ledger(paper, text_path, path, tuple(rows), symbols, scopes)
     validate_formulas(path, rows, ledger.symbols_for)
     return ledger
+
+
+def _text_inside(path: Path, text: str, root: Path) -> Path:
+    """``[ledger] text`` under the tables folder ``root``; one that leads out is refused."""
+    from pendcli.core.tables import inside_tables
+
+    return inside_tables(
+        root / text.removeprefix("tables/"), root, f"{path}: [ledger] text = {text!r}"
+    )
 
 
 def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: Iterable[str]) -> None:

@@ -12,18 +12,29 @@ Accepted forms (all found in the three papers):
 * sexagesimal angles: ``1°7'33''``, ``2'42''``, ``2''``, ``30'`` (value in degrees);
 * exact expressions of integers, ``·``, ``*``, ``/``, parentheses and ``π``:
   ``1/5``, ``2·2·4/(1·3·5)``, ``π·1·3/(2·4)``.
+
+A printed string is read within bounds (``MAX_PRINTED_*``, documented in ``tables/README.md``)
+and its value must be one the verdict can judge in double precision: a finite, normal number,
+and a rounded value of at most ``MAX_SIGNIFICANT_DIGITS`` digits in units of its last place.
+Anything else is a :class:`PendcliError` naming the bound, never an infinite or zero value.
 """
 
 from __future__ import annotations
 
 import math
 import re
+import sys
 from dataclasses import dataclass
 from fractions import Fraction
 
 from pendcli.core.errors import PendcliError
 
 __all__ = [
+    "MAX_PRINTED_CHARS",
+    "MAX_PRINTED_DIGITS",
+    "MAX_PRINTED_FACTORS",
+    "MAX_PRINTED_NESTING",
+    "MAX_SIGNIFICANT_DIGITS",
     "PrintedNumber",
     "edition_angle",
     "edition_minus",
@@ -33,6 +44,19 @@ __all__ = [
     "exact_number",
     "parse_printed",
 ]
+
+
+# Bounds on a printed string. The committed tables' longest is 15 characters
+# (π·1·3·5/(2·4·6)), their longest run of digits 5 (0,00313), their deepest parentheses 1 and
+# their most factors 7: each bound is several times that, and far below what would make the
+# parse recurse, overflow or slow down.
+MAX_PRINTED_CHARS = 100  # characters of the printed string
+MAX_PRINTED_DIGITS = 30  # digits of one number (one run of digits)
+MAX_PRINTED_NESTING = 8  # parentheses within parentheses
+MAX_PRINTED_FACTORS = 50  # integers and π of an exact expression
+# A rounded value (a decimal, an angle) counted in units of its last place: the verdict judges
+# in double precision, which holds 15 significant decimal digits (the committed tables: 4).
+MAX_SIGNIFICANT_DIGITS = sys.float_info.dig
 
 
 @dataclass(frozen=True)
@@ -71,6 +95,7 @@ def parse_printed(text: str) -> PrintedNumber:
         raise PendcliError(
             f"empty printed value {text!r}; expected e.g. '5,14', '1°7\\'33\\'\\'', '1/5'"
         )
+    _check_size(text)
     s = _normalise(text)
     m = _DECIMAL.match(s) or _UNIT_MIDDLE.match(s)
     if m:
@@ -78,16 +103,66 @@ def parse_printed(text: str) -> PrintedNumber:
     if any(c in s for c in "°'″\""):
         return _sexagesimal(text, s)
     exact, pi_power = _parse_exact(s, text)
-    value = float(exact) * math.pi**pi_power
     return PrintedNumber(
-        text=text, value=value, resolution=None, kind="exact", exact=exact, pi_power=pi_power
+        text=text,
+        value=_exact_value(text, exact, pi_power),
+        resolution=None,
+        kind="exact",
+        exact=exact,
+        pi_power=pi_power,
     )
+
+
+def _shown(text: str) -> str:
+    """The printed string as an error line quotes it: escaped, and cut if long."""
+    if len(text) <= 40:
+        return repr(text)
+    return f"{text[:40]!r}… ({len(text)} characters)"
+
+
+def _check_size(text: str) -> None:
+    """The bounds every printed string keeps: its length and the digits of each number."""
+    if len(text) > MAX_PRINTED_CHARS:
+        raise PendcliError(
+            f"printed value {_shown(text)} is too long: at most {MAX_PRINTED_CHARS} characters"
+        )
+    longest = max((len(run) for run in re.findall(r"\d+", text)), default=0)
+    if longest > MAX_PRINTED_DIGITS:
+        raise PendcliError(
+            f"printed value {_shown(text)} has a number of {longest} digits: "
+            f"at most {MAX_PRINTED_DIGITS} digits per number"
+        )
+
+
+def _check_significant(text: str, units: Fraction) -> None:
+    """A rounded value, ``units`` of its last place, within what a double holds exactly."""
+    digits = len(str(abs(round(units))))
+    if digits > MAX_SIGNIFICANT_DIGITS:
+        raise PendcliError(
+            f"printed value {_shown(text)} has {digits} significant digits: the verdict "
+            f"compares in double precision, at most {MAX_SIGNIFICANT_DIGITS} digits"
+        )
+
+
+def _exact_value(text: str, exact: Fraction, pi_power: int) -> float:
+    """exact * π**pi_power as a double: finite and, unless 0, a normal number (no underflow)."""
+    try:
+        value = float(exact) * math.pi**pi_power
+    except OverflowError:
+        value = math.inf
+    if not math.isfinite(value) or (exact != 0 and abs(value) < sys.float_info.min):
+        raise PendcliError(
+            f"printed value {_shown(text)} cannot be represented in double precision: its "
+            f"magnitude must lie between {sys.float_info.min:.1e} and {sys.float_info.max:.1e}"
+        )
+    return value
 
 
 def _decimal(text: str, m: re.Match[str]) -> PrintedNumber:
     """``5,14``, ``-0,130``, ``0^m,35``: the unit of the last place is 10^-(decimals)."""
     groups = m.groups()
     sign, whole, frac = groups[0], groups[1], groups[-1] or ""
+    _check_significant(text, Fraction(int(whole + frac)))
     magnitude = float(f"{whole}.{frac}") if frac else float(whole)
     return PrintedNumber(
         text=text,
@@ -108,16 +183,21 @@ def _sexagesimal(text: str, s: str) -> PrintedNumber:
     sign, deg, minutes, seconds = m.groups()
     value = 0.0
     resolution = 1.0
+    exact, unit = Fraction(0), Fraction(1)  # the angle in units of its last place, checked
     if deg:
         value += int(deg)
+        exact += int(deg)
     if minutes:
         value += int(minutes) / 60
         resolution = 1 / 60
+        exact, unit = exact + Fraction(int(minutes), 60), Fraction(1, 60)
     if seconds:
         sec_text = seconds.replace(",", ".")
         value += float(sec_text) / 3600
         decimals = len(sec_text.split(".")[1]) if "." in sec_text else 0
         resolution = 10.0 ** (-decimals) / 3600
+        exact, unit = exact + Fraction(sec_text) / 3600, Fraction(1, 3600 * 10**decimals)
+    _check_significant(text, exact / unit)
     if sign == "-":
         value = -value
     return PrintedNumber(text=text, value=value, resolution=resolution, kind="sexagesimal")
@@ -142,11 +222,32 @@ def _tokens(s: str, original: str) -> list[str]:
 
 def _parse_exact(s: str, original: str) -> tuple[Fraction, int]:
     """Evaluate an exact expression: integers, π, products, quotients, parentheses."""
-    parser = _ExactParser(_tokens(s, original), original)
+    tokens = _tokens(s, original)
+    _check_shape(tokens, original)
+    parser = _ExactParser(tokens, original)
     result = parser.expr()
     if parser.index != len(parser.tokens):
         raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
     return result
+
+
+def _check_shape(tokens: list[str], original: str) -> None:
+    """An exact expression's bounds: its factors (integers and π) and its nesting."""
+    factors = sum(1 for tok in tokens if tok not in ("(", ")", "·", "*", "/", "×", "."))
+    if factors > MAX_PRINTED_FACTORS:
+        raise PendcliError(
+            f"printed value {_shown(original)} has {factors} factors: "
+            f"at most {MAX_PRINTED_FACTORS} integers and π in an exact expression"
+        )
+    depth = deepest = 0
+    for tok in tokens:
+        depth += (tok == "(") - (tok == ")")
+        deepest = max(deepest, depth)
+    if deepest > MAX_PRINTED_NESTING:
+        raise PendcliError(
+            f"printed value {_shown(original)} nests {deepest} parentheses deep: "
+            f"at most {MAX_PRINTED_NESTING}"
+        )
 
 
 class _ExactParser:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import tomllib
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
@@ -29,6 +30,7 @@ __all__ = [
     "PaperTable",
     "PublishedValue",
     "clear_table_cache",
+    "inside_tables",
     "load_paper_table",
     "missing_claim",
     "paper_constant",
@@ -50,6 +52,8 @@ _CONSTANT_FIELDS = ("value", "unit", "range", "source")
 # Deeper nesting than any table needs is refused (tomllib itself would recurse without end).
 MAX_TOML_DEPTH = 8
 _PRECISIONS = ("printed", "exact")
+# [paper] seed names the OCR file the text was made from: a bare file name, never a path.
+_SEED = re.compile(r"[A-Za-z0-9_-][A-Za-z0-9_.-]{0,99}")
 _COMPARISONS = ("equal", "upper-bound")
 
 
@@ -145,8 +149,28 @@ def paper_constant(key: str, name: str) -> float:
 
 
 def paper_text(key: str, root: Path | None = None) -> str:
-    """The OCR text of paper ``key`` (``papers/<key>.txt``): missing or empty is an error."""
-    return read_table_text((root or tables_dir()) / "papers" / f"{key}.txt", "paper text")
+    """The OCR text of paper ``key`` (``papers/<key>.txt``): missing or empty is an error, and
+    so is one that leads out of the tables folder (:func:`inside_tables`)."""
+    folder = root or tables_dir()
+    path = folder / "papers" / f"{key}.txt"
+    return read_table_text(inside_tables(path, folder, f"paper text {path}"), "paper text")
+
+
+def inside_tables(path: Path, root: Path, where: str) -> Path:
+    """``path``, checked to lie inside the tables folder ``root`` once every symlink of both is
+    resolved: a file a table names (``[ledger] text``) or the code reads there never leads out
+    of it (no ``..``, no absolute path, no symlink out). ``where`` names the file and the key."""
+    try:
+        real, base = path.resolve(), root.resolve()
+    except (OSError, RuntimeError) as exc:  # a symlink loop
+        raise PendcliError(f"{where}: cannot be resolved ({exc})") from None
+    if real == base or not real.is_relative_to(base):
+        raise PendcliError(
+            f"{where}: resolves to {real}, outside the tables folder {base}; every table "
+            "file and every file a table names must lie inside it (no '..', no absolute "
+            "path, no symlink out)"
+        )
+    return path
 
 
 def read_table_text(path: Path, what: str) -> str:
@@ -280,7 +304,7 @@ def on_table_change(clear: Callable[[], None]) -> None:
 @cache
 def _cached_table(key: str, root: Path) -> PaperTable:
     path = root / "published" / f"{key}.toml"
-    raw = read_toml(path, "published table")
+    raw = read_toml(inside_tables(path, root, f"published table {path}"), "published table")
     _refuse_unknown(str(path), "top-level section(s)", raw, _SECTIONS)
     paper = _paper_header(path, raw.get("paper"), key)
     return PaperTable(
@@ -288,9 +312,7 @@ def _cached_table(key: str, root: Path) -> PaperTable:
         citation=paper["citation"],
         seed=paper["seed"],
         assumptions=tuple(paper.get("assumptions", [])),
-        claims=_claims_in_text(
-            path, _claims(path, raw.get("claim"), key), root / "papers" / f"{key}.txt"
-        ),
+        claims=_claims_in_text(path, _claims(path, raw.get("claim"), key), root, key),
         constants=_constants(path, paper.get("constants"), key),
         path=path,
     )
@@ -313,6 +335,11 @@ def _paper_header(path: Path, paper: object, key: str) -> dict[str, Any]:
     for field in ("citation", "seed"):
         if not isinstance(paper.get(field), str):
             raise PendcliError(f"{path}: [paper] needs a string {field!r}")
+    if not _SEED.fullmatch(paper["seed"]):
+        raise PendcliError(
+            f"{path}: [paper] seed = {paper['seed']!r} must be a bare file name (letters, "
+            "digits, '_', '-', '.', not starting with '.'): it names a file, never a path"
+        )
     assumptions = paper.get("assumptions", [])
     if not isinstance(assumptions, list) or not all(isinstance(a, str) for a in assumptions):
         raise PendcliError(f"{path}: [paper] assumptions must be a list of strings")
@@ -338,11 +365,14 @@ def _claims(path: Path, entries: object, key: str) -> tuple[PublishedValue, ...]
 
 
 def _claims_in_text(
-    path: Path, claims: tuple[PublishedValue, ...], text: Path
+    path: Path, claims: tuple[PublishedValue, ...], root: Path, key: str
 ) -> tuple[PublishedValue, ...]:
-    """Each claim's ``lines`` within the paper's text, when the text is there to count (as
-    the ledger's rows are checked); a missing text is the error of the command that needs it."""
+    """Each claim's ``lines`` within the paper's text (``papers/<key>.txt`` under ``root``),
+    when the text is there to count (as the ledger's rows are checked); a missing text is the
+    error of the command that needs it, one that leads out of ``root`` an error here."""
+    text = root / "papers" / f"{key}.txt"
     if text.is_file() and any(c.lines is not None for c in claims):
+        inside_tables(text, root, f"paper text {text}")
         count = len(read_table_text(text, "paper text").splitlines())
         for claim in claims:
             if claim.lines is not None:

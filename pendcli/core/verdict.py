@@ -17,6 +17,11 @@ the recomputed value equals it to floating-point accuracy (``|r - p| <= 8 eps |p
 discrepant otherwise. A claim of the form "at most p" (``comparison = "upper-bound"``) agrees
 when ``r`` rounded to the printed precision is ``<= p``, and is discrepant otherwise.
 
+A printed value that is not a finite number, or whose precision is not a finite positive
+unit, is judged ``discrepant`` whatever the recomputed value: it cannot be agreed with (an
+infinite printed value once widened every boundary to infinity and agreed with anything).
+The table loader refuses such a value; this is the rule's own guard.
+
 Boundaries are widened by a relative 1e-12 so that a value on a boundary, like 5.135 against
 ``5,14`` (stored as 5.13499999999999978...) or recomputed as 5.134999999999, is judged by its
 digits, not by binary representation error; 5.13499999999 (2e-12 below) is not on it.
@@ -52,9 +57,15 @@ def _digits(rel: float | None, abs_diff: float) -> float:
     return round(min(17.0, max(0.0, -math.log10(abs(rel)))), 2)
 
 
+def _judgeable(printed: PrintedNumber) -> bool:
+    """A finite printed value, exact or known to a finite positive unit of its last place."""
+    u = printed.resolution
+    return math.isfinite(printed.value) and (u is None or (math.isfinite(u) and u > 0))
+
+
 def judge(printed: PrintedNumber, recomputed: float, comparison: str = "equal") -> Comparison:
     """Compare a recomputed value with a printed one; see the module docstring for the rules."""
-    if not math.isfinite(recomputed):
+    if not (math.isfinite(recomputed) and _judgeable(printed)):
         return Comparison(Verdict.DISCREPANT, math.nan, None, 0.0)
     p = printed.value
     diff = recomputed - p
