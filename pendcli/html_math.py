@@ -259,13 +259,16 @@ class _Filter(HTMLParser):
     def _tag(self, tag: str, attrs: list[tuple[str, str | None]], end: str) -> None:
         if tag not in MATHML_ELEMENTS or self.closed or (tag == "math") == bool(self.open):
             raise UnsafeMathML(f"element <{tag}> here")
-        kept = "".join(
+        kept: dict[str, str] = {}  # a repeated attribute: the first, as HTML reads it
+        for name, value in attrs:
+            if name not in kept and value is not None and name in MATHML_ATTRIBUTES:
+                kept[name] = value
+        written = "".join(
             f' {name}="{_escape(value)}"'
-            for name, value in attrs
-            if value is not None and name in MATHML_ATTRIBUTES
-            and MATHML_ATTRIBUTES[name].fullmatch(value)
-        )  # fmt: skip
-        self.out.append(f"<{tag}{kept}{end}")
+            for name, value in kept.items()
+            if MATHML_ATTRIBUTES[name].fullmatch(value)
+        )
+        self.out.append(f"<{tag}{written}{end}")
 
     def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
         self._tag(tag, attrs, ">")
