@@ -34,7 +34,7 @@ from pendcli.html_math import MATHML_ATTRIBUTES, MATHML_ELEMENTS, sanitise_mathm
 from pendcli.html_paper import paper_page
 from pendcli.html_report import report_page
 from pendcli.render.columns import Column
-from pendcli.render.markdown import code_span, markdown_text, to_markdown
+from pendcli.render.markdown import code_span, fence, markdown_text, to_markdown
 from pendcli.render.views import claim_columns
 from pendcli.report import disagreement_digest, explanation_section
 from pendcli.reproduce import ReproduceResult
@@ -273,11 +273,13 @@ def test_table_fields_in_the_paper_page_are_text() -> None:
 
 
 def test_table_fields_in_report_html_are_text() -> None:
-    claims, equations = {"lecornu": [_claim()]}, {"lecornu": [_equation()]}
+    root = {**_claim(), "id": "lecornu.<img src=x onerror=alert('id')>"}
+    carried = {**_claim(), "cause": "propagated", "from": [root["id"]]}  # a node of the graph
+    claims, equations = {"lecornu": [root, carried]}, {"lecornu": [_equation()]}
     page = report_page(["lecornu"], claims, {}, equations)
     assert live_markup(page) == []
-    assert "<script" not in page and "<img" not in page
-    assert page_text(page).count(ATTACK) >= 2  # the claim's note, the ledger's
+    assert "<script" not in page and "<img" not in page and "<svg" in page
+    assert page_text(page).count(ATTACK) >= 3  # the claims' notes, the ledger's
 
 
 def _claim_row() -> ClaimRow:
@@ -330,6 +332,15 @@ def test_a_code_span_holds_its_string_whole(text: str) -> None:
     tokens = MD.parseInline(f"printed {code_span(text)}, then")[0].children or []
     code = [t.content for t in tokens if t.type == "code_inline"]
     assert code == [re.sub(r"\r\n?|\n", " ", text)]
+
+
+def test_a_code_block_of_ids_is_not_closed_by_them() -> None:
+    lines = ["root (rounding)", "  └ x```` (propagated)", "````", "<script>alert(1)</script>"]
+    block = "\n".join([fence(lines), *lines, fence(lines), "", "after"])
+    tokens = MD.parse(block)
+    assert [t.type for t in tokens][:1] == ["fence"] and live_markdown(block) == []
+    assert tokens[0].content == "\n".join(lines) + "\n"
+    assert fence(["root (rounding)"]) == "```"  # as the report always wrote it
 
 
 # --- the whole report, for real -------------------------------------------------------------
