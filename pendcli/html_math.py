@@ -306,7 +306,14 @@ class _Filter(HTMLParser):
     def unknown_decl(self, data: str) -> None:
         raise UnsafeMathML("a declaration")
 
-    handle_comment = handle_decl = handle_pi = unknown_decl
+    def handle_decl(self, decl: str) -> None:
+        raise UnsafeMathML("a declaration")
+
+    def handle_comment(self, data: str) -> None:
+        raise UnsafeMathML("a comment")
+
+    def handle_pi(self, data: str) -> None:
+        raise UnsafeMathML("a processing instruction")
 
 
 def sanitise_mathml(mathml: str) -> str | None:
