@@ -7,6 +7,11 @@ raw text) is rendered by :func:`plain_math`, a cleaned plain-text reading (``\\f
 as ``(a)/(b)``, Greek letters as Unicode), and counted. Marks are kept inside a formula by
 wrapping their TeX in ``{\\color{#fe0NNN} …}``: the converter turns that into an
 ``<mstyle mathcolor>`` that :func:`mark_mathml` replaces by the mark's element.
+
+The converter copies ``\\text{…}`` verbatim and keeps ``\\href``, so the text's TeX could
+carry markup into the page: :func:`sanitise_mathml` parses its output and writes back only
+MathML elements and attributes of an allowlist, every text and value escaped; a formula with
+anything else (an element not of MathML, ``</math>`` inside it) is not converted.
 """
 
 from __future__ import annotations
@@ -14,6 +19,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
+from html.parser import HTMLParser
 
 __all__ = [
     "MATH",
@@ -21,6 +27,7 @@ __all__ = [
     "mark_mathml",
     "math_segments",
     "plain_math",
+    "sanitise_mathml",
     "to_mathml",
     "typeset",
     "wrap_marks",
@@ -70,7 +77,7 @@ def to_mathml(tex: str, display: bool) -> str | None:
     # An unknown command comes out as a token holding its backslash: not rendered.
     if re.search(r"<m[io][^>]*>(?:\\|&(?![#\w]+;))", mathml) or "<merror" in mathml:
         return None
-    return typeset(decimal_numbers(mathml))
+    return sanitise_mathml(typeset(decimal_numbers(mathml)))
 
 
 _UNIT = re.compile(r"(?<=\d)\^\s*(?:\{\s*(sec|m|mm|h|min|s)\s*\}|(?<!\{)(m|h|s)(?![A-Za-z]))")
@@ -143,15 +150,21 @@ def balanced(tex: str) -> bool:
     return depth == 0 and left == len(re.findall(r"\\right\b", tex)) and "&" not in tex
 
 
-def mark_mathml(mathml: str, open_tag: Callable[[int], str], after: Callable[[int], str]) -> str:
-    """Replace each colour group numbered n by ``open_tag(n)`` … ``</mrow>`` ``after(n)``."""
-    out, pos, stack = [], 0, []
+def mark_mathml(
+    mathml: str, open_tag: Callable[[int], str], after: Callable[[int], str], count: int
+) -> str:
+    """Replace each colour group numbered n (0 <= n < ``count``, the first group of that
+    number) by ``open_tag(n)`` … ``</mrow>`` ``after(n)``; another group of a mark's colour
+    (written in the text's own TeX) stays the ``<mstyle>`` it is."""
+    out, pos, stack, used = [], 0, [], set()
     for m in _MSTYLE.finditer(mathml):
         out.append(mathml[pos : m.start()])
         pos = m.end()
-        if m.group(1) is not None:
-            stack.append(int(m.group(1), 16))
-            out.append(open_tag(stack[-1]))
+        number = int(m.group(1), 16) if m.group(1) is not None else -1
+        if 0 <= number < count and number not in used:
+            used.add(number)
+            stack.append(number)
+            out.append(open_tag(number))
         elif m.group(0).startswith("<mstyle"):
             stack.append(-1)
             out.append(m.group(0))
@@ -160,6 +173,161 @@ def mark_mathml(mathml: str, open_tag: Callable[[int], str], after: Callable[[in
             out.append("</mstyle>" if number < 0 else "</mrow>" + after(number))
     out.append(mathml[pos:])
     return "".join(out)
+
+
+# --- the converter's MathML, filtered through an allowlist ------------------------------------
+
+# Presentation MathML only: no <semantics>/<annotation-xml> (which may hold HTML), no <maction>.
+MATHML_ELEMENTS = frozenset({
+    "math", "mrow", "mi", "mn", "mo", "ms", "mtext", "mspace", "msub", "msup", "msubsup",
+    "mfrac", "msqrt", "mroot", "mstyle", "mpadded", "mphantom", "mfenced", "menclose", "munder",
+    "mover", "munderover", "mmultiscripts", "mprescripts", "none", "mtable", "mtr", "mtd",
+})  # fmt: skip
+_LENGTH = (
+    r"[+-]?(?:\d{1,6}(?:\.\d{0,6})?|\.\d{1,6})(?:em|ex|px|pt|pc|in|cm|mm|mu|%)?"
+    r"|(?:negative)?(?:very){0,2}(?:thin|thick)mathspace|(?:negative)?mediummathspace"
+)
+_BOOLEAN = "true|false"
+
+
+def _list_of(pattern: str, most: int = 16) -> str:
+    """One to ``most`` values matching ``pattern``, a space apart."""
+    return f"(?:{pattern})(?: (?:{pattern})){{0,{most - 1}}}"
+
+
+_ALIGN = _list_of("left|center|right|top|bottom|baseline|axis")
+_LINES = _list_of("none|solid|dashed")
+_FENCE = r"[()\[\]{}|‖⟨⟩⌊⌋⌈⌉.,;]{0,3}"
+# Each allowed attribute and the values it may take: words, numbers, lengths, colours; never
+# a URL, a style or a script (href, style, class, on* are not in the list).
+MATHML_ATTRIBUTES: dict[str, re.Pattern[str]] = {
+    name: re.compile(pattern)
+    for names, pattern in (
+        ("xmlns", re.escape("http://www.w3.org/1998/Math/MathML")),
+        ("display", "block|inline"),
+        ("mathvariant", "normal|bold|italic|bold-italic|double-struck|bold-fraktur|script|"
+         "bold-script|fraktur|sans-serif|bold-sans-serif|sans-serif-italic|"
+         "sans-serif-bold-italic|monospace|initial|tailed|looped|stretched"),
+        ("displaystyle stretchy fence separator symmetric largeop movablelimits accent "
+         "accentunder", _BOOLEAN),
+        ("form", "prefix|infix|postfix"),
+        ("scriptlevel", r"[+-]?\d{1,2}"),
+        ("lspace rspace width height depth voffset minsize maxsize", _LENGTH),
+        ("linethickness", rf"{_LENGTH}|thin|medium|thick"),
+        ("mathcolor mathbackground", r"#[0-9a-fA-F]{3}|#[0-9a-fA-F]{6}|[a-zA-Z]{1,20}"),
+        ("columnalign rowalign", _ALIGN),
+        ("columnlines rowlines frame", _LINES),
+        ("rowspacing columnspacing", _list_of(_LENGTH)),
+        ("columnspan rowspan", r"\d{1,3}"),
+        ("linebreak", "auto|newline|nobreak|goodbreak|badbreak|indentingnewline"),
+        ("notation", _list_of("[a-z]{1,20}", 6)),
+        ("open close separators", _FENCE),
+    )
+    for name in names.split()
+}  # fmt: skip
+_ENTITIES = frozenset({"amp", "lt", "gt", "quot", "apos"})
+_CHARREF = re.compile(r"x[0-9a-fA-F]{1,6}|[0-9]{1,7}")
+
+
+class UnsafeMathML(ValueError):
+    """The converter's output holds what the allowlist does not (or does not parse)."""
+
+
+def _xml_char(code: int) -> bool:
+    """A character XML 1.0 allows in a document."""
+    allowed = (0x20, 0xD7FF), (0xE000, 0xFFFD), (0x10000, 0x10FFFF)
+    return code in (0x9, 0xA, 0xD) or any(low <= code <= high for low, high in allowed)
+
+
+def _escape(text: str) -> str:
+    if not all(_xml_char(ord(c)) for c in text):
+        raise UnsafeMathML("a character XML does not allow")
+    text = text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+    return text.replace('"', "&quot;").replace("\r", " ").replace("\n", " ")
+
+
+class _Filter(HTMLParser):
+    """Re-writes a ``<math>`` element: allowed elements with their allowed attributes, each
+    end tag closing the element open, text and references escaped; raises on anything else."""
+
+    def __init__(self) -> None:
+        super().__init__(convert_charrefs=False)  # references come back as they were written
+        self.out: list[str] = []
+        self.open: list[str] = []
+        self.closed = False  # the <math> element has ended: nothing may follow it
+
+    def _tag(self, tag: str, attrs: list[tuple[str, str | None]], end: str) -> None:
+        if tag not in MATHML_ELEMENTS or self.closed or (tag == "math") == bool(self.open):
+            raise UnsafeMathML(f"element <{tag}> here")
+        kept: dict[str, str] = {}  # a repeated attribute: the first, as HTML reads it
+        for name, value in attrs:
+            if name not in kept and value is not None and name in MATHML_ATTRIBUTES:
+                kept[name] = value
+        written = "".join(
+            f' {name}="{_escape(value)}"'
+            for name, value in kept.items()
+            if MATHML_ATTRIBUTES[name].fullmatch(value)
+        )
+        self.out.append(f"<{tag}{written}{end}")
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        self._tag(tag, attrs, ">")
+        self.open.append(tag)
+
+    def handle_startendtag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        if not self.open:
+            raise UnsafeMathML("an empty formula")
+        self._tag(tag, attrs, " />")
+
+    def handle_endtag(self, tag: str) -> None:
+        if not self.open or self.open[-1] != tag:
+            raise UnsafeMathML(f"</{tag}> closes no open element")
+        self.out.append(f"</{self.open.pop()}>")
+        self.closed = not self.open
+
+    def handle_data(self, data: str) -> None:
+        if self.open:
+            self.out.append(_escape(data))
+        elif data.strip():
+            raise UnsafeMathML("text outside <math>")
+
+    def handle_charref(self, name: str) -> None:
+        if not self.open or not _CHARREF.fullmatch(name):
+            raise UnsafeMathML(f"character reference &#{name};")
+        if not _xml_char(int(name[1:], 16) if name.startswith("x") else int(name)):
+            raise UnsafeMathML(f"character reference &#{name};")
+        self.out.append(f"&#{name};")
+
+    def handle_entityref(self, name: str) -> None:
+        if not self.open or name not in _ENTITIES:
+            raise UnsafeMathML(f"entity &{name};")
+        self.out.append(f"&{name};")
+
+    def unknown_decl(self, data: str) -> None:
+        raise UnsafeMathML("a declaration")
+
+    def handle_decl(self, decl: str) -> None:
+        raise UnsafeMathML("a declaration")
+
+    def handle_comment(self, data: str) -> None:
+        raise UnsafeMathML("a comment")
+
+    def handle_pi(self, data: str) -> None:
+        raise UnsafeMathML("a processing instruction")
+
+
+def sanitise_mathml(mathml: str) -> str | None:
+    """``mathml`` re-written through the allowlist (:data:`MATHML_ELEMENTS`,
+    :data:`MATHML_ATTRIBUTES`: an attribute not listed, or with a value its pattern refuses,
+    is dropped), or None where it holds another element or does not parse as one ``<math>``
+    element: such a formula is shown as its plain reading, escaped."""
+    parser = _Filter()
+    try:
+        parser.feed(mathml)
+        parser.close()
+    except UnsafeMathML:
+        return None
+    return "".join(parser.out) if parser.closed else None
 
 
 # --- the plain reading of a formula that does not convert ------------------------------------

@@ -219,6 +219,7 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
                     f"[{numbers[inside[i].key]}]</a></mtext></msup>"
                 )
             ),
+            len(inside),
         )
     stats.formulas += 1
     stats.widened += len(around)

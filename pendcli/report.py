@@ -23,12 +23,13 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
 from pendcli.render.columns import Column, Row
 from pendcli.render.json import to_json
-from pendcli.render.markdown import to_markdown
+from pendcli.render.markdown import code_span, fence, markdown_text, to_markdown
 from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 from pendcli.reproduce import ReproduceResult
 
 if TYPE_CHECKING:
     from pendcli.core.cache import ResultCache
+    from pendcli.core.explain import ExplainedRow
     from pendcli.core.rows import EquationRow
     from pendcli.tradeoff import Point
 
@@ -79,7 +80,10 @@ def _first_sentence(text: str, limit: int = 220) -> str:
 def _cause_text(cause: str | None, sources: tuple[str, ...]) -> str:
     if cause is None:
         return ""
-    return f" ({cause} from {', '.join(sources)})" if sources else f" ({cause})"
+    cause = markdown_text(cause)
+    if not sources:
+        return f" ({cause})"
+    return f" ({cause} from {', '.join(map(markdown_text, sources))})"
 
 
 def disagreement_digest(result: ReproduceResult) -> list[str]:
@@ -90,15 +94,17 @@ def disagreement_digest(result: ReproduceResult) -> list[str]:
         for r in result.claims.get(key, []):
             if r.verdict != Verdict.AGREES:
                 bullets.append(
-                    f"- **{r.id}** ({r.source}): printed `{r.published}`, recomputed "
-                    f"{r.recomputed:.6g}: **{r.verdict}**{_cause_text(r.cause, r.cause_from)}. "
-                    f"{_first_sentence(r.note)}"
+                    f"- **{markdown_text(r.id)}** ({markdown_text(r.source)}): printed "
+                    f"{code_span(r.published)}, recomputed {r.recomputed:.6g}: "
+                    f"**{r.verdict}**{_cause_text(r.cause, r.cause_from)}. "
+                    f"{markdown_text(_first_sentence(r.note))}"
                 )
         for f in result.formulas.get(key, []):
             if f.verdict != FormulaVerdict.HOLDS:
                 bullets.append(
-                    f"- **{f.id}** {f.source}: `{f.published}` fails"
-                    f"{_cause_text(f.cause, f.cause_from)}; found `{f.recomputed}`."
+                    f"- **{markdown_text(f.id)}** {markdown_text(f.source)}: "
+                    f"{code_span(f.published)} fails{_cause_text(f.cause, f.cause_from)}; "
+                    f"found {code_span(f.recomputed)}."
                 )
     return bullets or ["Every printed number and formula holds."]
 
@@ -122,27 +128,28 @@ def explanation_section(result: ReproduceResult) -> list[str]:
     for key in result.papers:
         verdicts = {r.id: (r.verdict, r.cause, r.published) for r in result.claims.get(key, [])}
         for row in explain_rows(key, explanations(key), verdicts):
-            if row.verdict == "agrees":
-                continue
-            d = row.as_dict()
-            if row.explained:
-                steps = " → ".join(d["steps"][0])  # type: ignore[index]
-                odds = f"coincidence {d['coincidence']:.1%}, near {d['coincidence_near']:.1%}"
-                lines.append(
-                    f"- **{row.id}** `{row.printed}`: {row.cause_with_mechanism} ({odds}). {steps}."
-                )
-            elif d["mechanism"] is not None:
-                odds = f"{d['coincidence']:.1%} of random targets"
-                lines.append(
-                    f"- **{row.id}** `{row.printed}`: **unexplained** ({row.cause}): "
-                    f"{d['mechanism']} reproduces it, and as simply {odds}."
-                )
-            else:
-                lines.append(
-                    f"- **{row.id}** `{row.printed}`: **unexplained** ({row.cause}); searched: "
-                    f"{d['searched']}."
-                )
+            if row.verdict != "agrees":
+                lines.append(_explanation_line(row))
     return [*lines, ""]
+
+
+def _explanation_line(row: ExplainedRow) -> str:
+    """One bullet of "Explanations": the steps that give the printed digits, the mechanism
+    that reproduces them no better than chance, or the space searched."""
+    d = row.as_dict()
+    head = f"- **{markdown_text(row.id)}** {code_span(row.printed)}:"
+    if row.explained:
+        steps = " → ".join(d["steps"][0])  # type: ignore[index]
+        odds = f"coincidence {d['coincidence']:.1%}, near {d['coincidence_near']:.1%}"
+        return f"{head} {markdown_text(row.cause_with_mechanism)} ({odds}). {markdown_text(steps)}."
+    cause = markdown_text(str(row.cause))
+    if d["mechanism"] is not None:
+        odds = f"{d['coincidence']:.1%} of random targets"
+        return (
+            f"{head} **unexplained** ({cause}): {markdown_text(str(d['mechanism']))} "
+            f"reproduces it, and as simply {odds}."
+        )
+    return f"{head} **unexplained** ({cause}); searched: {markdown_text(str(d['searched']))}."
 
 
 # The convention every formula note ends with: stated once in the report, not per row.
@@ -394,13 +401,13 @@ def _introduction(result: ReproduceResult) -> list[str]:
         "",
         to_markdown(summary, [Column(k, k) for k in summary[0]]) if summary else "",
     ]
-    if tree:
+    if tree:  # the rows' ids as they are: in a code block no line of them can end
         lines += [
             "Where errors enter (roots, with their cause) and the rows that carry them:",
             "",
-            "```",
+            fence(tree),
             *tree,
-            "```",
+            fence(tree),
             "",
         ]
     return [
@@ -425,9 +432,11 @@ def _paper_section(
     table = load_paper_table(key)
     rows = [r.as_dict() for r in result.claims.get(key, [])]
     text = f"tables/papers/{key}.txt"
-    lines = [f"## {key.capitalize()}", "", f"*{table.citation}* (text: `{text}`).", ""]
+    citation = markdown_text(table.citation)
+    lines = [f"## {key.capitalize()}", "", f"*{citation}* (text: `{text}`).", ""]
     if table.assumptions:
-        lines += ["Assumptions:", ""] + [f"- {a}" for a in table.assumptions] + [""]
+        lines += ["Assumptions:", ""] + [f"- {markdown_text(a)}" for a in table.assumptions]
+        lines += [""]
     counts = result.verdict_counts().get(key, {})
     tally = ", ".join(f"{counts.get(v, 0)} {v}" for v in CLAIM_VERDICTS)
     lines.append(f"Verdicts: {tally} ({len(rows)} claims).")

@@ -72,6 +72,8 @@ SLOW_FAMILIES = {
     "apsidal motion and the series of the motion to fifth order",
     "tests/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
     "`equations` runs of a ledger in one test (2.1-2.3 s)",
+    "tests/test_attack_edition.py::test_reproduce_out_of_tables_full_of_markup": "a whole "
+    "`reproduce --out` of one paper, its ledger checked, in a process (10 s of CPU)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.

@@ -1,16 +1,53 @@
-"""Markdown: a pipe table per section, headed ``### title`` when the section has one."""
+"""Markdown: a pipe table per section, headed ``### title`` when the section has one.
+
+Every cell is text, never markup: :func:`markdown_text` escapes what would make raw HTML, a
+link or an image of a table's string (``report.md`` uses it, :func:`code_span` and
+:func:`fence` too, for each string it takes from the tables).
+"""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping, Sequence
 
 from pendcli.render.columns import Column, Row, Section
 
-__all__ = ["MarkdownRenderer", "to_markdown"]
+__all__ = ["MarkdownRenderer", "code_span", "fence", "markdown_text", "to_markdown"]
+
+# What CommonMark could read as markup in a line of text: a backslash (it would escape what
+# follows it: the escapes below), an entity, a `<` that may open a tag, comment or autolink
+# (one before a space, or in « <= », cannot), and a `]` that may close a link's or image's
+# text into a destination `](`, a label `][` or a definition `]:` (a string's last `]` is
+# followed by the report's own text: never `(` or `[`, and a definition must start its line).
+# Emphasis and code spans change how text looks, never what it is, and stay.
+_MARKUP = re.compile(r"\\|&|<(?!\s|=\s)|\](?=[(\[:])")
+_REPLACEMENT = {"\\": "\\\\", "&": "&amp;", "<": "&lt;", "]": "\\]"}
+
+
+def markdown_text(text: str) -> str:
+    """``text`` as Markdown that shows it as text, on one line: see :data:`_MARKUP`."""
+    one_line = re.sub(r"\r\n?|\n", " ", text)
+    return _MARKUP.sub(lambda m: _REPLACEMENT[m.group(0)], one_line)
+
+
+def code_span(text: str) -> str:
+    """``text`` in a code span whose backticks outnumber any run of them inside it (padded
+    with a space where a backtick or a space at both ends would be read otherwise)."""
+    one_line = re.sub(r"\r\n?|\n", " ", text)
+    ticks = "`" * (max(map(len, re.findall("`+", one_line)), default=0) + 1)
+    edges = one_line[:1] + one_line[-1:]
+    pad = " " if "`" in edges or (edges == "  " and one_line.strip(" ")) else ""
+    return f"{ticks}{pad}{one_line}{pad}{ticks}"
+
+
+def fence(lines: Sequence[str]) -> str:
+    """The backticks of a code block around ``lines`` that no line of it can close."""
+    longest = max((len(run) for line in lines for run in re.findall("`+", line)), default=0)
+    return "`" * max(3, longest + 1)
 
 
 def _cell(text: str) -> str:
-    return text.replace("|", "\\|").replace("\n", " ")
+    return markdown_text(text).replace("|", "\\|")
 
 
 def to_markdown(rows: Sequence[Row], columns: Sequence[Column]) -> str:
