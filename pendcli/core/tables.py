@@ -51,6 +51,13 @@ _PAPER_FIELDS = ("key", "citation", "seed", "assumptions", "constants")
 _CONSTANT_FIELDS = ("value", "unit", "range", "source")
 # Deeper nesting than any table needs is refused (tomllib itself would recurse without end).
 MAX_TOML_DEPTH = 8
+# A table file's size: the largest committed is 110 kB (lecornu.toml); a larger one is
+# refused before it is read, so a stray huge file cannot fill the memory.
+MAX_TABLE_BYTES = 16_000_000
+# Characters no table or text may hold, raw or as a TOML escape: the control characters but
+# tab and newline (ESC would drive the terminal a table is shown on, CR overwrite its line)
+# and the bidirectional overrides and isolates, which reorder what a reader sees.
+_HIDDEN = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u202a-\u202e\u2066-\u2069]")
 _PRECISIONS = ("printed", "exact")
 # [paper] seed names the OCR file the text was made from: a bare file name, never a path.
 _SEED = re.compile(r"[A-Za-z0-9_-][A-Za-z0-9_.-]{0,99}")
@@ -180,7 +187,8 @@ def read_table_text(path: Path, what: str) -> str:
         problem = "is not a file" if path.exists() else "is missing"
         raise PendcliError(f"{what} {path} {problem}")
     try:
-        data = path.read_bytes()
+        with path.open("rb") as stream:
+            data = stream.read(MAX_TABLE_BYTES + 1)
     except OSError as exc:
         raise PendcliError(f"cannot read {what} {path}: {exc.strerror or exc}") from None
     try:
@@ -190,9 +198,38 @@ def read_table_text(path: Path, what: str) -> str:
             f"{what} {path} is not UTF-8 text: byte {exc.start} (0x{data[exc.start]:02x}) "
             f"cannot be decoded ({exc.reason})"
         ) from None
+    if len(data) > MAX_TABLE_BYTES:
+        raise PendcliError(f"{what} {path} is over {MAX_TABLE_BYTES:,} bytes, the limit of a table")
     if not text.strip():
         raise PendcliError(f"{what} {path} is empty")
+    _refuse_hidden(text, f"{what} {path}")
     return text
+
+
+def _refuse_hidden(text: str, where: str) -> None:
+    """One line naming the line, column and code point of a character :data:`_HIDDEN` lists."""
+    found = _HIDDEN.search(text)
+    if found is not None:
+        line = text.count("\n", 0, found.start()) + 1
+        column = found.start() - (text.rfind("\n", 0, found.start()) + 1) + 1
+        raise PendcliError(
+            f"{where}: line {line}, column {column}: U+{ord(found.group()):04X} is a control or "
+            "direction character; a table holds printable text, tabs and newlines only"
+        )
+
+
+def _strings(value: object) -> Iterable[str]:
+    """Every string of a parsed TOML document, keys included (iteratively)."""
+    stack = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, str):
+            yield item
+        elif isinstance(item, dict):
+            yield from (k for k in item if isinstance(k, str))
+            stack += list(item.values())
+        elif isinstance(item, list):
+            stack += item
 
 
 def read_toml(path: Path, what: str) -> dict[str, Any]:
@@ -208,6 +245,8 @@ def read_toml(path: Path, what: str) -> dict[str, Any]:
         ) from None
     if _depth(raw) > MAX_TOML_DEPTH:
         raise PendcliError(f"{what} {path} is nested too deeply (at most {MAX_TOML_DEPTH} levels)")
+    for string in _strings(raw):  # a TOML escape ("\u001b") is a control character too
+        _refuse_hidden(string, f"{what} {path}: the string {string[:40]!r}")
     return raw
 
 

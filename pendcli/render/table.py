@@ -35,7 +35,7 @@ def _cell(column: Column, row: Row) -> str:
     if column.table_max is not None and len(text) > column.table_max:
         text = text[: column.table_max - 1].rstrip() + "…"
     style = column.style(text) if column.style is not None else None
-    return f"[{style}]{text}[/]" if style else escape(text)
+    return f"[{style}]{escape(text)}[/]" if style else escape(text)
 
 
 def _longest_token(text: str) -> int:
