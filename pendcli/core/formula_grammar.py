@@ -57,7 +57,7 @@ MAX_NUMBER_DIGITS = 24  # digits of a number as written (committed: 6, in 0.0031
 # 12, of p - 3/2 in lecornu.eq.20; 8, of exp(-2*sqrt(x)*tan(omega)); 2)
 MAX_EXPONENT = 100
 MAX_FACTORIAL2 = 100  # the bound of factorial2's argument (committed: 2, of n + 1)
-# digits of any number the arithmetic forms (committed: 26); sympy factors what it roots
+# digits of any number the arithmetic forms (committed: 19); sympy factors what it roots
 MAX_FORMED_DIGITS = 120
 
 NOTATION = "numbers, declared names, + - * / ** ( ) , < > <= >= = ; ..."
@@ -233,11 +233,19 @@ def _check_tree(
         if isinstance(arg, ast.Tuple)
     }
     digits: dict[int, float] = {}
+    sums: dict[int, tuple[float, int]] = {}  # a sum's terms: their digits, their count
     for node in nodes:
         problem = _shape(node, space, functions, id(node) in tuples)
         if problem:
             raise PendcliError(f"{where}: {_segment(text, node)!r}: {problem}")
-        size = _digits(where, text, node, [digits[id(c)] for c in _children(node)])
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add | ast.Sub):
+            # k terms over k denominators: a numerator and a denominator of at most
+            # k times the product of the terms' bounds
+            terms = [sums.get(id(c), (digits[id(c)], 1)) for c in (node.left, node.right)]
+            sums[id(node)] = (terms[0][0] + terms[1][0], terms[0][1] + terms[1][1])
+            size = sums[id(node)][0] + math.log10(sums[id(node)][1])
+        else:
+            size = _digits(where, text, node, [digits[id(c)] for c in _children(node)])
         if size > MAX_FORMED_DIGITS:
             raise PendcliError(
                 f"{where}: {_segment(text, node)!r} can form a number of 10^{size:.0f}, "
@@ -275,17 +283,15 @@ def _shape(
 
 def _digits(where: str, text: str, node: ast.AST, inner: list[float]) -> float:
     """An upper bound of log10 of any number sympy could form from ``node`` (the largest
-    numerator or denominator), given the bounds of its children: a name counts as 1 (what
-    it cancels to), a sum adds a digit to a product's, a power multiplies its base's by
-    its exponent's bound, which is checked first."""
+    numerator or denominator), given the bounds of its children (a sum's: in
+    :func:`_check_tree`): a name counts as 1 (what it cancels to), a product adds its
+    factors', a power multiplies its base's by its exponent's bound, checked first."""
     if isinstance(node, ast.Constant):
         value = Fraction(text[node.col_offset : node.end_col_offset])
         return math.log10(max(abs(value.numerator), value.denominator))
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Pow):
         _bound(where, text, node.right, "a power's exponent", inner[1], MAX_EXPONENT)
         return float(10 ** inner[1]) * inner[0]
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add | ast.Sub):
-        return inner[0] + inner[1] + math.log10(2)
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
         return _call_digits(where, text, node, node.func.id, inner)
     return sum(inner)  # a product, a quotient, a sign, a comparison, a tuple, a name: 0
