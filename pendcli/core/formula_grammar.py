@@ -34,6 +34,8 @@ from typing import Any
 from pendcli.core.errors import PendcliError
 
 __all__ = [
+    "ARITY",
+    "DECLARED_ARITY",
     "MAX_DEPTH",
     "MAX_EXPONENT",
     "MAX_FACTORIAL2",
@@ -53,8 +55,8 @@ MAX_WORDS = 1500  # numbers, names and operators of a formula (committed: 304)
 MAX_DEPTH = 20  # brackets within brackets (committed: 5)
 MAX_UNARY_RUN = 4  # signs in a row, as in 2*-(-x) (committed: 1)
 MAX_NUMBER_DIGITS = 24  # digits of a number as written (committed: 6, in 0.00313)
-# the bound (below) of a power's exponent, exp's argument, a derivative's order (committed:
-# 12, of p - 3/2 in lecornu.eq.20; 8, of exp(-2*sqrt(x)*tan(omega)); 2)
+# the bound (below) of a power's exponent, exp's argument, a derivative's or besselj's order
+# (committed: 12, of p - 3/2 in lecornu.eq.20; 8, of exp(-2*sqrt(x)*tan(omega)); 2; 2)
 MAX_EXPONENT = 100
 MAX_FACTORIAL2 = 100  # the bound of factorial2's argument (committed: 2, of n + 1)
 # digits of any number the arithmetic forms (committed: 19); sympy factors what it roots
@@ -82,6 +84,16 @@ _COMPARE: dict[type, Callable[[Any, Any], Any]] = {
     ast.GtE: operator.ge,
 }
 _WITH_TUPLES = ("Integral", "Derivative")  # Integral(f, (x, a, b)), Derivative(f, (t, 2))
+Arity = tuple[int, int]  # the fewest and the most arguments of a function
+# The notation's functions, each with the arguments it takes (sympy's others, such as
+# Float's precision, Rational's gcd or sqrt's evaluate, are never passed).
+ARITY: dict[str, Arity] = {
+    **dict.fromkeys(("sin", "cos", "tan", "atan", "asin", "acos", "exp", "sqrt"), (1, 1)),
+    **{"log": (1, 2), "besselj": (2, 2), "factorial2": (1, 1)},
+    **{"Rational": (1, 2), "Integer": (1, 1), "Float": (1, 1)},
+    **{"Integral": (1, 4), "Derivative": (1, 6)},  # Integral(f, (x, a, b)), Derivative(f, t, 2)
+}
+DECLARED_ARITY: Arity = (1, 8)  # a function the ledger declares, "E_s()": E_s(t)
 
 
 def plain_name(name: str) -> bool:
@@ -171,10 +183,13 @@ class _Words:
         self._word(word == ")")
 
 
-def parse_side(where: str, text: str, space: Mapping[str, Any], functions: Container[str]) -> Any:
+def parse_side(
+    where: str, text: str, space: Mapping[str, Any], functions: Mapping[str, Arity]
+) -> Any:
     """One side of an equation (``text``, its words checked by :func:`check_words`) as a
     sympy expression over ``space`` (name -> sympy object; ``functions``: the names that
-    are called). Raises PendcliError naming ``where`` on anything outside the grammar."""
+    are called, each with its arity: :data:`ARITY`, :data:`DECLARED_ARITY`). Raises
+    PendcliError naming ``where`` on anything outside the grammar."""
     try:
         tree = ast.parse(text, mode="eval").body
     except SyntaxError as exc:
@@ -222,7 +237,11 @@ def _segment(text: str, node: ast.AST) -> str:
 
 
 def _check_tree(
-    where: str, text: str, nodes: list[ast.AST], space: Mapping[str, Any], functions: Container[str]
+    where: str,
+    text: str,
+    nodes: list[ast.AST],
+    space: Mapping[str, Any],
+    functions: Mapping[str, Arity],
 ) -> None:
     """Each node of the grammar, and every bound (:func:`_digits`), before anything is built."""
     tuples = {
@@ -255,7 +274,7 @@ def _check_tree(
 
 
 def _shape(
-    node: ast.AST, space: Mapping[str, Any], functions: Container[str], tuple_ok: bool
+    node: ast.AST, space: Mapping[str, Any], functions: Mapping[str, Arity], tuple_ok: bool
 ) -> str | None:
     """Why ``node`` is outside the grammar, or None."""
     if isinstance(node, ast.BinOp):
@@ -269,7 +288,10 @@ def _shape(
         name = getattr(node.func, "id", None)
         if name not in functions or not isinstance(node.func, ast.Name):
             return "a call of a name that is not a function"
-        return "arguments by position only" if node.keywords else None
+        low, high = functions[name]
+        if not low <= len(node.args) <= high or node.keywords:
+            return f"{name} takes {low} to {high} arguments, by position"
+        return None
     if isinstance(node, ast.Name):
         if node.id in functions:
             return "a function, written without its arguments"
@@ -299,9 +321,9 @@ def _digits(where: str, text: str, node: ast.AST, inner: list[float]) -> float:
 
 def _call_digits(where: str, text: str, node: ast.Call, name: str, inner: list[float]) -> float:
     """exp(k*log(b)) is b**k and factorial2(n) is n**(n/2) at most: their arguments are
-    bounded as an exponent; a derivative's order too. Any other function of the notation
-    forms nothing much larger than its arguments (sin(pi/6) = 1/2, tan(pi/3) = sqrt(3),
-    Rational(p, q)): a factor 2 is left for it."""
+    bounded as an exponent; a derivative's order and a Bessel function's too. Any other
+    function of the notation forms nothing much larger than its arguments (sin(pi/6) = 1/2,
+    tan(pi/3) = sqrt(3), Rational(p, q)): a factor 2 is left for it."""
     size = sum(inner)
     argument = node.args[0] if node.args else node
     if name == "factorial2":
@@ -313,6 +335,8 @@ def _call_digits(where: str, text: str, node: ast.Call, name: str, inner: list[f
     if name == "Derivative":
         for arg, order in list(zip(node.args, inner, strict=True))[1:]:
             _bound(where, text, arg, "a derivative's order", order, MAX_EXPONENT)
+    if name == "besselj" and inner:  # mpmath's series, asked for its sign, needs its order
+        _bound(where, text, node.args[0], "besselj's order", inner[0], MAX_EXPONENT)
     return size + math.log10(2)
 
 

@@ -20,7 +20,14 @@ from itertools import pairwise
 from typing import Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.formula_grammar import check_words, parse_side, plain_name
+from pendcli.core.formula_grammar import (
+    ARITY,
+    DECLARED_ARITY,
+    Arity,
+    check_words,
+    parse_side,
+    plain_name,
+)
 
 __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula"]
 
@@ -73,7 +80,7 @@ def _power(text: str) -> Any:
             raise PendcliError(f"the power {text!r}: {name!r} is not a plain name")
     space = {n: sp.Symbol(n, real=True) for n in names}
     check_words(f"the power {text!r}", text, space)
-    return parse_side(f"the power {text!r}", text.strip(), space, ())
+    return parse_side(f"the power {text!r}", text.strip(), space, {})
 
 
 _CALLS = ("Rational", "Integer", "Float", "Integral", "Derivative")
@@ -95,8 +102,10 @@ def _namespace(names: tuple[str, ...], functions: tuple[str, ...]) -> dict[str, 
 
 
 @cache
-def _callable(functions: tuple[str, ...]) -> frozenset[str]:
-    return frozenset((*FUNCTIONS, *_CALLS, *functions))
+def _callable(functions: tuple[str, ...]) -> dict[str, Arity]:
+    """The names a formula calls, each with the arguments it takes."""
+    notation = {f: ARITY[f] for f in (*FUNCTIONS, *_CALLS)}
+    return {**notation, **dict.fromkeys(functions, DECLARED_ARITY)}
 
 
 @cache
@@ -128,5 +137,5 @@ def parse_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
     return Formula(text, tuple(equations))
 
 
-def _expression(where: str, text: str, space: dict[str, Any], functions: frozenset[str]) -> Any:
+def _expression(where: str, text: str, space: dict[str, Any], functions: dict[str, Arity]) -> Any:
     return parse_side(where, text.replace("...", f" {ELLIPSIS} ").strip(), space, functions)
