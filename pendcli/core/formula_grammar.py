@@ -131,7 +131,7 @@ def check_words(where: str, text: str, names: Container[str]) -> None:
         elif kind == "op":
             state.operator(match.group())
     if state.depth:
-        raise PendcliError(f"{where}: cannot parse {text.strip()!r}: a bracket is not closed")
+        raise PendcliError(f"{where}: cannot parse {_short(text.strip())!r}: a '(' is not closed")
 
 
 class _Words:
@@ -285,9 +285,9 @@ def _shape(
         one = len(node.ops) == 1 and type(node.ops[0]) in _COMPARE
         return None if one else "one comparison, <, >, <= or >=, between two sides"
     if isinstance(node, ast.Call):
-        name = getattr(node.func, "id", None)
-        if name not in functions or not isinstance(node.func, ast.Name):
+        if not isinstance(node.func, ast.Name) or node.func.id not in functions:
             return "a call of a name that is not a function"
+        name = node.func.id
         low, high = functions[name]
         if not low <= len(node.args) <= high or node.keywords:
             return f"{name} takes {low} to {high} arguments, by position"
