@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.formula_grammar import plain_name
 from pendcli.core.printed import ELLIPSIS, FUNCTIONS, Formula, parse_dimension, parse_formula
 
 if TYPE_CHECKING:
@@ -40,19 +41,25 @@ _RESERVED = (
     "Symbol",
     "Function",
     "Integral",
+    "Derivative",
 )
 
 
 def validate_symbols(path: Path, raw: object) -> tuple[tuple[str, str], ...]:
-    """``[symbols]`` as (name, dimension) pairs, each dimension parsed once to check it."""
+    """``[symbols]`` as (name, dimension) pairs, each dimension parsed once to check it; a
+    name is plain (letters, digits, ``_``, from a letter; no keyword) and new (no function
+    of the notation)."""
     if raw is None:
         return ()
     if not isinstance(raw, dict):
         raise PendcliError(f'{path}: [symbols] must be a table of name = "dimension"')
     for name, dim in raw.items():
         bare = name.removesuffix("()")
-        if not bare.isidentifier() or bare in _RESERVED or not isinstance(dim, str):
-            raise PendcliError(f'{path}: [symbols] {name!r}: a new name = "L T^-2" or "1"')
+        if not plain_name(bare) or bare in _RESERVED or not isinstance(dim, str):
+            raise PendcliError(
+                f"{path}: [symbols] {name!r}: a new name (ASCII letters, digits and _, from a "
+                'letter; not a keyword) = "L T^-2" or "1"'
+            )
         parse_dimension(f"{path}: [symbols] {name}", dim)
     return tuple(sorted(raw.items()))
 

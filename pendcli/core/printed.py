@@ -20,6 +20,14 @@ from itertools import pairwise
 from typing import Any
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.formula_grammar import (
+    ARITY,
+    DECLARED_ARITY,
+    Arity,
+    check_words,
+    parse_side,
+    plain_name,
+)
 
 __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula"]
 
@@ -45,7 +53,8 @@ class Formula:
 
 def parse_dimension(where: str, text: str) -> dict[str, Any]:
     """``"L T^-2"`` -> {"L": 1, "T": -2}; ``"1"`` is dimensionless; ``"L^(1-n)"`` has a
-    symbolic power (sympy, over real symbols of the names it uses)."""
+    symbolic power (sympy, over real symbols of the names it uses), read by the formulas'
+    grammar (core/formula_grammar), bounds included."""
     if text.strip() == "1":
         return {}
     out: dict[str, Any] = {}
@@ -53,16 +62,28 @@ def parse_dimension(where: str, text: str) -> dict[str, Any]:
         match = _BASE.match(part)
         if not match:
             raise PendcliError(f"{where}: dimension {text!r}: write base letters as 'L T^-2'")
-        out[match.group(1)] = out.get(match.group(1), 0) + _power(match.group(2) or "1")
+        try:
+            power = _power(match.group(2) or "1")
+        except PendcliError as exc:
+            raise PendcliError(f"{where}: dimension {text!r}: {exc}") from None
+        out[match.group(1)] = out.get(match.group(1), 0) + power
     return {k: v for k, v in out.items() if v != 0}
 
 
-@cache  # a ledger names ~100 exponents ("-2", "1/2"); sympify parses each in ~5 ms
+@cache  # a ledger names ~100 exponents ("-2", "1/2"), most of them several times
 def _power(text: str) -> Any:
     import sympy as sp
 
-    names = {n: sp.Symbol(n, real=True) for n in re.findall(r"[a-z_][a-z_0-9]*", text)}
-    return sp.sympify(text, locals=names)
+    names = dict.fromkeys(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", text))
+    for name in names:
+        if not plain_name(name):
+            raise PendcliError(f"the power {text!r}: {name!r} is not a plain name")
+    space = {n: sp.Symbol(n, real=True) for n in names}
+    check_words(f"the power {text!r}", text, space)
+    return parse_side(f"the power {text!r}", text.strip(), space, {})
+
+
+_CALLS = ("Rational", "Integer", "Float", "Integral", "Derivative")
 
 
 @cache
@@ -80,34 +101,41 @@ def _namespace(names: tuple[str, ...], functions: tuple[str, ...]) -> dict[str, 
     return space
 
 
+@cache
+def _callable(functions: tuple[str, ...]) -> dict[str, Arity]:
+    """The names a formula calls, each with the arguments it takes."""
+    notation = {f: ARITY[f] for f in (*FUNCTIONS, *_CALLS)}
+    return {**notation, **dict.fromkeys(functions, DECLARED_ARITY)}
+
+
+@cache
+def _not_plain(names: tuple[str, ...]) -> str | None:
+    return next((n for n in names if not plain_name(n)), None)
+
+
 def parse_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
     """Parse ``text`` with the declared ``symbols`` only (names ending in ``()`` are declared
-    functions); raises PendcliError naming ``where`` on a syntax error or an undeclared name."""
+    functions) by the notation's grammar (core/formula_grammar: checked words and tree,
+    never python's eval); raises PendcliError naming ``where`` on a syntax error, an
+    undeclared name, a word outside the notation or a bound exceeded."""
     names = tuple(sorted(n for n in symbols if not n.endswith("()")))
     functions = tuple(sorted(n[:-2] for n in symbols if n.endswith("()")))
+    bad = _not_plain((*names, *functions))
+    if bad is not None:
+        raise PendcliError(f"{where}: the symbol {bad!r} is not a plain name")
     space = _namespace(names, functions)
+    check_words(where, text.replace("...", f" {ELLIPSIS} "), space)
     equations = []
     for part in (p.strip() for p in text.split(";")):
-        sides = [_expression(where, s, space) for s in re.split(r"(?<![=<>!])=(?!=)", part)]
+        sides = [
+            _expression(where, s, space, _callable(functions))
+            for s in re.split(r"(?<![=<>!])=(?!=)", part)
+        ]
         if len(sides) == 1:
             equations.append((None, sides[0]))
         equations.extend(pairwise(sides))
     return Formula(text, tuple(equations))
 
 
-def _expression(where: str, text: str, space: dict[str, Any]) -> Any:
-    from tokenize import TokenError
-
-    import sympy as sp
-    from sympy.parsing.sympy_parser import parse_expr
-
-    source = text.replace("...", f" {ELLIPSIS} ")
-    for name in re.findall(r"[A-Za-z_][A-Za-z_0-9]*", source):
-        if name not in space:
-            raise PendcliError(f"{where}: {name!r} is not a declared symbol (see [symbols])")
-    try:
-        # Only the namespace is visible: no builtins, no other sympy name.
-        visible = {"__builtins__": {}, "Symbol": sp.Symbol, "Function": sp.Function}
-        return parse_expr(source, local_dict=dict(space), global_dict=visible)
-    except (SyntaxError, TokenError, TypeError, ValueError, sp.SympifyError) as exc:
-        raise PendcliError(f"{where}: cannot parse {text.strip()!r}: {exc}") from None
+def _expression(where: str, text: str, space: dict[str, Any], functions: dict[str, Arity]) -> Any:
+    return parse_side(where, text.replace("...", f" {ELLIPSIS} ").strip(), space, functions)
