@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 from pendcli.core.errors import PendcliError
 from pendcli.core.formula_grammar import plain_name
 from pendcli.core.printed import ELLIPSIS, FUNCTIONS, Formula, parse_dimension, parse_formula
+from pendcli.core.recent import Recent
 
 if TYPE_CHECKING:
     from pendcli.core.dimensions import DimensionCheck
@@ -112,13 +113,22 @@ def validate_formulas(
             raise PendcliError(f"{path}: {row.id}: 'corrected_formula' is for fails rows")
 
 
+# Each formula parsed once per text and symbol table, whichever step asks (the load's
+# validation, the dimension check, the printed form's verdict): keyed by content, not by
+# the place named in an error (a parse that fails raises and is not kept).
+_PARSED = Recent(8192)
+
+
 def row_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
     return _parsed(where, text, tuple(sorted(symbols.items())))
 
 
-@cache
 def _parsed(where: str, text: str, symbols: tuple[tuple[str, str], ...]) -> Formula:
-    return parse_formula(where, text, dict(symbols))
+    found: Formula | None = _PARSED.get((text, symbols))
+    if found is None:
+        found = parse_formula(where, text, dict(symbols))
+        _PARSED.put((text, symbols), found)
+    return found
 
 
 @cache
