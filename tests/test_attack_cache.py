@@ -139,17 +139,19 @@ def test_pruning_removes_only_pendcli_entries(tmp_path: Path, monkeypatch) -> No
     assert cache.get("claims", {"paper": "p3"}) == [3]
 
 
-def test_a_folder_of_other_files_is_refused_not_adopted(tmp_path: Path) -> None:
-    (tmp_path / "settings.json").write_text("{}", encoding="utf-8")
-    before = sorted(tmp_path.iterdir())
+@pytest.mark.parametrize("name", ["settings.json", MARKER])
+def test_a_folder_of_other_files_is_refused_not_adopted(tmp_path: Path, name: str) -> None:
+    """A user's file, or another program's cache tag: the folder is not pendcli's."""
+    (tmp_path / name).write_text("Signature: 8a477f597d28d172789f06886806bc55\n", "utf-8")
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
     cache = ResultCache(tmp_path, tables_dir())
     cache.put("claims", {"paper": "x"}, [1])
     assert cache.get("claims", {"paper": "x"}) is None
-    assert cache.problem is not None and "'settings.json'" in cache.problem
-    assert sorted(tmp_path.iterdir()) == before  # no marker, no entry
+    assert cache.problem is not None and f"{name!r}" in cache.problem
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before  # nothing written
     code, _, err = invoke("cache", "clear", env={"PENDCLI_CACHE": str(tmp_path), **WIDE})
-    assert code == 2 and len(status_lines(err)) == 1 and "settings.json" in err
-    assert sorted(tmp_path.iterdir()) == before
+    assert code == 2 and len(status_lines(err)) == 1 and name in err
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
 
 
 def test_a_former_cache_is_adopted_and_its_entries_removed(tmp_path: Path) -> None:
@@ -191,13 +193,23 @@ def test_a_value_of_the_wrong_type_is_a_miss_not_an_internal_error(
     assert invoke(*CLAIMS, env=env).out == fresh
 
 
-def test_a_missing_or_unknown_field_is_a_miss(cold: tuple[dict[str, str], str]) -> None:
+def first_row(entry: Path) -> dict[str, Any]:
+    row: dict[str, Any] = json.loads(entry.read_bytes().partition(b"\n")[2])["value"][0]
+    return row
+
+
+@pytest.mark.parametrize("field", ["cause", "as_printed", "cause_from"])
+def test_a_missing_or_unknown_field_is_a_miss(cold: tuple[dict[str, str], str], field: str) -> None:
+    """A field left out (one with a default, which the row would take silently) or one no
+    row has: the entry is computed again and rewritten whole."""
     env, fresh = cold
     (entry,) = entries_of(Path(env["PENDCLI_CACHE"]), "claims")
-    forge(entry, lambda rows: rows[0].pop("cause"), sign=True)
+    forge(entry, lambda rows: rows[0].pop(field), sign=True)
     assert invoke(*CLAIMS, env=env).out == fresh
+    assert field in first_row(entry)
     forge(entry, lambda rows: rows[0].update(extra=1), sign=True)
     assert invoke(*CLAIMS, env=env).out == fresh
+    assert "extra" not in first_row(entry)
 
 
 @pytest.mark.parametrize("mode", [0o1777, 0o777, 0o770])
@@ -256,19 +268,22 @@ def test_an_entry_that_is_not_a_small_regular_file_is_a_miss_in_a_real_run(
         entry.symlink_to("/dev/zero")
     elif kind == "folder":
         entry.mkdir()
-    else:
+    else:  # larger than the address space the run may use: read whole, it would fail
         with entry.open("wb") as file:  # sparse: no disk used
-            file.truncate(cache_module.MAX_ENTRY_BYTES + 1)
+            file.truncate(2 * MEMORY_LIMIT)
     warm = run_cli(*CLAIMS, env=env, preexec_fn=_limit_memory)
     assert (warm.returncode, warm.stdout) == (0, fresh), warm.stderr
     if kind != "folder":  # rewritten as a regular file
         assert stat.S_ISREG(entry.lstat().st_mode) and entry.stat().st_size < 10**6
 
 
+MEMORY_LIMIT = 6 * 2**30  # address space of a run: several times what one uses
+
+
 def _limit_memory() -> None:
     import resource
 
-    resource.setrlimit(resource.RLIMIT_AS, (6 * 2**30, 6 * 2**30))
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
 
 
 # -- the report's entry ----------------------------------------------------------------------

@@ -56,7 +56,6 @@ __all__ = [
     "cached_json",
     "content_digest",
     "entries",
-    "folder_refusal",
     "rows_from_json",
     "rows_to_json",
 ]
@@ -107,7 +106,7 @@ def cache_folder(environ: Mapping[str, str] | None = None) -> Path | None:
 
 
 def _ours(name: str) -> bool:
-    return any(p.fullmatch(name) for p in (_ENTRY, _TEMPORARY, _FORMER)) or name == MARKER
+    return any(p.fullmatch(name) for p in (_ENTRY, _TEMPORARY, _FORMER))
 
 
 def _listing(fd: int) -> list[tuple[str, float, int]]:
@@ -135,7 +134,7 @@ def entries(folder: Path) -> list[tuple[Path, int]]:
         os.close(fd)
 
 
-def folder_refusal(fd: int, folder: Path) -> str | None:
+def _refusal(fd: int, folder: Path) -> str | None:
     """Why the open folder ``fd`` is not used (its owner, its mode), or None."""
     info = os.fstat(fd)
     where = str(folder)
@@ -152,10 +151,10 @@ def folder_refusal(fd: int, folder: Path) -> str | None:
     return None
 
 
-def _read_regular(fd: int, name: str, limit: int) -> bytes | None:
+def _read_regular(fd: int, name: str, limit: int, touch: bool = False) -> bytes | None:
     """The bytes of ``name`` in the open folder ``fd``, or None: not a regular file of this
     user (a link, a FIFO, a device: never followed nor waited on), larger than ``limit``, or
-    unreadable. Opened, it is marked used (its time: the pruning keeps it longest)."""
+    unreadable. ``touch``: marked used (its time: the pruning keeps it longest)."""
     try:
         file = os.open(name, _READ, dir_fd=fd)
     except OSError:
@@ -167,8 +166,9 @@ def _read_regular(fd: int, name: str, limit: int) -> bytes | None:
         if info.st_size > limit:
             return None
         data = _read_at_most(file, info.st_size)
-        with contextlib.suppress(OSError):
-            os.utime(file)
+        if touch:
+            with contextlib.suppress(OSError):
+                os.utime(file)
         return data
     except OSError:
         return None
@@ -404,7 +404,7 @@ class ResultCache:
             return None
         name = self.entry_path(kind, params).name  # the key first: a bad tables folder stops here
         with self._opened(create=False) as fd:
-            data = None if fd is None else _read_regular(fd, name, MAX_ENTRY_BYTES)
+            data = None if fd is None else _read_regular(fd, name, MAX_ENTRY_BYTES, touch=True)
         return None if data is None else self._value(data, kind, params)
 
     def _value(self, data: bytes, kind: str, params: Mapping[str, Any]) -> Any | None:
@@ -475,7 +475,7 @@ class ResultCache:
             self.problem = f"result cache off ({describe_os_error(exc, action='use')})"
             return None
         try:
-            self.problem = folder_refusal(fd, self.folder) or self._claim(fd)
+            self.problem = _refusal(fd, self.folder) or self._claim(fd)
         except OSError as exc:
             self.problem = f"result cache off ({describe_os_error(exc, self.folder, 'use')})"
         if self.problem is not None:
