@@ -19,6 +19,7 @@ from cli_helpers import invoke
 import pendcli.papers.registry as registry
 from pendcli.core import cache as cache_module
 from pendcli.core.cache import (
+    FORMAT,
     ResultCache,
     cache_folder,
     content_digest,
@@ -75,7 +76,7 @@ def small_tables(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def _entries(folder: Path) -> list[Path]:
-    return sorted(folder.glob("*.json")) if folder.is_dir() else []
+    return sorted(folder.glob("pendcli-*.json")) if folder.is_dir() else []
 
 
 def _refuse_to_compute(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -205,7 +206,7 @@ def test_a_damaged_entry_is_recomputed(tmp_path, damage, small_tables):
     assert (again.code, again.out) == (0, cold.out), again.err
     if damage != "folder":  # rewritten whole
         for entry in entries:
-            assert json.loads(entry.read_bytes())["format"] == cache_module.FORMAT
+            assert entry.read_bytes().startswith(f"pendcli result cache {FORMAT} ".encode())
 
 
 def test_off_never_writes(tmp_path, small_tables):

@@ -11,21 +11,28 @@ app = typer.Typer(
 
 @app.command("info")
 def info() -> None:
-    """Where the result cache is ($PENDCLI_CACHE, off, or the default), its entries and size."""
-    from pendcli.core.cache import ENV, cache_folder, entries
+    """Where the result cache is ($PENDCLI_CACHE, off, or the default), its entries and size
+    (and, when its folder is not used, why)."""
+    from pendcli.cli.common import say
+    from pendcli.core.cache import ENV, entries
+    from pendcli.reproduce import result_cache
 
-    folder = cache_folder()
-    if folder is None:
+    cache = result_cache()
+    if cache.folder is None:
         print(f"off ({ENV}=off): every run computes")
         return
-    found = entries(folder)
+    found = entries(cache.folder)
     size = sum(size for _, size in found)
-    print(f"{folder}: {len(found)} entries, {size / 1e6:.1f} MB")
+    print(f"{cache.folder}: {len(found)} entries, {size / 1e6:.1f} MB")
+    refusal = cache.refusal()
+    if refusal is not None:
+        say(refusal)
 
 
 @app.command("clear")
 def clear() -> None:
-    """Remove every entry of the result cache (the next run computes everything)."""
+    """Remove every entry of the result cache (the next run computes everything); nothing
+    else in its folder is touched."""
     from pendcli.cli.common import say
     from pendcli.reproduce import result_cache
 

@@ -92,5 +92,19 @@ def _text_coverage(cache: ResultCache, paper: str) -> dict[str, object]:
     def compute() -> dict[str, object]:
         return ledger_text_coverage(paper).as_dict()
 
-    found: dict[str, object] = cached_json(cache, "text-coverage", {"paper": paper}, compute)
+    found: dict[str, object] = cached_json(
+        cache, "text-coverage", {"paper": paper}, compute, _is_coverage
+    )
     return found
+
+
+def _is_coverage(value: object) -> bool:
+    """A stored coverage has the keys and types ``TextCoverage.as_dict`` gives."""
+    keys = {"blocks", "blocks_covered", "blocks_share", "uncovered_lines"}
+    if not isinstance(value, dict) or set(value) != keys:
+        return False
+    counts = [value["blocks"], value["blocks_covered"]]
+    lines = value["uncovered_lines"]
+    if type(lines) is not list or type(value["blocks_share"]) not in (int, float):
+        return False
+    return all(type(n) is int for n in [*counts, *lines])

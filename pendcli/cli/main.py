@@ -517,6 +517,8 @@ def reproduce(
 
         check_out_folder(out)
     with result_cache(cache, quiet) as stored:
+        if out is not None:  # a cache inside the report's folder would be replaced with it
+            stored.keep_out_of(out)
         result = reproduce_all(
             resolve_papers(paper),
             formulas=formulas,
