@@ -131,8 +131,10 @@ def splice(readme: str, section: str, name: str = "sample") -> str:
 def main(argv: list[str]) -> int:
     """Rewrite (``--check``: compare) the generated sections of the README and docs/schema.md;
     ``--tables``: with the committed tables regenerated from the same run, all written as one
-    set (``make regen``)."""
+    set (``make regen``). A file edited after it was read here is refused in one line
+    (nothing written, the edit kept): the sections take most of a minute to compute."""
     readme = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
+    from pendcli.core.files import content_digest
     from pendcli.core.tables import read_table_text
 
     result = _reproduce_all()
@@ -145,6 +147,7 @@ def main(argv: list[str]) -> int:
         for name in (n for n, f in SECTION_FILES.items() if f == file):
             text = splice(text, makers[name](), name)
         new[path] = text
+    read = {path: content_digest(text) for path, text in old.items()}  # checked at the write
     if "--check" in argv:
         stale = [str(p) for p in new if new[p] != old[p]]
         for stale_path in stale:
@@ -154,7 +157,7 @@ def main(argv: list[str]) -> int:
         from pendcli.regression import regenerated_tables, rewrite_with
 
         tables = regenerated_tables(result)
-        removed = rewrite_with(tables, new)
+        removed = rewrite_with(tables, new, unchanged=read)
         gone = f"; removed {', '.join(removed)}" if removed else ""
         names = ", ".join(str(p) for p in new)
         print(f"rewrote {len(tables)} tables and {names}{gone}", file=sys.stderr)
@@ -162,7 +165,7 @@ def main(argv: list[str]) -> int:
     from pendcli.core.files import write_set
 
     changes: dict[Path, str | bytes | None] = {p: t for p, t in new.items() if t != old[p]}
-    write_set(changes)  # committed: never half written
+    write_set(changes, read)  # committed: never half written, never over an edit
     return 0
 
 
