@@ -147,7 +147,8 @@ def main(argv: list[str]) -> int:
         for name in (n for n, f in SECTION_FILES.items() if f == file):
             text = splice(text, makers[name](), name)
         new[path] = text
-    read = {path: content_digest(text) for path, text in old.items()}  # checked at the write
+    # what was read, checked again just before the renames: an edit meanwhile is refused
+    read: dict[Path, str | None] = {p: content_digest(t) for p, t in old.items()}
     if "--check" in argv:
         stale = [str(p) for p in new if new[p] != old[p]]
         for stale_path in stale:

@@ -72,6 +72,10 @@ SLOW_FAMILIES = {
     "apsidal motion and the series of the motion to fifth order",
     "tests/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
     "`equations` runs of a ledger in one test (2.1-2.3 s)",
+    "tests/test_attack_misc.py::test_reproduce_out_at_the_limit_of_open_files": "a report "
+    "with its figures, in a process (4 s of CPU)",
+    "tests/test_attack_misc.py::test_scipy_zeros_are_written_a_chunk_at_a_time": "400,000 "
+    "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.
