@@ -588,7 +588,11 @@ def with_section(readme: Path, text: str) -> str | None:
     """The README with ``text`` between the markers (None if the file or markers are absent)."""
     if not readme.exists():
         return None
-    content = readme.read_text(encoding="utf-8")
+    return spliced(readme.read_text(encoding="utf-8"), text)
+
+
+def spliced(content: str, text: str) -> str | None:
+    """``content`` with ``text`` between the markers (None if they are absent)."""
     if START not in content or END not in content:
         return None
     head, rest = content.split(START, 1)
@@ -629,7 +633,6 @@ def run(
     times) unless ``floor`` asks, and the suite and install timings unless ``checkout`` asks.
     """
     from pendcli import bench_summary
-    from pendcli.core.files import write_set
 
     growth = not quick if growth is None else growth
     floor = not quick if floor is None else floor
@@ -653,16 +656,38 @@ def run(
     tag = bench_summary.measurement_tag([text, *map(str, heads)])
     text = _tagged(text, tag, load, heads)
     files: dict[Path, str | bytes | None] = {**table_files(measured, root)} if tables else {}
-    new_readme = with_section(readme, text) if readme is not None else None
-    if new_readme is not None and readme is not None:
-        files[readme] = new_readme
-    if summary is not None and summary.is_file():
-        block = bench_summary.summary_lines(heads, tag, load)
-        new_summary = bench_summary.with_summary(summary.read_text("utf-8"), block)
-        if new_summary is not None:
-            files[summary] = new_summary
-    write_set(files)
+    block = bench_summary.summary_lines(heads, tag, load)
+    splices = [
+        (readme, lambda old: spliced(old, text)),
+        (summary, lambda old: bench_summary.with_summary(old, block)),
+    ]
+    write_results(files, splices)
     return text
+
+
+Splice = tuple[Path | None, Callable[[str], str | None]]
+
+
+def write_results(files: dict[Path, str | bytes | None], splices: list[Splice]) -> None:
+    """Write ``files`` (the measured tables) and each README of ``splices`` ((path, its new
+    text from the old or None to leave it)) as one set (:func:`pendcli.core.files.write_set`).
+
+    Each README is read here, at the end of the run, and must still hold what was read when
+    the set is renamed: an edit made in between is refused in one line, nothing written.
+    """
+    from pendcli.core.files import content_digest, write_set
+
+    read: dict[Path, str | None] = {}
+    for path, splice in splices:
+        if path is None or not path.is_file():
+            continue
+        pending = files.get(path)  # a second splice of the same file builds on the first
+        old = pending if isinstance(pending, str) else path.read_text(encoding="utf-8")
+        new = splice(old)
+        if new is not None:
+            read.setdefault(path, content_digest(old))
+            files[path] = new
+    write_set(files, read)
 
 
 def _tagged(text: str, tag: str, load: tuple[float, float], heads: list[Any]) -> str:

@@ -131,10 +131,12 @@ def splice(readme: str, section: str, name: str = "sample") -> str:
 def main(argv: list[str]) -> int:
     """Rewrite (``--check``: compare) the generated sections of the README and docs/schema.md;
     ``--tables``: with the committed tables regenerated from the same run, all written as one
-    set (``make regen``)."""
+    set (``make regen``). A file edited after it was read here is refused in one line
+    (nothing written, the edit kept): the sections take most of a minute to compute."""
     readme = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
     from dataclasses import replace
 
+    from pendcli.core.files import content_digest
     from pendcli.core.tables import read_table_text
 
     # the ledger only for the committed tables; the README's sections show claims and formulas
@@ -149,6 +151,8 @@ def main(argv: list[str]) -> int:
         for name in (n for n, f in SECTION_FILES.items() if f == file):
             text = splice(text, makers[name](), name)
         new[path] = text
+    # what was read, checked again just before the renames: an edit meanwhile is refused
+    read: dict[Path, str | None] = {p: content_digest(t) for p, t in old.items()}
     if "--check" in argv:
         stale = [str(p) for p in new if new[p] != old[p]]
         for stale_path in stale:
@@ -158,7 +162,7 @@ def main(argv: list[str]) -> int:
         from pendcli.regression import regenerated_tables, rewrite_with
 
         tables = regenerated_tables(full)
-        removed = rewrite_with(tables, new)
+        removed = rewrite_with(tables, new, unchanged=read)
         gone = f"; removed {', '.join(removed)}" if removed else ""
         names = ", ".join(str(p) for p in new)
         print(f"rewrote {len(tables)} tables and {names}{gone}", file=sys.stderr)
@@ -166,7 +170,7 @@ def main(argv: list[str]) -> int:
     from pendcli.core.files import write_set
 
     changes: dict[Path, str | bytes | None] = {p: t for p, t in new.items() if t != old[p]}
-    write_set(changes)  # committed: never half written
+    write_set(changes, read)  # committed: never half written, never over an edit
     return 0
 
 

@@ -408,23 +408,30 @@ def _unmoved(
 
 
 def rewrite_with(
-    tables: dict[str, str], others: dict[Path, str], root: Path | None = None
+    tables: dict[str, str],
+    others: dict[Path, str],
+    root: Path | None = None,
+    unchanged: dict[Path, str | None] | None = None,
 ) -> list[str]:
     """``make regen``: the committed tables and ``others`` (the README) rewritten as one set
     (:func:`pendcli.core.files.write_set`: all written first, then renamed in one short loop
-    that Ctrl-C or TERM cannot split), under the tables' lock. Returns the tables removed."""
-    from pendcli.core.files import check_owned, write_set
+    that Ctrl-C or TERM cannot split), under the tables' lock. Returns the tables removed.
+    Nothing is written if a table changed after it was read here, or a file of ``unchanged``
+    (path -> digest of what the caller read) since the caller read it."""
+    from pendcli.core.files import check_owned, file_digest, write_set
 
     folder = write_through((root or tables_dir()).resolve() / "regenerated", "tables/regenerated")
     folder.mkdir(parents=True, exist_ok=True)
     with locked(_lock_file(folder)):
         check_owned(folder, "tables/regenerated", lambda n: expected_columns(n) is not None)
+        names = {*tables, *(p.name for p in folder.glob("*.csv"))}  # as kept_within_tolerance reads
+        read = {folder / n: file_digest(folder / n) for n in names} | (unchanged or {})
         tables = kept_within_tolerance(folder, tables)
         removed = sorted(p.name for p in folder.glob("*.csv") if p.name not in tables)
         changes: dict[Path, str | bytes | None] = {folder / n: t for n, t in tables.items()}
         changes.update({folder / name: None for name in removed})
         changes.update(others)
-        write_set(changes)
+        write_set(changes, read)
     return removed
 
 

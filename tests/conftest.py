@@ -74,6 +74,10 @@ SLOW_FAMILIES = {
     "`equations` runs of a ledger in one test (2.1-2.3 s)",
     "tests/test_attack_edition.py::test_reproduce_out_of_tables_full_of_markup": "a whole "
     "`reproduce --out` of one paper, its ledger checked, in a process (10 s of CPU)",
+    "tests/test_attack_misc.py::test_reproduce_out_at_the_limit_of_open_files": "a report "
+    "with its figures, in a process (4 s of CPU)",
+    "tests/test_attack_misc.py::test_scipy_zeros_are_written_a_chunk_at_a_time": "400,000 "
+    "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.

@@ -264,3 +264,106 @@ def test_write_set_failing_before_its_renames_changes_nothing(tmp_path: Path) ->
     del changes[tmp_path / "missing" / "c.csv"]
     write_set(changes)
     assert _snapshot(tmp_path) == {"a.csv": b"new a"}
+
+
+def test_write_set_refuses_a_file_changed_since_it_was_read(tmp_path: Path) -> None:
+    from pendcli.core.files import content_digest, file_digest, write_set
+
+    readme, table = tmp_path / "README.md", tmp_path / "t.csv"
+    readme.write_text("old readme\n")
+    read = {readme: content_digest(readme.read_text())}
+    with readme.open("a") as fh:  # someone's edit, after the read, before the write
+        fh.write("my edit\n")
+    changes: dict[Path, str | bytes | None] = {readme: "regenerated\n", table: "new table\n"}
+    with pytest.raises(PendcliError, match=r"'.*README\.md' changed since this run read it"):
+        write_set(changes, read)
+    assert _snapshot(tmp_path) == {"README.md": b"old readme\nmy edit\n"}  # nothing written
+    read[readme] = file_digest(readme)
+    write_set(changes, read)  # read again: written
+    assert _snapshot(tmp_path) == {"README.md": b"regenerated\n", "t.csv": b"new table\n"}
+
+
+def test_write_set_refuses_a_file_created_or_removed_since_it_was_read(tmp_path: Path) -> None:
+    from pendcli.core.files import file_digest, write_set
+
+    absent, present = tmp_path / "new.csv", tmp_path / "old.csv"
+    present.write_text("x\n")
+    read = {absent: file_digest(absent), present: file_digest(present)}
+    assert read[absent] is None
+    absent.write_text("made meanwhile\n")
+    with pytest.raises(PendcliError, match=r"new\.csv' was created since"):
+        write_set({absent: "mine\n"}, read)
+    absent.unlink()
+    present.unlink()
+    with pytest.raises(PendcliError, match=r"old\.csv' was removed since"):
+        write_set({absent: "mine\n"}, read)
+    assert not absent.exists()
+
+
+def _docs_set(tmp_path: Path) -> Path:
+    """A README and docs/schema.md with the generated sections' markers, and no tables."""
+    readme = tmp_path / "README.md"
+
+    def marks(*names: str) -> str:
+        return "".join(f"<!-- {n}:start -->\nold {n}\n<!-- {n}:end -->\n" for n in names)
+
+    readme.write_text(f"# readme\n{marks('sample', 'ledger')}")
+    (tmp_path / "docs").mkdir()
+    (tmp_path / "docs" / "schema.md").write_text(marks("schema"))
+    return readme
+
+
+@pytest.mark.parametrize("tables", [True, False], ids=["regen", "sections"])
+def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, tables: bool
+) -> None:
+    """`make regen` reads the README, computes for most of a minute, then writes: an edit made
+    in between (here by the compute step itself) is refused, nothing written, the edit kept."""
+    from pendcli import docs, regression, reproduce
+
+    readme = _docs_set(tmp_path)
+    monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
+    monkeypatch.setattr(reproduce, "reproduce_all", lambda *a, **k: None)
+    monkeypatch.setattr(docs, "sample_section", lambda result=None: "new sample")
+    monkeypatch.setattr(regression, "regenerated_tables", lambda result: {"x-claims.csv": "id\n"})
+    monkeypatch.setitem(docs.SECTIONS, "schema", lambda: "new schema")
+
+    def ledger_while_someone_edits() -> str:
+        with readme.open("a") as fh:
+            fh.write("my edit\n")
+        return "new ledger"
+
+    monkeypatch.setitem(docs.SECTIONS, "ledger", ledger_while_someone_edits)
+    before = readme.read_text()
+    argv = ["--readme", str(readme), *(["--tables"] if tables else [])]
+    with pytest.raises(PendcliError, match=r"README\.md' changed since this run read it"):
+        docs.main(argv)
+    assert readme.read_text() == before + "my edit\n"
+    assert "old" in (tmp_path / "docs" / "schema.md").read_text()
+    assert not list((tmp_path / "tables").rglob("*.csv"))
+    monkeypatch.setitem(docs.SECTIONS, "ledger", lambda: "new ledger")
+    assert docs.main(argv) == 0  # nothing edited meanwhile: written, the edit kept
+    assert "new ledger" in readme.read_text() and "my edit" in readme.read_text()
+    assert (tmp_path / "tables" / "regenerated" / "x-claims.csv").exists() == tables
+
+
+def test_bench_refuses_to_write_over_an_edit_made_after_it_read(tmp_path: Path) -> None:
+    from pendcli import bench
+
+    page, table = tmp_path / "benchmarks.md", tmp_path / "family.csv"
+    page.write_text(f"# b\n{bench.START}\nold\n{bench.END}\n")
+    table.write_text("old table\n")
+
+    def splice_while_someone_edits(old: str) -> str | None:
+        with page.open("a") as fh:
+            fh.write("my edit\n")
+        return bench.spliced(old, "new figures")
+
+    files: dict[Path, str | bytes | None] = {table: "new table\n"}
+    with pytest.raises(PendcliError, match=r"benchmarks\.md' changed since this run read it"):
+        bench.write_results(files, [(page, splice_while_someone_edits), (None, str)])
+    assert page.read_text().endswith("old\n<!-- bench:end -->\nmy edit\n")
+    assert table.read_text() == "old table\n"
+    bench.write_results({table: "new table\n"}, [(page, lambda old: bench.spliced(old, "new"))])
+    assert "\nnew\n" in page.read_text() and page.read_text().endswith("my edit\n")
+    assert table.read_text() == "new table\n"

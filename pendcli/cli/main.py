@@ -662,6 +662,10 @@ def _invoke(args: list[str]) -> int:
 
         return _fail(describe_os_error(exc), 2)
     except Exception as exc:  # a bug: still one line, unless PENDCLI_DEBUG asks for the trace
+        from pendcli.core.errors import out_of_memory
+
+        if (memory := out_of_memory(exc)) is not None:  # a limit reached, no bug: exit 2
+            return _fail(memory, 2)
         if os.environ.get("PENDCLI_DEBUG"):
             raise
         return _fail(f"internal error: {type(exc).__name__}: {exc} (set PENDCLI_DEBUG=1)", 3)
@@ -703,8 +707,10 @@ def _write_error(message: str, prefix: str = "pendcli: error: ") -> None:
 
 
 def _fail(message: str, code: int) -> int:
-    first = message.strip().splitlines()[0] if message.strip() else "error"
-    _write_error(first)
+    """One line on stderr, whole: a newline in it (a path's) is shown escaped."""
+    from pendcli.core.errors import one_line
+
+    _write_error(one_line(message.strip()) or "error")
     return code
 
 

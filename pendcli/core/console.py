@@ -63,7 +63,7 @@ def console(stderr: bool = False) -> Console:
     stream = sys.stderr if stderr else sys.stdout
     is_tty = stream.isatty()
     colour = wants_colour(is_tty)
-    return Console(
+    made = Console(
         file=stream,
         force_terminal=colour or is_tty,  # (rich would read FORCE_COLOR even under NO_COLOR)
         no_color=not colour,
@@ -71,6 +71,23 @@ def console(stderr: bool = False) -> Console:
         width=None if is_tty else _pipe_width(),
         soft_wrap=False,
     )
+    if stderr:  # (stdout's own broken pipe is NamedStream's: a quiet exit, 141)
+        made.on_broken_pipe = lambda: _status_unread(made)  # type: ignore[method-assign]
+    return made
+
+
+def _status_unread(made: Console) -> None:
+    """Standard error's reader stopped (``2>&1 >out.json | head -1``): status lines are only
+    advice, so the run goes on without them. rich's own answer was exit 1 with standard
+    *output* sent to /dev/null, the result lost."""
+    made.quiet = True
+    set_quiet(True)
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)  # Python's last flush of stderr goes there
+        os.dup2(devnull, sys.stderr.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):
+        pass
 
 
 def _escape_unencodable(exc: UnicodeError) -> tuple[str, int]:

@@ -1,6 +1,12 @@
-"""The package's one exception type: the CLI turns it into one red line and exit code 2."""
+"""The package's one exception type: the CLI turns it into one red line and exit code 2.
+
+Also the wording of an error line itself: :func:`one_line` (a newline in a path shown as
+``\\n``, so the line stays whole) and :func:`out_of_memory` (a run that ran out of memory).
+"""
 
 from __future__ import annotations
+
+import re
 
 
 class PendcliError(Exception):
@@ -26,3 +32,43 @@ def out_of_range(parameter: str, value: object, expected: str, what: str = "") -
     return PendcliError(
         f"{parameter}: {value} is out of range{what}; expected {expected}", parameter
     )
+
+
+# Characters that would end or rewrite a line on a terminal: C0 and C1 controls (newline,
+# carriage return, escape...) and the Unicode line and paragraph separators.
+_LINE_BREAKING = re.compile("[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+
+
+def one_line(message: str) -> str:
+    """``message`` as one whole line: a newline (in a path, say) or another control character
+    is shown escaped as Python writes it (``\\n``, ``\\x1b``), never acted on."""
+    return _LINE_BREAKING.sub(lambda m: m.group().encode("unicode_escape").decode(), message)
+
+
+# How the loader says a library could not be mapped for lack of address space (ulimit -v).
+_NO_MEMORY = re.compile(r"failed to map segment|cannot allocate memory|out of memory", re.I)
+
+
+def out_of_memory(exc: BaseException) -> str | None:
+    """One line for a run that ran out of memory: a MemoryError, or a library that could not
+    be loaded for lack of it (an ImportError); None for any other error."""
+    if isinstance(exc, MemoryError):
+        detail = str(exc) or "an allocation failed"
+    elif isinstance(exc, ImportError) and (found := _NO_MEMORY.search(str(exc))):
+        detail = f"cannot load {exc.path or exc.name or 'a library'} ({found.group()})"
+    else:
+        return None
+    return f"out of memory{_address_space_limit()}: {detail}"
+
+
+def _address_space_limit() -> str:
+    """The soft ``ulimit -v``, from /proc: loading the resource module may itself need the
+    memory that is missing."""
+    try:
+        with open("/proc/self/limits", encoding="ascii") as limits:
+            soft = next(ln for ln in limits if ln.startswith("Max address space")).split()[3]
+    except (OSError, StopIteration, IndexError, ValueError):
+        return ""
+    if not soft.isdigit():  # unlimited
+        return ""
+    return f" (the address space is limited to {int(soft) >> 20} MB: ulimit -v)"

@@ -18,8 +18,8 @@ Temporary names carry the writer's pid (``.name.new-<pid>-<random>``,
 when that pid is no longer alive, and nothing else beside a target is ever touched. Modes
 follow the umask (a replaced file or folder keeps its own).
 
-An OS failure (full disk, read-only folder, missing parent) becomes a :class:`PendcliError`
-naming the path and the cause, never a traceback.
+An OS failure (full disk, read-only folder, missing parent, the limit of open files reached)
+becomes a :class:`PendcliError` naming the path and the cause, never a traceback.
 """
 
 from __future__ import annotations
@@ -35,7 +35,7 @@ import re
 import shutil
 import stat
 import tempfile
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 
 from pendcli.core.errors import PendcliError
@@ -44,7 +44,9 @@ __all__ = [
     "MANIFEST",
     "atomic_write",
     "check_owned",
+    "content_digest",
     "describe_os_error",
+    "file_digest",
     "lock_file",
     "locked",
     "manifest_text",
@@ -74,10 +76,24 @@ def describe_os_error(exc: OSError, path: Path | str | None = None, action: str 
     error can only come from a write, else to "access".
     """
     where = path if path is not None else (exc.filename or "")
+    if exc.errno in (errno.EMFILE, errno.ENFILE):  # what was opened is not at fault
+        return _too_many_open(exc.errno, where)
     cause = exc.strerror or str(exc) or type(exc).__name__
     if not action:
         action = "write" if path is not None or exc.errno in _WRITE_ERRNOS else "access"
     return f"cannot {action} {where}: {cause}" if where != "" else f"I/O error: {cause}"
+
+
+def _too_many_open(code: int, where: Path | str) -> str:
+    """EMFILE (this process's limit, ``ulimit -n``) or ENFILE (the system's table) reached."""
+    opening = f" opening {where}" if where != "" else ""
+    if code == errno.ENFILE:
+        return f"too many open files on this system (ENFILE){opening}"
+    import resource
+
+    soft = resource.getrlimit(resource.RLIMIT_NOFILE)[0]
+    limit = "" if soft == resource.RLIM_INFINITY else f", is {soft}"
+    return f"too many open files (EMFILE: the limit, ulimit -n{limit}){opening}; raise the limit"
 
 
 def _fsync_dir(folder: Path) -> None:
@@ -224,6 +240,7 @@ def replace_directory(target: Path | str, fill: Callable[[Path], object]) -> Pat
     except OSError as exc:
         raise PendcliError(describe_os_error(exc, target)) from None
     new: Path | None = None
+    spare = _Spare()  # so the clean-up can still open a folder once the limit is reached
     try:
         with _signals_held():  # named before a stop can land, so the clean-up below finds it
             new = Path(
@@ -231,17 +248,40 @@ def replace_directory(target: Path | str, fill: Callable[[Path], object]) -> Pat
             )
         old = _fill_and_swap(target, new, fill, mode)
     except OSError as exc:
-        _discard(new)
-        where = _as_target(str(exc.filename), new, target) if exc.filename and new else target
-        raise PendcliError(describe_os_error(exc, where)) from None
+        _discard(new, spare)
+        raise PendcliError(_fill_error(exc, new, target)) from None
     except PendcliError as exc:
-        _discard(new)
+        _discard(new, spare)
         raise PendcliError(_as_target(str(exc), new, target) if new else str(exc)) from None
     except BaseException:
-        _discard(new)
+        _discard(new, spare)
         raise
-    _discard(old)  # the swap is done: only the old folder is left to remove
+    _discard(old, spare)  # the swap is done: only the old folder is left to remove
     return target
+
+
+class _Spare:
+    """One file descriptor held in reserve and given back before a clean-up: a run that
+    reached its limit of open files (EMFILE) can then still remove its temporary folder."""
+
+    def __init__(self) -> None:
+        try:
+            self.fd = os.open(os.devnull, os.O_RDONLY)
+        except OSError:
+            self.fd = -1
+
+    def release(self) -> None:
+        self.fd = _closed(self.fd)
+
+
+def _fill_error(exc: OSError, new: Path | None, target: Path) -> str:
+    """The line for an OS error while filling ``new``: a file of the new folder is named where
+    the user will look (``target``); any other file (a font read, a module imported) as it is,
+    never as one pendcli was writing."""
+    name = os.fsdecode(exc.filename) if exc.filename else ""
+    if new is not None and name and Path(name).is_relative_to(new):
+        return describe_os_error(exc, _as_target(name, new, target))
+    return describe_os_error(exc) if name else describe_os_error(exc, target)
 
 
 def _fill_and_swap(
@@ -268,12 +308,30 @@ def _fill_and_swap(
     return old
 
 
-def _discard(folder: Path | None) -> None:
+def _discard(folder: Path | None, spare: _Spare | None = None) -> None:
     """Remove a temporary folder, with the stop signals held (a second one must not cut the
-    clean-up short; it is raised after)."""
+    clean-up short; it is raised after). ``spare`` is released first; where shutil.rmtree
+    cannot finish (it holds two descriptors a level), :func:`_remove_tree` needs one."""
+    if spare is not None:
+        spare.release()
     if folder is not None:
         with _signals_held():
             shutil.rmtree(folder, ignore_errors=True)
+            if os.path.lexists(folder):
+                with contextlib.suppress(OSError):
+                    _remove_tree(folder)
+
+
+def _remove_tree(folder: Path) -> None:
+    """Remove ``folder`` and all under it holding one descriptor at a time (os.listdir closes
+    its own before returning); links are removed, never followed."""
+    for name in os.listdir(folder):
+        path = folder / name
+        if stat.S_ISDIR(os.lstat(path).st_mode):
+            _remove_tree(path)
+        else:
+            os.unlink(path)
+    os.rmdir(folder)
 
 
 def _as_target(text: str, new: Path, target: Path) -> str:
@@ -540,7 +598,9 @@ def probe_lock(target: Path, what: str) -> None:
             pass
 
 
-def write_set(changes: dict[Path, str | bytes | None]) -> None:
+def write_set(
+    changes: dict[Path, str | bytes | None], unchanged: Mapping[Path, str | None] | None = None
+) -> None:
     """Write a set of files in different places (``None``: remove that file) as nearly at
     once as POSIX allows.
 
@@ -550,6 +610,10 @@ def write_set(changes: dict[Path, str | bytes | None]) -> None:
     Ctrl-C or a TERM arriving mid-way takes effect after the whole set. Only a SIGKILL or a power
     cut within that loop (a few renames) can leave it part new. A failure before the loop
     leaves every target untouched.
+
+    ``unchanged``: path -> :func:`content_digest` of what the caller read from it (None: it
+    was absent). Just before the renames each must still hold that, else nothing is written
+    and the error names the file: an edit made while the set was computed is never lost.
     """
 
     temporaries: dict[Path, str] = {}
@@ -560,6 +624,7 @@ def write_set(changes: dict[Path, str | bytes | None]) -> None:
             for path, data in changes.items():
                 if data is not None:
                     temporaries[path] = _write_temporary(path, data)
+            _refuse_changed(unchanged or {})
             for path, data in changes.items():
                 if data is None:
                     with contextlib.suppress(FileNotFoundError):
@@ -575,6 +640,33 @@ def write_set(changes: dict[Path, str | bytes | None]) -> None:
             for tmp in temporaries.values():
                 with contextlib.suppress(OSError):
                     os.unlink(tmp)
+
+
+def content_digest(data: str | bytes) -> str:
+    """SHA-256 of ``data`` (text as UTF-8): what :func:`write_set` compares with the disk."""
+    return hashlib.sha256(data.encode("utf-8") if isinstance(data, str) else data).hexdigest()
+
+
+def file_digest(path: Path | str) -> str | None:
+    """:func:`content_digest` of the file's bytes now; None where there is no such file."""
+    try:
+        with open(path, "rb") as fh:
+            return hashlib.file_digest(fh, "sha256").hexdigest()
+    except FileNotFoundError:
+        return None
+    except OSError as exc:
+        raise PendcliError(describe_os_error(exc, path, "read")) from None
+
+
+def _refuse_changed(unchanged: Mapping[Path, str | None]) -> None:
+    for path, digest in unchanged.items():
+        now = file_digest(path)
+        if now != digest:
+            what = "changed" if now and digest else "was removed" if digest else "was created"
+            raise PendcliError(
+                f"{str(path)!r} {what} since this run read it (an edit made meanwhile?); "
+                "nothing was written, so that edit is kept; run again to include it"
+            )
 
 
 def _write_temporary(target: Path, data: str | bytes) -> str:

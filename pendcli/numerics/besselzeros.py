@@ -51,6 +51,7 @@ __all__ = [
     "METHODS",
     "MPMATH_MAX_COUNT",
     "ORDERS",
+    "SCIPY_MAX_COUNT",
     "SERIES_MAX_ERROR",
     "ascending_series",
     "bessel_zeros",
@@ -59,6 +60,7 @@ __all__ = [
     "iter_bessel_zeros",
     "mcmahon_truncation_bound",
     "series_error_bound",
+    "series_max_count",
     "series_safe_limit",
 ]
 
@@ -70,6 +72,9 @@ SERIES_MAX_ERROR = 1e-6  # largest predicted absolute error of a zero the series
 # mpmath takes 3.6 ms a zero here (20,000 zeros: 73 s measured); 2,000 is about 8 s, the most
 # a reference run should take. Larger counts: "auto" is correctly rounded (see above).
 MPMATH_MAX_COUNT = 2_000
+# scipy's jn_zeros finds every zero from the first, holding four arrays of them (the zeros of
+# J, J', Y, Y'): no chunk can start later. 10^6 zeros: 32 MB of them and ~2 s; 10^7 is 320 MB.
+SCIPY_MAX_COUNT = 1_000_000
 
 _PI_HI = math.pi
 _PI_LO = 1.2246467991473532e-16  # π - math.pi (exact to ~1e-32): the second word of π
@@ -91,6 +96,14 @@ def check_zeros_request(order: int, count: int, method: str) -> None:
             f"count: {count} is too large for method 'mpmath' (about 4 ms a zero); "
             f"expected 1 <= count <= {MPMATH_MAX_COUNT} (method auto is correctly "
             "rounded at any count)"
+        )
+    if method == "series":
+        _check_series_count(int(order), int(count))
+    if method == "scipy" and count > SCIPY_MAX_COUNT:
+        raise PendcliError(
+            f"count: {count} is too large for method 'scipy' (it holds every zero at once, "
+            f"32 bytes each); expected 1 <= count <= {SCIPY_MAX_COUNT} (method auto is "
+            "correctly rounded and computed in bounded memory at any count)"
         )
 
 
@@ -155,14 +168,17 @@ def iter_bessel_zeros(
     order: int, count: int, method: str = "auto", chunk: int = CHUNK
 ) -> Iterator[np.ndarray]:
     """The first ``count`` zeros in consecutive chunks of at most ``chunk``: memory bounded
-    whatever the count for the element-wise methods (the others come as one chunk).
+    whatever the count for the element-wise methods; the others compute every zero at once
+    (their counts are bounded: :data:`SCIPY_MAX_COUNT`, :data:`MPMATH_MAX_COUNT`, the series'
+    safe range) and give them in chunks too, so a writer never formats more than a chunk.
 
     The request is checked at the call, before any chunk is asked for.
     """
     check_zeros_request(order, count, method)
-    if method not in _ELEMENTWISE:
-        return iter([bessel_zeros(order, count, method)])
     starts = range(1, int(count) + 1, chunk)
+    if method not in _ELEMENTWISE:  # computed at once (its count bounded), given in chunks:
+        zeros = bessel_zeros(order, count, method)  # a writer formats one chunk at a time
+        return (zeros[a - 1 : a - 1 + chunk] for a in starts)
     return (
         bessel_zeros_at(order, np.arange(a, min(a + chunk, int(count) + 1)), method) for a in starts
     )
@@ -320,19 +336,31 @@ def series_safe_limit(order: int, max_error: float = SERIES_MAX_ERROR) -> float:
     return float(brentq(lambda z: series_error_bound(order, z) - max_error, 1.0, 200.0))
 
 
+def series_max_count(order: int) -> int:
+    """How many zeros of J_order Lecornu's series gives within :data:`SERIES_MAX_ERROR`: those
+    below :func:`series_safe_limit` by half a unit (McMahon's guesses; zeros are more than π
+    apart, so only the first limit/π + 2 are guessed)."""
+    limit = series_safe_limit(order)
+    guesses = _mcmahon(order, np.arange(1, int(limit / math.pi) + 3, dtype=float))
+    return int(np.searchsorted(guesses, limit - 0.5))
+
+
+def _check_series_count(order: int, count: int) -> None:
+    allowed = series_max_count(order)
+    if count > allowed:
+        raise PendcliError(
+            f"count: {count} is beyond the safe range of Lecornu's series for J_{order}: "
+            f"cancellation makes zeros above z = {series_safe_limit(order):.1f} err by more "
+            f"than {SERIES_MAX_ERROR:g}; expected 1 <= count <= {allowed} "
+            "(use method 'auto' beyond)"
+        )
+
+
 def _series_zeros(order: int, count: int) -> np.ndarray:
     from scipy.optimize import brentq
 
-    limit = series_safe_limit(order)
+    _check_series_count(order, count)  # before count guesses are made (10^7: 700 MB)
     guesses = _mcmahon(order, np.arange(1, count + 1, dtype=float))
-    if guesses[-1] > limit - 0.5:
-        allowed = int(np.searchsorted(guesses, limit - 0.5))
-        raise PendcliError(
-            f"count: {count} is beyond the safe range of Lecornu's series for J_{order}: "
-            f"cancellation makes zeros above z = {limit:.1f} err by more than "
-            f"{SERIES_MAX_ERROR:g}; expected 1 <= count <= {allowed} "
-            "(use method 'auto' beyond)"
-        )
 
     def f(x: float) -> float:
         return float(ascending_series(order, x))
