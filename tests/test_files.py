@@ -323,7 +323,9 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
 
     readme = _docs_set(tmp_path)
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
-    monkeypatch.setattr(reproduce, "reproduce_all", lambda *a, **k: None)
+    monkeypatch.setattr(
+        reproduce, "reproduce_all", lambda *a, **k: reproduce.ReproduceResult(papers=())
+    )
     monkeypatch.setattr(docs, "sample_section", lambda result=None: "new sample")
     monkeypatch.setattr(regression, "regenerated_tables", lambda result: {"x-claims.csv": "id\n"})
     monkeypatch.setitem(docs.SECTIONS, "schema", lambda: "new schema")
