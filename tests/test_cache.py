@@ -355,8 +355,9 @@ def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
 
 
 def test_another_version_of_a_library_is_another_key(tmp_path, monkeypatch):
-    """The key names every distribution installed beside the libraries pendcli computes with:
-    a library upgraded (its dist-info renamed) is a miss, never a result of the old one."""
+    """The key names the libraries pendcli computes with and what they require: a library
+    upgraded (its dist-info renamed) is a miss, never a result of the old one; a test tool
+    installed beside them (`make test` adds pytest, ruff, mypy) keeps the key."""
     import sys
 
     from pendcli.core import cache, versions
@@ -374,6 +375,65 @@ def test_another_version_of_a_library_is_another_key(tmp_path, monkeypatch):
 
     (tmp_path / "tables").mkdir()
     before = key()
+    (site / "pytest-9.0.dist-info").mkdir()  # a test tool, required by nothing pendcli uses
+    assert key() == before
     (site / "fakelib-1.0.dist-info").rename(site / "fakelib-1.1.dist-info")
     assert key() != before
     assert key() == key()
+
+
+def _distribution(site: Path, name: str, *requires: str) -> None:
+    info = site / f"{name}.dist-info"
+    info.mkdir(parents=True)
+    lines = [f"Name: {name.split('-')[0]}", *(f"Requires-Dist: {r}" for r in requires)]
+    (info / "METADATA").write_text("\n".join([*lines, "", "Requires-Dist: in the body"]))
+
+
+def test_the_key_follows_what_the_libraries_require_and_no_extra(tmp_path):
+    from pendcli.core.cache import required_distributions
+
+    _distribution(tmp_path, "scipy-1.0", "numpy>=1.25", "Foo.Bar (>=2)", 'pytest; extra == "test"')
+    _distribution(tmp_path, "numpy-2.0", 'colorama; platform_system == "Windows"')
+    _distribution(tmp_path, "foo_bar-2.1", "numpy")
+    _distribution(tmp_path, "pytest-9.0", "pluggy")
+    _distribution(tmp_path, "pluggy-1.6")
+    (tmp_path / "old_style-0.1-py3.11.egg-info").mkdir()
+    found = required_distributions(tmp_path, ["scipy", "Old.Style", "absent"])
+    assert found == [
+        "foo_bar-2.1.dist-info",
+        "numpy-2.0.dist-info",
+        "old_style-0.1-py3.11.egg-info",
+        "scipy-1.0.dist-info",
+    ]
+
+
+def test_the_installed_closure_is_what_importlib_metadata_says() -> None:
+    """Against an independent reading: importlib.metadata's own requirement lists."""
+    import re
+    from importlib.metadata import PackageNotFoundError, requires
+
+    from pendcli.core.cache import _installed
+    from pendcli.core.versions import DEPENDENCIES
+
+    def project(name: str) -> str:
+        return re.sub(r"[-_.]+", "-", name).lower()
+
+    closure, queue = set(), [project(d) for d in DEPENDENCIES]
+    while queue:
+        name = queue.pop()
+        if name in closure:
+            continue
+        try:
+            found = requires(name) or []
+        except PackageNotFoundError:
+            continue
+        closure.add(name)
+        queue += [project(re.split(r"[ ;<>=!~\[(]", r, maxsplit=1)[0])
+                  for r in found if "extra ==" not in r]  # fmt: skip
+    listed = {
+        project(line.rsplit("/", 1)[1].rsplit(".", 1)[0].split("-", 1)[0])
+        for line in _installed().splitlines()
+        if line.endswith((".dist-info", ".egg-info"))
+    }
+    assert listed == closure
+    assert "pytest" not in listed and "ruff" not in listed

@@ -3,12 +3,13 @@
 An entry's key is a SHA-256 over the bytes (and relative names) of every file of the
 pendcli package and of the other source folders given (a registered paper's own package),
 the bytes of every file under the tables folder in use (``$PENDCLI_TABLES`` included), the
-version of Python, the machine, every distribution installed where the libraries are (the
-names ``numpy-2.3.4.dist-info`` of site-packages: one listing, where
-:mod:`importlib.metadata` costs a tenth of a second), and the parameters of the
-computation (its kind, the paper). Any byte changed in any of them is another key: a miss,
-never a stale result. What the key cannot see (an environment variable that picks another
-BLAS kernel, a libm of the same version) is why ``pendcli check`` never reads the cache.
+version of Python, the machine, the libraries pendcli computes with and every distribution
+they require, transitively (the names ``numpy-2.3.4.dist-info`` of site-packages, followed
+through their ``Requires-Dist``: a test tool installed beside them is not in it), and the
+parameters of the computation (its kind, the paper). Any byte changed in any of them is
+another key: a miss, never a stale result. What the key cannot see (an environment variable
+that picks another BLAS kernel, a libm of the same version) is why ``pendcli check`` never
+reads the cache.
 Hashing reads regular files only, in chunks, each at most :data:`MAX_HASHED_BYTES`, and no
 link out of its folder: anything else (a FIFO, a device, a huge file) is one line, exit 2.
 
@@ -56,6 +57,7 @@ __all__ = [
     "cached_json",
     "content_digest",
     "entries",
+    "required_distributions",
     "rows_from_json",
     "rows_to_json",
 ]
@@ -301,8 +303,10 @@ def content_digest(roots: Iterable[tuple[str, Path]]) -> str:
 
 
 def _installed() -> str:
-    """Python's version, the machine, and every distribution installed beside the libraries
-    pendcli computes with (the folders holding numpy, scipy, ...), each with its version."""
+    """Python's version, the machine, and each distribution pendcli computes with (its
+    libraries and everything they require, transitively), each with its version: a test or
+    lint tool installed beside them (pytest, ruff) is not part of a result, so adding one
+    keeps every entry valid."""
     from importlib.util import find_spec
 
     from pendcli.core.versions import DEPENDENCIES
@@ -315,11 +319,47 @@ def _installed() -> str:
             folders[str(Path(spec.origin).parent.parent)] = None
     for folder in folders:
         with contextlib.suppress(OSError):
-            names = os.listdir(folder)
-            found += sorted(
-                f"{folder}/{n}" for n in names if n.endswith((".dist-info", ".egg-info"))
-            )
+            found += [f"{folder}/{n}" for n in required_distributions(Path(folder), DEPENDENCIES)]
     return "\n".join(found)
+
+
+def _project(name: str) -> str:
+    """A distribution's name as PEP 503 compares it (``Markdown_It-py`` -> ``markdown-it-py``)."""
+    return re.sub(r"[-_.]+", "-", name).lower()
+
+
+def required_distributions(folder: Path, roots: Iterable[str]) -> list[str]:
+    """The ``*.dist-info`` / ``*.egg-info`` names in ``folder`` of ``roots`` and of every
+    distribution they require (their ``Requires-Dist``, extras left out), sorted."""
+    metadata = {}
+    for entry in os.listdir(folder):
+        if entry.endswith((".dist-info", ".egg-info")):
+            metadata[_project(entry.rsplit(".", 1)[0].split("-", 1)[0])] = entry
+    wanted, queue = set(), [_project(r) for r in roots]
+    while queue:
+        name = queue.pop()
+        if name in wanted or name not in metadata:
+            continue
+        wanted.add(name)
+        queue += _requires(folder / metadata[name])
+    return sorted(metadata[n] for n in wanted)
+
+
+def _requires(info: Path) -> list[str]:
+    text = ""
+    for file in ("METADATA", "PKG-INFO"):
+        with contextlib.suppress(OSError, UnicodeDecodeError):
+            text = (info / file).read_text(encoding="utf-8")
+            break
+    out = []
+    for line in text.splitlines():
+        if not line.startswith("Requires-Dist:"):
+            continue
+        requirement, _, marker = line.removeprefix("Requires-Dist:").partition(";")
+        name = re.match(r"\s*([A-Za-z0-9][A-Za-z0-9._-]*)", requirement)
+        if name and "extra" not in marker:
+            out.append(_project(name.group(1)))
+    return out
 
 
 def _make(folder: Path) -> None:
