@@ -9,7 +9,7 @@ first disagreement found.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any, Literal
 
@@ -49,7 +49,7 @@ def check_dimensions(formula: Formula, dims: Mapping[str, Dim]) -> DimensionChec
             right = _dim(rhs, dims, seen)
             if lhs is not None:
                 left = _dim(lhs, dims, seen)
-                _agree(left, right, lambda lhs=lhs, rhs=rhs: f"the two sides of {lhs} = {rhs}")
+                _agree(left, right, "the two sides of {} = {}", lhs, rhs)
     except _Mismatch as exc:
         return DimensionCheck("inconsistent", str(exc))
     if all(not d for d in seen):
@@ -57,11 +57,12 @@ def check_dimensions(formula: Formula, dims: Mapping[str, Dim]) -> DimensionChec
     return DimensionCheck("consistent", "sides, terms and function arguments agree")
 
 
-def _agree(a: Dim | None, b: Dim | None, what: Callable[[], str]) -> None:
-    """Raise a mismatch naming ``what()`` (printed only then: 365 formulas agree, and their
-    expressions cost a second to print) unless ``a`` and ``b`` agree."""
+def _agree(a: Dim | None, b: Dim | None, what: str, *parts: Any) -> None:
+    """Raise a mismatch naming ``what`` filled with ``parts`` (printed only then: 365
+    formulas agree, and their expressions cost a second to print) unless ``a`` and ``b``
+    agree."""
     if a is not None and b is not None and _quotient(a, b):
-        raise _Mismatch(f"{what()}: {show(a)} against {show(b)}")
+        raise _Mismatch(f"{what.format(*parts)}: {show(a)} against {show(b)}")
 
 
 def _quotient(a: Dim, b: Dim) -> Dim:
@@ -93,7 +94,7 @@ def _dim(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
         terms = [(t, _dim(t, dims, seen)) for t in expr.args]
         known = [(t, d) for t, d in terms if d is not None]
         for t, d in known[1:]:
-            _agree(known[0][1], d, lambda t=t: f"the terms {known[0][0]} and {t}")
+            _agree(known[0][1], d, "the terms {} and {}", known[0][0], t)
         return known[0][1] if known else None
     if expr.is_Mul:
         total: Dim = {}
@@ -110,9 +111,7 @@ def _dim(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None:
     if isinstance(expr, sp.Derivative):
         return _derivative(expr, dims, seen)
     if isinstance(expr, sp.core.relational.Relational):  # an inequality: its sides agree
-        _agree(
-            _dim(expr.lhs, dims, seen), _dim(expr.rhs, dims, seen), lambda: f"the sides of {expr}"
-        )
+        _agree(_dim(expr.lhs, dims, seen), _dim(expr.rhs, dims, seen), "the sides of {}", expr)
         return {}
     return _function(expr, dims, seen)
 
@@ -123,7 +122,7 @@ def _integral(expr: Any, dims: Mapping[str, Dim], seen: list[Dim]) -> Dim | None
     for limit in expr.limits:
         variable = _dim(limit[0], dims, seen)
         for bound in limit[1:]:
-            _agree(variable, _dim(bound, dims, seen), lambda: f"the limits of {expr}")
+            _agree(variable, _dim(bound, dims, seen), "the limits of {}", expr)
         if total is None or variable is None:
             return None
         total = _product(total, variable)
