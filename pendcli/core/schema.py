@@ -58,6 +58,7 @@ class RowKind:
 
 
 _TEXT, _NUMBER, _OPTIONAL = ("string",), ("number",), ("number", "null")
+_OPT_TEXT = ("string", "null")
 _CAUSE_MEANING = (
     "why it does not agree or hold, null when nothing needs explaining; every cause but "
     "propagated is a root"
@@ -127,11 +128,7 @@ EQUATIONS = RowKind(
             "compared; empty for a definition",
         ),
         Field("observed_order", _OPTIONAL, "for a truncated series: the residual's slope"),
-        Field(
-            "note",
-            _TEXT,
-            "the reading of a misprint, the corrected form of a failure, what a definition defines",
-        ),
+        Field("note", _TEXT, "the ledger's own note (what a definition defines, how it is read)"),
         Field("lines", ("array", "null"), "[first, last]: the lines of the paper's text"),
         Field("printed", ("string", "null"), "the formula as printed, in sympy notation"),
         Field("reading", ("string", "null"), "a misprint's reading, in the same notation"),
@@ -142,6 +139,20 @@ EQUATIONS = RowKind(
             "the printed form's dimensional verdict; null without a printed form",
             ("consistent", "inconsistent", "dimensionless"),
         ),
+        Field("dimensions_detail", _OPT_TEXT, "why: the sides or terms that disagree, if any"),
+        Field("reading_note", _OPT_TEXT, "the ledger's words on a misprint's evident reading"),
+        Field("corrected_note", _OPT_TEXT, "the ledger's words on a failure's correction"),
+        Field("check_corrected", _OPT_TEXT, "the corrected form a failure's check computed"),
+        Field("against", _OPT_TEXT, "the reference the printed form is judged against"),
+        Field(
+            "computed",
+            _OPT_TEXT,
+            "the status computed from the printed form against `against`; null without a "
+            "reference",
+            ("holds", "fails", "misprint"),
+        ),
+        Field("evidence", _OPT_TEXT, "why `computed`: the residual, digits or coefficient"),
+        Field("inconsistency", _OPT_TEXT, "a contradiction of the row's check (null: none)"),
     ),
 )
 STABILITY = RowKind(
