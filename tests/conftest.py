@@ -74,6 +74,8 @@ SLOW_FAMILIES = {
     "`equations` runs of a ledger in one test (2.1-2.3 s)",
     "tests/test_attack_edition.py::test_reproduce_out_of_tables_full_of_markup": "a whole "
     "`reproduce --out` of one paper, its ledger checked, in a process (10 s of CPU)",
+    "tests/test_equation_fields.py::test_every_json_row_carries_the_engines_verdict": "every "
+    "paper's whole ledger (40 s of CPU cold)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.
