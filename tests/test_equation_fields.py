@@ -96,7 +96,7 @@ def test_the_note_column_joins_the_fields_in_order() -> None:
 def test_a_cached_row_of_the_old_shape_is_not_read() -> None:
     """A cache entry written before the fields existed is a miss (read back, it raises)."""
     row = EquationRow("a.eq.1", "a", "(1)", "I", "s", "holds", "", None, "n", against="ref",
-                      computed="holds", evidence="why")  # type: ignore[arg-type]  # fmt: skip
+                      computed="holds", evidence="why")  # fmt: skip
     (stored,) = rows_to_json([row])
     assert rows_from_json(EquationRow, [stored]) == [row]
     old = {k: v for k, v in stored.items() if k not in (*ENGINE, "dimensions_detail")}

@@ -148,7 +148,9 @@ def equation_notes(row: Mapping[str, object]) -> str:
         notes.append(f"reading: {row['reading_note']}")
     if row.get("corrected_note"):
         found = row.get("check_corrected")
-        notes.append(f"corrected: {row['corrected_note']}" + (f" (computed: {found})" if found else ""))
+        notes.append(
+            f"corrected: {row['corrected_note']}" + (f" (computed: {found})" if found else "")
+        )
     if row.get("note"):
         notes.append(str(row["note"]))
     if row.get("against") is not None:

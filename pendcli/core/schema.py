@@ -139,7 +139,11 @@ EQUATIONS = RowKind(
             "the printed form's dimensional verdict; null without a printed form",
             ("consistent", "inconsistent", "dimensionless"),
         ),
-        Field("dimensions_detail", _OPT_TEXT, "the dimension check's reason (for inconsistent: the sides that disagree)"),
+        Field(
+            "dimensions_detail",
+            _OPT_TEXT,
+            "the dimension check's reason (for inconsistent: the sides that disagree)",
+        ),
         Field("reading_note", _OPT_TEXT, "the ledger's words on a misprint's evident reading"),
         Field("corrected_note", _OPT_TEXT, "the ledger's words on a failure's correction"),
         Field("check_corrected", _OPT_TEXT, "the corrected form a failure's check computed"),
@@ -151,8 +155,16 @@ EQUATIONS = RowKind(
             "without a reference",
             ("holds", "fails", "misprint"),
         ),
-        Field("evidence", _OPT_TEXT, "the engine's why: the residual, digits or coefficient that decided"),
-        Field("inconsistency", _OPT_TEXT, "how the row contradicts its check; always null (pendcli refuses such a ledger)"),
+        Field(
+            "evidence",
+            _OPT_TEXT,
+            "the engine's why: the residual, digits or coefficient that decided",
+        ),
+        Field(
+            "inconsistency",
+            _OPT_TEXT,
+            "how the row contradicts its check; always null (pendcli refuses such a ledger)",
+        ),
     ),
 )
 STABILITY = RowKind(
