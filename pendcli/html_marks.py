@@ -207,8 +207,8 @@ def _label_place(
 
 
 def _quotes(row: Row) -> list[str]:
-    return [q for key in ("source", "section", "ocr", "statement", "note")
-            for q in _QUOTE.findall(text_of(row, key))]  # fmt: skip
+    keys = ("source", "section", "ocr", "statement", "reading_note", "corrected_note", "note")
+    return [q for key in keys for q in _QUOTE.findall(text_of(row, key))]
 
 
 def _quote_place(text: str, quote: str) -> tuple[int, int] | None:

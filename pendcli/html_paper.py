@@ -449,7 +449,7 @@ def _equation_rows(equations: Sequence[Row], cited: Mapping[str, Sequence[Row]],
          "statement": text_of(r, "statement"), "cause": EQUATION_CAUSE.get(verdict_of(r), ""),
          "correction": correction_of(r), "check": text_of(r, "check"),
          "formulas": [formula_cell(f) for f in cited.get(id_of(r), [])],
-         "note": text_of(r, "ledger_note") if "ledger_note" in r else text_of(r, "note")}
+         "note": text_of(r, "note")}
         for r in equations
     ]  # fmt: skip
 

@@ -116,8 +116,8 @@ def _findings(
         for r in claims.get(p, []):
             out.append(_entry(p, r, word_of(r.get("cause")), "", text_of(r, "note")))
         for r in equations.get(p, []):
-            note = text_of(r, "ledger_note") if "ledger_note" in r else ""
-            entry = _entry(p, r, EQUATION_CAUSE.get(verdict_of(r), ""), correction_of(r), note)
+            cause, correction = EQUATION_CAUSE.get(verdict_of(r), ""), correction_of(r)
+            entry = _entry(p, r, cause, correction, text_of(r, "note"))
             entry["formulas"] = [formula_cell(f) for f in cited.get(id_of(r), [])]
             out.append(entry)
         for r in formulas.get(p, []):
@@ -200,18 +200,18 @@ def write_html_report(
 
 
 def _ledger_fields(paper: str, rows: Sequence[Row]) -> list[Row]:
-    """The equation rows with the ledger's own reading, correction, printed term and note
-    (the row's ``note`` joins them into one string)."""
+    """The equation rows with the ledger's own words for the reading and the correction (the
+    row's ``reading`` and ``corrected`` are formulas) and its printed terms and quotes."""
     from pendcli.core.ledger import load_ledger
     from pendcli.papers.registry import ledger_papers
 
     if paper not in ledger_papers():
         return list(rows)
     recorded = {r.id: r for r in load_ledger(paper).rows}
-    keys = ("reading", "corrected", "wrong_term", "quote", "note")
+    keys = ("reading", "corrected", "wrong_term", "quote")
     return [
-        {**row, **{("ledger_note" if k == "note" else k): getattr(recorded[id_of(row)], k, None)
-                   for k in keys}} if id_of(row) in recorded else row
+        {**row, **{k: getattr(recorded[id_of(row)], k, None) for k in keys}}
+        if id_of(row) in recorded else row
         for row in rows
     ]  # fmt: skip
 

@@ -20,6 +20,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.rows import equation_notes
 from pendcli.core.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
 from pendcli.render.columns import Column, Row
 from pendcli.render.json import to_json
@@ -496,7 +497,8 @@ def _equation_section(rows: list[EquationRow]) -> list[str]:
     keys = ("paper", *STATUSES, "total", "checked")
     failing = (EquationStatus.FAILS, EquationStatus.MISPRINT)
     wrong = [r.as_dict() for r in rows if r.status in failing]
-    columns = [Column(k, k) for k in ("equation", "section", "statement", "status", "note")]
+    columns = [Column(k, k) for k in ("equation", "section", "statement", "status")]
+    columns.append(Column("note", "note", fmt=equation_notes))
     return [
         "### Equation ledger",
         "",

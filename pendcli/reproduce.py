@@ -88,7 +88,7 @@ class ReproduceResult:
         return out + self.summary_sections()
 
     def _paper_sections(self, key: str, compact: bool, only_failing: bool) -> list[Section]:
-        from pendcli.render.views import FORMULA_COLUMNS, claim_columns
+        from pendcli.render.views import EQUATION_COLUMNS, FORMULA_COLUMNS, claim_columns
         from pendcli.summary import (
             compact_claim_columns,
             compact_equation_columns,
@@ -111,7 +111,7 @@ class ReproduceResult:
             fcols = compact_formula_columns() if compact else FORMULA_COLUMNS
             out.append((f"{name}: derived formulas", frows, fcols))
         if eqs:
-            ecols = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
+            ecols = compact_equation_columns() if compact else EQUATION_COLUMNS
             what = "equations that fail or are misprinted" if compact else "equation ledger"
             out.append((f"{name}: {what}", eqs, ecols))
         return out
@@ -179,9 +179,6 @@ class ReproduceResult:
         counts = self.verdict_counts()[key]
         order = (*CLAIM_VERDICTS, *(f"formula {v}" for v in FORMULA_VERDICTS))
         return ", ".join(f"{counts[v]} {v}" for v in order if v in counts)
-
-
-EQUATION_KEYS = ("id", "equation", "section", "status", "check", "observed_order", "note")
 
 
 def _counts(*pairs: tuple[str, str]) -> tuple[Column, ...]:

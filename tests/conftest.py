@@ -78,6 +78,8 @@ SLOW_FAMILIES = {
     "with its figures, in a process (4 s of CPU)",
     "tests/test_attack_misc.py::test_scipy_zeros_are_written_a_chunk_at_a_time": "400,000 "
     "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
+    "tests/test_equation_fields.py::test_every_json_row_carries_the_engines_verdict": "every "
+    "paper's whole ledger (40 s of CPU cold)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.

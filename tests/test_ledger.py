@@ -26,6 +26,7 @@ from pendcli.core.ledger import (
     run_check,
     verify,
 )
+from pendcli.core.rows import equation_notes
 from pendcli.papers.registry import equation_rows, ledger_papers, paper
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -150,7 +151,10 @@ def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) ->
     rows = equation_rows(["charbonnier"], tmp_path)
     assert all(tuple(r.as_dict()) == OUTPUT_KEYS for r in rows)
     fails = next(r for r in rows if r.status == "fails")
-    assert "(computed: " in fails.note
+    assert fails.check_corrected and fails.computed == "fails" and fails.evidence
+    assert f"(computed: {fails.check_corrected})" in equation_notes(fails.as_dict())
+    definition = next(r for r in rows if r.status == "definition")
+    assert (definition.against, definition.computed, definition.evidence) == (None, None, None)
     counts = coverage(rows)["charbonnier"]
     assert (counts["total"], counts["checked"], counts["fails"]) == (4, 3, 1)
 

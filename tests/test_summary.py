@@ -77,7 +77,7 @@ def test_equations_command_lists_each_label_and_filters_by_status(monkeypatch, s
     code, out, err = invoke(*args)
     rows = json.loads(out)["equations"]
     assert rows and {r["status"] for r in rows} == {"fails"}
-    assert all("corrected:" in r["note"] for r in rows)  # each failure with its correction
+    assert all(r["corrected_note"] and r["check_corrected"] for r in rows)  # each corrected
     assert_clean_error(*invoke("equations", "--status", "wrong")[::2])
 
 

@@ -50,7 +50,8 @@ def equations(
     from pendcli.core.vocabulary import STATUSES
     from pendcli.papers.registry import resolve_papers
     from pendcli.render import Column
-    from pendcli.reproduce import EQUATION_KEYS, ledger_rows
+    from pendcli.render.views import EQUATION_COLUMNS
+    from pendcli.reproduce import ledger_rows
     from pendcli.summary import compact_equation_columns
 
     if status is not None and status not in STATUSES:
@@ -63,7 +64,7 @@ def equations(
             texts = {p: _text_coverage(stored, p) for p in counts}
     shown = [r.as_dict() for r in rows if status is None or r.status == status]
     compact = fmt is OutputFormat.table and not notes
-    columns = compact_equation_columns() if compact else [Column(k, k) for k in EQUATION_KEYS]
+    columns = compact_equation_columns() if compact else EQUATION_COLUMNS
     tally = [{"paper": p, **c, **texts[p]} for p, c in counts.items()]
     # The text's display formulas ($$ blocks) inside some row's lines, of all of them.
     count_columns = [

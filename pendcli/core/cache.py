@@ -63,7 +63,7 @@ __all__ = [
 ]
 
 ENV = "PENDCLI_CACHE"
-FORMAT = 2  # the entry layout; a new one makes every old entry a miss
+FORMAT = 3  # the entry layout and its rows' fields; a new one makes every old entry a miss
 # kept, the most recently used; older entries are removed when one is written (a report of
 # every paper is about 8 MB)
 KEEP = 200

@@ -31,7 +31,7 @@ from pendcli.core.ledger_formulas import (
     validate_scopes,
     validate_symbols,
 )
-from pendcli.core.rows import EquationRow
+from pendcli.core.rows import NO_STATUS, EquationRow
 from pendcli.core.text_blocks import Span, validate_span
 from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES, FormulaVerdict
 from pendcli.core.vocabulary import EquationStatus as Status
@@ -57,6 +57,7 @@ __all__ = [
     "labels_in_text",
     "load_ledger",
     "parse_ledger",
+    "printed_problem",
     "row_printed_status",
     "run_check",
     "verify",
@@ -386,31 +387,22 @@ def verify(row: LedgerRow, check: EquationCheck | None) -> str | None:
     return None
 
 
+# (the status the printed form earns, None for none the ledger may record; why)
+Computed = tuple[str | None, str]
+
+
 @dataclass(frozen=True)
 class Evaluated:
     row: LedgerRow
     check: EquationCheck | None
     problem: str | None
     dimensions: DimensionCheck | None = None  # the printed form's, when it has one
-    computed: str | None = None  # the status computed from the printed form, and why
+    computed: Computed | None = None  # computed from the printed form; None without a reference
 
     def output_row(self) -> EquationRow:
-        """The row every output shows."""
-        row, check = self.row, self.check
-        notes = []
-        if row.reading:
-            notes.append(f"reading: {row.reading}")
-        if row.corrected:
-            found = check.corrected if check is not None else None
-            notes.append(f"corrected: {row.corrected}" + (f" (computed: {found})" if found else ""))
-        if row.note:
-            notes.append(row.note)
-        if self.computed:
-            notes.append(f"computed from the printed form: {self.computed}")
-        if self.dimensions is not None and self.dimensions.verdict == "inconsistent":
-            notes.append(f"dimensions: {self.dimensions.detail}")
-        if self.problem:
-            notes.append(f"LEDGER INCONSISTENT: {self.problem}")
+        """The row every output shows: each piece in a field of its own."""
+        row, check, dims = self.row, self.check, self.dimensions
+        status, why = self.computed if self.computed is not None else (None, None)
         return EquationRow(
             id=row.id,
             paper=row.paper,
@@ -420,13 +412,28 @@ class Evaluated:
             status=row.status,
             check=f"{check.method}: {check.detail}" if check is not None else "",
             observed_order=check.observed_order if check is not None else None,
-            note="; ".join(notes),
+            note=row.note or "",
             lines=row.lines,
             printed=row.printed,
             reading=row.reading_formula,
             corrected=row.corrected_formula,
-            dimensions=self.dimensions.verdict if self.dimensions is not None else None,
+            dimensions=dims.verdict if dims is not None else None,
+            dimensions_detail=dims.detail if dims is not None else None,
+            reading_note=row.reading,
+            corrected_note=row.corrected,
+            check_corrected=_check_corrected(row, check),
+            against=row.reference,
+            computed=Status(status) if status is not None else None,
+            evidence=why,
+            inconsistency=self.problem,
         )
+
+
+def _check_corrected(row: LedgerRow, check: EquationCheck | None) -> str | None:
+    """The corrected form the check of a failing row found (None for any other row)."""
+    if row.corrected is None or check is None:
+        return None
+    return check.corrected or None
 
 
 # (i, n): the i-th of n contiguous slices of a ledger's rows, so that two processes can
@@ -447,27 +454,30 @@ def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> lis
         check = run_check(row, checks)
         symbols = ledger.symbols_for(row)
         dims = row_dimensions(row, symbols).get("printed")
-        computed, contradiction = verify_printed(row, symbols, checks)
-        problem = verify(row, check) or contradiction
+        computed = row_printed_status(row, symbols, checks) if row.reference else None
+        problem = verify(row, check) or printed_problem(row, computed)
         out.append(Evaluated(row, check, problem, dims, computed))
     return out
+
+
+def printed_problem(row: LedgerRow, computed: Computed | None) -> str | None:
+    """How the status ``computed`` from the row's printed form contradicts the recorded one,
+    or None when they agree (or the row has no reference)."""
+    if computed is None or computed[0] == row.status:
+        return None
+    status, why = computed
+    return f"recorded {row.status}, but the printed form gives {status or NO_STATUS}: {why}"
 
 
 def verify_printed(
     row: LedgerRow, symbols: dict[str, str], checks: ModuleType | None
 ) -> tuple[str | None, str | None]:
-    """(the status computed from the row's printed form and why, why it contradicts the
-    recorded status or None); (None, None) for a row without a reference."""
+    """(the status computed from the row's printed form and why, as one line; why it
+    contradicts the recorded status or None); (None, None) for a row without a reference."""
     if row.reference is None:
         return None, None
-    status, why = row_printed_status(row, symbols, checks)
-    if status != row.status:
-        found = status or "no status the ledger may record"
-        return (
-            f"{found}: {why}",
-            f"recorded {row.status}, but the printed form gives {found}: {why}",
-        )
-    return f"{status}: {why}", None
+    computed = row_printed_status(row, symbols, checks)
+    return f"{computed[0] or NO_STATUS}: {computed[1]}", printed_problem(row, computed)
 
 
 def row_printed_status(

@@ -9,11 +9,12 @@ causes are the words of :mod:`pendcli.core.vocabulary`.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 from pendcli.core.vocabulary import EquationStatus, FormulaVerdict, Verdict
 
-__all__ = ["ClaimRow", "EquationRow", "FormulaRow", "Recomputed"]
+__all__ = ["NO_STATUS", "ClaimRow", "EquationRow", "FormulaRow", "Recomputed", "equation_notes"]
 
 
 @dataclass(frozen=True)
@@ -94,7 +95,13 @@ def _json_number(v: object) -> object:
 @dataclass(frozen=True)
 class EquationRow:
     """One row of the equation ledger, its check run: what ``pendcli equations``, ``reproduce
-    --equations``, the report and the HTML show."""
+    --equations``, the report and the HTML show.
+
+    Each piece is a field of its own: the ledger's words (``note``, ``reading_note``,
+    ``corrected_note``), what the row's check found (``check``, ``check_corrected``), what the
+    engine computed from the printed form against its reference (``against``, ``computed``,
+    ``evidence``) and the printed form's dimensions (``dimensions``, ``dimensions_detail``).
+    """
 
     id: str
     paper: str
@@ -104,15 +111,53 @@ class EquationRow:
     status: EquationStatus
     check: str  # "method: detail" of the check run, "" for rows without one
     observed_order: float | None
-    note: str  # the reading, the corrected form, the ledger's note, any inconsistency
-    # issue 19: where the row is printed, its formulas, the printed form's dimensions
+    note: str  # the ledger's own note, "" without one
+    # where the row is printed, its formulas, the printed form's dimensions
     lines: tuple[int, int] | None = None  # first and last line of tables/papers/<paper>.txt
     printed: str | None = None  # the formula as printed, in the ledger's notation
     reading: str | None = None  # a misprint's evident reading, same notation
     corrected: str | None = None  # a failing formula's correction, same notation
     dimensions: str | None = None  # consistent, inconsistent or dimensionless
+    dimensions_detail: str | None = None  # the dimension check's reason (a mismatch's sides)
+    reading_note: str | None = None  # the ledger's words on a misprint's evident reading
+    corrected_note: str | None = None  # the ledger's words on a failure's correction
+    check_corrected: str | None = None  # the corrected form the row's check found (a failure)
+    against: str | None = None  # the reference the printed form is judged against
+    # the status the engine computed from the printed form (None: none the ledger may record,
+    # or no reference), and the engine's why: the residual, digits or coefficient that decided
+    computed: EquationStatus | None = None
+    evidence: str | None = None
+    inconsistency: str | None = None  # how the row contradicts its check (never in the output
+    # of a consistent ledger: pendcli refuses an inconsistent one)
 
     def as_dict(self) -> dict[str, object]:
         out = dict(self.__dict__)
         out["lines"] = list(self.lines) if self.lines is not None else None
         return out
+
+
+NO_STATUS = "no status the ledger may record"  # what the printed form earns when computed is None
+
+
+def equation_notes(row: Mapping[str, object]) -> str:
+    """An equation row's pieces as one line of prose (the table's, Markdown's and the report's
+    note column): the reading, the correction (and the check's), the ledger's note, the status
+    computed from the printed form and why, a dimension mismatch, an inconsistency."""
+    notes = []
+    if row.get("reading_note"):
+        notes.append(f"reading: {row['reading_note']}")
+    if row.get("corrected_note"):
+        found = row.get("check_corrected")
+        notes.append(
+            f"corrected: {row['corrected_note']}" + (f" (computed: {found})" if found else "")
+        )
+    if row.get("note"):
+        notes.append(str(row["note"]))
+    if row.get("against") is not None:
+        computed = row.get("computed") or NO_STATUS
+        notes.append(f"computed from the printed form: {computed}: {row.get('evidence')}")
+    if row.get("dimensions") == "inconsistent":
+        notes.append(f"dimensions: {row.get('dimensions_detail')}")
+    if row.get("inconsistency"):
+        notes.append(f"LEDGER INCONSISTENT: {row['inconsistency']}")
+    return "; ".join(notes)

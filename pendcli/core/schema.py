@@ -58,6 +58,7 @@ class RowKind:
 
 
 _TEXT, _NUMBER, _OPTIONAL = ("string",), ("number",), ("number", "null")
+_OPT_TEXT = ("string", "null")
 _CAUSE_MEANING = (
     "why it does not agree or hold, null when nothing needs explaining; every cause but "
     "propagated is a root"
@@ -127,11 +128,7 @@ EQUATIONS = RowKind(
             "compared; empty for a definition",
         ),
         Field("observed_order", _OPTIONAL, "for a truncated series: the residual's slope"),
-        Field(
-            "note",
-            _TEXT,
-            "the reading of a misprint, the corrected form of a failure, what a definition defines",
-        ),
+        Field("note", _TEXT, "the ledger's own note, empty without one"),
         Field("lines", ("array", "null"), "[first, last]: the lines of the paper's text"),
         Field("printed", ("string", "null"), "the formula as printed, in sympy notation"),
         Field("reading", ("string", "null"), "a misprint's reading, in the same notation"),
@@ -141,6 +138,32 @@ EQUATIONS = RowKind(
             ("string", "null"),
             "the printed form's dimensional verdict; null without a printed form",
             ("consistent", "inconsistent", "dimensionless"),
+        ),
+        Field(
+            "dimensions_detail",
+            _OPT_TEXT,
+            "the dimension check's reason (for inconsistent: the sides that disagree)",
+        ),
+        Field("reading_note", _OPT_TEXT, "the ledger's words on a misprint's evident reading"),
+        Field("corrected_note", _OPT_TEXT, "the ledger's words on a failure's correction"),
+        Field("check_corrected", _OPT_TEXT, "the corrected form a failure's check computed"),
+        Field("against", _OPT_TEXT, "the reference the printed form is judged against"),
+        Field(
+            "computed",
+            _OPT_TEXT,
+            "the status the engine computed from the printed form against `against`; null "
+            "without a reference",
+            ("holds", "fails", "misprint"),
+        ),
+        Field(
+            "evidence",
+            _OPT_TEXT,
+            "the engine's why: the residual, digits or coefficient that decided",
+        ),
+        Field(
+            "inconsistency",
+            _OPT_TEXT,
+            "how the row contradicts its check; always null (pendcli refuses such a ledger)",
         ),
     ),
 )

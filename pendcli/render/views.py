@@ -1,4 +1,4 @@
-"""Columns for claim and formula rows: what the table and Markdown outputs show.
+"""Columns for claim, formula and equation rows: what the table and Markdown outputs show.
 
 The one module under :mod:`pendcli.render` that knows what a claim is: the renderers know
 only columns and rows, the paper packages only numbers. The colour of a verdict is set here.
@@ -9,11 +9,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from pendcli.core.numbers import parse_printed
+from pendcli.core.rows import equation_notes
 from pendcli.core.vocabulary import FormulaVerdict, Verdict
 from pendcli.render.columns import Column, Row, fmt_float
 
 __all__ = [
     "CLAIM_COLUMNS",
+    "EQUATION_COLUMNS",
     "FORMULA_COLUMNS",
     "VERDICT_STYLES",
     "claim_columns",
@@ -129,6 +131,13 @@ FORMULA_COLUMNS: tuple[Column, ...] = (
     ),
     Column("verdict", "verdict", style=_verdict_style),
     Column("note", "note"),  # whole: the table wraps prose at spaces
+)
+
+# An equation row's pieces (reading, correction, note, the status computed from the printed
+# form, a dimension mismatch) shown in one note column; JSON and CSV keep each in its field.
+EQUATION_COLUMNS: tuple[Column, ...] = (
+    *(Column(k, k) for k in ("id", "equation", "section", "status", "check", "observed_order")),
+    Column("note", "note", fmt=equation_notes),
 )
 
 
