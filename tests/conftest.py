@@ -75,9 +75,9 @@ SLOW_FAMILIES = {
     "tests/test_attack_edition.py::test_reproduce_out_of_tables_full_of_markup": "a whole "
     "`reproduce --out` of one paper, its ledger checked, in a process (10 s of CPU)",
     "tests/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
-    "judged as committed and with 200 data mutations (28 s of CPU with their references)",
+    "judged as committed and with 165 data mutations (20 s of CPU with their references)",
     "tests/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
-    "engine mutation judged over the sample's rows it applies to (0.1-5 s of CPU each)",
+    "engine mutation judged over the sampled rows it applies to (up to 5 s of CPU each)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.
