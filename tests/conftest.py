@@ -80,6 +80,10 @@ SLOW_FAMILIES = {
     "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
     "tests/test_equation_fields.py::test_every_json_row_carries_the_engines_verdict": "every "
     "paper's whole ledger (40 s of CPU cold)",
+    "tests/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
+    "judged as committed and with 165 data mutations (20 s of CPU with their references)",
+    "tests/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
+    "engine mutation judged over the sampled rows it applies to (up to 5 s of CPU each)",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.

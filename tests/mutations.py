@@ -67,6 +67,24 @@ def printed_line(ledger: Ledger, row_id: str, value_of: str = "printed") -> str:
     return f"printed = '{getattr(row, value_of)}'"
 
 
+def field_line(row: LedgerRow, field: str) -> str:
+    """The TOML line ``field = '…'`` (or ``"…"``) of a committed row's formula field
+    (``printed``, ``reading_formula``, ``corrected_formula``): the ``old`` of an edit of it."""
+    text = ledger_path(row.paper, TABLES).read_text(encoding="utf-8")
+    value = getattr(row, field)
+    single, double = f"{field} = '{value}'", f'{field} = "{value}"'
+    return single if single in text else double
+
+
+def altered_field(row: LedgerRow, field: str, text: str) -> tuple[LedgerRow, dict[str, str]]:
+    """Row ``row`` of its committed ledger with the formula ``field`` set to ``text`` (the
+    TOML edited and validated as :func:`altered_row` does), and the symbols of its place."""
+    old = field_line(row, field)
+    quote = old[len(field) + 3]
+    new = f"{field} = {quote}{text}{quote}"
+    return altered_row(row.paper, row.id, old, new, within=row.id)
+
+
 def altered_tables(tmp_path: Path, *edits: tuple[str, str, str]) -> Path:
     """A copy of tables/ with ``(file under tables/, old, new)`` edits, each applied once."""
     root = tmp_path / "tables"
