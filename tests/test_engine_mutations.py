@@ -69,7 +69,7 @@ from typing import Any
 
 import pytest
 from ledgers import committed_ledger
-from mutations import altered_field
+from mutations import altered_field, judged_after_edit
 
 from pendcli.core import printed_check, printed_numeric
 from pendcli.core.errors import PendcliError
@@ -448,14 +448,9 @@ MUTATIONS = {
 Judged = dict[str, list[tuple[Case, str | None]]]  # row id -> (case, its status), unmutated
 RAISES = "raises "
 # Data mutations on which the unmutated engine raises where it should refuse: (row, case) ->
-# the exception. 2/p -> 3/p in the phase leaves a pole 1/p that sympy's series cannot expand,
-# and `pendcli equations` stops on an internal error (exit 3) where the edited row should be
-# refused. A known defect of the engine, kept in sight: once it refuses them, the test below
-# fails until they are removed from here.
-KNOWN_RAISES = {
-    ("lecornu.result.theta_first_order", "printed 2 -> 3"): "PoleError",
-    ("lecornu.result.theta_first_order", "printed 2 -> 2 + 2/10**6"): "PoleError",
-}
+# the exception. None: an edit that leaves the residual without a power series (2/p -> 3/p in
+# a phase, a pole 1/p sympy's series cannot expand) is refused like any other failing form.
+KNOWN_RAISES: dict[tuple[str, str], str] = {}
 
 
 def status_or_raised(case: Case) -> str | None:
@@ -538,3 +533,20 @@ def test_a_loosened_tolerance_is_caught_by_each_of_five_rows() -> None:
     assert all(c.right(c.status()) for judged in cases.values() for c in judged)
     loosened = EngineMutation(tolerance(1e-3), lambda s: True, len(FAST))
     assert loosened.caught_by(chosen, cases) == list(FAST)
+
+
+def test_a_residual_without_a_power_series_is_refused_not_raised() -> None:
+    """An edit of the phase (2/p -> 3/p) leaves sin(1/p) in the residual, which sympy's series
+    cannot expand (PoleError): the engine refuses the printed form, naming why, where it raised
+    and `pendcli equations` ended in an internal error."""
+    from pendcli.core.ledger import check_module
+    from pendcli.papers.registry import paper
+
+    old = "sin(2/p + r*t"
+    row_id = "lecornu.result.theta_first_order"
+    computed, problem = judged_after_edit(
+        check_module(paper("lecornu")), row_id, old, "sin(3/p + r*t", within=row_id
+    )
+    assert computed is not None and computed.startswith("no status the ledger may record")
+    assert "no power series in p about 0" in computed and "PoleError" in computed, computed
+    assert problem is not None and problem.startswith("recorded holds, but"), problem

@@ -121,7 +121,13 @@ def _equation_passes(residual: Any, reference: Reference, order: int | None) -> 
         proved, why = _taylor_verdict(expr, reference, order)
         if proved is not None:
             return proved, why
-        expr = _truncated(expr, reference.scale, order)
+        try:
+            expr = _truncated(expr, reference.scale, order)
+        except (sp.PoleError, NotImplementedError) as exc:  # sin(1/p): no series about 0
+            return False, (
+                f"the residual has no power series in {reference.scale} about 0 that sympy can "
+                f"find ({type(exc).__name__}), so it is not shown to vanish to order {order}"
+            )
     # The random points first: cheap, and decisive when the residual is not 0; simplify only
     # where a point gives no number. An integral is never simplified (sympy's antiderivatives
     # can take minutes).
