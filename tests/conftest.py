@@ -72,6 +72,10 @@ SLOW_FAMILIES = {
     "apsidal motion and the series of the motion to fifth order",
     "tests/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
     "`equations` runs of a ledger in one test (2.1-2.3 s)",
+    "tests/test_attack_signals.py::test_a_worker_killed_stops_the_run_*": "a cold `equations` "
+    "in two processes, until its worker computes",
+    "tests/test_attack_signals.py::test_a_stop_while_a_worker_computes_*": "a cold `equations` "
+    "in two processes, until its worker computes",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.

@@ -7,6 +7,7 @@ whose workers report their pids, then ends the parent and looks for the workers.
 
 from __future__ import annotations
 
+import functools
 import os
 import signal
 import subprocess
@@ -16,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.workers import ForkedWorkers, job_count
+from pendcli.core.workers import ForkedWorkers, WorkerDied, job_count
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc and prctl")
 
@@ -111,7 +112,129 @@ def test_share_gives_every_result_in_order_whoever_computed_it() -> None:
 def test_no_workers_runs_everything_here() -> None:
     with ForkedWorkers(0) as pool:
         assert pool.share([1, 2, 3], square) == [1, 4, 9]
-        assert pool.submit(square, 7)() == 49
+
+
+def reaped(pid: int) -> bool:
+    """Whether ``pid``, a child of this process, is gone and reaped (no zombie left)."""
+    try:
+        os.waitpid(pid, os.WNOHANG)
+    except ChildProcessError:
+        return not Path(f"/proc/{pid}").exists()
+    return False
+
+
+def killed_in_a_worker(parent: int, looks: list[str], name: str) -> str:
+    """In a worker: SIGKILL; here: a long item (a hang guard of 60 s), its looks counted."""
+    if os.getpid() != parent:
+        os.kill(os.getpid(), signal.SIGKILL)
+    for _ in range(6000):
+        looks.append(name)
+        time.sleep(0.01)
+    return name
+
+
+def test_a_worker_killed_while_this_process_computes_stops_it_at_once() -> None:
+    """A worker killed mid-item (as the out-of-memory killer does): this process, busy with
+    an item of its own, is stopped by SIGCHLD, in one line naming the worker, its item and
+    the signal (multiprocessing's Pool waited forever); the worker is reaped."""
+    looks: list[str] = []
+    run = functools.partial(killed_in_a_worker, os.getpid(), looks)
+    with ForkedWorkers(1) as pool:
+        (pid,) = [worker.pid for worker in pool.workers]
+        with pytest.raises(WorkerDied) as died:
+            pool.share(["a", "b"], run, name=lambda name: f"the item {name}")
+    assert len(looks) < 6000  # cut short, not waited out
+    theirs = {"a": "b", "b": "a"}[looks[0]]
+    assert str(died.value) == (
+        f"worker {pid} (computing the item {theirs}) was killed by SIGKILL before handing back "
+        "its work; run again, or with PENDCLI_JOBS=1 to compute in one process"
+    )
+    assert died.value.status == 2
+    assert reaped(pid)
+
+
+def exits_in_a_worker(parent: int, took: Path, number: int) -> int:
+    """In a worker: a sign, then exit 3; here: wait for the sign (a hang guard of 60 s)."""
+    if os.getpid() != parent:
+        took.touch()
+        os._exit(3)
+    for _ in range(6000):
+        if took.exists():
+            break
+        time.sleep(0.01)
+    return number
+
+
+def test_a_worker_that_exits_while_this_process_waits_is_named_with_its_status(
+    tmp_path: Path,
+) -> None:
+    """SIGCHLD blocked: the wait for the worker's results notices its death by itself."""
+    run = functools.partial(exits_in_a_worker, os.getpid(), tmp_path / "took")
+    signal.pthread_sigmask(signal.SIG_BLOCK, [signal.SIGCHLD])
+    try:
+        with ForkedWorkers(1) as pool:
+            (pid,) = [worker.pid for worker in pool.workers]
+            with pytest.raises(WorkerDied) as died:
+                pool.share([1, 2], run)
+    finally:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, [signal.SIGCHLD])
+    assert str(died.value).startswith(f"worker {pid} (computing item ")
+    assert "exited with status 3 before handing back its work" in str(died.value)
+    assert reaped(pid)
+
+
+def fails_in_a_worker(parent: int, took: Path, number: int) -> int:
+    if os.getpid() != parent:
+        from pendcli.core.errors import PendcliError
+
+        took.touch()
+        raise PendcliError("tables/x.csv: row 3: not a number")
+    for _ in range(6000):
+        if took.exists():
+            break
+        time.sleep(0.01)
+    return number
+
+
+def test_an_error_in_a_worker_is_raised_here_and_the_workers_are_reaped(tmp_path: Path) -> None:
+    from pendcli.core.errors import PendcliError
+
+    run = functools.partial(fails_in_a_worker, os.getpid(), tmp_path / "took")
+    with ForkedWorkers(1) as pool:
+        (pid,) = [worker.pid for worker in pool.workers]
+        with pytest.raises(PendcliError, match="row 3"):
+            pool.share([1, 2], run)
+    assert reaped(pid)
+
+
+def test_leaving_the_block_kills_and_reaps_every_worker() -> None:
+    with ForkedWorkers(2) as pool:
+        workers = [worker.pid for worker in pool.workers]
+        assert pool.share(list(range(5)), square) == [0, 1, 4, 9, 16]
+    assert len(workers) == 2 and all(reaped(pid) for pid in workers)
+
+
+def test_a_worker_s_death_waits_for_the_end_of_a_section_that_defers_stops() -> None:
+    """Noticed inside stops_deferred (an atomic write), it stops the run on leaving it; a
+    signal to this process noted there takes its place."""
+    from pendcli.core.interrupts import Interrupted, stop, stops_deferred
+
+    finished: list[int] = []
+
+    def section(*stops: Interrupted) -> None:
+        with stops_deferred():
+            for each in stops:
+                stop(each)
+            finished.append(len(stops))
+
+    death = WorkerDied(1234, "computing x", "was killed by SIGKILL")
+    with pytest.raises(WorkerDied):
+        section(death)
+    later = WorkerDied(5678, "computing y", "was killed by SIGKILL")
+    with pytest.raises(Interrupted) as stopped:
+        section(death, Interrupted(signal.SIGTERM), later)
+    assert finished == [1, 3]  # each section ran to its end
+    assert type(stopped.value) is Interrupted and stopped.value.status == 143
 
 
 def test_job_count(monkeypatch: pytest.MonkeyPatch) -> None:
