@@ -7,7 +7,6 @@ whose workers report their pids, then ends the parent and looks for the workers.
 
 from __future__ import annotations
 
-import functools
 import os
 import signal
 import subprocess
@@ -123,95 +122,110 @@ def reaped(pid: int) -> bool:
     return False
 
 
-def killed_in_a_worker(parent: int, looks: list[str], name: str) -> str:
-    """In a worker: SIGKILL; here: a long item (a hang guard of 60 s), its looks counted."""
+# A parent of one worker: of its two items, the worker takes one and leaves a sign, then is
+# killed ("kill"), exits with status 3 ("exit", SIGCHLD blocked: the wait for its results must
+# notice), raises ("error") or returns ("none"); the parent's item waits for the sign (up to
+# 60 s; "kill": all that time, but for the worker's death), counting its looks. Printed: what
+# was raised or returned, then the worker's pid, the looks and whether the worker was reaped
+# once the block is left.
+DYING = """
+import os, signal, sys, time
+from pathlib import Path
+from pendcli.core.errors import PendcliError
+from pendcli.core.workers import ForkedWorkers, WorkerDied
+
+how, sign = sys.argv[1], Path(sys.argv[2])
+parent, looks = os.getpid(), []
+
+def item(name):
     if os.getpid() != parent:
-        os.kill(os.getpid(), signal.SIGKILL)
+        sign.touch()
+        if how == "kill":
+            os.kill(os.getpid(), signal.SIGKILL)
+        if how == "exit":
+            os._exit(3)
+        if how == "error":
+            raise PendcliError("tables/x.csv: row 3: not a number")
+        return name
     for _ in range(6000):
         looks.append(name)
+        if how != "kill" and sign.exists():
+            break
         time.sleep(0.01)
     return name
 
+if how == "exit":
+    signal.pthread_sigmask(signal.SIG_BLOCK, [signal.SIGCHLD])
+with ForkedWorkers(1) as pool:
+    (pid,) = [worker.pid for worker in pool.workers]
+    try:
+        print("returned", *pool.share(["a", "b"], item, name=lambda name: f"the item {name}"),
+              sep="|")
+    except (WorkerDied, PendcliError) as exc:
+        print(type(exc).__name__, getattr(exc, "status", ""), exc, sep="|")
+try:
+    os.waitpid(pid, os.WNOHANG)
+    reaped = "not reaped"
+except ChildProcessError:
+    reaped = "reaped"
+print(pid, len(looks), looks[0], reaped, sep="|")
+"""
 
-def test_a_worker_killed_while_this_process_computes_stops_it_at_once() -> None:
-    """A worker killed mid-item (as the out-of-memory killer does): this process, busy with
-    an item of its own, is stopped by SIGCHLD, in one line naming the worker, its item and
-    the signal (multiprocessing's Pool waited forever); the worker is reaped."""
-    looks: list[str] = []
-    run = functools.partial(killed_in_a_worker, os.getpid(), looks)
-    with ForkedWorkers(1) as pool:
-        (pid,) = [worker.pid for worker in pool.workers]
-        with pytest.raises(WorkerDied) as died:
-            pool.share(["a", "b"], run, name=lambda name: f"the item {name}")
-    assert len(looks) < 6000  # cut short, not waited out
-    theirs = {"a": "b", "b": "a"}[looks[0]]
-    assert str(died.value) == (
-        f"worker {pid} (computing the item {theirs}) was killed by SIGKILL before handing back "
-        "its work; run again, or with PENDCLI_JOBS=1 to compute in one process"
+
+def dying(how: str, tmp_path: Path) -> tuple[list[str], int, int, str, str]:
+    """Run DYING: (what was raised or returned, split), the worker's pid, the parent's
+    looks, the item it took, and whether the worker was reaped (a hang guard of 120 s)."""
+    done = subprocess.run(
+        [sys.executable, "-c", DYING, how, str(tmp_path / "sign")],
+        capture_output=True,
+        text=True,
+        timeout=120,
     )
-    assert died.value.status == 2
-    assert reaped(pid)
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+    raised, worker = done.stdout.splitlines()
+    pid, looks, mine, reaped = worker.split("|")
+    return raised.split("|"), int(pid), int(looks), mine, reaped
 
 
-def exits_in_a_worker(parent: int, took: Path, number: int) -> int:
-    """In a worker: a sign, then exit 3; here: wait for the sign (a hang guard of 60 s)."""
-    if os.getpid() != parent:
-        took.touch()
-        os._exit(3)
-    for _ in range(6000):
-        if took.exists():
-            break
-        time.sleep(0.01)
-    return number
+def test_a_worker_killed_while_this_process_computes_stops_it_at_once(tmp_path: Path) -> None:
+    """A worker killed mid-item (as the out-of-memory killer does): the parent, busy with an
+    item of its own, is stopped by SIGCHLD, in one line naming the worker, its item and the
+    signal (multiprocessing's Pool waited for ever); the worker is reaped."""
+    raised, pid, looks, mine, reaped = dying("kill", tmp_path)
+    theirs = {"a": "b", "b": "a"}[mine]
+    assert raised == [
+        "WorkerDied",
+        "2",
+        f"worker {pid} (computing the item {theirs}) was killed by SIGKILL before handing back "
+        "its work; run again, or with PENDCLI_JOBS=1 to compute in one process",
+    ]
+    assert looks < 6000  # cut short, not waited out
+    assert reaped == "reaped"
 
 
 def test_a_worker_that_exits_while_this_process_waits_is_named_with_its_status(
     tmp_path: Path,
 ) -> None:
     """SIGCHLD blocked: the wait for the worker's results notices its death by itself."""
-    run = functools.partial(exits_in_a_worker, os.getpid(), tmp_path / "took")
-    signal.pthread_sigmask(signal.SIG_BLOCK, [signal.SIGCHLD])
-    try:
-        with ForkedWorkers(1) as pool:
-            (pid,) = [worker.pid for worker in pool.workers]
-            with pytest.raises(WorkerDied) as died:
-                pool.share([1, 2], run)
-    finally:
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, [signal.SIGCHLD])
-    assert str(died.value).startswith(f"worker {pid} (computing item ")
-    assert "exited with status 3 before handing back its work" in str(died.value)
-    assert reaped(pid)
+    raised, pid, _, mine, reaped = dying("exit", tmp_path)
+    theirs = {"a": "b", "b": "a"}[mine]
+    assert raised[:2] == ["WorkerDied", "2"]
+    assert raised[2].startswith(
+        f"worker {pid} (computing the item {theirs}) exited with status 3 before handing back"
+    )
+    assert reaped == "reaped"
 
 
-def fails_in_a_worker(parent: int, took: Path, number: int) -> int:
-    if os.getpid() != parent:
-        from pendcli.core.errors import PendcliError
-
-        took.touch()
-        raise PendcliError("tables/x.csv: row 3: not a number")
-    for _ in range(6000):
-        if took.exists():
-            break
-        time.sleep(0.01)
-    return number
+def test_an_error_in_a_worker_is_raised_here_and_the_worker_is_reaped(tmp_path: Path) -> None:
+    raised, _, _, _, reaped = dying("error", tmp_path)
+    assert raised == ["PendcliError", "", "tables/x.csv: row 3: not a number"]
+    assert reaped == "reaped"
 
 
-def test_an_error_in_a_worker_is_raised_here_and_the_workers_are_reaped(tmp_path: Path) -> None:
-    from pendcli.core.errors import PendcliError
-
-    run = functools.partial(fails_in_a_worker, os.getpid(), tmp_path / "took")
-    with ForkedWorkers(1) as pool:
-        (pid,) = [worker.pid for worker in pool.workers]
-        with pytest.raises(PendcliError, match="row 3"):
-            pool.share([1, 2], run)
-    assert reaped(pid)
-
-
-def test_leaving_the_block_kills_and_reaps_every_worker() -> None:
-    with ForkedWorkers(2) as pool:
-        workers = [worker.pid for worker in pool.workers]
-        assert pool.share(list(range(5)), square) == [0, 1, 4, 9, 16]
-    assert len(workers) == 2 and all(reaped(pid) for pid in workers)
+def test_leaving_the_block_kills_and_reaps_the_worker(tmp_path: Path) -> None:
+    raised, _, _, _, reaped = dying("none", tmp_path)
+    assert raised == ["returned", "a", "b"]
+    assert reaped == "reaped"
 
 
 def test_a_worker_s_death_waits_for_the_end_of_a_section_that_defers_stops() -> None:
