@@ -5,7 +5,7 @@
 own silent abort, so every ``finally`` and cleanup on the way out runs (a half-built output
 folder is removed) and the entry point prints one line: 130 for SIGINT, 143 for SIGTERM, 129
 for SIGHUP. A forked child leaves at once and silently instead: its parent speaks for the run
-(the workers of :mod:`pendcli.core.workers` ignore these signals and are killed by it).
+(the workers of :mod:`pendcli.core.workers` ignore Ctrl-C; it kills them on its way out).
 
 :func:`stop` raises any :class:`Interrupted` from a signal handler, so that a forked worker's
 death (:class:`~pendcli.core.workers.WorkerDied`, noticed on SIGCHLD) stops the run the same
@@ -27,8 +27,8 @@ _SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP")
 
 
 class Interrupted(BaseException):
-    """The run was stopped by ``signum``; ``status`` is what a shell reports (128 + it), or
-    ``status``; ``message`` replaces "interrupted by SIGNAME" (a worker's death)."""
+    """The run was stopped by ``signum``; ``status`` is what a shell reports (128 + it,
+    unless given); ``message`` replaces "interrupted by SIGNAME" (a forked worker's death)."""
 
     def __init__(self, signum: int, message: str | None = None, status: int | None = None) -> None:
         self.signum = signum

@@ -10,8 +10,8 @@ one way pendcli runs work in parallel (reproduce's steps, the report's figures).
   it was computing and how it ended, exit 2. The parent hears of it on SIGCHLD while it
   computes its own share, and from the worker's pipe (its end closes with it; looked at every
   second besides) while it waits. Nothing here waits on a lock a dead worker could hold: the
-  items are dealt through a pipe, each taken by one read. (multiprocessing's Pool lost a killed
-  worker's task and then waited forever, deaf to Ctrl-C, for its queue's lock.)
+  items are dealt through a pipe, each taken by one read. (With multiprocessing's Pool, a
+  worker killed by ``kill -9`` left its parent blocked in the pool's teardown, deaf to Ctrl-C.)
 * Ctrl-C reaches every process of the terminal's group: the workers ignore it and the parent
   alone ends the run (:mod:`pendcli.core.interrupts`: one line, exit 130). TERM and HUP end
   a worker (kill one alone, and the run stops); the run then stops as if they had reached the
