@@ -122,23 +122,28 @@ def reaped(pid: int) -> bool:
     return False
 
 
-# A parent of one worker: of its two items, the worker takes one and leaves a sign, then is
-# killed ("kill"), exits with status 3 ("exit", SIGCHLD blocked: the wait for its results must
-# notice), raises ("error") or returns ("none"); the parent's item waits for the sign (up to
-# 60 s; "kill": all that time, but for the worker's death), counting its looks. Printed: what
-# was raised or returned, then the worker's pid, the looks and whether the worker was reaped
-# once the block is left.
+# A parent of one worker, each taking one of two items: the parent leaves a sign as it starts
+# its own; the worker waits for that sign, leaves one of its own, then is killed ("kill"),
+# exits with status 3 ("exit", SIGCHLD blocked: the wait for its results must notice), raises
+# ("error") or returns ("none"); the parent's item waits for the worker's sign (up to 60 s;
+# "kill": all that time, but for the worker's death), counting its looks. Printed: what was
+# raised or returned, then the worker's pid, the looks and whether the worker was reaped once
+# the block is left. Each wait is a hang guard of 6,000 looks.
 DYING = """
 import os, signal, sys, time
 from pathlib import Path
 from pendcli.core.errors import PendcliError
 from pendcli.core.workers import ForkedWorkers, WorkerDied
 
-how, sign = sys.argv[1], Path(sys.argv[2])
+how, sign, started = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[2] + "-parent")
 parent, looks = os.getpid(), []
 
 def item(name):
     if os.getpid() != parent:
+        for _ in range(6000):
+            if started.exists():
+                break
+            time.sleep(0.01)
         sign.touch()
         if how == "kill":
             os.kill(os.getpid(), signal.SIGKILL)
@@ -147,6 +152,7 @@ def item(name):
         if how == "error":
             raise PendcliError("tables/x.csv: row 3: not a number")
         return name
+    started.touch()
     for _ in range(6000):
         looks.append(name)
         if how != "kill" and sign.exists():
