@@ -234,6 +234,15 @@ def test_leaving_the_block_kills_and_reaps_the_worker(tmp_path: Path) -> None:
     assert reaped == "reaped"
 
 
+def test_more_items_than_a_pipe_surely_holds_are_refused_not_left_to_block() -> None:
+    from pendcli.core.workers import MOST_ITEMS
+
+    with ForkedWorkers(1) as pool:
+        assert pool.share(list(range(MOST_ITEMS)), square)[-1] == (MOST_ITEMS - 1) ** 2
+        with pytest.raises(ValueError, match=f"at most {MOST_ITEMS}"):
+            pool.share(list(range(MOST_ITEMS + 1)), square)
+
+
 def test_a_worker_s_death_waits_for_the_end_of_a_section_that_defers_stops() -> None:
     """Noticed inside stops_deferred (an atomic write), it stops the run on leaving it; a
     signal to this process noted there takes its place."""

@@ -43,7 +43,9 @@ R = TypeVar("R")
 
 _PR_SET_PDEATHSIG = 1  # linux/prctl.h
 _INDEX = 4  # bytes of an item's index in the pipe of turns
-MOST_ITEMS = 1024  # 4 kB of indices: the smallest pipe Linux gives holds them all
+# Items one share can deal: all their indices fit in the smallest pipe (a page on Linux; 512
+# bytes, POSIX's PIPE_BUF, elsewhere), written at once before any process reads.
+MOST_ITEMS = 1024 if sys.platform.startswith("linux") else 128
 _LOOK_EVERY = 1.0  # seconds: how often a parent waiting for a worker also asks if it lives
 _REAP_TRIES = 200  # looks, 10 ms apart, for a worker whose pipe closed to become a zombie
 _STOPS = (signal.SIGTERM, signal.SIGHUP)  # the stops a worker dies of, as the parent would
