@@ -646,6 +646,11 @@ def _draw_task(task: _Task) -> list[Path]:
     return _draw(function, args)
 
 
+def _task_name(task: _Task) -> str:
+    """``tisserand claims figures``, ``tradeoff figures``: what a dead worker was drawing."""
+    return " ".join(dict.fromkeys(task[:2])) + " figures"
+
+
 class _Drawing:
     """Draws the tasks in ``jobs`` processes: this one and forked workers (core/workers.py)."""
 
@@ -663,7 +668,7 @@ class _Drawing:
 
     def results(self) -> dict[str, list[Path]]:
         """Figures per paper (and "tradeoff"), claim figures before formula figures."""
-        drawn = self.workers.share(self.tasks, _draw_task)
+        drawn = self.workers.share(self.tasks, _draw_task, name=_task_name)
         by_key: dict[str, list[Path]] = {}
         for (key, kind, _, _), paths in zip(self.tasks, drawn, strict=True):
             claims_first = kind == "claims"

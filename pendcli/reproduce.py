@@ -250,7 +250,7 @@ def _computed(
         _lend_formula_rows(lent, stored, steps)
         with ForkedWorkers(workers) as pool, _progress(quiet, len(steps), title) as advance:
             run = functools.partial(_run_step, papers=keys)
-            values = pool.share(order, run, lambda step, _: advance(f"{step[0]}: {step[1]}", 1))
+            values = pool.share(order, run, lambda step, _: advance(_named(step), 1), _named)
     by_step = dict(zip(order, values, strict=True))
     computed: dict[Wanted, Any] = {}
     ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]] = {}
@@ -452,6 +452,11 @@ def _progress(
 
 
 Step = tuple[str, str]
+
+
+def _named(step: Step) -> str:
+    """``tisserand: equations 1/2``: a step as the progress bar and a worker's death name it."""
+    return f"{step[0]}: {step[1]}"
 
 
 def _costliest_first(steps: list[Step]) -> list[Step]:

@@ -84,6 +84,10 @@ SLOW_FAMILIES = {
     "judged as committed and with 165 data mutations (20 s of CPU with their references)",
     "tests/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
     "engine mutation judged over the sampled rows it applies to (up to 5 s of CPU each)",
+    "tests/test_attack_signals.py::test_a_worker_killed_stops_the_run_*": "a cold `equations` "
+    "in two processes, until its worker computes",
+    "tests/test_attack_signals.py::test_a_stop_while_a_worker_computes_*": "a cold `equations` "
+    "in two processes, until its worker computes",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.

@@ -9,6 +9,7 @@ a bounded number of times, never a clock. The CLI runs are subprocesses of the i
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import signal
@@ -287,3 +288,104 @@ def test_ctrl_c_in_make_regen_or_make_bench_is_one_line_130_and_changes_nothing(
     assert err.decode() == f"python -m {module}: interrupted by SIGINT\n"
     assert readme.read_text(encoding="utf-8").count("old") == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["README.md"]
+
+
+def cpu_ticks(pid: int) -> int:
+    """The CPU time process ``pid`` has used (user and system), in clock ticks (/proc)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return int(fields[11]) + int(fields[12])
+
+
+def children(pid: int) -> list[int]:
+    found: list[int] = []
+    for task in Path(f"/proc/{pid}/task").glob("*/children"):
+        with contextlib.suppress(FileNotFoundError, ProcessLookupError):
+            found += [int(child) for child in task.read_text().split()]
+    return found
+
+
+def computing_worker(proc: subprocess.Popen[bytes]) -> int:
+    """The forked worker of ``proc`` once it is computing: it has used 0.2 s of CPU (20
+    ticks; a fork starts from none), well inside its half of a ledger (seconds)."""
+    found: list[int] = []
+
+    def busy() -> bool:
+        with contextlib.suppress(FileNotFoundError, ProcessLookupError):
+            found[:] = [pid for pid in children(proc.pid) if cpu_ticks(pid) >= 20]
+        return bool(found)
+
+    assert wait_for(proc, busy), "no worker computed"
+    return found[0]
+
+
+def start_equations_with_a_worker(tmp_path: Path) -> tuple[subprocess.Popen[bytes], int]:
+    """`pendcli equations` of one paper in two processes: each takes half of its ledger."""
+    proc = subprocess.Popen(
+        [str(PENDCLI), "equations", "-p", "tisserand", "-f", "json"],
+        cwd=tmp_path,
+        env={**child_env(), "PENDCLI_JOBS": "2"},
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+    )
+    return proc, computing_worker(proc)
+
+
+def ended(proc: subprocess.Popen[bytes]) -> str:
+    """Its stderr once it has ended; a hang guard of 120 s (a run blocked for ever, as one
+    whose worker was killed used to be, fails here, and its processes are killed)."""
+    try:
+        _, err = proc.communicate(timeout=120)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        raise AssertionError("the run did not end") from None
+    return err.decode()
+
+
+def test_a_worker_killed_stops_the_run_in_one_line_naming_it_and_its_signal(
+    tmp_path: Path,
+) -> None:
+    """kill -9 of the worker (as the out-of-memory killer does): the parent used to wait for
+    ever, deaf to Ctrl-C; now one line, exit 2, and nothing left running."""
+    proc, worker = start_equations_with_a_worker(tmp_path)
+    os.kill(worker, signal.SIGKILL)
+    stderr = ended(proc)
+    assert proc.returncode == 2, stderr
+    assert re.fullmatch(
+        rf"pendcli: error: worker {worker} \(computing tisserand: equations [01]/2\) was killed "
+        r"by SIGKILL before handing back its work; run again, or with PENDCLI_JOBS=1 to "
+        r"compute in one process\n",
+        stderr,
+    ), stderr
+    assert session_processes(proc.pid) == []
+
+
+TO_WORKERS = [
+    (signal.SIGTERM, "parent"),
+    (signal.SIGTERM, "group"),
+    (signal.SIGTERM, "worker"),
+    (signal.SIGINT, "group"),
+]
+
+
+@pytest.mark.parametrize(
+    ("signum", "to"), TO_WORKERS, ids=[f"{s.name}-{to}" for s, to in TO_WORKERS]
+)
+def test_a_stop_while_a_worker_computes_ends_the_run_with_its_line(
+    tmp_path: Path, signum: signal.Signals, to: str
+) -> None:
+    """TERM to the parent, to the whole group (as systemd does) or to the worker alone, and
+    Ctrl-C: the one-process run's line and status, the worker killed and reaped. TERM used to
+    end two processes with status 143 and no line (or, to the worker, hang the parent)."""
+    proc, worker = start_equations_with_a_worker(tmp_path)
+    if to == "parent":
+        os.kill(proc.pid, signum)
+    elif to == "group":
+        os.killpg(proc.pid, signum)
+    else:
+        os.kill(worker, signum)
+    stderr = ended(proc)
+    assert proc.returncode == 128 + signum, stderr
+    assert stderr == f"pendcli: error: interrupted by {signum.name}\n"
+    assert session_processes(proc.pid) == []

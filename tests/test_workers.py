@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.workers import ForkedWorkers, job_count
+from pendcli.core.workers import ForkedWorkers, WorkerDied, job_count
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc and prctl")
 
@@ -111,7 +111,159 @@ def test_share_gives_every_result_in_order_whoever_computed_it() -> None:
 def test_no_workers_runs_everything_here() -> None:
     with ForkedWorkers(0) as pool:
         assert pool.share([1, 2, 3], square) == [1, 4, 9]
-        assert pool.submit(square, 7)() == 49
+
+
+def reaped(pid: int) -> bool:
+    """Whether ``pid``, a child of this process, is gone and reaped (no zombie left)."""
+    try:
+        os.waitpid(pid, os.WNOHANG)
+    except ChildProcessError:
+        return not Path(f"/proc/{pid}").exists()
+    return False
+
+
+# A parent of one worker, each taking one of two items: the parent leaves a sign as it starts
+# its own; the worker waits for that sign, leaves one of its own, then is killed ("kill"),
+# exits with status 3 ("exit", SIGCHLD blocked: the wait for its results must notice), raises
+# ("error") or returns ("none"); the parent's item waits for the worker's sign (up to 60 s;
+# "kill": all that time, but for the worker's death), counting its looks. Printed: what was
+# raised or returned, then the worker's pid, the looks and whether the worker was reaped once
+# the block is left. Each wait is a hang guard of 6,000 looks.
+DYING = """
+import os, signal, sys, time
+from pathlib import Path
+from pendcli.core.errors import PendcliError
+from pendcli.core.workers import ForkedWorkers, WorkerDied
+
+how, sign, started = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[2] + "-parent")
+parent, looks = os.getpid(), []
+
+def item(name):
+    if os.getpid() != parent:
+        for _ in range(6000):
+            if started.exists():
+                break
+            time.sleep(0.01)
+        sign.touch()
+        if how == "kill":
+            os.kill(os.getpid(), signal.SIGKILL)
+        if how == "exit":
+            os._exit(3)
+        if how == "error":
+            raise PendcliError("tables/x.csv: row 3: not a number")
+        return name
+    started.touch()
+    for _ in range(6000):
+        looks.append(name)
+        if how != "kill" and sign.exists():
+            break
+        time.sleep(0.01)
+    return name
+
+if how == "exit":
+    signal.pthread_sigmask(signal.SIG_BLOCK, [signal.SIGCHLD])
+with ForkedWorkers(1) as pool:
+    (pid,) = [worker.pid for worker in pool.workers]
+    try:
+        print("returned", *pool.share(["a", "b"], item, name=lambda name: f"the item {name}"),
+              sep="|")
+    except (WorkerDied, PendcliError) as exc:
+        print(type(exc).__name__, getattr(exc, "status", ""), exc, sep="|")
+try:
+    os.waitpid(pid, os.WNOHANG)
+    reaped = "not reaped"
+except ChildProcessError:
+    reaped = "reaped"
+print(pid, len(looks), looks[0], reaped, sep="|")
+"""
+
+
+def dying(how: str, tmp_path: Path) -> tuple[list[str], int, int, str, str]:
+    """Run DYING: (what was raised or returned, split), the worker's pid, the parent's
+    looks, the item it took, and whether the worker was reaped (a hang guard of 120 s)."""
+    done = subprocess.run(
+        [sys.executable, "-c", DYING, how, str(tmp_path / "sign")],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+    raised, worker = done.stdout.splitlines()
+    pid, looks, mine, reaped = worker.split("|")
+    return raised.split("|"), int(pid), int(looks), mine, reaped
+
+
+def test_a_worker_killed_while_this_process_computes_stops_it_at_once(tmp_path: Path) -> None:
+    """A worker killed mid-item (as the out-of-memory killer does): the parent, busy with an
+    item of its own, is stopped by SIGCHLD, in one line naming the worker, its item and the
+    signal (multiprocessing's Pool waited for ever); the worker is reaped."""
+    raised, pid, looks, mine, reaped = dying("kill", tmp_path)
+    theirs = {"a": "b", "b": "a"}[mine]
+    assert raised == [
+        "WorkerDied",
+        "2",
+        f"worker {pid} (computing the item {theirs}) was killed by SIGKILL before handing back "
+        "its work; run again, or with PENDCLI_JOBS=1 to compute in one process",
+    ]
+    assert looks < 6000  # cut short, not waited out
+    assert reaped == "reaped"
+
+
+def test_a_worker_that_exits_while_this_process_waits_is_named_with_its_status(
+    tmp_path: Path,
+) -> None:
+    """SIGCHLD blocked: the wait for the worker's results notices its death by itself."""
+    raised, pid, _, mine, reaped = dying("exit", tmp_path)
+    theirs = {"a": "b", "b": "a"}[mine]
+    assert raised[:2] == ["WorkerDied", "2"]
+    assert raised[2].startswith(
+        f"worker {pid} (computing the item {theirs}) exited with status 3 before handing back"
+    )
+    assert reaped == "reaped"
+
+
+def test_an_error_in_a_worker_is_raised_here_and_the_worker_is_reaped(tmp_path: Path) -> None:
+    raised, _, _, _, reaped = dying("error", tmp_path)
+    assert raised == ["PendcliError", "", "tables/x.csv: row 3: not a number"]
+    assert reaped == "reaped"
+
+
+def test_leaving_the_block_kills_and_reaps_the_worker(tmp_path: Path) -> None:
+    raised, _, _, _, reaped = dying("none", tmp_path)
+    assert raised == ["returned", "a", "b"]
+    assert reaped == "reaped"
+
+
+def test_more_items_than_a_pipe_surely_holds_are_refused_not_left_to_block() -> None:
+    from pendcli.core.workers import MOST_ITEMS
+
+    with ForkedWorkers(1) as pool:
+        assert pool.share(list(range(MOST_ITEMS)), square)[-1] == (MOST_ITEMS - 1) ** 2
+        with pytest.raises(ValueError, match=f"at most {MOST_ITEMS}"):
+            pool.share(list(range(MOST_ITEMS + 1)), square)
+
+
+def test_a_worker_s_death_waits_for_the_end_of_a_section_that_defers_stops() -> None:
+    """Noticed inside stops_deferred (an atomic write), it stops the run on leaving it; a
+    signal to this process noted there takes its place."""
+    from pendcli.core.interrupts import Interrupted, stop, stops_deferred
+
+    finished: list[int] = []
+
+    def section(*stops: Interrupted) -> None:
+        with stops_deferred():
+            for each in stops:
+                stop(each)
+            finished.append(len(stops))
+
+    death = WorkerDied(1234, "computing x", "was killed by SIGKILL")
+    with pytest.raises(WorkerDied):
+        section(death)
+    later = WorkerDied(5678, "computing y", "was killed by SIGKILL")
+    with pytest.raises(Interrupted) as stopped:
+        section(death, Interrupted(signal.SIGTERM), later)
+    assert finished == [1, 3]  # each section ran to its end
+    assert type(stopped.value) is Interrupted and stopped.value.status == 143
 
 
 def test_job_count(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -4,8 +4,12 @@
 ``BaseException`` that no ``except Exception`` swallows and that click does not turn into its
 own silent abort, so every ``finally`` and cleanup on the way out runs (a half-built output
 folder is removed) and the entry point prints one line: 130 for SIGINT, 143 for SIGTERM, 129
-for SIGHUP. A forked worker (the figure and lane pools) leaves at once and silently instead:
-its parent speaks for the run, and a worker has nothing of its own to clean up.
+for SIGHUP. A forked child leaves at once and silently instead: its parent speaks for the run
+(the workers of :mod:`pendcli.core.workers` ignore Ctrl-C; it kills them on its way out).
+
+:func:`stop` raises any :class:`Interrupted` from a signal handler, so that a forked worker's
+death (:class:`~pendcli.core.workers.WorkerDied`, noticed on SIGCHLD) stops the run the same
+way: deferred within :func:`stops_deferred`, delivered again if lost.
 """
 
 from __future__ import annotations
@@ -17,34 +21,41 @@ import sys
 from collections.abc import Callable, Iterator
 from types import FrameType
 
-__all__ = ["Interrupted", "run_entry", "stop_on_signals", "stops_deferred"]
+__all__ = ["Interrupted", "run_entry", "stop", "stop_on_signals", "stops_deferred"]
 
 _SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP")
 
 
 class Interrupted(BaseException):
-    """The run was stopped by ``signum``; ``status`` is what a shell reports (128 + it)."""
+    """The run was stopped by ``signum``; ``status`` is what a shell reports (128 + it,
+    unless given); ``message`` replaces "interrupted by SIGNAME" (a forked worker's death)."""
 
-    def __init__(self, signum: int) -> None:
+    def __init__(self, signum: int, message: str | None = None, status: int | None = None) -> None:
         self.signum = signum
-        self.status = 128 + signum
+        self.status = 128 + signum if status is None else status
         self.name = signal.Signals(signum).name
-        super().__init__(f"interrupted by {self.name}")
+        super().__init__(message or f"interrupted by {self.name}")
 
 
 # Python runs a signal's handler in the main thread, whichever thread the kernel gave the
 # signal to (a BLAS or timer thread, which a per-thread signal mask does not cover): so the
 # handler itself defers the stop while the main thread is in a section that must not be cut.
 _deferring = 0
-_deferred: int | None = None
+_deferred: Interrupted | None = None
+
+
+def stop(exc: Interrupted) -> None:
+    """Raise ``exc`` (from a signal handler); within :func:`stops_deferred`, on leaving it. A
+    signal to this process replaces a stop noted before; any other stop is noted only first."""
+    global _deferred
+    if not _deferring:
+        raise exc
+    if _deferred is None or type(exc) is Interrupted:
+        _deferred = exc
 
 
 def _raise(signum: int, _frame: FrameType | None) -> None:
-    global _deferred
-    if _deferring:
-        _deferred = signum
-        return
-    raise Interrupted(signum)
+    stop(Interrupted(signum))
 
 
 @contextlib.contextmanager
@@ -57,8 +68,8 @@ def stops_deferred() -> Iterator[None]:
     finally:
         _deferring -= 1
         if not _deferring and _deferred is not None:
-            signum, _deferred = _deferred, None
-            raise Interrupted(signum)
+            noted, _deferred = _deferred, None
+            raise noted
 
 
 def _leave(signum: int, _frame: FrameType | None) -> None:

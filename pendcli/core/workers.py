@@ -1,13 +1,23 @@
-"""Forked worker processes that never outlive this one: the one way pendcli runs work in
-parallel (reproduce's steps, the report's figures).
+"""Forked worker processes that never outlive this one, and whose death never hangs it: the
+one way pendcli runs work in parallel (reproduce's steps, the report's figures).
 
 * A worker dies with its parent: on Linux the kernel sends it SIGKILL when the parent ends
   (``PR_SET_PDEATHSIG``), even by ``kill -9``; elsewhere it at least refuses to start once the
   parent is gone. A ``check --update`` killed mid-run used to leave a worker computing, and
   holding its files, for seconds.
+* A worker that dies while it holds work (by a signal, the out-of-memory killer's SIGKILL
+  included, or by an exit) stops the run: :class:`WorkerDied`, one line naming its pid, the item
+  it was computing and how it ended, exit 2. The parent hears of it on SIGCHLD while it
+  computes its own share, and from the worker's pipe (its end closes with it; looked at every
+  second besides) while it waits. Nothing here waits on a lock a dead worker could hold: the
+  items are dealt through a pipe, each taken by one read. (With multiprocessing's Pool, a
+  worker killed by ``kill -9`` left its parent blocked in the pool's teardown, deaf to Ctrl-C.)
 * Ctrl-C reaches every process of the terminal's group: the workers ignore it and the parent
-  alone ends the run (one line, exit 130, no traceback per worker). SIGTERM in the parent ends
-  the block with ``SystemExit(143)``; either way the pool is terminated, not waited for.
+  alone ends the run (:mod:`pendcli.core.interrupts`: one line, exit 130). TERM and HUP end
+  a worker (kill one alone, and the run stops); the run then stops as if they had reached the
+  parent, with its line and status (143, 129), whichever process they reached first. Leaving
+  the block, however, the parent kills its workers with SIGKILL and reaps them: no orphan, no
+  zombie, and no wait on a worker that cannot end.
 * :meth:`ForkedWorkers.share` splits work without timings: this process and each worker take
   the next item whenever they are free, so a costly item never waits behind a guess of costs.
   Results are the same whoever computed them (tests/test_determinism.py compares the bytes).
@@ -15,18 +25,43 @@ parallel (reproduce's steps, the report's figures).
 
 from __future__ import annotations
 
+import contextlib
+import mmap
 import os
 import signal
 import sys
 import threading
-from collections.abc import Callable, Sequence
-from typing import Any, TypeVar
+import time
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass
+from typing import Any, NoReturn, TypeVar
+
+from pendcli.core.interrupts import Interrupted, stop, stops_deferred
 
 T = TypeVar("T")
 R = TypeVar("R")
 
 _PR_SET_PDEATHSIG = 1  # linux/prctl.h
-_NEXT: Any = None  # in a worker: the _Counter of the next item to take (see share)
+_INDEX = 4  # bytes of an item's index in the pipe of turns
+# Items one share can deal: all their indices fit in the smallest pipe (a page on Linux; 512
+# bytes, POSIX's PIPE_BUF, elsewhere), written at once before any process reads.
+MOST_ITEMS = 1024 if sys.platform.startswith("linux") else 128
+_LOOK_EVERY = 1.0  # seconds: how often a parent waiting for a worker also asks if it lives
+_REAP_TRIES = 200  # looks, 10 ms apart, for a worker whose pipe closed to become a zombie
+_STOPS = (signal.SIGTERM, signal.SIGHUP)  # the stops a worker dies of, as the parent would
+_HANDED_BACK = -1  # a worker's slot once its work is sent back (else: 1 + the item's index)
+
+
+class WorkerDied(Interrupted):
+    """A forked worker ended before handing back its work: the run stops, exit 2."""
+
+    def __init__(self, pid: int, doing: str, how: str) -> None:
+        message = (
+            f"worker {pid} ({doing}) {how} before handing back its work; "
+            "run again, or with PENDCLI_JOBS=1 to compute in one process"
+        )
+        super().__init__(signal.SIGCHLD, message, status=2)
+        self.pid = pid
 
 
 def job_count(requested: int | None, tasks: int) -> int:
@@ -48,12 +83,97 @@ def job_count(requested: int | None, tasks: int) -> int:
     return max(1, min(requested, tasks))
 
 
-def _start_worker(parent: int, next_item: Any) -> None:
-    """In each forked worker, before any task: die with the parent, leave Ctrl-C to it."""
-    global _NEXT
-    _NEXT = next_item
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+def how_it_ended(status: int) -> str:
+    """``"was killed by SIGKILL"``, ``"exited with status 3"``: a wait status in words."""
+    if os.WIFSIGNALED(status):
+        number = os.WTERMSIG(status)
+        try:
+            return f"was killed by {signal.Signals(number).name}"
+        except ValueError:
+            return f"was killed by signal {number}"
+    return f"exited with status {os.waitstatus_to_exitcode(status)}"
+
+
+class _Turns:
+    """The indices of the items not yet taken, in a pipe every forked process reads: each
+    takes the next with one read of 4 bytes, done whole under the kernel's own lock, so a
+    process killed at any moment leaves no lock held (a multiprocessing.Lock would stay
+    taken). The read end does not block: an empty pipe means every item is taken."""
+
+    def __init__(self) -> None:
+        self.read, self.write = os.pipe()
+        os.set_blocking(self.read, False)
+
+    def deal(self, count: int) -> None:
+        if count > MOST_ITEMS:
+            raise ValueError(f"{count} items to share; at most {MOST_ITEMS}")
+        os.write(self.write, b"".join(i.to_bytes(_INDEX, "little") for i in range(count)))
+
+    def take(self) -> int | None:
+        try:
+            return int.from_bytes(os.read(self.read, _INDEX), "little")
+        except BlockingIOError:
+            return None
+
+    def close(self) -> None:
+        os.close(self.read)
+        os.close(self.write)
+
+
+class _Slots:
+    """What each worker is doing, in memory shared with it (one 8-byte number per worker):
+    0 nothing yet, 1 + i computing item i, _HANDED_BACK its work sent. Read by the parent
+    only, and only to name what a dead worker was computing (no pipe is read in a handler)."""
+
+    def __init__(self, count: int) -> None:
+        self.memory = mmap.mmap(-1, 8 * count)
+
+    def set(self, slot: int, value: int) -> None:
+        self.memory[8 * slot : 8 * slot + 8] = value.to_bytes(8, "little", signed=True)
+
+    def get(self, slot: int) -> int:
+        return int.from_bytes(self.memory[8 * slot : 8 * slot + 8], "little", signed=True)
+
+
+@dataclass
+class _Worker:
+    pid: int
+    slot: int
+    conn: Any  # multiprocessing.connection.Connection: work in, results out
+    status: int | None = None  # its wait status, once reaped
+    busy: bool = False  # it holds work not yet handed back
+    results: dict[int, Any] | None = None  # what it handed back
+
+    def ended(self) -> int | None:
+        """Its wait status if it has ended (reaped now, if not already), else None."""
+        if self.status is None:
+            try:
+                pid, status = os.waitpid(self.pid, os.WNOHANG)
+            except ChildProcessError:  # being reaped by the code this handler interrupted
+                return None
+            if pid:
+                self.status = status
+        return self.status
+
+
+def _reaped(worker: _Worker) -> int | None:
+    """The wait status of a worker whose pipe has closed: it is ending, so a zombie in a
+    moment (bounded; one that closed its pipe yet lives on is of no use: it is killed)."""
+    for _ in range(_REAP_TRIES):
+        if worker.ended() is not None:
+            return worker.status
+        time.sleep(0.01)
+    with contextlib.suppress(ProcessLookupError, ChildProcessError):
+        os.kill(worker.pid, signal.SIGKILL)
+        worker.status = os.waitpid(worker.pid, 0)[1]
+    return worker.status
+
+
+def _start_worker(parent: int) -> None:
+    """In each forked worker, before any work: die with the parent, leave it the stops."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C reaches the group: the parent's
+    for name in ("SIGTERM", "SIGHUP", "SIGCHLD"):  # (the others, from interrupts' at-fork hook)
+        signal.signal(getattr(signal, name), signal.SIG_DFL)
     if sys.platform.startswith("linux"):
         import ctypes
 
@@ -62,38 +182,53 @@ def _start_worker(parent: int, next_item: Any) -> None:
         os._exit(1)
 
 
+def _serve(
+    conn: Any, turns: _Turns, slots: _Slots, slot: int, parent: int, others: list[Any]
+) -> NoReturn:
+    """A forked worker's life: each piece of work read from ``conn`` done and sent back,
+    until the pipe closes or the parent kills it; it never returns, nor runs exit handlers."""
+    code = 1
+    try:
+        _start_worker(parent)
+        for other in others:  # the parent's ends: this worker's death must close its own
+            other.close()
+        while True:
+            try:
+                items, run = conn.recv()
+            except EOFError:
+                break
+            _hand_back(conn, _work(items, run, turns, slots, slot))
+            slots.set(slot, _HANDED_BACK)
+        code = 0
+    finally:
+        os._exit(code)
+
+
+def _work(
+    items: Sequence[Any], run: Callable[[Any], Any], turns: _Turns, slots: _Slots, slot: int
+) -> tuple[str, Any]:
+    """In a worker: the items not yet taken, one at a time; ("results", {index: result}), or
+    ("failed", the exception) at the first that raised."""
+    done: dict[int, Any] = {}
+    try:
+        while (index := turns.take()) is not None:
+            slots.set(slot, 1 + index)
+            done[index] = run(items[index])
+    except Exception as exc:
+        return ("failed", exc)
+    return ("results", done)
+
+
+def _hand_back(conn: Any, message: tuple[str, Any]) -> None:
+    try:
+        conn.send(message)
+    except Exception as exc:  # a result or an exception that pickle cannot carry
+        what = f"{type(message[1]).__name__}: {message[1]}" if message[0] == "failed" else "results"
+        conn.send(("failed", RuntimeError(f"a worker's {what} could not be sent back: {exc}")))
+
+
 def _ended_by_sigterm(signum: int, frame: object) -> None:
     raise SystemExit(128 + signum)
-
-
-class _Counter:
-    """The index of the next item, shared by forked processes: an anonymous shared mapping
-    (no file: multiprocessing.Value would make a 4 kB temporary one, refused where the file
-    size is limited) and a lock."""
-
-    def __init__(self, context: Any) -> None:
-        import mmap
-
-        self.memory = mmap.mmap(-1, 8)
-        self.lock = context.Lock()
-
-    def take(self) -> int:
-        with self.lock:
-            index = int.from_bytes(self.memory[:8], "little")
-            self.memory[:8] = (index + 1).to_bytes(8, "little")
-        return index
-
-
-def _take_turns(items: Sequence[T], run: Callable[[T], R], next_item: _Counter) -> dict[int, R]:
-    """Run the items not yet taken by another process, one at a time: {index: result}."""
-    done: dict[int, R] = {}
-    while (index := next_item.take()) < len(items):
-        done[index] = run(items[index])
-    return done
-
-
-def _worker_turns(items: Sequence[T], run: Callable[[T], R]) -> dict[int, R]:
-    return _take_turns(items, run, _NEXT)
 
 
 class ForkedWorkers:
@@ -101,59 +236,173 @@ class ForkedWorkers:
 
     def __init__(self, processes: int) -> None:
         self.processes = processes
-        self.pool: Any = None
-        self.next_item: Any = None
+        self.workers: list[_Worker] = []
+        self.turns: _Turns | None = None
+        self.slots: _Slots | None = None
         self.previous_sigterm: Any = None
+        self.label: Callable[[int], str] = str
 
     def __enter__(self) -> ForkedWorkers:
         if self.processes > 0:
-            import multiprocessing
-
-            context = multiprocessing.get_context("fork")
-            self.next_item = _Counter(context)
-            if threading.current_thread() is threading.main_thread():
+            main = threading.current_thread() is threading.main_thread()
+            if main and signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:  # no handler yet
                 self.previous_sigterm = signal.signal(signal.SIGTERM, _ended_by_sigterm)
-            args = (os.getpid(), self.next_item)
-            self.pool = context.Pool(self.processes, initializer=_start_worker, initargs=args)
+            try:
+                self._start()
+            except BaseException:
+                self.__exit__(*sys.exc_info())
+                raise
         return self
 
-    def submit(self, run: Callable[..., R], *args: Any) -> Callable[[], R]:
-        """Start ``run(*args)`` in a worker (or, with none, here when asked): its result."""
-        if self.pool is None:
-            return lambda: run(*args)
-        return self.pool.apply_async(run, args).get
+    def _start(self) -> None:
+        from multiprocessing.connection import Pipe
+
+        parent, self.turns, self.slots = os.getpid(), _Turns(), _Slots(self.processes)
+        for slot in range(self.processes):
+            here, there = Pipe()
+            try:
+                pid = os.fork()
+            except BaseException:
+                here.close()
+                there.close()
+                raise
+            if pid == 0:
+                others = [here, *(worker.conn for worker in self.workers)]
+                _serve(there, self.turns, self.slots, slot, parent, others)
+            there.close()
+            self.workers.append(_Worker(pid, slot, here))
 
     def share(
         self,
         items: Sequence[T],
         run: Callable[[T], R],
         done: Callable[[T, R], None] = lambda item, result: None,
+        name: Callable[[T], str] | None = None,
     ) -> list[R]:
         """``run`` over ``items``, shared by this process and the workers, each taking the
         next item when free (put the costliest first); results in the order of ``items``.
-        ``done`` is called here for each item, as soon as its result is here. Once per pool."""
-        if self.pool is None:
+        ``done`` is called here for each item, as soon as its result is here; ``name`` says
+        what an item is, should a worker die computing it."""
+        if not self.workers:
             return [_done(done, item, run(item)) for item in items]
-        theirs = [self.submit(_worker_turns, items, run) for _ in range(self.processes)]
+        self.label = (lambda i: name(items[i])) if name else (lambda i: f"item {i + 1}")
         results: dict[int, R] = {}
-        mine = _take_turns(items, lambda item: _done(done, item, run(item)), self.next_item)
-        results.update(mine)
-        for collect in theirs:
-            for index, result in collect().items():
-                results[index] = _done(done, items[index], result)
+        with self._watching():
+            self._deal(items, run)
+            assert self.turns is not None
+            while (index := self.turns.take()) is not None:
+                results[index] = _done(done, items[index], run(items[index]))
+                self._look()
+            for worker in self.workers:
+                for index, value in self._collect(worker).items():
+                    results[index] = _done(done, items[index], value)
         return [results[i] for i in range(len(items))]
 
-    def __exit__(self, exc_type: object, *exc: object) -> None:
-        if self.pool is not None:
-            if exc_type is None:
-                self.pool.close()
-            else:  # an error, Ctrl-C or SIGTERM: the workers' work is not wanted any more
-                self.pool.terminate()
-            self.pool.join()
-            self.pool = None
-        if self.previous_sigterm is not None:
-            signal.signal(signal.SIGTERM, self.previous_sigterm)
-            self.previous_sigterm = None
+    def _deal(self, items: Sequence[Any], run: Callable[[Any], Any]) -> None:
+        assert self.turns is not None and self.slots is not None
+        self.turns.deal(len(items))
+        for worker in self.workers:
+            self.slots.set(worker.slot, 0)
+            worker.busy, worker.results = True, None
+            try:
+                worker.conn.send((items, run))
+            except (BrokenPipeError, ConnectionResetError):
+                raise self._death(worker) from None
+
+    def _look(self) -> None:
+        """Between this process's items: take what the workers handed back, and stop the run
+        if one died holding work."""
+        for worker in self.workers:
+            if worker.busy and worker.conn.poll():
+                self._receive(worker)
+            if self._lost(worker):
+                raise self._death(worker)
+
+    def _collect(self, worker: _Worker) -> dict[int, Any]:
+        """Wait for what ``worker`` hands back, looking every second whether it still lives
+        (its pipe's end tells at once; this, even should something else hold it open)."""
+        while worker.busy:
+            if worker.conn.poll(_LOOK_EVERY):
+                self._receive(worker)
+            elif self._lost(worker):
+                raise self._death(worker)
+        assert worker.results is not None
+        return worker.results
+
+    def _receive(self, worker: _Worker) -> None:
+        try:
+            kind, value = worker.conn.recv()
+        except (EOFError, OSError):  # its end closed, maybe in the middle of a message
+            raise self._death(worker) from None
+        worker.busy = False
+        if kind == "failed":
+            raise value
+        worker.results = value
+
+    def _lost(self, worker: _Worker) -> bool:
+        """Whether ``worker`` has ended holding work it had not sent back."""
+        assert self.slots is not None
+        if not worker.busy or worker.ended() is None:
+            return False
+        return self.slots.get(worker.slot) != _HANDED_BACK
+
+    def _death(self, worker: _Worker) -> Interrupted:
+        """How the run stops for ``worker``'s death: killed by TERM or HUP (a stop sent to
+        the run's group, say), as if this process had been, with the same line; else
+        :class:`WorkerDied`."""
+        assert self.slots is not None
+        status = _reaped(worker)
+        if status is not None and os.WIFSIGNALED(status) and os.WTERMSIG(status) in _STOPS:
+            return Interrupted(os.WTERMSIG(status))
+        doing = self.slots.get(worker.slot)
+        what = f"computing {self.label(doing - 1)}" if doing > 0 else "before its first item"
+        return WorkerDied(worker.pid, what, how_it_ended(status) if status is not None else "ended")
+
+    @contextlib.contextmanager
+    def _watching(self) -> Iterator[None]:
+        """SIGCHLD stops the run as soon as a worker holding work dies, whatever this process
+        is computing (in the main thread only, where handlers run; elsewhere the looks and
+        waits above notice it)."""
+        if threading.current_thread() is not threading.main_thread():
+            yield
+            return
+        previous = signal.signal(signal.SIGCHLD, self._on_child)
+        try:
+            yield
+        finally:
+            signal.signal(signal.SIGCHLD, previous if previous is not None else signal.SIG_DFL)
+
+    def _on_child(self, signum: int, frame: object) -> None:
+        for worker in self.workers:
+            if self._lost(worker):
+                stop(self._death(worker))
+
+    def __exit__(self, *exc: object) -> None:
+        try:
+            with stops_deferred():  # a second Ctrl-C waits for the workers' end: bounded
+                self._end()
+        finally:
+            if self.previous_sigterm is not None:
+                signal.signal(signal.SIGTERM, self.previous_sigterm)
+                self.previous_sigterm = None
+
+    def _end(self) -> None:
+        """Kill and reap every worker, whatever it is doing: its work is handed back or no
+        longer wanted (SIGKILL cannot be ignored, so the wait is bounded)."""
+        for worker in self.workers:
+            if worker.status is None:
+                with contextlib.suppress(ProcessLookupError):
+                    os.kill(worker.pid, signal.SIGKILL)
+        for worker in self.workers:
+            if worker.status is None:
+                with contextlib.suppress(ChildProcessError):
+                    worker.status = os.waitpid(worker.pid, 0)[1]
+            worker.conn.close()
+        self.workers = []
+        if self.turns is not None and self.slots is not None:
+            self.turns.close()
+            self.slots.memory.close()
+        self.turns = self.slots = None
 
 
 def _done(done: Callable[[T, R], None], item: T, result: R) -> R:
