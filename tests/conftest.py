@@ -80,6 +80,8 @@ SLOW_FAMILIES = {
     "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
     "tests/test_equation_fields.py::test_every_json_row_carries_the_engines_verdict": "every "
     "paper's whole ledger (40 s of CPU cold)",
+    "tests/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this process, "
+    "each regenerating every table and the three ledgers (20 s of CPU)",
     "tests/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
     "judged as committed and with 165 data mutations (20 s of CPU with their references)",
     "tests/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
