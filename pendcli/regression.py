@@ -289,6 +289,8 @@ def run_check(
 
     folder = (root or tables_dir()).resolve() / "regenerated"
     _load_ledgers(root)
+    if not update:  # a damaged committed table is named at once, not after the computation
+        _read_committed_tables(folder)
     result = reproduce_all(keys(), formulas=True, equations=True, quiet=quiet or fmt != "table")
     tables = regenerated_tables(result)
     out = console()
@@ -323,6 +325,15 @@ def run_check(
         f"tables/regenerated within tolerance"
     )
     return 0
+
+
+def _read_committed_tables(folder: Path) -> None:
+    """Every committed table pendcli writes, read and validated as the comparison will read
+    it (:func:`read_table`): a cut, damaged or unreadable one is its one-line error now."""
+    for path in sorted(folder.glob("*.csv")) if folder.is_dir() else []:
+        columns = expected_columns(path.name)
+        if columns is not None:
+            read_table(_read_committed(path), str(path), columns)
 
 
 def _load_ledgers(root: Path | None) -> None:

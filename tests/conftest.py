@@ -80,6 +80,8 @@ SLOW_FAMILIES = {
     "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
     "tests/test_equation_fields.py::test_every_json_row_carries_the_engines_verdict": "every "
     "paper's whole ledger (40 s of CPU cold)",
+    "tests/test_faults.py::test_non_finite_committed_values_fail_the_check": "a whole `check` "
+    "(every table and the three ledgers) to compare with the damaged cells (20-30 s)",
     "tests/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this process, "
     "each regenerating every table and the three ledgers (20 s of CPU)",
     "tests/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
@@ -98,6 +100,12 @@ LATE_STATUS = (
     "test_the_status_computed_from_the_printed_form_is_the_recorded_one"
 )
 SLOW_CASES = {
+    # a renamed claim id through `check`: found when the claims are evaluated, after the
+    # ledgers (the costliest steps go first); the `reproduce` and `g-sensitivity` cases stay
+    ("tests/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
+     "tisserand.resal.rate-command0"): "a whole `check` before the renamed id is found (18 s)",
+    ("tests/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
+     "charbonnier.I_pi.n2-command2"): "a whole `check` before the renamed id is found (21 s)",
     # of the two edits of lines 448-460, the logarithm's coefficient costs 2.6 s alone; the
     # other, 0.8 s alone, is the family's fast case
     ("tests/test_printed_lecornu_late.py::test_a_changed_growing_part_is_refused",
