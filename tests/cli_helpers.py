@@ -16,6 +16,10 @@ from pendcli.cli.main import run
 
 # `pendcli` as a fresh interpreter runs it (the installed script may be absent in a checkout)
 PENDCLI = (sys.executable, "-m", "pendcli")
+# For a child under a file-size limit (RLIMIT_FSIZE): Python writes a module's byte-code with
+# one write() that the limit cuts short, and renames the cut file into the shared cache, where
+# every later import of that module fails ("marshal data too short"). No byte-code written.
+NO_BYTECODE = {"PYTHONDONTWRITEBYTECODE": "1"}
 
 
 class _Utf8Capture(io.StringIO):

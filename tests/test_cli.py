@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 import pytest
-from cli_helpers import assert_clean_error, invoke, run_cli
+from cli_helpers import NO_BYTECODE, assert_clean_error, invoke, run_cli
 
 from pendcli.cli.main import run
 
@@ -271,7 +271,16 @@ def test_file_size_limit_names_the_plot_and_leaves_no_file(tmp_path):
     def limit() -> None:
         resource.setrlimit(resource.RLIMIT_FSIZE, (2048, 2048))
 
-    proc = _pendcli("charbonnier", "table", "--plot", str(target), "-f", "json", preexec_fn=limit)
+    proc = _pendcli(
+        "charbonnier",
+        "table",
+        "--plot",
+        str(target),
+        "-f",
+        "json",
+        preexec_fn=limit,
+        env=NO_BYTECODE,
+    )
     _one_line(proc, f"cannot write {target}: File too large")
     assert list(tmp_path.iterdir()) == []
 
@@ -353,6 +362,7 @@ def test_file_size_limit_during_out_names_the_final_path(tmp_path):
         str(out),
         "-q",
         preexec_fn=limit,
+        env=NO_BYTECODE,
     )
     assert proc.returncode == 2, proc.stderr
     assert proc.stderr.startswith(f"pendcli: error: cannot write {out}"), proc.stderr

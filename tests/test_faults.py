@@ -26,7 +26,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
-from cli_helpers import assert_clean_error, invoke
+from cli_helpers import NO_BYTECODE, assert_clean_error, invoke
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import clear_table_cache
@@ -80,7 +80,7 @@ def run_cli(
 ) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         cli_command(*args),
-        env=child_env(tables),
+        env={**child_env(tables), **(NO_BYTECODE if preexec is _limit_file_size else {})},
         capture_output=True,
         text=True,
         preexec_fn=preexec,

@@ -12,6 +12,7 @@ import time
 from pathlib import Path
 
 import pytest
+from cli_helpers import NO_BYTECODE
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.files import atomic_write, locked, remove_stale, replace_directory
@@ -125,7 +126,8 @@ def test_file_size_limit_leaves_old_content(tmp_path: Path) -> None:
             raise SystemExit(2)
         """
     )
-    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    env = {**os.environ, **NO_BYTECODE}  # the limit would cut a module's byte-code short
+    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
     assert out.returncode == 2, out.stderr
     assert "File too large" in out.stdout and str(target) in out.stdout
     assert _snapshot(target) == {"a.csv": b"old"}
