@@ -7,6 +7,7 @@ import os
 import shlex
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 import typer
@@ -125,3 +126,27 @@ def test_an_unwritable_target_is_refused_before_any_work(args, monkeypatch):
     code, _, err = invoke(*args)
     assert_clean_error(code, err)
     assert "/proc" in err
+
+
+@pytest.mark.parametrize(
+    ("args", "named"),
+    [
+        (["explain", ""], "argument 2 (after 'explain')"),
+        (["explain", "   "], "argument 2 (after 'explain')"),
+        (["formulas", "--plot", ""], "--plot"),
+        (["formulas", "--plot="], "--plot"),
+        (["reproduce", "-p", " "], "-p"),
+        (["lecornu", "example", "--g", "\t"], "--g"),
+        ([""], "argument 1"),
+    ],
+)
+def test_an_empty_or_blank_value_is_one_line_before_any_work(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, args: list[str], named: str
+) -> None:
+    """`explain ''` printed nothing and exited 0 after 3 s; `formulas --plot ''` drew three
+    figures into the current folder: a blank value is refused, naming where it stands."""
+    monkeypatch.chdir(tmp_path)
+    code, out, err = invoke(*args)
+    assert_clean_error(code, err)
+    assert f"error: {named}: an empty or blank value" in err, err
+    assert out == "" and not list(tmp_path.iterdir())

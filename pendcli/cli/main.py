@@ -636,11 +636,25 @@ def run() -> None:
     sys.exit(code)
 
 
+def refuse_blank(args: list[str]) -> None:
+    """No option or argument of pendcli takes an empty or blank value: one is a slip of the
+    shell (an unset variable, stray quotes), refused in one line where typer would read ''
+    as the current folder (`formulas --plot ''`) or as no claim at all (`explain ''`)."""
+    for index, arg in enumerate(args):
+        name, equals, value = arg.partition("=") if arg.startswith("--") else ("", "", arg)
+        if (equals and not value.strip()) or (not equals and not arg.strip()):
+            before = args[index - 1] if index and args[index - 1].startswith("-") else ""
+            after = f" (after {args[index - 1]!r})" if index else ""
+            where = name or before or f"argument {index + 1}{after}"
+            raise PendcliError(f"{where}: an empty or blank value; give one (see --help)")
+
+
 def _invoke(args: list[str]) -> int:
     """Run the app; turn every way it can end into an exit code and at most one stderr line."""
     from pendcli.core.interrupts import Interrupted
 
     try:
+        refuse_blank(args)
         # prog_name fixed: the usage line and the completion variable (_PENDCLI_COMPLETE)
         # must not depend on how Python was started (`python -m pendcli`, a test runner).
         code = app(args=args, prog_name="pendcli", standalone_mode=False)
