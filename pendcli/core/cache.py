@@ -44,6 +44,8 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
+from pendcli.core.files import pid_alive
+
 __all__ = [
     "ENV",
     "FORMAT",
@@ -190,18 +192,6 @@ def _read_at_most(fd: int, size: int) -> bytes:
     return b"".join(parts)
 
 
-def _pid_alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True  # someone else's live process
-    except (OverflowError, OSError):
-        return False
-    return True
-
-
 def _remove(fd: int, names: Iterable[str]) -> int:
     """Unlink each of ``names`` in the open folder ``fd``; how many were removed."""
     removed = 0
@@ -218,7 +208,7 @@ def _leftovers(fd: int) -> list[str]:
     found = []
     for name in os.listdir(fd):
         temporary = _TEMPORARY.fullmatch(name)
-        if _FORMER.fullmatch(name) or (temporary and not _pid_alive(int(temporary["pid"]))):
+        if _FORMER.fullmatch(name) or (temporary and not pid_alive(int(temporary["pid"]))):
             found.append(name)
     return found
 

@@ -50,6 +50,7 @@ __all__ = [
     "lock_file",
     "locked",
     "manifest_text",
+    "pid_alive",
     "probe_lock",
     "remove_stale",
     "replace_directory",
@@ -165,7 +166,9 @@ def _temp_prefix(name: str) -> str:
 _RANDOM = "[a-z0-9_]{8}"
 
 
-def _pid_alive(pid: int) -> bool:
+def pid_alive(pid: int) -> bool:
+    """Whether process ``pid`` is alive (another user's counts): a writer's leftovers are
+    removed only once it is dead."""
     try:
         os.kill(pid, 0)
     except ProcessLookupError:
@@ -183,7 +186,7 @@ def _dead_leftovers(folder: Path, pattern: str, shape: str) -> Iterator[Path]:
     regex = re.compile(shape)
     for candidate in folder.glob(pattern):
         match = regex.fullmatch(candidate.name)
-        if match is not None and not _pid_alive(int(match.group("pid"))):
+        if match is not None and not pid_alive(int(match.group("pid"))):
             yield candidate
 
 
