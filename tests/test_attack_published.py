@@ -17,12 +17,11 @@ import os
 import shutil
 import subprocess
 import sys
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 from cli_helpers import assert_clean_error, invoke
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from pendcli.core import numbers
@@ -47,16 +46,6 @@ PENDCLI = Path(sys.executable).with_name("pendcli")
 CLAIM = "tisserand.example.psi_sin4"  # printed 2'', recomputed 0,000469 (degrees)
 PRINTED = "published = \"2''\"\n"
 LEDGER_TEXT = 'text = "tables/papers/tisserand.txt"'
-
-
-@pytest.fixture
-def tables(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
-    copy = tmp_path / "tables"
-    shutil.copytree(REPO_TABLES, copy, ignore=shutil.ignore_patterns(".*"))
-    monkeypatch.setenv("PENDCLI_TABLES", str(copy))
-    clear_table_cache()
-    yield copy
-    clear_table_cache()
 
 
 def set_published(tables: Path, printed: str) -> Path:
@@ -244,6 +233,7 @@ GARBAGE = st.one_of(
 
 
 @given(GARBAGE)
+@example("0:" + "0" * 17 + "\x1f" * 7 + "\U00012544\U00018cd6" * 5)  # ten characters each, quoted
 @settings(max_examples=300)
 def test_garbage_is_a_number_a_double_holds_or_one_clear_error(text: str) -> None:
     try:

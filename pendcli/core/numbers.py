@@ -93,7 +93,7 @@ def parse_printed(text: str) -> PrintedNumber:
     """Parse one printed number; raise :class:`PendcliError` naming the string if it is not one."""
     if not isinstance(text, str) or not text.strip():
         raise PendcliError(
-            f"empty printed value {text!r}; expected e.g. '5,14', '1°7\\'33\\'\\'', '1/5'"
+            f"empty printed value {_shown(text)}; expected e.g. '5,14', '1°7\\'33\\'\\'', '1/5'"
         )
     _check_size(text)
     s = _normalise(text)
@@ -113,11 +113,15 @@ def parse_printed(text: str) -> PrintedNumber:
     )
 
 
-def _shown(text: str) -> str:
-    """The printed string as an error line quotes it: escaped, and cut if long."""
-    if len(text) <= 40:
+def _shown(text: str, most: int = 60) -> str:
+    """The printed string as an error line quotes it: escaped, and cut so that its escaped
+    form stays within ``most`` characters (one character can take ten: '\\U0001e960')."""
+    if len(repr(text)) <= most:
         return repr(text)
-    return f"{text[:40]!r}… ({len(text)} characters)"
+    cut = text[:most]
+    while len(repr(cut)) > most:
+        cut = cut[: len(cut) // 2 if len(repr(cut)) > 2 * most else -1]
+    return f"{cut!r}… ({len(text)} characters)"
 
 
 def _check_size(text: str) -> None:
@@ -178,7 +182,7 @@ def _sexagesimal(text: str, s: str) -> PrintedNumber:
     m = _SEXAGESIMAL.match(s)
     if not (m and any(m.group(i) for i in (2, 3, 4))):
         raise PendcliError(
-            f"malformed sexagesimal angle {text!r}; expected e.g. 1°7'33'' or 2'42''"
+            f"malformed sexagesimal angle {_shown(text)}; expected e.g. 1°7'33'' or 2'42''"
         )
     sign, deg, minutes, seconds = m.groups()
     value = 0.0
@@ -210,8 +214,9 @@ def _tokens(s: str, original: str) -> list[str]:
         m = _EXPR_TOKEN.match(s, pos)
         if not m:
             raise PendcliError(
-                f"cannot read printed value {original!r} at {s[pos:]!r}; expected a decimal "
-                "(5,14), an angle (1°7'33''), or an exact expression (2·4/(1·3·5), π·1/2)"
+                f"cannot read printed value {_shown(original)} at {_shown(s[pos:], 30)}; "
+                "expected a decimal (5,14), an angle (1°7'33''), "
+                "or an exact expression (2·4/(1·3·5), π·1/2)"
             )
         tokens.append(m.group(1))
         pos = m.end()
@@ -227,7 +232,7 @@ def _parse_exact(s: str, original: str) -> tuple[Fraction, int]:
     parser = _ExactParser(tokens, original)
     result = parser.expr()
     if parser.index != len(parser.tokens):
-        raise PendcliError(f"unbalanced parenthesis in printed value {original!r}")
+        raise PendcliError(f"unbalanced parenthesis in printed value {_shown(original)}")
     return result
 
 
