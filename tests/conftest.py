@@ -153,6 +153,24 @@ REPRESENTATIVES = {
 }
 
 
+@pytest.fixture
+def tables(tmp_path, monkeypatch):  # type: ignore[no-untyped-def]
+    """A copy of the committed tables/, in use through $PENDCLI_TABLES: the attack suites edit
+    it (the committed tables stay untouched); the table cache is cleared around the test."""
+    import shutil
+    from pathlib import Path
+
+    from pendcli.core.tables import clear_table_cache
+
+    copy = tmp_path / "tables"
+    committed = Path(__file__).resolve().parent.parent / "tables"
+    shutil.copytree(committed, copy, ignore=shutil.ignore_patterns(".*"))
+    monkeypatch.setenv("PENDCLI_TABLES", str(copy))
+    clear_table_cache()
+    yield copy
+    clear_table_cache()
+
+
 @pytest.fixture(scope="session")
 def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
     """A result cache folder shared by the tests of an output's form (its schema, filters,

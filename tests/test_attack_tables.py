@@ -46,16 +46,6 @@ def _committed_tables_untouched() -> Iterator[None]:
     assert digest(REPO_TABLES) == COMMITTED
 
 
-@pytest.fixture
-def tables(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
-    copy = tmp_path / "tables"
-    shutil.copytree(REPO_TABLES, copy, ignore=shutil.ignore_patterns(".*"))
-    monkeypatch.setenv("PENDCLI_TABLES", str(copy))
-    clear_table_cache()
-    yield copy
-    clear_table_cache()
-
-
 def set_constant(tables: Path, key: str, name: str, value: str) -> Path:
     path = tables / "published" / f"{key}.toml"
     text = path.read_text(encoding="utf-8")

@@ -9,7 +9,6 @@ from __future__ import annotations
 import io
 import os
 import shutil
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -22,16 +21,6 @@ REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
 # every character the rule refuses, by class: C0 controls, DEL and C1, the bidi controls
 REFUSED = ["\x00", "\x1b", "\r", "\x0b", "\x7f", "\x9b", "\u202e", "\u2066", "\u2069"]
 KEPT = ["\t", "é", "θ", "\u00a0", "—", "½"]
-
-
-@pytest.fixture
-def tables(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
-    copy = tmp_path / "tables"
-    shutil.copytree(REPO_TABLES, copy, ignore=shutil.ignore_patterns(".*"))
-    monkeypatch.setenv("PENDCLI_TABLES", str(copy))
-    clear_table_cache()
-    yield copy
-    clear_table_cache()
 
 
 def _with_note(tables: Path, note_toml: str) -> Path:
