@@ -71,7 +71,9 @@ def _quotient(a: Dim, b: Dim) -> Dim:
 
     out = {}
     for k in {*a, *b}:
-        difference = sp.simplify(sp.sympify(a.get(k, 0)) - sp.sympify(b.get(k, 0)))
+        difference = sp.simplify(
+            sp.sympify(a.get(k, 0), strict=True) - sp.sympify(b.get(k, 0), strict=True)
+        )
         if difference != 0:
             out[k] = difference
     return out

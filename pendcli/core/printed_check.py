@@ -409,10 +409,10 @@ def _taylor_verdict(expr: Any, reference: Reference, order: int) -> tuple[bool |
     scale = reference.scale
     low, high = reference.domain.get(scale.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
     if expr.has(sp.Integral, sp.Derivative, sp.Subs) or not all(
-        isinstance(sp.sympify(b), sp.Rational) for b in (low, high)
+        isinstance(sp.sympify(b, strict=True), sp.Rational) for b in (low, high)
     ):
         return None, ""
-    in_root = _meromorphic_in_root(expr, scale, positive=sp.sympify(low) > 0)
+    in_root = _meromorphic_in_root(expr, scale, positive=sp.sympify(low, strict=True) > 0)
     if in_root is None:
         return None, ""
     variable, branch = in_root[1:]

@@ -1093,7 +1093,7 @@ def reference_eps_reduced() -> Any:
     import sympy as sp
 
     exact = {
-        n: sp.sympify(v).subs({sp.Symbol(m, real=True): 0 for m in zero})
+        n: sp.sympify(v, strict=True).subs({sp.Symbol(m, real=True): 0 for m in zero})
         for n, v in split.exact.items()
     }
     return _reference({**exact, **zero}, "(40) split, α = γ = 0")
