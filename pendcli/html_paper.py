@@ -273,7 +273,7 @@ def cited_formulas(equations: Sequence[Row], formulas: Sequence[Row]) -> dict[st
         pattern = re.compile(rf"(?<![\w.]){re.escape(id_of(formula))}(?![\w.])")
         named = [eq for eq in equations if _same_equation(id_of(formula), eq)]
         for eq in named or equations:
-            if named or pattern.search(text_of(eq, "check") + " " + text_of(eq, "corrected")):
+            if named or pattern.search(text_of(eq, "measured") + " " + text_of(eq, "corrected")):
                 out.setdefault(id_of(eq), []).append(formula)
     return out
 
@@ -447,11 +447,17 @@ def _equation_rows(equations: Sequence[Row], cited: Mapping[str, Sequence[Row]],
         {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
          "label": text_of(r, "equation"), "section": text_of(r, "section"),
          "statement": text_of(r, "statement"), "cause": EQUATION_CAUSE.get(verdict_of(r), ""),
-         "correction": correction_of(r), "check": text_of(r, "check"),
+         "correction": correction_of(r), "check": _check_of(r),
          "formulas": [formula_cell(f) for f in cited.get(id_of(r), [])],
          "note": text_of(r, "note")}
         for r in equations
     ]  # fmt: skip
+
+
+def _check_of(row: Row) -> str:
+    """The kind of check that decides the row and the engine's evidence ("" for none)."""
+    kind, evidence = text_of(row, "kind"), text_of(row, "evidence")
+    return f"{kind}: {evidence}" if kind else ""
 
 
 def _formula_rows(formulas: Sequence[Row]) -> list[dict[str, object]]:

@@ -60,7 +60,7 @@ CLAIM_COLUMNS = (
     "from",
 )
 FORMULA_COLUMNS = ("id", "source", "claimed_order", "observed_order", "verdict", "cause", "from")
-EQUATION_COLUMNS = ("id", "equation", "lines", "status", "dimensions", "observed_order")
+EQUATION_COLUMNS = ("id", "equation", "lines", "status", "kind", "dimensions", "observed_order")
 
 # column -> (kind, tolerance). "rel": |now - then| <= tol * max(|then|, tiny);
 # "abs": |now - then| <= tol; "same": must be identical text.
@@ -74,6 +74,7 @@ TOLERANCES: dict[str, tuple[str, float]] = {
     "equation": ("same", 0.0),  # a ledger row's label as printed, and where it is printed
     "lines": ("same", 0.0),
     "status": ("same", 0.0),  # the ledger's computed status, and its printed form's dimensions
+    "kind": ("same", 0.0),  # the kind of check that decides the row
     "dimensions": ("same", 0.0),
     "recomputed": ("rel", 1e-9),  # closed forms, special functions: last-bit noise only
     "exact": ("rel", 1e-7),  # fuller models (quadrature, ODE at tight tolerance)

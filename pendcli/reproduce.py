@@ -485,9 +485,9 @@ def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
         import sympy  # noqa: F401
 
         for key in papers:
-            equations = paper(key).equations
-            if equations is not None:
-                equations()
+            references = paper(key).references
+            if references is not None:
+                references()
 
 
 def _run_step(step: Step, papers: tuple[str, ...]) -> Any:

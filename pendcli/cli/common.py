@@ -61,7 +61,7 @@ def complete_verdicts(incomplete: str) -> list[str]:
 
 def complete_statuses(incomplete: str) -> list[str]:
     """Shell completion of ``--status`` (the equation ledger's statuses)."""
-    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.vocabulary import STATUSES
 
     return [s for s in STATUSES if s.startswith(incomplete.casefold())]
 

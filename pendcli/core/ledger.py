@@ -3,11 +3,11 @@
 A ledger is ``tables/equations/<paper>.toml``: one ``[[equation]]`` row per equation label
 printed in the paper's text (``tables/papers/<paper>.txt``) and per stated result, with a
 status (``holds``, ``fails``, ``misprint``, ``definition``, ``not-checkable``) and, for the
-first three, the name of a check in the paper's equations module (``Paper.equations``, e.g.
-``pendcli.papers.<paper>.equations``) returning an
-:class:`~pendcli.core.ledger_check.EquationCheck`. This module knows nothing about pendulums:
-it reads and validates ledgers, extracts the labels a text prints, runs the checks and
-verifies that each agrees with the status its row records. A disagreement is an error in the
+first three, the ``kind`` of check that decides it (:mod:`pendcli.core.check_kinds`) and the
+``reference`` it is judged against (its builder in the paper's table, ``Paper.references``).
+This module knows nothing about pendulums: it reads and validates ledgers, extracts the
+labels a text prints, judges each row's printed form by its kind and verifies that the
+status computed is the one the row records. A disagreement is an error in the
 ledger, reported, never re-labelled.
 """
 
@@ -15,25 +15,24 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, fields
 from functools import cache
 from pathlib import Path
-from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger_check import CHECK_METHODS, EquationCheck
 from pendcli.core.ledger_formulas import (
     printed_status,
     row_dimensions,
+    row_formula,
     validate_formulas,
     validate_scopes,
     validate_symbols,
 )
 from pendcli.core.rows import NO_STATUS, EquationRow
 from pendcli.core.text_blocks import Span, validate_span
-from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES, FormulaVerdict
+from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES
 from pendcli.core.vocabulary import EquationStatus as Status
 
 if TYPE_CHECKING:
@@ -48,19 +47,19 @@ __all__ = [
     "Evaluated",
     "Ledger",
     "LedgerRow",
-    "check_from_formula_rows",
-    "check_module",
+    "Measured",
+    "References",
     "cited_references",
     "coverage",
     "equation_rows",
     "evaluate",
     "labels_in_text",
     "load_ledger",
+    "measured",
     "parse_ledger",
     "printed_problem",
+    "reference_table",
     "row_printed_status",
-    "run_check",
-    "verify",
 ]
 
 LEDGER_KEYS = ("paper", "text")
@@ -69,9 +68,13 @@ REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
 # and (issue 19) the printed form as a formula.
 TEXT_KEYS = ("lines", "quote", "restates", "printed", "reading_formula", "corrected_formula",
              "reference")  # fmt: skip
-ROW_KEYS = (*REQUIRED_KEYS, "check", "reading", "corrected", "wrong_term", "note", *TEXT_KEYS)
+# A checked row's kind of check (core/check_kinds) and the formula checks (formulas.py) that
+# measure the order of its approximation against a fuller model.
+CHECK_KEYS = ("kind", "measured")
+ROW_KEYS = (*REQUIRED_KEYS, *CHECK_KEYS, "reading", "corrected", "wrong_term", "note", *TEXT_KEYS)
 # Keys that take a string or a list of strings, each printed verbatim within the row's lines.
 PRINTED_KEYS = ("wrong_term", "quote")
+LIST_KEYS = (*PRINTED_KEYS, "measured")
 # The output layout issue 12 prescribes for `reproduce --format json` under "equations".
 OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
 
@@ -122,7 +125,9 @@ class LedgerRow:
     section: str
     statement: str
     status: Status
-    check: str | None = None
+    kind: str | None = None
+    # ids of the paper's formula checks whose observed order the row shows
+    measured: tuple[str, ...] | None = None
     reading: str | None = None
     corrected: str | None = None
     # the wrong term(s) as the OCR text prints them (marked in the HTML)
@@ -250,8 +255,10 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         raise PendcliError(f"{path}: [[equation]] #{index + 1} is not a table")
     where = f"{path}: {entry.get('id', f'[[equation]] #{index + 1}')}"
     _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
-    printed = {k: _strings(where, k, entry[k]) for k in PRINTED_KEYS if k in entry}
-    for key in (k for k in ROW_KEYS if k != "lines" and k not in PRINTED_KEYS):
+    printed = {k: _strings(where, k, entry[k]) for k in LIST_KEYS if k in entry}
+    if "measured" in printed:
+        printed["measured"] = tuple(_as_strings(printed["measured"]))
+    for key in (k for k in ROW_KEYS if k != "lines" and k not in LIST_KEYS):
         value = entry.get(key)
         if key in REQUIRED_KEYS and value is None:
             raise PendcliError(f"{where}: missing {key!r}")
@@ -330,11 +337,17 @@ def _check_identity(where: str, row: LedgerRow) -> None:
 
 
 def _check_status_fields(where: str, row: LedgerRow) -> None:
+    from pendcli.core.check_kinds import KINDS
+
     checked = row.status in CHECKED_STATUSES
-    if checked and row.check is None:
-        raise PendcliError(f"{where}: status {row.status.value!r} needs a check")
-    if not checked and row.check is not None:
-        raise PendcliError(f"{where}: status {row.status.value!r} takes no check")
+    for key in ("kind", "reference"):
+        if checked and getattr(row, key) is None:
+            raise PendcliError(f"{where}: status {row.status.value!r} needs a {key}")
+    for key in (*CHECK_KEYS, "reference"):
+        if not checked and getattr(row, key) is not None:
+            raise PendcliError(f"{where}: status {row.status.value!r} takes no {key}")
+    if row.kind is not None and row.kind not in KINDS:
+        raise PendcliError(f"{where}: unknown kind {row.kind!r}; valid: {', '.join(KINDS)}")
     if not checked and row.note is None:
         raise PendcliError(f"{where}: status {row.status.value!r} needs a note (what or why)")
     if (row.reading is not None) != (row.status is Status.MISPRINT):
@@ -343,48 +356,9 @@ def _check_status_fields(where: str, row: LedgerRow) -> None:
         raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
 
 
-def check_module(paper: Paper) -> ModuleType | None:
-    """The module of the paper's equation checks (``Paper.equations``), None if it has none."""
-    return paper.equations() if paper.equations is not None else None
-
-
-@cache
-def _run_named(checks: ModuleType, paper: str, name: str) -> EquationCheck:
-    # the ledger row names its check: a function of the paper's equations module
-    function = getattr(checks, name, None)
-    if not callable(function):
-        raise PendcliError(f"{checks.__name__} has no check {name!r}")
-    result = function()
-    if not isinstance(result, EquationCheck):
-        raise PendcliError(f"check {paper}.{name} did not return an EquationCheck")
-    return result
-
-
-def run_check(row: LedgerRow, checks: ModuleType | None) -> EquationCheck | None:
-    """Run the row's check, a function of ``checks`` (None for definitions and not-checkable
-    rows)."""
-    if row.check is None:
-        return None
-    if checks is None:
-        raise PendcliError(f"{row.id}: paper {row.paper!r} has no equation checks")
-    return _run_named(checks, row.paper, row.check)
-
-
-def verify(row: LedgerRow, check: EquationCheck | None) -> str | None:
-    """Why the check contradicts the row's status, or None when they agree."""
-    if check is None:
-        return None if row.status not in CHECKED_STATUSES else "no check was run"
-    if check.method not in CHECK_METHODS:
-        return f"unknown check method {check.method!r}"
-    if row.status in (Status.HOLDS, Status.MISPRINT) and not check.holds:
-        form = "the evident reading" if row.status is Status.MISPRINT else "the printed form"
-        return f"recorded {row.status}, but {form} does not hold: {check.detail}"
-    if row.status is Status.FAILS:
-        if check.holds:
-            return f"recorded fails, but the check finds it holds: {check.detail}"
-        if not check.corrected:
-            return "recorded fails, but the check found no corrected form"
-    return None
+def reference_table(paper: Paper) -> References:
+    """The paper's references by name (``Paper.references``), empty if it has none."""
+    return paper.references() if paper.references is not None else {}
 
 
 # (the status the printed form earns, None for none the ledger may record; why)
@@ -392,16 +366,25 @@ Computed = tuple[str | None, str]
 
 
 @dataclass(frozen=True)
+class Measured:
+    """What the formula checks a row names (``measured``) found: each ``id verdict (order)``,
+    and the lowest observed order among them (None: none is measured)."""
+
+    detail: str
+    observed_order: float | None
+
+
+@dataclass(frozen=True)
 class Evaluated:
     row: LedgerRow
-    check: EquationCheck | None
     problem: str | None
     dimensions: DimensionCheck | None = None  # the printed form's, when it has one
     computed: Computed | None = None  # computed from the printed form; None without a reference
+    measured: Measured | None = None
 
     def output_row(self) -> EquationRow:
         """The row every output shows: each piece in a field of its own."""
-        row, check, dims = self.row, self.check, self.dimensions
+        row, dims, measured = self.row, self.dimensions, self.measured
         status, why = self.computed if self.computed is not None else (None, None)
         return EquationRow(
             id=row.id,
@@ -410,8 +393,8 @@ class Evaluated:
             section=row.section,
             statement=row.statement,
             status=row.status,
-            check=f"{check.method}: {check.detail}" if check is not None else "",
-            observed_order=check.observed_order if check is not None else None,
+            kind=row.kind or "",
+            observed_order=measured.observed_order if measured is not None else None,
             note=row.note or "",
             lines=row.lines,
             printed=row.printed,
@@ -421,7 +404,7 @@ class Evaluated:
             dimensions_detail=dims.detail if dims is not None else None,
             reading_note=row.reading,
             corrected_note=row.corrected,
-            check_corrected=_check_corrected(row, check),
+            measured=measured.detail if measured is not None else None,
             against=row.reference,
             computed=Status(status) if status is not None else None,
             evidence=why,
@@ -429,11 +412,29 @@ class Evaluated:
         )
 
 
-def _check_corrected(row: LedgerRow, check: EquationCheck | None) -> str | None:
-    """The corrected form the check of a failing row found (None for any other row)."""
-    if row.corrected is None or check is None:
+def measured(row: LedgerRow, formulas: Iterable[FormulaRow]) -> Measured | None:
+    """What the formula checks ``row`` names found (None: it names none); a name that is no
+    formula check of the paper is an error naming the row."""
+    if not row.measured:
         return None
-    return check.corrected or None
+    by_id = {r.id: r for r in formulas}
+    wanted = [f"{row.paper}.{name}" for name in row.measured]
+    missing = [i for i in wanted if i not in by_id]
+    if missing:
+        raise PendcliError(f"{row.id}: measured names no formula check {', '.join(missing)}")
+    chosen = [by_id[i] for i in wanted]
+    orders = [r.observed_order for r in chosen if r.observed_order is not None]
+    detail = "; ".join(f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen)
+    return Measured(detail, min(orders) if orders else None)
+
+
+def _formula_rows(paper: Paper, ledger: Ledger) -> list[FormulaRow]:
+    """The paper's formula checks when a row of its ledger names one (else none: not run)."""
+    from pendcli.core.claims import shared_formula_rows
+
+    if paper.formula_checks is None or not any(r.measured for r in ledger.rows):
+        return []
+    return shared_formula_rows(paper.key, paper.formula_checks)
 
 
 # (i, n): the i-th of n contiguous slices of a ledger's rows, so that two processes can
@@ -442,21 +443,21 @@ Part = tuple[int, int]
 
 
 def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
-    """Every row of the paper's ledger (or of ``part`` of it) with its check run and its
-    consistency verified."""
+    """Every row of the paper's ledger (or of ``part`` of it) judged from its printed form,
+    with its consistency verified."""
     ledger = load_ledger(paper.key, root)
     rows = ledger.rows
     index, count = part
     start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
-    checks = check_module(paper)
+    references = reference_table(paper)
+    formulas = _formula_rows(paper, ledger)
     out = []
     for row in rows[start:stop]:
-        check = run_check(row, checks)
         symbols = ledger.symbols_for(row)
         dims = row_dimensions(row, symbols).get("printed")
-        computed = row_printed_status(row, symbols, checks) if row.reference else None
-        problem = verify(row, check) or printed_problem(row, computed)
-        out.append(Evaluated(row, check, problem, dims, computed))
+        computed = row_printed_status(row, symbols, references) if row.reference else None
+        problem = printed_problem(row, computed)
+        out.append(Evaluated(row, problem, dims, computed, measured(row, formulas)))
     return out
 
 
@@ -469,47 +470,59 @@ def printed_problem(row: LedgerRow, computed: Computed | None) -> str | None:
     return f"recorded {row.status}, but the printed form gives {status or NO_STATUS}: {why}"
 
 
+# reference name -> the function that builds it (``Paper.references``)
+References = Mapping[str, Callable[[], Any]]
+
+
 def verify_printed(
-    row: LedgerRow, symbols: dict[str, str], checks: ModuleType | None
+    row: LedgerRow, symbols: Mapping[str, str], references: References
 ) -> tuple[str | None, str | None]:
     """(the status computed from the row's printed form and why, as one line; why it
     contradicts the recorded status or None); (None, None) for a row without a reference."""
     if row.reference is None:
         return None, None
-    computed = row_printed_status(row, symbols, checks)
+    computed = row_printed_status(row, symbols, references)
     return f"{computed[0] or NO_STATUS}: {computed[1]}", printed_problem(row, computed)
 
 
 def row_printed_status(
-    row: LedgerRow, symbols: Mapping[str, str], checks: ModuleType | None
+    row: LedgerRow, symbols: Mapping[str, str], references: References
 ) -> tuple[str | None, str]:
-    """The status ``row``'s printed form earns against its reference (a function of
-    ``checks``) and why, computed once per row and symbol table: a paper's check of a row
-    whose status rests on its printed form asks the same question as the ledger's own check."""
+    """The status ``row``'s printed form earns, by its kind, against its reference (built by
+    ``references[row.reference]``) and why, computed once per row and symbol table."""
     from pendcli.core.tables import tables_dir
 
     assert row.reference is not None
+    builder = references.get(row.reference)
+    if builder is None:
+        raise PendcliError(f"{row.id}: the {row.paper} references have no {row.reference!r}")
     # keyed on the tables folder too: a reference may read the published numbers
-    return _printed_status(row, tuple(sorted(symbols.items())), checks, str(tables_dir()))
+    return _printed_status(row, tuple(sorted(symbols.items())), builder, str(tables_dir()))
 
 
 @cache
 def _printed_status(
-    row: LedgerRow, symbols: tuple[tuple[str, str], ...], checks: ModuleType | None, tables: str
+    row: LedgerRow, symbols: tuple[tuple[str, str], ...], builder: Callable[[], Any], tables: str
 ) -> tuple[str | None, str]:
-    assert row.reference is not None
-    reference = _reference(checks, row.paper, row.reference, tables)
+    from pendcli.core.check_kinds import kind_problem
+
+    assert row.reference is not None and row.kind is not None
+    reference = _reference(builder, row.paper, row.reference, tables)
+    formula = row_formula(f"{row.id}: printed", row.printed or "", dict(symbols))
+    wrong_kind = kind_problem(row.kind, formula, reference)
+    if wrong_kind:
+        return None, wrong_kind
     return printed_status(row, dict(symbols), reference)
 
 
 @cache
-def _reference(checks: ModuleType | None, paper: str, name: str, tables: str) -> Reference:
-    # one Reference per name and tables folder, shared by every row that cites it (building
-    # one can take a second of sympy: solving, integrating, expanding)
-    function = getattr(checks, name, None)
-    if not callable(function):
-        raise PendcliError(f"pendcli.papers.{paper}.equations has no {name!r}")
-    result: Reference = function()
+def _reference(builder: Callable[[], Any], paper: str, name: str, tables: str) -> Reference:
+    # one Reference per builder and tables folder, shared by every row that cites it
+    # (building one can take a second of sympy: solving, integrating, expanding)
+    try:
+        result: Reference = builder()
+    except ValueError as exc:  # a combination of parameters that makes no kind of check
+        raise PendcliError(f"{paper} reference {name!r}: {exc}") from None
     return result
 
 
@@ -519,9 +532,12 @@ def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Refere
     verdicts, the author's model done exactly."""
     from pendcli.core.tables import tables_dir
 
-    checks = check_module(paper)
+    table = reference_table(paper)
     names = dict.fromkeys(r.reference for r in load_ledger(paper.key, root).rows if r.reference)
-    return {name: _reference(checks, paper.key, name, str(tables_dir())) for name in names}
+    missing = [n for n in names if n not in table]
+    if missing:
+        raise PendcliError(f"the {paper.key} references have no {', '.join(map(repr, missing))}")
+    return {n: _reference(table[n], paper.key, n, str(tables_dir())) for n in names}
 
 
 def _clear_reference_caches() -> None:
@@ -547,7 +563,7 @@ def equation_rows(
     rows = []
     problems = []
     for paper in papers:
-        if paper.equations is None:  # a paper without a ledger (its file is then not read)
+        if paper.references is None:  # a paper without a ledger (its file is then not read)
             continue
         for item in evaluate(paper, root, part):
             rows.append(item.output_row())
@@ -568,29 +584,6 @@ def coverage(rows: Iterable[EquationRow]) -> dict[str, dict[str, int]]:
         counts["total"] = sum(counts[s] for s in STATUSES)
         counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
     return table
-
-
-def check_from_formula_rows(rows: Iterable[FormulaRow], ids: Iterable[str]) -> EquationCheck:
-    """One equation checked by existing formula checks (``formulas.py``): it holds when every
-    named row holds; the lowest observed order and the failing rows' corrected forms carry."""
-    by_id = {r.id: r for r in rows}
-    wanted = list(ids)
-    missing = [i for i in wanted if i not in by_id]
-    if missing:
-        raise PendcliError(f"no formula check {', '.join(missing)} (renamed or removed?)")
-    chosen = [by_id[i] for i in wanted]
-    failing = [r for r in chosen if r.verdict != FormulaVerdict.HOLDS]
-    orders = [r.observed_order for r in chosen if r.observed_order is not None]
-    claimed = [r.claimed_order for r in chosen if r.claimed_order is not None]
-    parts = [f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen]
-    return EquationCheck(
-        holds=not failing,
-        method="numeric",
-        detail="formula checks: " + "; ".join(parts),
-        observed_order=min(orders) if orders else None,
-        claimed_order=min(claimed) if claimed else None,
-        corrected="; ".join(r.recomputed for r in failing) or None,
-    )
 
 
 def _order(value: float | None) -> str:

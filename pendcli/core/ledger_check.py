@@ -9,11 +9,16 @@ row can never claim ``holds`` for an equation the computation refutes.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
-from pendcli.core.vocabulary import STATUSES
+from pendcli.core.errors import PendcliError
+from pendcli.core.vocabulary import STATUSES, FormulaVerdict
 from pendcli.core.vocabulary import EquationStatus as Status
+
+if TYPE_CHECKING:
+    from pendcli.core.claims import FormulaRow
 
 __all__ = ["CHECK_METHODS", "STATUSES", "EquationCheck", "Method", "Status"]
 
@@ -42,3 +47,30 @@ class EquationCheck:
     observed_order: float | None = None
     claimed_order: float | None = None
     corrected: str | None = None
+
+
+def check_from_formula_rows(rows: Iterable[FormulaRow], ids: Iterable[str]) -> EquationCheck:
+    """One equation checked by existing formula checks (``formulas.py``): it holds when every
+    named row holds; the lowest observed order and the failing rows' corrected forms carry."""
+    by_id = {r.id: r for r in rows}
+    wanted = list(ids)
+    missing = [i for i in wanted if i not in by_id]
+    if missing:
+        raise PendcliError(f"no formula check {', '.join(missing)} (renamed or removed?)")
+    chosen = [by_id[i] for i in wanted]
+    failing = [r for r in chosen if r.verdict != FormulaVerdict.HOLDS]
+    orders = [r.observed_order for r in chosen if r.observed_order is not None]
+    claimed = [r.claimed_order for r in chosen if r.claimed_order is not None]
+    parts = [f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen]
+    return EquationCheck(
+        holds=not failing,
+        method="numeric",
+        detail="formula checks: " + "; ".join(parts),
+        observed_order=min(orders) if orders else None,
+        claimed_order=min(claimed) if claimed else None,
+        corrected="; ".join(r.recomputed for r in failing) or None,
+    )
+
+
+def _order(value: float | None) -> str:
+    return "n/a" if value is None else f"{value:.2f}"

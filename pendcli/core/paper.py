@@ -16,7 +16,6 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -48,8 +47,8 @@ class Paper:
     """One reproduced paper: its key and every hook the program calls on it.
 
     ``recompute`` is the only required hook: every paper has printed numbers. The others:
-    ``formula_checks`` (derived formulas against numerical solutions), ``equations`` (the
-    module whose functions the ledger's ``check`` names), ``author_procedures`` (how the
+    ``formula_checks`` (derived formulas against numerical solutions), ``references`` (each
+    reference a ledger row cites, by name, to its builder), ``author_procedures`` (how the
     author obtained a printed value from his earlier ones, :mod:`pendcli.core.causes`),
     ``tradeoff_families`` (work-precision families, :mod:`pendcli.tradeoff`),
     ``stability_rows`` (:mod:`pendcli.stability`), ``figures`` (the report's figures of the
@@ -61,7 +60,8 @@ class Paper:
     key: str
     recompute: Callable[[], Mapping[str, Recomputed]]
     formula_checks: Callable[[], Sequence[FormulaRow]] | None = None
-    equations: Callable[[], ModuleType] | None = None
+    # reference name -> its builder (a Reference or Numbers): what the ledger's rows cite
+    references: Callable[[], Mapping[str, Callable[[], Any]]] | None = None
     # imports what recompute and formula_checks run, so that a forked worker inherits it
     preload: Callable[[], None] | None = None
     author_procedures: Callable[[], Mapping[str, Procedure]] | None = None

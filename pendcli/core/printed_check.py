@@ -35,7 +35,7 @@ from typing import Any
 from pendcli.core.printed import ELLIPSIS, Formula
 from pendcli.core.recent import Recent
 
-__all__ = ["Reference", "computed_status", "formula_passes", "judged"]
+__all__ = ["Reference", "computed_status", "formula_passes", "is_relation", "judged"]
 
 POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
 _DIGITS = 20
@@ -89,6 +89,28 @@ class Reference:
     each_case: tuple[Mapping[str, Any], ...] = ()
     conditions: tuple[Any, ...] = ()
 
+    def __post_init__(self) -> None:
+        problem = _meaningless(self)
+        if problem:
+            raise ValueError(f"a reference{' for ' + self.what if self.what else ''}: {problem}")
+
+
+def _meaningless(reference: Reference) -> str | None:
+    """Why the reference's parameters make no kind of check (a combination the engine would
+    otherwise ignore in silence), or None."""
+    if reference.scale is None and (reference.order is not None or reference.orders):
+        return "an order needs a scale"
+    if reference.bounded and (reference.scale is None or reference.order is not None):
+        return "bounded needs a scale and takes no order"
+    if reference.scale is not None and not reference.bounded and reference.order is None:
+        return "a scale needs an order (or bounded)"
+    if reference.bounded and reference.rounded:
+        return "bounded and rounded exclude each other"
+    chosen = [n for n in ("cases", "each_case", "conditions") if getattr(reference, n)]
+    if len(chosen) > 1:
+        return f"{' and '.join(chosen)} exclude each other"
+    return None
+
 
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
     """Whether every equation (and inequality) of ``formula`` holds under ``reference``, and
@@ -96,7 +118,7 @@ def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
     for index, (lhs, rhs) in enumerate(formula.equations):
         against = reference.cases[index] if index < len(reference.cases) else reference
         if lhs is None:
-            if _is_relation(rhs):
+            if is_relation(rhs):
                 ok, why = _relation_passes(rhs, against)
                 if not ok:
                     return False, f"{rhs}: {why}"
@@ -155,7 +177,7 @@ def _substituted(residual: Any, reference: Reference) -> Any:
     return expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit(deep=False))
 
 
-def _is_relation(expr: Any) -> bool:
+def is_relation(expr: Any) -> bool:
     from sympy.core.relational import Relational
 
     return isinstance(expr, Relational) and not expr.is_Equality

@@ -98,9 +98,11 @@ class EquationRow:
     --equations``, the report and the HTML show.
 
     Each piece is a field of its own: the ledger's words (``note``, ``reading_note``,
-    ``corrected_note``), what the row's check found (``check``, ``check_corrected``), what the
-    engine computed from the printed form against its reference (``against``, ``computed``,
-    ``evidence``) and the printed form's dimensions (``dimensions``, ``dimensions_detail``).
+    ``corrected_note``), the kind of check that decides it and what the engine computed from
+    the printed form against its reference (``kind``, ``against``, ``computed``,
+    ``evidence``), the order the formula checks it names measured against a fuller model
+    (``measured``, ``observed_order``) and the printed form's dimensions (``dimensions``,
+    ``dimensions_detail``).
     """
 
     id: str
@@ -109,8 +111,8 @@ class EquationRow:
     section: str
     statement: str
     status: EquationStatus
-    check: str  # "method: detail" of the check run, "" for rows without one
-    observed_order: float | None
+    kind: str  # the kind of check that decides the row (core/check_kinds), "" for none
+    observed_order: float | None  # the lowest order the formula checks in measured observed
     note: str  # the ledger's own note, "" without one
     # where the row is printed, its formulas, the printed form's dimensions
     lines: tuple[int, int] | None = None  # first and last line of tables/papers/<paper>.txt
@@ -121,7 +123,8 @@ class EquationRow:
     dimensions_detail: str | None = None  # the dimension check's reason (a mismatch's sides)
     reading_note: str | None = None  # the ledger's words on a misprint's evident reading
     corrected_note: str | None = None  # the ledger's words on a failure's correction
-    check_corrected: str | None = None  # the corrected form the row's check found (a failure)
+    # the formula checks (formulas.py) that measure the row's approximation: "id verdict (order)"
+    measured: str | None = None
     against: str | None = None  # the reference the printed form is judged against
     # the status the engine computed from the printed form (None: none the ledger may record,
     # or no reference), and the engine's why: the residual, digits or coefficient that decided
@@ -141,21 +144,21 @@ NO_STATUS = "no status the ledger may record"  # what the printed form earns whe
 
 def equation_notes(row: Mapping[str, object]) -> str:
     """An equation row's pieces as one line of prose (the table's, Markdown's and the report's
-    note column): the reading, the correction (and the check's), the ledger's note, the status
-    computed from the printed form and why, a dimension mismatch, an inconsistency."""
+    note column): the reading, the correction, the ledger's note, the status computed from
+    the printed form and why, what the formula checks measured, a dimension mismatch, an
+    inconsistency."""
     notes = []
     if row.get("reading_note"):
         notes.append(f"reading: {row['reading_note']}")
     if row.get("corrected_note"):
-        found = row.get("check_corrected")
-        notes.append(
-            f"corrected: {row['corrected_note']}" + (f" (computed: {found})" if found else "")
-        )
+        notes.append(f"corrected: {row['corrected_note']}")
     if row.get("note"):
         notes.append(str(row["note"]))
     if row.get("against") is not None:
         computed = row.get("computed") or NO_STATUS
         notes.append(f"computed from the printed form: {computed}: {row.get('evidence')}")
+    if row.get("measured"):
+        notes.append(f"measured: {row['measured']}")
     if row.get("dimensions") == "inconsistent":
         notes.append(f"dimensions: {row.get('dimensions_detail')}")
     if row.get("inconsistency"):

@@ -12,9 +12,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
+from pendcli.core.check_kinds import KINDS
 from pendcli.core.claims import CAUSES, FORMULA_VERDICTS
-from pendcli.core.ledger_check import STATUSES
 from pendcli.core.verdict import CLAIM_VERDICTS
+from pendcli.core.vocabulary import STATUSES
 from pendcli.papers.registry import PAPERS  # the built-in papers the JSON describes
 
 __all__ = ["DOCUMENT", "Field", "RowKind", "check_row", "markdown"]
@@ -122,12 +123,17 @@ EQUATIONS = RowKind(
         Field("statement", _TEXT, "what it states, in linear notation"),
         Field("status", _TEXT, "what the check found", STATUSES),
         Field(
-            "check",
+            "kind",
             _TEXT,
-            "`sympy:`, `numeric:` or `cross-reference:` and what was "
-            "compared; empty for a definition",
+            "the kind of check that decides the row (docs/ENGINE.md); empty for a definition "
+            "or a not-checkable row",
+            ("", *KINDS),
         ),
-        Field("observed_order", _OPTIONAL, "for a truncated series: the residual's slope"),
+        Field(
+            "observed_order",
+            _OPTIONAL,
+            "the lowest order the formula checks in `measured` observed against a fuller model",
+        ),
         Field("note", _TEXT, "the ledger's own note, empty without one"),
         Field("lines", ("array", "null"), "[first, last]: the lines of the paper's text"),
         Field("printed", ("string", "null"), "the formula as printed, in sympy notation"),
@@ -146,7 +152,11 @@ EQUATIONS = RowKind(
         ),
         Field("reading_note", _OPT_TEXT, "the ledger's words on a misprint's evident reading"),
         Field("corrected_note", _OPT_TEXT, "the ledger's words on a failure's correction"),
-        Field("check_corrected", _OPT_TEXT, "the corrected form a failure's check computed"),
+        Field(
+            "measured",
+            _OPT_TEXT,
+            "the formula checks that measure the row's approximation: `id verdict (order)`",
+        ),
         Field("against", _OPT_TEXT, "the reference the printed form is judged against"),
         Field(
             "computed",

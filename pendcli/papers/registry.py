@@ -138,7 +138,7 @@ def explanations(key: str) -> Declared:
 def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
     """The registered papers that have an equation ledger, in the registry's order (a paper
     with equation checks must have its ledger file: a missing one is an error, never skipped)."""
-    return tuple(k for k in keys() if paper(k).equations is not None)
+    return tuple(k for k in keys() if paper(k).references is not None)
 
 
 def equation_rows(

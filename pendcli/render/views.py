@@ -136,7 +136,7 @@ FORMULA_COLUMNS: tuple[Column, ...] = (
 # An equation row's pieces (reading, correction, note, the status computed from the printed
 # form, a dimension mismatch) shown in one note column; JSON and CSV keep each in its field.
 EQUATION_COLUMNS: tuple[Column, ...] = (
-    *(Column(k, k) for k in ("id", "equation", "section", "status", "check", "observed_order")),
+    *(Column(k, k) for k in ("id", "equation", "section", "status", "kind", "observed_order")),
     Column("note", "note", fmt=equation_notes),
 )
 

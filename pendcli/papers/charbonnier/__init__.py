@@ -49,13 +49,12 @@ fast.
 from __future__ import annotations
 
 from pathlib import Path
-from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.paper import CliApp, Paper
 
 if TYPE_CHECKING:
-    from collections.abc import Mapping, Sequence
+    from collections.abc import Callable, Mapping, Sequence
 
     from pendcli.core.claims import FormulaRow, Recomputed
 
@@ -79,10 +78,13 @@ def _preload() -> None:
     from pendcli.papers.charbonnier import claims, formulas  # noqa: F401
 
 
-def _equations() -> ModuleType:
-    from pendcli.papers.charbonnier import equations
+def _references() -> Mapping[str, Callable[[], Any]]:
+    from pendcli.papers.charbonnier import equations, references, references_in_pi
 
-    return equations
+    # the names the ledger cites, taken from the modules until they keep an explicit table
+    prefixes = ("reference_", "numbers_")
+    modules = (equations, references, references_in_pi)
+    return {n: getattr(m, n) for m in modules for n in dir(m) if n.startswith(prefixes)}
 
 
 def _tradeoff_families() -> Sequence[Any]:
@@ -133,7 +135,7 @@ PAPER = Paper(
     key="charbonnier",
     recompute=_recompute,
     formula_checks=_formula_checks,
-    equations=_equations,
+    references=_references,
     preload=_preload,
     author_procedures=None,
     tradeoff_families=_tradeoff_families,

@@ -12,8 +12,7 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
-from pendcli.core.ledger import check_from_formula_rows
-from pendcli.core.ledger_check import EquationCheck
+from pendcli.core.ledger_check import EquationCheck, check_from_formula_rows
 from pendcli.papers.identities import vanishes_identically
 
 
@@ -251,16 +250,15 @@ def result_delta_alpha_closed() -> EquationCheck:
 
 def printed_form_check(row_id: str) -> EquationCheck:
     """The check of ``row_id`` as its printed form earns it (core/printed_check)."""
-    import sys
-
     from pendcli.core.ledger import load_ledger, row_printed_status
+    from pendcli.papers.charbonnier import _references
 
     ledger = load_ledger("charbonnier")
     row = next(r for r in ledger.rows if r.id == row_id)
     if row.reference is None:
         return EquationCheck(holds=False, method="sympy", detail=f"{row_id} has no reference")
     # the ledger's own computation of the row's status, shared (not done twice)
-    status, why = row_printed_status(row, dict(ledger.symbols), sys.modules[__name__])
+    status, why = row_printed_status(row, dict(ledger.symbols), _references())
     corrected = row.corrected_formula if status == "fails" else None
     holds = status in ("holds", "misprint")
     return EquationCheck(holds=holds, method="sympy", detail=why, corrected=corrected)

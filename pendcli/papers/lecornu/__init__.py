@@ -44,13 +44,12 @@ Nothing heavy is imported here (each hook of :data:`PAPER` loads its module when
 from __future__ import annotations
 
 from pathlib import Path
-from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.paper import CliApp, Paper
 
 if TYPE_CHECKING:
-    from collections.abc import Mapping, Sequence
+    from collections.abc import Callable, Mapping, Sequence
 
     from pendcli.core.causes import Procedure
     from pendcli.core.claims import FormulaRow, Recomputed
@@ -75,10 +74,12 @@ def _preload() -> None:
     from pendcli.papers.lecornu import claims, formulas  # noqa: F401
 
 
-def _equations() -> ModuleType:
+def _references() -> Mapping[str, Callable[[], Any]]:
     from pendcli.papers.lecornu import equations
 
-    return equations
+    # the names the ledger cites, taken from the module until it keeps an explicit table
+    prefixes = ("reference_", "numbers_")
+    return {n: getattr(equations, n) for n in dir(equations) if n.startswith(prefixes)}
 
 
 def _author_procedures() -> Mapping[str, Procedure]:
@@ -135,7 +136,7 @@ PAPER = Paper(
     key="lecornu",
     recompute=_recompute,
     formula_checks=_formula_checks,
-    equations=_equations,
+    references=_references,
     preload=_preload,
     author_procedures=_author_procedures,
     tradeoff_families=_tradeoff_families,

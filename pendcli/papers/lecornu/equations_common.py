@@ -120,7 +120,7 @@ def _formula_rows() -> dict[str, Any]:
 
 
 def from_formulas(*ids: str) -> EquationCheck:
-    from pendcli.core.ledger import check_from_formula_rows
+    from pendcli.core.ledger_check import check_from_formula_rows
 
     return check_from_formula_rows(_formula_rows().values(), [f"lecornu.{i}" for i in ids])
 

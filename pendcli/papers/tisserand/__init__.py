@@ -51,13 +51,12 @@ fast.
 from __future__ import annotations
 
 from pathlib import Path
-from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.paper import CliApp, Paper
 
 if TYPE_CHECKING:
-    from collections.abc import Mapping, Sequence
+    from collections.abc import Callable, Mapping, Sequence
 
     from pendcli.core.claims import FormulaRow, Recomputed
 
@@ -81,10 +80,12 @@ def _preload() -> None:
     from pendcli.papers.tisserand import claims, formulas  # noqa: F401
 
 
-def _equations() -> ModuleType:
+def _references() -> Mapping[str, Callable[[], Any]]:
     from pendcli.papers.tisserand import equations
 
-    return equations
+    # the names the ledger cites, taken from the module until it keeps an explicit table
+    prefixes = ("reference_", "numbers_")
+    return {n: getattr(equations, n) for n in dir(equations) if n.startswith(prefixes)}
 
 
 def _tradeoff_families() -> Sequence[Any]:
@@ -135,7 +136,7 @@ PAPER = Paper(
     key="tisserand",
     recompute=_recompute,
     formula_checks=_formula_checks,
-    equations=_equations,
+    references=_references,
     preload=_preload,
     author_procedures=None,
     tradeoff_families=_tradeoff_families,

@@ -13,8 +13,7 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
-from pendcli.core.ledger import check_from_formula_rows
-from pendcli.core.ledger_check import EquationCheck
+from pendcli.core.ledger_check import EquationCheck, check_from_formula_rows
 from pendcli.core.tables import on_table_change
 from pendcli.papers.identities import simplified, vanishes_identically
 from pendcli.papers.taylor import degree_in, taylor
