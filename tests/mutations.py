@@ -1,6 +1,6 @@
 """One edit of a committed ledger, judged again: the shared part of the mutation tests of
-tests/test_printed*.py (issue 19: a changed coefficient, or a misprint set to its reading,
-must be refused).
+tests/test_printed*.py (a changed coefficient, or a misprint set to its reading, must be
+refused).
 
 The edit is made to the committed ledger's text in memory and validated by the loader's own
 ``parse_ledger`` under the committed path. A formula's parse is cached on its place and text
@@ -16,9 +16,14 @@ from __future__ import annotations
 import shutil
 import tomllib
 from pathlib import Path
-from types import ModuleType
-
-from pendcli.core.ledger import Ledger, LedgerRow, ledger_path, parse_ledger, verify_printed
+from pendcli.core.ledger import (
+    Ledger,
+    LedgerRow,
+    References,
+    ledger_path,
+    parse_ledger,
+    verify_printed,
+)
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 
@@ -53,11 +58,11 @@ def altered_row(
 
 
 def judged_after_edit(
-    checks: ModuleType, row_id: str, old: str, new: str, within: str | None = None
+    references: References, row_id: str, old: str, new: str, within: str | None = None
 ) -> tuple[str | None, str | None]:
     """``verify_printed`` of the edited row: (its computed status and why, the problem)."""
     row, symbols = altered_row(row_id.split(".")[0], row_id, old, new, within)
-    return verify_printed(row, symbols, checks)
+    return verify_printed(row, symbols, references)
 
 
 def printed_line(ledger: Ledger, row_id: str, value_of: str = "printed") -> str:

@@ -58,7 +58,6 @@ holds rows (1.2 s alone); the rest is slow (tests/conftest.py).
 from __future__ import annotations
 
 import dataclasses
-import importlib
 import random
 import re
 from collections import Counter
@@ -73,11 +72,12 @@ from mutations import altered_field, judged_after_edit
 
 from pendcli.core import printed_check, printed_numeric
 from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow
+from pendcli.core.ledger import LedgerRow, reference_table
 from pendcli.core.ledger_formulas import printed_status
 from pendcli.core.printed_check import Reference
 from pendcli.core.printed_numeric import Numbers
 from pendcli.core.vocabulary import Verdict
+from pendcli.papers.registry import paper
 
 PAPERS = ("charbonnier", "lecornu", "tisserand")
 SEED = 19
@@ -148,8 +148,8 @@ def reference_of(row: LedgerRow) -> Any:
     assert row.reference is not None
     key = (row.paper, row.reference)
     if key not in _REFERENCES:
-        checks = importlib.import_module(f"pendcli.papers.{row.paper}.equations")
-        _REFERENCES[key] = getattr(checks, row.reference)()
+        table = reference_table(paper(row.paper))
+        _REFERENCES[key] = table[row.reference]()
     return _REFERENCES[key]
 
 
@@ -539,13 +539,10 @@ def test_a_residual_without_a_power_series_is_refused_not_raised() -> None:
     """An edit of the phase (2/p -> 3/p) leaves sin(1/p) in the residual, which sympy's series
     cannot expand (PoleError): the engine refuses the printed form, naming why, where it raised
     and `pendcli equations` ended in an internal error."""
-    from pendcli.core.ledger import check_module
-    from pendcli.papers.registry import paper
-
     old = "sin(2/p + r*t"
     row_id = "lecornu.result.theta_first_order"
     computed, problem = judged_after_edit(
-        check_module(paper("lecornu")), row_id, old, "sin(3/p + r*t", within=row_id
+        reference_table(paper("lecornu")), row_id, old, "sin(3/p + r*t", within=row_id
     )
     assert computed is not None and computed.startswith("no status the ledger may record")
     assert "no power series in p about 0" in computed and "PoleError" in computed, computed

@@ -65,11 +65,11 @@ def test_a_failing_printed_form_carries_its_evidence() -> None:
     evidence = str(row["evidence"])
     assert evidence.startswith("the printed numbers fail (1 of 1 off: #1 0.00313"), evidence
     assert row["note"] == entry["note"] and "computed from the printed form" not in row["note"]
-    assert row["corrected_note"] == entry["corrected"] and row["check_corrected"]
+    assert row["corrected_note"] == entry["corrected"] and row["kind"] == "digits"
     assert row["inconsistency"] is None
     joined = equation_notes(row)
     assert f"computed from the printed form: fails: {evidence}" in joined
-    assert joined.startswith(f"corrected: {entry['corrected']} (computed: ")
+    assert joined.startswith(f"corrected: {entry['corrected']}; ")
 
 
 def test_a_row_without_a_reference_has_no_computed_status() -> None:
@@ -81,14 +81,14 @@ def test_a_row_without_a_reference_has_no_computed_status() -> None:
 
 def test_the_note_column_joins_the_fields_in_order() -> None:
     """The table's, Markdown's and the report's note column: each piece, in a fixed order."""
-    row = {"reading_note": "R", "corrected_note": "C", "check_corrected": "K", "note": "N",
-           "against": "ref", "computed": None, "evidence": "E", "dimensions": "inconsistent",
+    row = {"reading_note": "R", "corrected_note": "C", "note": "N", "against": "ref",
+           "computed": None, "evidence": "E", "measured": "M", "dimensions": "inconsistent",
            "dimensions_detail": "D", "inconsistency": "I"}  # fmt: skip
     assert equation_notes(row) == (
-        "reading: R; corrected: C (computed: K); N; computed from the printed form: no status "
-        "the ledger may record: E; dimensions: D; LEDGER INCONSISTENT: I"
+        "reading: R; corrected: C; N; computed from the printed form: no status "
+        "the ledger may record: E; measured: M; dimensions: D; LEDGER INCONSISTENT: I"
     )
-    consistent = {**row, "dimensions": "consistent", "against": None, "check_corrected": None}
+    consistent = {**row, "dimensions": "consistent", "against": None, "measured": None}
     assert equation_notes(consistent) == "reading: R; corrected: C; N; LEDGER INCONSISTENT: I"
     assert equation_notes({"note": "N", "against": None}) == "N"
 

@@ -18,13 +18,13 @@ from pendcli.core.ledger import (
     CHECKED_STATUSES,
     OUTPUT_KEYS,
     Ledger,
-    check_module,
     coverage,
     evaluate,
     labels_in_text,
     parse_ledger,
-    run_check,
-    verify,
+    printed_problem,
+    reference_table,
+    row_printed_status,
 )
 from pendcli.core.rows import equation_notes
 from pendcli.papers.registry import equation_rows, ledger_papers, paper
@@ -74,16 +74,17 @@ def _rows() -> list[str]:
     return [row_id for paper in _papers() if paper in present for row_id in row_ids(paper)]
 
 
-# Each check runs here once (the slow sympy ones are spread over the xdist workers); the
-# tests of the whole ledger below read only the statuses, or run evaluate() on a small ledger.
+# Each row is judged here once (the slow ones are spread over the xdist workers); the tests
+# of the whole ledger below read only the statuses, or run evaluate() on a small ledger.
 @pytest.mark.parametrize("row_id", _rows())
-def test_check_agrees_with_recorded_status(row_id: str) -> None:
+def test_the_engine_computes_the_recorded_status(row_id: str) -> None:
     row = committed_row(row_id)
-    check = run_check(row, check_module(paper(row.paper)))
-    problem = verify(row, check)
-    assert problem is None, f"{row.id}: {problem}"
-    if row.status == "fails":
-        assert check is not None and check.corrected, f"{row.id}: no computed correction"
+    if row.reference is None:
+        assert row.status not in CHECKED_STATUSES and row.kind is None, row.id
+        return
+    symbols = committed_ledger(row.paper).symbols_for(row)
+    computed = row_printed_status(row, symbols, reference_table(paper(row.paper)))
+    assert printed_problem(row, computed) is None, f"{row.id}: {computed}"
 
 
 # The definition rule (tables/README.md): a row records `definition` only when nothing in it
@@ -97,7 +98,7 @@ DEFINING = ("defines", "imposes", "repeats")
 def test_the_definition_rule(row_id: str) -> None:
     row = committed_row(row_id)
     if row.status != "definition":
-        assert row.status == "not-checkable" or row.check, f"{row.id}: {row.status} without a check"
+        assert row.status == "not-checkable" or row.kind, f"{row.id}: {row.status} without a kind"
         return
     first = row.note.split()[0] if row.note else ""
     assert first in DEFINING, f"{row.id}: a definition's note starts with one of {DEFINING}"
@@ -145,14 +146,16 @@ def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) ->
     items = evaluate(paper("charbonnier"), tmp_path)
     assert sorted(i.row.id for i in items) == sorted(SMALL)
     assert [i.problem for i in items] == [None] * len(SMALL)
-    assert [i.check is None for i in items] == [i.row.status == "definition" for i in items]
+    assert [i.computed is None for i in items] == [i.row.status == "definition" for i in items]
     with pytest.raises(PendcliError, match=r"equation ledger .*tisserand\.toml is missing"):
         equation_rows(["tisserand", "charbonnier"], tmp_path)  # no tisserand ledger here
     rows = equation_rows(["charbonnier"], tmp_path)
     assert all(tuple(r.as_dict()) == OUTPUT_KEYS for r in rows)
     fails = next(r for r in rows if r.status == "fails")
-    assert fails.check_corrected and fails.computed == "fails" and fails.evidence
-    assert f"(computed: {fails.check_corrected})" in equation_notes(fails.as_dict())
+    assert fails.kind and fails.computed == "fails" and fails.evidence
+    assert f"computed from the printed form: fails: {fails.evidence}" in equation_notes(
+        fails.as_dict()
+    )
     definition = next(r for r in rows if r.status == "definition")
     assert (definition.against, definition.computed, definition.evidence) == (None, None, None)
     counts = coverage(rows)["charbonnier"]
@@ -242,13 +245,19 @@ def test_a_good_row_parses() -> None:
     [
         ({"typo": "x"}, "unknown key(s) 'typo'"),
         ({"status": "ok"}, "unknown status 'ok'"),
-        ({"status": "holds"}, "needs a check"),
-        ({"check": "eq_1"}, "takes no check"),
+        ({"status": "holds"}, "needs a kind"),
+        ({"status": "holds", "kind": "identity"}, "needs a reference"),
+        ({"status": "holds", "kind": "proof", "reference": "r"}, "unknown kind 'proof'; valid:"),
+        ({"check": "eq_1"}, "unknown key(s) 'check'"),
+        ({"kind": "identity"}, "takes no kind"),
+        ({"reference": "r"}, "takes no reference"),
+        ({"measured": ["eq1"]}, "takes no measured"),
+        ({"status": "holds", "kind": "series", "reference": "r", "measured": []}, "non-empty"),
         ({"equation": "1"}, "label as printed"),
         ({"equation": "(2)"}, "does not match the label"),
         ({"id": "other.eq.1"}, "id must read"),
-        ({"status": "fails", "check": "eq_1"}, "'corrected' is required"),
-        ({"status": "misprint", "check": "eq_1"}, "'reading' is required"),
+        ({"status": "fails", "kind": "identity", "reference": "r"}, "'corrected' is required"),
+        ({"status": "misprint", "kind": "identity", "reference": "r"}, "'reading' is required"),
         ({"reading": "x"}, "'reading' is required"),
         ({"note": None}, "needs a note"),
         ({"section": ""}, "non-empty string"),

@@ -251,8 +251,8 @@ def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift(
     from pendcli.reproduce import ReproduceResult
 
     def row(rid: str, status: str, order: float | None, dims: str = "consistent") -> EquationRow:
-        return EquationRow(rid, "p", "(1)", "§ 1", "x = y", EquationStatus(status), "", order,
-                           "", lines=(3, 4), dimensions=dims)  # fmt: skip
+        return EquationRow(rid, "p", "(1)", "§ 1", "x = y", EquationStatus(status), "series",
+                           order, "", lines=(3, 4), dimensions=dims)  # fmt: skip
 
     def table(*rows: EquationRow) -> str:
         result = ReproduceResult(papers=("p",), equations={"p": list(rows)})
@@ -260,10 +260,10 @@ def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift(
 
     then = table(row("p.a", "holds", 2.0), row("p.b", "misprint", None), row("p.c", "holds", 1.0))
     assert then.splitlines() == [
-        "id,equation,lines,status,dimensions,observed_order",
-        "p.a,(1),3-4,holds,consistent,2.0",
-        "p.b,(1),3-4,misprint,consistent,",
-        "p.c,(1),3-4,holds,consistent,1.0",
+        "id,equation,lines,status,kind,dimensions,observed_order",
+        "p.a,(1),3-4,holds,series,consistent,2.0",
+        "p.b,(1),3-4,misprint,series,consistent,",
+        "p.c,(1),3-4,holds,series,consistent,1.0",
     ]
     now = table(row("p.a", "fails", 2.04), row("p.b", "misprint", None, "inconsistent"))
     drifts = compare_tables("p-equations.csv", then, now)

@@ -127,4 +127,4 @@ def test_a_wrong_printed_value_or_ledger_status_is_caught(sample):
     (claim,) = json.loads(_ok("reproduce", "-f", "json"))["claims"]
     assert claim["verdict"] == "discrepant"
     code, _, err = invoke("equations")
-    assert code == 2 and "recorded fails, but the check finds it holds" in err
+    assert code == 2 and "recorded fails, but the printed form gives holds" in err

@@ -393,7 +393,7 @@ class Evaluated:
             section=row.section,
             statement=row.statement,
             status=row.status,
-            kind=row.kind or "",
+            kind=row.kind,
             observed_order=measured.observed_order if measured is not None else None,
             note=row.note or "",
             lines=row.lines,

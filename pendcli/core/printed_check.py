@@ -173,8 +173,25 @@ def _substituted(residual: Any, reference: Reference) -> Any:
     exact = {names[n]: v for n, v in reference.exact.items() if n in names}
     # the symbols first: a function's value is an expression in the unsubstituted symbols
     expr = _functions_replaced(expr.subs(exact, simultaneous=True), reference)
+    _refuse_clashes(expr)
     # a derivative of the reference's explicit functions is taken (integrals stay for quadrature)
     return expr.replace(lambda e: isinstance(e, sp.Derivative), lambda e: e.doit(deep=False))
+
+
+def _refuse_clashes(expr: Any) -> None:
+    """Two symbols of one name (the ledger's ``g`` and a reference's ``g`` made positive)
+    would be two unknowns to every check: refused, naming them."""
+    from collections import Counter
+
+    from pendcli.core.errors import PendcliError
+
+    names = Counter(s.name for s in expr.free_symbols)
+    clashes = sorted(n for n, count in names.items() if count > 1)
+    if clashes:
+        raise PendcliError(
+            f"the symbol(s) {', '.join(clashes)} enter twice with different assumptions: a "
+            "reference's symbols must be the ledger's, sympy.Symbol(name, real=True)"
+        )
 
 
 def is_relation(expr: Any) -> bool:

@@ -111,7 +111,7 @@ class EquationRow:
     section: str
     statement: str
     status: EquationStatus
-    kind: str  # the kind of check that decides the row (core/check_kinds), "" for none
+    kind: str | None  # the kind of check that decides the row (core/check_kinds); None: none
     observed_order: float | None  # the lowest order the formula checks in measured observed
     note: str  # the ledger's own note, "" without one
     # where the row is printed, its formulas, the printed form's dimensions

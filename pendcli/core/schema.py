@@ -124,10 +124,10 @@ EQUATIONS = RowKind(
         Field("status", _TEXT, "what the check found", STATUSES),
         Field(
             "kind",
-            _TEXT,
-            "the kind of check that decides the row (docs/ENGINE.md); empty for a definition "
+            _OPT_TEXT,
+            "the kind of check that decides the row (docs/ENGINE.md); null for a definition "
             "or a not-checkable row",
-            ("", *KINDS),
+            tuple(KINDS),
         ),
         Field(
             "observed_order",

@@ -10,9 +10,8 @@ folder knows it exists.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
-from types import ModuleType
 from typing import Any
 
 from pendcli.core.claims import Recomputed
@@ -27,10 +26,10 @@ def _recompute() -> Mapping[str, Recomputed]:
     return {"sample.period": Recomputed(period(), method="2π√(l/g), l and g from the table")}
 
 
-def _equations() -> ModuleType:
-    from sample_paper import equations
+def _references() -> Mapping[str, Callable[[], Any]]:
+    from sample_paper.references import REFERENCES
 
-    return equations
+    return REFERENCES
 
 
 def _figures(folder: Path) -> Sequence[Path]:
@@ -52,7 +51,7 @@ def _cli() -> Any:
 PAPER = Paper(
     key="sample",
     recompute=_recompute,
-    equations=_equations,
+    references=_references,
     figures=_figures,
     captions=_captions,
     cli=CliApp(help="A sample paper (tests only): the period of a simple pendulum.", load=_cli),

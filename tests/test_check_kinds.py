@@ -1,0 +1,114 @@
+"""The kinds of check a ledger row declares: the rule that picks one, the refusal of a row whose
+declared kind is not the one its reference calls for, of a reference whose parameters make no
+kind, of a ``measured`` naming no formula check, and the agreement of the engine's verdicts
+with the formula checks that measure the same rows against a fuller model."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+import sympy as sp
+from ledgers import committed_ledger, committed_row
+from mutations import judged_after_edit
+
+from pendcli.core.check_kinds import KINDS, kind_called_for, kind_problem
+from pendcli.core.claims import shared_formula_rows
+from pendcli.core.errors import PendcliError
+from pendcli.core.ledger import measured, reference_table
+from pendcli.core.printed import Formula
+from pendcli.core.printed_check import Reference, formula_passes
+from pendcli.core.printed_numeric import Numbers
+from pendcli.papers.registry import paper
+
+x, s = sp.symbols("x s", real=True)
+EQUATION = Formula("x = 1", ((x, sp.Integer(1)),))
+RELATION = Formula("x > 0", ((None, sp.StrictGreaterThan(x, 0)),))
+
+
+@pytest.mark.parametrize(
+    ("formula", "reference", "kind"),
+    [
+        (EQUATION, Numbers(values=[1]), "digits"),
+        (EQUATION, Reference(exact={}, each_case=({"x": 1},)), "cases"),
+        (EQUATION, Reference(exact={}, scale=s, bounded=True), "limit"),
+        (EQUATION, Reference(exact={}, scale=s, order=2, rounded=True), "decimal"),
+        (RELATION, Reference(exact={}, scale=s, order=2), "inequality"),
+        (EQUATION, Reference(exact={}, scale=s, order=2), "series"),
+        (EQUATION, Reference(exact={}), "identity"),
+    ],
+)
+def test_the_rule_picks_the_first_kind_that_applies(formula, reference, kind) -> None:
+    assert kind in KINDS
+    assert kind_called_for(formula, reference) == kind
+    assert kind_problem(kind, formula, reference) is None
+    other = next(k for k in KINDS if k != kind)
+    assert kind_problem(other, formula, reference) == (
+        f"kind {other!r} is declared, but its reference and printed form make it {kind!r}"
+    )
+
+
+@pytest.mark.parametrize(
+    ("parameters", "message"),
+    [
+        ({"order": 2}, "an order needs a scale"),
+        ({"orders": {"x": 2}}, "an order needs a scale"),
+        ({"bounded": True}, "bounded needs a scale and takes no order"),
+        ({"bounded": True, "scale": s, "order": 2}, "bounded needs a scale and takes no order"),
+        ({"scale": s}, "a scale needs an order (or bounded)"),
+        ({"scale": s, "bounded": True, "rounded": True}, "bounded and rounded exclude each other"),
+        ({"each_case": ({"x": 1},), "conditions": (None,)}, "each_case and conditions exclude"),
+    ],
+)
+def test_a_reference_whose_parameters_make_no_kind_is_refused(parameters, message) -> None:
+    with pytest.raises(ValueError, match=message.replace("(", r"\(").replace(")", r"\)")):
+        Reference(exact={}, **parameters)
+
+
+def test_a_declared_kind_other_than_the_references_is_refused_naming_the_row() -> None:
+    row_id = "lecornu.eq.25"  # a series in p
+    assert committed_row(row_id).kind == "series"
+    computed, problem = judged_after_edit(
+        reference_table(paper("lecornu")), row_id, 'kind = "series"', 'kind = "identity"', row_id
+    )
+    assert computed == (
+        "no status the ledger may record: kind 'identity' is declared, but its reference and "
+        "printed form make it 'series'"
+    )
+    assert problem is not None and problem.startswith("recorded holds, but the printed form")
+
+
+def test_every_kind_decides_some_row_of_the_ledgers() -> None:
+    used = {r.kind for key in ("tisserand", "lecornu", "charbonnier") for r in
+            committed_ledger(key).rows}  # fmt: skip
+    assert set(KINDS) <= used
+
+
+def test_a_measured_name_that_is_no_formula_check_is_refused_naming_the_row() -> None:
+    row = dataclasses.replace(committed_row("lecornu.eq.26"), measured=("no_such_check",))
+    with pytest.raises(PendcliError, match=r"lecornu.eq.26: measured names no formula check "):
+        measured(row, [])
+
+
+def test_a_reference_symbol_with_other_assumptions_is_refused_not_a_second_unknown() -> None:
+    g = sp.Symbol("g", positive=True)  # the ledger's g is real, not positive
+    formula = Formula("x = g", ((x, sp.Symbol("g", real=True)),))
+    with pytest.raises(PendcliError, match=r"the symbol\(s\) g enter twice"):
+        formula_passes(formula, Reference(exact={"x": g}))
+
+
+def test_the_formula_checks_a_row_names_agree_with_its_status() -> None:
+    """An independent method: each measured formula check integrates the fuller model (an ODE,
+    a quadrature), where the engine judged the printed form symbolically. A row that holds
+    (or whose reading holds) has every measured check holding; a failing row has one failing."""
+    for key in ("tisserand", "lecornu", "charbonnier"):
+        rows = [r for r in committed_ledger(key).rows if r.measured]
+        formula_checks = paper(key).formula_checks
+        assert formula_checks is not None
+        formulas = {f.id: f for f in shared_formula_rows(key, formula_checks)}
+        for row in rows:
+            verdicts = {formulas[f"{key}.{name}"].verdict for name in row.measured or ()}
+            if row.status == "fails":
+                assert "fails" in verdicts, row.id
+            else:
+                assert verdicts == {"holds"}, row.id
