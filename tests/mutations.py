@@ -16,6 +16,7 @@ from __future__ import annotations
 import shutil
 import tomllib
 from pathlib import Path
+
 from pendcli.core.ledger import (
     Ledger,
     LedgerRow,

@@ -77,7 +77,7 @@ from pendcli.core.ledger_formulas import printed_status
 from pendcli.core.printed_check import Reference
 from pendcli.core.printed_numeric import Numbers
 from pendcli.core.vocabulary import Verdict
-from pendcli.papers.registry import paper
+from pendcli.papers.registry import paper as paper_named
 
 PAPERS = ("charbonnier", "lecornu", "tisserand")
 SEED = 19
@@ -148,7 +148,7 @@ def reference_of(row: LedgerRow) -> Any:
     assert row.reference is not None
     key = (row.paper, row.reference)
     if key not in _REFERENCES:
-        table = reference_table(paper(row.paper))
+        table = reference_table(paper_named(row.paper))
         _REFERENCES[key] = table[row.reference]()
     return _REFERENCES[key]
 
@@ -542,7 +542,7 @@ def test_a_residual_without_a_power_series_is_refused_not_raised() -> None:
     old = "sin(2/p + r*t"
     row_id = "lecornu.result.theta_first_order"
     computed, problem = judged_after_edit(
-        reference_table(paper("lecornu")), row_id, old, "sin(3/p + r*t", within=row_id
+        reference_table(paper_named("lecornu")), row_id, old, "sin(3/p + r*t", within=row_id
     )
     assert computed is not None and computed.startswith("no status the ledger may record")
     assert "no power series in p about 0" in computed and "PoleError" in computed, computed
