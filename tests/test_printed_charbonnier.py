@@ -1,7 +1,7 @@
-"""Charbonnier's ledger bound to its text (issue 19): every status with a reference computed
-from the printed form; a changed coefficient stops a row holding; a misprint whose printed
-form is its reading is refused; the slips found are verified by an independent numeric
-method (mpmath quadrature, an ODE)."""
+"""Charbonnier's ledger bound to its text: every status with a reference computed from the
+printed form; a changed coefficient stops every row that holds holding; a misprint whose
+printed form is its reading is refused; the slips found are verified by an independent
+numeric method (mpmath quadrature, an ODE)."""
 
 from __future__ import annotations
 
@@ -16,16 +16,20 @@ from mutations import altered_row
 from pendcli.core.ledger import LedgerRow, verify_printed
 from pendcli.core.ledger_coverage import ledger_text_coverage
 from pendcli.core.ledger_formulas import row_formula
-from pendcli.papers.charbonnier import equations as CHECKS
+from pendcli.papers.registry import paper
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
+# reference name -> builder, as the ledger reads them (Paper.references)
+REFERENCES = paper("charbonnier").references()
 
 
 @pytest.mark.parametrize("row_id", row_ids("charbonnier", lambda entry: "reference" in entry))
 def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row_id: str) -> None:
     row = committed_row(row_id)
-    computed, problem = verify_printed(row, dict(committed_ledger("charbonnier").symbols), CHECKS)
+    computed, problem = verify_printed(
+        row, dict(committed_ledger("charbonnier").symbols), REFERENCES
+    )
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
@@ -50,27 +54,39 @@ def _altered(row_id: str, old: str, new: str) -> tuple[LedgerRow, dict[str, str]
     return altered_row("charbonnier", row_id, old, new, within=row_id)
 
 
-@pytest.mark.parametrize(
-    ("row_id", "old", "new"),
-    [
-        ("charbonnier.eq.1", "2/l*dl_dt", "3/l*dl_dt"),  # the Coriolis term of (1)
-        ("charbonnier.eq.1", "g*l*sin(theta) = 0;", "g*sin(theta) = 0;"),  # the moment
-        ("charbonnier.result.order-system", "d2theta_2_dt2 + k**2", "d2theta_2_dt2 + 2*k**2"),
-        ("charbonnier.result.taylor-phi", "dtheta_1_dt*phi_thetap", "dtheta_1_dt*phi_theta"),
-        ("charbonnier.result.variation-integrals", "N = -1/k", "N = 1/k"),
-        ("charbonnier.result.theta1-solution", "k*theta_1 =", "theta_1 ="),
-        ("charbonnier.eq.6", "epsilon/(k**2*alpha)", "epsilon/(k*alpha)"),
-        ("charbonnier.result.turning-time", "k*t = pi + epsilon", "k*t = pi - epsilon"),
-        ("charbonnier.result.arc-integrals", "1/(k**2*alpha*l0)*S(nu)", "1/(k*alpha*l0)*S(nu)"),
-        ("charbonnier.result.es-in-speed", "1/k*1/(k*alpha*l0)**2", "1/(k*alpha*l0)**2"),
-        ("charbonnier.result.height", "g*Delta_y = -tau", "g*Delta_y = tau"),
-        ("charbonnier.result.recurrence", "n*I(n - 2, x)", "(n - 1)*I(n - 2, x)"),
-        ("charbonnier.result.delta-alpha", "k**(n - 2)", "k**(n - 1)"),
-    ],
-)
+# (row, old, new): one coefficient, sign or argument of a numbered formula or a result
+CHANGES = [
+    ("charbonnier.eq.1", "2/l*dl_dt", "3/l*dl_dt"),  # the Coriolis term of (1)
+    ("charbonnier.eq.1", "g*l*sin(theta) = 0;", "g*sin(theta) = 0;"),  # the moment
+    ("charbonnier.eq.2", "k**2 = g/l0", "k**2 = g/(2*l0)"),
+    ("charbonnier.eq.3", "dtheta_dt = k*alpha*sin(k*t)", "dtheta_dt = alpha*sin(k*t)"),
+    ("charbonnier.result.period-and-top-speed", "T = pi/k", "T = 2*pi/k"),
+    ("charbonnier.result.taylor-phi", "dtheta_1_dt*phi_thetap", "dtheta_1_dt*phi_theta"),
+    ("charbonnier.result.order-system", "d2theta_2_dt2 + k**2", "d2theta_2_dt2 + 2*k**2"),
+    ("charbonnier.result.principal-motion", "thetap_m = k*alpha", "thetap_m = k**2*alpha"),
+    ("charbonnier.eq.q", "+ phi(t)/k = 0", "- phi(t)/k = 0"),
+    ("charbonnier.result.variation-integrals", "N = -1/k", "N = 1/k"),
+    ("charbonnier.result.theta1-solution", "k*theta_1 =", "theta_1 ="),
+    # (4) with the integrals of its bracket swapped
+    ("charbonnier.eq.4", "E_s(t)*cos(k*t) - E_c(t)*sin(k*t)", "E_c(t)*cos(k*t) - E_s(t)*sin(k*t)"),
+    ("charbonnier.result.turning-time", "k*t = pi + epsilon", "k*t = pi - epsilon"),
+    ("charbonnier.eq.6", "epsilon/(k**2*alpha)", "epsilon/(k*alpha)"),
+    ("charbonnier.eq.7", "= -epsilon/k*E_s(pi)", "= epsilon/k*E_s(pi)"),
+    ("charbonnier.eq.8", "E_c(pi/2)", "E_s(pi/2)"),
+    ("charbonnier.result.arc-integrals", "1/(k**2*alpha*l0)*S(nu)", "1/(k*alpha*l0)*S(nu)"),
+    ("charbonnier.result.es-in-speed", "1/k*1/(k*alpha*l0)**2", "1/(k*alpha*l0)**2"),
+    ("charbonnier.result.period-unchanged", "E_c(pi) = 0", "E_s(pi) = 0"),
+    ("charbonnier.result.height", "g*Delta_y = -tau", "g*Delta_y = tau"),
+    ("charbonnier.result.recurrence", "n*I(n - 2, x)", "(n - 1)*I(n - 2, x)"),
+    ("charbonnier.result.in-pi", "Ipi_even = 2*", "Ipi_even = pi*"),
+    ("charbonnier.result.delta-alpha", "k**(n - 2)", "k**(n - 1)"),
+]
+
+
+@pytest.mark.parametrize(("row_id", "old", "new"), CHANGES)
 def test_a_changed_coefficient_stops_a_row_holding(row_id: str, old: str, new: str) -> None:
     row, symbols = _altered(row_id, old, new)
-    computed, problem = verify_printed(row, symbols, CHECKS)
+    computed, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
 
@@ -92,7 +108,7 @@ def test_a_misprint_whose_printed_form_is_its_reading_is_refused(
     row_id: str, old: str, new: str
 ) -> None:
     row, symbols = _altered(row_id, old, new)
-    _, problem = verify_printed(row, symbols, CHECKS)
+    _, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
@@ -102,7 +118,7 @@ def test_n13_with_the_e_c_of_9_as_printed_fails_too() -> None:
     and only the E_s reading holds."""
     old, new = "-c/l0*E(pi/2)'", "-c/l0*E_c(pi/2)'"
     row, symbols = _altered("charbonnier.result.lowest-speed-air", old, new)
-    computed, problem = verify_printed(row, symbols, CHECKS)
+    computed, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is None
     assert computed is not None and computed.startswith("misprint: the printed form fails")
 
@@ -167,7 +183,7 @@ def test_the_speed_at_the_lowest_point_is_e_s_by_the_ode() -> None:
     assert abs(shift + e_c) > 0.1 * e_c
 
 
-# --- d19: every row whose only check is the engine's verdict, and the prose rows ---------
+# --- the rows of the prose and of the remarks between the numbered formulas ---------------
 # (row, old, new): one coefficient, sign, argument or relation of what the row prints
 
 ENGINE_ONLY_CHANGES = [
@@ -219,30 +235,17 @@ def test_a_changed_coefficient_stops_an_engine_only_row_holding(
     row_id: str, old: str, new: str
 ) -> None:
     row, symbols = _altered(row_id, old, new)
-    computed, problem = verify_printed(row, symbols, CHECKS)
+    computed, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
 
 
-def test_every_engine_only_holds_row_has_a_mutation() -> None:
-    """A row whose check is the engine's verdict alone (check = "printed_…") and that holds is
-    mutated above; the rows of the older list count too."""
-    rows = committed_ledger("charbonnier").rows
-    engine_only = {
-        r.id for r in rows if (r.check or "").startswith("printed_") and r.status == "holds"
-    }
-    older = {
-        "charbonnier.result.order-system",
-        "charbonnier.result.taylor-phi",
-        "charbonnier.result.variation-integrals",
-        "charbonnier.result.theta1-solution",
-        "charbonnier.result.turning-time",
-        "charbonnier.result.arc-integrals",
-        "charbonnier.result.es-in-speed",
-        "charbonnier.result.height",
-    }
-    mutated = {row_id for row_id, _, _ in ENGINE_ONLY_CHANGES} | older
-    assert engine_only - mutated == set()
+def test_every_holds_row_has_a_mutation() -> None:
+    """The engine's verdict is every row's status: each row that holds is edited by one case
+    of the two lists of changed coefficients above, which it must then refuse."""
+    holds = {r.id for r in committed_ledger("charbonnier").rows if r.status == "holds"}
+    mutated = {row_id for row_id, _, _ in (*CHANGES, *ENGINE_ONLY_CHANGES)}
+    assert holds - mutated == set()
 
 
 def _misprint_ids() -> list[str]:
@@ -254,7 +257,7 @@ def test_every_misprint_printed_as_its_reading_is_refused(row_id: str) -> None:
     row = committed_row(row_id)
     symbols = dict(committed_ledger("charbonnier").symbols)
     read = dataclasses.replace(row, printed=row.reading_formula)
-    _, problem = verify_printed(read, symbols, CHECKS)
+    _, problem = verify_printed(read, symbols, REFERENCES)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds"), problem
 
@@ -272,7 +275,7 @@ def test_every_misprint_printed_as_its_reading_is_refused(row_id: str) -> None:
 )
 def test_a_changed_coefficient_of_a_reading_is_refused(row_id: str, old: str, new: str) -> None:
     row, symbols = _altered(row_id, old, new)
-    _, problem = verify_printed(row, symbols, CHECKS)
+    _, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is not None and problem.startswith("recorded misprint, but the printed form")
 
 
@@ -285,7 +288,7 @@ def test_the_closed_forms_are_judged_per_parity() -> None:
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.delta-alpha-closed")
     assert row.reading_formula is not None
     read = row_formula(row.id, row.reading_formula, dict(ledger.symbols))
-    both = CHECKS.reference_monomial_parity()
+    both = REFERENCES["reference_monomial_parity"]()
     assert formula_passes(read, both)[0]
     swapped = dataclasses.replace(both, cases=both.cases[::-1])
     assert not formula_passes(read, swapped)[0]
@@ -300,8 +303,8 @@ def test_friction_has_a_finite_count_by_the_same_formula() -> None:
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.infinite-count")
     assert row.printed is not None
     printed = row_formula(row.id, row.printed, dict(ledger.symbols))
-    assert formula_passes(printed, CHECKS.reference_monomial_decay())[0]
-    assert not formula_passes(printed, CHECKS.reference_friction())[0]
+    assert formula_passes(printed, REFERENCES["reference_monomial_decay"]())[0]
+    assert not formula_passes(printed, REFERENCES["reference_friction"]())[0]
 
 
 def test_the_closed_forms_against_an_ode() -> None:

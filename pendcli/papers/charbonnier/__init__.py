@@ -40,7 +40,8 @@ Findings
 
 Modules: :mod:`.model` (I_n(x) by every method), :mod:`.claims` (``recompute()``),
 :mod:`.perturbation` (the perturbed pendulum and its integration), :mod:`.formulas` (formula
-checks), :mod:`.resistance` (monomial resistance, one swing), :mod:`.figures`,
+checks), :mod:`.resistance` (monomial resistance, one swing), :mod:`.references` (the
+references the equation ledger's printed forms are judged against), :mod:`.figures`,
 :mod:`.explore` (the CLI's rows). This file imports
 nothing heavy (its hooks load their modules when called), so that `pendcli --help` stays
 fast.
@@ -79,12 +80,9 @@ def _preload() -> None:
 
 
 def _references() -> Mapping[str, Callable[[], Any]]:
-    from pendcli.papers.charbonnier import equations, references, references_in_pi
+    from pendcli.papers.charbonnier.references import REFERENCES
 
-    # the names the ledger cites, taken from the modules until they keep an explicit table
-    prefixes = ("reference_", "numbers_")
-    modules = (equations, references, references_in_pi)
-    return {n: getattr(m, n) for m in modules for n in dir(m) if n.startswith(prefixes)}
+    return REFERENCES
 
 
 def _tradeoff_families() -> Sequence[Any]:
