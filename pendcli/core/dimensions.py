@@ -22,7 +22,7 @@ DIMENSION_VERDICTS: tuple[Verdict, ...] = ("consistent", "inconsistent", "dimens
 # base letter -> exponent: a Fraction, or a sympy expression for a symbolic power (vⁿ)
 Dim = dict[str, Any]
 _TRANSCENDENTAL = ("sin", "cos", "tan", "atan", "asin", "acos", "exp", "log", "besselj")
-_OF_NUMBERS = (*_TRANSCENDENTAL, "factorial2")  # n!!: Charbonnier's I_n(π) (n19)
+_OF_NUMBERS = (*_TRANSCENDENTAL, "factorial2")  # n!!: Charbonnier's I_n(π)
 
 
 class _Mismatch(Exception):

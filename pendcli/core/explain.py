@@ -1,4 +1,4 @@
-"""How the author got his digits: a bounded search over hand-computation mechanisms (issue 24).
+"""How the author got his digits: a bounded search over hand-computation mechanisms.
 
 A paper declares, for a printed number, the author's computation as a function of a few
 *choices* (:class:`Axis`): which value of π or g he took, whether he used his own printed
@@ -82,7 +82,7 @@ RANDOM_TARGETS = 2000  # N random targets per printed number (each a lookup): s.
 _SEED = 24  # with the claim id: a fixed, distinct draw per claim
 SIMPLEST_SHOWN = 3  # chains of the least cost kept, for the explanation
 
-# Constants at the precision of the time (issue 24), as exact decimals or fractions.
+# Constants at the precision of the time, as exact decimals or fractions.
 PI_READINGS: tuple[tuple[str, Fraction], ...] = (
     ("π = 3,14", Fraction(314, 100)),
     ("π = 3,1416", Fraction(31416, 10000)),

@@ -65,7 +65,7 @@ __all__ = [
 LEDGER_KEYS = ("paper", "text")
 REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
 # Where the row is printed (its lines, and the words of them it rests on), what it restates,
-# and (issue 19) the printed form as a formula.
+# and the printed form as a formula.
 TEXT_KEYS = ("lines", "quote", "restates", "printed", "reading_formula", "corrected_formula",
              "reference")  # fmt: skip
 # A checked row's kind of check (core/check_kinds) and the formula checks (formulas.py) that
@@ -75,7 +75,7 @@ ROW_KEYS = (*REQUIRED_KEYS, *CHECK_KEYS, "reading", "corrected", "wrong_term", "
 # Keys that take a string or a list of strings, each printed verbatim within the row's lines.
 PRINTED_KEYS = ("wrong_term", "quote")
 LIST_KEYS = (*PRINTED_KEYS, "measured")
-# The output layout issue 12 prescribes for `reproduce --format json` under "equations".
+# The fields of an output row (`reproduce --format json` under "equations").
 OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
 
 # An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),

@@ -1,8 +1,8 @@
-"""Statuses computed from the printed form (issue 19): a row's ``printed`` formula checked as
+"""Statuses computed from the printed form: a row's ``printed`` formula checked as
 an identity against the reference its paper's code supplies.
 
-A reference (``reference = "name"`` in the row; ``pendcli.papers.<paper>.equations.name()``
-returns a :class:`Reference`) maps some of the ledger's symbols to exact expressions: the
+A reference (``reference = "name"`` in the row; the paper's table ``Paper.references`` maps the
+name to the function that builds the :class:`Reference`) maps some of the ledger's symbols to exact expressions: the
 preceding equation, the definition a formula rests on, the exact solution; never a second
 copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes when
 ``lhs − rhs`` (with « … » set to 0), after the substitution, vanishes at exact random
@@ -867,7 +867,7 @@ def computed_status(
     return None, f"the printed form fails ({why}) and the row gives no reading or correction"
 
 
-# --- prose claims (issue 19, a19): each case, conditions for roots ----------------
+# --- prose claims: each case, conditions for roots ----------------
 
 
 def judged(formula: Formula, reference: Reference) -> tuple[bool, str]:

@@ -1,4 +1,4 @@
-"""Statuses computed from a printed form that is NUMBERS (issue 19): a table the paper prints
+"""Statuses computed from a printed form that is NUMBERS: a table the paper prints
 (``5.14; 8.41; 11.62``), ``name = value`` pairs, or a formula with a printed decimal in it
 (``... = 0.00313*metre*z**2``), judged against the values its paper's code computes.
 
