@@ -1,22 +1,22 @@
-"""Statuses computed from the printed form: a row's ``printed`` formula checked as
-an identity against the reference its paper's code supplies.
+"""Statuses computed from the printed form: a row's ``printed`` formula judged, by the kind
+of check the row declares (:mod:`pendcli.core.check_kinds`), against its reference.
 
-A reference (``reference = "name"`` in the row; the paper's table ``Paper.references`` maps the
-name to the function that builds the :class:`Reference`) maps some of the ledger's symbols to exact expressions: the
-preceding equation, the definition a formula rests on, the exact solution; never a second
-copy of the printed formula. Each equation ``lhs = rhs`` of a formula passes when
-``lhs − rhs`` (with « … » set to 0), after the substitution, vanishes at exact random
-rational points (to 20 digits), or simplifies to 0 where a point gives no number; with a
-``scale`` and an ``order``, when its series in the scale vanishes below that order (an
-equation whose left side is a symbol named in ``orders`` uses that order: a summary formula
-may carry one quantity further than another; such a series is first judged numerically, its
-coefficients by Cauchy's integral about 0 at random rational points (in a root of the scale
-where it enters as s**(p/q)): proved, or refused when a coefficient below the order is far
-from 0, and sympy's series is taken only where that decides nothing). A bare inequality
-(``a > b``: a sign or a bound a sentence asserts) passes when its greater side less its
-lesser, substituted alike, is ≥ 0 at the points (and, strict, not 0 at all of them); a
-reference's ``cases`` judge a formula's first equations each against its own (« pour n
-pair », « pour n impair »). The status follows:
+A reference (``reference = "name"`` in the row; the paper's table ``Paper.references`` maps
+the name to the function that builds the :class:`Reference`) maps some of the ledger's
+symbols to exact expressions: the preceding equation, the definition a formula rests on, the
+exact solution; never a second copy of the printed formula. Each equation ``lhs = rhs`` of a
+formula passes when ``lhs − rhs`` (with « … » set to 0), after the substitution, vanishes at
+exact random rational points (to 20 digits), or simplifies to 0 where a point gives no
+number; with a ``scale`` and an ``order``, when its series in the scale vanishes below that
+order (an equation whose left side is a symbol named in ``orders`` uses that order: a
+summary formula may carry one quantity further than another; such a series is first judged
+numerically, its coefficients by Cauchy's integral about 0 at random rational points (in a
+root of the scale where it enters as s**(p/q)): proved, or refused when a coefficient below
+the order is far from 0, and sympy's series is taken only where that decides nothing). A
+bare inequality (``a > b``: a sign or a bound a sentence asserts) passes when its greater
+side less its lesser, substituted alike, is ≥ 0 at the points (and, strict, not 0 at all of
+them); a reference's ``cases`` judge a formula's first equations each against its own («
+pour n pair », « pour n impair »). The status follows:
 
 * ``holds``: the printed form passes;
 * ``misprint``: the printed form fails and its ``reading_formula`` passes;
