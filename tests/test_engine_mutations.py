@@ -58,7 +58,6 @@ holds rows (1.2 s alone); the rest is slow (tests/conftest.py).
 from __future__ import annotations
 
 import dataclasses
-import importlib
 import random
 import re
 from collections import Counter
@@ -148,8 +147,9 @@ def reference_of(row: LedgerRow) -> Any:
     assert row.reference is not None
     key = (row.paper, row.reference)
     if key not in _REFERENCES:
-        checks = importlib.import_module(f"pendcli.papers.{row.paper}.equations")
-        _REFERENCES[key] = getattr(checks, row.reference)()
+        from pendcli.papers.registry import paper
+
+        _REFERENCES[key] = paper(row.paper).references()[row.reference]()
     return _REFERENCES[key]
 
 
