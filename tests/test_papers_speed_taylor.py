@@ -28,7 +28,7 @@ def test_degree_in_agrees_with_sympy_degree_on_a_series_terms() -> None:
 
 
 def test_degree_in_of_the_tisserand_motion_terms() -> None:
-    from pendcli.papers.tisserand.equations import motion_series, series_symbols
+    from pendcli.papers.tisserand.references_series import motion_series, series_symbols
 
     s = series_symbols()[0]
     for term in sp.Add.make_args(sp.expand(motion_series(5)["kt"])):

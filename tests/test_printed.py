@@ -16,10 +16,11 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, parse_ledger, verify_printed
 from pendcli.core.ledger_formulas import row_dimensions
 from pendcli.core.printed import parse_dimension, parse_formula
-from pendcli.papers.tisserand import equations as TISSERAND_CHECKS
+from pendcli.papers.registry import paper as registered_paper
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
+TISSERAND_REFERENCES = registered_paper("tisserand").references()
 # Papers whose every row with a formula carries its printed form, and the rows that assert
 # prose only (no formula to transcribe).
 TRANSCRIBED = {
@@ -234,7 +235,7 @@ def _reference_rows() -> list[object]:
 def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
     ledger: object, row: LedgerRow
 ) -> None:
-    computed, problem = verify_printed(row, ledger.symbols_for(row), TISSERAND_CHECKS)  # type: ignore[attr-defined]
+    computed, problem = verify_printed(row, ledger.symbols_for(row), TISSERAND_REFERENCES)  # type: ignore[attr-defined]
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
@@ -256,7 +257,7 @@ def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
 )
 def test_a_changed_coefficient_stops_a_row_holding(row_id: str, old: str, new: str) -> None:
     row, symbols = altered_row("tisserand", row_id, old, new)
-    computed, problem = verify_printed(row, symbols, TISSERAND_CHECKS)
+    computed, problem = verify_printed(row, symbols, TISSERAND_REFERENCES)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
 
@@ -265,7 +266,7 @@ def test_a_misprint_whose_printed_form_is_its_reading_is_refused() -> None:
     printed = "printed = 'tan(phi1)**2 = (u1**2*u0**2 - u**2)/(u0**2*u**2 - u1**2)'"
     reading = "printed = 'tan(phi1)**2 = u1**2/u0**2*(u0**2 - u**2)/(u**2 - u1**2)'"
     row, symbols = altered_row("tisserand", "tisserand.result.tan-sq-phi1", printed, reading)
-    _, problem = verify_printed(row, symbols, TISSERAND_CHECKS)
+    _, problem = verify_printed(row, symbols, TISSERAND_REFERENCES)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
@@ -333,7 +334,6 @@ def test_a_random_number_of_a_random_holds_row_changed_stops_it_holding(seed: in
     numbers changed by one in its last digit, no longer holds (60 such changes tried by hand
     on 2026-12-02: every one refused)."""
     import dataclasses
-    import importlib
     import random
 
     from pendcli.core.ledger_formulas import printed_status
@@ -348,7 +348,7 @@ def test_a_random_number_of_a_random_holds_row_changed_stops_it_holding(seed: in
     changed = text[:-1] + str((int(text[-1]) + 1) % 10) if "." in text else str(int(text) + 1)
     printed = row.printed[: number.start()] + changed + row.printed[number.end() :]
     mutant = dataclasses.replace(row, printed=printed)
-    checks = importlib.import_module(f"pendcli.papers.{paper}.equations")
+    references = registered_paper(paper).references()
     symbols = committed_ledger(paper).symbols_for(mutant)
-    status, why = printed_status(mutant, symbols, getattr(checks, row.reference)())
+    status, why = printed_status(mutant, symbols, references[row.reference]())
     assert status != "holds", f"{row.id}: {text} -> {changed} at {number.start()}: {why}"

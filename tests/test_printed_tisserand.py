@@ -1,4 +1,4 @@
-"""Tisserand's statuses computed from the printed forms (issue 19) can fail: one coefficient
+"""Tisserand's statuses computed from the printed forms can fail: one coefficient
 changed in a row's printed form (or in its reading or correction) makes the engine refuse the
 row; a misprint whose printed form is set to its reading is refused; a repeat in the summary
 prints the formula it repeats."""
@@ -18,10 +18,10 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, equation_rows, verify_printed
 from pendcli.core.ledger_formulas import row_formula
 from pendcli.papers.registry import paper as registered_paper
-from pendcli.papers.tisserand import equations as TISSERAND
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
+TISSERAND = registered_paper("tisserand").references()
 
 
 def _ledger() -> tuple[dict[str, LedgerRow], dict[str, str]]:
@@ -190,13 +190,13 @@ def test_a_repeat_with_a_changed_coefficient_is_not_a_repeat() -> None:
 
 
 def test_every_checked_row_has_a_reference() -> None:
-    # the numerical asides too: their printed numbers are judged by core/printed_numeric (n19)
+    # the numerical asides too: their printed numbers are judged by core/printed_numeric
     rows, _ = _ledger()
     checked = [r for r in rows.values() if r.status in ("holds", "fails", "misprint")]
     assert [r.id for r in checked if not r.reference] == []
 
 
-# --- d19: the sentences that cite formulas (lines 126, 154, 190, 206) --------------------
+# --- the sentences that cite formulas (lines 126, 154, 190, 206) -------------------------
 
 CITED_CHANGES = [
     ("result.what-gives-the-motion", "reading_formula", "17/512", "18/512"),

@@ -43,6 +43,7 @@ Findings
 
 Modules: :mod:`.units` (angles typed and printed), :mod:`.model` (the series, the example's
 data, the exact motion), :mod:`.claims` (``recompute()``), :mod:`.formulas` (formula checks),
+:mod:`.references` (what the ledger's printed forms are judged against),
 :mod:`.figures`, :mod:`.explore` (the CLI's example and series views). This file imports
 nothing heavy (its hooks load their modules when called), so that `pendcli --help` stays
 fast.
@@ -81,11 +82,9 @@ def _preload() -> None:
 
 
 def _references() -> Mapping[str, Callable[[], Any]]:
-    from pendcli.papers.tisserand import equations
+    from pendcli.papers.tisserand.references import REFERENCES
 
-    # the names the ledger cites, taken from the module until it keeps an explicit table
-    prefixes = ("reference_", "numbers_")
-    return {n: getattr(equations, n) for n in dir(equations) if n.startswith(prefixes)}
+    return REFERENCES
 
 
 def _tradeoff_families() -> Sequence[Any]:

@@ -1,5 +1,5 @@
 """Tisserand (1881), lines 192-202: the numbers of the numerical application, computed for the
-numeric mode of the printed-form engine (:mod:`pendcli.core.printed_numeric`, issue 19).
+numeric mode of the printed-form engine (:mod:`pendcli.core.printed_numeric`).
 
 The coefficients of ψ (II) and φ' (V) are Tisserand's own series (``model.series_conical``,
 every printed term) at the amplitudes the row prints, so that the printed « 30', 15' » and
@@ -43,6 +43,7 @@ def _coefficients(given: Mapping[str, float]) -> tuple[float, ...]:
     )
 
 
+# Lines 192-200: ψ and φ' for « θ0 = 30', θ1 = 15' », by (II) and (V).
 def numbers_numerical_application() -> Any:
     """Lines 192-200: the three coefficients for the printed amplitudes (inputs, not judged)."""
     from pendcli.core.printed_numeric import Numbers
@@ -69,6 +70,7 @@ def _shift(given: Mapping[str, float]) -> tuple[float]:
     return (float(shift),)
 
 
+# Line 202: the bob's displacement by φ''s periodic term, for l = 0,5 m.
 def numbers_displacement() -> Any:
     """Line 202: « un petit déplacement égal au plus à un cinquième de millimètre », an upper
     bound, for the printed l = 0^m,5."""
