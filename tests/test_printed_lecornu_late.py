@@ -1,7 +1,9 @@
 """Lecornu, lines 699-1135 (§ III from (30), § IV): every row carries its printed form, every
-checked row's status is computed from it (pendcli/papers/lecornu/references_late.py), a
-changed coefficient or a misprint set to its reading is refused, and the findings of these
-lines are verified a second, numeric way."""
+checked row's status is computed from it (the references of pendcli/papers/lecornu/
+references_finite.py, references_perturbed.py, references_conical.py,
+references_conical_planes.py), a changed coefficient or a misprint set to its reading is
+refused, and the references these findings rest on agree with a second, numeric
+computation; also the rows of lines 420-676 whose references are in references_asymptotic.py."""
 
 from __future__ import annotations
 
@@ -9,22 +11,22 @@ from pathlib import Path
 
 import pytest
 from ledgers import committed_ledger, committed_row, first_line, row_ids
-from mutations import judged_after_edit, printed_line
+from mutations import altered_tables, judged_after_edit, printed_line
 
 from pendcli.core.dimensions import check_dimensions
 from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, verify_printed
 from pendcli.core.printed import parse_dimension, parse_formula
 from pendcli.core.printed_check import formula_passes
-from pendcli.papers.lecornu import equations as CHECKS
+from pendcli.papers.registry import paper
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
 FIRST = 699  # lines 1-698 are another part of the ledger
-# Checked rows of these lines without a reference, and why.
-# (b19 gave the last three theirs: s_quadratures judged through the equations the integrals
-# solve, conical_general_integral against a solution of (45) by an ODE, homothety_ratio
-# against (52)'s trace.)
+# Checked rows of these lines without a reference, and why (none: s_quadratures is judged
+# through the equations the integrals solve, conical_general_integral against a solution of
+# (45) by an ODE, homothety_ratio against (52)'s trace).
 NO_REFERENCE: set[str] = set()
+REFERENCES = paper("lecornu").references()
 
 
 def _late_rows() -> list[LedgerRow]:
@@ -49,7 +51,7 @@ def test_every_checked_row_has_a_reference() -> None:
 @pytest.mark.parametrize("row_id", _late_ids("reference"))
 def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row_id: str) -> None:
     ledger, row = committed_ledger("lecornu"), committed_row(row_id)
-    computed, problem = verify_printed(row, ledger.symbols_for(row), CHECKS)
+    computed, problem = verify_printed(row, ledger.symbols_for(row), REFERENCES)
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
@@ -65,7 +67,7 @@ def test_a_wrong_term_is_printed_in_its_lines(row_id: str) -> None:
 
 
 def _problem(row_id: str, old: str, new: str) -> tuple[str | None, str | None]:
-    return judged_after_edit(CHECKS, row_id, old, new)
+    return judged_after_edit(REFERENCES, row_id, old, new)
 
 
 @pytest.mark.parametrize(
@@ -156,7 +158,7 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
     """Line 1008: l θ_tt + 2θ_t + (g/b²) sin θ − … is not (43) in l; with d²θ/dl², dθ/dl
     (and l³) it is. Symbolic (the engine, each slip alone) and dimensional here; numeric:
     (43) integrated by mpmath, the two forms evaluated along the solution."""
-    reference = CHECKS.reference_conical_l_form()
+    reference = REFERENCES["reference_conical_l_form"]()
     l3 = "c**2*cos(theta)/(b**2*l**3*sin(theta)**3) = 0"
     in_t = f"l*d2theta_dt2 + 2*dtheta_dt + g/b**2*sin(theta) - {l3}"
     in_l = f"l*d2theta_dl2 + 2*dtheta_dl + g/b**2*sin(theta) - {l3}"
@@ -195,14 +197,108 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
     assert abs(as_read) < 1e-12 < 1e-3 < abs(as_printed)
 
 
+def _numeric(expr: object, names: tuple[str, ...]) -> object:
+    """A sympy expression as a numpy function of the symbols ``names`` (a name it lacks is
+    a fresh symbol)."""
+    import sympy as sp
+
+    found = {s.name: s for s in expr.free_symbols}  # type: ignore[attr-defined]
+    return sp.lambdify([found.get(n, sp.Symbol(n)) for n in names], expr, modules="numpy")
+
+
+def _linearised(start: float, slope: float, p: float, grid: object) -> object:
+    """(3) linearised in u = γt, (1 + pu)θ'' + 2pθ' + θ = 0, by scipy's solve_ivp (LSODA,
+    not the formula engine's DOP853) from θ(0) = start, θ'(0) = slope, on ``grid``."""
+    from scipy.integrate import solve_ivp
+
+    solution = solve_ivp(
+        lambda u, y: [y[1], -(2 * p * y[1] + y[0]) / (1 + p * u)],
+        (0.0, float(grid[-1])),  # type: ignore[index]
+        [start, slope],
+        method="LSODA",
+        t_eval=grid,
+        rtol=1e-12,
+        atol=1e-14,
+    )
+    return solution.y[0]
+
+
+RHO1, RHO2 = 1.0, 0.4
+
+
+def _trace(p: float, grid: object) -> tuple[object, object, object, object]:
+    """(52)'s trace: the reference's θ1, θ2 (reference_rotated_phases, the O(p) solutions of
+    (48) about ρ1 cos u, ρ2 sin u) on ``grid`` and the ODE's from their values and slopes at
+    u = 0 (ρ1 = 1, ρ2 = 0.4)."""
+    import sympy as sp
+
+    exact = REFERENCES["reference_rotated_phases"]().exact
+    names = ("u", "p", "rho1", "rho2")
+    out = []
+    for name in ("theta1", "theta2"):
+        theta = sp.sympify(exact[name])
+        (u,) = [s for s in theta.free_symbols if s.name == "u"]
+        value, slope = _numeric(theta, names), _numeric(sp.diff(theta, u), names)
+        start, rate = value(0.0, p, RHO1, RHO2), slope(0.0, p, RHO1, RHO2)  # type: ignore[operator]
+        out += [value(grid, p, RHO1, RHO2), _linearised(start, rate, p, grid)]  # type: ignore[operator]
+    return out[0], out[1], out[2], out[3]
+
+
+def test_the_reference_of_52_is_the_linearised_motion_to_first_order() -> None:
+    """reference_rotated_phases (sympy's O(p) solution of (48), which (52), the trace of
+    line 1126 and the axes of line 1130 are judged against) against scipy's ODE: the
+    difference falls as p² over 0 ≤ u ≤ 2π."""
+    import numpy as np
+
+    grid = np.linspace(0.0, 2 * np.pi, 201)
+    gaps = []
+    for p in (0.02, 0.01):
+        one, one_ode, two, two_ode = _trace(p, grid)
+        gaps.append(max(np.max(np.abs(one - one_ode)), np.max(np.abs(two - two_ode))))  # type: ignore[operator]
+    assert gaps[0] < 0.05 and 3.5 < gaps[0] / gaps[1] < 4.5
+
+
 def test_the_trajectory_after_52_has_its_arctangent_argument_inverted() -> None:
-    """Line 1126: symbolic (the engine against (48) to O(p)) and numeric (an ODE)."""
-    reference = CHECKS.reference_rotated_phases()
+    """Line 1126: symbolic (the engine against (48) to O(p)) and numeric (the ledger's
+    printed and read forms on the ODE's trace: the read one's residual falls as p², the
+    printed one's as p)."""
+    import numpy as np
+
+    reference = REFERENCES["reference_rotated_phases"]()
     left = "(x/rho1)**2 + (y/rho2)**2 - 1 = -3*p/2*atan"
     assert not formula_passes(_formula(f"{left}(rho2*y/(rho1*x))"), reference)[0]  # type: ignore[arg-type]
     assert formula_passes(_formula(f"{left}(rho1*y/(rho2*x))"), reference)[0]  # type: ignore[arg-type]
-    numeric = CHECKS.result_trajectory_after_52()
-    assert numeric.holds and "as printed" in numeric.detail
+    row = committed_row("lecornu.result.trajectory_after_52")
+    grid = np.linspace(0.05, 1.4, 100)
+    ratios = []
+    for text in (row.printed, row.reading_formula):
+        ((lhs, rhs),) = _formula(str(text)).equations  # type: ignore[attr-defined]
+        gap = _numeric(lhs - rhs, ("x", "y", "rho1", "rho2", "p"))
+        worst = []
+        for p in (0.02, 0.01):
+            _, x, _, y = _trace(p, grid)
+            worst.append(np.max(np.abs(gap(x, y, RHO1, RHO2, p))))  # type: ignore[operator]
+        ratios.append(worst[0] / worst[1])
+    assert 1.7 < ratios[0] < 2.3 and 3.5 < ratios[1] < 4.5
+
+
+def test_a_formula_check_evaluates_the_ledgers_form(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """lecornu.eq52_as_read measures (52) as the ledger reads it, not a copy: with the
+    reading's −u sin u of θ1 set back to the printed u cos u (in a copy of tables/), the
+    residual falls as p only and the check fails."""
+    from pendcli.core.tables import clear_table_cache
+    from pendcli.papers.lecornu.formulas_conical import conical_rows
+
+    rows = {r.id: r for r in conical_rows()}
+    assert rows["lecornu.eq52_as_read"].verdict == "holds"
+    edit = ("equations/lecornu.toml", "p*u/4*(3*cos(u) - u*sin(u))", "p*u/4*(3*cos(u) + u*cos(u))")
+    monkeypatch.setenv("PENDCLI_TABLES", str(altered_tables(tmp_path, edit)))
+    clear_table_cache()
+    changed = {r.id: r for r in conical_rows()}["lecornu.eq52_as_read"]
+    assert changed.verdict == "fails"
+    assert changed.observed_order is not None and changed.observed_order < 1.2
 
 
 def test_line_880_solves_neither_delta_equation() -> None:
@@ -230,8 +326,30 @@ def test_line_880_solves_neither_delta_equation() -> None:
     )
     gap = sp.expand(TR8(sp.expand(delta.diff(u, 2) + delta - printed_rhs)))
     assert gap == sp.sin(u) / 4
-    check = CHECKS.result_delta_solution_numeric()
-    assert not check.holds and check.corrected
+    # numeric: δ'' + δ = B + 2β cos²u with B and β as lines 860 and 872 print them (rows
+    # that hold), solved by scipy from δ = δ' = 0: the reference's δ and the corrected 64δ
+    # agree with it at u = 1.5, the printed 32δ does not
+    from scipy.integrate import solve_ivp
+
+    ((_, beta),) = _formula(str(committed_row("lecornu.result.beta_solution").printed)).equations  # type: ignore[attr-defined]
+    big_b = _formula(str(committed_row("lecornu.result.b_expanded").printed)).equations[-1][1]  # type: ignore[attr-defined]
+    source = _numeric(big_b + 2 * beta * sp.cos(u) ** 2, ("u",))
+    ode = solve_ivp(
+        lambda x, y: [y[1], source(x) - y[0]],
+        (0, 1.5),
+        [0, 0],
+        rtol=1e-12,
+        atol=1e-14,  # type: ignore[operator]
+    )
+    solved = float(ode.y[0, -1])
+    row = committed_row("lecornu.result.delta_solution")
+    found = {}
+    for field in ("printed", "corrected_formula"):
+        ((lhs, rhs),) = _formula(str(getattr(row, field))).equations  # type: ignore[attr-defined]
+        found[field] = float(rhs.subs(u, 1.5) / (lhs / sp.Symbol("delta_e", real=True)))
+    reference = REFERENCES["reference_beta_delta"]().exact["delta_e"]
+    assert abs(float(reference.subs(u, 1.5)) - solved) < 1e-9
+    assert abs(found["corrected_formula"] - solved) < 1e-9 < 1e-3 < abs(found["printed"] - solved)
 
 
 def test_line_1102_prints_rho_for_l() -> None:
@@ -240,10 +358,24 @@ def test_line_1102_prints_rho_for_l() -> None:
     printed = "1/rho**2 = 1/(a + b*t)**2"
     assert _dimension_verdict(printed) == "inconsistent"
     assert _dimension_verdict("1/l**2 = 1/(a + b*t)**2") == "consistent"
-    assert CHECKS.result_inverse_square_length().holds
+    # the reference (l = a + bt, b = pγa) against the read first-order form, by mpmath: the
+    # gap falls as p² (a = γt = 1)
+    import mpmath
+
+    exact = REFERENCES["reference_slow_length"]().exact
+    row = committed_row("lecornu.result.inverse_square_length")
+    series = _formula(str(row.reading_formula)).equations[-1][1]  # type: ignore[attr-defined]
+    at = {"a": 1, "gamma": 1, "t": 1}
+    gaps = []
+    for p in (mpmath.mpf("0.01"), mpmath.mpf("0.005")):
+        values = {**at, "p": p}
+        length = exact["l"].subs({s: values[s.name] for s in exact["l"].free_symbols})
+        first = series.subs({s: values.get(s.name, 0) for s in series.free_symbols})
+        gaps.append(abs(1 / mpmath.mpf(str(length)) ** 2 - mpmath.mpf(str(first))))
+    assert 3.9 < gaps[0] / gaps[1] < 4.1
 
 
-# --- b19: lines 420-676 (the integral's tail, (20)-(24), the slowly varying pendulum) -------
+# --- lines 420-676 (the integral's tail, (20)-(24), the slowly varying pendulum) -----------
 
 
 @pytest.mark.parametrize(
@@ -286,7 +418,9 @@ def test_line_1102_prints_rho_for_l() -> None:
         ),
     ],
 )
-def test_a_changed_coefficient_stops_a_b19_row_holding(row_id: str, old: str, new: str) -> None:
+def test_a_changed_coefficient_stops_a_section_ii_row_holding(
+    row_id: str, old: str, new: str
+) -> None:
     computed, problem = _problem(row_id, old, new)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
     assert computed is not None and not computed.startswith("holds")
@@ -328,7 +462,8 @@ def test_the_mean_pendulum_correction_is_computed() -> None:
     import mpmath
 
     row = committed_row("lecornu.result.mean_pendulum")
-    computed, problem = verify_printed(row, committed_ledger("lecornu").symbols_for(row), CHECKS)
+    symbols = committed_ledger("lecornu").symbols_for(row)
+    computed, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is None and computed is not None and computed.startswith("fails:")
     assert "7*pi**3" in computed
     ratios = []
@@ -359,7 +494,7 @@ def test_the_mean_pendulum_correction_is_computed() -> None:
         ),
     ],
 )
-def test_a_changed_coefficient_is_refused_in_a_late_b19_row(
+def test_a_changed_coefficient_is_refused_in_a_row_judged_by_a_transform_or_a_trace(
     row_id: str, old: str, new: str
 ) -> None:
     computed, problem = _problem(row_id, old, new)
@@ -376,14 +511,25 @@ def test_the_homothety_axes_set_to_their_reading_are_refused() -> None:
 
 def test_the_homothety_axes_carry_the_inverted_arctangent() -> None:
     """Lines 1130-1134: symbolic (the engine: the axes with ρ2y/(ρ1x) fail, with ρ1y/(ρ2x)
-    hold, against (52)'s trace) and numeric (an ODE: the residual is O(p) as printed, O(p²)
-    as read, and the half-turn ratio is 1 − 3pπ/4 to O(p²))."""
-    reference = CHECKS.reference_homothety()
+    hold, against (52)'s trace) and numeric (the reference's half-turn ratio is the ODE's to
+    O(p²); its trace is, test_the_reference_of_52_is_the_linearised_motion_to_first_order)."""
+    import numpy as np
+    import sympy as sp
+
+    reference = REFERENCES["reference_homothety"]()
     axis = "axis1 = rho1*(1 - 3*p/4*atan"
     assert not formula_passes(_formula(f"{axis}(rho2*y/(rho1*x)))"), reference)[0]  # type: ignore[arg-type]
     assert formula_passes(_formula(f"{axis}(rho1*y/(rho2*x)))"), reference)[0]  # type: ignore[arg-type]
-    numeric = CHECKS.result_homothety_axes_numeric()
-    assert numeric.holds and "as printed" in numeric.detail
+    # the reference's ratio after half a turn, s(u + π)/s(u) on its O(p) trace, against the
+    # ODE's at u = 0.7: they differ by O(p²)
+    ratio = _numeric(sp.sympify(reference.exact["hom_ratio"]), ("u", "p", "rho1", "rho2"))
+    grid = np.array([0.0, 0.7, 0.7 + np.pi])
+    gaps = []
+    for p in (0.02, 0.01):
+        _, x, _, y = _trace(p, grid)
+        size = np.sqrt((x / RHO1) ** 2 + (y / RHO2) ** 2)  # type: ignore[operator]
+        gaps.append(abs(ratio(0.7, p, RHO1, RHO2) - size[2] / size[1]))  # type: ignore[operator]
+    assert gaps[0] < 1e-2 and 3 < gaps[0] / gaps[1] < 5
 
 
 @pytest.mark.parametrize(

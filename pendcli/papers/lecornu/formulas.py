@@ -533,6 +533,7 @@ def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     """Every Lecornu formula check (see the module docstring), each failure with its cause."""
     # Imported here: chapter III's checks build on this module's sweeps and row helper.
     from pendcli.papers.lecornu.formulas_chapter3 import fast_shortening_rows, finite_rows
+    from pendcli.papers.lecornu.formulas_conical import conical_rows
 
     rows = [
         *table_26_rows(ref),
@@ -541,6 +542,7 @@ def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
         *compound_rows(ref),
         *fast_shortening_rows(ref),
         *finite_rows(ref),
+        *conical_rows(ref),
     ]
     return with_causes(rows, FORMULA_CAUSES)
 
@@ -565,10 +567,18 @@ _PANELS: tuple[tuple[str, str, str, str], ...] = (
     ("homothety_ratio", "homothety ratio, half a turn", _P, "ratio, dimensionless"),
     ("compound_pendulum", "compound as simple pendulum", f"{_P}; R/a = 0.5", "÷ θ0"),
     ("eq31", "fast shortening θ(z)", "s·z0 = ga/b², dimensionless", "rad; α = 0.5 rad"),
+    ("amplitude_series", "θ to k³ from am u", _K, "rad"),
     ("eq38", "finite oscillations θ(u)", _K, "rad"),
     ("eq41_terms_in_p", "∂θ/∂p at p = 0", _K, "rad"),
+    ("k3_neglected", "(41) with k³ neglected", _P, _AMPLITUDE),
     ("eq42_terms_in_b", "∂T/∂p of the quarter period", _K, _TIME),
     ("eq42prime_terms_in_b", "(42) with k = θ0/2", "θ0 (rad)", _TIME),
+    ("area_small_angle", "θ² for sin²θ in (44)", "θ (rad)", "relative"),
+    ("eq50", "conical pendulum θ1, θ2", _P, _AMPLITUDE),
+    ("inverse_square_length", "1/l² to first order", _P, "× a²"),
+    ("eq52_as_read", "conical pendulum θ1, θ2", _P, _AMPLITUDE),
+    ("trajectory_after_52", "the trace's equation", _P, "dimensionless"),
+    ("homothety_axes", "axes of the trace's ellipse", _P, "÷ ρi"),
 )
 PANELS: dict[str, PanelLabels] = {
     f"{PAPER}.{id_}": PanelLabels(name, parameter, unit) for id_, name, parameter, unit in _PANELS

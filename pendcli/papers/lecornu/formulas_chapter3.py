@@ -1,19 +1,28 @@
 """Lecornu (1894), chapter III: fast shortening (31) and finite oscillations (38) to (42').
 
 Checked here, each against solve_ivp (the reduced variables, the sweep in p and the row
-helper are those of :mod:`pendcli.papers.lecornu.formulas`, which gathers these rows):
+helper are those of :mod:`pendcli.papers.lecornu.formulas`, which gathers these rows) or
+against mpmath's Jacobi functions:
 
 * (31), θ(z) to second order in s when the string shortens fast;
+* the series of am u, cn u and θ to k³ (lines 786-806), against θ = 2 arctg((k/k') cn u);
 * (38), the finite oscillations θ(u) to order k³;
 * the terms in p of (41), from the variational equation of (32) at p = 0;
+* (41) with k³ neglected (lines 888-892), against (3) linearised;
 * the terms in b of (42) and (42'), the time from an elongation to the vertical.
+
+The checks added with the ledger's rows (the am u series, line 890, and § IV's in
+:mod:`pendcli.papers.lecornu.formulas_conical`) evaluate the row's printed form (or its
+reading) as the ledger transcribes it (:func:`ledger_sides`): no formula is typed twice.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from functools import cache
+from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -26,10 +35,29 @@ from pendcli.core.formula_engine import (
     identify_combination,
     judge,
     leading_coefficient,
+    make_row,
 )
-from pendcli.papers.lecornu.formulas import GRID_2PI, PI, Array, Solution, formula_row
+from pendcli.papers.lecornu.formulas import (
+    GRID_2PI,
+    P_SWEEP,
+    PI,
+    Array,
+    Solution,
+    formula_row,
+)
 
-__all__ = ["fast_shortening_rows", "finite_rows"]
+__all__ = [
+    "amplitude_series_row",
+    "evaluator",
+    "fast_shortening_rows",
+    "finite_rows",
+    "k3_neglected_row",
+    "ledger_sides",
+    "ledger_text",
+    "linear_solution",
+    "slope_at_zero",
+    "through_printed_state",
+]
 
 K_SWEEP = (0.2, 0.14, 0.1, 0.07, 0.05)  # k = sin(θ0/2)
 S_SWEEP = (0.2, 0.1, 0.05, 0.025, 0.0125)  # s·z0 = g a / b² for (31)
@@ -39,6 +67,114 @@ K_PARAM = "k = sin(θ0/2) = 0.2 … 0.05"
 def _k_study(residuals: Sequence[float] | Array, order: float, ref: Reference) -> Study:
     """A study over K_SWEEP (k = sin(θ0/2))."""
     return Study(K_PARAM, K_SWEEP, tuple(residuals), order, ref.error_bound)
+
+
+# --------------------------------------------------------- the ledger's printed forms
+@cache
+def _ledger_raw(tables: str) -> dict[str, Any]:
+    from pendcli.core.ledger import ledger_path
+    from pendcli.core.tables import read_toml
+
+    return read_toml(ledger_path("lecornu", Path(tables)), "equation ledger")
+
+
+@cache
+def _ledger_row_in(row_id: str, tables: str) -> tuple[Any, dict[str, str]]:
+    """Row ``lecornu.<row_id>`` validated as the ledger's loader does (its formulas parsed),
+    alone: the other rows' formulas are not parsed again; and the symbols of its place."""
+    from pendcli.core.ledger import ledger_path, parse_ledger
+
+    raw = _ledger_raw(tables)
+    entries = [e for e in raw["equation"] if e.get("id") == f"lecornu.{row_id}"]
+    path = ledger_path("lecornu", Path(tables))
+    ledger = parse_ledger({**raw, "equation": entries}, "lecornu", path, Path(tables))
+    (row,) = ledger.rows
+    return row, ledger.symbols_for(row)
+
+
+def _ledger_row(row_id: str) -> tuple[Any, dict[str, str]]:
+    from pendcli.core.tables import tables_dir
+
+    return _ledger_row_in(row_id, str(tables_dir()))
+
+
+def ledger_text(row_id: str, field: str = "printed") -> str:
+    """Ledger row ``lecornu.<row_id>``'s formula ``field`` (``printed`` or
+    ``reading_formula``) as the ledger transcribes it."""
+    row, _ = _ledger_row(row_id)
+    text = getattr(row, field)
+    if text is None:
+        raise ValueError(f"{row.id} has no {field}")
+    return str(text)
+
+
+def ledger_sides(row_id: str, field: str = "printed") -> tuple[tuple[Any, Any], ...]:
+    """The (lhs, rhs) pairs of :func:`ledger_text`, parsed in the symbols of the row's place
+    in the text: what a check of a printed formula evaluates, never a copy of it."""
+    from pendcli.core.printed import parse_formula
+
+    row, symbols = _ledger_row(row_id)
+    return parse_formula(row.id, ledger_text(row_id, field), symbols).equations
+
+
+def _named(expr: Any, names: Sequence[str]) -> tuple[Any, list[Any]]:
+    """``expr`` with a printed « … » (the terms a series leaves out) set to 0, and the sympy
+    symbols of ``names`` in it (a name it lacks is a fresh symbol); any other symbol of
+    ``expr`` is an error."""
+    import sympy as sp
+
+    from pendcli.core.printed import ELLIPSIS
+
+    found = {s.name: s for s in expr.free_symbols}
+    extra = set(found) - set(names) - {ELLIPSIS}
+    if extra:
+        raise ValueError(f"{expr} has symbols {sorted(extra)} beyond {list(names)}")
+    cut = expr.subs({s: 0 for n, s in found.items() if n == ELLIPSIS})
+    return cut, [found.get(n, sp.Symbol(n, real=True)) for n in names]
+
+
+def evaluator(expr: Any, names: Sequence[str], modules: str = "numpy") -> Callable[..., Any]:
+    """``expr`` (a parsed printed form) as a function of the symbols ``names``, in that
+    order (numpy arrays, or mpmath numbers with ``modules="mpmath"``)."""
+    import sympy as sp
+
+    cut, symbols = _named(expr, names)
+    return sp.lambdify(symbols, cut, modules=modules)
+
+
+def slope_at_zero(expr: Any, variable: str, names: Sequence[str]) -> Callable[..., Any]:
+    """d expr/d ``variable`` (one of ``names``) as a function of ``names``, by sympy."""
+    import sympy as sp
+
+    cut, symbols = _named(expr, names)
+    return sp.lambdify(symbols, sp.diff(cut, symbols[list(names).index(variable)]))
+
+
+@cache
+def linear_solution(
+    starts: tuple[float, ...], slopes: tuple[float, ...], t_end: float, ref: Reference
+) -> Solution:
+    """(3) linearised in the reduced variables, (1 + pu)θ'' + 2pθ' + θ = 0, one copy per p
+    of P_SWEEP, from θ(0) = ``starts``, θ'(0) = ``slopes`` (per p)."""
+    ps = np.array(P_SWEEP)
+    m = len(ps)
+
+    def rhs(t: float, y: Array) -> Array:
+        th, om = y[:m], y[m:]
+        return np.concatenate((om, -(2.0 * ps * om + th) / (1.0 + ps * t)))
+
+    return ref.solve(rhs, t_end, [*starts, *slopes])
+
+
+def through_printed_state(
+    expr: Any, names: Sequence[str], fixed: Sequence[float], t_end: float, ref: Reference
+) -> tuple[Callable[..., Any], Solution]:
+    """The printed θ(u, p, *fixed) of ``expr`` (``names`` = u, p, then the fixed symbols)
+    and the solution of (3) linearised from its value and slope at u = 0, per p."""
+    value, slope = evaluator(expr, names), slope_at_zero(expr, names[0], names)
+    starts = tuple(float(value(0.0, p, *fixed)) for p in P_SWEEP)
+    slopes = tuple(float(slope(0.0, p, *fixed)) for p in P_SWEEP)
+    return value, linear_solution(starts, slopes, t_end, ref)
 
 
 def _eq31(z: Array, z0: float, s: float, alpha: float) -> Array:
@@ -283,5 +419,84 @@ def _eq42_rows(ref: Reference) -> list[FormulaRow]:
 
 
 def finite_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
-    """(38), the terms in p of (41), and the terms in b of (42) and (42')."""
-    return [_eq38_row(ref), _eq41_row(ref), *_eq42_rows(ref)]
+    """The series of am u to k³, (38), the terms in p of (41), (41) with k³ neglected, and
+    the terms in b of (42) and (42')."""
+    return [
+        amplitude_series_row(),
+        _eq38_row(ref),
+        _eq41_row(ref),
+        k3_neglected_row(ref),
+        *_eq42_rows(ref),
+    ]
+
+
+# ----------------------------------------------------- the series of am u and line 890
+K_SMALL = (0.08, 0.04, 0.02, 0.01)  # k for the series of am u (mpmath: no solver's floor)
+MP_DIGITS = 30
+MP_LABEL = f"mpmath ellipfun (Jacobi cn), {MP_DIGITS} digits"
+
+
+def _amplitude_residuals(theta: Any, grid: Array) -> list[float]:
+    """Max over ``grid`` of |2 arctg((k/k') cn u) − θ(k, u)| per k of K_SMALL, θ the printed
+    series (mpmath at MP_DIGITS digits)."""
+    import mpmath
+
+    series = evaluator(theta, ("k", "u"), modules="mpmath")
+    out = []
+    with mpmath.workdps(MP_DIGITS):
+        for k in (mpmath.mpf(str(x)) for x in K_SMALL):
+            ratio = k / mpmath.sqrt(1 - k**2)
+            worst = mpmath.mpf(0)
+            for u in (mpmath.mpf(str(x)) for x in grid):
+                exact = 2 * mpmath.atan(ratio * mpmath.ellipfun("cn", u, m=k**2))
+                worst = max(worst, abs(exact - series(k, u)))
+            out.append(float(worst))
+    return out
+
+
+def amplitude_series_row() -> FormulaRow:
+    """Lines 786-806: θ to k³ as line 802 prints it (row lecornu.result.arctg_series, the
+    end of the series of am u, cn u and the arctangent) against the exact (35) at C = 0."""
+    (*_, (_, theta)) = ledger_sides("result.arctg_series")
+    grid = np.linspace(0.0, 2 * PI, 41)
+    study = Study(
+        "k = sin(θ0/2) = 0.08 … 0.01",
+        K_SMALL,
+        tuple(_amplitude_residuals(theta, grid)),
+        4,
+        10.0 ** (5 - MP_DIGITS),
+    )
+    return make_row(
+        id="lecornu.amplitude_series",
+        paper="lecornu",
+        source="lines 786-806",
+        published=ledger_text("result.arctg_series").split(";")[-1].strip(),
+        study=study,
+        reference=MP_LABEL,
+        note="θ of line 802, the last step of the series of am u, cn u = cos am u and "
+        "arctg((k/k') cn u) to k³ (lines 786-806, « en négligeant k⁴ »), against the exact "
+        "θ = 2 arctg((k/k') cn u) of (35) at C = 0 by mpmath's Jacobi cn; max over "
+        "0 ≤ u ≤ 2π. θ is odd in k: the neglected terms are O(k⁵). With cos³u = "
+        "(cos 3u + 3 cos u)/4 (line 806) it is (38).",
+    )
+
+
+def k3_neglected_row(ref: Reference) -> FormulaRow:
+    """Line 890: θ of (41) with k³ neglected (row lecornu.result.k3_neglected, ρ = 1)
+    against (3) linearised from its own value and slope at u = 0."""
+    ((_, theta),) = ledger_sides("result.k3_neglected")
+    printed, solution = through_printed_state(theta, ("u", "p", "rho"), (1.0,), 2 * PI, ref)
+    grid = np.linspace(0.0, 2 * PI, 300)
+    solved = solution(grid)
+    res = [np.max(np.abs(solved[j] - printed(grid, p, 1.0))) for j, p in enumerate(P_SWEEP)]
+    return formula_row(
+        "k3_neglected",
+        "lines 888-892",
+        ledger_text("result.k3_neglected"),
+        Study("p = b/√(ga) = 0.032 … 0.002", P_SWEEP, tuple(res), 2, ref.error_bound),
+        ref,
+        note="(41) with k³ neglected, ρ = 2k set to 1 (the equation is linear): (25) at "
+        "γt = u, ψ = 3p/4 − π/2. Reference: (3) linearised in u = γt, "
+        "(1 + pu)θ'' + 2pθ' + θ = 0, from the printed θ and θ' at u = 0; max over "
+        "0 ≤ u ≤ 2π.",
+    )

@@ -1,0 +1,225 @@
+"""Lecornu, § IV « Pendule conique de longueur variable », lines 1064-1135: the references
+the printed forms of (47)-(52), the trace of the pendulum and its homothety after half a turn
+are judged against (core/printed_check).
+
+Each ``reference_*`` maps ledger symbols (tables/equations/lecornu.toml [symbols]) to exact
+expressions: the angles in the two planes from (9) and (46), the O(p) solution of (48)
+solved here by undetermined coefficients, definitions; never a copy of the formula the row
+prints. :func:`first_order_solution` is also § III's (line 890).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import cache
+from typing import Any
+
+from pendcli.papers.lecornu.references_tools import (
+    derivative_along,
+    make_reference,
+    real_symbols,
+)
+
+__all__ = ["REFERENCES", "first_order_solution"]
+
+
+@cache
+def reference_primitive_angles() -> Any:
+    """(47): θ = (v/l)√(bc/g), θi = (ωi/l)√(bc/g) (lines 1066-1070) with v = √(ω1² + ω2²)
+    (line 1062)."""
+    import sympy as sp
+
+    w1, w2, length, b, c, g = real_symbols("omega1", "omega2", "l", "b", "c", "g")
+    big_k = sp.sqrt(b * c / g) / length
+    exact = {"theta": sp.sqrt(w1**2 + w2**2) * big_k, "theta1": w1 * big_k, "theta2": w2 * big_k}
+    return make_reference(exact, "lines 1062-1070")
+
+
+def _plane_angles() -> dict[str, Any]:
+    """θi = K ωi(x)/l (line 1070), K = √(bc/g), x = gl/b², l = a + bt, ωi solutions of (9)
+    (xω'' + ω = 0) tied by (46); θi' and θi'' by the chain rule in t (dx/dt = g/b)."""
+    import sympy as sp
+
+    a, b, g, c, t = real_symbols("a", "b", "g", "c", "t")
+    w1, w2, dw1 = real_symbols("omega1", "omega2", "domega1_dx")
+    length = a + b * t
+    x = g * length / b**2
+    dw2 = (1 + w2 * dw1) / w1  # (46) solved for ω2'
+    rates = {t: 1, w1: dw1 * g / b, w2: dw2 * g / b, dw1: -w1 / x * g / b}
+    rates[sp.Symbol("dw2", real=True)] = 0
+    along = derivative_along(rates)
+    big_k = sp.sqrt(b * c / g)
+    out: dict[str, Any] = {"l": length}
+    for name, w in (("theta1", w1), ("theta2", w2)):
+        angle = big_k * w / length
+        out[name], out[f"d{name}_dt"] = angle, along(angle)
+        out[f"d2{name}_dt2"] = along(along(angle))
+    return out
+
+
+@cache
+def reference_plane_angles() -> Any:
+    """(48), (49): θi = K ωi(x)/l with ωi solving (9) and (46)."""
+    return make_reference(_plane_angles(), "θi = √(bc/g) ωi(gl/b²)/l, (9), (46)")
+
+
+@cache
+def reference_polar_angle() -> Any:
+    """Lines 1084-1086: θ1 = θ cos φ, θ2 = θ sin φ (φ the polar angle of (θ1, θ2)), and c
+    from (49): c = l²(θ1θ2' − θ2θ1'), θ and φ varying."""
+    import sympy as sp
+
+    theta, phi, dth, dphi, length = real_symbols("theta", "phi", "dtheta_dt", "dphi_dt", "l")
+    along = derivative_along({theta: dth, phi: dphi})
+    one, two = theta * sp.cos(phi), theta * sp.sin(phi)
+    c = length**2 * (one * along(two) - two * along(one))
+    return make_reference(
+        {"theta1": one, "theta2": two, "c": c}, "θ1 = θ cos φ, θ2 = θ sin φ, (49)"
+    )
+
+
+@cache
+def reference_small_theta() -> Any:
+    """θ scaled by ε (a series in the angle): line 1088's « pour le degré d'approximation
+    adopté », θ² neglected beside 1."""
+    import sympy as sp
+
+    theta = sp.Symbol("theta", real=True)
+    scale = sp.Symbol("epsilon", positive=True)
+    return make_reference({"theta": scale * theta}, "θ -> εθ", scale=scale, order=4)
+
+
+@cache
+def _first_order_correction() -> Any:
+    """The O(p) part of the solution of (48) in u = γt, (1 + pu)θ'' + 2pθ' + θ = 0, about
+    ρ sin(u − ψ): θ1'' + θ1 = ρ(u sin(u − ψ) − 2 cos(u − ψ)), solved by the ansatz
+    (a1u² + a2u) cos(u − ψ) + (b1u² + b2u) sin(u − ψ) (no free oscillation added)."""
+    import sympy as sp
+
+    u, rho, psi = real_symbols("u", "rho", "psi")
+    a1, a2, b1, b2 = sp.symbols("a1 a2 b1 b2")
+    w = sp.Symbol("w", real=True)  # the phase u − ψ, d/du acting on u and w alike
+
+    def d(f: Any) -> Any:
+        return f.diff(u) + f.diff(w)
+
+    zero = rho * sp.sin(w)
+    guess = (a1 * u**2 + a2 * u) * sp.cos(w) + (b1 * u**2 + b2 * u) * sp.sin(w)
+    residual = sp.expand(d(d(guess)) + guess + u * d(d(zero)) + 2 * d(zero))
+    equations = [residual.coeff(f).coeff(u, n) for f in (sp.cos(w), sp.sin(w)) for n in (0, 1)]
+    solved = sp.solve(equations, [a1, a2, b1, b2], dict=True)[0]
+    phase = {w: u - psi}
+    return zero.subs(phase), guess.subs(solved).subs(phase)
+
+
+def first_order_solution(rho: Any, psi: Any, u: Any) -> Any:
+    """θ through O(p) of (48) in u = γt about ρ sin(u − ψ): ρ sin(u − ψ) + p θ1 with θ1
+    solved here (_first_order_correction), at the given ρ, ψ, u."""
+    import sympy as sp
+
+    zero, first = _first_order_correction()
+    names = dict(zip(("u", "rho", "psi"), real_symbols("u", "rho", "psi"), strict=True))
+    p = sp.Symbol("p", real=True)
+    at = {names["u"]: u, names["rho"]: rho, names["psi"]: psi}
+    return zero.subs(at, simultaneous=True) + p * first.subs(at, simultaneous=True)
+
+
+@cache
+def reference_slow_pair() -> Any:
+    """(50): θi the O(p) solution of (48) about ρi sin(γt − ψi) (γ = √(g/a))."""
+
+    t, gamma, p = real_symbols("t", "gamma", "p")
+    exact = {}
+    for i in ("1", "2"):
+        rho, psi = real_symbols(f"rho{i}", f"psi{i}")
+        exact[f"theta{i}"] = first_order_solution(rho, psi, gamma * t)
+    return make_reference(exact, "(48) to O(p)", scale=p, order=2)
+
+
+@cache
+def reference_slow_length() -> Any:
+    """l = a + bt with b = pγa (p = b/√(ga), γ = √(g/a)): a series in p."""
+
+    a, t, gamma, p = real_symbols("a", "t", "gamma", "p")
+    exact = {"l": a + p * gamma * a * t, "b": p * gamma * a}
+    return make_reference(exact, "l = a + bt, b = pγa", scale=p, order=2)
+
+
+@cache
+def reference_conical_phases() -> Any:
+    """(51): c = l²(θ1θ2' − θ2θ1') from (49) with θi of (50) at t = 0 (l = a), γ = √(g/a)."""
+    import sympy as sp
+
+    t, gamma, a, g = real_symbols("t", "gamma", "a", "g")
+    pair = reference_slow_pair().exact
+    one, two = pair["theta1"], pair["theta2"]
+    wronskian = (one * two.diff(t) - two * one.diff(t)).subs(t, 0)
+    root = sp.sqrt(g / a)
+    exact = {"c": sp.expand(a**2 * wronskian).subs(gamma, root), "gamma": root}
+    return make_reference(exact, "(49) at t = 0 with (50)")
+
+
+@cache
+def reference_rotated_phases() -> Any:
+    """(52): the O(p) solutions about ρ1 cos u and ρ2 sin u (ψ1 = −π/2, ψ2 = 0, u = γt,
+    the phases chosen at line 1110), and c from (49) at t = 0 as for (51)."""
+    import sympy as sp
+
+    u, p, rho1, rho2, a, g = real_symbols("u", "p", "rho1", "rho2", "a", "g")
+    one = first_order_solution(rho1, -sp.pi / 2, u)
+    two = first_order_solution(rho2, sp.Integer(0), u)
+    wronskian = (one * two.diff(u) - two * one.diff(u)).subs(u, 0)  # per unit of γ
+    exact = {"theta1": one, "theta2": two, "x": one, "y": two}
+    exact["c"] = sp.expand(a**2 * sp.sqrt(g / a) * wronskian)
+    return make_reference(exact, "(48) to O(p), ψ1 = −π/2, ψ2 = 0", scale=p, order=2)
+
+
+@cache
+def reference_rotated_planes() -> Any:
+    """Line 1108: the planes turned by ω; each θi = ρi sin(u − ψi) written Im(Zi e^{iu}),
+    Zi = ρi e^{−iψi}: Z1' = Z1 cos ω + Z2 sin ω, Z2' = −Z1 sin ω + Z2 cos ω."""
+    import sympy as sp
+
+    rho1, rho2, psi1, psi2, omega = real_symbols("rho1", "rho2", "psi1", "psi2", "omega")
+    z1 = rho1 * (sp.cos(psi1) - sp.I * sp.sin(psi1))
+    z2 = rho2 * (sp.cos(psi2) - sp.I * sp.sin(psi2))
+    turned = (z1 * sp.cos(omega) + z2 * sp.sin(omega), -z1 * sp.sin(omega) + z2 * sp.cos(omega))
+    exact = {}
+    for i, z in zip("12", turned, strict=True):
+        exact[f"rho{i}p"] = sp.Abs(z)
+        exact[f"psi{i}p"] = -sp.arg(z)
+    return make_reference(exact, "the axes turned by ω")
+
+
+@cache
+def reference_homothety() -> Any:
+    """Lines 1128-1134: the trace (x, y) = (θ1, θ2) of (52) (as read: the O(p) solutions of
+    (48) about ρ1 cos u, ρ2 sin u) lies on the ellipse of axes sρ1, sρ2 homothetic to the
+    one of axes ρ1, ρ2, s = √((x/ρ1)² + (y/ρ2)²); after half a turn (u -> u + π) the ratio
+    is s(u + π)/s(u). Through p."""
+    import sympy as sp
+
+    u, rho1, rho2 = real_symbols("u", "rho1", "rho2")
+    phases = reference_rotated_phases()
+    one, two = phases.exact["theta1"], phases.exact["theta2"]
+    size = sp.sqrt((one / rho1) ** 2 + (two / rho2) ** 2)
+    exact = {"x": one, "y": two, "axis1": rho1 * size, "axis2": rho2 * size}
+    exact["hom_ratio"] = size.subs(u, u + sp.pi) / size
+    return make_reference(
+        exact, "(48) to O(p), the ellipse through the trace", scale=phases.scale, order=phases.order
+    )
+
+
+# Each builder by the name the ledger's rows cite (``reference = "…"``).
+REFERENCES: dict[str, Callable[[], Any]] = {
+    "reference_primitive_angles": reference_primitive_angles,  # (47), lines 1064-1074
+    "reference_plane_angles": reference_plane_angles,  # (48), (49), lines 1076-1080
+    "reference_polar_angle": reference_polar_angle,  # lines 1082-1086, 1116-1118
+    "reference_small_theta": reference_small_theta,  # lines 1086-1090
+    "reference_slow_pair": reference_slow_pair,  # (50), lines 1098-1100
+    "reference_slow_length": reference_slow_length,  # line 1102
+    "reference_conical_phases": reference_conical_phases,  # (51), line 1104
+    "reference_rotated_planes": reference_rotated_planes,  # lines 1106-1108
+    "reference_rotated_phases": reference_rotated_phases,  # (52), lines 1112-1126
+    "reference_homothety": reference_homothety,  # lines 1128-1134
+}

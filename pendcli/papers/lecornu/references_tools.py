@@ -1,0 +1,44 @@
+"""Lecornu: what the reference builders of lines 420-1135 share (references_asymptotic,
+references_finite, references_perturbed, references_conical, references_conical_planes):
+the ledger's symbols as sympy symbols, a Reference, the chain rule along given rates, and a
+reference another module keeps, looked up in the paper's table.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+__all__ = ["cited", "derivative_along", "make_reference", "real_symbols"]
+
+
+def real_symbols(*names: str) -> list[Any]:
+    """The ledger's symbols ``names`` as real sympy symbols (as the printed forms parse)."""
+    import sympy as sp
+
+    return [sp.Symbol(n, real=True) for n in names]
+
+
+def make_reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:
+    """A :class:`~pendcli.core.printed_check.Reference` (its options passed through)."""
+    from pendcli.core.printed_check import Reference
+
+    return Reference(exact, what=what, **kw)
+
+
+def derivative_along(rates: dict[Any, Any]) -> Any:
+    """The derivative along a motion: f -> Σ ∂f/∂s · rate(s), over the symbols of ``rates``."""
+    import sympy as sp
+
+    def derivative(f: Any) -> Any:
+        return sp.Add(*(sp.diff(f, s) * v for s, v in rates.items()))
+
+    return derivative
+
+
+def cited(name: str) -> Any:
+    """The reference ``name`` of Lecornu's table (built when asked: a builder of another
+    module, found by the name the ledger cites rather than by its file)."""
+    from pendcli.papers.lecornu import PAPER
+
+    assert PAPER.references is not None
+    return PAPER.references()[name]()
