@@ -42,22 +42,29 @@ def test_every_paper_has_its_own_folder() -> None:
             assert (folder / f"{part}.py").is_file(), f"{key} has no {part}.py"
 
 
-def test_the_star_imported_reference_modules_name_nothing_twice() -> None:
-    """lecornu/equations.py star-imports its reference modules: a name two of them define
-    would silently take the later one's meaning (a19's and b19's reference_elongation_condition
-    did, and (12) was judged against (23)'s condition)."""
+def test_the_reference_tables_name_nothing_twice() -> None:
+    """Lecornu's references are merged from its section tables (``REFERENCES`` of each
+    references_*.py) and the modules lecornu/equations.py star-imports: a name two of them
+    define would silently take the later one's meaning (two builders named
+    reference_elongation_condition once did, and (12) was judged against (23)'s condition)."""
     import ast
     import importlib
 
-    source = (ROOT / "pendcli" / "papers" / "lecornu" / "equations.py").read_text()
+    folder = ROOT / "pendcli" / "papers" / "lecornu"
+    source = (folder / "equations.py").read_text()
     starred, explicit = [], []
     for node in ast.parse(source).body:
         if isinstance(node, ast.ImportFrom) and node.module:
             names = [a.name for a in node.names]
             (starred.append(node.module) if names == ["*"] else explicit.extend(names))
-    assert len(starred) >= 2
+    tables = {module: list(importlib.import_module(module).__all__) for module in starred}
+    for path in sorted(folder.glob("references_*.py")):
+        module = importlib.import_module(f"pendcli.papers.lecornu.{path.stem}")
+        if hasattr(module, "REFERENCES"):
+            tables[module.__name__] = list(module.REFERENCES)
+    assert len(tables) >= 2
     seen: dict[str, str] = {name: "equations.py" for name in explicit}
-    for module in starred:
-        for name in importlib.import_module(module).__all__:
-            assert name not in seen, f"{name} is exported by {module} and {seen[name]}"
+    for module, names in tables.items():
+        for name in names:
+            assert name not in seen, f"{name} is given by {module} and {seen[name]}"
             seen[name] = module

@@ -75,11 +75,30 @@ def _preload() -> None:
 
 
 def _references() -> Mapping[str, Callable[[], Any]]:
-    from pendcli.papers.lecornu import equations
+    from pendcli.papers.lecornu import (
+        equations,
+        references_general,
+        references_integral,
+        references_motion,
+        references_numeric,
+        references_slow,
+        references_small,
+    )
 
-    # the names the ledger cites, taken from the module until it keeps an explicit table
+    # §§ III-IV (and the § II builders of references_late): the names the ledger cites, taken
+    # from the module until their sections keep explicit tables
     prefixes = ("reference_", "numbers_")
-    return {n: getattr(equations, n) for n in dir(equations) if n.startswith(prefixes)}
+    rest = {n: getattr(equations, n) for n in dir(equations) if n.startswith(prefixes)}
+    return {
+        **rest,
+        # §§ I-II, lines 1-698, by section
+        **references_motion.REFERENCES,
+        **references_small.REFERENCES,
+        **references_numeric.REFERENCES,
+        **references_general.REFERENCES,
+        **references_integral.REFERENCES,
+        **references_slow.REFERENCES,
+    }
 
 
 def _author_procedures() -> Mapping[str, Procedure]:

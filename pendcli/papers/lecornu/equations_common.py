@@ -138,25 +138,3 @@ def linear_reduced_ode(
         return np.concatenate((om, -(2.0 * arr * om + th) / (1.0 + arr * t)))
 
     return DEFAULT_REFERENCE.solve(rhs, t_end, [*theta0, *omega0])
-
-
-def bessel_solution(delta: float) -> tuple[Callable[[float], float], Callable[[float], float]]:
-    """u(x) = √x [cos δ J1(2√x) + sin δ Y1(2√x)] and u'(x) = cos δ J0 + sin δ Y0 (scipy)."""
-    from scipy.special import j0, j1, y0, y1
-
-    c, s = math.cos(delta), math.sin(delta)
-
-    def u(x: float) -> float:
-        z = 2 * math.sqrt(x)
-        return float(math.sqrt(x) * (c * j1(z) + s * y1(z)))
-
-    def du(x: float) -> float:
-        z = 2 * math.sqrt(x)
-        return float(c * j0(z) + s * y0(z))
-
-    return u, du
-
-
-def phi_solution() -> tuple[Callable[[float], float], Callable[[float], float]]:
-    """Lecornu's φ = √x J1(2√x) (10) and φ' = J0(2√x) (11)."""
-    return bessel_solution(0.0)
