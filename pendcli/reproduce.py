@@ -549,7 +549,7 @@ def _lend_formula_rows(
 
 
 def _verdict_names() -> tuple[str, ...]:
-    from pendcli.core.ledger_check import STATUSES
+    from pendcli.core.vocabulary import STATUSES
 
     names = [*CLAIM_VERDICTS, *FORMULA_VERDICTS, *STATUSES]
     return tuple(dict.fromkeys(str(n) for n in names))

@@ -138,7 +138,7 @@ REPRESENTATIVES = {
     "tests/test_printed_lecornu_early.py::test_the_computed_status_is_the_recorded_one": 12,
     "tests/test_printed_lecornu_early.py::test_a_changed_coefficient_is_refused": 3,
     "tests/test_printed_lecornu_early.py::test_a_misprint_printed_as_its_reading_is_refused": 2,
-    "tests/test_printed_lecornu_early.py::test_a19_*": 2,
+    "tests/test_printed_lecornu_early.py::test_to_line_420_*": 2,
     "tests/test_printed_lecornu_late.py::test_the_status_computed_from_the_printed_form_*": 6,
     "tests/test_printed_lecornu_late.py::test_a_changed_coefficient_*": 4,
     "tests/test_printed_lecornu_late.py::test_a_misprint_whose_printed_form_is_its_reading_*": 3,

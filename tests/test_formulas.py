@@ -45,6 +45,9 @@ EXPECTED = {
     "lecornu.table26.first_negative_elongation": "holds",
     "lecornu.table26.third_vertical": "holds",
     "lecornu.oscillation_time_increase": "holds",
+    "lecornu.quarter_time": "holds",
+    "lecornu.amplitude_factor": "holds",
+    "lecornu.eq25": "holds",
     "lecornu.eq26": "holds",
     "lecornu.eq28": "holds",
     "lecornu.eq29": "fails",  # −43γ²t² should be +21γ²t²

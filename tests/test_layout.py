@@ -42,22 +42,19 @@ def test_every_paper_has_its_own_folder() -> None:
             assert (folder / f"{part}.py").is_file(), f"{key} has no {part}.py"
 
 
-def test_the_star_imported_reference_modules_name_nothing_twice() -> None:
-    """lecornu/equations.py star-imports its reference modules: a name two of them define
-    would silently take the later one's meaning (a19's and b19's reference_elongation_condition
-    did, and (12) was judged against (23)'s condition)."""
-    import ast
-    import importlib
+def test_the_reference_tables_name_nothing_twice() -> None:
+    """Lecornu's references are gathered from its section tables (``REFERENCES`` of each
+    references_*.py): a name two of them define would silently take the later one's meaning
+    (two builders named reference_elongation_condition once did, and (12) was judged against
+    (23)'s condition). The gathered table is every section's, whole."""
+    from pendcli.papers.lecornu.references import REFERENCES, SECTIONS
 
-    source = (ROOT / "pendcli" / "papers" / "lecornu" / "equations.py").read_text()
-    starred, explicit = [], []
-    for node in ast.parse(source).body:
-        if isinstance(node, ast.ImportFrom) and node.module:
-            names = [a.name for a in node.names]
-            (starred.append(node.module) if names == ["*"] else explicit.extend(names))
-    assert len(starred) >= 2
-    seen: dict[str, str] = {name: "equations.py" for name in explicit}
-    for module in starred:
-        for name in importlib.import_module(module).__all__:
-            assert name not in seen, f"{name} is exported by {module} and {seen[name]}"
-            seen[name] = module
+    seen: dict[str, str] = {}
+    for module in SECTIONS:
+        for name in module.REFERENCES:
+            assert name not in seen, f"{name} is given by {module.__name__} and {seen[name]}"
+            seen[name] = module.__name__
+    assert list(REFERENCES) == list(seen)
+    folder = ROOT / "pendcli" / "papers" / "lecornu"
+    with_tables = {p.stem for p in folder.glob("references_*.py") if "REFERENCES" in p.read_text()}
+    assert with_tables == {m.__name__.rsplit(".", 1)[1] for m in SECTIONS}

@@ -67,27 +67,21 @@ def test_no_module_assigns_the_global_precision() -> None:
     assert offenders == {}, f"use mpmath.workdps/workprec instead: {offenders}"
 
 
-CHECKS_THAT_SET_THE_PRECISION = [
-    "eq_10",
-    "eq_11",
-    "result_eq13_is_j2",
-    "eq_14",
-    "result_amplitude_j0",
-    "result_limit_u_at_zero",
-    "eq_18_integral",
-    "result_c_equals_4_over_pi",
-    "eq_19_integral",
-    "result_small_x_asymptotics",
-    "result_amplitude_factor",
+# Lecornu's references that compute with mpmath at 30 or 40 digits (the checks that once set
+# mp.dps and left it there are gone; these took their computations over)
+MPMATH_REFERENCES = [
+    "numbers_j2_roots",
+    "numbers_j1_roots",
+    "numbers_table_j0",
+    "reference_elongation_root",
+    "reference_at_beta",
 ]
 
 
-@pytest.mark.parametrize("name", CHECKS_THAT_SET_THE_PRECISION)
-def test_a_lecornu_check_leaves_the_precision_as_it_found_it(name: str) -> None:
-    """The checks that used to set mp.dps = 20..30 and leave it there for whatever came next."""
-    from pendcli.papers.lecornu import equations
+@pytest.mark.parametrize("name", MPMATH_REFERENCES)
+def test_a_lecornu_reference_leaves_the_precision_as_it_found_it(name: str) -> None:
+    from pendcli.papers.registry import paper
 
     before = (mpmath.mp.dps, mpmath.mp.prec)
-    check = getattr(equations, name)()
-    assert check.method  # it ran and said how it checked
+    assert paper("lecornu").references()[name]() is not None
     assert (mpmath.mp.dps, mpmath.mp.prec) == before

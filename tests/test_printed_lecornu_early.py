@@ -1,24 +1,48 @@
-"""Lecornu, lines 1-698 (issue 19): each status computed from the printed form against its
-reference (pendcli/papers/lecornu/references_early.py) is the recorded one, and an edit of a
-printed form (one coefficient, or a misprint set to its reading) is refused, naming the row."""
+"""Lecornu, lines 1-698: each status computed from the printed form against its reference
+(the section tables of pendcli/papers/lecornu/references_*.py) is the recorded one, and an
+edit of a printed form (one coefficient, or a misprint set to its reading) is refused, naming
+the row; the references and the formula checks that measure § II's orders agree with an
+independent computation (mpmath, scipy, the exact Bessel solution of (9))."""
 
 from __future__ import annotations
 
+import itertools
+import math
+from functools import cache
 from pathlib import Path
+from typing import Any
 
 import pytest
 from ledgers import committed_ledger, committed_row, first_line, row_ids
 from mutations import altered_ledger
 
-from pendcli.core.ledger import LedgerRow, verify_printed
+from pendcli.core.claims import FormulaRow
+from pendcli.core.ledger import Ledger, LedgerRow, verify_printed
 from pendcli.core.printed import Formula, parse_formula
 from pendcli.core.printed_check import computed_status, judged
-from pendcli.papers.lecornu import equations as CHECKS
-from pendcli.papers.lecornu import references_early
+from pendcli.papers.lecornu import (
+    references_general,
+    references_integral,
+    references_motion,
+    references_numeric,
+    references_slow,
+    references_small,
+)
+from pendcli.papers.lecornu.formulas_slow import slow_rows
+from pendcli.papers.registry import paper
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
 LAST_LINE = 698
+REFERENCES = paper("lecornu").references()
+SECTIONS = (
+    references_motion,
+    references_small,
+    references_numeric,
+    references_general,
+    references_integral,
+    references_slow,
+)
 
 
 def _early_rows() -> list[LedgerRow]:
@@ -33,16 +57,20 @@ def _referenced() -> list[str]:
 def test_the_computed_status_is_the_recorded_one(row_id: str) -> None:
     row = committed_row(row_id)
     symbols = committed_ledger("lecornu").symbols_for(row)
-    computed, problem = verify_printed(row, symbols, CHECKS)
+    computed, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}:")
 
 
-def test_every_reference_is_exported_by_the_equations_module() -> None:
-    for name in references_early.__all__:
-        assert getattr(CHECKS, name) is getattr(references_early, name)
-    used = {r.reference for r in _early_rows() if r.reference}
-    assert used <= set(references_early.__all__) | set(dir(CHECKS))
+def test_each_section_table_gives_its_builders_to_the_paper_once() -> None:
+    names = [name for module in SECTIONS for name in module.REFERENCES]
+    assert len(names) == len(set(names))  # no builder in two sections
+    for module in SECTIONS:
+        for name, builder in module.REFERENCES.items():
+            assert REFERENCES[name] is builder is getattr(module, name), name
+    # every builder of a section is cited by a row of lines 1-698
+    cited = {r.reference for r in _early_rows() if r.reference}
+    assert set(names) <= cited
 
 
 def _altered(old: str, new: str) -> tuple[dict[str, LedgerRow], dict[str, str]]:
@@ -92,7 +120,7 @@ def _altered(old: str, new: str) -> tuple[dict[str, LedgerRow], dict[str, str]]:
 )
 def test_a_changed_coefficient_is_refused(row_id: str, old: str, new: str) -> None:
     rows, symbols = _altered(old, new)
-    computed, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    computed, problem = verify_printed(rows[row_id], symbols, REFERENCES)
     assert problem is not None and problem.startswith(f"recorded {rows[row_id].status}, but")
     assert computed is not None and not computed.startswith(rows[row_id].status)
 
@@ -118,7 +146,7 @@ def test_a_changed_coefficient_is_refused(row_id: str, old: str, new: str) -> No
 )
 def test_a_misprint_printed_as_its_reading_is_refused(row_id: str, old: str, new: str) -> None:
     rows, symbols = _altered(old, new)
-    _, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    _, problem = verify_printed(rows[row_id], symbols, REFERENCES)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
@@ -128,20 +156,152 @@ def test_an_incomplete_correction_of_the_general_rule_is_refused() -> None:
     old = "Integral(varphi**(-2), (x, x0, x1)) + 1/(varphi1*varphip1) - 1/(varphik*varphipk)"
     new = "Integral(varphi**(-2), (x, x0, x1)) - 1/(varphik*varphipk)"
     rows, symbols = _altered(old, new)
-    _, problem = verify_printed(rows["lecornu.result.general_constants"], symbols, CHECKS)
+    _, problem = verify_printed(rows["lecornu.result.general_constants"], symbols, REFERENCES)
     assert problem is not None and "and so does its fails" in problem
 
 
-def test_the_new_numeric_checks_can_fail() -> None:
-    """check_curvature judges the printed claim false (and computes the correction);
-    check_half_period_root finds the observed order 3 that line 664 implies."""
-    curvature = references_early.check_curvature()
-    assert not curvature.holds and curvature.corrected
-    root = references_early.check_half_period_root()
-    assert root.holds and root.observed_order is not None and root.observed_order > 2.7
+def _number(expr: Any, **values: Any) -> Any:
+    """A reference's sympy expression at ``values`` (by symbol name), as an mpmath number."""
+    import mpmath
+
+    names = {s.name: s for s in expr.free_symbols}
+    return mpmath.mpf(str(expr.subs({names[n]: v for n, v in values.items()}).evalf(40)))
 
 
-# --- a19: the rows of lines 1-420 whose status is now computed (issue 19) -------------------
+def test_the_curvature_reference_is_the_paths_and_refutes_the_claim() -> None:
+    """Lines 140-142: the reference's κ = u'' of the exact path (x = z/c) agrees with the
+    curvature u''/(1 + u'²)^(3/2) of that path at small slopes taken by mpmath (Bessel
+    functions and numerical derivatives, c = 1); κ/u changes along the path while κz/u stays
+    −1/c, so « proportionnellement à l'écart horizontal » fails, as the engine finds."""
+    import mpmath
+
+    exact = references_small.reference_curvature().exact
+    scale = mpmath.mpf("1e-6")  # small slopes
+
+    def u(z: Any) -> Any:
+        root = mpmath.sqrt(z)
+        return scale * root * (mpmath.besselj(1, 2 * root) + mpmath.bessely(1, 2 * root))
+
+    with mpmath.workdps(30):
+        per_u = []
+        for z in (mpmath.mpf("0.9"), mpmath.mpf("2.3"), mpmath.mpf("4.1")):
+            kappa = mpmath.diff(u, z, 2) / (1 + mpmath.diff(u, z) ** 2) ** 1.5 / scale
+            assert abs(kappa - _number(exact["kappa"], zl=z, cl=1)) < 1e-9 * abs(kappa)
+            per_u.append(kappa / (u(z) / scale))
+            assert abs(kappa * z / (u(z) / scale) + 1) < 1e-9
+    assert max(per_u) - min(per_u) > 0.5
+    row = committed_row("lecornu.result.curvature_proportional")
+    computed, problem = verify_printed(
+        row, committed_ledger("lecornu").symbols_for(row), REFERENCES
+    )
+    assert problem is None and computed is not None and computed.startswith("fails:")
+
+
+def _first_zero_of_27(p: Any) -> Any:
+    """γt at the first zero after t = 0 of (27)'s solution with u(0) = 0, from the exact
+    solution of (9): u ∝ √x [J₁(z0)Y₁(z) − Y₁(z0)J₁(z)], z = 2√x = (2/p)√(1 + pγt) (mpmath)."""
+    import mpmath
+
+    z0 = 2 / p
+    j0, y0 = mpmath.besselj(1, z0), mpmath.bessely(1, z0)
+    z1 = mpmath.findroot(lambda z: j0 * mpmath.bessely(1, z) - y0 * mpmath.besselj(1, z), z0 + 3)
+    return (p**2 * z1**2 / 4 - 1) / p
+
+
+def test_the_root_of_27_falls_on_the_references_epsilon_to_the_third_order() -> None:
+    """Lines 642-664: the reference's ε (the root of (27)'s solution to p², by undetermined
+    coefficients) against the first zero of the exact Bessel solution: their difference falls
+    as p⁴ (the p³ term vanishes), as lecornu.period_second_order measures with solve_ivp."""
+    import mpmath
+
+    epsilon = references_slow.reference_root_epsilon().exact["epsilon"]
+    ps = [mpmath.mpf(v) for v in ("0.04", "0.02", "0.01", "0.005")]
+    with mpmath.workdps(30):
+        gaps = [_first_zero_of_27(p) - mpmath.pi - _number(epsilon, p=p) for p in ps]
+        orders = [mpmath.log(a / b) / mpmath.log(2) for a, b in itertools.pairwise(gaps)]
+    assert all(3.7 < o < 4.3 for o in orders), orders
+
+
+@cache
+def _committed_formula_rows() -> dict[str, FormulaRow]:
+    return _formula_rows()
+
+
+def _formula_rows(ledger: Ledger | None = None) -> dict[str, FormulaRow]:
+    return {r.id: r for r in slow_rows(ledger=ledger)}
+
+
+def test_the_quarter_time_study_is_the_rows_reference_solved_in_closed_form() -> None:
+    """lecornu.quarter_time finds l'' by findroot of (24); the row's reference writes l'' in
+    closed form (the larger root of a quadratic in √(gl'')): both give the same residuals."""
+    import mpmath
+
+    row = _committed_formula_rows()["lecornu.quarter_time"]
+    lpp = references_slow.reference_quarter_time().exact["lpp"]
+    ((left, right),) = _printed("lecornu.result.quarter_time")
+    with mpmath.workdps(30):
+        for q, residual in row.residuals:
+            at = {"b": mpmath.mpf(q), "g": 1, "l": 1}
+            exact = _number(lpp, eps_=1, **at)
+            printed = _number(left - right, lpp=exact, **at)
+            assert abs(abs(printed) - residual) < 1e-12 * residual, q
+    assert row.verdict == "holds" and row.observed_order is not None
+    assert 2.9 < row.observed_order < 3.1  # the b² term vanishes
+
+
+def test_the_amplitude_study_agrees_with_scipys_cylinder_functions() -> None:
+    """lecornu.amplitude_factor (mpmath at 30 digits) against the same elongations and
+    amplitudes in double precision (scipy's jv, yv and brentq): the residuals agree."""
+    from scipy.optimize import brentq
+    from scipy.special import jv, yv
+
+    delta = 0.3
+    row = _committed_formula_rows()["lecornu.amplitude_factor"]
+    ((_, factor), *_) = _printed("lecornu.result.amplitude_factor")
+    for q, residual in row.residuals:
+
+        def c(nu: int, z: float) -> float:
+            return math.cos(delta) * jv(nu, z) + math.sin(delta) * yv(nu, z)
+
+        z = brentq(lambda w: c(2, w), 2 / q - 0.5, 2 / q + 0.5, xtol=1e-14)
+        amplitude = abs(c(1, z)) * math.sqrt(math.pi * z / 2)
+        printed = float(_number(factor, R=1, g=1, l=1, b=2 / z))
+        assert abs(abs(amplitude - printed) - residual) < 1e-11, q
+    assert row.verdict == "holds" and row.observed_order is not None
+    assert 1.9 < row.observed_order < 2.1
+
+
+@pytest.mark.parametrize(
+    ("formula_id", "old", "new"),
+    [
+        # line 555: −3b/(4g) -> −5b/(4g): the residual is then of order b
+        ("lecornu.quarter_time", "- 3*b/(4*g) + pi**2*b/(16*g)'", "- 5*b/(4*g) + pi**2*b/(16*g)'"),
+        # line 573: a term of the first order in b/√(gl) added to the factor
+        ("lecornu.amplitude_factor", "theta = R*cos(3*b/", "theta = R*(1 - b/sqrt(g*l))*cos(3*b/"),
+        # (25): ¾ pγt -> ½ pγt
+        ("lecornu.eq25", "'theta = rho*(1 - 3/4*p*r*t)", "'theta = rho*(1 - 1/2*p*r*t)"),
+    ],
+)
+def test_a_measured_study_reads_the_printed_form_and_fails_an_edit(
+    formula_id: str, old: str, new: str
+) -> None:
+    row_id = {"lecornu.quarter_time": "lecornu.result.quarter_time",
+              "lecornu.amplitude_factor": "lecornu.result.amplitude_factor",
+              "lecornu.eq25": "lecornu.eq.25"}[formula_id]  # fmt: skip
+    rows = _formula_rows(altered_ledger("lecornu", old, new, within=row_id))
+    assert rows[formula_id].verdict == "fails", rows[formula_id].note
+    assert _committed_formula_rows()[formula_id].verdict == "holds"
+
+
+def _printed(row_id: str) -> tuple[tuple[Any, Any], ...]:
+    row = committed_row(row_id)
+    assert row.printed is not None
+    return parse_formula(
+        row.id, row.printed, committed_ledger("lecornu").symbols_for(row)
+    ).equations
+
+
+# --- the rows of lines 1-420 whose status is computed from their printed form ---------------
 
 
 @pytest.mark.parametrize(
@@ -193,9 +353,9 @@ def test_the_new_numeric_checks_can_fail() -> None:
         ),
     ],
 )
-def test_a19_a_changed_coefficient_is_refused(row_id: str, old: str, new: str) -> None:
+def test_to_line_420_a_changed_coefficient_is_refused(row_id: str, old: str, new: str) -> None:
     rows, symbols = _altered(old, new)
-    computed, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    computed, problem = verify_printed(rows[row_id], symbols, REFERENCES)
     assert problem is not None and problem.startswith(f"recorded {rows[row_id].status}, but")
     assert computed is not None and not computed.startswith(rows[row_id].status)
 
@@ -217,9 +377,11 @@ def test_a19_a_changed_coefficient_is_refused(row_id: str, old: str, new: str) -
         ),
     ],
 )
-def test_a19_a_misprint_printed_as_its_reading_is_refused(row_id: str, old: str, new: str) -> None:
+def test_to_line_420_a_misprint_printed_as_its_reading_is_refused(
+    row_id: str, old: str, new: str
+) -> None:
     rows, symbols = _altered(old, new)
-    _, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    _, problem = verify_printed(rows[row_id], symbols, REFERENCES)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
@@ -237,9 +399,9 @@ def test_a19_a_misprint_printed_as_its_reading_is_refused(row_id: str, old: str,
         ("lecornu.result.eq13_is_j2", "besselj(2, 2*sqrt(x))/x'", "besselj(2, 2*sqrt(x))/x**2'"),
     ],
 )
-def test_a19_a_wrong_correction_is_refused(row_id: str, old: str, new: str) -> None:
+def test_to_line_420_a_wrong_correction_is_refused(row_id: str, old: str, new: str) -> None:
     rows, symbols = _altered(old, new)
-    _, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    _, problem = verify_printed(rows[row_id], symbols, REFERENCES)
     assert problem is not None and "and so does its fails" in problem
 
 
@@ -258,11 +420,11 @@ def test_a19_a_wrong_correction_is_refused(row_id: str, old: str, new: str) -> N
         ),
     ],
 )
-def test_a19_a_fails_row_printed_as_its_correction_is_refused(
+def test_to_line_420_a_fails_row_printed_as_its_correction_is_refused(
     row_id: str, old: str, new: str
 ) -> None:
     rows, symbols = _altered(old, new)
-    _, problem = verify_printed(rows[row_id], symbols, CHECKS)
+    _, problem = verify_printed(rows[row_id], symbols, REFERENCES)
     assert problem is not None and problem.startswith(
         "recorded fails, but the printed form gives holds"
     )
@@ -278,7 +440,7 @@ def test_the_cross_reference_of_line_276_is_judged_against_both_equations() -> N
     citing (20) for the printed form too (no reading reference) makes the row hold."""
     from dataclasses import replace
 
-    reference = references_early.reference_monotone_as_cited()
+    reference = references_general.reference_monotone_as_cited()
     claim = _formula("B*Derivative(u/varphi, x) > 0")
     ok, why = judged(claim, reference)
     assert not ok and "undetermined" in why and "du_dx" in why
@@ -321,7 +483,7 @@ def test_a_condition_is_judged_as_the_models_equation() -> None:
     the same printed equation as an identity (no condition) does not."""
     from dataclasses import replace
 
-    reference = references_early.reference_eq13()
+    reference = references_small.reference_eq13()
     line_182 = _formula(
         "1 - 2*x/(1*2)**2 + 3*x**2/(1*2*3)**2 - ... = 1 - x/1**2 + x**2/(1*2)**2 - ..."
     )

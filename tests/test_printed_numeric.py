@@ -1,4 +1,4 @@
-"""The numeric mode of the printed-form engine (pendcli/core/printed_numeric.py, issue 19):
+"""The numeric mode of the printed-form engine (pendcli/core/printed_numeric.py):
 printed numbers judged by their printed digits against computed values, on hand-checked cases
 (rounding against truncation, one unit off in the last place, a list with one wrong entry, a
 correction that is or is not the computed one), the ledger rows whose printed form is numbers
@@ -21,10 +21,11 @@ from pendcli.core.printed import parse_formula
 from pendcli.core.printed_check import Reference
 from pendcli.core.printed_numeric import Numbers, numeric_status, printed_numbers
 from pendcli.core.tables import clear_table_cache, load_paper_table
-from pendcli.papers.lecornu import equations as LECORNU
+from pendcli.papers.registry import paper as paper_named
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
+LECORNU = paper_named("lecornu").references()
 SYMBOLS = {"l": "L", "b": "L T^-1", "g": "L T^-2", "xi": "1", "z": "1", "metre": "L", "x": "1"}
 
 # the rows whose printed form is numbers, and the reference each gives
@@ -182,7 +183,7 @@ def test_each_numeric_row_has_its_reference_and_its_status_computed(
 @pytest.mark.parametrize("row_id", NUMERIC_ROWS)
 def test_each_printed_number_is_the_published_claims_on_the_rows_lines(row_id: str) -> None:
     row = _rows()[row_id]
-    numbers = getattr(LECORNU, NUMERIC_ROWS[row_id])()
+    numbers = LECORNU[NUMERIC_ROWS[row_id]]()
     entries = printed_numbers(row.printed or "")
     claims = load_paper_table("lecornu", TABLES)
     assert len(numbers.published) == len(entries) == len(numbers.values)
@@ -298,12 +299,9 @@ TISSERAND_LEDGER = "equations/tisserand.toml"
 
 
 def _verified_in(paper: str, row_id: str, root: Path = TABLES) -> tuple[str | None, str | None]:
-    from pendcli.core.ledger import check_module
-    from pendcli.papers.registry import paper as paper_named
-
     ledger = load_ledger(paper, root)
     row = next(r for r in ledger.rows if r.id == row_id)
-    return verify_printed(row, ledger.symbols_for(row), check_module(paper_named(paper)))
+    return verify_printed(row, ledger.symbols_for(row), paper_named(paper).references())
 
 
 @pytest.mark.parametrize(

@@ -75,27 +75,9 @@ def _preload() -> None:
 
 
 def _references() -> Mapping[str, Callable[[], Any]]:
-    from pendcli.papers.lecornu import (
-        equations,
-        references_asymptotic,
-        references_conical,
-        references_conical_planes,
-        references_finite,
-        references_perturbed,
-    )
+    from pendcli.papers.lecornu.references import REFERENCES
 
-    # the names the ledger cites, taken from the module until it keeps an explicit table
-    prefixes = ("reference_", "numbers_")
-    found = {n: getattr(equations, n) for n in dir(equations) if n.startswith(prefixes)}
-    # lines 420-676 and 699-1135: each module's explicit table
-    return {
-        **found,
-        **references_asymptotic.REFERENCES,
-        **references_finite.REFERENCES,
-        **references_perturbed.REFERENCES,
-        **references_conical.REFERENCES,
-        **references_conical_planes.REFERENCES,
-    }
+    return REFERENCES
 
 
 def _author_procedures() -> Mapping[str, Procedure]:

@@ -15,6 +15,8 @@ Checked here (each against solve_ivp on (3), (30), (32) or (43) linearised, see 
 * the ratio of successive elongations 1 + (3/4)π b/√(gl);
 * (52) and the homothety ratio 1 − 3pπ/4 of the conical pendulum after half a turn;
 * the compound pendulum: b replaced by b(1 − R²/a²) (section I);
+* in :mod:`pendcli.papers.lecornu.formulas_slow`: the time from a vertical to an elongation
+  and the amplitude factor (lines 555, 573, against (24) solved and J, Y exactly), and (25);
 * chapter III, in :mod:`pendcli.papers.lecornu.formulas_chapter3`: (31) fast shortening;
   (38) finite oscillations; the terms in p of (41); (42) and (42').
 """
@@ -43,6 +45,7 @@ from pendcli.core.formula_engine import (
     make_row,
     plot_studies,
 )
+from pendcli.papers.lecornu.formulas_slow import SLOW_PANELS, slow_rows
 
 __all__ = [
     "CAPTIONS",
@@ -538,6 +541,7 @@ def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     rows = [
         *table_26_rows(ref),
         *series_rows(ref),
+        *slow_rows(ref),
         *amplitude_rows(ref),
         *compound_rows(ref),
         *fast_shortening_rows(ref),
@@ -580,7 +584,7 @@ _PANELS: tuple[tuple[str, str, str, str], ...] = (
     ("trajectory_after_52", "the trace's equation", _P, "dimensionless"),
     ("homothety_axes", "axes of the trace's ellipse", _P, "÷ ρi"),
 )
-PANELS: dict[str, PanelLabels] = {
+PANELS: dict[str, PanelLabels] = SLOW_PANELS | {
     f"{PAPER}.{id_}": PanelLabels(name, parameter, unit) for id_, name, parameter, unit in _PANELS
 }
 

@@ -2,7 +2,7 @@
 (lines 420-460), the asymptotic solution (20)-(24) and its passages and elongations (lines
 466-563) and the slowly varying pendulum's hierarchy and mean pendulum (lines 624-676) are
 judged against (core/printed_check); the other references of lines 1-698 are kept by
-references_early, references_numeric and references_small.
+the other section modules (see references.py).
 
 Each ``reference_*`` maps ledger symbols (tables/equations/lecornu.toml [symbols]) to exact
 expressions: (20) and its derivatives, the phase of (22) at a passage, an identity between

@@ -1,5 +1,6 @@
-"""Lecornu (1894), lines 206-256: the numbers of the 0,35 m/s example, computed for the numeric
-mode of the printed-form engine (:mod:`pendcli.core.printed_numeric`, issue 19).
+"""Lecornu (1894), § II, lines 206-256: the numbers of the 0,35 m/s example (after (14) to
+after (16)), computed for the numeric mode of the printed-form engine
+(:mod:`pendcli.core.printed_numeric`).
 
 Each ``numbers_*`` returns a :class:`~pendcli.core.printed_numeric.Numbers`: the value of
 every printed number of its ledger row, in printed order, by the author's own step (mpmath at
@@ -12,7 +13,7 @@ number, the claim that prints the same number, so that the ledger and the table 
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from itertools import pairwise
 from typing import Any
 
@@ -171,3 +172,18 @@ def numbers_vertical_lengths() -> Any:
         lengths = [_published(COEFFICIENT) * _published(c) ** 2 for c in J1]
     ids = [f"lecornu.j1_lengths.{k}" for k in range(1, 7)]
     return _numbers(lengths, "0,00313 z² (16) at the printed zeros of J₁", ids)
+
+
+# the builders of this section, by the name the ledger cites
+REFERENCES: dict[str, Callable[[], Any]] = {
+    "numbers_j2_roots": numbers_j2_roots,
+    "numbers_table_speeds": numbers_table_speeds,
+    "numbers_eq16": numbers_eq16,
+    "numbers_table_lengths": numbers_table_lengths,
+    "numbers_table_times": numbers_table_times,
+    "numbers_table_intervals": numbers_table_intervals,
+    "numbers_table_j0": numbers_table_j0,
+    "numbers_table_amplitudes": numbers_table_amplitudes,
+    "numbers_j1_roots": numbers_j1_roots,
+    "numbers_vertical_lengths": numbers_vertical_lengths,
+}

@@ -1,117 +1,298 @@
-"""Lecornu (1894), § II, lines 565-610: references for the printed forms of rows checked as
-identities by the printed-form engine (issue 19, helper n19).
+"""Lecornu (1894), § II, Étude des oscillations infiniment petites, lines 118-256: the path's
+graphical equation, φ = √x J₁(2√x) and its series (10), (11), the elongations (12)-(14) and
+the roots of J₁ and J₂ (the printed numbers of lines 206-256 are in references_numeric).
 
-* lines 603-610, the table after (26): the zeros of θ (vertical positions) and of dθ/dt
-  (elongations) of (26), θ = ρ(1 − ¾prt) sin rt − (ρpr²t²/4) cos rt, to the first order in
-  p = b/√(ga) (r = √(g/a)), by a Newton step from the roots of sin rt and cos rt (sympy);
-* line 565, the comparison with the largest length: the quarter period of the ordinary
-  pendulum of the largest length of the oscillation, l = a + bt at its end (the second
-  vertical position), minus the durations of its two halves from that table, to first order
-  in b.
-
-sympy is imported inside the functions (start-up stays fast).
+Each builder maps ledger symbols to exact expressions: the exact solutions of (9), their
+roots found numerically (mpmath, 40 digits); never a second copy of the formula the row prints.
 """
 
 from __future__ import annotations
 
-from functools import cache
+import itertools
+from collections.abc import Callable
 from typing import Any
 
-__all__ = [
-    "reference_amplitude_factor",
-    "reference_c_equals_4_over_pi",
-    "reference_largest_length",
-    "reference_table_26",
-]
+from pendcli.papers.lecornu.references_base import (
+    cylinder,
+    float40,
+    mpmath_str,
+    phi_of,
+    reference,
+    roots_of,
+    scan_roots,
+    symbols,
+)
 
 
-def _symbols(*names: str) -> Any:
+def _trajectory(zl: Any, cl: Any) -> Any:
+    """The bob's path u(z) (lines 124, 134): a solution of (9) with x = z/c, here
+    √x J₁(2√x) + √x Y₁(2√x) (both kinds, so neither special case)."""
+    x = zl / cl
+    return phi_of(x, "j") + phi_of(x, "y")
+
+
+def reference_graphical() -> Any:
+    """Lines 124-130: x = z/c in (9), u(z) exact; h the ordinate at z = 0 of the tangent at (z,
+    u)."""
+
+    zl, cl, at = symbols("zl", "cl", "Z_")
+    u = _trajectory(zl, cl)
+    slope = u.diff(zl)
+    tangent = u + slope * (at - zl)
+    h = tangent.subs(at, 0)
+    exact = {"u": u, "du_dzl": slope, "d2u_dzl2": u.diff(zl, 2), "h": h, "dh_dzl": h.diff(zl)}
+    return reference(exact, "the exact path u(z) of (9), x = z/c, and its tangent")
+
+
+def reference_inflection() -> Any:
+    """Line 138: the exact path u(z) of (9) (x = z/c, _trajectory) at each of its first four
+    zeros (the passages through the vertical, found by a scan, mpmath): its u''."""
+    zl, cl = symbols("zl", "cl")
+    u = _trajectory(zl, cl)
+    zeros = roots_of("path", "zero", 0.2, 60)[:4]
+    cases = tuple({"zl": cl * float40(x)} for x in zeros)
+    exact = {"u": u, "du_dzl": u.diff(zl), "d2u_dzl2": u.diff(zl, 2)}
+    return reference(exact, "the path u(z) of (9) at its zeros", each_case=cases)
+
+
+def reference_curvature() -> Any:
+    """Lines 140-142: the curvature of the exact path at small slopes (« au même degré
+    d'approximation », line 140): κ = d²u/dz², u(z) of (9) with x = z/c; θ = u/z (l = z, line
+    134)."""
+    zl, cl = symbols("zl", "cl")
+    u = _trajectory(zl, cl)
+    kappa = u.diff(zl, 2)
+    at_c = (kappa / u).subs(zl, cl)  # the constant K of κ = K u, if there were one
+    exact = {"u": u, "kappa": kappa, "theta": u / zl, "K": at_c}
+    return reference(exact, "the exact path's u''")
+
+
+def _between(exact: dict[str, Any], low: Any, high: Any) -> Any:
+    """A transform: an identity with an indefinite integral ∫f dz (true up to a constant)
+    judged between two points, r(high) − r(low), each ∫f dz read as ∫_low^high f dz; the
+    reference's ``exact`` is substituted first (an integral's coefficient must not depend on
+    z, or a term F(low) is left and the residual is not a number)."""
     import sympy as sp
 
-    return [sp.Symbol(n, real=True) for n in names]
+    def transform(expr: Any) -> Any:
+        names = {s.name: s for s in expr.free_symbols}
+        expr = expr.subs({names[n]: v for n, v in exact.items() if n in names}, simultaneous=True)
+        indefinite = [i for i in expr.atoms(sp.Integral) if len(i.limits[0]) == 1]
+        for number, integral in enumerate(indefinite):
+            variable = integral.limits[0][0]
+            antiderivative = sp.Function(f"F{number}_")
+            expr = expr.subs(integral, antiderivative(variable))
+            expr = expr.subs(variable, high) - expr.subs(variable, low)
+            definite = sp.Integral(integral.function, (variable, low, high))
+            expr = expr.subs(antiderivative(high), antiderivative(low) + definite)
+        return expr
+
+    return transform
 
 
-@cache
-def _table_26() -> dict[str, Any]:
-    """The instants of the table after (26), first order in p: tv1, te1, tv2, te2, tv3."""
+def reference_area() -> Any:
+    """Lines 144-152: the path u(z) of (10)'s motion (x = z/c), h the ordinate of its tangent
+    at z = 0 (line 126); h = (1/c)∫u dz judged between z1 and any z (_between); the cases: two
+    pairs of consecutive elongations (h = 0 at both) and a pair with the same h ≠ 0 (the
+    second point found by a scan for h(z2) = h(z1))."""
+    import mpmath
+
+    zl, cl, zl1 = symbols("zl", "cl", "zl1")
+    u = phi_of(zl / cl)  # J₁ only: the quadratures of Y₁ cost seconds
+    exact = {"u": u, "h": u - zl * u.diff(zl)}
+    elongations = roots_of("bessel", "tangent", 0.5, 40)[:3]
+    first = elongations[0] + (elongations[1] - elongations[0]) / 3
+    exact_path, coarse_path = cylinder("bessel")
+
+    def level(x: Any, pair: Any = exact_path) -> Any:
+        value, slope = pair(x)
+        return value - x * slope
+
+    with mpmath.workdps(40):
+        target = level(first)
+    second = scan_roots(
+        lambda x: level(x) - target,
+        lambda x: level(x, coarse_path) - float(target),
+        float(elongations[1]),
+        40,
+        800,
+    )[0]
+    pairs = [*itertools.pairwise(elongations), (first, second)]
+    cases = tuple({"zl1": cl * float40(p), "zl2": cl * float40(q)} for p, q in pairs)
+    return reference(
+        exact, "the path u(z) of (10)'s motion", each_case=cases, transform=_between(exact, zl1, zl)
+    )
+
+
+def _phi_series(order: int) -> Any:
     import sympy as sp
 
-    a, b, g = _symbols("a", "b", "g")
-    tau, p = sp.symbols("tau p", real=True)
-    theta = (1 - sp.Rational(3, 4) * p * tau) * sp.sin(tau) - p * tau**2 / 4 * sp.cos(tau)
-    rate = sp.diff(theta, tau)
-    r, speed = sp.sqrt(g / a), b / sp.sqrt(g * a)
-    out = {}
-    for name, f, start in (
-        ("tv1", theta, 0),
-        ("te1", rate, sp.pi / 2),
-        ("tv2", theta, sp.pi),
-        ("te2", rate, 3 * sp.pi / 2),
-        ("tv3", theta, 2 * sp.pi),
-    ):
-        at = {p: 0, tau: start}
-        step = -sp.diff(f, p).subs(at) / sp.diff(f, tau).subs(at)  # the root's dτ/dp at p = 0
-        out[name] = sp.expand((start + speed * sp.simplify(step)) / r)
-    return out
-
-
-def reference_table_26() -> Any:
-    """Lines 603-610: the zeros of θ and dθ/dt of (26), first order in p = b/√(ga)."""
-    from pendcli.core.printed_check import Reference
-
-    return Reference(_table_26(), what="the zeros of θ and θ' of (26), first order in p")
-
-
-def reference_largest_length() -> Any:
-    """Line 565: the quarter period (π/2)√(l/g) of the ordinary pendulum of the largest
-    length of the oscillation, l = a + b·tv2 at its end (the second vertical position), less
-    the duration of each half of it (te1 − tv1 ascending, tv2 − te1 descending) from the
-    table after (26), to first order in b."""
-    import sympy as sp
-
-    from pendcli.core.printed_check import Reference
-
-    a, b, g = _symbols("a", "b", "g")
-    times = _table_26()
-    largest = a + b * times["tv2"]  # l = a + bt at the end of the oscillation
-    quarter = sp.pi / 2 * sp.sqrt(largest / g)
-    # its Taylor polynomial in b through b¹ (sympy's series of the root takes ~1.5 s)
-    quarter = quarter.subs(b, 0) + b * sp.diff(quarter, b).subs(b, 0)
+    eps = sp.Symbol("eps_", positive=True)
+    (x,) = symbols("x")
     exact = {
-        "dasc": quarter - (times["te1"] - times["tv1"]),
-        "ddesc": quarter - (times["tv2"] - times["te1"]),
+        "x": eps * x,
+        "varphi": phi_of(eps * x),
+        "dvarphi_dx": phi_of(x).diff(x).subs(x, eps * x),
     }
-    return Reference(exact, what="quarter period at the largest length, first order in b")
+    return reference(exact, "φ = √x J₁(2√x)", scale=eps, order=order)
 
 
-def reference_c_equals_4_over_pi() -> Any:
-    """Lines 408-412: φ = √x J₁(2√x), the series (10); C the ratio of the two limits the text
-    takes at x = 0, lim φ/x over lim ∫₀^(π/2) cos(2√x cos ω) sin²ω dω (sympy)."""
+def reference_phi_series() -> Any:
+    """(10), line 158: φ = √x J₁(2√x) (the text's own identification, line 160), x scaled by ε,
+    through ε⁴."""
+    return _phi_series(5)
+
+
+def reference_phi_prime_series() -> Any:
+    """(11), lines 164-166: the same through ε³, the last term (11) prints."""
+    return _phi_series(4)
+
+
+def _elongation_roots(count: int) -> list[Any]:
+    """x at the first elongations of (10)'s motion: where θ ∝ φ/x is stationary, i.e.
+    φ − xφ' = 0 (φ = √x J₁(2√x), φ' = J₀(2√x)), x > 0, by a scan (mpmath)."""
+    return roots_of("bessel", "tangent", 0.5, 100)[:count]
+
+
+def reference_elongations_of_12() -> Any:
+    """(12) and lines 170-178 at the first three elongations of θl = φ (θ = gφ/(b²x)
+    stationary, _elongation_roots): dθ = θ'(x)dx, dl/dx = b²/g."""
     import sympy as sp
 
-    from pendcli.core.printed_check import Reference
+    x, b, g = symbols("x", "b", "g")
+    phi = phi_of(x)
+    theta = g * phi / (b**2 * x)
+    exact = {
+        "varphi": phi,
+        "dvarphi_dx": phi.diff(x),
+        "theta": theta,
+        "dtheta": sp.diff(theta, x),
+        "l": b**2 * x / g,
+        "dl_dx": b**2 / g,
+    }
+    cases = tuple({"x": float40(r)} for r in _elongation_roots(3))
+    return reference(exact, "the elongations of θl = φ", each_case=cases)
 
-    x, omega = _symbols("x", "omega")
-    varphi = sp.sqrt(x) * sp.besselj(1, 2 * sp.sqrt(x))
-    integral = sp.integrate(sp.sin(omega) ** 2, (omega, 0, sp.pi / 2))  # the integrand at x = 0
-    constant = sp.limit(varphi / x, x, 0, "+") / integral
-    return Reference({"varphi": varphi, "C": constant}, what="(10) and its limit at x = 0")
 
-
-def reference_amplitude_factor() -> Any:
-    """Lines 569-573: θ of (22) (asymptotic), R l^(-3/4) sin((2/b)√(gl) − φ), at an
-    elongation, where (24) gives the phase (2λ + 1)π/2 − 3b/(4√(gl)) (λ = 0: |θ| is the same
-    for every λ). The first equality is exact (through b⁷); « en négligeant le carré de
-    b/√(gl) », the second through b¹."""
+def reference_eq13() -> Any:
+    """Lines 182-188: (12)'s condition φ/x − φ' = 0 with φ = √x J₁(2√x), then divided by x
+    (« en divisant par x »), x scaled by ε through ε² (the terms printed)."""
     import sympy as sp
 
-    from pendcli.core.printed_check import Reference
+    eps = sp.Symbol("eps_", positive=True)
+    (x,) = symbols("x")
+    condition = phi_of(x) / x - phi_of(x).diff(x)
+    exact = {"x": eps * x}
+    return reference(
+        exact, "(12) with φ = √x J₁(2√x)", scale=eps, order=3, conditions=(condition, condition / x)
+    )
 
-    big_r, length, b, g = _symbols("R", "l", "b", "g")
-    phase = sp.pi / 2 - 3 * b / (4 * sp.sqrt(g * length))  # (24) with λ = 0
-    theta = big_r * length ** sp.Rational(-3, 4) * sp.sin(phase)
-    domain = {"b": (sp.Rational(1, 100), sp.Rational(1, 20))}  # b small against √(gl)
-    return Reference(
-        {"theta": theta}, scale=b, order=2, orders={"theta": 8}, domain=domain,
-        what="(22) at the phase (24) of an elongation",
-    )  # fmt: skip
+
+def reference_x_is_xi() -> Any:
+    """Lines 190-194: line 112's x = gl/b² at the elongation x = ξ."""
+    g, length, b = symbols("g", "l", "b")
+    return reference({"xi": g * length / b**2}, "x = gl/b² at x = ξ")
+
+
+def reference_first_member_13() -> Any:
+    """Line 196: the first member of (13) as (13) is derived, (φ/x − φ')/x with
+    φ = √x J₁(2√x); x scaled by ε, through ε²."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    (x,) = symbols("x")
+    member = ((phi_of(x) / x - phi_of(x).diff(x)) / x).subs(x, eps * x)
+    exact = {"x": eps * x, "m13": member}
+    return reference(exact, "(12) divided by x", scale=eps, order=3)
+
+
+def _elongation_root() -> Any:
+    """The first x > 0 where θ ∝ φ/x = J₁(2√x)/√x is stationary (mpmath, 40 digits, the
+    derivative taken analytically: d/dx J₁(2√x)/√x = J₁'(2√x)/x − J₁(2√x)/(2x√x))."""
+    import mpmath
+
+    with mpmath.workdps(40):
+
+        def slope(x: Any) -> Any:
+            root = mpmath.sqrt(x)
+            return mpmath.besselj(1, 2 * root, derivative=1) / x - mpmath.besselj(1, 2 * root) / (
+                2 * x * root
+            )
+
+        return mpmath.findroot(slope, 6.5)
+
+
+def reference_elongation_root() -> Any:
+    """(14), lines 196-202: x = ξ, the first elongation (where d(φ/x)/dx = 0, found numerically), z
+    = 2√ξ."""
+    import sympy as sp
+
+    xi = sp.Float(mpmath_str(_elongation_root()), 40)
+    return reference({"x": xi, "z": 2 * sp.sqrt(xi)}, "the first root of d(φ/x)/dx = 0")
+
+
+def reference_roots_interlace() -> Any:
+    """Lines 204-206 at the five elongations below z = 20 (_elongation_roots, z = 2√ξ) and
+    the roots of J₁ around each (mpmath.besseljzero)."""
+    import mpmath
+
+    roots = _elongation_roots(5)
+    with mpmath.workdps(40):
+        j1 = [mpmath.besseljzero(1, k) for k in range(1, 7)]
+        z = [2 * mpmath.sqrt(r) for r in roots]
+    cases = tuple(
+        {"z": float40(z[k]), "zeta1": float40(j1[k]), "zeta2": float40(j1[k + 1])} for k in range(5)
+    )
+    return reference({}, "the elongations and the roots of J₁", each_case=cases)
+
+
+def reference_amplitude_j0() -> Any:
+    """Lines 234-236: θ = φ/l at the maxima, the same elongations (φ − xφ' = 0, i.e. J₂(z) = 0
+    with z = 2√x, where 2J₁(z)/z = J₀(z)); l = (b²/g)x; lengths in metres (the memoir's φ is
+    a pure number « multipliée par une constante arbitraire », line 160, here one metre)."""
+    import sympy as sp
+
+    x, b, g = symbols("x", "b", "g")
+    phi = phi_of(x)
+    exact = {
+        "varphi": phi,
+        "theta": g * phi / (b**2 * x),
+        "l": b**2 * x / g,
+        "z": 2 * sp.sqrt(x),
+        "metre": sp.Integer(1),
+    }
+    cases = tuple({"x": float40(r)} for r in _elongation_roots(3))
+    return reference(exact, "θl = φ of (10) at its elongations", each_case=cases)
+
+
+def reference_zero_length() -> Any:
+    """Line 242: z = 2√x → 0 (x scaled by ε², z by ε): the limit is the ε⁰ term."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    x, z = symbols("x", "z")
+    return reference(
+        {"x": eps**2 * x, "z": eps * z, "varphi": phi_of(eps**2 * x)},
+        "J₁ near 0",
+        scale=eps,
+        order=1,
+    )
+
+
+# the builders of this section, by the name the ledger cites
+REFERENCES: dict[str, Callable[[], Any]] = {
+    "reference_graphical": reference_graphical,
+    "reference_inflection": reference_inflection,
+    "reference_curvature": reference_curvature,
+    "reference_area": reference_area,
+    "reference_phi_series": reference_phi_series,
+    "reference_phi_prime_series": reference_phi_prime_series,
+    "reference_elongations_of_12": reference_elongations_of_12,
+    "reference_eq13": reference_eq13,
+    "reference_x_is_xi": reference_x_is_xi,
+    "reference_first_member_13": reference_first_member_13,
+    "reference_elongation_root": reference_elongation_root,
+    "reference_roots_interlace": reference_roots_interlace,
+    "reference_amplitude_j0": reference_amplitude_j0,
+    "reference_zero_length": reference_zero_length,
+}

@@ -1,0 +1,54 @@
+"""Lecornu's references by name: what each ledger row's printed form is judged against.
+
+One module per section of the memoir builds them and keeps its own table; this one gathers
+the tables in the order of the text. No name is given by two sections
+(tests/test_layout.py): a later table would silently replace an earlier builder.
+
+* § I, the equation of motion (and the shortening pendulum, lines 690-698): references_motion
+* § II, small oscillations, lines 118-256: references_small; its example's numbers,
+  lines 206-256: references_numeric; the general solution, lines 258-380:
+  references_general; its integrals, lines 382-460: references_integral; the asymptotic
+  forms, lines 420-676: references_asymptotic; slow variation, lines 462-688:
+  references_slow
+* § III, finite oscillations, lines 699-816: references_finite; their perturbation, lines
+  818-934: references_perturbed
+* § IV, the conical pendulum, lines 940-1062: references_conical; its planes, lines
+  1064-1135: references_conical_planes
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from pendcli.papers.lecornu import (
+    references_asymptotic,
+    references_conical,
+    references_conical_planes,
+    references_finite,
+    references_general,
+    references_integral,
+    references_motion,
+    references_numeric,
+    references_perturbed,
+    references_slow,
+    references_small,
+)
+
+SECTIONS = (
+    references_motion,
+    references_small,
+    references_numeric,
+    references_general,
+    references_integral,
+    references_asymptotic,
+    references_slow,
+    references_finite,
+    references_perturbed,
+    references_conical,
+    references_conical_planes,
+)
+
+REFERENCES: dict[str, Callable[[], Any]] = {
+    name: builder for section in SECTIONS for name, builder in section.REFERENCES.items()
+}

@@ -1,0 +1,113 @@
+"""Lecornu (1894), §§ I-II: what the references of lines 1-698 share. The builders are in the
+section modules (references_motion, references_small, references_numeric, references_general,
+references_integral, references_slow); here: sympy symbols named as the ledger's
+(``tables/equations/lecornu.toml`` [symbols]), the printed-form engine's Reference, φ of (10)
+and the second solution of (9), √x Z₁(2√x) (Z₁ = J₁ or Y₁), and the roots of the bob's path
+and of φ (a scan, refined by mpmath at 40 digits).
+
+sympy, mpmath and scipy are imported inside the functions (start-up stays fast).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+__all__ = [
+    "cylinder",
+    "float40",
+    "mpmath_str",
+    "phi_of",
+    "reference",
+    "roots_of",
+    "scan_roots",
+    "symbols",
+]
+
+
+def symbols(*names: str) -> Any:
+    """Real sympy symbols of the ledger's names (a printed form is parsed over the same)."""
+    import sympy as sp
+
+    return [sp.Symbol(n, real=True) for n in names]
+
+
+def reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:
+    """The engine's Reference: ``exact`` values of ledger symbols, ``what`` they come from."""
+    from pendcli.core.printed_check import Reference
+
+    return Reference(exact, what=what, **kw)
+
+
+def phi_of(x: Any, kind: str = "j") -> Any:
+    """√x Z₁(2√x): Z₁ = J₁ (φ, (10)) or Y₁ (the second solution of (9))."""
+    import sympy as sp
+
+    bessel = sp.besselj if kind == "j" else sp.bessely
+    return sp.sqrt(x) * bessel(1, 2 * sp.sqrt(x))
+
+
+def mpmath_str(value: Any) -> str:
+    """An mpmath number written with 40 significant digits."""
+    import mpmath
+
+    return mpmath.nstr(value, 40)
+
+
+def float40(value: Any) -> Any:
+    """An mpmath number as a sympy Float of 40 digits (a root the references substitute)."""
+    import sympy as sp
+
+    return sp.Float(mpmath_str(value), 40)
+
+
+def scan_roots(f: Any, coarse: Any, low: float, high: float, steps: int) -> list[Any]:
+    """The roots of ``f`` (mpmath) in (low, high): a sign change of ``coarse`` (the same
+    function in floats, numpy) on a grid of ``steps``, refined by a bracketing solver on
+    ``f`` (mpmath, 40 digits)."""
+    import mpmath
+    import numpy as np
+
+    grid = np.linspace(low, high, steps + 1)
+    values = coarse(grid)
+    brackets = [(grid[k], grid[k + 1]) for k in range(steps) if values[k] * values[k + 1] < 0]
+    with mpmath.workdps(40):
+        return [mpmath.findroot(f, (mpmath.mpf(a), mpmath.mpf(b)), solver="anderson")
+                for a, b in brackets]  # fmt: skip
+
+
+def cylinder(kind: str) -> tuple[Any, Any]:
+    """x -> √x Z₁(2√x) and its derivative Z₀(2√x) (Z = J, or J + Y: the path), in mpmath,
+    and the pair in floats (scipy)."""
+    import mpmath
+    from scipy.special import jv, yv
+
+    def z(order: int, s: Any) -> Any:
+        value = mpmath.besselj(order, s)
+        return value + mpmath.bessely(order, s) if kind == "path" else value
+
+    def z_float(order: int, s: Any) -> Any:
+        return jv(order, s) + yv(order, s) if kind == "path" else jv(order, s)
+
+    def exact(x: Any) -> tuple[Any, Any]:
+        s = 2 * mpmath.sqrt(x)
+        return mpmath.sqrt(x) * z(1, s), z(0, s)
+
+    def coarse(x: Any) -> tuple[Any, Any]:
+        s = 2 * x**0.5
+        return x**0.5 * z_float(1, s), z_float(0, s)
+
+    return exact, coarse
+
+
+def roots_of(kind: str, which: str, low: float, high: float) -> list[Any]:
+    """The roots in x of U (``which`` = "zero"), of h = U − xU' (the tangent through the
+    point of suspension, "tangent"), of U' (the slope), for U = √x Z₁(2√x) (cylinder)."""
+    exact, coarse = cylinder(kind)
+
+    def pick(pair: tuple[Any, Any], x: Any) -> Any:
+        value, slope = pair
+        return {"zero": value, "tangent": value - x * slope, "slope": slope}[which]
+
+    return scan_roots(
+        lambda x: pick(exact(x), x), lambda x: pick(coarse(x), x), low, high, int(20 * high)
+    )

@@ -1,0 +1,301 @@
+"""Lecornu (1894), § II, the slowly varying pendulum, lines 462-688: the elongations of the
+asymptotic form (22)-(24), the table after (26) and the solution of (27) to p².
+
+Each builder maps ledger symbols to exact expressions: (22) with l = a + bt, (23) and (24)
+solved for the next elongation, the zeros of (26), (27) solved by undetermined coefficients;
+never a second copy of the formula the row prints. The builders of lines 466-539 and 559-563
+((20)-(24) in l, the passages, the condition of an elongation) are in references_late.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import cache
+from typing import Any
+
+from pendcli.papers.lecornu.references_base import reference, symbols
+from pendcli.papers.taylor import taylor
+
+
+def reference_elongation_lengths() -> Any:
+    """Lines 541-547: l from (23) and φ from (24) written at l'' (exact, no approximation)."""
+    import sympy as sp
+
+    b, g, lpp, lam = symbols("b", "g", "lpp", "lam")
+    phi = 2 / b * sp.sqrt(g * lpp) - (2 * lam + 1) * sp.pi / 2 + 3 * b / (4 * sp.sqrt(g * lpp))
+    length = b**2 / (4 * g) * (phi + lam * sp.pi) ** 2
+    return reference({"phi": phi, "l": length}, "(23) at l, (24) at l''")
+
+
+def _quarter_oscillation(scale: Any) -> dict[str, Any]:
+    """Lines 549-555: from a vertical at l ((23): φ = (2/b)√(gl) − λπ) to the next elongation
+    l'' ((24) solved exactly: y = √(gl'') is the larger root of 2y/b + 3b/(4y) = (2/b)√(gl) + π/2),
+    with b scaled by ``scale`` (b²/(gl) small)."""
+    import sympy as sp
+
+    b, g, length = symbols("b", "g", "l")
+    small_b = scale * b
+    k = 2 / small_b * sp.sqrt(g * length) + sp.pi / 2
+    y = (k * small_b + sp.sqrt(k**2 * small_b**2 - 6 * small_b**2)) / 4
+    return {"lpp": y**2 / g, "b": small_b}
+
+
+def reference_quarter_oscillation() -> Any:
+    """Line 551, through ε⁰ (the orders 1/ε and 1)."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    return reference(_quarter_oscillation(eps), "(23), (24) solved for l''", scale=eps, order=1)
+
+
+def reference_quarter_time() -> Any:
+    """Line 555, through ε (the orders 1 and b)."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    return reference(_quarter_oscillation(eps), "(23), (24) solved for l''", scale=eps, order=2)
+
+
+@cache
+def _table_26() -> dict[str, Any]:
+    """The instants of the table after (26), first order in p: tv1, te1, tv2, te2, tv3."""
+    import sympy as sp
+
+    a, b, g = symbols("a", "b", "g")
+    tau, p = sp.symbols("tau p", real=True)
+    theta = (1 - sp.Rational(3, 4) * p * tau) * sp.sin(tau) - p * tau**2 / 4 * sp.cos(tau)
+    rate = sp.diff(theta, tau)
+    r, speed = sp.sqrt(g / a), b / sp.sqrt(g * a)
+    out = {}
+    for name, f, start in (
+        ("tv1", theta, 0),
+        ("te1", rate, sp.pi / 2),
+        ("tv2", theta, sp.pi),
+        ("te2", rate, 3 * sp.pi / 2),
+        ("tv3", theta, 2 * sp.pi),
+    ):
+        at = {p: 0, tau: start}
+        step = -sp.diff(f, p).subs(at) / sp.diff(f, tau).subs(at)  # the root's dτ/dp at p = 0
+        out[name] = sp.expand((start + speed * sp.simplify(step)) / r)
+    return out
+
+
+def reference_largest_length() -> Any:
+    """Line 565: the quarter period (π/2)√(l/g) of the ordinary pendulum of the largest
+    length of the oscillation, l = a + b·tv2 at its end (the second vertical position), less
+    the duration of each half of it (te1 − tv1 ascending, tv2 − te1 descending) from the
+    table after (26), to first order in b."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    a, b, g = symbols("a", "b", "g")
+    times = _table_26()
+    largest = a + b * times["tv2"]  # l = a + bt at the end of the oscillation
+    quarter = sp.pi / 2 * sp.sqrt(largest / g)
+    # its Taylor polynomial in b through b¹ (sympy's series of the root takes ~1.5 s)
+    quarter = quarter.subs(b, 0) + b * sp.diff(quarter, b).subs(b, 0)
+    exact = {
+        "dasc": quarter - (times["te1"] - times["tv1"]),
+        "ddesc": quarter - (times["tv2"] - times["te1"]),
+    }
+    return Reference(exact, what="quarter period at the largest length, first order in b")
+
+
+def reference_amplitude_factor() -> Any:
+    """Lines 569-573: θ of (22) (asymptotic), R l^(-3/4) sin((2/b)√(gl) − φ), at an
+    elongation, where (24) gives the phase (2λ + 1)π/2 − 3b/(4√(gl)) (λ = 0: |θ| is the same
+    for every λ). The first equality is exact (through b⁷); « en négligeant le carré de
+    b/√(gl) », the second through b¹."""
+    import sympy as sp
+
+    from pendcli.core.printed_check import Reference
+
+    big_r, length, b, g = symbols("R", "l", "b", "g")
+    phase = sp.pi / 2 - 3 * b / (4 * sp.sqrt(g * length))  # (24) with λ = 0
+    theta = big_r * length ** sp.Rational(-3, 4) * sp.sin(phase)
+    domain = {"b": (sp.Rational(1, 100), sp.Rational(1, 20))}  # b small against √(gl)
+    return Reference(
+        {"theta": theta}, scale=b, order=2, orders={"theta": 8}, domain=domain,
+        what="(22) at the phase (24) of an elongation",
+    )  # fmt: skip
+
+
+def reference_successive_elongations() -> Any:
+    """Line 577: l' = l + bπ√(l/g), the length half a period later (line 523), b scaled by ε
+    (b/√(gl) small), through ε."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    b, g, length = symbols("b", "g", "l")
+    exact = {"lp": length + eps * b * sp.pi * sp.sqrt(length / g), "b": eps * b}
+    return reference(exact, "l' = l + bπ√(l/g)", scale=eps, order=2)
+
+
+def _slow_exact(psi_value: Any) -> dict[str, Any]:
+    """(22) with l = a + bt (line 583), γ = √(g/a), p = b/√(ga) (line 585), R = ρa^(3/4)
+    (line 589) and φ = 2/p + ψ, i.e. ψ the phase of sin(γt − ψ) as (25) uses it."""
+    import sympy as sp
+
+    a, g, t, rho, p = symbols("a", "g", "t", "rho", "p")
+    gamma = sp.sqrt(g / a)
+    b = p * sp.sqrt(g * a)
+    length = a + b * t
+    phi = 2 / p + psi_value
+    big_r = rho * a ** sp.Rational(3, 4)
+    # (2/b)√(gl) − φ = (2/p)(√(1 + pγt) − 1) − ψ, rationalised so that its series in p exists
+    argument = 2 * gamma * t / (sp.sqrt(1 + p * gamma * t) + 1) - psi_value
+    theta = big_r * length ** sp.Rational(-3, 4) * sp.sin(argument)
+    return {"theta": theta, "gamma": gamma, "r": gamma, "b": b, "R": big_r, "phi": phi}
+
+
+def reference_slow_exact() -> Any:
+    """(22) in t, exactly (lines 581-587)."""
+    (psi,) = symbols("psi")
+    return reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, R")
+
+
+def reference_slow_pendulum() -> Any:
+    """(22) in t, to first order in p (lines 581–595)."""
+    (psi,) = symbols("psi")
+    (p,) = symbols("p")
+    return reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, ρ", scale=p, order=2)
+
+
+def reference_psi() -> Any:
+    """Lines 593-595: ψ as the phase of (22)'s sine at t = 0 once written sin(γt − ψ): −(2/p −
+    φ)."""
+    import sympy as sp
+
+    a, g, p, phi = symbols("a", "g", "p", "phi")
+    b = p * sp.sqrt(g * a)
+    argument_at_0 = 2 / b * sp.sqrt(g * a) - phi  # (22)'s argument at l = a
+    return reference({"psi": -argument_at_0}, "the phase of (22) at t = 0")
+
+
+def reference_cr_note() -> Any:
+    """Line 597, the footnote to (25): the 1894 note's formula against (22) (as for (25)), with k =
+    p and ω = ψ + p/8."""
+    (psi, p) = symbols("psi", "p")
+    exact = _slow_exact(psi)
+    exact.update({"k": p, "omega": psi + p / 8})
+    return reference(exact, "(22) with k = p, ω = ψ + p/8", scale=p, order=2)
+
+
+def reference_slow_vertical() -> Any:
+    """(26), line 601: (22) with the pendulum vertical at t = 0 (line 599), ψ = 0."""
+    (p,) = symbols("p")
+    return reference(_slow_exact(0), "(22) vertical at t = 0", scale=p, order=2)
+
+
+def reference_table_26() -> Any:
+    """Lines 603-610: the zeros of θ and dθ/dt of (26), first order in p = b/√(ga)."""
+    from pendcli.core.printed_check import Reference
+
+    return Reference(_table_26(), what="the zeros of θ and θ' of (26), first order in p")
+
+
+def reference_eq27_from_9() -> Any:
+    """(27), line 618: (9) in t, x = (1 + pγt)/p² (line 614), so d²u/dx² = (p/γ)² d²u/dt², with
+    (9)'s d²u/dx² = −u/x."""
+    p, gamma, t, u = symbols("p", "gamma", "t", "u")
+    x = (1 + p * gamma * t) / p**2
+    return reference({"d2u_dt2": (gamma / p) ** 2 * (-u / x), "r": gamma}, "(9) in t")
+
+
+def _forced_oscillator(rhs: Any, tau: Any, degree: int) -> Any:
+    """The solution of U'' + U = rhs(τ) with U(0) = U'(0) = 0, rhs a polynomial in τ times
+    cos τ, sin τ: undetermined coefficients (a polynomial of ``degree`` on each), solved
+    linearly."""
+    import sympy as sp
+
+    a = sp.symbols(f"a0:{degree + 1}")
+    c = sp.symbols(f"c0:{degree + 1}")
+    trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau) + sum(
+        c[k] * tau**k for k in range(degree + 1)
+    ) * sp.sin(tau)
+    residual = sp.expand(trial.diff(tau, 2) + trial - rhs)
+    equations = []
+    for trig in (sp.cos(tau), sp.sin(tau)):
+        part = sp.Poly(residual.coeff(trig), tau)
+        equations.extend(part.all_coeffs())
+    equations += [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
+    solution = sp.solve(equations, [*a, *c], dict=True)[0]
+    return sp.expand(trial.subs(solution).subs({k: 0 for k in (*a, *c)}))
+
+
+@cache
+def _eq27_solution() -> tuple[Any, Any, Any]:
+    """(27) with u(0) = 0, u'(0) = γ to p² (line 638): u0 = sin γt and, in τ = γt (line 626),
+    u_n'' + u_n = −τ u_(n−1)'', u_n(0) = u_n'(0) = 0 (line 628)."""
+    import sympy as sp
+
+    t, gamma, p = symbols("t", "gamma", "p")
+    tau = sp.Dummy("tau")
+    parts = [sp.sin(tau)]
+    for n in (1, 2):
+        parts.append(_forced_oscillator(-tau * parts[-1].diff(tau, 2), tau, 2 * n))
+    u = sum(part * p**k for k, part in enumerate(parts)).subs(tau, gamma * t)
+    return u, t, p
+
+
+def reference_eq27() -> Any:
+    """(28), (29), lines 640 and 682: (28) against (27) solved to p² (γ kept); for (29), θ = u/(1 +
+    pγt) to p² (line 678, the constant factor a dropped)."""
+    import sympy as sp
+
+    u, t, p = _eq27_solution()
+    (gamma,) = symbols("gamma")
+    theta = sp.expand(taylor(u / (1 + p * gamma * t), p, 3))
+    return reference({"uA": u, "theta": theta}, "(27) solved to p²", scale=p, order=3)
+
+
+@cache
+def _epsilon_root() -> tuple[Any, Any]:
+    """The root γt = π + ε of (27)'s solution to p² (not (28) as printed): ε = e1 p + e2 p²."""
+    import sympy as sp
+
+    u, t, p = _eq27_solution()
+    (gamma,) = symbols("gamma")
+    e1, e2 = sp.symbols("e1 e2")
+    eps = e1 * p + e2 * p**2
+    at_root = taylor(u.subs(t, (sp.pi + eps) / gamma), p, 3)
+    first = sp.solve(sp.expand(at_root).coeff(p, 1), e1)[0]
+    second = sp.solve(sp.expand(at_root.subs(e1, first)).coeff(p, 2), e2)[0]
+    return sp.simplify(first * p + second * p**2), p
+
+
+def reference_root_epsilon() -> Any:
+    """Lines 642-664: ε the root of u = 0 near γt = π, t = (π + ε)/γ, γ = √(g/a),
+    b = p√(ga); through p²."""
+    import sympy as sp
+
+    eps, p = _epsilon_root()
+    a, g = symbols("a", "g")
+    exact = {
+        "epsilon": eps,
+        "t": (sp.pi + eps) / sp.sqrt(g / a),
+        "gamma": sp.sqrt(g / a),
+        "b": p * sp.sqrt(g * a),
+    }
+    return reference(exact, "the root of (27)'s solution near γt = π", scale=p, order=3)
+
+
+# the builders of this section, by the name the ledger cites
+REFERENCES: dict[str, Callable[[], Any]] = {
+    "reference_elongation_lengths": reference_elongation_lengths,
+    "reference_quarter_oscillation": reference_quarter_oscillation,
+    "reference_quarter_time": reference_quarter_time,
+    "reference_largest_length": reference_largest_length,
+    "reference_amplitude_factor": reference_amplitude_factor,
+    "reference_successive_elongations": reference_successive_elongations,
+    "reference_slow_exact": reference_slow_exact,
+    "reference_slow_pendulum": reference_slow_pendulum,
+    "reference_psi": reference_psi,
+    "reference_cr_note": reference_cr_note,
+    "reference_slow_vertical": reference_slow_vertical,
+    "reference_table_26": reference_table_26,
+    "reference_eq27_from_9": reference_eq27_from_9,
+    "reference_eq27": reference_eq27,
+    "reference_root_epsilon": reference_root_epsilon,
+}
