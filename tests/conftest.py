@@ -58,7 +58,6 @@ SLOW_FAMILIES = {
     "tests/test_json_schema.py::test_reproduce_*json_*": "a whole reproduce -f json",
     "tests/test_summary.py::test_equations_command_*": "every Charbonnier check, via the CLI",
     "tests/test_html_report.py::test_pdf_printing_*": "whole reports, before Chromium is sought",
-    "tests/test_ledger.py::test_evaluate_runs_each_check_*": "every ledger row's check",
     "tests/test_tisserand.py::test_quadrature_against_mpmath_elsewhere": "mpmath at 25 digits",
     "tests/test_tisserand.py::test_series_error_figure_against_mpmath": "mpmath at 25 digits",
     "tests/test_tisserand_extremes.py::test_near_planar_fourier_*": "mpmath at 25 digits",
@@ -95,10 +94,7 @@ SLOW_FAMILIES = {
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.
-LATE_STATUS = (
-    "tests/test_printed_lecornu_late.py::"
-    "test_the_status_computed_from_the_printed_form_is_the_recorded_one"
-)
+LEDGER_STATUS = "tests/test_ledger.py::test_the_engine_computes_the_recorded_status"
 SLOW_CASES = {
     # a renamed claim id through `check`: found when the claims are evaluated, after the
     # ledgers (the costliest steps go first); the `reproduce` and `g-sensitivity` cases stay
@@ -110,7 +106,7 @@ SLOW_CASES = {
     # other, 0.8 s alone, is the family's fast case
     ("tests/test_printed_lecornu_late.py::test_a_changed_growing_part_is_refused",
      "1/4*log(x)"): "the small-x residual's growing parts with a changed logarithm (2.6 s)",
-    (LATE_STATUS, "lecornu.result.am_series]"): "the amplitude series' reference, its "
+    (LEDGER_STATUS, "lecornu.result.am_series]"): "the amplitude series' reference, its "
      "integrals with the scale in their limits judged by sympy's series (2.5 s)",
     ("tests/test_html_report.py::test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
      "lecornu"): "every Lecornu row and claim matched to its place in 1,135 lines of text",
@@ -126,20 +122,16 @@ SLOW_FIXTURES = {
 # the order of the paper's lines, so its fast cases span the paper). tests/test_suite_split.py
 # checks that each family keeps a fast case and leaves the rest to the slow run.
 REPRESENTATIVES = {
-    "tests/test_ledger.py::test_check_agrees_with_recorded_status": 6,
-    "tests/test_printed.py::test_the_status_computed_from_the_printed_form_is_the_recorded_one": 5,
+    LEDGER_STATUS: 6,
     "tests/test_printed.py::test_a_changed_coefficient_stops_a_row_holding": 3,
-    "tests/test_printed_charbonnier.py::test_the_status_computed_from_the_printed_form_*": 6,
     "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_a_row_holding": 4,
     "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_an_engine_only_*": 4,
     "tests/test_printed_charbonnier.py::test_a_misprint_whose_printed_form_is_its_reading_*": 2,
     "tests/test_printed_charbonnier.py::test_every_misprint_printed_as_its_reading_is_refused": 3,
     "tests/test_printed_charbonnier.py::test_a_changed_coefficient_of_a_reading_is_refused": 3,
-    "tests/test_printed_lecornu_early.py::test_the_computed_status_is_the_recorded_one": 12,
     "tests/test_printed_lecornu_early.py::test_a_changed_coefficient_is_refused": 3,
     "tests/test_printed_lecornu_early.py::test_a_misprint_printed_as_its_reading_is_refused": 2,
     "tests/test_printed_lecornu_early.py::test_to_line_420_*": 2,
-    "tests/test_printed_lecornu_late.py::test_the_status_computed_from_the_printed_form_*": 6,
     "tests/test_printed_lecornu_late.py::test_a_changed_coefficient_*": 4,
     "tests/test_printed_lecornu_late.py::test_a_misprint_whose_printed_form_is_its_reading_*": 3,
     "tests/test_printed_numeric.py::test_an_edit_of_the_printed_form_is_refused_naming_the_row": 3,

@@ -226,20 +226,6 @@ def test_formulas_parse_with_declared_names_only() -> None:
 # --- statuses computed from the printed form (core/printed_check) ------------------------
 
 
-def _reference_rows() -> list[object]:
-    ledger = committed_ledger("tisserand")
-    return [pytest.param(ledger, r, id=r.id) for r in ledger.rows if r.reference]
-
-
-@pytest.mark.parametrize(("ledger", "row"), _reference_rows())
-def test_the_status_computed_from_the_printed_form_is_the_recorded_one(
-    ledger: object, row: LedgerRow
-) -> None:
-    computed, problem = verify_printed(row, ledger.symbols_for(row), TISSERAND_REFERENCES)  # type: ignore[attr-defined]
-    assert problem is None, problem
-    assert computed is not None and computed.startswith(f"{row.status}:")
-
-
 @pytest.mark.parametrize(
     ("row_id", "old", "new"),
     [

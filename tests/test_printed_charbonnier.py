@@ -24,16 +24,6 @@ TABLES = ROOT / "tables"
 REFERENCES = paper("charbonnier").references()
 
 
-@pytest.mark.parametrize("row_id", row_ids("charbonnier", lambda entry: "reference" in entry))
-def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row_id: str) -> None:
-    row = committed_row(row_id)
-    computed, problem = verify_printed(
-        row, dict(committed_ledger("charbonnier").symbols), REFERENCES
-    )
-    assert problem is None, problem
-    assert computed is not None and computed.startswith(f"{row.status}:")
-
-
 def test_every_block_is_covered_and_every_formula_row_has_a_reference() -> None:
     coverage = ledger_text_coverage("charbonnier")
     assert (coverage.blocks, coverage.covered) == (86, 86)

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from ledgers import committed_ledger, committed_row, first_line, row_ids
+from ledgers import committed_ledger, committed_row
 from mutations import altered_ledger
 
 from pendcli.core.claims import FormulaRow
@@ -47,19 +47,6 @@ SECTIONS = (
 
 def _early_rows() -> list[LedgerRow]:
     return [r for r in committed_ledger("lecornu").rows if r.lines and r.lines[0] <= LAST_LINE]
-
-
-def _referenced() -> list[str]:
-    return row_ids("lecornu", lambda e: 0 < first_line(e) <= LAST_LINE and "reference" in e)
-
-
-@pytest.mark.parametrize("row_id", _referenced())
-def test_the_computed_status_is_the_recorded_one(row_id: str) -> None:
-    row = committed_row(row_id)
-    symbols = committed_ledger("lecornu").symbols_for(row)
-    computed, problem = verify_printed(row, symbols, REFERENCES)
-    assert problem is None, problem
-    assert computed is not None and computed.startswith(f"{row.status}:")
 
 
 def test_each_section_table_gives_its_builders_to_the_paper_once() -> None:

@@ -48,14 +48,6 @@ def test_every_checked_row_has_a_reference() -> None:
     assert missing == NO_REFERENCE
 
 
-@pytest.mark.parametrize("row_id", _late_ids("reference"))
-def test_the_status_computed_from_the_printed_form_is_the_recorded_one(row_id: str) -> None:
-    ledger, row = committed_ledger("lecornu"), committed_row(row_id)
-    computed, problem = verify_printed(row, ledger.symbols_for(row), REFERENCES)
-    assert problem is None, problem
-    assert computed is not None and computed.startswith(f"{row.status}:")
-
-
 @pytest.mark.parametrize("row_id", _late_ids("wrong_term"))
 def test_a_wrong_term_is_printed_in_its_lines(row_id: str) -> None:
     row = committed_row(row_id)
