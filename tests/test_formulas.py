@@ -17,6 +17,7 @@ import pytest
 from pendcli.core import formula_engine as engine
 from pendcli.papers.charbonnier import formulas as fch
 from pendcli.papers.charbonnier import perturbation as cpt
+from pendcli.papers.lecornu import formula_figures as fle_figures
 from pendcli.papers.lecornu import formulas as fle
 from pendcli.papers.lecornu import formulas_chapter3 as fle3
 from pendcli.papers.tisserand import formulas as fti
@@ -338,7 +339,7 @@ def test_plot_studies_refuses_a_row_without_labels(tmp_path):
 @pytest.mark.parametrize("paper", ["tisserand", "lecornu", "charbonnier"])
 def test_every_drawn_formula_names_its_parameter_and_unit(paper, rows):
     """Each paper's panel labels cover exactly the rows its grid draws, none generic."""
-    module = {"tisserand": fti, "lecornu": fle, "charbonnier": fch}[paper]
+    module = {"tisserand": fti, "lecornu": fle_figures, "charbonnier": fch}[paper]
     labels = module.panels() if paper == "charbonnier" else module.PANELS
     drawn = {r.id for r in rows[paper] if r.residuals and r.claimed_order is not None}
     assert set(labels) == drawn

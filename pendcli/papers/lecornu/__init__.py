@@ -105,14 +105,14 @@ def _figures(folder: Path) -> Sequence[Path]:
 
 
 def _formula_figures(folder: Path, rows: list[FormulaRow]) -> Sequence[Path]:
-    from pendcli.papers.lecornu.formulas import figures
+    from pendcli.papers.lecornu.formula_figures import figures
 
     return figures(folder, rows)
 
 
 def _captions() -> Mapping[str, str]:
     from pendcli.papers.lecornu.figures import CAPTIONS as CLAIM_CAPTIONS
-    from pendcli.papers.lecornu.formulas import CAPTIONS as FORMULA_CAPTIONS
+    from pendcli.papers.lecornu.formula_figures import CAPTIONS as FORMULA_CAPTIONS
 
     return {**FORMULA_CAPTIONS, **CLAIM_CAPTIONS}
 

@@ -49,7 +49,7 @@ PHASE = 0.3  # δ of the cylinder function cos δ J_ν + sin δ Y_ν (any soluti
 ELONGATIONS = (4, 8, 16, 32, 64)  # which elongations (further out: smaller b/√(gl))
 
 _Q, _P = "q = b/√(gl), dimensionless", "p = b/√(ga), dimensionless"
-# What each residual panel of the figure shows (formulas.PANELS gathers them)
+# What each residual panel of the figure shows (formula_figures.PANELS gathers them)
 SLOW_PANELS = {
     f"{PAPER}.quarter_time": PanelLabels("vertical to next elongation", _Q, "units of √(l/g)"),
     f"{PAPER}.amplitude_factor": PanelLabels("amplitude at an elongation", _Q, "÷ R l^(−3/4)"),
