@@ -125,7 +125,7 @@ REPRESENTATIVES = {
     LEDGER_STATUS: 6,
     "tests/test_printed.py::test_a_changed_coefficient_stops_a_row_holding": 3,
     "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_a_row_holding": 4,
-    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_an_engine_only_*": 4,
+    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_a_prose_row_*": 4,
     "tests/test_printed_charbonnier.py::test_a_misprint_whose_printed_form_is_its_reading_*": 2,
     "tests/test_printed_charbonnier.py::test_every_misprint_printed_as_its_reading_is_refused": 3,
     "tests/test_printed_charbonnier.py::test_a_changed_coefficient_of_a_reading_is_refused": 3,

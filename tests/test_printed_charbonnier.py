@@ -176,7 +176,7 @@ def test_the_speed_at_the_lowest_point_is_e_s_by_the_ode() -> None:
 # --- the rows of the prose and of the remarks between the numbered formulas ---------------
 # (row, old, new): one coefficient, sign, argument or relation of what the row prints
 
-ENGINE_ONLY_CHANGES = [
+PROSE_CHANGES = [
     ("charbonnier.result.sine-to-arc", "= theta + ...", "= 2*theta + ..."),
     ("charbonnier.result.rise-equals-descent", "theta = alpha", "theta = -alpha"),
     (
@@ -220,8 +220,8 @@ ENGINE_ONLY_CHANGES = [
 ]
 
 
-@pytest.mark.parametrize(("row_id", "old", "new"), ENGINE_ONLY_CHANGES)
-def test_a_changed_coefficient_stops_an_engine_only_row_holding(
+@pytest.mark.parametrize(("row_id", "old", "new"), PROSE_CHANGES)
+def test_a_changed_coefficient_stops_a_prose_row_holding(
     row_id: str, old: str, new: str
 ) -> None:
     row, symbols = _altered(row_id, old, new)
@@ -234,7 +234,7 @@ def test_every_holds_row_has_a_mutation() -> None:
     """The engine's verdict is every row's status: each row that holds is edited by one case
     of the two lists of changed coefficients above, which it must then refuse."""
     holds = {r.id for r in committed_ledger("charbonnier").rows if r.status == "holds"}
-    mutated = {row_id for row_id, _, _ in (*CHANGES, *ENGINE_ONLY_CHANGES)}
+    mutated = {row_id for row_id, _, _ in (*CHANGES, *PROSE_CHANGES)}
     assert holds - mutated == set()
 
 
