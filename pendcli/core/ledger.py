@@ -490,14 +490,13 @@ def row_printed_status(
 ) -> tuple[str | None, str]:
     """The status ``row``'s printed form earns, by its kind, against its reference (built by
     ``references[row.reference]``) and why, computed once per row and symbol table."""
-    from pendcli.core.tables import tables_dir
 
     assert row.reference is not None
     builder = references.get(row.reference)
     if builder is None:
         raise PendcliError(f"{row.id}: the {row.paper} references have no {row.reference!r}")
-    # keyed on the tables folder too: a reference may read the published numbers
-    return _printed_status(row, tuple(sorted(symbols.items())), builder, str(tables_dir()))
+    # keyed on what a reference may read: the published numbers and the ledgers
+    return _printed_status(row, tuple(sorted(symbols.items())), builder, _read_by_references())
 
 
 @cache
@@ -530,19 +529,38 @@ def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Refere
     """Every reference the paper's ledger cites (``reference = "…"``), by name, each built once
     and shared as :func:`row_printed_status` shares it: what a cold run pays besides its
     verdicts, the author's model done exactly."""
-    from pendcli.core.tables import tables_dir
 
     table = reference_table(paper)
     names = dict.fromkeys(r.reference for r in load_ledger(paper.key, root).rows if r.reference)
     missing = [n for n in names if n not in table]
     if missing:
         raise PendcliError(f"the {paper.key} references have no {', '.join(map(repr, missing))}")
-    return {n: _reference(table[n], paper.key, n, str(tables_dir())) for n in names}
+    key = _read_by_references()
+    return {n: _reference(table[n], paper.key, n, key) for n in names}
+
+
+# tables folder -> the digest of what a reference may read in it
+_DIGESTS: dict[str, str] = {}
+
+
+def _read_by_references() -> str:
+    """The content of the tables a reference may read (the published numbers, the ledgers),
+    as one digest: a copy of the tables folder shares the references built for the original,
+    an edited one builds its own."""
+    from pendcli.core.cache import content_digest
+    from pendcli.core.tables import tables_dir
+
+    root = tables_dir()
+    if str(root) not in _DIGESTS:
+        parts = (("published", root / "published"), ("equations", root / "equations"))
+        _DIGESTS[str(root)] = content_digest(p for p in parts if p[1].is_dir())
+    return _DIGESTS[str(root)]
 
 
 def _clear_reference_caches() -> None:
     _printed_status.cache_clear()
     _reference.cache_clear()
+    _DIGESTS.clear()
 
 
 def _register_reference_caches() -> None:
