@@ -221,9 +221,7 @@ PROSE_CHANGES = [
 
 
 @pytest.mark.parametrize(("row_id", "old", "new"), PROSE_CHANGES)
-def test_a_changed_coefficient_stops_a_prose_row_holding(
-    row_id: str, old: str, new: str
-) -> None:
+def test_a_changed_coefficient_stops_a_prose_row_holding(row_id: str, old: str, new: str) -> None:
     row, symbols = _altered(row_id, old, new)
     computed, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
