@@ -3,6 +3,7 @@
 The README shows real output and the real JSON schema; this module produces both, so nothing
 there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
 (``<!-- sample:start -->`` ... ``<!-- sample:end -->`` for the sample output,
+``<!-- causes:start -->`` ... for the counts of the numbers that do not agree, by cause,
 ``<!-- schema:start -->`` ... ``<!-- schema:end -->`` for the JSON schema from
 :mod:`pendcli.core.schema`, ``<!-- ledger:start -->`` ... for the equation ledgers'
 coverage); ``--check`` exits 1 if one is stale.
@@ -19,9 +20,18 @@ from pendcli.render.columns import Column, Row
 from pendcli.render.markdown import to_markdown
 
 if TYPE_CHECKING:
+    from pendcli.core.claims import ClaimRow
     from pendcli.reproduce import ReproduceResult
 
-__all__ = ["SECTIONS", "ledger_section", "main", "sample_section", "schema_section", "splice"]
+__all__ = [
+    "SECTIONS",
+    "causes_section",
+    "ledger_section",
+    "main",
+    "sample_section",
+    "schema_section",
+    "splice",
+]
 
 
 def _reproduce_all(equations: bool = False) -> ReproduceResult:
@@ -77,6 +87,58 @@ def schema_section() -> str:
     )
 
 
+# The README's words for each cause of a printed number that does not agree, in this order.
+CAUSE_PHRASES = {
+    "arithmetic-slip": "slips of his own",
+    "input-rounding": "faithful to his correctly rounded inputs (their rounding is the "
+    "distance from the truth, not a slip)",
+    "propagated": "carrying an earlier slip",
+    "truncation": "truncations",
+    "rounding": "roundings",
+    "model-approximation": "the model's approximations (an assumption such as g)",
+    "misprint": "misprints",
+    "derivation-error": "from a wrong formula",
+}
+
+
+def causes_section(result: ReproduceResult | None = None) -> str:
+    """The counts of the printed numbers that do not agree, by cause (the rule of
+    tables/README.md, as the code computes it), each with its rows: never typed."""
+    result = result if result is not None else _reproduce_all()
+    lines = [
+        "The printed numbers that do not agree with the truth, by cause (`pendcli reproduce`; "
+        "each is judged against the truth and against his own procedure on his printed "
+        "inputs, and its cause computed by the rule of `tables/README.md`):",
+        "",
+    ]
+    for key in result.papers:
+        rows = [r for r in result.claims.get(key, []) if r.verdict != "agrees"]
+        lines += _paper_causes(key, rows)
+    return "\n".join(lines if len(lines) > 2 else [*lines, "- every printed number agrees."])
+
+
+def _paper_causes(key: str, rows: list[ClaimRow]) -> list[str]:
+    """One bullet per paper with a disagreement: how many, their verdicts against his own
+    procedure, then one sub-bullet per cause with its rows."""
+    if not rows:
+        return []
+    by_cause: dict[str, list[str]] = {}
+    for r in rows:
+        by_cause.setdefault(str(r.cause), []).append(r.id.split(".", 1)[1])
+    own = {v: sum(str(r.procedure_verdict) == v for r in rows) for v in ("slip", "faithful")}
+    unknown = sum(r.procedure_verdict is None for r in rows)
+    lines = [
+        f"- **{key.capitalize()}**: {len(rows)} do not agree; against his own procedure "
+        f"{own['slip']} are slips, {own['faithful']} faithful, and {unknown} have no known "
+        "procedure. By cause:"
+    ]
+    for cause in (*CAUSE_PHRASES, *sorted(set(by_cause) - set(CAUSE_PHRASES))):
+        if ids := by_cause.get(cause):
+            phrase = CAUSE_PHRASES.get(cause, "")
+            lines.append(f"  - `{cause}`, {phrase}: {len(ids)} ({', '.join(ids)})")
+    return lines
+
+
 # marker name -> what goes between <!-- name:start --> and <!-- name:end -->
 def ledger_section() -> str:
     """Coverage of the equation ledgers: the labels each text prints, rows by status."""
@@ -107,12 +169,14 @@ def ledger_section() -> str:
 
 SECTIONS: dict[str, Callable[[], str]] = {
     "sample": sample_section,
+    "causes": causes_section,
     "schema": schema_section,
     "ledger": ledger_section,
 }
 # marker name -> the file holding its markers, relative to the README's folder
 SECTION_FILES: dict[str, str] = {
     "sample": "README.md",
+    "causes": "README.md",
     "schema": "docs/schema.md",
     "ledger": "README.md",
 }
@@ -142,7 +206,11 @@ def main(argv: list[str]) -> int:
     # the ledger only for the committed tables; the README's sections show claims and formulas
     full = _reproduce_all(equations="--tables" in argv)
     result = replace(full, equations={})
-    makers = {**SECTIONS, "sample": lambda: sample_section(result)}  # one run for all
+    makers = {
+        **SECTIONS,
+        "sample": lambda: sample_section(result),
+        "causes": lambda: causes_section(result),
+    }  # one run for all
     old: dict[Path, str] = {}
     new: dict[Path, str] = {}
     for file in dict.fromkeys(SECTION_FILES.values()):

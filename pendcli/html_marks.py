@@ -59,6 +59,16 @@ def sources_of(row: Row) -> list[str]:
     return [str(s) for s in value] if isinstance(value, list | tuple) else []
 
 
+def own_of(row: Row) -> str:
+    """A claim against the author's procedure on his printed inputs, and his value."""
+    from pendcli.core.numbers import edition_number
+
+    verdict, his = word_of(row.get("procedure_verdict")), row.get("procedure_value")
+    if not verdict or not isinstance(his, float | int):
+        return "no procedure known"
+    return f"{verdict}: {text_of(row, 'procedure')} = {edition_number(his, 6)}"
+
+
 def number_text(value: object) -> str:
     """A recomputed number as the papers write theirs (decimal comma): the edition is French."""
     from pendcli.core.numbers import edition_number
@@ -749,7 +759,8 @@ def _claim_note(row: Row) -> str:
     printed = printed_form(text_of(row, "published"))
     text = f"printed {printed}, recomputed {recomputed} {unit}".rstrip()
     cause = word_of(row.get("cause"))
-    return f"{text}; {cause}" if cause and disagrees(row) else text
+    own = f"; against his procedure, {own_of(row)}" if row.get("procedure_verdict") else ""
+    return f"{text}{own}; {cause}" if cause and disagrees(row) else text
 
 
 def _equation_note(row: Row) -> str:

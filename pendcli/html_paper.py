@@ -29,6 +29,7 @@ from pendcli.html_marks import (
     id_of,
     lines_of,
     number_text,
+    own_of,
     paragraph_spans,
     place_marks,
     printed_form,
@@ -429,7 +430,8 @@ def _claim_rows(claims: Sequence[Row], at: Mapping[str, str]) -> list[dict[str, 
         {"id": id_of(r), "at": at.get(id_of(r), ""), "css": css_of(r), "word": verdict_of(r),
          "source": text_of(r, "source"), "published": printed_form(text_of(r, "published")),
          "unit": text_of(r, "unit"), "recomputed": _cell(r.get("recomputed"), text_of(r, "unit")),
-         "exact": _cell(r.get("exact"), text_of(r, "unit")), "cause": word_of(r.get("cause")),
+         "exact": _cell(r.get("exact"), text_of(r, "unit")), "own": own_of(r),
+         "cause": word_of(r.get("cause")),
          "sources": sources_of(r), "note": text_of(r, "note")}
         for r in claims
     ]  # fmt: skip

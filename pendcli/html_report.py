@@ -22,6 +22,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pendcli.core.vocabulary import PROCEDURE_VERDICTS
 from pendcli.html_marks import (
     EQUATION_CAUSE,
     STATUS_CLASSES,
@@ -32,6 +33,7 @@ from pendcli.html_marks import (
     disagrees,
     id_of,
     locate,
+    own_of,
     place_marks,
     sources_of,
     text_of,
@@ -114,7 +116,8 @@ def _findings(
         cited = cited_formulas(equations.get(p, []), formulas.get(p, []))
         merged = {id_of(f) for fs in cited.values() for f in fs}
         for r in claims.get(p, []):
-            out.append(_entry(p, r, word_of(r.get("cause")), "", text_of(r, "note")))
+            entry = _entry(p, r, word_of(r.get("cause")), "", text_of(r, "note"))
+            out.append({**entry, "own": own_of(r)})
         for r in equations.get(p, []):
             cause, correction = EQUATION_CAUSE.get(verdict_of(r), ""), correction_of(r)
             entry = _entry(p, r, cause, correction, text_of(r, "note"))
@@ -137,6 +140,7 @@ def _entry(paper: str, row: Row, cause: str, correction: str, note: str) -> dict
         "sources": sources_of(row),
         "correction": correction,
         "note": note,
+        "own": "",  # a claim's verdict against the author's procedure (set for claims)
         "disagrees": disagrees(row),
     }
 
@@ -162,6 +166,8 @@ def report_page(
         title="pendcli reproduction report", intro=intro, papers=papers,
         verdicts={p: _tally(claims.get(p, []), verdict_of) for p in papers},
         verdict_keys=VERDICT_CLASSES, causes=causes,
+        own={p: _tally(claims.get(p, []), lambda r: own_of(r).split(":")[0]) for p in papers},
+        own_keys=(*PROCEDURE_VERDICTS, "no procedure known"),
         cause_keys=sorted({c for t in causes.values() for c in t}),
         graph=markup(propagation_svg(every_claim)), ledger=ledger, status_keys=STATUS_CLASSES,
         findings=_findings(papers, claims, formulas, equations), figs=figure_entries(figures),

@@ -7,7 +7,8 @@ The committed tables live in ``tables/regenerated/``, one CSV per table: ``<pape
 
 * a claim, formula or ledger row added or removed,
 * a changed published string (the printed value in ``tables/published`` was edited),
-* a changed verdict or ledger status (or the dimensions of a printed form, or its label or lines),
+* a changed verdict (against the truth or against the author's procedure), cause or ledger
+  status (or the dimensions of a printed form, or its label or lines),
 * a numeric column that moved beyond its tolerance (:data:`TOLERANCES`, explicit per column).
 
 ``--update`` rewrites the committed tables instead. Tolerances are relative for values and
@@ -56,6 +57,8 @@ CLAIM_COLUMNS = (
     "abs_diff",
     "rel_diff",
     "verdict",
+    "procedure_verdict",
+    "procedure_value",
     "cause",
     "from",
 )
@@ -69,6 +72,9 @@ TOLERANCES: dict[str, tuple[str, float]] = {
     "unit": ("same", 0.0),
     "source": ("same", 0.0),
     "verdict": ("same", 0.0),
+    # the verdict against the author's own procedure, and that procedure on his printed inputs
+    "procedure_verdict": ("same", 0.0),
+    "procedure_value": ("rel", 1e-9),
     "cause": ("same", 0.0),  # why a row disagrees, and the rows it inherits from
     "from": ("same", 0.0),
     "equation": ("same", 0.0),  # a ledger row's label as printed, and where it is printed

@@ -30,6 +30,7 @@ from pendcli.reproduce import ReproduceResult
 
 if TYPE_CHECKING:
     from pendcli.core.cache import ResultCache
+    from pendcli.core.claims import ClaimRow
     from pendcli.core.explain import ExplainedRow
     from pendcli.core.rows import EquationRow
     from pendcli.tradeoff import Point
@@ -54,10 +55,12 @@ order, and `fails` otherwise: residual = reference − formula over the row's sm
 claimed order its exponent, `holds` iff the observed order is at least the claimed one minus
 0.3 and the residuals stand at least 10 times above the reference's error.
 
-Every row that does not agree or hold has a cause: `rounding`, `truncation`, `misprint`,
-`arithmetic-slip`, `derivation-error` and `model-approximation` are roots (where an error
-enters); `propagated` rows only carry the error of the rows named after it (*from*), and
-agree once those are replaced by their recomputed values (`tests/test_causes.py`).
+Every printed number is judged twice: against the truth (above) and, where his procedure is
+known, against it on his own printed inputs (`faithful`: rounded or chopped, it gives his
+digits; `slip`: it does not). Every row that does not agree or hold has a cause, computed for a
+number with a procedure by the rule of `tables/README.md`: `propagated` (*from*: an input
+that is itself a slip), `arithmetic-slip`, or, faithful, `truncation` or `input-rounding`
+(correctly rounded inputs, not a slip). Every cause but `propagated` is a root.
 """
 
 
@@ -87,6 +90,14 @@ def _cause_text(cause: str | None, sources: tuple[str, ...]) -> str:
     return f" ({cause} from {', '.join(map(markdown_text, sources))})"
 
 
+def _own_text(row: ClaimRow) -> str:
+    """The verdict against his own procedure, with his value, or that none is known."""
+    if row.procedure_verdict is None or row.procedure_value is None:
+        return "no procedure of his known"
+    his = markdown_text(f"{row.procedure} = {row.procedure_value:.6g}")
+    return f"against his procedure **{row.procedure_verdict}** ({his})"
+
+
 def disagreement_digest(result: ReproduceResult) -> list[str]:
     """One bullet per printed number that is not `agrees` and per formula that `fails`,
     each with its cause (and, for a carried error, the rows it comes from)."""
@@ -97,7 +108,8 @@ def disagreement_digest(result: ReproduceResult) -> list[str]:
                 bullets.append(
                     f"- **{markdown_text(r.id)}** ({markdown_text(r.source)}): printed "
                     f"{code_span(r.published)}, recomputed {r.recomputed:.6g}: "
-                    f"**{r.verdict}**{_cause_text(r.cause, r.cause_from)}. "
+                    f"**{r.verdict}**{_cause_text(r.cause, r.cause_from)}; "
+                    f"{_own_text(r)}. "
                     f"{markdown_text(_first_sentence(r.note))}"
                 )
         for f in result.formulas.get(key, []):

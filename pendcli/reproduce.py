@@ -22,6 +22,7 @@ from pendcli.core.vocabulary import (
     CHECKED_STATUSES,
     CLAIM_VERDICTS,
     FORMULA_VERDICTS,
+    PROCEDURE_VERDICTS,
     FormulaVerdict,
 )
 from pendcli.papers.registry import evaluate, formula_checks
@@ -121,7 +122,10 @@ class ReproduceResult:
         from pendcli.summary import propagation_tree
 
         summary = self.summary_rows()
-        out: list[Section] = [("Summary: printed numbers", summary, _NUMBER_SUMMARY)]
+        out: list[Section] = [
+            ("Summary: printed numbers against the truth", summary, _NUMBER_SUMMARY),
+            ("Summary: against his own procedure, and causes", summary, _OWN_SUMMARY),
+        ]
         columns = _FORMULA_SUMMARY + (_EQUATION_SUMMARY if self.equations else ())
         out.append(("Summary: formulas and equations", summary, columns))
         rows = [r.as_dict() for key in self.papers for r in self.claims.get(key, [])]
@@ -147,7 +151,7 @@ class ReproduceResult:
     def summary_rows(self) -> list[Row]:
         """One row per paper: claims by verdict, root causes apart from propagated rows,
         formulas holding/failing, and equations checked (when the ledger was run)."""
-        from pendcli.core.claims import cause_tally
+        from pendcli.core.claims import cause_tally, procedure_tally
 
         counts = self.verdict_counts()
         out: list[Row] = []
@@ -156,6 +160,7 @@ class ReproduceResult:
             row: dict[str, object] = {
                 "paper": key,
                 **{v: counts[key].get(v, 0) for v in CLAIM_VERDICTS},
+                **procedure_tally(self.claims.get(key, [])),
                 "formulas holding": counts[key].get(f"formula {FormulaVerdict.HOLDS}", 0),
                 "formulas failing": counts[key].get(f"formula {FormulaVerdict.FAILS}", 0),
                 "root causes": tally.root_total,
@@ -186,9 +191,10 @@ def _counts(*pairs: tuple[str, str]) -> tuple[Column, ...]:
 
 
 # The terminal summary, in two tables that each fit 80 columns.
-_NUMBER_SUMMARY = _counts(
+_NUMBER_SUMMARY = _counts(("paper", "paper"), *((v, v) for v in CLAIM_VERDICTS))
+_OWN_SUMMARY = _counts(
     ("paper", "paper"),
-    *((v, v) for v in CLAIM_VERDICTS),
+    *((v, v) for v in (*PROCEDURE_VERDICTS, "no procedure")),
     ("root causes", "roots"),
     ("propagated", "carried"),
 )

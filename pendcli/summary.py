@@ -27,18 +27,23 @@ __all__ = [
 # The table's short label of each cause (the full word is in JSON, CSV and --notes).
 CAUSE_LABELS: dict[str, str] = {
     Cause.ROUNDING: "rounding",
-    Cause.TRUNCATION: "truncation",
-    Cause.PROPAGATED: "propagated",
+    Cause.TRUNCATION: "chopped",
+    Cause.INPUT_ROUNDING: "inputs",
+    Cause.PROPAGATED: "carried",
     Cause.ARITHMETIC_SLIP: "slip",
     Cause.MISPRINT: "misprint",
     Cause.DERIVATION_ERROR: "derivation",
     Cause.MODEL_APPROXIMATION: "model",
 }
 CAUSE_LEGEND = (
-    "cause: slip = arithmetic slip, derivation = derivation error, model = model\n"
-    "approximation, propagated = carries an earlier row's error (see the tree).\n"
+    "truth: against the exact model; own: against his own procedure on his printed\n"
+    "inputs, faithful or slip (— where none is known). cause: inputs = faithful to\n"
+    "correctly rounded inputs (the distance is their rounding), carried = uses an\n"
+    "earlier slip (see the tree), slip = arithmetic slip, chopped = truncation,\n"
+    "derivation = derivation error, model = model approximation.\n"
     "Notes and sources: --notes; only what does not hold: --only-failing."
 )
+NO_PROCEDURE_MARK = "—"  # the own column of a number whose procedure is not known
 
 
 def _short_id(row: Row) -> str:
@@ -84,12 +89,18 @@ def _printed(row: Row) -> str:
     return printed_for_display(row["published"])
 
 
+def _own(row: Row) -> str:
+    return str(row.get("procedure_verdict") or NO_PROCEDURE_MARK)
+
+
 def compact_claim_columns() -> tuple[Column, ...]:
+    """The two verdicts side by side: against the truth, against his own procedure."""
     return (
         Column("id", "claim", fmt=_short_id),
         Column("published", "printed", fmt=_printed, justify="right"),
         Column("recomputed", "recomputed", fmt=_recomputed, justify="right"),
-        Column("verdict", "verdict", style=_style),
+        Column("verdict", "truth", style=_style),
+        Column("procedure_verdict", "own", fmt=_own, style=_style),
         Column("cause", "cause", fmt=_cause),
     )
 

@@ -309,7 +309,7 @@ def _docs_set(tmp_path: Path) -> Path:
     def marks(*names: str) -> str:
         return "".join(f"<!-- {n}:start -->\nold {n}\n<!-- {n}:end -->\n" for n in names)
 
-    readme.write_text(f"# readme\n{marks('sample', 'ledger')}")
+    readme.write_text(f"# readme\n{marks('sample', 'causes', 'ledger')}")
     (tmp_path / "docs").mkdir()
     (tmp_path / "docs" / "schema.md").write_text(marks("schema"))
     return readme

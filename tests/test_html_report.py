@@ -155,9 +155,13 @@ def test_the_segment_test_itself_sees_a_crossing() -> None:
 
 
 def _graph_of(paper: str) -> tuple[list[str], list[tuple[str, str]]]:
-    claims = load_paper_table(paper).claims
-    ids = {c.id for c in claims}
-    edges = [(s, c.id) for c in claims for s in c.cause_from if s in ids]
+    """A layered graph of the paper's own: each printed input to the numbers the author's
+    procedures compute from it (a superset of the propagation of slips, which is small)."""
+    from pendcli.papers.registry import paper as registered
+
+    procedures = registered(paper).author_procedures
+    found = procedures() if procedures is not None else {}
+    edges = [(s, i) for i, p in found.items() for s in p.inputs]
     return sorted({n for e in edges for n in e}), edges
 
 

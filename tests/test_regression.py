@@ -9,8 +9,11 @@ import pytest
 from pendcli.core.errors import PendcliError
 from pendcli.regression import TOLERANCES, compare_tables
 
-HEADER = "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,cause,from\n"
-ROW = 'x.a,"5,14",,5.135622301840683,,-0.004377698159317,-0.00085,agrees,,\n'
+HEADER = (
+    "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,procedure_verdict,"
+    "procedure_value,cause,from\n"
+)
+ROW = 'x.a,"5,14",,5.135622301840683,,-0.004377698159317,-0.00085,agrees,,,,\n'
 
 
 def test_identical_tables_have_no_drift():
@@ -28,6 +31,7 @@ def test_last_bit_noise_is_within_tolerance():
         (ROW.replace("5.135622301840683", "5.1357"), "recomputed"),
         (ROW.replace("agrees", "truncated"), "verdict"),
         (ROW.replace('"5,14"', '"5,15"'), "published"),
+        (ROW.replace("agrees,,", "agrees,slip,"), "procedure_verdict"),
     ],
 )
 def test_real_changes_are_drift(changed, column):
@@ -63,8 +67,8 @@ def test_malformed_committed_table_names_the_file(bad):
         ("", "empty table; expected the header line id,published,unit"),
         (HEADER.replace("verdict", "verdicts") + ROW, "line 1: header"),
         (HEADER.replace("unit,", "") + ROW, "line 1: header"),
-        (HEADER + ROW + "x.b,1\n", "line 3 has 2 fields; expected 10"),
-        (HEADER + ROW.replace("agrees", "agrees,extra"), "line 2 has 11 fields"),
+        (HEADER + ROW + "x.b,1\n", "line 3 has 2 fields; expected 12"),
+        (HEADER + ROW.replace("agrees", "agrees,extra"), "line 2 has 13 fields"),
         (HEADER + ROW + ROW, "line 3 repeats id 'x.a'"),
         (HEADER + ROW.replace("x.a", ""), "line 2 has an empty id"),
         (HEADER + ROW + ROW.replace("x.a", "x.b").replace("-0.00085", '"0,1"'), "line 3, column"),

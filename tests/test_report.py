@@ -55,8 +55,8 @@ RESULT = ReproduceResult(
 
 def test_digest_lists_each_claim_and_formula_that_does_not_hold():
     assert disagreement_digest(RESULT) == [
-        "- **demo.b** (p. 1): printed `8,41`, recomputed 8.4172: **truncated** (truncation). "
-        "read 8,41.",
+        "- **demo.b** (p. 1): printed `8,41`, recomputed 8.4172: **truncated** (truncation); "
+        "no procedure of his known. read 8,41.",
         "- **demo.g** (9): `a + b` fails; found `a − b`.",
     ]
 
@@ -75,6 +75,9 @@ def test_tally_and_summary_count_each_verdict():
             "truncated": 1,
             "last-digit": 0,
             "discrepant": 0,
+            "faithful": 0,
+            "slip": 0,
+            "no procedure": 2,
             "formulas holding": 1,
             "formulas failing": 1,
             "root causes": 1,

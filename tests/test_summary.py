@@ -54,6 +54,14 @@ def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary():
     # the root slips of the tree are the rows the causes name, each once per descendant chain
     assert "example.time.2 (arithmetic-slip)" in text
     assert "└ example.interval.1 (propagated)" in text
+    # the two verdicts side by side: against the truth, against his own procedure
+    by_id: dict[str, list[str]] = {}
+    for line in lines:  # the claims table's line of each id (the tree names some again)
+        if line.strip():
+            by_id.setdefault(line.split()[0], line.split())
+    assert by_id["example.time.3"][3:] == ["last-digit", "faithful", "inputs"]
+    assert by_id["example.time.2"][3:] == ["discrepant", "slip", "slip"]
+    assert by_id["j2_zeros.2"][3:] == ["truncated", "—", "chopped"]  # no procedure known
     assert len(lines) < 260  # no notes: 3,336 lines before issue 13
 
 
@@ -77,7 +85,7 @@ def test_equations_command_lists_each_label_and_filters_by_status(monkeypatch, s
     code, out, err = invoke(*args)
     rows = json.loads(out)["equations"]
     assert rows and {r["status"] for r in rows} == {"fails"}
-    assert all(r["corrected_note"] and r["check_corrected"] for r in rows)  # each corrected
+    assert all(r["corrected_note"] and r["corrected"] for r in rows)  # each corrected
     assert_clean_error(*invoke("equations", "--status", "wrong")[::2])
 
 

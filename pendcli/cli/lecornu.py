@@ -56,12 +56,13 @@ def claims(
     """Every printed number of the memoir against its recomputation, with a verdict."""
     from pendcli.core.checks import real_in_range
     from pendcli.core.claims import evaluate_paper
-    from pendcli.papers.lecornu.claims import recompute
+    from pendcli.papers.lecornu.claims import author_procedures, recompute
     from pendcli.papers.lecornu.model import G_RANGE, constant
     from pendcli.render.views import claim_columns
 
     g = real_in_range("g", constant("g") if g is None else g, *G_RANGE, "m/s²")
-    rows = [r.as_dict() for r in evaluate_paper("lecornu", lambda: recompute(g))]
+    claims = evaluate_paper("lecornu", lambda: recompute(g), author_procedures())
+    rows = [r.as_dict() for r in claims]
     emit(
         fmt,
         [(f"Lecornu: printed against recomputed (g = {g:g} m/s²)", rows, claim_columns(rows))],

@@ -1,27 +1,36 @@
-"""Why a printed value disagrees: the author's own procedure, and the checks behind a cause.
+"""Why a printed value disagrees: the author's own procedure, and the one rule for causes.
 
-A claim's ``cause`` (``tables/published/<paper>.toml``, one of :data:`CAUSES`) says why its
-printed value differs from the recomputed one. A cause is a statement about a computation,
-so it is checked against one. A paper's claims module may expose
-``author_procedures() -> dict[id, Procedure]``: how the author obtained a printed value from
-his earlier printed values (his lengths from his rounded zeros, his times from his lengths).
-The error of a printed value P against the recomputation r then splits in two
-(:func:`split_error`), with a = the procedure on his printed inputs:
+A printed number gets two verdicts. *Against the truth* (:mod:`pendcli.core.verdict`): the
+author's model done exactly. *Against his own procedure*: a paper's claims module may expose
+``author_procedures() -> dict[id, Procedure]``, how the author obtained a printed value from
+his earlier printed values (his lengths from his rounded zeros, his times from his lengths);
+a = the procedure on his printed inputs, and the number is
 
-* *inherited*, a - r: what his inputs carry in;
-* *own*, P - a: what he added; none when a rounds or chops to P (his last digit).
+``faithful``
+    when a, rounded or chopped at the printed precision (he does both), is the printed value:
+    his digits follow from his printed inputs;
+``slip``
+    when it is not. A number with no known procedure has neither (never guessed).
 
-``propagated`` (``from``: the rows it inherits from)
-    the inherited part is the larger (or his own is none), and with the ``from`` sources at
-    their recomputed values (the other inputs as printed) the procedure agrees with r at the
-    printed precision (:func:`corrected_value`): correcting the sources removes the error.
+**The rule** (:func:`rule_cause`), for a number with a procedure that does not agree with the
+truth. An input *carries a slip* when it is a slip against its own procedure, or is itself
+``propagated``, or (an input with no procedure) the table gives it a cause of
+:data:`SLIP_CAUSES`. An input correctly rounded is not a slip: it carries only its rounding.
+
+``propagated`` (``from``: the inputs that carry a slip)
+    some input carries a slip, and either the number is faithful to his inputs or the part of
+    its error those inputs bring in (a - r, r the recomputation) exceeds his own (P - a);
 ``arithmetic-slip``
-    his own part is not none and is the larger: his printed inputs do not give P.
-``rounding`` / ``truncation``
-    r rounded / chopped at the printed precision is P.
+    a slip against his procedure, his inputs carrying none (or less than his own part);
+``truncation``
+    faithful, and the truth chopped is the printed value while his own a needs chopping too;
+``input-rounding``
+    faithful otherwise: his procedure on his correctly rounded inputs gives his digits, and
+    the number's distance from the truth is that rounding carried through.
 
-A row with both parts gets the larger as its cause; its note names the other.
-``misprint``, ``derivation-error`` and ``model-approximation`` are explained in the note.
+A number that agrees with the truth has no cause. For a number without a procedure the cause
+is data (``tables/published``): ``rounding`` / ``truncation`` (the truth rounded / chopped
+is the printed value), ``misprint``, ``derivation-error``, ``model-approximation``.
 """
 
 from __future__ import annotations
@@ -29,22 +38,27 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
+from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber
 from pendcli.core.verdict import Verdict, judge
-from pendcli.core.vocabulary import CAUSES, ROOT_CAUSES
+from pendcli.core.vocabulary import CAUSES, ROOT_CAUSES, SLIP_CAUSES, Cause, ProcedureVerdict
 
 __all__ = [
     "CAUSES",
     "ROOT_CAUSES",
+    "SLIP_CAUSES",
     "ErrorSplit",
+    "Judged",
+    "OwnVerdict",
     "Procedure",
     "chops_to",
     "corrected_value",
+    "own_verdicts",
+    "procedure_verdict",
     "rounds_to",
+    "rule_cause",
     "split_error",
 ]
-
-# Every cause except "propagated": where an error starts.
 
 
 @dataclass(frozen=True)
@@ -72,7 +86,8 @@ def chops_to(number: PrintedNumber, value: float) -> bool:
 
 @dataclass(frozen=True)
 class ErrorSplit:
-    """The error P - r of a printed value split at the author's own value a (module doc)."""
+    """The error P - r of a printed value split at the author's own value a: a - r is what
+    his inputs bring in, P - a what he added."""
 
     author: float  # a: his procedure on his printed inputs
     inherited: float  # a - r
@@ -103,3 +118,91 @@ def corrected_value(
     inputs as printed: what he would have printed had those sources been right."""
     values = {i: (recomputed[i] if i in sources else printed[i]) for i in procedure.inputs}
     return procedure(values)
+
+
+# --- against his own procedure, and the rule ------------------------------------------------
+
+
+def procedure_verdict(number: PrintedNumber, author: float) -> ProcedureVerdict:
+    """``faithful`` when his own value ``author`` rounds or chops to the printed one."""
+    faithful = rounds_to(number, author) or chops_to(number, author)
+    return ProcedureVerdict.FAITHFUL if faithful else ProcedureVerdict.SLIP
+
+
+def rule_cause(
+    number: PrintedNumber,
+    recomputed: float,
+    author: float,
+    slip_inputs: tuple[str, ...],
+    comparison: str = "equal",
+) -> tuple[Cause | None, tuple[str, ...]]:
+    """The cause of a printed number with a known procedure, and its ``from`` (module doc):
+    ``author`` is his procedure on his printed inputs, ``slip_inputs`` those that carry a slip."""
+    if judge(number, recomputed, comparison).verdict is Verdict.AGREES:
+        return None, ()
+    faithful = procedure_verdict(number, author) is ProcedureVerdict.FAITHFUL
+    own = 0.0 if faithful else number.value - author
+    if slip_inputs and (faithful or abs(author - recomputed) > abs(own)):
+        return Cause.PROPAGATED, slip_inputs
+    if not faithful:
+        return Cause.ARITHMETIC_SLIP, ()
+    if chops_to(number, recomputed) and not rounds_to(number, author):
+        return Cause.TRUNCATION, ()
+    return Cause.INPUT_ROUNDING, ()
+
+
+@dataclass(frozen=True)
+class Judged:
+    """What the rule reads of one claim: its printed number, the truth, the table's cause."""
+
+    number: PrintedNumber
+    recomputed: float
+    cause: str | None = None  # the table's (read only for an input without a procedure)
+    comparison: str = "equal"
+
+
+@dataclass(frozen=True)
+class OwnVerdict:
+    """A printed number against his own procedure, and the cause the rule derives."""
+
+    verdict: ProcedureVerdict
+    value: float  # his procedure on his printed inputs
+    procedure: Procedure
+    cause: Cause | None
+    cause_from: tuple[str, ...]
+
+
+def own_verdicts(
+    claims: Mapping[str, Judged], procedures: Mapping[str, Procedure]
+) -> dict[str, OwnVerdict]:
+    """Every number with a procedure against it, its cause by the rule (inputs first)."""
+    printed = {i: c.number.value for i, c in claims.items()}
+    done: dict[str, OwnVerdict] = {}
+    visiting: set[str] = set()
+
+    def carries_slip(source: str) -> bool:
+        if source in procedures:
+            own = visit(source)
+            return own.verdict is ProcedureVerdict.SLIP or own.cause is Cause.PROPAGATED
+        return claims[source].cause in (*SLIP_CAUSES, Cause.PROPAGATED)
+
+    def visit(claim_id: str) -> OwnVerdict:
+        if claim_id in done:
+            return done[claim_id]
+        if claim_id in visiting:
+            raise PendcliError(f"{claim_id}: the author's procedures form a cycle")
+        visiting.add(claim_id)
+        procedure, claim = procedures[claim_id], claims[claim_id]
+        author = procedure(printed)
+        slips = tuple(s for s in procedure.inputs if carries_slip(s))
+        cause, sources = rule_cause(claim.number, claim.recomputed, author, slips, claim.comparison)
+        verdict = procedure_verdict(claim.number, author)
+        done[claim_id] = OwnVerdict(verdict, author, procedure, cause, sources)
+        return done[claim_id]
+
+    unknown = sorted(
+        {*procedures, *(i for p in procedures.values() for i in p.inputs)} - set(claims)
+    )
+    if unknown:
+        raise PendcliError(f"an author's procedure names no claim of the table: {unknown[0]}")
+    return {claim_id: visit(claim_id) for claim_id in procedures}

@@ -15,6 +15,7 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
 
+from pendcli.core.causes import Judged, Procedure, own_verdicts
 from pendcli.core.errors import PendcliError
 from pendcli.core.rows import ClaimRow, FormulaRow, Recomputed
 from pendcli.core.tables import (
@@ -27,6 +28,7 @@ from pendcli.core.verdict import judge
 from pendcli.core.vocabulary import (
     CAUSES,
     FORMULA_VERDICTS,
+    PROCEDURE_VERDICTS,
     ROOT_CAUSES,
     Cause,
     FormulaVerdict,
@@ -43,9 +45,11 @@ __all__ = [
     "Recomputed",
     "cause_tally",
     "evaluate_paper",
+    "procedure_tally",
     "shared_formula_rows",
     "sharing_formula_rows",
     "with_causes",
+    "with_own_verdicts",
 ]
 
 
@@ -105,10 +109,49 @@ def join_claims(table: PaperTable, results: Mapping[str, Recomputed]) -> list[Cl
     return [make_row(c, results[c.id]) for c in table.claims]
 
 
-def evaluate_paper(key: str, recompute: Callable[[], Mapping[str, Recomputed]]) -> list[ClaimRow]:
-    """Judge every published claim of paper ``key`` against ``recompute()``."""
+def evaluate_paper(
+    key: str,
+    recompute: Callable[[], Mapping[str, Recomputed]],
+    procedures: Mapping[str, Procedure] | None = None,
+) -> list[ClaimRow]:
+    """Judge every published claim of paper ``key`` against ``recompute()`` (the truth) and,
+    where the author's ``procedures`` know how he got it, against his own procedure."""
     table = load_paper_table(key)
-    return join_claims(table, recompute())
+    rows = join_claims(table, recompute())
+    return with_own_verdicts(table, rows, procedures) if procedures else rows
+
+
+def with_own_verdicts(
+    table: PaperTable, rows: Sequence[ClaimRow], procedures: Mapping[str, Procedure]
+) -> list[ClaimRow]:
+    """``rows`` with their verdict against the author's procedure, and for those that have
+    one the cause the rule computes (:mod:`pendcli.core.causes`): the table may not state it."""
+    stated = [c.id for c in table.claims if c.id in procedures and c.cause is not None]
+    if stated:
+        raise PendcliError(
+            f"{table.where}: claim {stated[0]}: its cause is computed from the author's "
+            "procedure by the rule of tables/README.md, never written; remove its 'cause'"
+        )
+    entries = {c.id: c for c in table.claims}
+    judged = {
+        r.id: Judged(entries[r.id].number, r.recomputed, r.cause, entries[r.id].comparison)
+        for r in rows
+    }
+    own = own_verdicts(judged, procedures)
+    return [
+        dataclasses.replace(
+            r,
+            procedure_verdict=o.verdict,
+            procedure_value=o.value,
+            procedure=o.procedure.text,
+            procedure_inputs=o.procedure.inputs,
+            cause=o.cause,
+            cause_from=o.cause_from,
+        )
+        if (o := own.get(r.id)) is not None
+        else r
+        for r in rows
+    ]
 
 
 # Formula rows computed by the running reproduction, by paper: set only inside
@@ -195,3 +238,15 @@ def cause_tally(rows: Iterable[ClaimRow | FormulaRow]) -> CauseTally:
         else:
             roots[row.cause] += 1
     return CauseTally(roots, propagated, unexplained, tuple(edges))
+
+
+NO_PROCEDURE = "no procedure"  # the tally's key for the numbers whose procedure is not known
+
+
+def procedure_tally(rows: Iterable[ClaimRow]) -> dict[str, int]:
+    """The claims by verdict against the author's procedure (faithful, slip), and those
+    with no known procedure, in that order."""
+    counts = {str(v): 0 for v in PROCEDURE_VERDICTS} | {NO_PROCEDURE: 0}
+    for row in rows:
+        counts[NO_PROCEDURE if row.procedure_verdict is None else str(row.procedure_verdict)] += 1
+    return counts

@@ -12,7 +12,7 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from pendcli.core.vocabulary import EquationStatus, FormulaVerdict, Verdict
+from pendcli.core.vocabulary import EquationStatus, FormulaVerdict, ProcedureVerdict, Verdict
 
 __all__ = ["NO_STATUS", "ClaimRow", "EquationRow", "FormulaRow", "Recomputed", "equation_notes"]
 
@@ -51,11 +51,24 @@ class ClaimRow:
     cause: str | None = None  # why it disagrees (one of CAUSES), None when nothing to explain
     cause_from: tuple[str, ...] = ()  # the rows it inherits its error from ("propagated")
     as_printed: str = ""  # the OCR's text of the printed value, where `published` normalises it
+    # against his own procedure (core/causes): None where no procedure of his is known
+    procedure_verdict: ProcedureVerdict | None = None
+    procedure_value: float | None = None  # his procedure on his printed inputs
+    procedure: str = ""  # the procedure, as he does it ("(1 m - l)/b"); "" when none is known
+    procedure_inputs: tuple[str, ...] = ()  # the claims it reads, as printed
 
     def as_dict(self) -> dict[str, object]:
-        """The row as JSON, CSV and the tables show it (``as_printed`` is the HTML's only)."""
-        skip = ("cause_from", "as_printed")
-        out = {k: _json_number(v) for k, v in self.__dict__.items() if k not in skip}
+        """The row as JSON, CSV and the tables show it (``as_printed`` is the HTML's only):
+        the verdict against his own procedure beside the one against the truth."""
+        own = ("procedure_verdict", "procedure_value", "procedure", "procedure_inputs")
+        skip = ("cause_from", "as_printed", *own)
+        out: dict[str, object] = {}
+        for k, v in self.__dict__.items():
+            if k not in skip:
+                out[k] = _json_number(v)
+            if k == "verdict":
+                out |= {o: _json_number(getattr(self, o)) for o in own}
+        out["procedure_inputs"] = list(self.procedure_inputs)
         out["from"] = list(self.cause_from)
         return out
 

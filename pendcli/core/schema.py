@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pendcli.core.check_kinds import KINDS
 from pendcli.core.claims import CAUSES, FORMULA_VERDICTS
 from pendcli.core.verdict import CLAIM_VERDICTS
-from pendcli.core.vocabulary import STATUSES
+from pendcli.core.vocabulary import PROCEDURE_VERDICTS, STATUSES
 from pendcli.papers.registry import PAPERS  # the built-in papers the JSON describes
 
 __all__ = ["DOCUMENT", "Field", "RowKind", "check_row", "markdown"]
@@ -62,9 +62,13 @@ _TEXT, _NUMBER, _OPTIONAL = ("string",), ("number",), ("number", "null")
 _OPT_TEXT = ("string", "null")
 _CAUSE_MEANING = (
     "why it does not agree or hold, null when nothing needs explaining; every cause but "
-    "propagated is a root"
+    "propagated is a root; computed by the rule of tables/README.md where the author's "
+    "procedure is known"
 )
-_FROM_MEANING = "ids of the rows it inherits its error from when `cause` is propagated, else []"
+_FROM_MEANING = (
+    "ids of the rows it uses that are themselves a slip (or carry one) when `cause` is "
+    "propagated, else []"
+)
 
 CLAIMS = RowKind(
     "claims",
@@ -78,7 +82,25 @@ CLAIMS = RowKind(
         Field("published", _TEXT, "the printed string, exactly as printed"),
         Field("published_value", _NUMBER, "the printed string's value"),
         Field("recomputed", _NUMBER, "the author's model, done exactly"),
-        Field("verdict", _TEXT, "see *How verdicts are decided*", CLAIM_VERDICTS),
+        Field(
+            "verdict",
+            _TEXT,
+            "against the truth (`recomputed`); see *How verdicts are decided*",
+            CLAIM_VERDICTS,
+        ),
+        Field(
+            "procedure_verdict",
+            _OPT_TEXT,
+            "against his own procedure on his printed inputs: faithful when its result, "
+            "rounded or chopped at the printed precision, is the printed value, slip when not; "
+            "null when no procedure of his is known (never guessed)",
+            PROCEDURE_VERDICTS,
+        ),
+        Field(
+            "procedure_value", _OPTIONAL, "his procedure on his printed inputs; null: none known"
+        ),
+        Field("procedure", _TEXT, "his procedure, as he does it; empty when none is known"),
+        Field("procedure_inputs", ("array",), "ids of the printed values his procedure reads"),
         Field("abs_diff", _NUMBER, "recomputed − published"),
         Field("rel_diff", _OPTIONAL, "abs_diff / |published|; null when published is 0"),
         Field("digits", _NUMBER, "agreeing significant digits, at most 17"),

@@ -15,11 +15,14 @@ __all__ = [
     "CHECKED_STATUSES",
     "CLAIM_VERDICTS",
     "FORMULA_VERDICTS",
+    "PROCEDURE_VERDICTS",
     "ROOT_CAUSES",
+    "SLIP_CAUSES",
     "STATUSES",
     "Cause",
     "EquationStatus",
     "FormulaVerdict",
+    "ProcedureVerdict",
     "Verdict",
     "disagrees_word",
 ]
@@ -32,6 +35,14 @@ class Verdict(StrEnum):
     TRUNCATED = "truncated"
     LAST_DIGIT = "last-digit"
     DISCREPANT = "discrepant"
+
+
+class ProcedureVerdict(StrEnum):
+    """A printed number against the author's own procedure on his own printed inputs
+    (:mod:`pendcli.core.causes`): his digits follow from them with his rounding, or not."""
+
+    FAITHFUL = "faithful"
+    SLIP = "slip"
 
 
 class FormulaVerdict(StrEnum):
@@ -56,6 +67,7 @@ class Cause(StrEnum):
 
     ROUNDING = "rounding"
     TRUNCATION = "truncation"
+    INPUT_ROUNDING = "input-rounding"
     PROPAGATED = "propagated"
     ARITHMETIC_SLIP = "arithmetic-slip"
     MISPRINT = "misprint"
@@ -64,6 +76,7 @@ class Cause(StrEnum):
 
 
 CLAIM_VERDICTS: tuple[Verdict, ...] = tuple(Verdict)
+PROCEDURE_VERDICTS: tuple[ProcedureVerdict, ...] = tuple(ProcedureVerdict)
 FORMULA_VERDICTS: tuple[FormulaVerdict, ...] = tuple(FormulaVerdict)
 STATUSES: tuple[EquationStatus, ...] = tuple(EquationStatus)
 # the statuses whose row names a check (a definition or a not-checkable row has none)
@@ -75,6 +88,9 @@ CHECKED_STATUSES: tuple[EquationStatus, ...] = (
 CAUSES: tuple[Cause, ...] = tuple(Cause)
 # where an error enters (every cause but one that only carries an earlier row's error)
 ROOT_CAUSES: tuple[Cause, ...] = tuple(c for c in Cause if c is not Cause.PROPAGATED)
+# the causes that are the author's own slip: a row that uses a value with one of these (or one
+# that carries it, propagated) inherits a slip; every other root is a rounding or a model
+SLIP_CAUSES: tuple[Cause, ...] = (Cause.ARITHMETIC_SLIP, Cause.MISPRINT, Cause.DERIVATION_ERROR)
 
 # The words of a row that does not agree (a claim), hold (a formula) or hold as printed or
 # read (an equation: failing or misprinted).

@@ -96,10 +96,13 @@ def resolve_papers(name: str | None) -> tuple[str, ...]:
 
 
 def evaluate(key: str) -> list[ClaimRow]:
-    """Every published claim of paper ``key`` judged against its recomputation."""
+    """Every published claim of paper ``key`` judged against its recomputation and, where the
+    paper knows the author's procedure, against that procedure on his printed inputs."""
     from pendcli.core.claims import evaluate_paper
 
-    return evaluate_paper(key, paper(key).recompute)
+    found = paper(key)
+    procedures = found.author_procedures
+    return evaluate_paper(key, found.recompute, procedures() if procedures else None)
 
 
 def formula_checks(key: str) -> list[FormulaRow]:

@@ -107,8 +107,12 @@ def _fitting_table_class() -> type[Table]:
             cells = [[str(h), *col] for h, col in zip(headers, self.cells, strict=True)]
             lower = [max(_longest_token(t) for t in col) for col in cells]
             upper = [max(_longest_line(t) for t in col) for col in cells]
-            # Per column: one cell of right padding, and the box's blank rule between columns.
+            # Per column: one cell of right padding, and the box's blank rule between columns;
+            # where the words do not fit so, the blank rule alone (one space between columns).
             padding = 2 * len(self.columns) - 1
+            if sum(lower) + padding > options.max_width:
+                padding = len(self.columns) - 1
+                self.padding = (0, 0, 0, 0)
             widths = fitted_widths(lower, upper, options.max_width - padding)
             if widths is not None and sum(widths) + padding > options.max_width:
                 yield from _records(self, headers, options.max_width)

@@ -10,7 +10,7 @@ from collections.abc import Sequence
 
 from pendcli.core.numbers import parse_printed
 from pendcli.core.rows import equation_notes
-from pendcli.core.vocabulary import FormulaVerdict, Verdict
+from pendcli.core.vocabulary import FormulaVerdict, ProcedureVerdict, Verdict
 from pendcli.render.columns import Column, Row, fmt_float
 
 __all__ = [
@@ -31,7 +31,10 @@ VERDICT_STYLES: dict[str, str] = {
     Verdict.LAST_DIGIT: "yellow",
     Verdict.DISCREPANT: "bold red",
     FormulaVerdict.FAILS: "bold red",  # and an equation that fails
+    ProcedureVerdict.FAITHFUL: "green",
+    ProcedureVerdict.SLIP: "bold red",
 }
+NO_PROCEDURE = "no procedure known"  # a number whose author's procedure is not known
 
 
 # The OCR transcription's markup of units written as superscripts in the papers (1^m,22 is
@@ -82,6 +85,28 @@ def _verdict_style(text: str) -> str | None:
     return VERDICT_STYLES.get(text)
 
 
+def _own(row: Row) -> str:
+    """The verdict against his own procedure, and the procedure; or that none is known."""
+    verdict = row.get("procedure_verdict")
+    if verdict is None:
+        return NO_PROCEDURE
+    value = row.get("procedure_value")
+    shown = f" = {value:.6g}" if isinstance(value, float | int) else ""
+    return f"{verdict}: {row.get('procedure')}{shown}" if row.get("procedure") else str(verdict)
+
+
+def _own_style(text: str) -> str | None:
+    return VERDICT_STYLES.get(text.split(":", 1)[0])
+
+
+def _cause(row: Row) -> str:
+    """The cause, and for a carried error the rows it comes from."""
+    cause, sources = row.get("cause"), row.get("from") or []
+    if not cause:
+        return ""
+    return f"{cause} from {', '.join(map(str, sources))}" if sources else str(cause)
+
+
 def _observed(row: Row) -> str:
     order = row.get("observed_order")
     return "" if order is None else f"{order:.2f}"
@@ -111,7 +136,9 @@ CLAIM_COLUMNS: tuple[Column, ...] = (
     ),
     Column("unit", "unit"),
     Column("rel_diff", "rel. diff", fmt=_rel, justify="right"),
-    Column("verdict", "verdict", style=_verdict_style),
+    Column("verdict", "against the truth", style=_verdict_style),
+    Column("procedure_verdict", "against his procedure", fmt=_own, style=_own_style),
+    Column("cause", "cause", fmt=_cause),
     # Notes can run to paragraphs: the terminal table shows their start, JSON, CSV, Markdown
     # and the report show them whole.
     Column("note", "note"),  # whole: the table wraps prose at spaces

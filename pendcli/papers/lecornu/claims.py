@@ -416,15 +416,17 @@ def recompute(g: float | None = None) -> dict[str, Recomputed]:
 # --- the author's own procedures, from his printed values --------------------------------
 
 
-def _ratio(numerator: str, denominator: str) -> Procedure:
-    return Procedure((numerator, denominator), lambda j, j_first: j / j_first, "J_0 / J_0(17,96)")
+def _text(claim_id: str) -> str:
+    """A printed value as the paper prints it, for a procedure's text: "0,00313"."""
+    return printed_number(claim_id).text
 
 
 def _lengths_from_zeros(prefix: str, zeros: list[str]) -> dict[str, Procedure]:
-    """l = 0,00313 z² (16), his coefficient times his printed zero, for each row."""
+    """l = (b²/4g) z² (16), his printed coefficient times his printed zero, for each row."""
     c = "lecornu.coefficient_b2_4g"
+    text = f"{_text(c)}·z² (16)"
     return {
-        f"{prefix}{k}": Procedure((c, z), lambda coef, zero: coef * zero**2, "0,00313 z²")
+        f"{prefix}{k}": Procedure((c, z), lambda coef, zero: coef * zero**2, text)
         for k, z in enumerate(zeros, start=1)
     }
 
@@ -433,16 +435,17 @@ def _times_procedures(length: float, speed: float) -> dict[str, Procedure]:
     """Times (1 m - l)/b from his lengths, and intervals as differences of his times."""
     out: dict[str, Procedure] = {}
     times = [f"lecornu.example.time.{k}" for k in range(1, PRINTED_ELONGATIONS + 1)]
+    b = _comma(speed)
     for k, t in enumerate(times, start=1):
         lk = f"lecornu.example.length.{k}"
         out[t] = Procedure(
-            (lk,), lambda printed_length: (length - printed_length) / speed, "(1 m - l)/b"
+            (lk,), lambda printed_length: (length - printed_length) / speed, f"({length:g} - l)/{b}"
         )
     end = "lecornu.example.time_zero_length"
-    out[end] = Procedure((), lambda: length / speed, "1 m / b")
-    for k, (a, b) in enumerate(zip(times, [*times[1:], end], strict=True), start=1):
+    out[end] = Procedure((), lambda: length / speed, f"{length:g}/{b}")
+    for k, (a, later) in enumerate(zip(times, [*times[1:], end], strict=True), start=1):
         out[f"lecornu.example.interval.{k}"] = Procedure(
-            (a, b), lambda earlier, later: later - earlier, "difference of his times"
+            (a, later), lambda earlier, then: then - earlier, "difference of his times"
         )
     return out
 
@@ -455,13 +458,18 @@ def _amplitude_procedures() -> dict[str, Procedure]:
     for k in range(1, PRINTED_ELONGATIONS + 1):
         z = f"lecornu.j2_zeros.{k}"
         out[f"lecornu.j0_at_j2_zeros.{k}"] = Procedure(
-            (z,), lambda zero: float(j0(zero)), "J_0 at his zero"
+            (z,), lambda zero: float(j0(zero)), f"J_0 at his zero {_text(z)}"
         )
     first = f"lecornu.j0_at_j2_zeros.{PRINTED_ELONGATIONS}"  # θ0, at z = 17,96
+    last_zero = _text(f"lecornu.j2_zeros.{PRINTED_ELONGATIONS}")
     for k, zi in enumerate((4, 3, 2, 1), start=2):
-        out[f"lecornu.deviation.{k}"] = _ratio(f"lecornu.j0_at_j2_zeros.{zi}", first)
+        numerator = f"lecornu.j0_at_j2_zeros.{zi}"
+        text = f"his J_0({_text(f'lecornu.j2_zeros.{zi}')})/J_0({last_zero})"
+        out[f"lecornu.deviation.{k}"] = Procedure(
+            (numerator, first), lambda j, j_first: j / j_first, text
+        )
     out["lecornu.deviation.zero_length"] = Procedure(
-        (first,), lambda j_first: 1 / j_first, "1 / J_0(17,96)"
+        (first,), lambda j_first: 1 / j_first, f"1/his J_0({last_zero})"
     )
     return out
 
@@ -471,7 +479,7 @@ def author_procedures() -> dict[str, Procedure]:
 
     The inputs are claim ids: evaluated on the printed values these give his own figures
     (the "Author's procedure" of the notes); on the recomputed values, the recomputation.
-    :mod:`pendcli.core.causes` uses them to check every cause of the table.
+    :mod:`pendcli.core.causes` judges each number against them and derives its cause.
     """
     descending = [f"lecornu.j2_zeros.{k}" for k in range(PRINTED_ELONGATIONS, 0, -1)]
     j1 = [f"lecornu.j1_zeros.{k}" for k in range(1, 7)]
@@ -482,8 +490,10 @@ def author_procedures() -> dict[str, Procedure]:
         **_amplitude_procedures(),
     }
     smallest = "lecornu.j1_zeros.6"
-    out["lecornu.x_bound"] = Procedure((smallest,), lambda zero: zero**2 / 4, "3,83²/4")
+    out["lecornu.x_bound"] = Procedure(
+        (smallest,), lambda zero: zero**2 / 4, f"{_text(smallest)}²/4"
+    )
     out["lecornu.mean_pendulum_coefficient"] = Procedure(
-        (), lambda: math.pi * (7 * math.pi**2 - 3) / 32, "π(7π² - 3)/32"
+        (), lambda: math.pi * (7 * math.pi**2 - 3) / 32, "his π(7π² - 3)/32"
     )
     return out
