@@ -53,6 +53,7 @@ __all__ = [
     "coverage",
     "equation_rows",
     "evaluate",
+    "label_offsets",
     "labels_in_text",
     "load_ledger",
     "measured",
@@ -105,6 +106,11 @@ def labels_in_text(text: str) -> list[str]:
     ``\\tag``, or in the margin at its end): a reference in the prose ("la formule (5)"), a
     year, a page number or a citation is never a label.
     """
+    return [label for _, label in label_offsets(text)]
+
+
+def label_offsets(text: str) -> list[tuple[int, str]]:
+    """(character offset, label) of every label :func:`labels_in_text` finds, in order."""
     found: list[tuple[int, str]] = []
     for display in _DISPLAY.finditer(text):
         body = "$$" + display.group(1) + "$$"
@@ -112,7 +118,7 @@ def labels_in_text(text: str) -> list[str]:
         for pattern in (_AT_START, _TAGGED, _AT_END):
             for match in pattern.finditer(body):
                 found.append((offset + match.start(1), f"({_normalise(match.group(1))})"))
-    return [label for _, label in sorted(set(found))]
+    return sorted(set(found))
 
 
 @dataclass(frozen=True)

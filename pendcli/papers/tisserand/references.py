@@ -34,6 +34,12 @@ from pendcli.papers.tisserand.references_numeric import (
     numbers_displacement,
     numbers_numerical_application,
 )
+from pendcli.papers.tisserand.references_prose import (
+    reference_angles_second_order,
+    reference_ellipse_axes,
+    reference_start_of_psi,
+    reference_uniform_rotation,
+)
 from pendcli.papers.tisserand.references_series import (
     motion_series,
     reference_cited_in_kpt,
@@ -150,6 +156,12 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_resal": reference_resal,
     "reference_second_approximation": reference_second_approximation,
     "reference_third_approximation": reference_third_approximation,
+    # the sentences' own claims (the reading record): Resal's ellipse, ψ = 0 at t = 0, the
+    # axes of (17), the angles' order
+    "reference_uniform_rotation": reference_uniform_rotation,
+    "reference_start_of_psi": reference_start_of_psi,
+    "reference_ellipse_axes": reference_ellipse_axes,
+    "reference_angles_second_order": reference_angles_second_order,
     # p. 454: the numerical application
     "numbers_numerical_application": numbers_numerical_application,
     "numbers_displacement": numbers_displacement,
