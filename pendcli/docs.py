@@ -141,9 +141,11 @@ def _paper_causes(key: str, rows: list[ClaimRow]) -> list[str]:
 
 # marker name -> what goes between <!-- name:start --> and <!-- name:end -->
 def ledger_section() -> str:
-    """Coverage of the equation ledgers: the labels each text prints, rows by status."""
+    """Coverage of the equation ledgers: the labels each text prints, rows by status, the
+    display formulas and the paragraphs of prose accounted for."""
     from pendcli.core.ledger import coverage, labels_in_text
     from pendcli.core.ledger_coverage import ledger_text_coverage
+    from pendcli.core.reading import reading_coverage
     from pendcli.core.tables import paper_text
     from pendcli.core.vocabulary import STATUSES
     from pendcli.papers.registry import PAPERS, equation_rows
@@ -154,6 +156,7 @@ def ledger_section() -> str:
         text = paper_text(key)
         c = counts[key]
         blocks = ledger_text_coverage(key)
+        prose = reading_coverage(key)
         rows.append(
             {
                 "paper": key,
@@ -162,6 +165,7 @@ def ledger_section() -> str:
                 **{status: c[status] for status in STATUSES},
                 "checked": f"{round(100 * c['checked'] / c['total'])} %",
                 "$$ blocks covered": f"{blocks.covered} of {blocks.blocks}",
+                "paragraphs of prose read": f"{prose.read} of {prose.paragraphs}",
             }
         )
     return to_markdown(rows, [Column(k, k) for k in rows[0]])

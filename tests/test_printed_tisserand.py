@@ -63,6 +63,22 @@ CHANGES = [
     ("result.second-approximation", "printed", "3/32", "3/31"),
     ("result.resal-rate", "corrected_formula", "3/8*u0*u1*kp", "3/7*u0*u1*kp"),
     ("result.square-from-formula-5", "reading_formula", "u1**4)/16", "u1**4)/15"),
+    # the sentences' claims (the reading record): a word of each changed
+    ("result.resal-small-oscillations", "printed", "1/rho0**2*cos", "1/rho1**2*cos"),
+    ("result.resal-small-oscillations", "printed", "phip = dphip_dt*t", "phip = 2*dphip_dt*t"),
+    ("result.start-of-psi", "printed", "u = u0", "u = u1"),
+    ("result.formulas-1-2-become-4-5", "printed", "dpsi/(u**2*", "dpsi/(u**3*"),
+    ("result.integrals-from-3", "printed", "(3*(u0**4", "(4*(u0**4"),
+    ("result.motion-from-6-and-7", "printed", "27*(u0**2", "28*(u0**2"),
+    ("result.psi-from-8", "printed", "11*(u0**2", "12*(u0**2"),
+    ("result.phip-from-11-and-13", "printed", "17/512", "18/512"),
+    ("result.tan-sq-psi-from-3", "printed", "(u0**2 - u**2)/", "(u1**2 - u**2)/"),
+    ("result.ellipse-axes", "printed", "rho1 < rho0", "rho0 < rho1"),
+    ("result.ellipse-axes", "printed", "rho <= rho0", "rho <= rho1"),
+    ("result.summary-added-orders", "printed", "313*", "312*"),
+    ("result.secular-term-second-order", "printed", "u0*u1 = ", "u0 = "),
+    ("result.axis-turns-with-the-pendulum", "printed", "> 0", "< 0"),
+    ("result.anomaly-proportional-to-time", "printed", "psi = kp*t", "psi = 2*kp*t"),
 ]  # fmt: skip
 
 

@@ -66,11 +66,14 @@ def equations(
     compact = fmt is OutputFormat.table and not notes
     columns = compact_equation_columns() if compact else EQUATION_COLUMNS
     tally = [{"paper": p, **c, **texts[p]} for p, c in counts.items()]
-    # The text's display formulas ($$ blocks) inside some row's lines, of all of them.
+    # The text's display formulas ($$ blocks) inside some row's lines, of all of them; its
+    # paragraphs of prose the reading record accounts for, of all of them.
     count_columns = [
         *(Column(k, k) for k in ("paper", *STATUSES, "total", "checked")),
         Column("blocks_covered", "$$ covered"),
         Column("blocks", "$$ blocks"),
+        Column("paragraphs_read", "¶ read"),
+        Column("paragraphs", "¶ prose"),
     ]
     hint = " (--notes: what each states, how it is checked)" if compact else ""
     sections = [
@@ -85,13 +88,15 @@ def equations(
 
 
 def _text_coverage(cache: ResultCache, paper: str) -> dict[str, object]:
-    """The ``$$`` blocks of the paper's text its ledger covers (cached with the ledger: the
-    ledger's validation imports sympy)."""
+    """The ``$$`` blocks of the paper's text its ledger covers and the paragraphs of prose its
+    reading record accounts for (cached with the ledger: the ledger's validation imports
+    sympy)."""
     from pendcli.core.cache import cached_json
     from pendcli.core.ledger_coverage import ledger_text_coverage
+    from pendcli.core.reading import reading_coverage
 
     def compute() -> dict[str, object]:
-        return ledger_text_coverage(paper).as_dict()
+        return {**ledger_text_coverage(paper).as_dict(), **reading_coverage(paper).as_dict()}
 
     found: dict[str, object] = cached_json(
         cache, "text-coverage", {"paper": paper}, compute, _is_coverage
@@ -102,10 +107,22 @@ def _text_coverage(cache: ResultCache, paper: str) -> dict[str, object]:
 def _is_coverage(value: object) -> bool:
     """A stored coverage has the keys and types ``TextCoverage.as_dict`` gives."""
     keys = {"blocks", "blocks_covered", "blocks_share", "uncovered_lines"}
+    keys |= {"paragraphs", "paragraphs_read", "unread_paragraphs", "labels_printed_twice"}
     if not isinstance(value, dict) or set(value) != keys:
         return False
-    counts = [value["blocks"], value["blocks_covered"]]
+    counts = [value[k] for k in ("blocks", "blocks_covered", "paragraphs", "paragraphs_read")]
     lines = value["uncovered_lines"]
+    spans, twice = value["unread_paragraphs"], value["labels_printed_twice"]
     if type(lines) is not list or type(value["blocks_share"]) not in (int, float):
         return False
-    return all(type(n) is int for n in [*counts, *lines])
+    if type(spans) is not list or not all(type(s) is list and len(s) == 2 for s in spans):
+        return False
+    if type(twice) is not dict or not all(type(v) is list for v in twice.values()):
+        return False
+    numbers = [
+        *counts,
+        *lines,
+        *(n for s in spans for n in s),
+        *(n for v in twice.values() for n in v),
+    ]
+    return all(type(n) is int for n in numbers)

@@ -168,11 +168,7 @@ def _paragraph(where: str, entry: object, spans: tuple[Span, ...]) -> Paragraph:
         raise PendcliError(f"{where} is not a table")
     _refuse_unknown(where, "key(s)", entry, PARAGRAPH_KEYS)
     value = entry.get("lines")
-    if not (
-        isinstance(value, list)
-        and len(value) == 2
-        and all(type(v) is int for v in value)
-    ):
+    if not (isinstance(value, list) and len(value) == 2 and all(type(v) is int for v in value)):
         raise PendcliError(f"{where}: 'lines' must be [first, last], two line numbers")
     span = (value[0], value[1])
     if span not in spans:
@@ -185,14 +181,17 @@ def _paragraph(where: str, entry: object, spans: tuple[Span, ...]) -> Paragraph:
         raise PendcliError(f"{where}: give either 'rows' or 'none', not both or neither")
     if none is not None:
         if not isinstance(none, str) or not none.strip() or "\n" in none or len(none) > MAX_REASON:
-            raise PendcliError(f"{where}: 'none' must be one line of at most {MAX_REASON} characters")
+            raise PendcliError(
+                f"{where}: 'none' must be one line of at most {MAX_REASON} characters"
+            )
         return Paragraph(span, none=none)
-    valid = isinstance(rows, list) and 0 < len(rows) <= MAX_ROWS
-    if not valid or not all(isinstance(r, str) and r for r in rows):
+    if not isinstance(rows, list) or not 0 < len(rows) <= MAX_ROWS:
+        raise PendcliError(f"{where}: 'rows' must be a list of 1 to {MAX_ROWS} row ids")
+    if not all(isinstance(r, str) and r for r in rows):
         raise PendcliError(f"{where}: 'rows' must be a list of 1 to {MAX_ROWS} row ids")
     if len(set(rows)) != len(rows):
         raise PendcliError(f"{where}: a row is named twice in 'rows'")
-    return Paragraph(span, rows=tuple(rows))
+    return Paragraph(span, rows=tuple(str(r) for r in rows))
 
 
 def _check_rows(
@@ -216,6 +215,8 @@ class ReadingCoverage:
     paragraphs: int
     read: int
     unread: tuple[Span, ...]
+    # each label the text prints more than once, with the line of each printing
+    printed_twice: Mapping[str, tuple[int, ...]]
 
     def as_dict(self) -> dict[str, object]:
         """The keys ``pendcli equations`` adds to a paper's coverage."""
@@ -223,19 +224,22 @@ class ReadingCoverage:
             "paragraphs": self.paragraphs,
             "paragraphs_read": self.read,
             "unread_paragraphs": [list(span) for span in self.unread],
+            "labels_printed_twice": {k: list(v) for k, v in self.printed_twice.items()},
         }
 
 
 def reading_coverage(paper: str, root: Path | None = None) -> ReadingCoverage:
-    """The paper's paragraphs accounted for by its reading record (none without a record)."""
+    """The paper's paragraphs accounted for by its reading record (none without a record),
+    and the labels its text prints more than once."""
     from pendcli.core.ledger import load_ledger
     from pendcli.core.tables import read_table_text
 
+    text = read_table_text(load_ledger(paper, root).text, "paper text")
+    twice = {k: v for k, v in label_lines(text).items() if len(v) > 1}
     reading = load_reading(paper, root)
     if reading is None:
-        text = read_table_text(load_ledger(paper, root).text, "paper text")
         spans = prose_paragraphs(text)
-        return ReadingCoverage(paper, len(spans), 0, spans)
+        return ReadingCoverage(paper, len(spans), 0, spans, twice)
     unread = reading.missing
     total = len(reading.text_paragraphs)
-    return ReadingCoverage(paper, total, total - len(unread), unread)
+    return ReadingCoverage(paper, total, total - len(unread), unread, twice)
