@@ -50,6 +50,9 @@ CHANGES = [
     ("charbonnier.eq.1", "g*l*sin(theta) = 0;", "g*sin(theta) = 0;"),  # the moment
     ("charbonnier.eq.2", "k**2 = g/l0", "k**2 = g/(2*l0)"),
     ("charbonnier.eq.3", "dtheta_dt = k*alpha*sin(k*t)", "dtheta_dt = alpha*sin(k*t)"),
+    # the cross-references of lines 74 and 91 (the reading record)
+    ("charbonnier.result.formula-1-reduces-to-2", "k**2 = g/l0", "k**2 = g/(2*l0)"),
+    ("charbonnier.result.integrating-2", "theta = -alpha*cos", "theta = alpha*cos"),
     ("charbonnier.result.period-and-top-speed", "T = pi/k", "T = 2*pi/k"),
     ("charbonnier.result.taylor-phi", "dtheta_1_dt*phi_thetap", "dtheta_1_dt*phi_theta"),
     ("charbonnier.result.order-system", "d2theta_2_dt2 + k**2", "d2theta_2_dt2 + 2*k**2"),
