@@ -1,4 +1,4 @@
-"""Regenerate the README's (and docs/schema.md's) generated sections from the code (`make regen`).
+"""Regenerate the generated sections of README, docs/schema.md and docs/ENGINE.md (`make regen`).
 
 The README shows real output and the real JSON schema; this module produces both, so nothing
 there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
@@ -171,11 +171,31 @@ def ledger_section() -> str:
     return to_markdown(rows, [Column(k, k) for k in rows[0]])
 
 
+def kinds_section() -> str:
+    """The ledgers' rows by the kind of check that decides them, per paper (docs/ENGINE.md)."""
+    from collections import Counter
+
+    from pendcli.core.check_kinds import KINDS
+    from pendcli.core.ledger import load_ledger
+    from pendcli.papers.registry import PAPERS, ledger_papers
+
+    papers = [key for key in PAPERS if key in ledger_papers()]
+    counts = {key: Counter(r.kind for r in load_ledger(key).rows) for key in papers}
+    rows: list[Row] = []
+    for kind in (*KINDS, None):
+        cells = {key: counts[key][kind] for key in papers}
+        rows.append({"kind": kind or "none (not checked)", **cells, "all": sum(cells.values())})
+    totals = {key: sum(counts[key].values()) for key in papers}
+    rows.append({"kind": "all", **totals, "all": sum(totals.values())})
+    return to_markdown(rows, [Column(k, k) for k in rows[0]])
+
+
 SECTIONS: dict[str, Callable[[], str]] = {
     "sample": sample_section,
     "causes": causes_section,
     "schema": schema_section,
     "ledger": ledger_section,
+    "kinds": kinds_section,
 }
 # marker name -> the file holding its markers, relative to the README's folder
 SECTION_FILES: dict[str, str] = {
@@ -183,6 +203,7 @@ SECTION_FILES: dict[str, str] = {
     "causes": "README.md",
     "schema": "docs/schema.md",
     "ledger": "README.md",
+    "kinds": "docs/ENGINE.md",
 }
 
 

@@ -303,7 +303,8 @@ def test_write_set_refuses_a_file_created_or_removed_since_it_was_read(tmp_path:
 
 
 def _docs_set(tmp_path: Path) -> Path:
-    """A README and docs/schema.md with the generated sections' markers, and no tables."""
+    """A README, docs/schema.md and docs/ENGINE.md with the generated sections' markers, and
+    no tables."""
     readme = tmp_path / "README.md"
 
     def marks(*names: str) -> str:
@@ -312,6 +313,7 @@ def _docs_set(tmp_path: Path) -> Path:
     readme.write_text(f"# readme\n{marks('sample', 'causes', 'ledger')}")
     (tmp_path / "docs").mkdir()
     (tmp_path / "docs" / "schema.md").write_text(marks("schema"))
+    (tmp_path / "docs" / "ENGINE.md").write_text(marks("kinds"))
     return readme
 
 
@@ -331,6 +333,7 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
     monkeypatch.setattr(docs, "sample_section", lambda result=None: "new sample")
     monkeypatch.setattr(regression, "regenerated_tables", lambda result: {"x-claims.csv": "id\n"})
     monkeypatch.setitem(docs.SECTIONS, "schema", lambda: "new schema")
+    monkeypatch.setitem(docs.SECTIONS, "kinds", lambda: "new kinds")
 
     def ledger_while_someone_edits() -> str:
         with readme.open("a") as fh:
