@@ -756,7 +756,8 @@ def _equation_note(row: Row) -> str:
     correction = correction_of(row)
     if correction:
         return correction
-    return ""
+    readings = text_of(row, "readings")  # the OCR's substitutions the row is read through
+    return f"OCR, read: {readings}" if readings else ""
 
 
 def correction_of(row: Row) -> str:

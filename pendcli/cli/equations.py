@@ -71,6 +71,8 @@ def equations(
         *(Column(k, k) for k in ("paper", *STATUSES, "total", "checked")),
         Column("blocks_covered", "$$ covered"),
         Column("blocks", "$$ blocks"),
+        Column("findings", "findings"),  # failing or misprinted, restating no other row
+        Column("restating", "restating"),
     ]
     hint = " (--notes: what each states, how it is checked)" if compact else ""
     sections = [
