@@ -6,13 +6,15 @@ there is typed in. ``python -m pendcli.docs`` rewrites the text between each pai
 ``<!-- causes:start -->`` ... for the counts of the numbers that do not agree, by cause,
 ``<!-- schema:start -->`` ... ``<!-- schema:end -->`` for the JSON schema from
 :mod:`pendcli.core.schema`, ``<!-- ledger:start -->`` ... for the equation ledgers'
-coverage); ``--check`` exits 1 if one is stale.
+coverage, ``<!-- findings:start -->`` ... for their findings by paper); ``--check`` exits 1
+if one is stale.
 """
 
 from __future__ import annotations
 
 import sys
 from collections.abc import Callable
+from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -21,11 +23,13 @@ from pendcli.render.markdown import to_markdown
 
 if TYPE_CHECKING:
     from pendcli.core.claims import ClaimRow
+    from pendcli.core.rows import EquationRow
     from pendcli.reproduce import ReproduceResult
 
 __all__ = [
     "SECTIONS",
     "causes_section",
+    "findings_section",
     "ledger_section",
     "main",
     "sample_section",
@@ -139,18 +143,27 @@ def _paper_causes(key: str, rows: list[ClaimRow]) -> list[str]:
     return lines
 
 
+@cache
+def _ledger_rows() -> tuple[EquationRow, ...]:
+    """Every ledger row of the built-in papers, judged once for the sections that show them."""
+    from pendcli.papers.registry import PAPERS, equation_rows
+
+    return tuple(equation_rows(PAPERS))
+
+
 # marker name -> what goes between <!-- name:start --> and <!-- name:end -->
 def ledger_section() -> str:
     """Coverage of the equation ledgers: the labels each text prints, rows by status, the
-    display formulas and the paragraphs of prose accounted for."""
-    from pendcli.core.ledger import coverage, labels_in_text
+    display formulas and the paragraphs of prose accounted for, and the findings (failing or
+    misprinted rows that restate no other)."""
+    from pendcli.core.ledger import FINDING_KEYS, coverage, labels_in_text
     from pendcli.core.ledger_coverage import ledger_text_coverage
     from pendcli.core.reading import reading_coverage
     from pendcli.core.tables import paper_text
     from pendcli.core.vocabulary import STATUSES
-    from pendcli.papers.registry import PAPERS, equation_rows
+    from pendcli.papers.registry import PAPERS
 
-    counts = coverage(equation_rows(PAPERS))
+    counts = coverage(_ledger_rows())
     rows: list[Row] = []
     for key in PAPERS:
         text = paper_text(key)
@@ -166,6 +179,7 @@ def ledger_section() -> str:
                 "checked": f"{round(100 * c['checked'] / c['total'])} %",
                 "$$ blocks covered": f"{blocks.covered} of {blocks.blocks}",
                 "paragraphs of prose read": f"{prose.read} of {prose.paragraphs}",
+                **{key: c[key] for key in FINDING_KEYS},
             }
         )
     return to_markdown(rows, [Column(k, k) for k in rows[0]])
@@ -190,12 +204,60 @@ def kinds_section() -> str:
     return to_markdown(rows, [Column(k, k) for k in rows[0]])
 
 
+def findings_section() -> str:
+    """The ledgers' findings by paper, from the rows themselves (never typed): each failing
+    row (its slip carried by the author's later work) with its label or line, the count of
+    misprints (not carried), the rows that only restate another's slip, the OCR readings."""
+    from pendcli.core.ledger import load_ledger
+    from pendcli.papers.registry import PAPERS
+
+    rows = _ledger_rows()
+    lines = []
+    for key in PAPERS:
+        mine = [r for r in rows if r.paper == key]
+        ledger = load_ledger(key)
+        lines.append(_findings_line(key, mine, [r.id for r in ledger.readings]))
+    return "\n".join(lines) + "\n"
+
+
+def _findings_line(key: str, rows: list[EquationRow], readings: list[str]) -> str:
+    fails = [r for r in rows if r.finding and r.status == "fails"]
+    misprints = [r for r in rows if r.finding and r.status == "misprint"]
+    restating = [r for r in rows if not r.finding and r.status in ("fails", "misprint")]
+
+    def listed(found: list[EquationRow]) -> str:
+        return (": " + ", ".join(_place(r) for r in found)) if found else ""
+
+    restated = ", ".join(f"{_place(r)} ({', '.join(r.restates)})" for r in restating)
+
+    said = [
+        f"{len(fails)} fail{'s' if len(fails) == 1 else ''} (the author's later work carries "
+        f"the slip){listed(fails)}",
+        f"{len(misprints)} misprint{'' if len(misprints) == 1 else 's'} (no later step "
+        f"carries it){listed(misprints)}",
+        f"{len(restating)} row{'' if len(restating) == 1 else 's'} only restate another's "
+        f"slip{': ' + restated if restated else ''}",
+        f"OCR readings applied: {', '.join(readings) or 'none'}",
+    ]
+    total = len(fails) + len(misprints)
+    return f"- **{key.capitalize()}**: {total} findings. " + "; ".join(said) + "."
+
+
+def _place(row: EquationRow) -> str:
+    """``(16), line 220`` or ``line 228``; a conditional verdict with its two sides."""
+    where = f"line {row.lines[0]}" if row.lines is not None else row.id
+    label = f"{row.equation} " if row.equation else ""
+    condition = f" [{row.condition.split(' (', 1)[0]}]" if row.condition else ""
+    return f"{label}{where}{condition}"
+
+
 SECTIONS: dict[str, Callable[[], str]] = {
     "sample": sample_section,
     "causes": causes_section,
     "schema": schema_section,
     "ledger": ledger_section,
     "kinds": kinds_section,
+    "findings": findings_section,
 }
 # marker name -> the file holding its markers, relative to the README's folder
 SECTION_FILES: dict[str, str] = {
@@ -204,6 +266,7 @@ SECTION_FILES: dict[str, str] = {
     "schema": "docs/schema.md",
     "ledger": "README.md",
     "kinds": "docs/ENGINE.md",
+    "findings": "README.md",
 }
 
 

@@ -555,10 +555,12 @@ def _place_own_quotes(page: _Page, row: Row, region: tuple[int, int]) -> bool:
         if span is None:
             return False
         pieces += [(piece, whole, quote) for piece, whole in _quote_pieces(page, *span)]
+    # a row with wrong terms shows its reading or correction at the first of them, once
+    note = "" if _printed_terms(row) else _equation_note(row)
     for i, (span, whole, quote) in enumerate(pieces):
         base = {**_row_base(row), "finding": disagrees(row) and i == 0}  # its note, once
         _add(page, span, key=id_of(row) if i == 0 else f"{id_of(row)}~quote{i}",
-             css=css_of(row), note="" if i else _equation_note(row), anchored=True,
+             css=css_of(row), note="" if i else note, anchored=True,
              forms=(quote,), how="quote", whole=whole, nests=not whole and not _free(page, span),
              continues=id_of(row) if i else "", **base)  # fmt: skip
     return bool(pieces)
@@ -767,7 +769,8 @@ def _equation_note(row: Row) -> str:
     correction = correction_of(row)
     if correction:
         return correction
-    return ""
+    readings = text_of(row, "readings")  # the OCR's substitutions the row is read through
+    return f"OCR, read: {readings}" if readings else ""
 
 
 def correction_of(row: Row) -> str:

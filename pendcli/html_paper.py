@@ -451,9 +451,25 @@ def _equation_rows(equations: Sequence[Row], cited: Mapping[str, Sequence[Row]],
          "statement": text_of(r, "statement"), "cause": EQUATION_CAUSE.get(verdict_of(r), ""),
          "correction": correction_of(r), "check": _check_of(r),
          "formulas": [formula_cell(f) for f in cited.get(id_of(r), [])],
-         "note": text_of(r, "note")}
+         "note": _equation_note(r)}
         for r in equations
     ]  # fmt: skip
+
+
+# an equation row's blame, condition and readings, shown after the ledger's note
+_CONTEXT = (("condition", "conditional"), ("later_use", "blame"), ("carries", "carries"),
+            ("step", "its own slip"), ("readings", "OCR, read"))  # fmt: skip
+
+
+def _equation_note(row: Row) -> str:
+    """The ledger's note, then a conditional verdict's two sides, the later use that decides
+    the blame, what the row carries or restates and the OCR readings applied."""
+    parts = [text_of(row, "note")] if text_of(row, "note") else []
+    restated = row.get("restates")
+    if isinstance(restated, list | tuple) and restated and verdict_of(row) != "definition":
+        parts.append(f"restates {', '.join(map(str, restated))}: no finding of its own")
+    parts += [f"{label}: {text_of(row, key)}" for key, label in _CONTEXT if text_of(row, key)]
+    return "; ".join(parts)
 
 
 def _check_of(row: Row) -> str:

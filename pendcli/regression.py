@@ -63,7 +63,10 @@ CLAIM_COLUMNS = (
     "from",
 )
 FORMULA_COLUMNS = ("id", "source", "claimed_order", "observed_order", "verdict", "cause", "from")
-EQUATION_COLUMNS = ("id", "equation", "lines", "status", "kind", "dimensions", "observed_order")
+# finding: a failing or misprinted row that restates no other (tables/README.md, Blame);
+# condition: its verdict on each side of an assumption the paper leaves open
+EQUATION_COLUMNS = ("id", "equation", "lines", "status", "kind", "dimensions", "observed_order",
+                    "finding", "condition")  # fmt: skip
 
 # column -> (kind, tolerance). "rel": |now - then| <= tol * max(|then|, tiny);
 # "abs": |now - then| <= tol; "same": must be identical text.
@@ -81,6 +84,8 @@ TOLERANCES: dict[str, tuple[str, float]] = {
     "lines": ("same", 0.0),
     "status": ("same", 0.0),  # the ledger's computed status, and its printed form's dimensions
     "kind": ("same", 0.0),  # the kind of check that decides the row
+    "finding": ("same", 0.0),  # a finding of its own, and a conditional verdict's two sides
+    "condition": ("same", 0.0),
     "dimensions": ("same", 0.0),
     "recomputed": ("rel", 1e-9),  # closed forms, special functions: last-bit noise only
     "exact": ("rel", 1e-7),  # fuller models (quadrature, ODE at tight tolerance)
@@ -125,6 +130,8 @@ def _equation_rows(result: ReproduceResult, key: str) -> list[dict[str, object]]
         cells = {k: row.as_dict()[k] for k in EQUATION_COLUMNS if k != "lines"}
         cells["lines"] = f"{first}-{last}" if row.lines is not None else ""
         cells["dimensions"] = row.dimensions or ""
+        cells["finding"] = "yes" if row.finding else ""
+        cells["condition"] = row.condition or ""
         out.append(cells)
     return out
 

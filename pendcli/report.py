@@ -20,7 +20,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
-from pendcli.core.rows import equation_notes
+from pendcli.core.rows import equation_notes, equation_status
 from pendcli.core.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
 from pendcli.render.columns import Column, Row
 from pendcli.render.json import to_json
@@ -502,19 +502,23 @@ def _equation_section(rows: list[EquationRow]) -> list[str]:
     """Coverage of the ledger by status, then every equation that fails or is misprinted."""
     if not rows:
         return []
-    from pendcli.core.ledger import coverage
+    from pendcli.core.ledger import FINDING_KEYS, coverage
     from pendcli.core.vocabulary import STATUSES
 
     counts = [{"paper": p, **c} for p, c in coverage(rows).items()]
-    keys = ("paper", *STATUSES, "total", "checked")
+    keys = ("paper", *STATUSES, "total", "checked", *FINDING_KEYS)
     failing = (EquationStatus.FAILS, EquationStatus.MISPRINT)
     wrong = [r.as_dict() for r in rows if r.status in failing]
-    columns = [Column(k, k) for k in ("equation", "section", "statement", "status")]
+    columns = [Column(k, k) for k in ("equation", "section", "statement")]
+    columns.append(Column("status", "status", fmt=equation_status))
     columns.append(Column("note", "note", fmt=equation_notes))
     return [
         "### Equation ledger",
         "",
-        "Every numbered equation and stated result, checked (`pendcli equations`):",
+        "Every numbered equation and stated result, checked (`pendcli equations`); the "
+        "findings are the failing and misprinted rows that restate no other (one per slip: "
+        "`fails` when the author's later work carries it, `misprint` when it does not), the "
+        "restating rows only cite or carry another's slip:",
         "",
         to_markdown(counts, [Column(k, k) for k in keys]),
         "Those that fail (with the corrected form the computation found) or are misprinted "

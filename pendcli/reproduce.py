@@ -23,6 +23,7 @@ from pendcli.core.vocabulary import (
     CLAIM_VERDICTS,
     FORMULA_VERDICTS,
     PROCEDURE_VERDICTS,
+    EquationStatus,
     FormulaVerdict,
 )
 from pendcli.papers.registry import evaluate, formula_checks
@@ -166,11 +167,16 @@ class ReproduceResult:
                 "root causes": tally.root_total,
                 "propagated": tally.propagated,
             }
-            if self.equations:
+            if self.equations:  # failing and misprinted: the findings, one per slip
                 eqs = self.equations.get(key, [])
                 row["equations"] = len(eqs)
                 for status in CHECKED_STATUSES:
-                    row[f"equations {status}"] = sum(r.status is status for r in eqs)
+                    mine = [r for r in eqs if r.status is status]
+                    row[f"equations {status}"] = sum(
+                        r.finding or r.status is EquationStatus.HOLDS for r in mine
+                    )
+                flawed = (EquationStatus.FAILS, EquationStatus.MISPRINT)
+                row["equations restating"] = sum(r.status in flawed and not r.finding for r in eqs)
             out.append(row)
         return out
 
@@ -206,6 +212,7 @@ _EQUATION_SUMMARY = _counts(
     ("equations holds", "hold"),
     ("equations fails", "fail"),
     ("equations misprint", "misprint"),
+    ("equations restating", "restating"),
 )
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 
+from pendcli.core.rows import equation_status
 from pendcli.core.vocabulary import Cause, disagrees_word
 from pendcli.render.columns import Column, Row
 from pendcli.render.views import VERDICT_STYLES, format_like_printed
@@ -123,7 +124,12 @@ def compact_equation_columns() -> tuple[Column, ...]:
     return (
         Column("id", "row", fmt=_short_id),
         Column("equation", "label"),
-        Column("status", "status", style=lambda t: VERDICT_STYLES.get(t, "yellow")),
+        Column(
+            "status",
+            "status",
+            fmt=equation_status,
+            style=lambda t: VERDICT_STYLES.get(t.split(" (")[0], "yellow"),
+        ),
     )
 
 

@@ -30,32 +30,39 @@ from pendcli.core.rows import ClaimRow, EquationRow, FormulaRow
 from pendcli.core.tables import clear_table_cache, tables_dir
 
 FORMATS = ("table", "json", "csv", "markdown")
-# charbonnier, with its ledger cut to one row of each kind (_small_tables): every cached unit
-EQUATIONS = ("equations", "-p", "charbonnier")
-REPRODUCE = ("reproduce", "-p", "charbonnier", "--equations", "--stability", "--notes")
+# tisserand, with its ledger cut to one row of each kind (_small_tables): every cached unit
+EQUATIONS = ("equations", "-p", "tisserand")
+REPRODUCE = ("reproduce", "-p", "tisserand", "--equations", "--stability", "--notes")
 
 
 def _small_tables(root: Path) -> Path:
-    """A copy of tables/ in ``root`` whose Charbonnier ledger keeps the first row of each kind
+    """A copy of tables/ in ``root`` whose Tisserand ledger keeps the first row of each kind
     (status and formula fields: holds, misprint with its reading, fails with its correction,
     a definition; since every row has a printed form, no check without one), so that every
     field an equation row caches is cached: what these tests are about, in about a tenth of
     the whole ledger's sympy."""
     tables = root / "tables"
     shutil.copytree(tables_dir(), tables)
-    path = tables / "equations" / "charbonnier.toml"
+    path = tables / "equations" / "tisserand.toml"
     raw = tomllib.loads(path.read_text(encoding="utf-8"))
     kinds: dict[tuple[object, ...], dict[str, object]] = {}
     for row in raw["equation"]:
         kinds.setdefault((row["status"], *sorted(k for k in row if k in SHAPE)), row)
     assert {kind[0] for kind in kinds} >= {"holds", "misprint", "fails", "definition"}
     parts = [_toml_table("[ledger]", raw["ledger"]), _toml_table("[symbols]", raw["symbols"])]
-    parts += [_toml_table("[[equation]]", row) for row in kinds.values()]
+    for name in sorted(set(raw) - {"ledger", "symbols", "equation"}):  # readings, assumptions
+        parts += [_toml_table(f"[[{name}]]", table) for table in raw[name]]
+    named = {i for t in raw.get("assumption", []) for i in t.get("rows", [])}  # must exist
+    kept = {id(row) for row in kinds.values()}
+    kept |= {id(row) for row in raw["equation"] if row["id"] in named}
+    parts += [_toml_table("[[equation]]", r) for r in raw["equation"] if id(r) in kept]
     path.write_text("\n\n".join(parts) + "\n", encoding="utf-8")
+    # the reading record names rows the cut ledger lacks; without one, no paragraph is read
+    (tables / "papers" / "tisserand.reading.toml").unlink()
     return tables
 
 
-SHAPE = ("check", "reference", "printed", "reading_formula", "corrected_formula")
+SHAPE = ("kind", "reference", "printed", "reading_formula", "corrected_formula")
 
 
 def _toml_table(header: str, table: dict[str, object]) -> str:

@@ -310,7 +310,7 @@ def _docs_set(tmp_path: Path) -> Path:
     def marks(*names: str) -> str:
         return "".join(f"<!-- {n}:start -->\nold {n}\n<!-- {n}:end -->\n" for n in names)
 
-    readme.write_text(f"# readme\n{marks('sample', 'causes', 'ledger')}")
+    readme.write_text(f"# readme\n{marks('sample', 'causes', 'ledger', 'findings')}")
     (tmp_path / "docs").mkdir()
     (tmp_path / "docs" / "schema.md").write_text(marks("schema"))
     (tmp_path / "docs" / "ENGINE.md").write_text(marks("kinds"))
@@ -334,6 +334,7 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
     monkeypatch.setattr(regression, "regenerated_tables", lambda result: {"x-claims.csv": "id\n"})
     monkeypatch.setitem(docs.SECTIONS, "schema", lambda: "new schema")
     monkeypatch.setitem(docs.SECTIONS, "kinds", lambda: "new kinds")
+    monkeypatch.setitem(docs.SECTIONS, "findings", lambda: "new findings")
 
     def ledger_while_someone_edits() -> str:
         with readme.open("a") as fh:

@@ -64,9 +64,10 @@ def test_the_rows_with_two_wrong_terms_read_as_lists() -> None:
     rows = {r.id: r for r in load_ledger("lecornu").rows}
     counts = {i: len(rows[f"lecornu.result.{i}"].wrong_terms) for i in (
         "delta_rhs", "u_at_roots", "largest_length_comparison", "general_constants",
-        "constant_a_prime")}  # fmt: skip
+        "constant_a_prime", "quarter_values")}  # fmt: skip
     assert counts == {"delta_rhs": 2, "u_at_roots": 2, "largest_length_comparison": 2,
-                      "general_constants": 3, "constant_a_prime": 2}  # fmt: skip
+                      "general_constants": 3, "constant_a_prime": 2,
+                      "quarter_values": 2}  # fmt: skip
     assert rows["lecornu.eq.52"].wrong_terms == (rows["lecornu.eq.52"].wrong_term,)
 
 

@@ -116,18 +116,21 @@ def test_required_ledgers_are_present() -> None:
 SMALL = (
     "charbonnier.eq.3",  # holds
     "charbonnier.eq.p",  # definition
-    "charbonnier.eq.5",  # misprint
-    "charbonnier.result.ec-monomial",  # fails
+    "charbonnier.eq.5",  # holds, read through the OCR's x for α
+    "charbonnier.result.ec-monomial",  # misprint: n° 17 uses the right exponent
 )
 
 
-def _small_ledger(root: Path, change: dict[str, dict[str, str | None]] | None = None) -> None:
-    """The SMALL rows of the real Charbonnier ledger, as tables/equations/charbonnier.toml;
-    ``change`` alters a row's fields (None removes one)."""
+def _small_ledger(root: Path, change: dict[str, dict[str, object]] | None = None) -> None:
+    """The SMALL rows of the real Charbonnier ledger (and its reading table), as
+    tables/equations/charbonnier.toml; ``change`` alters a row's fields (None removes one)."""
     raw = tomllib.loads((TABLES / "equations" / "charbonnier.toml").read_text(encoding="utf-8"))
     parts = [f'[ledger]\npaper = "charbonnier"\ntext = {json.dumps(raw["ledger"]["text"])}']
     symbols = "\n".join(f"{json.dumps(k)} = {json.dumps(v)}" for k, v in raw["symbols"].items())
     parts.append(f"[symbols]\n{symbols}")
+    for entry in raw["reading"]:
+        body = "\n".join(f"{k} = {json.dumps(v, ensure_ascii=False)}" for k, v in entry.items())
+        parts.append(f"[[reading]]\n{body}")
     for entry in raw["equation"]:
         if entry["id"] in SMALL:
             altered = {**entry, **(change or {}).get(entry["id"], {})}
@@ -151,29 +154,37 @@ def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) ->
         equation_rows(["tisserand", "charbonnier"], tmp_path)  # no tisserand ledger here
     rows = equation_rows(["charbonnier"], tmp_path)
     assert all(tuple(r.as_dict()) == OUTPUT_KEYS for r in rows)
-    fails = next(r for r in rows if r.status == "fails")
-    assert fails.kind and fails.computed == "fails" and fails.evidence
-    assert f"computed from the printed form: fails: {fails.evidence}" in equation_notes(
-        fails.as_dict()
-    )
+    misprint = next(r for r in rows if r.status == "misprint")
+    assert misprint.kind and misprint.computed == "misprint" and misprint.evidence
+    notes = equation_notes(misprint.as_dict())
+    assert f"computed from the printed form: misprint: {misprint.evidence}" in notes
+    assert "blame: not carried: the right form is used at line 530" in notes
+    read = next(r for r in rows if r.id == "charbonnier.eq.5")
+    assert read.status == "holds" and "α printed as x" in (read.readings or "")
     definition = next(r for r in rows if r.status == "definition")
     assert (definition.against, definition.computed, definition.evidence) == (None, None, None)
     counts = coverage(rows)["charbonnier"]
-    assert (counts["total"], counts["checked"], counts["fails"]) == (4, 3, 1)
+    assert (counts["total"], counts["checked"], counts["misprint"], counts["findings"]) == (
+        4,
+        3,
+        1,
+        1,
+    )
 
 
 @pytest.mark.parametrize(
     ("row_id", "change"),
     [
-        ("charbonnier.eq.3", {"status": "fails", "corrected": "θ = α cos kt"}),
+        ("charbonnier.eq.3", {"status": "misprint", "reading": "θ = α cos kt", "unused": "-"}),
         (
             "charbonnier.result.ec-monomial",
-            {"status": "holds", "corrected": None, "corrected_formula": None},
+            {"status": "holds", "reading": None, "reading_formula": None, "used_at": None,
+             "used": None},
         ),
     ],
-)
+)  # fmt: skip
 def test_a_check_contradicting_its_status_is_reported(
-    tmp_path: Path, row_id: str, change: dict[str, str | None]
+    tmp_path: Path, row_id: str, change: dict[str, object]
 ) -> None:
     _small_ledger(tmp_path, {row_id: change})
     problems = {i.row.id: i.problem for i in evaluate(paper("charbonnier"), tmp_path) if i.problem}

@@ -253,9 +253,10 @@ def test_a_changed_coefficient_stops_a_row_holding(row_id: str, old: str, new: s
 
 
 def test_a_misprint_whose_printed_form_is_its_reading_is_refused() -> None:
-    printed = "printed = 'tan(phi1)**2 = (u1**2*u0**2 - u**2)/(u0**2*u**2 - u1**2)'"
-    reading = "printed = 'tan(phi1)**2 = u1**2/u0**2*(u0**2 - u**2)/(u**2 - u1**2)'"
-    row, symbols = altered_row("tisserand", "tisserand.result.tan-sq-phi1", printed, reading)
+    # (13)'s sin² 4k't set to (II)'s sin 4k't, its reading
+    row, symbols = altered_row(
+        "tisserand", "tisserand.eq.13", "*sin(4*kp*t)**2", "*sin(4*kp*t)", "tisserand.eq.13"
+    )
     _, problem = verify_printed(row, symbols, TISSERAND_REFERENCES)
     assert problem is not None
     assert problem.startswith("recorded misprint, but the printed form gives holds")

@@ -254,9 +254,28 @@ def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift(
     from pendcli.regression import regenerated_tables
     from pendcli.reproduce import ReproduceResult
 
-    def row(rid: str, status: str, order: float | None, dims: str = "consistent") -> EquationRow:
-        return EquationRow(rid, "p", "(1)", "§ 1", "x = y", EquationStatus(status), "series",
-                           order, "", lines=(3, 4), dimensions=dims)  # fmt: skip
+    def row(
+        rid: str,
+        status: str,
+        order: float | None,
+        dims: str = "consistent",
+        condition: str | None = None,
+    ) -> EquationRow:
+        return EquationRow(
+            rid,
+            "p",
+            "(1)",
+            "§ 1",
+            "x = y",
+            EquationStatus(status),
+            "series",
+            order,
+            "",
+            lines=(3, 4),
+            dimensions=dims,
+            finding=status in ("fails", "misprint"),
+            condition=condition,
+        )
 
     def table(*rows: EquationRow) -> str:
         result = ReproduceResult(papers=("p",), equations={"p": list(rows)})
@@ -264,16 +283,21 @@ def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift(
 
     then = table(row("p.a", "holds", 2.0), row("p.b", "misprint", None), row("p.c", "holds", 1.0))
     assert then.splitlines() == [
-        "id,equation,lines,status,kind,dimensions,observed_order",
-        "p.a,(1),3-4,holds,series,consistent,2.0",
-        "p.b,(1),3-4,misprint,series,consistent,",
-        "p.c,(1),3-4,holds,series,consistent,1.0",
+        "id,equation,lines,status,kind,dimensions,observed_order,finding,condition",
+        "p.a,(1),3-4,holds,series,consistent,2.0,,",
+        "p.b,(1),3-4,misprint,series,consistent,,yes,",
+        "p.c,(1),3-4,holds,series,consistent,1.0,,",
     ]
-    now = table(row("p.a", "fails", 2.04), row("p.b", "misprint", None, "inconsistent"))
+    side = "holds for g <= 9.80, fails for g > 9.80"
+    now = table(
+        row("p.a", "fails", 2.04, condition=side), row("p.b", "misprint", None, "inconsistent")
+    )
     drifts = compare_tables("p-equations.csv", then, now)
     found = {(d.id, d.column, d.committed, d.now) for d in drifts}
     assert found == {
         ("p.a", "status", "holds", "fails"),
+        ("p.a", "finding", "", "yes"),
+        ("p.a", "condition", "", side),
         ("p.b", "dimensions", "consistent", "inconsistent"),
         ("p.c", "(row)", "present", "gone"),
-    }
+    }  # fmt: skip

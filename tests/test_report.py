@@ -241,6 +241,7 @@ def test_every_report_figure_has_a_written_caption(charbonnier_report):
 def test_report_html_pages_are_written_with_the_report(charbonnier_report):
     _, out = charbonnier_report
     page = (out / "papers" / "charbonnier.html").read_text("utf-8")
-    assert 'id="row-charbonnier.eq.9"' in page and 'class="hl s-fails"' in page
+    # (9) is a misprint: n° 17 computes with E_s(π/2) (tables/README.md, Blame)
+    assert 'id="row-charbonnier.eq.9"' in page and 'class="hl s-misprint"' in page
     assert "data:image/png;base64," in page  # figures embedded: the page stands alone
     assert 'href="papers/charbonnier.html' in (out / "report.html").read_text("utf-8")

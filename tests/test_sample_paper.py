@@ -122,7 +122,8 @@ def test_a_wrong_printed_value_or_ledger_status_is_caught(sample):
     published.write_text(published.read_text("utf-8").replace('"2,006"', '"2,016"'), "utf-8")
     ledger = sample / "equations" / "sample.toml"
     text = ledger.read_text("utf-8").replace('status = "holds"', 'status = "fails"')
-    ledger.write_text(text + 'corrected = "none"\n', "utf-8")
+    used = 'used_at = [9]\nused = "$T = 2,006$"\n'  # the later line that computes with (1)
+    ledger.write_text(text + 'corrected = "none"\n' + used, "utf-8")
     clear_table_cache()
     (claim,) = json.loads(_ok("reproduce", "-f", "json"))["claims"]
     assert claim["verdict"] == "discrepant"

@@ -74,6 +74,8 @@ def equations(
         Column("blocks", "$$ blocks"),
         Column("paragraphs_read", "¶ read"),
         Column("paragraphs", "¶ prose"),
+        Column("findings", "findings"),  # failing or misprinted, restating no other row
+        Column("restating", "restating"),
     ]
     hint = " (--notes: what each states, how it is checked)" if compact else ""
     sections = [

@@ -15,22 +15,48 @@ from __future__ import annotations
 
 import re
 from collections import Counter
-from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, fields
-from functools import cache
+from collections.abc import Iterable
+from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.ledger_blame import (
+    BLAME_KEYS,
+    FLAWED,
+    Context,
+    is_finding,
+    parse_blame,
+    row_context,
+    validate_blame,
+)
+from pendcli.core.ledger_conditions import (
+    Assumption,
+    check_listed,
+    parse_assumptions,
+    parse_condition,
+)
 from pendcli.core.ledger_formulas import (
-    printed_status,
+    FORMULA_FIELDS,
     row_dimensions,
-    row_formula,
     validate_formulas,
     validate_scopes,
     validate_symbols,
 )
-from pendcli.core.rows import NO_STATUS, EquationRow
+from pendcli.core.ledger_labels import LABEL_FORMAT, label_offsets, labels_in_text
+from pendcli.core.ledger_readings import Reading, parse_readings, readings_of
+from pendcli.core.ledger_references import (
+    Computed,
+    References,
+    cited_references,
+    conditional,
+    printed_problem,
+    reference_table,
+    row_printed_status,
+    verify_printed,
+)
+from pendcli.core.ledger_step import STEP_KEYS, parse_step, step_evidence, validate_step
+from pendcli.core.rows import EquationRow
 from pendcli.core.text_blocks import Span, validate_span
 from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES
 from pendcli.core.vocabulary import EquationStatus as Status
@@ -39,10 +65,10 @@ if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
     from pendcli.core.dimensions import DimensionCheck
     from pendcli.core.paper import Paper
-    from pendcli.core.printed_check import Reference
 
 __all__ = [
     "CHECKED_STATUSES",
+    "FINDING_KEYS",
     "ROW_KEYS",
     "Evaluated",
     "Ledger",
@@ -61,6 +87,7 @@ __all__ = [
     "printed_problem",
     "reference_table",
     "row_printed_status",
+    "verify_printed",
 ]
 
 LEDGER_KEYS = ("paper", "text")
@@ -72,53 +99,22 @@ TEXT_KEYS = ("lines", "quote", "restates", "printed", "reading_formula", "correc
 # A checked row's kind of check (core/check_kinds) and the formula checks (formulas.py) that
 # measure the order of its approximation against a fuller model.
 CHECK_KEYS = ("kind", "measured")
-ROW_KEYS = (*REQUIRED_KEYS, *CHECK_KEYS, "reading", "corrected", "wrong_term", "note", *TEXT_KEYS)
-# Keys that take a string or a list of strings, each printed verbatim within the row's lines.
-PRINTED_KEYS = ("wrong_term", "quote")
+# The later use that decides a slip's blame and what a row carries (core/ledger_blame), the
+# assumption its verdict turns on (core/ledger_conditions), its own slip beside a carried one
+# (core/ledger_step).
+BLAME_STEP_KEYS = (*BLAME_KEYS, "condition", *STEP_KEYS)
+ROW_KEYS = (*REQUIRED_KEYS, *CHECK_KEYS, "reading", "corrected", "wrong_term", "note", *TEXT_KEYS,
+            *BLAME_STEP_KEYS)  # fmt: skip
+# Keys whose value is not a plain string, each read by its own parser.
+_SHAPED_KEYS = ("lines", "used_at", "restates", "step_symbols")
+# Keys that take a string or a list of strings, each printed verbatim within the row's lines
+# (``used``: within the lines of ``used_at``).
+PRINTED_KEYS = ("wrong_term", "quote", "used")
 LIST_KEYS = (*PRINTED_KEYS, "measured")
 # The fields of an output row (`reproduce --format json` under "equations").
 OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
 
-# An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),
-# a roman numeral (I)-(XXXIX), or a single lower-case letter ((p), (q)); an OCR prime may be
-# a typewriter quote or a TeX ^{\prime}.
-_LABEL = r"(?:\d{1,3}[a-z]?|[IVX]{1,6}|[a-z])(?:'|’|\^\{?\\prime\}?)*"
-_LABEL_TOKEN = re.compile(rf"\(({_LABEL})\)")
-_LABEL_FORMAT = re.compile(rf"^\({_LABEL}\)$")
-# Where a label sits in display mathematics: at its start (after $$, a line break \\ or a
-# \begin{...}), in a \tag{...}, or at its end after a \quad (a label "in the margin").
-_OPENERS = r"(?:\$\$|\\\\|\\begin\{[a-zA-Z*]+\}(?:\{[^}]*\})?)"
-_AT_START = re.compile(rf"{_OPENERS}\s*\(({_LABEL})\)(?=\s|\\|\{{|$)")
-_TAGGED = re.compile(rf"\\tag\*?\{{\(?({_LABEL})\)?\}}")
-_AT_END = re.compile(rf"\\q?quad\s*\(({_LABEL})\)\s*(?:[.,;]\s*)?(?=\$\$|\\\\|\\end\{{)")
-_DISPLAY = re.compile(r"\$\$(.*?)\$\$", re.DOTALL)
 _ID = re.compile(r"^[a-z]+\.(?:eq|result)\.[A-Za-z0-9_'-]+(?:\.[a-z0-9-]+)?$")
-
-
-def _normalise(label: str) -> str:
-    return re.sub(r"’|\^\{?\\prime\}?", "'", label)
-
-
-def labels_in_text(text: str) -> list[str]:
-    """Every equation label the text prints, as ``"(41)"``, in order, repeats kept.
-
-    Only labels placed in display mathematics count (at the start of a formula line, in a
-    ``\\tag``, or in the margin at its end): a reference in the prose ("la formule (5)"), a
-    year, a page number or a citation is never a label.
-    """
-    return [label for _, label in label_offsets(text)]
-
-
-def label_offsets(text: str) -> list[tuple[int, str]]:
-    """(character offset, label) of every label :func:`labels_in_text` finds, in order."""
-    found: list[tuple[int, str]] = []
-    for display in _DISPLAY.finditer(text):
-        body = "$$" + display.group(1) + "$$"
-        offset = display.start()
-        for pattern in (_AT_START, _TAGGED, _AT_END):
-            for match in pattern.finditer(body):
-                found.append((offset + match.start(1), f"({_normalise(match.group(1))})"))
-    return sorted(set(found))
 
 
 @dataclass(frozen=True)
@@ -142,15 +138,45 @@ class LedgerRow:
     lines: Span | None = None
     # the words of the text the row rests on (a sentence, a phrase), verbatim from its lines
     quote: str | tuple[str, ...] | None = None
-    restates: str | None = None
+    # the row(s) whose formula it repeats (a definition), or whose slip it only cites or
+    # carries (a failing or misprinted row, then no finding of its own)
+    restates: str | tuple[str, ...] | None = None
     printed: str | None = None
     reading_formula: str | None = None
     corrected_formula: str | None = None
     reference: str | None = None
+    # the later use that decides the blame of a slip (core/ledger_blame)
+    used_at: tuple[int, ...] | None = None
+    used: str | tuple[str, ...] | None = None
+    unused: str | None = None
+    carries: str | None = None
+    condition: str | None = None  # "g <= 9.80": the verdict turns there (core/ledger_conditions)
+    # the row's own slip judged against the printed input it carries (core/ledger_step)
+    step_from: str | None = None
+    step_at: str | None = None
+    step_symbols: tuple[tuple[str, str], ...] | None = None
+    step_formula: str | None = None
+    # the reading table's entries that apply to the row (core/ledger_readings), set on load
+    readings: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
 
     @property
     def wrong_terms(self) -> tuple[str, ...]:
         return _as_strings(self.wrong_term)
+
+    @property
+    def used_words(self) -> tuple[str, ...]:
+        return _as_strings(self.used)
+
+    @property
+    def restated(self) -> tuple[str, ...]:
+        return _as_strings(self.restates)
+
+    def read(self, name: str) -> str | None:
+        """Formula ``name`` as the engine judges it: the reading table's replacements made."""
+        from pendcli.core.ledger_readings import apply_readings
+
+        text: str | None = getattr(self, name)
+        return None if text is None else apply_readings(text, self.readings)
 
     @property
     def quotes(self) -> tuple[str, ...]:
@@ -172,6 +198,9 @@ class Ledger:
     # [[scope]]: a stretch of the text where some letters mean something else (Lecornu's u is
     # a length in § I and a pure number from (32) on): (first, last line), its (name, dim).
     scopes: tuple[tuple[tuple[int, int], tuple[tuple[str, str], ...]], ...] = ()
+    # [[reading]]: the OCR's substitutions; [[assumption]]: what the paper leaves unstated
+    readings: tuple[Reading, ...] = ()
+    assumptions: tuple[Assumption, ...] = ()
 
     def symbols_for(self, row: LedgerRow) -> dict[str, str]:
         """The symbols ``row``'s formulas are written in: [symbols], then the names of the
@@ -209,9 +238,14 @@ def load_ledger(paper: str, root: Path | None = None) -> Ledger:
     return ledger
 
 
-def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Ledger:
-    """Validate a parsed ledger: unknown keys, missing fields and bad values are errors."""
-    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("ledger", "equation", "symbols", "scope"))
+def parse_ledger(
+    raw: dict[str, Any], paper: str, path: Path, root: Path, partial: bool = False
+) -> Ledger:
+    """Validate a parsed ledger: unknown keys, missing fields and bad values are errors.
+    ``partial``: the rows are a selection of the ledger (one row's formulas read alone), so
+    a row they name but do not hold (restated, carried, an assumption's) is not missing."""
+    top = ("ledger", "equation", "symbols", "scope", "reading", "assumption")
+    _refuse_unknown(f"{path}", "top-level key(s)", raw, top)
     header = raw.get("ledger")
     if not isinstance(header, dict) or header.get("paper") != paper:
         raise PendcliError(f"{path}: [ledger] must be a table with paper = {paper!r}")
@@ -231,12 +265,31 @@ def parse_ledger(raw: dict[str, Any], paper: str, path: Path, root: Path) -> Led
         seen.add(row.id)
         rows.append(row)
     text_path = _text_inside(path, text, root)
-    _check_text_fields(path, rows, text_path)
+    lines = _check_text_fields(path, rows, text_path, partial)
     symbols = validate_symbols(path, raw.get("symbols"))
     scopes = validate_scopes(path, raw.get("scope"), dict(symbols))
-    ledger = Ledger(paper, text_path, path, tuple(rows), symbols, scopes)
+    readings = parse_readings(path, raw.get("reading"), lines)
+    rows = [_with_readings(row, readings, lines) for row in rows]
+    assumptions = parse_assumptions(path, raw.get("assumption"), None if partial else seen)
+    named = {a.id: a for a in assumptions}
+    for row in rows:
+        parse_condition(f"{path}: {row.id}", row, named)
+    check_listed(path, rows, assumptions)
+    ledger = Ledger(paper, text_path, path, tuple(rows), symbols, scopes, readings, assumptions)
     validate_formulas(path, rows, ledger.symbols_for)
+    if not partial:
+        validate_step(path, ledger)
     return ledger
+
+
+def _with_readings(
+    row: LedgerRow, readings: tuple[Reading, ...], lines: list[str] | None
+) -> LedgerRow:
+    from dataclasses import replace
+
+    formulas = (getattr(row, f) for f in (*FORMULA_FIELDS, "step_formula"))
+    applied = readings_of(readings, row.lines, formulas, lines)
+    return replace(row, readings=applied) if applied else row
 
 
 def _text_inside(path: Path, text: str, root: Path) -> Path:
@@ -261,10 +314,12 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         raise PendcliError(f"{path}: [[equation]] #{index + 1} is not a table")
     where = f"{path}: {entry.get('id', f'[[equation]] #{index + 1}')}"
     _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
-    printed = {k: _strings(where, k, entry[k]) for k in LIST_KEYS if k in entry}
+    printed: dict[str, object] = {k: _strings(where, k, entry[k]) for k in LIST_KEYS if k in entry}
     if "measured" in printed:
-        printed["measured"] = tuple(_as_strings(printed["measured"]))
-    for key in (k for k in ROW_KEYS if k != "lines" and k not in LIST_KEYS):
+        printed["measured"] = _as_strings(printed["measured"])  # type: ignore[arg-type]
+    printed.update(parse_blame(where, entry))
+    printed.update(parse_step(where, entry))
+    for key in (k for k in ROW_KEYS if k not in _SHAPED_KEYS and k not in LIST_KEYS):
         value = entry.get(key)
         if key in REQUIRED_KEYS and value is None:
             raise PendcliError(f"{where}: missing {key!r}")
@@ -292,12 +347,14 @@ def _strings(where: str, key: str, value: object) -> str | tuple[str, ...]:
     return value if isinstance(value, str) else tuple(str(v) for v in items)
 
 
-def _check_text_fields(path: Path, rows: list[LedgerRow], text: Path) -> None:
+def _check_text_fields(
+    path: Path, rows: list[LedgerRow], text: Path, partial: bool = False
+) -> list[str] | None:
     """``lines`` within the paper's text (when the text is there to count), each wrong term
-    and quote printed verbatim within them, and ``restates`` naming another row."""
+    and quote printed verbatim within them, ``restates`` naming another row and the later
+    use of a slip (core/ledger_blame); the text's lines (None when it is not there)."""
     from pendcli.core.tables import read_table_text
 
-    ids = {r.id for r in rows}
     # not UTF-8 or empty: the text's own one-line error; missing: load_ledger says so
     lines = read_table_text(text, "paper text").splitlines() if text.exists() else None
     for row in rows:
@@ -305,8 +362,8 @@ def _check_text_fields(path: Path, rows: list[LedgerRow], text: Path) -> None:
             validate_span(f"{path}: {row.id}", list(row.lines), len(lines))
         if lines is not None:
             _check_printed_within_lines(f"{path}: {row.id}", row, lines, text.name)
-        if row.restates is not None and (row.restates not in ids or row.restates == row.id):
-            raise PendcliError(f"{path}: {row.id}: restates {row.restates!r}, not another row")
+    validate_blame(path, rows, lines, partial)
+    return lines
 
 
 def _check_printed_within_lines(where: str, row: LedgerRow, lines: list[str], text: str) -> None:
@@ -335,7 +392,7 @@ def _check_identity(where: str, row: LedgerRow) -> None:
     if is_result and row.equation:
         raise PendcliError(f'{where}: a stated result has equation = ""')
     if not is_result:
-        if not _LABEL_FORMAT.match(row.equation):
+        if not LABEL_FORMAT.match(row.equation):
             raise PendcliError(f'{where}: equation must be a label as printed, e.g. "(4)"')
         stem = row.id.split(".")[2]
         if stem != row.equation[1:-1]:
@@ -362,15 +419,6 @@ def _check_status_fields(where: str, row: LedgerRow) -> None:
         raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
 
 
-def reference_table(paper: Paper) -> References:
-    """The paper's references by name (``Paper.references``), empty if it has none."""
-    return paper.references() if paper.references is not None else {}
-
-
-# (the status the printed form earns, None for none the ledger may record; why)
-Computed = tuple[str | None, str]
-
-
 @dataclass(frozen=True)
 class Measured:
     """What the formula checks a row names (``measured``) found: each ``id verdict (order)``,
@@ -387,10 +435,12 @@ class Evaluated:
     dimensions: DimensionCheck | None = None  # the printed form's, when it has one
     computed: Computed | None = None  # computed from the printed form; None without a reference
     measured: Measured | None = None
+    # blame, what it carries, condition, step, readings
+    context: Context = field(default_factory=Context)
 
     def output_row(self) -> EquationRow:
         """The row every output shows: each piece in a field of its own."""
-        row, dims, measured = self.row, self.dimensions, self.measured
+        row, dims, measured, more = self.row, self.dimensions, self.measured, self.context
         status, why = self.computed if self.computed is not None else (None, None)
         return EquationRow(
             id=row.id,
@@ -415,6 +465,10 @@ class Evaluated:
             computed=Status(status) if status is not None else None,
             evidence=why,
             inconsistency=self.problem,
+            finding=is_finding(row),
+            restates=row.restated,
+            used_at=row.used_at,
+            **asdict(more),
         )
 
 
@@ -462,120 +516,13 @@ def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> lis
         symbols = ledger.symbols_for(row)
         dims = row_dimensions(row, symbols).get("printed")
         computed = row_printed_status(row, symbols, references) if row.reference else None
-        problem = printed_problem(row, computed)
-        out.append(Evaluated(row, problem, dims, computed, measured(row, formulas)))
+        condition = conditional(paper, ledger, row, references)
+        step, step_problem = step_evidence(row, ledger)
+        problem = printed_problem(row, computed) or step_problem
+        problem = problem or (condition.problem if condition is not None else None)
+        context = row_context(row, ledger, condition, step)
+        out.append(Evaluated(row, problem, dims, computed, measured(row, formulas), context))
     return out
-
-
-def printed_problem(row: LedgerRow, computed: Computed | None) -> str | None:
-    """How the status ``computed`` from the row's printed form contradicts the recorded one,
-    or None when they agree (or the row has no reference)."""
-    if computed is None or computed[0] == row.status:
-        return None
-    status, why = computed
-    return f"recorded {row.status}, but the printed form gives {status or NO_STATUS}: {why}"
-
-
-# reference name -> the function that builds it (``Paper.references``)
-References = Mapping[str, Callable[[], Any]]
-
-
-def verify_printed(
-    row: LedgerRow, symbols: Mapping[str, str], references: References
-) -> tuple[str | None, str | None]:
-    """(the status computed from the row's printed form and why, as one line; why it
-    contradicts the recorded status or None); (None, None) for a row without a reference."""
-    if row.reference is None:
-        return None, None
-    computed = row_printed_status(row, symbols, references)
-    return f"{computed[0] or NO_STATUS}: {computed[1]}", printed_problem(row, computed)
-
-
-def row_printed_status(
-    row: LedgerRow, symbols: Mapping[str, str], references: References
-) -> tuple[str | None, str]:
-    """The status ``row``'s printed form earns, by its kind, against its reference (built by
-    ``references[row.reference]``) and why, computed once per row and symbol table."""
-
-    assert row.reference is not None
-    builder = references.get(row.reference)
-    if builder is None:
-        raise PendcliError(f"{row.id}: the {row.paper} references have no {row.reference!r}")
-    # keyed on what a reference may read: the published numbers and the ledgers
-    return _printed_status(row, tuple(sorted(symbols.items())), builder, _read_by_references())
-
-
-@cache
-def _printed_status(
-    row: LedgerRow, symbols: tuple[tuple[str, str], ...], builder: Callable[[], Any], tables: str
-) -> tuple[str | None, str]:
-    from pendcli.core.check_kinds import kind_problem
-
-    assert row.reference is not None and row.kind is not None
-    reference = _reference(builder, row.paper, row.reference, tables)
-    formula = row_formula(f"{row.id}: printed", row.printed or "", dict(symbols))
-    wrong_kind = kind_problem(row.kind, formula, reference)
-    if wrong_kind:
-        return None, wrong_kind
-    return printed_status(row, dict(symbols), reference)
-
-
-@cache
-def _reference(builder: Callable[[], Any], paper: str, name: str, tables: str) -> Reference:
-    # one Reference per builder and tables folder, shared by every row that cites it
-    # (building one can take a second of sympy: solving, integrating, expanding)
-    try:
-        result: Reference = builder()
-    except ValueError as exc:  # a combination of parameters that makes no kind of check
-        raise PendcliError(f"{paper} reference {name!r}: {exc}") from None
-    return result
-
-
-def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Reference]:
-    """Every reference the paper's ledger cites (``reference = "…"``), by name, each built once
-    and shared as :func:`row_printed_status` shares it: what a cold run pays besides its
-    verdicts, the author's model done exactly."""
-
-    table = reference_table(paper)
-    names = dict.fromkeys(r.reference for r in load_ledger(paper.key, root).rows if r.reference)
-    missing = [n for n in names if n not in table]
-    if missing:
-        raise PendcliError(f"the {paper.key} references have no {', '.join(map(repr, missing))}")
-    key = _read_by_references()
-    return {n: _reference(table[n], paper.key, n, key) for n in names}
-
-
-# tables folder -> the digest of what a reference may read in it
-_DIGESTS: dict[str, str] = {}
-
-
-def _read_by_references() -> str:
-    """The content of the tables a reference may read (the published numbers, the ledgers),
-    as one digest: a copy of the tables folder shares the references built for the original,
-    an edited one builds its own."""
-    from pendcli.core.cache import content_digest
-    from pendcli.core.tables import tables_dir
-
-    root = tables_dir()
-    if str(root) not in _DIGESTS:
-        parts = (("published", root / "published"), ("equations", root / "equations"))
-        _DIGESTS[str(root)] = content_digest(p for p in parts if p[1].is_dir())
-    return _DIGESTS[str(root)]
-
-
-def _clear_reference_caches() -> None:
-    _printed_status.cache_clear()
-    _reference.cache_clear()
-    _DIGESTS.clear()
-
-
-def _register_reference_caches() -> None:
-    from pendcli.core.tables import on_table_change
-
-    on_table_change(_clear_reference_caches)
-
-
-_register_reference_caches()
 
 
 def equation_rows(
@@ -599,15 +546,27 @@ def equation_rows(
 
 
 def coverage(rows: Iterable[EquationRow]) -> dict[str, dict[str, int]]:
-    """Per paper: the count of rows by status, the total and how many are checked."""
+    """Per paper: the count of rows by status, the total and how many are checked; then the
+    findings (failing or misprinted rows that restate no other: one per slip, by status) and
+    the rows that only restate another's slip (core/ledger_blame)."""
     table: dict[str, dict[str, int]] = {}
     for row in rows:
-        counts = table.setdefault(row.paper, {s.value: 0 for s in STATUSES})
+        counts = table.setdefault(row.paper, {s.value: 0 for s in STATUSES} | _NO_FINDINGS)
         counts[row.status.value] += 1
+        if row.finding:
+            counts[f"{row.status.value} findings"] += 1
+        elif row.status in FLAWED:
+            counts["restating"] += 1
     for counts in table.values():
         counts["total"] = sum(counts[s] for s in STATUSES)
         counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
+        counts["findings"] = sum(counts[f"{s.value} findings"] for s in FLAWED)
     return table
+
+
+# the counts of findings coverage() adds to the counts by status
+_NO_FINDINGS = {f"{s.value} findings": 0 for s in FLAWED} | {"restating": 0}
+FINDING_KEYS = ("findings", *_NO_FINDINGS)
 
 
 def _order(value: float | None) -> str:

@@ -105,6 +105,9 @@ def validate_formulas(
                 if not symbols:
                     raise PendcliError(f"{path}: {row.id}: {field} needs a [symbols] table")
                 row_formula(f"{path}: {row.id}: {field}", getattr(row, field), symbols)
+                read = row.read(field)  # as the engine judges it, the reading table applied
+                if read is not None and read != getattr(row, field):
+                    row_formula(f"{path}: {row.id}: {field} (read)", read, symbols)
         if row.reference is not None and row.printed is None:
             raise PendcliError(f"{path}: {row.id}: a reference checks a printed form; none")
         if row.reading_formula is not None and row.status != "misprint":
@@ -152,11 +155,12 @@ def row_dimensions(row: LedgerRow, symbols: Mapping[str, str]) -> dict[str, Dime
 def printed_status(
     row: LedgerRow, symbols: Mapping[str, str], reference: Reference
 ) -> tuple[str | None, str]:
-    """The status the row's printed form earns against ``reference`` (core/printed_check)."""
+    """The status the row's printed form earns against ``reference`` (core/printed_check),
+    each formula read through the paper's reading table."""
     from pendcli.core.printed_check import computed_status
 
     def parsed(field: str) -> Formula | None:
-        text = getattr(row, field)
+        text = row.read(field)  # the reading table's replacements made (core/ledger_readings)
         return None if text is None else row_formula(f"{row.id}: {field}", text, symbols)
 
     printed = parsed("printed")

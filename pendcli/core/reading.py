@@ -64,7 +64,7 @@ def prose_paragraphs(text: str) -> tuple[Span, ...]:
 def label_lines(text: str) -> dict[str, tuple[int, ...]]:
     """Each equation label the text prints (``labels_in_text``), with the line of each
     printing, in the order of first printing."""
-    from pendcli.core.ledger import label_offsets
+    from pendcli.core.ledger_labels import label_offsets
 
     found: dict[str, list[int]] = {}
     for offset, label in label_offsets(text):

@@ -14,7 +14,15 @@ from dataclasses import dataclass, field
 
 from pendcli.core.vocabulary import EquationStatus, FormulaVerdict, ProcedureVerdict, Verdict
 
-__all__ = ["NO_STATUS", "ClaimRow", "EquationRow", "FormulaRow", "Recomputed", "equation_notes"]
+__all__ = [
+    "NO_STATUS",
+    "ClaimRow",
+    "EquationRow",
+    "FormulaRow",
+    "Recomputed",
+    "equation_notes",
+    "equation_status",
+]
 
 
 @dataclass(frozen=True)
@@ -145,14 +153,53 @@ class EquationRow:
     evidence: str | None = None
     inconsistency: str | None = None  # how the row contradicts its check (never in the output
     # of a consistent ledger: pendcli refuses an inconsistent one)
+    # Blame (tables/README.md): whether the row is a finding of its own (failing or misprinted,
+    # restating no other row), the rows whose slip it only cites or carries, the later use
+    # that decides its blame (lines, and the words there or why none), what it carries
+    finding: bool = False
+    restates: tuple[str, ...] = ()
+    used_at: tuple[int, ...] | None = None
+    later_use: str | None = None
+    carries: str | None = None
+    # its verdict on each side of an assumption the paper leaves open, and each status computed
+    condition: str | None = None
+    condition_evidence: str | None = None
+    step: str | None = None  # its own slip, judged against the printed input it carries
+    readings: str | None = None  # the OCR readings of the paper's table applied to its formulas
+    assumptions: tuple[str, ...] = ()  # the ledger's unstated assumptions its verdict rests on
 
     def as_dict(self) -> dict[str, object]:
         out = dict(self.__dict__)
         out["lines"] = list(self.lines) if self.lines is not None else None
+        out["restates"] = list(self.restates)
+        out["used_at"] = list(self.used_at) if self.used_at is not None else None
+        out["assumptions"] = list(self.assumptions)
         return out
 
 
+# the blame and context fields of an equation row, in the order its note shows them
+_CONTEXT = (
+    ("restates", "restates (no finding of its own)"),
+    ("later_use", "blame"),
+    ("carries", "carries"),
+    ("step", "its own slip"),
+    ("readings", "read"),
+    ("assumptions", "rests on the assumption(s)"),
+)
 NO_STATUS = "no status the ledger may record"  # what the printed form earns when computed is None
+
+
+def equation_status(row: Mapping[str, object]) -> str:
+    """An equation row's status as the tables show it: a conditional verdict names both sides
+    (« fails (holds for g <= 9.80, fails for g > 9.80) »), never a bare status; a row that only
+    restates another's slip says so."""
+    status = str(row.get("status", ""))
+    condition = str(row.get("condition") or "")
+    if condition:
+        return f"{status} ({condition.split(' (', 1)[0]})"
+    if row.get("restates") and status in ("fails", "misprint"):
+        return f"{status} (restates)"
+    return status
 
 
 def equation_notes(row: Mapping[str, object]) -> str:
@@ -161,6 +208,8 @@ def equation_notes(row: Mapping[str, object]) -> str:
     the printed form and why, what the formula checks measured, a dimension mismatch, an
     inconsistency."""
     notes = []
+    if row.get("condition"):
+        notes.append(f"conditional: {row['condition']}; {row.get('condition_evidence')}")
     if row.get("reading_note"):
         notes.append(f"reading: {row['reading_note']}")
     if row.get("corrected_note"):
@@ -170,6 +219,11 @@ def equation_notes(row: Mapping[str, object]) -> str:
     if row.get("against") is not None:
         computed = row.get("computed") or NO_STATUS
         notes.append(f"computed from the printed form: {computed}: {row.get('evidence')}")
+    for key, label in _CONTEXT:
+        value = row.get(key)
+        if value:
+            shown = ", ".join(map(str, value)) if isinstance(value, list | tuple) else value
+            notes.append(f"{label}: {shown}")
     if row.get("measured"):
         notes.append(f"measured: {row['measured']}")
     if row.get("dimensions") == "inconsistent":

@@ -26,6 +26,7 @@ _PYTHON_TYPES: dict[str, tuple[type, ...]] = {
     "number": (int, float),
     "integer": (int,),
     "array": (list,),
+    "boolean": (bool,),
     "null": (type(None),),
 }
 
@@ -33,14 +34,16 @@ _PYTHON_TYPES: dict[str, tuple[type, ...]] = {
 @dataclass(frozen=True)
 class Field:
     name: str
-    types: tuple[str, ...]  # JSON type names: "string", "number", "integer", "array", "null"
+    # JSON type names: "string", "number", "integer", "array", "boolean", "null"
+    types: tuple[str, ...]
     meaning: str
     values: tuple[str, ...] = ()  # the only values a string may take (or null), when listed
 
     def problems(self, value: object) -> list[str]:
         """Why ``value`` (as json.loads gives it) does not fit this field; empty if it does."""
         allowed = tuple(t for name in self.types for t in _PYTHON_TYPES[name])
-        if isinstance(value, bool) or not isinstance(value, allowed):
+        wrong_bool = isinstance(value, bool) and "boolean" not in self.types
+        if wrong_bool or not isinstance(value, allowed):
             return [f"{self.name}: {value!r} is not {' or '.join(self.types)}"]
         if self.values and value is not None and value not in self.values:
             return [f"{self.name}: {value!r} is not one of {', '.join(self.values)}"]
@@ -197,6 +200,53 @@ EQUATIONS = RowKind(
             _OPT_TEXT,
             "how the row contradicts its check; always null (pendcli refuses such a ledger)",
         ),
+        Field(
+            "finding",
+            ("boolean",),
+            "true for a failing or misprinted row that restates no other: one entry per slip, "
+            "what the counts count (tables/README.md, Blame)",
+        ),
+        Field(
+            "restates",
+            ("array",),
+            "ids of the rows whose formula it repeats (a definition) or whose slip it only "
+            "cites or carries (then no finding of its own)",
+        ),
+        Field(
+            "used_at",
+            ("array", "null"),
+            "the lines where the author's later work uses the form: the wrong form carried "
+            "(fails) or the right one taken (misprint); null without",
+        ),
+        Field(
+            "later_use",
+            _OPT_TEXT,
+            "the later use that decides the blame, with the words there, or why none",
+        ),
+        Field(
+            "carries",
+            _OPT_TEXT,
+            "the earlier row whose wrong form the row takes as input: a step that holds on "
+            "wrong values, or a slip of its own beside the carried one",
+        ),
+        Field(
+            "condition",
+            _OPT_TEXT,
+            "the verdict on each side of an assumption the paper does not state, with its "
+            "range (e.g. holds for g <= 9.80, fails for g > 9.80)",
+        ),
+        Field(
+            "condition_evidence",
+            _OPT_TEXT,
+            "the status computed at both ends of each side of the condition",
+        ),
+        Field(
+            "step",
+            _OPT_TEXT,
+            "the row's own slip, judged against the printed input it carries",
+        ),
+        Field("readings", _OPT_TEXT, "the OCR readings of the paper's table applied to it"),
+        Field("assumptions", ("array",), "ids of the ledger's unstated assumptions it rests on"),
     ),
 )
 STABILITY = RowKind(

@@ -12,7 +12,8 @@ import math
 import os
 import re
 import tomllib
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -29,6 +30,7 @@ __all__ = [
     "PaperConstant",
     "PaperTable",
     "PublishedValue",
+    "assuming",
     "clear_table_cache",
     "inside_tables",
     "load_paper_table",
@@ -110,14 +112,20 @@ class PaperTable:
         return str(self.path) if self.path is not None else f"published/{self.key}.toml"
 
     def constant(self, name: str) -> float:
-        """The value of constant ``name`` from ``[paper.constants]``."""
+        """The value of constant ``name`` from ``[paper.constants]`` (or the one
+        :func:`assuming` puts in its place)."""
         for c in self.constants:
             if c.name == name:
-                return c.value
+                return _ASSUMED.get((self.key, name), c.value)
         raise PendcliError(
             f"{self.where}: no constant {name!r} in [paper.constants] (the code needs it); "
             f"known: {', '.join(c.name for c in self.constants) or 'none'}"
         )
+
+    def constant_range(self, name: str) -> tuple[float, float]:
+        """The declared range of constant ``name`` (ends included)."""
+        self.constant(name)  # an unknown name: the error naming the known ones
+        return next(c.range for c in self.constants if c.name == name)
 
     def claim(self, claim_id: str, needed_for: str = "") -> PublishedValue:
         """The published entry ``claim_id`` (a printed intermediate the model reuses)."""
@@ -148,6 +156,30 @@ def tables_dir() -> Path:
     if override:
         return Path(override)
     return Path(__file__).resolve().parent.parent / "_tables"
+
+
+# (paper, constant) -> the value put in place of the table's while a verdict is computed
+# across the range of an assumption the paper does not state (core/ledger_conditions)
+_ASSUMED: dict[tuple[str, str], float] = {}
+
+
+@contextmanager
+def assuming(key: str, name: str, value: float) -> Iterator[None]:
+    """Within the block, constant ``name`` of paper ``key`` is ``value`` (inside the
+    constant's declared range; outside it, an error naming both): what a ledger row's verdict
+    is at another value of an assumption its paper leaves open (g, for Lecornu)."""
+    low, high = load_paper_table(key).constant_range(name)
+    if not (math.isfinite(value) and low <= value <= high):
+        raise PendcliError(f"{key}: {name} = {value!r} is outside its range [{low}, {high}]")
+    before = _ASSUMED.get((key, name))
+    _ASSUMED[key, name] = value
+    try:
+        yield
+    finally:
+        if before is None:
+            del _ASSUMED[key, name]
+        else:
+            _ASSUMED[key, name] = before
 
 
 def paper_constant(key: str, name: str) -> float:

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from pendcli.core.numbers import parse_printed
-from pendcli.core.rows import equation_notes
+from pendcli.core.rows import equation_notes, equation_status
 from pendcli.core.vocabulary import FormulaVerdict, ProcedureVerdict, Verdict
 from pendcli.render.columns import Column, Row, fmt_float
 
@@ -163,7 +163,9 @@ FORMULA_COLUMNS: tuple[Column, ...] = (
 # An equation row's pieces (reading, correction, note, the status computed from the printed
 # form, a dimension mismatch) shown in one note column; JSON and CSV keep each in its field.
 EQUATION_COLUMNS: tuple[Column, ...] = (
-    *(Column(k, k) for k in ("id", "equation", "section", "status", "kind", "observed_order")),
+    *(Column(k, k) for k in ("id", "equation", "section")),
+    Column("status", "status", fmt=equation_status),
+    *(Column(k, k) for k in ("kind", "observed_order")),
     Column("note", "note", fmt=equation_notes),
 )
 

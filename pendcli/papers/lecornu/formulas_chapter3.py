@@ -87,7 +87,7 @@ def _ledger_row_in(row_id: str, tables: str) -> tuple[Any, dict[str, str]]:
     raw = _ledger_raw(tables)
     entries = [e for e in raw["equation"] if e.get("id") == f"lecornu.{row_id}"]
     path = ledger_path("lecornu", Path(tables))
-    ledger = parse_ledger({**raw, "equation": entries}, "lecornu", path, Path(tables))
+    ledger = parse_ledger({**raw, "equation": entries}, "lecornu", path, Path(tables), partial=True)
     (row,) = ledger.rows
     return row, ledger.symbols_for(row)
 
@@ -99,8 +99,8 @@ def _ledger_row(row_id: str) -> tuple[Any, dict[str, str]]:
 
 
 def ledger_text(row_id: str, field: str = "printed") -> str:
-    """Ledger row ``lecornu.<row_id>``'s formula ``field`` (``printed`` or
-    ``reading_formula``) as the ledger transcribes it."""
+    """Ledger row ``lecornu.<row_id>``'s formula ``field`` (``printed``,
+    ``reading_formula`` or ``corrected_formula``) as the ledger transcribes it."""
     row, _ = _ledger_row(row_id)
     text = getattr(row, field)
     if text is None:

@@ -139,14 +139,14 @@ def _trace(ref: Reference) -> tuple[Array, Array]:
 
 
 def _trajectory_row(ref: Reference) -> FormulaRow:
-    ((lhs, rhs),) = ledger_sides("result.trajectory_after_52", "reading_formula")
+    ((lhs, rhs),) = ledger_sides("result.trajectory_after_52", "corrected_formula")
     gap = evaluator(lhs - rhs, ("x", "y", "rho1", "rho2", "p"))
     xs, ys = _trace(ref)
     res = [np.max(np.abs(gap(xs[j], ys[j], RHO1, RHO2, p))) for j, p in enumerate(P_SWEEP)]
     return formula_row(
         "trajectory_after_52",
         "line 1126 as read",
-        ledger_text("result.trajectory_after_52", "reading_formula"),
+        ledger_text("result.trajectory_after_52", "corrected_formula"),
         _p_study(res, ref),
         ref,
         note="The trace (x, y) = (θ1, θ2) of (48) linear, started as (52) (ρ1 = 1, "
@@ -160,7 +160,7 @@ def _homothety_axes_row(ref: Reference) -> FormulaRow:
     s = √((x/ρ1)² + (y/ρ2)²), against the printed ρi(1 − (3p/4) arctg(ρ1y/(ρ2x)))."""
     xs, ys = _trace(ref)
     worst = np.zeros(len(P_SWEEP))
-    axes = ledger_sides("result.homothety_ratio", "reading_formula")[:2]
+    axes = ledger_sides("result.homothety_ratio", "corrected_formula")[:2]
     for (_, axis), rho in zip(axes, (RHO1, RHO2), strict=True):
         printed = evaluator(axis, ("x", "y", "rho1", "rho2", "p"))
         for j, p in enumerate(P_SWEEP):
@@ -170,7 +170,7 @@ def _homothety_axes_row(ref: Reference) -> FormulaRow:
     return formula_row(
         "homothety_axes",
         "lines 1130-1134 as read",
-        "; ".join(ledger_text("result.homothety_ratio", "reading_formula").split("; ")[:2]),
+        "; ".join(ledger_text("result.homothety_ratio", "corrected_formula").split("; ")[:2]),
         _p_study(worst, ref),
         ref,
         note="The ellipse homothetic to the one of axes ρ1, ρ2 through each point of the "

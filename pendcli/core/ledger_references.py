@@ -1,0 +1,176 @@
+"""The ledger's references and the status a row's printed form earns against its own.
+
+A row's ``reference`` names a builder of its paper's table (``Paper.references``); each is
+built once per tables folder and shared by every row that cites it (:func:`row_printed_status`,
+:func:`cited_references`), and built afresh under an assumed constant for a conditional row
+(:func:`conditional`). :func:`printed_problem` says how a computed status contradicts the
+recorded one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from functools import cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from pendcli.core.errors import PendcliError
+from pendcli.core.ledger_conditions import Conditional, row_conditional
+from pendcli.core.ledger_formulas import printed_status, row_formula
+from pendcli.core.rows import NO_STATUS
+
+if TYPE_CHECKING:
+    from pendcli.core.ledger import Ledger, LedgerRow
+    from pendcli.core.paper import Paper
+    from pendcli.core.printed_check import Reference
+
+__all__ = [
+    "Computed",
+    "References",
+    "cited_references",
+    "conditional",
+    "printed_problem",
+    "reference_table",
+    "row_printed_status",
+    "verify_printed",
+]
+
+# reference name -> the function that builds it (``Paper.references``)
+References = Mapping[str, Callable[[], Any]]
+
+
+def reference_table(paper: Paper) -> References:
+    """The paper's references by name (``Paper.references``), empty if it has none."""
+    return paper.references() if paper.references is not None else {}
+
+
+# (the status the printed form earns, None for none the ledger may record; why)
+Computed = tuple[str | None, str]
+
+
+def conditional(
+    paper: Paper, ledger: Ledger, row: LedgerRow, references: References
+) -> Conditional | None:
+    """The row's verdict on each side of its condition, each computed from its reference
+    built afresh under the assumed value (core/ledger_conditions); None without one."""
+    if row.condition is None or row.reference is None:
+        return None
+    builder = references[row.reference]
+    fresh = getattr(builder, "__wrapped__", builder)  # a cached builder: its function
+    symbols = ledger.symbols_for(row)
+
+    def compute() -> tuple[str | None, str]:
+        return printed_status(row, symbols, _built(fresh, paper.key, row.reference or ""))
+
+    return row_conditional(paper.key, row, ledger.assumptions, compute)
+
+
+def _built(builder: Callable[[], Any], paper: str, name: str) -> Reference:
+    try:
+        result: Reference = builder()
+    except ValueError as exc:  # a combination of parameters that makes no kind of check
+        raise PendcliError(f"{paper} reference {name!r}: {exc}") from None
+    return result
+
+
+def printed_problem(row: LedgerRow, computed: Computed | None) -> str | None:
+    """How the status ``computed`` from the row's printed form contradicts the recorded one,
+    or None when they agree (or the row has no reference)."""
+    if computed is None or computed[0] == row.status:
+        return None
+    status, why = computed
+    return f"recorded {row.status}, but the printed form gives {status or NO_STATUS}: {why}"
+
+
+def verify_printed(
+    row: LedgerRow, symbols: Mapping[str, str], references: References
+) -> tuple[str | None, str | None]:
+    """(the status computed from the row's printed form and why, as one line; why it
+    contradicts the recorded status or None); (None, None) for a row without a reference."""
+    if row.reference is None:
+        return None, None
+    computed = row_printed_status(row, symbols, references)
+    return f"{computed[0] or NO_STATUS}: {computed[1]}", printed_problem(row, computed)
+
+
+def row_printed_status(
+    row: LedgerRow, symbols: Mapping[str, str], references: References
+) -> tuple[str | None, str]:
+    """The status ``row``'s printed form earns, by its kind, against its reference (built by
+    ``references[row.reference]``) and why, computed once per row and symbol table."""
+    assert row.reference is not None
+    builder = references.get(row.reference)
+    if builder is None:
+        raise PendcliError(f"{row.id}: the {row.paper} references have no {row.reference!r}")
+    # keyed on what a reference may read: the published numbers and the ledgers
+    return _printed_status(row, tuple(sorted(symbols.items())), builder, _read_by_references())
+
+
+@cache
+def _printed_status(
+    row: LedgerRow, symbols: tuple[tuple[str, str], ...], builder: Callable[[], Any], tables: str
+) -> tuple[str | None, str]:
+    from pendcli.core.check_kinds import kind_problem
+
+    assert row.reference is not None and row.kind is not None
+    reference = _reference(builder, row.paper, row.reference, tables)
+    formula = row_formula(f"{row.id}: printed", row.printed or "", dict(symbols))
+    wrong_kind = kind_problem(row.kind, formula, reference)
+    if wrong_kind:
+        return None, wrong_kind
+    return printed_status(row, dict(symbols), reference)
+
+
+@cache
+def _reference(builder: Callable[[], Any], paper: str, name: str, tables: str) -> Reference:
+    # one Reference per builder and tables folder, shared by every row that cites it
+    # (building one can take a second of sympy: solving, integrating, expanding)
+    return _built(builder, paper, name)
+
+
+def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Reference]:
+    """Every reference the paper's ledger cites (``reference = "…"``), by name, each built once
+    and shared as :func:`row_printed_status` shares it: what a cold run pays besides its
+    verdicts, the author's model done exactly."""
+    from pendcli.core.ledger import load_ledger
+
+    table = reference_table(paper)
+    names = dict.fromkeys(r.reference for r in load_ledger(paper.key, root).rows if r.reference)
+    missing = [n for n in names if n not in table]
+    if missing:
+        raise PendcliError(f"the {paper.key} references have no {', '.join(map(repr, missing))}")
+    key = _read_by_references()
+    return {n: _reference(table[n], paper.key, n, key) for n in names}
+
+
+# tables folder -> the digest of what a reference may read in it
+_DIGESTS: dict[str, str] = {}
+
+
+def _read_by_references() -> str:
+    """The content of the tables a reference may read (the published numbers, the ledgers),
+    as one digest: a copy of the tables folder shares the references built for the original,
+    an edited one builds its own."""
+    from pendcli.core.cache import content_digest
+    from pendcli.core.tables import tables_dir
+
+    root = tables_dir()
+    if str(root) not in _DIGESTS:
+        parts = (("published", root / "published"), ("equations", root / "equations"))
+        _DIGESTS[str(root)] = content_digest(p for p in parts if p[1].is_dir())
+    return _DIGESTS[str(root)]
+
+
+def _clear_reference_caches() -> None:
+    _printed_status.cache_clear()
+    _reference.cache_clear()
+    _DIGESTS.clear()
+
+
+def _register_reference_caches() -> None:
+    from pendcli.core.tables import on_table_change
+
+    on_table_change(_clear_reference_caches)
+
+
+_register_reference_caches()
