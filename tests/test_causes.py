@@ -349,3 +349,14 @@ def test_with_causes_refuses_unknown_rows_and_causes():
     ):
         with pytest.raises(PendcliError):
             with_causes([row], bad)
+
+
+def test_a_number_that_agrees_with_the_truth_has_no_cause() -> None:
+    """A cause says why a printed number disagrees: one that agrees has none (the rule of
+    tables/README.md), though its note may say how he rounded it."""
+    from pendcli.papers.registry import PAPERS, evaluate
+
+    with_cause = [
+        r.id for key in PAPERS for r in evaluate(key) if r.verdict == "agrees" and r.cause
+    ]
+    assert with_cause == []
