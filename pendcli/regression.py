@@ -171,6 +171,11 @@ def read_table(text: str, where: str, columns: tuple[str, ...] | None = None) ->
     try:
         header = tuple(next(reader, ()))
         _check_header(header, where, columns)
+        if not text.endswith("\n"):  # pendcli ends every table with one: the last row is cut
+            last = text.count("\n") + 1
+            raise PendcliError(
+                f"{where}: line {last} ends without a newline; the table was cut short"
+            )
         rows: dict[str, dict[str, str]] = {}
         for fields in reader:
             if fields:  # a blank line carries nothing
@@ -178,10 +183,6 @@ def read_table(text: str, where: str, columns: tuple[str, ...] | None = None) ->
                 rows[row["id"]] = row
     except csv.Error as exc:
         raise PendcliError(f"{where}: line {reader.line_num}: malformed CSV ({exc})") from None
-    if not text.endswith("\n"):  # pendcli ends every table with one: a cut file may still parse
-        raise PendcliError(
-            f"{where}: line {reader.line_num} ends without a newline; the table was cut short"
-        )
     return header, rows
 
 

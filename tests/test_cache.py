@@ -179,7 +179,7 @@ def test_a_changed_ledger_is_recomputed_not_served_stale(tmp_path):
     env = {"PENDCLI_CACHE": str(tmp_path / "cache"), "PENDCLI_TABLES": str(tables)}
     first = invoke(*EQUATIONS, "-f", "json", env=env)
     assert first.code == 0, first.err
-    ledger = tables / "equations" / "charbonnier.toml"
+    ledger = tables / "equations" / "tisserand.toml"
     text = ledger.read_text(encoding="utf-8")
     statement = json.loads(first.out)["equations"][0]["statement"]
     assert text.count(f'statement = "{statement}"') == 1

@@ -307,7 +307,7 @@ def test_non_finite_committed_values_fail_the_check(tables_copy: Path) -> None:
         (lambda text: "", "empty table; expected the header line"),
         (lambda text: text[: len(text) // 2], "cut short"),  # cut mid-row
         (lambda text: text[: text.index("\n", 500)], "cut short"),  # cut at a row's end
-        (lambda text: text.replace(",agrees,", ",", 1), "fields; expected 10"),
+        (lambda text: text.replace(",agrees,", ",", 1), "fields; expected 12"),
         (lambda text: text.replace("recomputed", "recomputd"), "line 1: header"),
     ],
 )

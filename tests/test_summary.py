@@ -84,8 +84,6 @@ def test_equations_command_lists_each_label_and_filters_by_status(monkeypatch, s
     args = ("equations", "--paper", "charbonnier", "--status", "misprint", "-f", "json")
     code, out, err = invoke(*args)
     rows = json.loads(out)["equations"]
-    assert rows and {r["status"] for r in rows} == {"fails"}
-    assert all(r["corrected_note"] and r["corrected"] for r in rows)  # each corrected
     assert rows and {r["status"] for r in rows} == {"misprint"}
     # each read (the evident reading, in words and as a formula) and its blame recorded
     assert all(r["reading_note"] and r["reading"] and r["later_use"] for r in rows)
