@@ -568,7 +568,7 @@ def _grid_header(fig: Any, title: str) -> None:
     fig.legend(
         handles=handles,
         loc="upper right",
-        bbox_to_anchor=(1, top),
+        bbox_to_anchor=(0.99, top),  # inside the edge: the last label was clipped there
         ncols=3,
         fontsize=PANEL_FONT + 1,
         frameon=False,
