@@ -16,6 +16,7 @@ This module validates those keys; :func:`is_finding` says which rows the counts 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -168,9 +169,12 @@ def later_use(row: LedgerRow) -> str | None:
     if row.used_at is None:
         return None
     where = ", ".join(str(n) for n in row.used_at)
-    words = "; ".join(f"« {w} »" for w in row.used_words)
+    # the words where they are prose; a formula's TeX is located by its lines alone (every
+    # output shows this line, the edition too, where raw TeX would be unreadable)
+    words = "; ".join(f"« {w} »" for w in row.used_words if not re.search(r"[\\{}^_$]", w))
     said = "carried" if row.status is Status.FAILS else "not carried: the right form is used"
-    return f"{said} at line{'s' if len(row.used_at) > 1 else ''} {where}: {words}"
+    at = f"{said} at line{'s' if len(row.used_at) > 1 else ''} {where}"
+    return f"{at}: {words}" if words else at
 
 
 def carried_text(row: LedgerRow, source: LedgerRow) -> str:
