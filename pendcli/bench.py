@@ -1,10 +1,10 @@
-"""Benchmarks: start-up times and the published work-precision tables (issue 6).
+"""Benchmarks: start-up times and the published work-precision tables.
 
 ``python -m pendcli.bench --write docs/benchmarks.md`` measures, in one run and on this machine,
 
 * ``pendcli --help`` against ``python -c "import typer"`` (target: within 1.3x),
 * ``pendcli reproduce --format json`` against ``python -c "import scipy.special,
-  scipy.integrate"`` (target: within 1.8x, issue 14),
+  scipy.integrate"`` (target: within 1.8x),
 
 each as the median wall time of several interleaved runs of a fresh interpreter (the
 result cache off); against the import floor B (``python -c "import sympy, scipy.special,
@@ -86,7 +86,7 @@ def _timed(cmd: list[str], env: dict[str, str] | None = None) -> tuple[float, fl
     return timed_process(cmd, variables)
 
 
-# The import floor B of the work (issue 23) and what is measured against it:
+# The import floor B of the work and what is measured against it:
 # label -> (the reference label, the measure the target names, the target ratio)
 FLOOR = "B: import sympy, scipy.special, scipy.integrate, matplotlib.pyplot, mpmath"
 # What every cold `equations` run pays before its first check: B's imports, then each ledger

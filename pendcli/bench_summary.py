@@ -1,6 +1,6 @@
 """The suite and the install, timed by ``make bench``, and the README's summary of the run.
 
-Issue 23 asks that every timing the project states comes from one measurement. ``python -m
+The project asks that every timing the project states comes from one measurement. ``python -m
 pendcli.bench`` measures everything in one run; this module adds what only a checkout can
 measure (the fast test suite as ``make test`` runs it; installing the runtime from the lock
 into a new venv with empty download caches: "from nothing") and writes the few headline
@@ -36,8 +36,8 @@ __all__ = [
 ]
 
 SUMMARY_START, SUMMARY_END = "<!-- timings:start -->", "<!-- timings:end -->"
-SUITE_TARGET = 25.0  # s wall, quiet (issue 23)
-INSTALL_TARGET = 15.0  # s wall, from nothing (issue 23)
+SUITE_TARGET = 25.0  # s wall, quiet
+INSTALL_TARGET = 15.0  # s wall, from nothing
 # the fast suite exactly as `make test` runs it (Makefile: PYTEST and XDIST)
 SUITE_ARGS = ["-m", "pytest", "-q", "-n", "2", "--dist", "worksteal", "-p", "no:randomly"]
 SUITE_MARKS = ["-m", "not slow and not browser"]

@@ -1,4 +1,4 @@
-"""Numerical stability at the extremes (issue 7): where each method is accurate, measured now.
+"""Numerical stability at the extremes: where each method is accurate, measured now.
 
 Each paper declares its rows through its ``Paper.stability_rows`` hook (in
 ``pendcli.papers.<paper>.stability``), built with the helpers here;

@@ -1,4 +1,4 @@
-"""Speed against accuracy (issue 6): work-precision measurements, one family per quantity.
+"""Speed against accuracy: work-precision measurements, one family per quantity.
 
 The generic engine.  Each paper declares its families in ``pendcli.papers.<paper>.speed``
 (``FAMILIES: list[Family]``, its ``Paper.tradeoff_families``); :func:`families` collects

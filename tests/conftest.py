@@ -5,7 +5,7 @@ import os
 os.environ.setdefault("COLUMNS", "160")
 os.environ["NO_COLOR"] = "1"
 
-# No wall-clock limit in any test (issue 23): every hypothesis test, in any file, runs without a
+# No wall-clock limit in any test: every hypothesis test, in any file, runs without a
 # deadline; its work is bounded by example counts, so a loaded machine is slower, never red.
 from hypothesis import settings
 
@@ -36,7 +36,7 @@ from timing import (  # noqa: E402, F401
     pytest_runtest_teardown,
 )
 
-# The slow families (issue 23): `make test` runs the rest, `make test-slow` these, CI both. A
+# The slow families: `make test` runs the rest, `make test-slow` these, CI both. A
 # test is in a family when its id without parameters (file::function) matches a pattern, or
 # when it asks for a fixture named below; each says why it cannot be fast. Whatever the
 # families miss, `make test-durations` lists (a test not marked slow over 2 s).
@@ -115,7 +115,7 @@ SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
 }
-# The long families of like cases (issue 23): one case per committed ledger row, or one edit of
+# The long families of like cases: one case per committed ledger row, or one edit of
 # the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps
 # the cases of rank 0, n, 2n, ... (n below) in the order of the parameters, among those not slow
 # already: the first case always, and the rest spread over the list (a ledger's rows run in

@@ -1,4 +1,4 @@
-"""List the tests not marked ``slow`` that take over 2 s (issue 23), from ``--timings-file``.
+"""List the tests not marked ``slow`` that take over 2 s, from ``--timings-file``.
 
     python tests/durations.py TIMINGS [--limit 2] [--recheck 2] [--wall] [--top 20] [--slow]
 

@@ -1,4 +1,4 @@
-"""Where tests/conftest.py records how it split the suite (issue 23), for
+"""Where tests/conftest.py records how it split the suite, for
 tests/test_suite_split.py: each long family's (fast cases, all cases), and every node id
 collected before ``-m`` deselected the slow ones."""
 

@@ -1,4 +1,4 @@
-"""Output folders never cost a user a file (issue 25, items 1-3 and 7).
+"""Output folders never cost a user a file.
 
 ``reproduce --out`` replaces a folder as a whole, so it must only ever replace one pendcli
 made (its manifest lists every file in it), touch nothing beside it but its own temporary

@@ -1,6 +1,6 @@
-"""Kills and signals at several moments of a write (issue 25, items 1, 7, 8; issue 23's
-interrupts): the target is the old version or the new one, byte for byte; Ctrl-C and TERM end
-with one line and status 130 or 143, no traceback, no leftover and no orphan process.
+"""Kills and signals at several moments of a write: the target is the old version or the new
+one, byte for byte; Ctrl-C and TERM end with one line and status 130 or 143, no traceback, no
+leftover and no orphan process.
 
 Each moment is an event the test waits for (a temporary folder appears, a file in it), polled
 a bounded number of times, never a clock. The CLI runs are subprocesses of the installed

@@ -1,4 +1,4 @@
-"""Bad table files (issue 25, items 4-6): every one is refused when read, in one line that names
+"""Bad table files: every one is refused when read, in one line that names
 the file (and, for bytes that are not UTF-8, the offset), with exit 2: no hang, no internal
 error (exit 3), no empty result, and the committed tables untouched.
 

@@ -1,4 +1,4 @@
-"""make bench: one measurement behind every timing the README states (issue 23)."""
+"""make bench: one measurement behind every timing the README states."""
 
 from __future__ import annotations
 

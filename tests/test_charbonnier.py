@@ -474,7 +474,7 @@ def test_check_pendulum_is_read_from_the_table():
 def _run_cli(*args: str) -> tuple[int, str, str, float]:
     """`pendcli ARGS` in a fresh process: (code, stdout, stderr, CPU seconds of the child).
 
-    CPU, not wall time, so a loaded machine cannot fail the test (issue 23).
+    CPU, not wall time, so a loaded machine cannot fail the test.
     """
     import resource
 
@@ -536,7 +536,7 @@ def test_recurrence_warning_is_right_about_the_value():
 
 
 def test_short_option_x_is_accepted():
-    """Issue 13: `charbonnier integral 3 -x 1` was refused as an unexpected extra argument."""
+    """`charbonnier integral 3 -x 1` was refused as an unexpected extra argument."""
     from cli_helpers import invoke
 
     code, out, err = invoke("charbonnier", "integral", "3", "-x", "1", "-f", "json")

@@ -1,4 +1,4 @@
-"""Issue 7: Charbonnier's I_n and first-order amplitude loss far outside the printed range.
+"""Charbonnier's I_n and first-order amplitude loss far outside the printed range.
 
 References are independent of the code under test: I_n(π) = B(½, (n+2)/2) from mpmath's gamma
 functions at 50 digits; I_n(x) from the positive hypergeometric series written out here at 50
@@ -263,7 +263,7 @@ def test_perturbed_pendulum_matches_the_closed_form_for_any_g(g):
         assert 0.4 * delta**2 < t_end * p.k - math.pi < 0.6 * delta**2
 
 
-# --- the measured domains of `charbonnier integral --method` (issue 15) ---------------------
+# --- the measured domains of `charbonnier integral --method` ---------------------
 
 
 def test_recurrence_error_bound_covers_the_measured_error():

@@ -119,7 +119,7 @@ def test_tol_picks_a_measured_method_and_says_which():
     assert "out of reach" in err
 
 
-# --- issue 13: the command line as a new user meets it -------------------------------------
+# --- the command line as a new user meets it -------------------------------------
 
 
 @pytest.mark.parametrize("group", [(), ("lecornu",), ("tisserand",), ("charbonnier",)])
@@ -225,7 +225,7 @@ def test_shell_completion_sees_lazy_commands():
     assert "_PENDCLI_COMPLETE=complete_bash" in proc.stdout
 
 
-# --- issue 15: every OS error one line naming the path, exit 2; any locale -----------------
+# --- every OS error one line naming the path, exit 2; any locale -----------------
 
 
 def _pendcli(*args, **kwargs):

@@ -1,4 +1,4 @@
-"""Regeneration is deterministic (issue 23): the same bytes whatever the process count, and a
+"""Regeneration is deterministic: the same bytes whatever the process count, and a
 fresh copy of the committed tables is left as it is.
 
 Each run is a fresh process, so nothing one run leaves behind (a global mpmath precision, a

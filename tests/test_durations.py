@@ -1,4 +1,4 @@
-"""The 2 s rule's guard (tests/durations.py, issue 23): a fast test over the limit fails it,
+"""The 2 s rule's guard (tests/durations.py): a fast test over the limit fails it,
 a slow one does not, and ``--recheck`` keeps a test only if a rerun alone is over the limit
 too (a real pytest process here, on a folder of two tiny tests: one that burns CPU, one that
 costs nothing but was recorded as heavy, as a crowded machine would record it)."""

@@ -1,4 +1,4 @@
-"""How the author got his digits (issue 24): each mechanism recomputed independently, the
+"""How the author got his digits: each mechanism recomputed independently, the
 coincidence estimate on targets whose answer is known, every wrong digit accounted for, and
 the CLI (json shape, one-line errors).
 
@@ -90,7 +90,7 @@ def test_a_carry_that_changes_the_digit_count_is_a_slip_too():
 
 
 def test_six_forty_seven_is_pi_314_chopped(rows):
-    """The hypothesis of issue 24: π(7π² - 3)/32 with π = 3,14 is 6,4779, chopped 6,47."""
+    """The hypothesis: π(7π² - 3)/32 with π = 3,14 is 6,4779, chopped 6,47."""
     pi = F(314, 100)
     value = pi * (7 * pi**2 - 3) / 32
     assert value == F(647793775, 10**8)  # 6,47793775

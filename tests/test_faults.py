@@ -1,4 +1,4 @@
-"""Fault injection on the committed tables (issue 15): each fault ends in the old or the new
+"""Fault injection on the committed tables: each fault ends in the old or the new
 set of tables, never a mix or a cut file, and in one named line with the right exit code.
 
 Process-level faults (kill -9, a file-size limit, a read-only folder) run `pendcli check

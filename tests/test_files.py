@@ -1,4 +1,4 @@
-"""Atomic files and folders (issue 15): a crash leaves the old content or the new, never a mix."""
+"""Atomic files and folders: a crash leaves the old content or the new, never a mix."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""`pendcli formulas`: derived formulas against direct integration (issue 5).
+"""`pendcli formulas`: derived formulas against direct integration.
 
 Every check is verified three ways: the verdict expected from working the derivation by hand
 (one test id per formula, a failure asserted as a failure), the reference solution against a

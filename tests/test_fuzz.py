@@ -1,11 +1,11 @@
-"""Fuzz the CLI with inputs that reach computation, not only the parser (issue 15).
+"""Fuzz the CLI with inputs that reach computation, not only the parser.
 
 Property, for every command: exit code 0, 1 or 2; no traceback; no "internal error"; on a
 failure, at most one line on stderr. Values are drawn near the edges of each documented domain
 (just inside, on, just outside), in the forms a user types (``1e-3``, ``0.0010000001``, ``-0``,
 ``nan``), plus a few parser-level oddities. Every run is in-process (tests/cli_helpers.py).
 
-No wall-clock limit anywhere (issue 23): hypothesis runs with ``deadline=None`` and the work is
+No wall-clock limit anywhere: hypothesis runs with ``deadline=None`` and the work is
 bounded by example counts, so a loaded CI machine makes the suite slower, never red. A command
 that truly never ended would hang the run; that is left to the CI job's own timeout, which knows
 the machine, rather than to a guess here.
@@ -307,7 +307,7 @@ PARSER_COMMANDS = [
     extra=st.lists(st.sampled_from([*BAD_VALUES, "--format", "--x", "json", "-q"]), max_size=2),
 )
 def test_parser_level_garbage(command: list[str], value: str, extra: list[str]) -> None:
-    """The original fuzz (tests/test_cli.py, issue 7): garbage the parser mostly rejects."""
+    """The original fuzz (tests/test_cli.py): garbage the parser mostly rejects."""
     code, _, err = well_behaved(*command, value, *extra)
     if code == 2:
         assert err.startswith("pendcli: error: "), err

@@ -1,4 +1,4 @@
-"""Issue 21: a ledger row's ``quote`` (the words of the text it rests on) and its list of
+"""A ledger row's ``quote`` (the words of the text it rests on) and its list of
 wrong terms: validated against the paper's text when the ledger is read, and marked there."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The README's layout section names every module of the tree (issue 11): computed, not typed."""
+"""The README's layout section names every module of the tree: computed, not typed."""
 
 from __future__ import annotations
 

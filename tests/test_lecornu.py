@@ -611,7 +611,7 @@ def test_cli_example_csv_and_plot(tmp_path):
         "example", "--speed", "0.5", "--length", "2", "--format", "csv", "--plot", str(plot)
     )
     assert result.code == 0, result.out
-    # several tables in one CSV: the first column names the table of each row (issue 13)
+    # several tables in one CSV: the first column names the table of each row
     assert result.out.splitlines()[0].startswith("table,k,z,length_m,time_s")
     pixels = _png_pixels(plot)
     assert pixels.shape[:2] == (576, 960)

@@ -1,4 +1,4 @@
-"""Issue 7 (Lecornu's part): far outside the paper's range.
+"""Lecornu far outside the paper's range.
 
 Zeros of J_1, J_2 up to index 10^7, Lecornu's series where cancellation destroys it, and the
 shortening pendulum at zero length and at very large speeds.

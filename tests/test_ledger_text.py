@@ -1,4 +1,4 @@
-"""The ledger bound to the printed text (issue 19): each row's ``lines`` span of
+"""The ledger bound to the printed text: each row's ``lines`` span of
 tables/papers/<paper>.txt holds its label and its numbers; the display blocks are counted."""
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from pendcli.core.text_blocks import blocks_covered, display_blocks
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
 PAPERS = ("tisserand", "lecornu", "charbonnier")
-# The display formulas issue 19 counts in each text.
+# The display formulas counted in each text.
 BLOCKS = {"tisserand": 47, "lecornu": 243, "charbonnier": 86}
 # Rows whose statement names a number printed outside their span, and why.
 NUMBERS_ELSEWHERE = {

@@ -1,4 +1,4 @@
-"""The locked environment (issue 23): every dependency pinned in the lock files, within
+"""The locked environment: every dependency pinned in the lock files, within
 pyproject's bounds, and what is installed here is what the lock says."""
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
-"""The exact shortcuts the equation checks take before sympy's costly general routines
-(issue 23): ``vanishes_identically`` (cancel, then sin² + cos² = 1, then simplify) and
+"""The exact shortcuts the equation checks take before sympy's costly general routines:
+``vanishes_identically`` (cancel, then sin² + cos² = 1, then simplify) and
 ``taylor`` (Taylor polynomials by exact derivatives instead of ``sp.series``).
 
 Each is compared with an independent computation: numeric evaluation at random points (a

@@ -1,4 +1,4 @@
-"""The planar pendulum's exact period up to 180° (issue 7) and Lecornu's k⁴ remark.
+"""The planar pendulum's exact period up to 180° and Lecornu's k⁴ remark.
 
 References: mpmath.ellipk at 50 digits with m formed from the exact amplitude in mpmath, and
 direct integration of θ'' = -(g/l) sin θ (no elliptic functions at all).

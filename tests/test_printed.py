@@ -1,4 +1,4 @@
-"""The printed form as data (issue 19): each ledger's [symbols] and its rows' ``printed``,
+"""The printed form as data: each ledger's [symbols] and its rows' ``printed``,
 ``reading_formula``, ``corrected_formula`` parse with the declared names only, carry the
 numbers their span of the text prints, and are checked for dimensions."""
 

@@ -1,4 +1,4 @@
-"""A ``bounded`` row's limit as the scale tends to 0+ (issue 23): proved finite by Cauchy's
+"""A ``bounded`` row's limit as the scale tends to 0+: proved finite by Cauchy's
 integral, the logarithms of the scale split off (P + Q log s), without sympy's limit; sympy's
 own limit, computed before it is barred, is the judge, and a growing residual is refused."""
 

@@ -1,4 +1,4 @@
-"""The series engine's shortcuts (issue 23): a branch point at 0 (s**(1/2), s**(3/2)) proved
+"""The series engine's shortcuts: a branch point at 0 (s**(1/2), s**(3/2)) proved
 in the root t = s**(1/q), and a coefficient far from 0 refused, both by Cauchy's integral and
 without sympy's series; sympy's own series, computed before it is barred, is the judge."""
 

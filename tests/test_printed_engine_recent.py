@@ -1,4 +1,4 @@
-"""The engine's bounded memo (pendcli.core.recent.Recent, issue 23) forgets as
+"""The engine's bounded memo (pendcli.core.recent.Recent) forgets as
 functools.lru_cache does: the same keys computed anew, for a random sequence of uses, and
 never more kept than its size."""
 

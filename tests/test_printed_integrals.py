@@ -1,4 +1,4 @@
-"""Definite integrals in a residual (issue 23): each quadrature is run once per point and
+"""Definite integrals in a residual: each quadrature is run once per point and
 shared by every residual that holds the same integral; sharing must never lend one point's
 or one integral's value to another. The judge is the closed form (erf), not the engine."""
 

@@ -1,4 +1,4 @@
-"""A series row's quick numerical proof (issue 23): the Taylor and pole coefficients of the
+"""A series row's quick numerical proof: the Taylor and pole coefficients of the
 residual in the scale, by Cauchy's integral about 0, prove what sympy's series would and
 never a residual that sympy's series keeps; sympy's series is the independent judge here."""
 

@@ -191,7 +191,7 @@ def _moved(text: str, row: int, column: str, by: float) -> str:
 def test_check_update_keeps_what_moved_only_within_the_tolerance(tmp_path) -> None:
     """Another CPU's kernels move an observed order by ~1e-9: a committed row whose every cell
     is within its tolerance stays byte for byte; a row moved beyond it is rewritten, the rest
-    of the table kept (issue 23: check --update on a fresh clone changes no byte)."""
+    of the table kept (check --update on a fresh clone changes no byte)."""
     from pendcli.core.tables import tables_dir
     from pendcli.regression import kept_within_tolerance
 

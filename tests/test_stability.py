@@ -1,4 +1,4 @@
-"""Issue 7: the stability summary is generated from measurements made at run time.
+"""The stability summary is generated from measurements made at run time.
 
 The helpers (:mod:`pendcli.stability`) are checked against values worked out by hand; the
 rows are each paper's (``pendcli.papers.<paper>.stability``), collected in paper order.

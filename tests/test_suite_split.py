@@ -1,4 +1,4 @@
-"""The fast suite's split (issue 23, tests/conftest.py): every long family keeps a fast case
+"""The fast suite's split (tests/conftest.py): every long family keeps a fast case
 and leaves the rest to `make test-slow`, every slow pattern still names a collected test, and
 CI runs the slow suite. What a test sees is its own session's collection (under xdist each
 worker collects the whole suite); a family whose file was not collected is not judged."""

@@ -62,7 +62,7 @@ def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary():
     assert by_id["example.time.3"][3:] == ["last-digit", "faithful", "inputs"]
     assert by_id["example.time.2"][3:] == ["discrepant", "slip", "slip"]
     assert by_id["j2_zeros.2"][3:] == ["truncated", "—", "chopped"]  # no procedure known
-    assert len(lines) < 260  # no notes: 3,336 lines before issue 13
+    assert len(lines) < 260  # no notes: 3,336 lines before the compact table
 
 
 def test_only_failing_keeps_just_what_does_not_hold():

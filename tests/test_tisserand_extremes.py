@@ -1,4 +1,4 @@
-"""Issue 7 (Tisserand part): the exact motion far from Tisserand's small oscillations.
+"""Tisserand: the exact motion far from Tisserand's small oscillations.
 
 theta1 -> 0 (near-planar: φ jumps by π at the vertical), theta0 -> 90° (the integrand of (4)
 peaks like 1/cos θ0) and theta0 = theta1 (conical: no radial oscillation, ψ undefined). Each

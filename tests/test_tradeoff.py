@@ -1,4 +1,4 @@
-"""Issue 6: work-precision measurements, the choice of a method, and `pendcli tradeoff`.
+"""Work-precision measurements, the choice of a method, and `pendcli tradeoff`.
 
 The engine (:mod:`pendcli.tradeoff`) is generic; the families are each paper's
 (``pendcli.papers.<paper>.speed``).  References are checked here against other methods

@@ -1,4 +1,4 @@
-"""`pendcli -V --verbose` and report.md name the library versions (issue 23)."""
+"""`pendcli -V --verbose` and report.md name the library versions."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Forked workers never outlive their parent, and the pool ends with it (issue 23).
+"""Forked workers never outlive their parent, and the pool ends with it.
 
 Found by an attack run: in 17 of 25 `kill -9` trials of `check --update` a forked worker was
 still computing after its parent had died. Each test here starts a parent in a fresh process,

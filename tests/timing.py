@@ -1,4 +1,4 @@
-"""Per-test timings for the 2 s rule (issue 23), without any limit inside a test.
+"""Per-test timings for the 2 s rule, without any limit inside a test.
 
 ``pytest --timings-file PATH`` writes one JSON line per test phase (setup, call, teardown):
 its node id, whether it is marked ``slow``, wall seconds, and CPU seconds of the test process

@@ -1,4 +1,4 @@
-"""`pendcli explain`: how the author got each printed number that does not agree (issue 24)."""
+"""`pendcli explain`: how the author got each printed number that does not agree."""
 
 from __future__ import annotations
 
