@@ -29,7 +29,16 @@ from pendcli.core.formula_grammar import (
     plain_name,
 )
 
-__all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "parse_dimension", "parse_formula"]
+__all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "ledger_symbols", "parse_dimension", "parse_formula"]
+
+
+def ledger_symbols(*names: str) -> list[Any]:
+    """The ledger's symbols of these names, as a printed form parses them (real): what a
+    reference must build its expressions over, or the engine sees a second unknown."""
+    import sympy as sp
+
+    return [sp.Symbol(n, real=True) for n in names]
+
 
 # The functions a formula may call (besides the paper's declared function names).
 FUNCTIONS = (
@@ -72,13 +81,12 @@ def parse_dimension(where: str, text: str) -> dict[str, Any]:
 
 @cache  # a ledger names ~100 exponents ("-2", "1/2"), most of them several times
 def _power(text: str) -> Any:
-    import sympy as sp
 
     names = dict.fromkeys(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", text))
     for name in names:
         if not plain_name(name):
             raise PendcliError(f"the power {text!r}: {name!r} is not a plain name")
-    space = {n: sp.Symbol(n, real=True) for n in names}
+    space = dict(zip(names, ledger_symbols(*names), strict=True))
     check_words(f"the power {text!r}", text, space)
     return parse_side(f"the power {text!r}", text.strip(), space, {})
 
@@ -95,7 +103,7 @@ def _namespace(names: tuple[str, ...], functions: tuple[str, ...]) -> dict[str, 
     space["oo"] = sp.oo  # an infinite limit of an integral, ∫_0^∞
     space["Integral"] = sp.Integral  # Integral(f, (x, a, b)), the paper's ∫_a^b f dx
     space["Derivative"] = sp.Derivative  # Derivative(f, t, 2): d²f/dt², left unevaluated
-    space.update({n: sp.Symbol(n, real=True) for n in names})
+    space.update(zip(names, ledger_symbols(*names), strict=True))
     space.update({f: sp.Function(f) for f in functions})
     space[ELLIPSIS] = sp.Symbol(ELLIPSIS)
     return space

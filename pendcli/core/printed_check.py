@@ -194,7 +194,7 @@ def _refuse_clashes(expr: Any) -> None:
     if clashes:
         raise PendcliError(
             f"the symbol(s) {', '.join(clashes)} enter twice with different assumptions: a "
-            "reference's symbols must be the ledger's, sympy.Symbol(name, real=True)"
+            "reference's symbols must be the ledger's (pendcli.core.printed.ledger_symbols)"
         )
 
 
@@ -735,7 +735,7 @@ def _evaluator(expr: Any, free: list[Any]) -> Any:
             except (ArithmeticError, TypeError, ValueError):
                 return by_evalf(point)
             if isinstance(value, (mpmath.mpf, mpmath.mpc)):
-                return sp.sympify(value)
+                return sp.sympify(value, strict=True)
         return by_evalf(point)
 
     return by_mpmath

@@ -11,9 +11,10 @@ def reference_small_period() -> Any:
     expansion in θ0 must agree with T = 2π√(l/g) through θ0⁰."""
     import sympy as sp
 
+    from pendcli.core.printed import ledger_symbols
     from pendcli.core.printed_check import Reference
 
-    l, g = sp.symbols("l g", real=True)  # the ledger's symbols: same names, same assumptions
+    l, g = ledger_symbols("l", "g")  # the ledger's symbols: same names, same assumptions
     theta0 = sp.Symbol("theta0", positive=True)
     exact = 4 * sp.elliptic_k(sp.sin(theta0 / 2) ** 2) * sp.sqrt(l / g)
     return Reference(exact={"T": exact}, scale=theta0, order=1, what="the exact period")

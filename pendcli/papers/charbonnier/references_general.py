@@ -18,6 +18,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
+from pendcli.core.printed import ledger_symbols
 from pendcli.core.printed_check import Reference
 from pendcli.papers.taylor import taylor
 
@@ -40,13 +41,6 @@ __all__ = [
     "reference_theta1_equation",
     "reference_variation",
 ]
-
-
-def ledger_symbols(*names: str) -> list[Any]:
-    """The ledger's symbols of these names (real), as the printed forms parse them."""
-    import sympy as sp
-
-    return [sp.Symbol(n, real=True) for n in names]
 
 
 def free_parameters(count: int, stem: str = "p") -> list[Any]:

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from pendcli.core.printed import ledger_symbols as symbols
+
 __all__ = [
     "cylinder",
     "float40",
@@ -22,13 +24,6 @@ __all__ = [
     "scan_roots",
     "symbols",
 ]
-
-
-def symbols(*names: str) -> Any:
-    """Real sympy symbols of the ledger's names (a printed form is parsed over the same)."""
-    import sympy as sp
-
-    return [sp.Symbol(n, real=True) for n in names]
 
 
 def reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:

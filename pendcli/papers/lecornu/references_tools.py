@@ -8,14 +8,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from pendcli.core.printed import ledger_symbols as real_symbols
+
 __all__ = ["cited", "derivative_along", "make_reference", "real_symbols"]
-
-
-def real_symbols(*names: str) -> list[Any]:
-    """The ledger's symbols ``names`` as real sympy symbols (as the printed forms parse)."""
-    import sympy as sp
-
-    return [sp.Symbol(n, real=True) for n in names]
 
 
 def make_reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:

@@ -14,6 +14,7 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
+from pendcli.core.printed import ledger_symbols
 from pendcli.core.printed_check import Reference
 
 __all__ = [
@@ -28,13 +29,6 @@ __all__ = [
     "reference_small_angles",
     "scale",
 ]
-
-
-def ledger_symbols(*names: str) -> Any:
-    """The ledger's real symbols of these names."""
-    import sympy as sp
-
-    return [sp.Symbol(n, real=True) for n in names]
 
 
 def scale() -> Any:
