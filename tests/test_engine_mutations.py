@@ -1,7 +1,8 @@
-"""Mutation testing of the printed-form engine itself (pendcli/core/printed_check.py and
-printed_numeric.py): each plausible bug of the engine, put in by monkeypatching one of its
-seams (a constant or a function of those modules, named here: a rewritten engine keeps them or
-maps each mutation onto its own), must change the verdict of MANY ledger rows, not one; the
+"""Mutation testing of the printed-form engine itself (pendcli/core/printed_verdict.py,
+printed_check.py, point_values.py, series_proof.py and printed_numeric.py): each plausible
+bug of the engine, put in by monkeypatching one of its seams (a constant or a function of
+those modules, named here: a rewritten engine keeps them or maps each mutation onto its own),
+must change the verdict of MANY ledger rows, not one; the
 tests of the data (tests/test_printed*.py) change a row and keep the engine.
 
 The sample, seeded and generic over the rows: every 3rd ``holds`` row, every 2nd ``misprint``
@@ -70,7 +71,7 @@ import pytest
 from ledgers import committed_ledger
 from mutations import altered_field, judged_after_edit
 
-from pendcli.core import printed_check, printed_numeric
+from pendcli.core import point_values, printed_check, printed_numeric, printed_verdict, series_proof
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, reference_table
 from pendcli.core.ledger_formulas import printed_status
@@ -271,7 +272,7 @@ def reading_dropped(monkeypatch: pytest.MonkeyPatch) -> None:
     """computed_status judges no reading (as though the row gave none)."""
     wrapped(
         monkeypatch,
-        printed_check,
+        printed_verdict,
         "computed_status",
         lambda f: lambda p, r, c, ref: f(p, None, c, ref),
     )
@@ -287,7 +288,7 @@ def reading_unjudged(monkeypatch: pytest.MonkeyPatch) -> None:
 
         return mutant
 
-    wrapped(monkeypatch, printed_check, "computed_status", wrapper)
+    wrapped(monkeypatch, printed_verdict, "computed_status", wrapper)
 
 
 def correction_unjudged(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -300,7 +301,7 @@ def correction_unjudged(monkeypatch: pytest.MonkeyPatch) -> None:
 
         return mutant
 
-    wrapped(monkeypatch, printed_check, "computed_status", wrapper)
+    wrapped(monkeypatch, printed_verdict, "computed_status", wrapper)
 
 
 def reading_first(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -315,7 +316,7 @@ def reading_first(monkeypatch: pytest.MonkeyPatch) -> None:
 
         return mutant
 
-    wrapped(monkeypatch, printed_check, "computed_status", wrapper)
+    wrapped(monkeypatch, printed_verdict, "computed_status", wrapper)
 
 
 def reading_reference_ignored(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -329,14 +330,14 @@ def reading_reference_ignored(monkeypatch: pytest.MonkeyPatch) -> None:
 
         return mutant
 
-    wrapped(monkeypatch, printed_check, "computed_status", wrapper)
+    wrapped(monkeypatch, printed_verdict, "computed_status", wrapper)
 
 
 def tolerance(value: float) -> Callable[[pytest.MonkeyPatch], None]:
     """The residual's relative tolerance at the random points (1e-15) set to ``value``."""
 
     def mutation(monkeypatch: pytest.MonkeyPatch) -> None:
-        monkeypatch.setattr(printed_check, "_TOLERANCE", value)
+        monkeypatch.setattr(point_values, "_TOLERANCE", value)
 
     return mutation
 
@@ -351,7 +352,7 @@ def cauchy_tolerance(monkeypatch: pytest.MonkeyPatch) -> None:
 
         return mutant
 
-    wrapped(monkeypatch, printed_check, "_lowest_failing", wrapper)
+    wrapped(monkeypatch, series_proof, "_lowest_failing", wrapper)
 
 
 def order_shifted(step: int) -> Callable[[pytest.MonkeyPatch], None]:

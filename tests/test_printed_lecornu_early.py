@@ -19,7 +19,8 @@ from mutations import altered_ledger
 from pendcli.core.claims import FormulaRow
 from pendcli.core.ledger import Ledger, LedgerRow, verify_printed
 from pendcli.core.printed import Formula, parse_formula
-from pendcli.core.printed_check import computed_status, judged
+from pendcli.core.printed_check import judged
+from pendcli.core.printed_verdict import computed_status
 from pendcli.papers.lecornu import (
     references,
     references_general,

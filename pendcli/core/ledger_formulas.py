@@ -157,7 +157,7 @@ def printed_status(
 ) -> tuple[str | None, str]:
     """The status the row's printed form earns against ``reference`` (core/printed_check),
     each formula read through the paper's reading table."""
-    from pendcli.core.printed_check import computed_status
+    from pendcli.core.printed_verdict import computed_status
 
     def parsed(field: str) -> Formula | None:
         text = row.read(field)  # the reading table's replacements made (core/ledger_readings)
