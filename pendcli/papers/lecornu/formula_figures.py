@@ -8,7 +8,8 @@ from pathlib import Path
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.formula_engine import PanelLabels, grid_caption, plot_studies
-from pendcli.papers.lecornu.formulas import PAPER, formula_checks
+from pendcli.papers.lecornu.formulas import formula_checks
+from pendcli.papers.lecornu.formulas_base import PAPER
 from pendcli.papers.lecornu.formulas_slow import SLOW_PANELS
 
 __all__ = ["CAPTIONS", "PANELS", "figures"]

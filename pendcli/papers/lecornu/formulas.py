@@ -26,7 +26,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from functools import cache
-from typing import Any
 
 import numpy as np
 
@@ -39,8 +38,19 @@ from pendcli.core.formula_engine import (
     identify_combination,
     judge,
     leading_coefficient,
-    make_row,
 )
+from pendcli.papers.lecornu.formulas_base import (
+    GRID_2PI,
+    P_PARAM,
+    P_PERIOD_SWEEP,
+    P_SWEEP,
+    PI,
+    Array,
+    Solution,
+    formula_row,
+)
+from pendcli.papers.lecornu.formulas_chapter3 import fast_shortening_rows, finite_rows
+from pendcli.papers.lecornu.formulas_conical import conical_rows
 from pendcli.papers.lecornu.formulas_slow import slow_rows
 
 __all__ = [
@@ -52,29 +62,6 @@ __all__ = [
     "series_rows",
     "table_26_rows",
 ]
-
-Array = np.ndarray
-Solution = Callable[[Any], Array]  # the dense output of Reference.solve
-
-PAPER = "lecornu"
-P_SWEEP = (0.032, 0.016, 0.008, 0.004, 0.002)  # p = b/√(ga)
-# The period's residual turns out O(p⁴) with a small coefficient: larger p keep it measurable.
-P_PERIOD_SWEEP = (0.1, 0.07, 0.05, 0.035, 0.025)
-PI = math.pi
-P_PARAM = "p = b/√(ga) = 0.032 … 0.002"
-GRID_2PI = 401  # points of the grids 0 ≤ γt ≤ 2π on which residuals are maximised
-
-
-def formula_row(id_: str, source: str, published: str, study: Study, ref: Reference, **kw: Any):
-    return make_row(
-        id=f"{PAPER}.{id_}",
-        paper=PAPER,
-        source=source,
-        published=published,
-        study=study,
-        reference=ref.label,
-        **kw,
-    )
 
 
 def _p_study(residuals: Sequence[float] | Array, order: float, ref: Reference) -> Study:
@@ -527,10 +514,6 @@ FORMULA_CAUSES: dict[str, FormulaCause] = {
 
 def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     """Every Lecornu formula check (see the module docstring), each failure with its cause."""
-    # Imported here: chapter III's checks build on this module's sweeps and row helper.
-    from pendcli.papers.lecornu.formulas_chapter3 import fast_shortening_rows, finite_rows
-    from pendcli.papers.lecornu.formulas_conical import conical_rows
-
     rows = [
         *table_26_rows(ref),
         *series_rows(ref),

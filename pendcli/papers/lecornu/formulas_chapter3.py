@@ -37,7 +37,7 @@ from pendcli.core.formula_engine import (
     leading_coefficient,
     make_row,
 )
-from pendcli.papers.lecornu.formulas import (
+from pendcli.papers.lecornu.formulas_base import (
     GRID_2PI,
     P_SWEEP,
     PI,

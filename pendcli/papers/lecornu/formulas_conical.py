@@ -22,7 +22,7 @@ import numpy as np
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.formula_engine import DEFAULT_REFERENCE, Reference, Study
-from pendcli.papers.lecornu.formulas import P_SWEEP, PI, Array, Solution, formula_row
+from pendcli.papers.lecornu.formulas_base import P_SWEEP, PI, Array, Solution, formula_row
 from pendcli.papers.lecornu.formulas_chapter3 import (
     evaluator,
     ledger_sides,
