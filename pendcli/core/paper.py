@@ -1,10 +1,13 @@
 """The contract of a paper: everything the rest of pendcli may ask of one.
 
 Each paper package (``pendcli/papers/<key>/__init__.py``) declares one :class:`Paper`, and
-:mod:`pendcli.papers.registry` lists them. Every hook is a callable that imports its module
-only when called, so building a ``Paper`` (and ``pendcli --help``) loads nothing heavy. A
-hook a paper does not have is ``None`` (or an empty default): callers test for ``None``,
-never for an attribute's presence.
+:mod:`pendcli.papers.registry` lists them. A paper names each hook by where it lives,
+``hook("package.module:name")`` (:class:`Hook`): the module is imported only when the hook is
+first called, so building a ``Paper`` (and ``pendcli --help``) loads nothing heavy, and a
+paper imports no module of the program above it (its CLI sub-app is a place, not an import).
+A place whose module or name does not exist is a load error naming the paper's hook
+(:func:`check_hooks`, run by the tests on every paper). A hook a paper does not have is
+``None``: callers test for ``None``, never for an attribute's presence.
 
 The published data stay in ``tables/`` (the paths are fixed by the key, see
 :meth:`Paper.tables`): ``published/<key>.toml`` (the printed numbers), ``equations/<key>.toml``
@@ -13,8 +16,9 @@ The published data stay in ``tables/`` (the paths are fixed by the key, see
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -22,7 +26,76 @@ if TYPE_CHECKING:
     from pendcli.core.causes import Procedure
     from pendcli.core.claims import FormulaRow, Recomputed
 
-__all__ = ["CliApp", "Paper", "PaperTables"]
+__all__ = ["CliApp", "Hook", "Paper", "PaperTables", "check_hooks", "hook", "merged", "modules"]
+
+
+@dataclass(frozen=True)
+class Hook:
+    """A hook by its places, each ``"package.module:name"``, resolved when called: a function
+    is called with the hook's arguments, anything else (a table, a Typer app) is returned as
+    it is;
+    several places are mappings merged in order (a later place's keys win); a place without a
+    name (``"package.module"``) is a module imported for its side: the hook returns None."""
+
+    places: tuple[str, ...]
+
+    def __call__(self, *args: Any) -> Any:
+        found = [_resolved(place) for place in self.places]
+        if all(":" not in place for place in self.places):
+            return None
+        if len(found) > 1:
+            return {key: value for mapping in found for key, value in mapping.items()}
+        return found[0](*args) if inspect.isroutine(found[0]) else found[0]
+
+
+def hook(place: str) -> Hook:
+    """The hook at ``place``, ``"package.module:name"``."""
+    return Hook((place,))
+
+
+def merged(*places: str) -> Hook:
+    """One mapping from the mappings at ``places`` (a later one's keys win)."""
+    return Hook(places)
+
+
+def modules(*names: str) -> Hook:
+    """A hook that imports the modules ``names`` (a paper's preload)."""
+    return Hook(names)
+
+
+def _resolved(place: str) -> Any:
+    """What ``place`` names: the module, or its attribute after the colon."""
+    import importlib
+
+    from pendcli.core.errors import PendcliError
+
+    module_name, _, name = place.partition(":")
+    try:
+        module = importlib.import_module(module_name)
+    except ModuleNotFoundError as exc:
+        raise PendcliError(f"the hook {place!r}: no module {exc.name!r}") from None
+    if not name:
+        return module
+    if not hasattr(module, name):
+        raise PendcliError(f"the hook {place!r}: {module_name} has no {name!r}") from None
+    return getattr(module, name)
+
+
+def check_hooks(paper: Paper) -> list[str]:
+    """Every hook place of ``paper`` that does not resolve, with why (importing each module)."""
+    from pendcli.core.errors import PendcliError
+
+    problems = []
+    hooks = [getattr(paper, f.name) for f in fields(paper)]
+    if paper.cli is not None:
+        hooks.append(paper.cli.load)
+    for one in hooks:
+        for place in one.places if isinstance(one, Hook) else ():
+            try:
+                _resolved(place)
+            except PendcliError as exc:
+                problems.append(f"{paper.key}: {exc}")
+    return problems
 
 
 @dataclass(frozen=True)

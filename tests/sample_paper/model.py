@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from pendcli.core.claims import Recomputed
 from pendcli.core.tables import paper_constant
 
 
@@ -24,3 +25,16 @@ def plot_period(path: Path) -> Path:
         ax.set_xlabel("l (m)")
         ax.set_ylabel("T (s)")
     return path
+
+
+CAPTIONS = {"sample-period": "The small-amplitude period 2π√(l/g) against the length l."}
+
+
+def recompute() -> dict[str, Recomputed]:
+    """The paper's one printed number, recomputed."""
+    return {"sample.period": Recomputed(period(), method="2π√(l/g), l and g from the table")}
+
+
+def figures(folder: Path) -> list[Path]:
+    """The paper's one figure, into ``folder``."""
+    return [plot_period(folder / "sample-period.png")]

@@ -42,108 +42,35 @@ Modules: :mod:`.model` (I_n(x) by every method), :mod:`.claims` (``recompute()``
 :mod:`.perturbation` (the perturbed pendulum and its integration), :mod:`.formulas` (formula
 checks), :mod:`.resistance` (monomial resistance, one swing), :mod:`.references` (the
 references the equation ledger's printed forms are judged against), :mod:`.figures`,
-:mod:`.explore` (the CLI's rows). This file imports
-nothing heavy (its hooks load their modules when called), so that `pendcli --help` stays
-fast.
+:mod:`.explore` (the CLI's rows). This file names
+its hooks by place and imports nothing heavy: each hook loads its module when called, so that
+`pendcli --help` stays fast.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
-from typing import TYPE_CHECKING, Any
-
-from pendcli.core.paper import CliApp, Paper
-
-if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping, Sequence
-
-    from pendcli.core.claims import FormulaRow, Recomputed
+from pendcli.core.paper import CliApp, Paper, hook, merged, modules
 
 __all__ = ["PAPER"]
 
-
-# Each hook imports its module when called: the Paper itself loads nothing.
-def _recompute() -> Mapping[str, Recomputed]:
-    from pendcli.papers.charbonnier.claims import recompute
-
-    return recompute()
-
-
-def _formula_checks() -> Sequence[FormulaRow]:
-    from pendcli.papers.charbonnier.formulas import formula_checks
-
-    return formula_checks()
-
-
-def _preload() -> None:
-    from pendcli.papers.charbonnier import claims, formulas  # noqa: F401
-
-
-def _references() -> Mapping[str, Callable[[], Any]]:
-    from pendcli.papers.charbonnier.references import REFERENCES
-
-    return REFERENCES
-
-
-def _tradeoff_families() -> Sequence[Any]:
-    from pendcli.papers.charbonnier.speed import FAMILIES
-
-    return FAMILIES
-
-
-def _stability_rows() -> list[dict[str, str]]:
-    from pendcli.papers.charbonnier.stability import stability_rows
-
-    return stability_rows()
-
-
-def _figures(folder: Path) -> Sequence[Path]:
-    from pendcli.papers.charbonnier.figures import figures
-
-    return figures(folder)
-
-
-def _formula_figures(folder: Path, rows: list[FormulaRow]) -> Sequence[Path]:
-    from pendcli.papers.charbonnier.formulas import figures
-
-    return figures(folder, rows)
-
-
-def _captions() -> Mapping[str, str]:
-    from pendcli.papers.charbonnier.figures import CAPTIONS as CLAIM_CAPTIONS
-    from pendcli.papers.charbonnier.formulas import CAPTIONS as FORMULA_CAPTIONS
-
-    return {**FORMULA_CAPTIONS, **CLAIM_CAPTIONS}
-
-
-def _cli() -> Any:
-    from pendcli.cli.charbonnier import app
-
-    return app
-
-
-def _explanations() -> Any:
-    from pendcli.core.explain import Declared
-    from pendcli.papers.charbonnier import explain
-
-    return Declared(explain.computations(), explain.targets())
-
-
 PAPER = Paper(
     key="charbonnier",
-    recompute=_recompute,
-    formula_checks=_formula_checks,
-    references=_references,
-    preload=_preload,
+    recompute=hook("pendcli.papers.charbonnier.claims:recompute"),
+    formula_checks=hook("pendcli.papers.charbonnier.formulas:formula_checks"),
+    references=hook("pendcli.papers.charbonnier.references:REFERENCES"),
+    preload=modules("pendcli.papers.charbonnier.claims", "pendcli.papers.charbonnier.formulas"),
     author_procedures=None,
-    tradeoff_families=_tradeoff_families,
-    stability_rows=_stability_rows,
-    figures=_figures,
-    formula_figures=_formula_figures,
-    captions=_captions,
-    explanations=_explanations,
+    tradeoff_families=hook("pendcli.papers.charbonnier.speed:FAMILIES"),
+    stability_rows=hook("pendcli.papers.charbonnier.stability:stability_rows"),
+    figures=hook("pendcli.papers.charbonnier.figures:figures"),
+    formula_figures=hook("pendcli.papers.charbonnier.formulas:figures"),
+    captions=merged(
+        "pendcli.papers.charbonnier.formulas:CAPTIONS",
+        "pendcli.papers.charbonnier.figures:CAPTIONS",
+    ),
+    explanations=hook("pendcli.papers.charbonnier.explain:declared"),
     cli=CliApp(
         help="Charbonnier 1908: perturbations, the table of I_n(π), the integrals I_n(x).",
-        load=_cli,
+        load=hook("pendcli.cli.charbonnier:app"),
     ),
 )

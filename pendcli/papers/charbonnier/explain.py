@@ -17,11 +17,11 @@ from fractions import Fraction
 from functools import partial
 from typing import Any
 
-from pendcli.core.explain import Axis, Computation, Option, Target
+from pendcli.core.explain import Axis, Computation, Declared, Option, Target
 from pendcli.core.numbers import exact_number
 from pendcli.core.tables import load_paper_table
 
-__all__ = ["computations", "targets"]
+__all__ = ["computations", "declared", "targets"]
 
 PAPER = "charbonnier"
 PRINTED_N = range(-1, 6)
@@ -79,3 +79,8 @@ def targets() -> dict[str, Target]:
 def computations() -> dict[str, Callable[[], Computation]]:
     """Claim id -> a builder of Charbonnier's computation of that printed value."""
     return {f"{PAPER}.I_pi.n{n}": partial(_computation, n) for n in PRINTED_N}
+
+
+def declared() -> Declared:
+    """What `pendcli explain` searches in this paper: its computations and their targets."""
+    return Declared(computations(), targets())

@@ -43,108 +43,27 @@ Nothing heavy is imported here (each hook of :data:`PAPER` loads its module when
 
 from __future__ import annotations
 
-from pathlib import Path
-from typing import TYPE_CHECKING, Any
-
-from pendcli.core.paper import CliApp, Paper
-
-if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping, Sequence
-
-    from pendcli.core.causes import Procedure
-    from pendcli.core.claims import FormulaRow, Recomputed
+from pendcli.core.paper import CliApp, Paper, hook, merged, modules
 
 __all__ = ["PAPER"]
 
-
-# Each hook imports its module when called: the Paper itself loads nothing.
-def _recompute() -> Mapping[str, Recomputed]:
-    from pendcli.papers.lecornu.claims import recompute
-
-    return recompute()
-
-
-def _formula_checks() -> Sequence[FormulaRow]:
-    from pendcli.papers.lecornu.formulas import formula_checks
-
-    return formula_checks()
-
-
-def _preload() -> None:
-    from pendcli.papers.lecornu import claims, formulas  # noqa: F401
-
-
-def _references() -> Mapping[str, Callable[[], Any]]:
-    from pendcli.papers.lecornu.references import REFERENCES
-
-    return REFERENCES
-
-
-def _author_procedures() -> Mapping[str, Procedure]:
-    from pendcli.papers.lecornu.claims import author_procedures
-
-    return author_procedures()
-
-
-def _tradeoff_families() -> Sequence[Any]:
-    from pendcli.papers.lecornu.speed import FAMILIES
-
-    return FAMILIES
-
-
-def _stability_rows() -> list[dict[str, str]]:
-    from pendcli.papers.lecornu.stability import stability_rows
-
-    return stability_rows()
-
-
-def _figures(folder: Path) -> Sequence[Path]:
-    from pendcli.papers.lecornu.figures import figures
-
-    return figures(folder)
-
-
-def _formula_figures(folder: Path, rows: list[FormulaRow]) -> Sequence[Path]:
-    from pendcli.papers.lecornu.formula_figures import figures
-
-    return figures(folder, rows)
-
-
-def _captions() -> Mapping[str, str]:
-    from pendcli.papers.lecornu.figures import CAPTIONS as CLAIM_CAPTIONS
-    from pendcli.papers.lecornu.formula_figures import CAPTIONS as FORMULA_CAPTIONS
-
-    return {**FORMULA_CAPTIONS, **CLAIM_CAPTIONS}
-
-
-def _cli() -> Any:
-    from pendcli.cli.lecornu import app
-
-    return app
-
-
-def _explanations() -> Any:
-    from pendcli.core.explain import Declared
-    from pendcli.papers.lecornu import explain
-
-    return Declared(explain.computations(), explain.targets())
-
-
 PAPER = Paper(
     key="lecornu",
-    recompute=_recompute,
-    formula_checks=_formula_checks,
-    references=_references,
-    preload=_preload,
-    author_procedures=_author_procedures,
-    tradeoff_families=_tradeoff_families,
-    stability_rows=_stability_rows,
-    figures=_figures,
-    formula_figures=_formula_figures,
-    captions=_captions,
-    explanations=_explanations,
+    recompute=hook("pendcli.papers.lecornu.claims:recompute"),
+    formula_checks=hook("pendcli.papers.lecornu.formulas:formula_checks"),
+    references=hook("pendcli.papers.lecornu.references:REFERENCES"),
+    preload=modules("pendcli.papers.lecornu.claims", "pendcli.papers.lecornu.formulas"),
+    author_procedures=hook("pendcli.papers.lecornu.claims:author_procedures"),
+    tradeoff_families=hook("pendcli.papers.lecornu.speed:FAMILIES"),
+    stability_rows=hook("pendcli.papers.lecornu.stability:stability_rows"),
+    figures=hook("pendcli.papers.lecornu.figures:figures"),
+    formula_figures=hook("pendcli.papers.lecornu.formula_figures:figures"),
+    captions=merged(
+        "pendcli.papers.lecornu.formula_figures:CAPTIONS", "pendcli.papers.lecornu.figures:CAPTIONS"
+    ),
+    explanations=hook("pendcli.papers.lecornu.explain:declared"),
     cli=CliApp(
         help="Lecornu: the pendulum of variable length (zeros of J1/J2, the 0,35 m/s example).",
-        load=_cli,
+        load=hook("pendcli.cli.lecornu:app"),
     ),
 )

@@ -33,6 +33,7 @@ from pendcli.core.explain import (
     TABLE_SUMMARY,
     Axis,
     Computation,
+    Declared,
     Option,
     Target,
     axis,
@@ -46,7 +47,7 @@ from pendcli.core.explain import (
 )
 from pendcli.core.tables import load_paper_table
 
-__all__ = ["computations", "targets"]
+__all__ = ["computations", "declared", "targets"]
 
 PAPER = "lecornu"
 ELONGATIONS = 5
@@ -314,3 +315,8 @@ def targets() -> dict[str, Target]:
     """The printed number of every declared claim, at its printed precision."""
     table = load_paper_table(PAPER)
     return {cid: target_of(table.claim(cid)) for cid in _builders()}
+
+
+def declared() -> Declared:
+    """What `pendcli explain` searches in this paper: its computations and their targets."""
+    return Declared(computations(), targets())

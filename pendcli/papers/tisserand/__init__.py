@@ -44,108 +44,34 @@ Findings
 Modules: :mod:`.units` (angles typed and printed), :mod:`.model` (the series, the example's
 data, the exact motion), :mod:`.claims` (``recompute()``), :mod:`.formulas` (formula checks),
 :mod:`.references` (what the ledger's printed forms are judged against),
-:mod:`.figures`, :mod:`.explore` (the CLI's example and series views). This file imports
-nothing heavy (its hooks load their modules when called), so that `pendcli --help` stays
-fast.
+:mod:`.figures`, :mod:`.explore` (the CLI's example and series views). This file names
+its hooks by place and imports nothing heavy: each hook loads its module when called, so that
+`pendcli --help` stays fast.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
-from typing import TYPE_CHECKING, Any
-
-from pendcli.core.paper import CliApp, Paper
-
-if TYPE_CHECKING:
-    from collections.abc import Callable, Mapping, Sequence
-
-    from pendcli.core.claims import FormulaRow, Recomputed
+from pendcli.core.paper import CliApp, Paper, hook, merged, modules
 
 __all__ = ["PAPER"]
 
-
-# Each hook imports its module when called: the Paper itself loads nothing.
-def _recompute() -> Mapping[str, Recomputed]:
-    from pendcli.papers.tisserand.claims import recompute
-
-    return recompute()
-
-
-def _formula_checks() -> Sequence[FormulaRow]:
-    from pendcli.papers.tisserand.formulas import formula_checks
-
-    return formula_checks()
-
-
-def _preload() -> None:
-    from pendcli.papers.tisserand import claims, formulas  # noqa: F401
-
-
-def _references() -> Mapping[str, Callable[[], Any]]:
-    from pendcli.papers.tisserand.references import REFERENCES
-
-    return REFERENCES
-
-
-def _tradeoff_families() -> Sequence[Any]:
-    from pendcli.papers.tisserand.speed import FAMILIES
-
-    return FAMILIES
-
-
-def _stability_rows() -> list[dict[str, str]]:
-    from pendcli.papers.tisserand.stability import stability_rows
-
-    return stability_rows()
-
-
-def _figures(folder: Path) -> Sequence[Path]:
-    from pendcli.papers.tisserand.figures import figures
-
-    return figures(folder)
-
-
-def _formula_figures(folder: Path, rows: list[FormulaRow]) -> Sequence[Path]:
-    from pendcli.papers.tisserand.formulas import figures
-
-    return figures(folder, rows)
-
-
-def _captions() -> Mapping[str, str]:
-    from pendcli.papers.tisserand.figures import CAPTIONS as CLAIM_CAPTIONS
-    from pendcli.papers.tisserand.formulas import CAPTIONS as FORMULA_CAPTIONS
-
-    return {**FORMULA_CAPTIONS, **CLAIM_CAPTIONS}
-
-
-def _cli() -> Any:
-    from pendcli.cli.tisserand import app
-
-    return app
-
-
-def _explanations() -> Any:
-    from pendcli.core.explain import Declared
-    from pendcli.papers.tisserand import explain
-
-    return Declared(explain.computations(), explain.targets())
-
-
 PAPER = Paper(
     key="tisserand",
-    recompute=_recompute,
-    formula_checks=_formula_checks,
-    references=_references,
-    preload=_preload,
+    recompute=hook("pendcli.papers.tisserand.claims:recompute"),
+    formula_checks=hook("pendcli.papers.tisserand.formulas:formula_checks"),
+    references=hook("pendcli.papers.tisserand.references:REFERENCES"),
+    preload=modules("pendcli.papers.tisserand.claims", "pendcli.papers.tisserand.formulas"),
     author_procedures=None,
-    tradeoff_families=_tradeoff_families,
-    stability_rows=_stability_rows,
-    figures=_figures,
-    formula_figures=_formula_figures,
-    captions=_captions,
-    explanations=_explanations,
+    tradeoff_families=hook("pendcli.papers.tisserand.speed:FAMILIES"),
+    stability_rows=hook("pendcli.papers.tisserand.stability:stability_rows"),
+    figures=hook("pendcli.papers.tisserand.figures:figures"),
+    formula_figures=hook("pendcli.papers.tisserand.formulas:figures"),
+    captions=merged(
+        "pendcli.papers.tisserand.formulas:CAPTIONS", "pendcli.papers.tisserand.figures:CAPTIONS"
+    ),
+    explanations=hook("pendcli.papers.tisserand.explain:declared"),
     cli=CliApp(
         help="Tisserand 1881: the conical pendulum, the example, series against the exact motion.",
-        load=_cli,
+        load=hook("pendcli.cli.tisserand:app"),
     ),
 )

@@ -27,6 +27,7 @@ from pendcli.core.explain import (
     PI_READINGS,
     Axis,
     Computation,
+    Declared,
     Target,
     axis,
     fraction_text,
@@ -36,7 +37,7 @@ from pendcli.core.explain import (
 )
 from pendcli.core.tables import load_paper_table
 
-__all__ = ["computations", "targets"]
+__all__ = ["computations", "declared", "targets"]
 
 PAPER = "tisserand"
 Choices = Mapping[str, Any]
@@ -197,3 +198,8 @@ def computations() -> dict[str, Callable[[], Computation]]:
     }
     out[f"{PAPER}.example.displacement"] = _displacement_computation
     return out
+
+
+def declared() -> Declared:
+    """What `pendcli explain` searches in this paper: its computations and their targets."""
+    return Declared(computations(), targets())
