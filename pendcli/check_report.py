@@ -17,7 +17,7 @@ from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
 from pendcli.core.errors import PendcliError
-from pendcli.regression import TOLERANCES, Drift, cell_drift, expected_columns, read_table
+from pendcli.drift import TOLERANCES, Drift, cell_drift, expected_columns, read_table
 
 __all__ = [
     "changed_cells",

@@ -7,7 +7,7 @@ import shutil
 import pytest
 
 from pendcli.core.errors import PendcliError
-from pendcli.regression import TOLERANCES, compare_tables
+from pendcli.drift import TOLERANCES, compare_tables
 
 HEADER = (
     "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,procedure_verdict,"
@@ -115,14 +115,14 @@ def test_a_huge_finite_change_is_drift():
 
 
 def test_every_committed_column_has_an_explicit_tolerance():
-    from pendcli.regression import CLAIM_COLUMNS, FORMULA_COLUMNS
+    from pendcli.drift import CLAIM_COLUMNS, FORMULA_COLUMNS
 
     for col in set(CLAIM_COLUMNS + FORMULA_COLUMNS) - {"id"}:
         assert col in TOLERANCES
 
 
 def test_missing_and_extra_committed_tables_are_drift(tmp_path):
-    from pendcli.regression import find_drifts
+    from pendcli.drift import find_drifts
 
     (tmp_path / "old.csv").write_text(HEADER + ROW, encoding="utf-8")
     (tmp_path / "same.csv").write_text(HEADER + ROW, encoding="utf-8")
