@@ -248,13 +248,13 @@ def test_perturbed_pendulum_matches_the_closed_form_for_any_g(g):
     (the table's g is an assumption the residuals do not depend on)."""
     import numpy as np
 
-    from pendcli.core.formula_engine import DEFAULT_REFERENCE
+    from pendcli.core.formula_engine import DEFAULT_INTEGRATOR
     from pendcli.papers.charbonnier.perturbation import CheckPendulum, measure, monomial
 
     p = CheckPendulum(g, 1.5, 0.2)
     phi, scale = monomial(p, 2)
     deltas = np.array([0.04, 0.01])
-    events, _ = measure(p, phi, deltas * scale, DEFAULT_REFERENCE)
+    events, _ = measure(p, phi, deltas * scale, DEFAULT_INTEGRATOR)
     for delta, theta_end, t_end in zip(deltas, events["theta_end"], events["t_end"], strict=True):
         assert (theta_end - p.alpha) / p.alpha == pytest.approx(
             float(closed_form_loss(delta, 2)), rel=1e-9

@@ -23,7 +23,7 @@ from pendcli.papers.lecornu import formulas_chapter3 as fle3
 from pendcli.papers.tisserand import formulas as fti
 
 PI = math.pi
-TIGHT = engine.Reference(rtol=1e-13, atol=1e-15)
+TIGHT = engine.Integrator(rtol=1e-13, atol=1e-15)
 
 
 @pytest.fixture(scope="module")
@@ -384,10 +384,10 @@ def _bessel_events(p: float):
 
 @pytest.mark.parametrize("j", range(len(fle.P_SWEEP)))
 def test_lecornu_events_against_bessel_closed_form(j):
-    ode = fle.event_times(engine.DEFAULT_REFERENCE)
+    ode = fle.event_times(engine.DEFAULT_INTEGRATOR)
     exact = _bessel_events(fle.P_SWEEP[j])
     for key, value in exact.items():
-        assert ode[key][j] == pytest.approx(value, abs=engine.DEFAULT_REFERENCE.error_bound)
+        assert ode[key][j] == pytest.approx(value, abs=engine.DEFAULT_INTEGRATOR.error_bound)
 
 
 def _same_residuals(a, b, bound):
@@ -404,12 +404,12 @@ def test_lecornu_reference_second_tolerance():
     _same_residuals(
         fle.formula_checks(),
         fle.formula_checks(TIGHT),
-        engine.DEFAULT_REFERENCE.error_bound,
+        engine.DEFAULT_INTEGRATOR.error_bound,
     )
 
 
 def test_lecornu_reference_second_method_radau():
-    radau = engine.Reference(method="Radau", rtol=1e-12, atol=1e-14)
+    radau = engine.Integrator(method="Radau", rtol=1e-12, atol=1e-14)
     _same_residuals(fle3.finite_rows(), fle3.finite_rows(radau), 3 * radau.error_bound)
 
 
@@ -505,7 +505,7 @@ def test_charbonnier_damped_oscillator_closed_form():
     p = cpt.check_pendulum()
     text, phi, scale = cpt.perturbations(p)["linear_damping"]
     eps = np.array(fch.DELTA_SWEEP) * scale
-    ev, _ = cpt.measure(p, phi, eps, engine.DEFAULT_REFERENCE)
+    ev, _ = cpt.measure(p, phi, eps, engine.DEFAULT_INTEGRATOR)
     omega = np.sqrt(p.k**2 - eps**2 / 4)
     np.testing.assert_allclose(ev["t_end"], PI / omega, rtol=0, atol=1e-10)
     np.testing.assert_allclose(
@@ -533,7 +533,7 @@ def test_charbonnier_reference_second_tolerance():
     _same_residuals(
         [*fch.general_rows(), *fch.monomial_rows()],
         [*fch.general_rows(TIGHT), *fch.monomial_rows(TIGHT)],
-        engine.DEFAULT_REFERENCE.error_bound,
+        engine.DEFAULT_INTEGRATOR.error_bound,
     )
 
 

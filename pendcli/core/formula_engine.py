@@ -21,7 +21,7 @@ Conventions (stated in every row's note):
   (:func:`identify`), which gives the corrected term.
 
 The reference is scipy's ``solve_ivp`` (DOP853 at rtol 1e-12 by default, see
-:class:`Reference`); the tests re-run every study with a second method (Radau, or DOP853 at a
+:class:`Integrator`); the tests re-run every study with a second method (Radau, or DOP853 at a
 tighter tolerance) and check the residuals do not move beyond the stated error bound.
 """
 
@@ -44,13 +44,13 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
 __all__ = [
-    "DEFAULT_REFERENCE",
+    "DEFAULT_INTEGRATOR",
     "DENOMINATORS",
     "FLOOR_FACTOR",
     "ORDER_TOLERANCE",
     "PANEL_FONT",
+    "Integrator",
     "PanelLabels",
-    "Reference",
     "Study",
     "crossings",
     "draw_study",
@@ -78,7 +78,7 @@ FLOOR_FACTOR = 10.0  # a residual must exceed the reference's error bound this m
 
 
 @dataclass(frozen=True)
-class Reference:
+class Integrator:
     """How the governing equation is integrated (scipy.integrate.solve_ivp)."""
 
     method: str = "DOP853"
@@ -118,7 +118,7 @@ class Reference:
         return f"solve_ivp {self.method}, rtol {self.rtol:.0e}, atol {self.atol:.0e}"
 
 
-DEFAULT_REFERENCE = Reference()
+DEFAULT_INTEGRATOR = Integrator()
 
 
 def crossings(

@@ -24,9 +24,9 @@ import numpy as np
 
 from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
 from pendcli.core.formula_engine import (
-    DEFAULT_REFERENCE,
+    DEFAULT_INTEGRATOR,
+    Integrator,
     PanelLabels,
-    Reference,
     Study,
     grid_caption,
     judge,
@@ -68,9 +68,9 @@ DELTA_PARAM = "δ (dimensionless size of the perturbation) = 0.04 … 0.0025"
 CLOSED_FORM_N_MAX = 501
 
 
-def formula_checks(ref: Reference | None = None) -> list[FormulaRow]:
+def formula_checks(ref: Integrator | None = None) -> list[FormulaRow]:
     """Every Charbonnier formula check: closed forms of I_n(π), then the perturbation formulas."""
-    ref = DEFAULT_REFERENCE if ref is None else ref
+    ref = DEFAULT_INTEGRATOR if ref is None else ref
     rows = [
         *closed_form_rows(),
         e_c_closed_form_row(),
@@ -268,7 +268,7 @@ class _Run:
     ec_half: float
 
 
-def _run(p: CheckPendulum, name: str, pert: Perturbation, ref: Reference) -> _Run:
+def _run(p: CheckPendulum, name: str, pert: Perturbation, ref: Integrator) -> _Run:
     eps = np.array(DELTA_SWEEP) * pert.scale
     events, sol = measure(p, pert.phi, eps, ref)
     (es_pi,), (ec_pi,) = e_integrals(p, pert.phi, np.array([p.half]))
@@ -277,7 +277,7 @@ def _run(p: CheckPendulum, name: str, pert: Perturbation, ref: Reference) -> _Ru
 
 
 def _frow(
-    id_: str, source: str, published: str, residuals: Iterable[float], ref: Reference, **kw: Any
+    id_: str, source: str, published: str, residuals: Iterable[float], ref: Integrator, **kw: Any
 ) -> FormulaRow:
     """A row of the δ sweep: ``residuals`` (dimensionless, one per δ) of order 2 claimed."""
     study = Study(DELTA_PARAM, DELTA_SWEEP, tuple(residuals), 2, ref.error_bound)
@@ -292,7 +292,7 @@ def _frow(
     )
 
 
-def general_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def general_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """(4)-(5) along the half-swing and (6)-(9) for three perturbations."""
     p = check_pendulum()
     rows = []
@@ -306,7 +306,7 @@ def general_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     return rows
 
 
-def _eq4_5_row(p: CheckPendulum, run: _Run, pert: Perturbation, ref: Reference) -> FormulaRow:
+def _eq4_5_row(p: CheckPendulum, run: _Run, pert: Perturbation, ref: Integrator) -> FormulaRow:
     """(4), (5): θ and θ' along the half-swing, worst |Δθ|/α and |Δθ'|/(kα) per δ."""
     k, alpha = p.k, p.alpha
     grid = np.linspace(0.0, p.half, 241)
@@ -329,7 +329,7 @@ def _eq4_5_row(p: CheckPendulum, run: _Run, pert: Perturbation, ref: Reference) 
     )
 
 
-def _eq6_row(p: CheckPendulum, run: _Run, ref: Reference) -> FormulaRow:
+def _eq6_row(p: CheckPendulum, run: _Run, ref: Integrator) -> FormulaRow:
     """(6): ΔT = ε E_c(π)/(k²α), the time of θ' = 0 minus π/k (residual ×k)."""
     k = p.k
     dt = run.events["t_end"] - p.half - run.eps * run.ec_pi / (k**2 * p.alpha)
@@ -344,7 +344,7 @@ def _eq6_row(p: CheckPendulum, run: _Run, ref: Reference) -> FormulaRow:
     )
 
 
-def _eq7_row(p: CheckPendulum, run: _Run, ref: Reference) -> FormulaRow:
+def _eq7_row(p: CheckPendulum, run: _Run, ref: Integrator) -> FormulaRow:
     """(7): Δα = −(ε/k) E_s(π), the angle at the end of the half-swing minus α (residual /α)."""
     da = run.events["theta_end"] - p.alpha + run.eps / p.k * run.es_pi
     return _frow(
@@ -357,7 +357,7 @@ def _eq7_row(p: CheckPendulum, run: _Run, ref: Reference) -> FormulaRow:
     )
 
 
-def _eq8_row(p: CheckPendulum, run: _Run, ref: Reference) -> FormulaRow:
+def _eq8_row(p: CheckPendulum, run: _Run, ref: Integrator) -> FormulaRow:
     """(8): ΔT_1/2 = ε E_c(π/2)/(k²α), the time of θ = 0 minus π/(2k) (residual ×k)."""
     k = p.k
     dth = run.events["t_low"] - p.half / 2 - run.eps * run.ec_half / (k**2 * p.alpha)
@@ -371,7 +371,7 @@ def _eq8_row(p: CheckPendulum, run: _Run, ref: Reference) -> FormulaRow:
     )
 
 
-def _eq9_row(p: CheckPendulum, run: _Run, ref: Reference) -> FormulaRow:
+def _eq9_row(p: CheckPendulum, run: _Run, ref: Integrator) -> FormulaRow:
     """(9) as printed, −ε E_c(π/2), and as (5) gives it, −ε E_s(π/2) (residual /(kα))."""
     scale = p.k * p.alpha
     dv_printed = (run.events["omega_low"] - scale + run.eps * run.ec_half) / scale
@@ -409,7 +409,7 @@ class _MonomialResiduals:
         return tuple(np.max(np.abs(np.array(arrs)), axis=0))
 
 
-def monomial_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def monomial_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """ΔT = 0 (no. 13), Δα (no. 16) for b_n v^n, n = 0..5, ΔT_1/2 and Δv_m (no. 17), (9)."""
     p = check_pendulum()
     rows = []
@@ -424,7 +424,7 @@ def monomial_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
 
 
 def _delta_alpha_row(
-    p: CheckPendulum, n: int, b: np.ndarray, events: dict[str, np.ndarray], ref: Reference
+    p: CheckPendulum, n: int, b: np.ndarray, events: dict[str, np.ndarray], ref: Integrator
 ) -> FormulaRow:
     """no. 16: Δα = −b_n k^(n−2) α^n l0^(n−1) I_n(π) = −(b_n/g)(αgT/π)^n I_n(π)."""
     k, alpha, l0 = p.k, p.alpha, p.l0
@@ -464,7 +464,7 @@ def _collect_no17(
     acc.vm.append((dv_m - k / 2 * l0 * d_alpha_exact) / (k * l0 * alpha))
 
 
-def _no13_no17_rows(acc: _MonomialResiduals, ref: Reference) -> list[FormulaRow]:
+def _no13_no17_rows(acc: _MonomialResiduals, ref: Integrator) -> list[FormulaRow]:
     worst = _MonomialResiduals.worst
     return [
         _frow(

@@ -3,7 +3,7 @@
 The equation is θ'' + k²θ + ε φ(θ, θ', t) = 0, θ(0) = −α, θ'(0) = 0 (no. 4), the principal
 motion being linear (sin θ → θ, no. 3).  The integrals E_s, E_c of no. 7 are computed by
 Gauss-Legendre quadrature of φ(−α cos kt, kα sin kt, t), independent of the ODE, which
-:func:`measure` integrates with a :class:`~pendcli.core.formula_engine.Reference` to find the
+:func:`measure` integrates with a :class:`~pendcli.core.formula_engine.Integrator` to find the
 events the first-order formulas (6)-(9) predict.
 
 The pendulum of these checks (g, l0, α) is read from ``[paper.constants]`` of
@@ -24,7 +24,7 @@ from pendcli.core.formula_engine import crossings
 from pendcli.core.tables import load_paper_table
 
 if TYPE_CHECKING:
-    from pendcli.core.formula_engine import Reference
+    from pendcli.core.formula_engine import Integrator
 
 __all__ = [
     "GL_NODES",
@@ -131,7 +131,7 @@ def e_integrals(p: CheckPendulum, phi: Phi, t: np.ndarray) -> tuple[np.ndarray, 
     )
 
 
-def _solve(p: CheckPendulum, phi: Phi, epsilons: np.ndarray, ref: Reference):
+def _solve(p: CheckPendulum, phi: Phi, epsilons: np.ndarray, ref: Integrator):
     """θ'' + k²θ + εφ = 0 for every ε at once, θ(0) = −α, θ'(0) = 0, to 1.25 half-swings."""
     m = len(epsilons)
     k2 = p.k**2
@@ -144,7 +144,7 @@ def _solve(p: CheckPendulum, phi: Phi, epsilons: np.ndarray, ref: Reference):
     return ref.solve(rhs, 1.25 * p.half, y0)
 
 
-def measure(p: CheckPendulum, phi: Phi, epsilons: np.ndarray, ref: Reference):
+def measure(p: CheckPendulum, phi: Phi, epsilons: np.ndarray, ref: Integrator):
     """End of the half-swing (θ' = 0), amplitude there, lowest point (θ = 0) and its speed.
 
     Returns ({"t_end", "theta_end", "t_low", "omega_low"} -> array over ε, dense solution).

@@ -31,8 +31,8 @@ import numpy as np
 
 from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
 from pendcli.core.formula_engine import (
-    DEFAULT_REFERENCE,
-    Reference,
+    DEFAULT_INTEGRATOR,
+    Integrator,
     Study,
     crossings,
     identify_combination,
@@ -64,7 +64,7 @@ __all__ = [
 ]
 
 
-def _p_study(residuals: Sequence[float] | Array, order: float, ref: Reference) -> Study:
+def _p_study(residuals: Sequence[float] | Array, order: float, ref: Integrator) -> Study:
     """A study over P_SWEEP (p = b/√(ga))."""
     return Study(P_PARAM, P_SWEEP, tuple(residuals), order, ref.error_bound)
 
@@ -83,7 +83,7 @@ def _linear_rhs(ps: Array) -> Callable[[float, Array], Array]:
 
 @cache
 def _linear(
-    ps: tuple[float, ...], theta0: float, omega0: float, t_end: float, ref: Reference
+    ps: tuple[float, ...], theta0: float, omega0: float, t_end: float, ref: Integrator
 ) -> Solution:
     """Dense solution of the linearised (3) for each p, from θ(0) = θ0, θ'(0) = ω0."""
     arr = np.array(ps)
@@ -91,14 +91,14 @@ def _linear(
     return ref.solve(_linear_rhs(arr), t_end, y0.tolist())
 
 
-def _vertical_start(ref: Reference, ps: tuple[float, ...] = P_SWEEP) -> Solution:
+def _vertical_start(ref: Integrator, ps: tuple[float, ...] = P_SWEEP) -> Solution:
     """θ(0) = 0, θ'(0) = 1: Lecornu's choice φ = 0 in (26) and A = 1 in (28)."""
     return _linear(tuple(ps), 0.0, 1.0, 2.6 * PI, ref)
 
 
 # ----------------------------------------------------------------------------- chapter II
 @cache
-def event_times(ref: Reference, ps: tuple[float, ...] = P_SWEEP) -> dict[str, Array]:
+def event_times(ref: Integrator, ps: tuple[float, ...] = P_SWEEP) -> dict[str, Array]:
     """Reduced times of the 2nd, 3rd verticals and the 1st, 2nd elongations, per p."""
     sol = _vertical_start(ref, ps)
     m = len(ps)
@@ -133,7 +133,7 @@ def _table_26_entries(ps: Array) -> tuple[tuple[str, str, str, Array], ...]:
     )
 
 
-def _oscillation_time_increase_row(ref: Reference) -> FormulaRow:
+def _oscillation_time_increase_row(ref: Integrator) -> FormulaRow:
     """The increase π²b/(4g) of the oscillation time, independent of l (after (23)).
 
     Measured on the second oscillation, with l the length at its first vertical passage.
@@ -152,7 +152,7 @@ def _oscillation_time_increase_row(ref: Reference) -> FormulaRow:
     )
 
 
-def table_26_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def table_26_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """The table after (26): times of vertical positions and elongations (first order in p)."""
     ev = event_times(ref)
     rows = [
@@ -195,7 +195,7 @@ def _series_26(t: Array, p: float) -> Array:
     return (1 - 0.75 * p * t) * np.sin(t) - p * t**2 / 4 * np.cos(t)
 
 
-def _p2_bracket(grid: Array, ref: Reference) -> Array:
+def _p2_bracket(grid: Array, ref: Integrator) -> Array:
     """32 × the coefficient of p² in θ(τ), fitted on the basis τ^j sin τ, τ^j cos τ (j ≤ 4).
 
     The p² coefficient function is Richardson-extrapolated from p = 0.001 and 0.0005 (small,
@@ -212,13 +212,13 @@ def _p2_bracket(grid: Array, ref: Reference) -> Array:
     return np.asarray(32 * coef)
 
 
-def _vertical_start_on_grid(ref: Reference) -> tuple[Array, Array]:
+def _vertical_start_on_grid(ref: Integrator) -> tuple[Array, Array]:
     """(grid 0 ≤ τ ≤ 2π, θ on it for each p of P_SWEEP) from the vertical start."""
     grid = np.linspace(0.0, 2 * PI, GRID_2PI)
     return grid, _vertical_start(ref)(grid)[: len(P_SWEEP)]
 
 
-def _eq26_row(ref: Reference) -> FormulaRow:
+def _eq26_row(ref: Integrator) -> FormulaRow:
     """(26): first order."""
     grid, theta = _vertical_start_on_grid(ref)
     res = [np.max(np.abs(theta[j] - _series_26(grid, p))) for j, p in enumerate(P_SWEEP)]
@@ -232,7 +232,7 @@ def _eq26_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _eq28_row(ref: Reference) -> FormulaRow:
+def _eq28_row(ref: Integrator) -> FormulaRow:
     """(28): u = θ(1 + pτ), second order."""
     grid, theta = _vertical_start_on_grid(ref)
     res = [
@@ -264,7 +264,7 @@ _P2_NAMES = (
 )
 
 
-def _eq29_row(ref: Reference) -> FormulaRow:
+def _eq29_row(ref: Integrator) -> FormulaRow:
     """(29): θ, second order; the printed −43 against the coefficient found numerically."""
     grid, theta = _vertical_start_on_grid(ref)
     res29 = [np.max(np.abs(theta[j] - _series_29(grid, p))) for j, p in enumerate(P_SWEEP)]
@@ -295,7 +295,7 @@ def _eq29_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _period_row(ref: Reference) -> FormulaRow:
+def _period_row(ref: Integrator) -> FormulaRow:
     """The period to second order, π√(a/g) + π²b/(4g) + (3π/32) b²/(g√(ag))."""
     ev = event_times(ref, P_PERIOD_SWEEP)
     ps = np.array(P_PERIOD_SWEEP)
@@ -317,7 +317,7 @@ def _period_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _mean_pendulum_row(ref: Reference) -> FormulaRow:
+def _mean_pendulum_row(ref: Integrator) -> FormulaRow:
     """The comparison with the mean pendulum, printed π(7π² − 3)/32 = 6,47."""
     ps = np.array(P_SWEEP)
     t2 = event_times(ref)["vertical2"]
@@ -341,7 +341,7 @@ def _mean_pendulum_row(ref: Reference) -> FormulaRow:
     )
 
 
-def series_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def series_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """(26), (28), (29), the period to second order, and the mean-pendulum comparison."""
     return [
         _eq26_row(ref),
@@ -352,7 +352,7 @@ def series_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     ]
 
 
-def _elongation_ratio_row(ref: Reference) -> FormulaRow:
+def _elongation_ratio_row(ref: Integrator) -> FormulaRow:
     """Ratio of successive elongations, 1 + (3/4)π b/√(gl) (after (24))."""
     ev, sol = event_times(ref), _vertical_start(ref)
     ps = np.array(P_SWEEP)
@@ -384,7 +384,7 @@ def _eq52_components(u: Array, p: float) -> tuple[Array, Array, Array, Array]:
     return printed1, printed2, fixed1, fixed2
 
 
-def _conical_residuals(ref: Reference) -> tuple[list[float], list[float], list[float]]:
+def _conical_residuals(ref: Integrator) -> tuple[list[float], list[float], list[float]]:
     """Max residuals of (52) printed and corrected, and the homothety ratio's, per p.
 
     The two plane components of the conical pendulum, same ODE, θ1 from an elongation.
@@ -404,7 +404,7 @@ def _conical_residuals(ref: Reference) -> tuple[list[float], list[float], list[f
     return printed_res, fixed_res, homothety
 
 
-def amplitude_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def amplitude_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """Ratio of successive elongations; (52) as printed; the homothety ratio 1 − 3pπ/4."""
     printed_res, fixed_res, homothety = _conical_residuals(ref)
     fv, fo, _ = judge(_p_study(fixed_res, 2, ref))
@@ -435,7 +435,7 @@ def amplitude_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
     return [_elongation_ratio_row(ref), eq52, homothety_row]
 
 
-def _compound_residuals(ref: Reference, r2: float) -> tuple[Array, Array]:
+def _compound_residuals(ref: Integrator, r2: float) -> tuple[Array, Array]:
     """Max |Δθ| over two oscillations of the substituted simple pendulum against the compound
     one, with the printed damping b(1 − R²/a²) and with b kept; per p (R²/a² = r2)."""
     ps = np.array(P_SWEEP)
@@ -464,7 +464,7 @@ def _compound_residuals(ref: Reference, r2: float) -> tuple[Array, Array]:
 
 
 def compound_rows(
-    ref: Reference = DEFAULT_REFERENCE, radius_ratio: float = 0.5
+    ref: Integrator = DEFAULT_INTEGRATOR, radius_ratio: float = 0.5
 ) -> list[FormulaRow]:
     """Section I: the compound pendulum behaves as the simple one with b → b(1 − R²/a²)."""
     res_printed, res_fixed = _compound_residuals(ref, radius_ratio**2)
@@ -512,7 +512,7 @@ FORMULA_CAUSES: dict[str, FormulaCause] = {
 }
 
 
-def formula_checks(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def formula_checks(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """Every Lecornu formula check (see the module docstring), each failure with its cause."""
     rows = [
         *table_26_rows(ref),

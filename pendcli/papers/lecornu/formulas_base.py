@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_engine import Reference, Study, make_row
+from pendcli.core.formula_engine import Integrator, Study, make_row
 
 __all__ = [
     "GRID_2PI",
@@ -29,7 +29,7 @@ __all__ = [
 ]
 
 Array = np.ndarray
-Solution = Callable[[Any], Array]  # the dense output of Reference.solve
+Solution = Callable[[Any], Array]  # the dense output of Integrator.solve
 
 PAPER = "lecornu"
 P_SWEEP = (0.032, 0.016, 0.008, 0.004, 0.002)  # p = b/√(ga)
@@ -41,7 +41,7 @@ GRID_2PI = 401  # points of the grids 0 ≤ γt ≤ 2π on which residuals are m
 
 
 def formula_row(
-    id_: str, source: str, published: str, study: Study, ref: Reference, **kw: Any
+    id_: str, source: str, published: str, study: Study, ref: Integrator, **kw: Any
 ) -> FormulaRow:
     return make_row(
         id=f"{PAPER}.{id_}",

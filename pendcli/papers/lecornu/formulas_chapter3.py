@@ -28,8 +28,8 @@ import numpy as np
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.formula_engine import (
-    DEFAULT_REFERENCE,
-    Reference,
+    DEFAULT_INTEGRATOR,
+    Integrator,
     Study,
     fit_basis,
     identify_combination,
@@ -64,7 +64,7 @@ S_SWEEP = (0.2, 0.1, 0.05, 0.025, 0.0125)  # s·z0 = g a / b² for (31)
 K_PARAM = "k = sin(θ0/2) = 0.2 … 0.05"
 
 
-def _k_study(residuals: Sequence[float] | Array, order: float, ref: Reference) -> Study:
+def _k_study(residuals: Sequence[float] | Array, order: float, ref: Integrator) -> Study:
     """A study over K_SWEEP (k = sin(θ0/2))."""
     return Study(K_PARAM, K_SWEEP, tuple(residuals), order, ref.error_bound)
 
@@ -152,7 +152,7 @@ def slope_at_zero(expr: Any, variable: str, names: Sequence[str]) -> Callable[..
 
 @cache
 def linear_solution(
-    starts: tuple[float, ...], slopes: tuple[float, ...], t_end: float, ref: Reference
+    starts: tuple[float, ...], slopes: tuple[float, ...], t_end: float, ref: Integrator
 ) -> Solution:
     """(3) linearised in the reduced variables, (1 + pu)θ'' + 2pθ' + θ = 0, one copy per p
     of P_SWEEP, from θ(0) = ``starts``, θ'(0) = ``slopes`` (per p)."""
@@ -167,7 +167,7 @@ def linear_solution(
 
 
 def through_printed_state(
-    expr: Any, names: Sequence[str], fixed: Sequence[float], t_end: float, ref: Reference
+    expr: Any, names: Sequence[str], fixed: Sequence[float], t_end: float, ref: Integrator
 ) -> tuple[Callable[..., Any], Solution]:
     """The printed θ(u, p, *fixed) of ``expr`` (``names`` = u, p, then the fixed symbols)
     and the solution of (3) linearised from its value and slope at u = 0, per p."""
@@ -189,7 +189,7 @@ def _eq31(z: Array, z0: float, s: float, alpha: float) -> Array:
     )
 
 
-def _eq31_residuals(ref: Reference, alpha: float, z0: float = 1.0) -> list[float]:
+def _eq31_residuals(ref: Integrator, alpha: float, z0: float = 1.0) -> list[float]:
     """Max |θ − (31)| from z0 down to z0/4, per s of S_SWEEP."""
     ss = np.array(S_SWEEP)
     m = len(ss)
@@ -207,7 +207,7 @@ def _eq31_residuals(ref: Reference, alpha: float, z0: float = 1.0) -> list[float
 
 
 def fast_shortening_rows(
-    ref: Reference = DEFAULT_REFERENCE, alpha: float = 0.5
+    ref: Integrator = DEFAULT_INTEGRATOR, alpha: float = 0.5
 ) -> list[FormulaRow]:
     """(31): z θ'' + 2θ' + s sin θ = 0 from z0 with θ = α, θ' = 0, to second order in s."""
     res = _eq31_residuals(ref, alpha)
@@ -227,7 +227,7 @@ def fast_shortening_rows(
     ]
 
 
-def _nonlinear(ks: tuple[float, ...], t_end: float, ref: Reference) -> Solution:
+def _nonlinear(ks: tuple[float, ...], t_end: float, ref: Integrator) -> Solution:
     """(33) θ'' + sin θ = 0 from θ0 = 2 arcsin k at rest, with ε = ∂θ/∂p at p = 0 from (32)."""
     karr = np.array(ks)
     m = len(ks)
@@ -249,7 +249,7 @@ _TRIG_BASIS = {
 }
 
 
-def _delta_found(grid: Array, ref: Reference) -> dict[str, int]:
+def _delta_found(grid: Array, ref: Integrator) -> dict[str, int]:
     """64δ: the k³ coefficient of ∂θ/∂p, extrapolated (k² steps) and fitted on _TRIG_BASIS.
 
     Small k (0.014, 0.01) keep the k⁷ terms, large at u ~ 2π, out of the fit.
@@ -294,14 +294,14 @@ def _delta_printed(u: Array) -> Array:
 
 
 @cache
-def _finite_solution(ref: Reference) -> tuple[Array, Array, Solution]:
+def _finite_solution(ref: Integrator) -> tuple[Array, Array, Solution]:
     """(grid 0 ≤ u ≤ 2π, [θ, θ', ε, ε'] on it per k of K_SWEEP, the dense solution)."""
     sol = _nonlinear(K_SWEEP, 2 * PI + 0.1, ref)
     grid = np.linspace(0.0, 2 * PI, GRID_2PI)
     return grid, sol(grid), sol
 
 
-def _eq38_row(ref: Reference) -> FormulaRow:
+def _eq38_row(ref: Integrator) -> FormulaRow:
     grid, y, _ = _finite_solution(ref)
     f = 9 * np.cos(grid) + 12 * grid * np.sin(grid) - np.cos(3 * grid)
     res = [
@@ -327,7 +327,7 @@ def _eq41_residuals(y: Array, grid: Array, delta: Array) -> list[float]:
     ]
 
 
-def _eq41_row(ref: Reference) -> FormulaRow:
+def _eq41_row(ref: Integrator) -> FormulaRow:
     grid, y, _ = _finite_solution(ref)
     found = _delta_found(grid, ref)
     delta_text = _trig_text(found)
@@ -353,7 +353,7 @@ def _eq41_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _quarter_period_terms(ref: Reference) -> tuple[Array, Array]:
+def _quarter_period_terms(ref: Integrator) -> tuple[Array, Array]:
     """(K(k), ∂T/∂p) per k: T from the elongation at t = 0 to the vertical; ∂T/∂p = −ε(K)/θ'(K)."""
     from scipy.special import ellipk
 
@@ -364,7 +364,7 @@ def _quarter_period_terms(ref: Reference) -> tuple[Array, Array]:
     return quarter, np.array([-at_k[j][2 * m + j] / at_k[j][m + j] for j in range(m)])
 
 
-def _eq42_row(ref: Reference, t_p: Array, quarter: Array, c_k2: float, text: str) -> FormulaRow:
+def _eq42_row(ref: Integrator, t_p: Array, quarter: Array, c_k2: float, text: str) -> FormulaRow:
     ks = np.array(K_SWEEP)
     printed_b = (PI**2 / 4 + 3) / 4 + (2 * PI**2 + 1) / 16 * ks**2
     fv, fo, _ = judge(_k_study(t_p - ((PI**2 / 4 + 3) / 4 + c_k2 * ks**2), 4, ref))
@@ -387,7 +387,7 @@ def _eq42_row(ref: Reference, t_p: Array, quarter: Array, c_k2: float, text: str
     )
 
 
-def _eq42_prime_row(ref: Reference, t_p: Array, text: str) -> FormulaRow:
+def _eq42_prime_row(ref: Integrator, t_p: Array, text: str) -> FormulaRow:
     theta0 = 2 * np.arcsin(np.array(K_SWEEP))
     printed_b_theta = (PI**2 / 4 + 3) / 4 + (2 * PI**2 + 1) / 64 * theta0**2
     return formula_row(
@@ -408,7 +408,7 @@ def _eq42_prime_row(ref: Reference, t_p: Array, text: str) -> FormulaRow:
     )
 
 
-def _eq42_rows(ref: Reference) -> list[FormulaRow]:
+def _eq42_rows(ref: Integrator) -> list[FormulaRow]:
     """(42) and (42'): the terms in b of the time from an elongation to the vertical."""
     quarter, t_p = _quarter_period_terms(ref)
     ks = np.array(K_SWEEP)
@@ -418,7 +418,7 @@ def _eq42_rows(ref: Reference) -> list[FormulaRow]:
     return [_eq42_row(ref, t_p, quarter, c_k2, text), _eq42_prime_row(ref, t_p, text)]
 
 
-def finite_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def finite_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """The series of am u to k³, (38), the terms in p of (41), (41) with k³ neglected, and
     the terms in b of (42) and (42')."""
     return [
@@ -481,7 +481,7 @@ def amplitude_series_row() -> FormulaRow:
     )
 
 
-def k3_neglected_row(ref: Reference) -> FormulaRow:
+def k3_neglected_row(ref: Integrator) -> FormulaRow:
     """Line 890: θ of (41) with k³ neglected (row lecornu.result.k3_neglected, ρ = 1)
     against (3) linearised from its own value and slope at u = 0."""
     ((_, theta),) = ledger_sides("result.k3_neglected")

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_engine import DEFAULT_REFERENCE, Reference, Study
+from pendcli.core.formula_engine import DEFAULT_INTEGRATOR, Integrator, Study
 from pendcli.papers.lecornu.formulas_base import P_SWEEP, PI, Array, Solution, formula_row
 from pendcli.papers.lecornu.formulas_chapter3 import (
     evaluator,
@@ -39,11 +39,11 @@ NEAR = np.linspace(0.05, 1.4, 200)  # u on the first quarter turn: x, y > 0 (the
 TURN = np.linspace(0.0, 2 * PI, 401)
 
 
-def _p_study(residuals: Sequence[float] | Array, ref: Reference) -> Study:
+def _p_study(residuals: Sequence[float] | Array, ref: Integrator) -> Study:
     return Study(P_PARAM, P_SWEEP, tuple(float(r) for r in residuals), 2, ref.error_bound)
 
 
-def _area_row(ref: Reference) -> FormulaRow:
+def _area_row(ref: Integrator) -> FormulaRow:
     """Line 1088: l²θ²φ' = l² sin²θ φ' + …, the relative gap of the two sides (l = φ' = 1)."""
     ((lhs, rhs),) = ledger_sides("result.area_small_angle")
     names = ("l", "theta", "dphi_dt")
@@ -61,7 +61,7 @@ def _area_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _eq50_row(ref: Reference) -> FormulaRow:
+def _eq50_row(ref: Integrator) -> FormulaRow:
     """(50): each θi (ρi = γ = 1, ψ1 = 0.7, ψ2 = −0.4) against (3) linearised from its own
     value and slope at t = 0; the larger residual of the two per p."""
     worst = np.zeros(len(P_SWEEP))
@@ -84,7 +84,7 @@ def _eq50_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _inverse_square_row(ref: Reference) -> FormulaRow:
+def _inverse_square_row(ref: Integrator) -> FormulaRow:
     """Line 1102 as read: 1/(a + bt)² against (1/a²)(1 − 2pγt), b = pγa, a = γt = 1."""
     (_, (exact, series)) = ledger_sides("result.inverse_square_length", "reading_formula")
     names = ("a", "b", "t", "p", "gamma")
@@ -102,7 +102,7 @@ def _inverse_square_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _plane_solutions(ref: Reference) -> tuple[list[Callable[..., Any]], list[Solution]]:
+def _plane_solutions(ref: Integrator) -> tuple[list[Callable[..., Any]], list[Solution]]:
     """(52) as read, θ1/ρ1 and θ2/ρ2 as functions (u, p), and (3) linearised from their
     values and slopes at u = 0, per p: the trace of the conical pendulum."""
     printed, solved = [], []
@@ -113,7 +113,7 @@ def _plane_solutions(ref: Reference) -> tuple[list[Callable[..., Any]], list[Sol
     return printed, solved
 
 
-def _eq52_row(ref: Reference) -> FormulaRow:
+def _eq52_row(ref: Integrator) -> FormulaRow:
     printed, solved = _plane_solutions(ref)
     worst = np.zeros(len(P_SWEEP))
     for value, solution in zip(printed, solved, strict=True):
@@ -132,13 +132,13 @@ def _eq52_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _trace(ref: Reference) -> tuple[Array, Array]:
+def _trace(ref: Integrator) -> tuple[Array, Array]:
     """x = ρ1θ1/ρ1, y = ρ2θ2/ρ2 of the solved trace on NEAR, per p (rows)."""
     _, solved = _plane_solutions(ref)
     return RHO1 * solved[0](NEAR), RHO2 * solved[1](NEAR)
 
 
-def _trajectory_row(ref: Reference) -> FormulaRow:
+def _trajectory_row(ref: Integrator) -> FormulaRow:
     ((lhs, rhs),) = ledger_sides("result.trajectory_after_52", "corrected_formula")
     gap = evaluator(lhs - rhs, ("x", "y", "rho1", "rho2", "p"))
     xs, ys = _trace(ref)
@@ -155,7 +155,7 @@ def _trajectory_row(ref: Reference) -> FormulaRow:
     )
 
 
-def _homothety_axes_row(ref: Reference) -> FormulaRow:
+def _homothety_axes_row(ref: Integrator) -> FormulaRow:
     """Lines 1130-1134 as read: the axes ρi s of the ellipse through the trace,
     s = √((x/ρ1)² + (y/ρ2)²), against the printed ρi(1 − (3p/4) arctg(ρ1y/(ρ2x)))."""
     xs, ys = _trace(ref)
@@ -180,7 +180,7 @@ def _homothety_axes_row(ref: Reference) -> FormulaRow:
     )
 
 
-def conical_rows(ref: Reference = DEFAULT_REFERENCE) -> list[FormulaRow]:
+def conical_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """Lines 1086-1134: θ² for sin²θ, (50), 1/l², (52), the trace and its ellipse's axes,
     each as read where it is a misprint."""
     return [

@@ -23,9 +23,9 @@ import numpy as np
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.formula_engine import (
-    DEFAULT_REFERENCE,
+    DEFAULT_INTEGRATOR,
+    Integrator,
     PanelLabels,
-    Reference,
     Study,
     identify,
     leading_coefficient,
@@ -168,7 +168,7 @@ def _amplitude_row(ledger: Ledger) -> FormulaRow:
 
 
 # --- (25): the slowly varying pendulum to first order -----------------------------------------
-def eq25_residuals(psi: float, ref: Reference = DEFAULT_REFERENCE) -> list[float]:
+def eq25_residuals(psi: float, ref: Integrator = DEFAULT_INTEGRATOR) -> list[float]:
     """Max over 0 ≤ γt ≤ 2π of |θ − (25)| per p of P_SWEEP (ρ = γ = 1, phase ψ), θ of (3)
     linearised in the reduced variables, (1 + pτ)θ'' + 2pθ' + θ = 0, started from (25)'s
     value and slope at τ = 0; (25) is the ledger's printed form."""
@@ -177,7 +177,7 @@ def eq25_residuals(psi: float, ref: Reference = DEFAULT_REFERENCE) -> list[float
     return _eq25_residuals(load_ledger(PAPER), psi, ref)
 
 
-def _eq25_residuals(ledger: Ledger, psi: float, ref: Reference) -> list[float]:
+def _eq25_residuals(ledger: Ledger, psi: float, ref: Integrator) -> list[float]:
     import sympy as sp
 
     _, ((_, right),) = _printed(ledger, "lecornu.eq.25")
@@ -200,7 +200,7 @@ def _eq25_residuals(ledger: Ledger, psi: float, ref: Reference) -> list[float]:
     return [float(np.max(np.abs(solved[j] - printed(grid, v)))) for j, v in enumerate(ps)]
 
 
-def _eq25_row(ledger: Ledger, ref: Reference) -> FormulaRow:
+def _eq25_row(ledger: Ledger, ref: Integrator) -> FormulaRow:
     row, _ = _printed(ledger, "lecornu.eq.25")
     return make_row(
         id=f"{PAPER}.eq25",
@@ -215,7 +215,9 @@ def _eq25_row(ledger: Ledger, ref: Reference) -> FormulaRow:
     )
 
 
-def slow_rows(ref: Reference = DEFAULT_REFERENCE, ledger: Ledger | None = None) -> list[FormulaRow]:
+def slow_rows(
+    ref: Integrator = DEFAULT_INTEGRATOR, ledger: Ledger | None = None
+) -> list[FormulaRow]:
     """The quarter oscillation (line 555), the amplitude factor (line 573) and (25), their
     printed forms read from ``ledger`` (by default the committed one)."""
     from pendcli.core.ledger import load_ledger
