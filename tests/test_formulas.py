@@ -139,10 +139,10 @@ def test_fit_order_and_judge_detect_a_wrong_order():
     good = engine.Study("p", ps, tuple(3 * p**2 for p in ps), 2, 1e-12)
     bad = engine.Study("p", ps, tuple(3 * p for p in ps), 2, 1e-12)
     noise = engine.Study("p", ps, (1e-14, 2e-14, 1e-14, 3e-14), 2, 1e-12)
-    assert engine.judge(good)[0] == "holds"
-    assert engine.judge(good)[1] == pytest.approx(2.0)
-    assert engine.judge(bad)[0] == "fails"
-    assert engine.judge(noise)[0] == "holds" and engine.judge(noise)[1] is None
+    assert engine.study_verdict(good)[0] == "holds"
+    assert engine.study_verdict(good)[1] == pytest.approx(2.0)
+    assert engine.study_verdict(bad)[0] == "fails"
+    assert engine.study_verdict(noise)[0] == "holds" and engine.study_verdict(noise)[1] is None
 
 
 def test_identify():

@@ -60,11 +60,11 @@ __all__ = [
     "grid_caption",
     "identify",
     "identify_combination",
-    "judge",
     "leading_coefficient",
     "make_row",
     "plot_studies",
     "richardson",
+    "study_verdict",
 ]
 
 # A dense ODE solution (scipy's OdeSolution): t or an array of t -> the state (components first).
@@ -282,7 +282,7 @@ def fit_order(params: Sequence[float], residuals: Sequence[float]) -> float | No
     return _slope(points) if len(points) >= 2 else None
 
 
-def judge(study: Study) -> tuple[FormulaVerdict, float | None, str]:
+def study_verdict(study: Study) -> tuple[FormulaVerdict, float | None, str]:
     """(verdict, observed order, reason) by the rule in the module docstring."""
     above = [
         (p, r)
@@ -474,7 +474,7 @@ def make_row(
     verdict_override: tuple[FormulaVerdict, str] | None = None,
 ) -> FormulaRow:
     """A FormulaRow from a study: verdict, observed order and the convention in the note."""
-    verdict, observed, reason = judge(study)
+    verdict, observed, reason = study_verdict(study)
     if verdict_override is not None:
         verdict, reason = verdict_override
     convention = (

@@ -29,10 +29,10 @@ from pendcli.core.formula_engine import (
     PanelLabels,
     Study,
     grid_caption,
-    judge,
     leading_coefficient,
     make_row,
     plot_studies,
+    study_verdict,
 )
 from pendcli.core.vocabulary import FormulaVerdict
 from pendcli.papers.charbonnier.model import integral_pi, integral_pi_exact, printed_closed_form
@@ -376,7 +376,7 @@ def _eq9_row(p: CheckPendulum, run: _Run, ref: Integrator) -> FormulaRow:
     scale = p.k * p.alpha
     dv_printed = (run.events["omega_low"] - scale + run.eps * run.ec_half) / scale
     dv_fixed = (run.events["omega_low"] - scale + run.eps * run.es_half) / scale
-    fv, fo, _ = judge(Study(DELTA_PARAM, DELTA_SWEEP, tuple(dv_fixed), 2, ref.error_bound))
+    fv, fo, _ = study_verdict(Study(DELTA_PARAM, DELTA_SWEEP, tuple(dv_fixed), 2, ref.error_bound))
     c1 = leading_coefficient(DELTA_SWEEP, tuple(dv_printed), 1)
     return _frow(
         f"eq9.{run.name}",

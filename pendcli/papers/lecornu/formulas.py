@@ -36,8 +36,8 @@ from pendcli.core.formula_engine import (
     Study,
     crossings,
     identify_combination,
-    judge,
     leading_coefficient,
+    study_verdict,
 )
 from pendcli.papers.lecornu.formulas_base import (
     GRID_2PI,
@@ -274,7 +274,7 @@ def _eq29_row(ref: Integrator) -> FormulaRow:
         np.max(np.abs(theta[j] - _series_29(grid, p, c2=float(sin_t2))))
         for j, p in enumerate(P_SWEEP)
     ]
-    fixed_verdict, fixed_order, _ = judge(_p_study(fixed, 3, ref))
+    fixed_verdict, fixed_order, _ = study_verdict(_p_study(fixed, 3, ref))
     fitted = ", ".join(
         f"{n}: {b:+.4f}" for n, b in zip(_P2_NAMES, bracket, strict=True) if abs(b) > 1e-3
     )
@@ -407,7 +407,7 @@ def _conical_residuals(ref: Integrator) -> tuple[list[float], list[float], list[
 def amplitude_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """Ratio of successive elongations; (52) as printed; the homothety ratio 1 − 3pπ/4."""
     printed_res, fixed_res, homothety = _conical_residuals(ref)
-    fv, fo, _ = judge(_p_study(fixed_res, 2, ref))
+    fv, fo, _ = study_verdict(_p_study(fixed_res, 2, ref))
     eq52 = formula_row(
         "eq52",
         "(52)",
@@ -468,7 +468,7 @@ def compound_rows(
 ) -> list[FormulaRow]:
     """Section I: the compound pendulum behaves as the simple one with b → b(1 − R²/a²)."""
     res_printed, res_fixed = _compound_residuals(ref, radius_ratio**2)
-    fv, fo, _ = judge(_p_study(res_fixed, 2, ref))
+    fv, fo, _ = study_verdict(_p_study(res_fixed, 2, ref))
     c1 = leading_coefficient(P_SWEEP, tuple(res_printed), 1)
     study = Study(
         f"{P_PARAM}, R/a = {radius_ratio:g}", P_SWEEP, tuple(res_printed), 2, ref.error_bound

@@ -33,9 +33,9 @@ from pendcli.core.formula_engine import (
     Study,
     fit_basis,
     identify_combination,
-    judge,
     leading_coefficient,
     make_row,
+    study_verdict,
 )
 from pendcli.papers.lecornu.formulas_base import (
     GRID_2PI,
@@ -332,7 +332,7 @@ def _eq41_row(ref: Integrator) -> FormulaRow:
     found = _delta_found(grid, ref)
     delta_text = _trig_text(found)
     delta_fixed = sum(c * _TRIG_BASIS[n](grid) for n, c in found.items()) / 64
-    fv, fo, _ = judge(_k_study(_eq41_residuals(y, grid, delta_fixed), 4, ref))
+    fv, fo, _ = study_verdict(_k_study(_eq41_residuals(y, grid, delta_fixed), 4, ref))
     return formula_row(
         "eq41_terms_in_p",
         "(41)",
@@ -367,7 +367,7 @@ def _quarter_period_terms(ref: Integrator) -> tuple[Array, Array]:
 def _eq42_row(ref: Integrator, t_p: Array, quarter: Array, c_k2: float, text: str) -> FormulaRow:
     ks = np.array(K_SWEEP)
     printed_b = (PI**2 / 4 + 3) / 4 + (2 * PI**2 + 1) / 16 * ks**2
-    fv, fo, _ = judge(_k_study(t_p - ((PI**2 / 4 + 3) / 4 + c_k2 * ks**2), 4, ref))
+    fv, fo, _ = study_verdict(_k_study(t_p - ((PI**2 / 4 + 3) / 4 + c_k2 * ks**2), 4, ref))
     p0_res = quarter - PI / 2 * (1 + ks**2 / 4)
     p0_order = np.polyfit(np.log(ks), np.log(np.abs(p0_res)), 1)[0]
     return formula_row(

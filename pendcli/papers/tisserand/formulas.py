@@ -33,9 +33,9 @@ from pendcli.core.formula_engine import (
     extrapolate_to_zero,
     grid_caption,
     identify,
-    judge,
     make_row,
     plot_studies,
+    study_verdict,
 )
 
 __all__ = [
@@ -289,7 +289,9 @@ def _sin4_row(points: Sequence[Sample], ref: QuadratureReference) -> FormulaRow:
     norm = extrapolate_to_zero(THETA0_SWEEP, _residuals(points, lambda x: x.d[2] / x.dd**2), step=2)
     found = identify(norm, max_den=4096) or f"{norm:.3e}"
     alt_residuals = tuple(_residuals(points, lambda x: x.d[2] - x.dd**2 * 35 / 4096))
-    alt_verdict, alt_order, _ = judge(Study(PARAM, THETA0_SWEEP, alt_residuals, 6, ref.error_bound))
+    alt_verdict, alt_order, _ = study_verdict(
+        Study(PARAM, THETA0_SWEEP, alt_residuals, 6, ref.error_bound)
+    )
     return _row(
         "II_sin4",
         "(13), (II)",
