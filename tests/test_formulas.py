@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 from pendcli.core import formula_engine as engine
+from pendcli.core import formula_plots as plots
 from pendcli.papers.charbonnier import formulas as fch
 from pendcli.papers.charbonnier import perturbation as cpt
 from pendcli.papers.lecornu import formula_figures as fle_figures
@@ -237,7 +238,7 @@ def _row(verdict: str, residuals, claimed=2.0, observed=2.0):
     )
 
 
-_LABELS = engine.PanelLabels("demo quantity", "p (rad)", "rad")
+_LABELS = plots.PanelLabels("demo quantity", "p (rad)", "rad")
 
 
 def test_draw_study_shows_the_residuals_and_the_claimed_slope():
@@ -250,7 +251,7 @@ def test_draw_study_shows_the_residuals_and_the_claimed_slope():
     residuals = [(0.1, 3e-3), (0.05, 4e-4), (0.025, 0.0), (0.0125, 6e-6)]
     fig, ax = plt.subplots()
     try:
-        engine.draw_study(ax, _row("fails", residuals, claimed=3.0, observed=2.71), _LABELS)
+        plots.draw_study(ax, _row("fails", residuals, claimed=3.0, observed=2.71), _LABELS)
         data, slope = ax.get_lines()
         # the zero residual cannot sit on a log axis: three points drawn, red for "fails"
         assert list(data.get_xdata()) == [0.1, 0.05, 0.0125]
@@ -281,7 +282,7 @@ def test_draw_study_of_a_residual_at_the_reference_error_says_so():
     fig, ax = plt.subplots()
     try:
         row = _row("holds", [(0.1, 2e-12), (0.05, 2e-12)], claimed=2.0, observed=None)
-        engine.draw_study(ax, row, _LABELS)
+        plots.draw_study(ax, row, _LABELS)
         assert ax.get_title().endswith("holds: residual at the reference's error (claimed order 2)")
     finally:
         plt.close(fig)
@@ -299,7 +300,7 @@ def _grid_figure(monkeypatch, rows, labels):
     kept = []
     monkeypatch.setattr(plotting, "save_figure", lambda fig, path: kept.append(fig))
     monkeypatch.setattr(plt, "close", lambda fig: None)
-    engine.plot_studies("unused.png", rows, "Demo", labels, ncols=2)
+    plots.plot_studies("unused.png", rows, "Demo", labels, ncols=2)
     (fig,) = kept
     return fig
 
@@ -333,7 +334,7 @@ def test_plot_studies_draws_one_labelled_panel_per_ordered_row(monkeypatch):
 def test_plot_studies_refuses_a_row_without_labels(tmp_path):
     rows = [_row("holds", [(0.1, 1e-2), (0.05, 2.5e-3), (0.025, 6.25e-4)])]
     with pytest.raises(ValueError, match=r"no panel labels for demo\.eq1"):
-        engine.plot_studies(tmp_path / "x.png", rows, "Demo", {})
+        plots.plot_studies(tmp_path / "x.png", rows, "Demo", {})
 
 
 @pytest.mark.parametrize("paper", ["tisserand", "lecornu", "charbonnier"])

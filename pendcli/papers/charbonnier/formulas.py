@@ -26,14 +26,12 @@ from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
 from pendcli.core.formula_engine import (
     DEFAULT_INTEGRATOR,
     Integrator,
-    PanelLabels,
     Study,
-    grid_caption,
     leading_coefficient,
     make_row,
-    plot_studies,
     study_verdict,
 )
+from pendcli.core.formula_plots import PanelLabels, grid_caption, plot_studies
 from pendcli.core.vocabulary import FormulaVerdict
 from pendcli.papers.charbonnier.model import integral_pi, integral_pi_exact, printed_closed_form
 from pendcli.papers.charbonnier.perturbation import (

@@ -25,12 +25,12 @@ from pendcli.core.claims import FormulaRow
 from pendcli.core.formula_engine import (
     DEFAULT_INTEGRATOR,
     Integrator,
-    PanelLabels,
     Study,
     identify,
     leading_coefficient,
     make_row,
 )
+from pendcli.core.formula_plots import PanelLabels
 
 if TYPE_CHECKING:
     from pendcli.core.ledger import Ledger, LedgerRow

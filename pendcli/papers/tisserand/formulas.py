@@ -28,15 +28,13 @@ import numpy as np
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.formula_engine import (
-    PanelLabels,
     Study,
     extrapolate_to_zero,
-    grid_caption,
     identify,
     make_row,
-    plot_studies,
     study_verdict,
 )
+from pendcli.core.formula_plots import PanelLabels, grid_caption, plot_studies
 
 __all__ = [
     "BUILDERS",
