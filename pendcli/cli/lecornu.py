@@ -240,7 +240,7 @@ def ode_check(
     ] = 0.02,
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
-    """Bessel elongation times against solve_ivp on eq. (3), linear and with sin θ."""
+    """Bessel elongation times against eq. (3) integrated directly, linear and with sin θ."""
     from pendcli.papers.lecornu.explore import ode_check as check
 
     rows = check(speed, length, g, tuple(amplitude) if amplitude else None, floor)

@@ -27,6 +27,8 @@ from pendcli.cli.common import (
     complete_verdicts,
     emit,
 )
+from pendcli.cli.help_format import ARGUMENTS, name_values
+from pendcli.cli.values import read_values
 from pendcli.core.errors import PendcliError
 from pendcli.render import OutputFormat
 
@@ -92,9 +94,10 @@ def _load_command(name: str) -> Command:
 
 
 def summary(command: Command) -> str:
-    """The first line of a command's help, whole: click's short help stops at "eq." or "s.t."."""
-    text = command.short_help or command.help or ""
-    return text.strip().splitlines()[0].strip() if text.strip() else ""
+    """The first paragraph of a command's help, whole: click's short help stops at "eq." or
+    "s.t.", and a docstring's first line is only part of its first sentence."""
+    text = (command.short_help or command.help or "").strip()
+    return " ".join(text.split("\n\n", 1)[0].split())
 
 
 # Examples shown at the end of each command's --help (the command path after `pendcli`).
@@ -313,10 +316,13 @@ def _adapt(command: Command, ctx: Context, path: str = "") -> None:
     if getattr(command, "pendcli_adapted", False):
         return
     command.pendcli_adapted = True
+    command.context_class = type(ctx)  # help at the terminal's width, values kept whole
     path = f"{path} {command.name}".strip()
     command.short_help = summary(command) or None
     command.epilog = command.epilog or _epilog(path)
     _plain_coercion(command.get_params(ctx))  # with its --help (the names are ctx's)
+    name_values(command.params)
+    read_values(command.params)
     subcommands: dict[str, Command] = getattr(command, "commands", {})
     for sub in subcommands.values():
         _adapt(sub, ctx, path)
@@ -334,8 +340,17 @@ def _adapt(command: Command, ctx: Context, path: str = "") -> None:
 class LazyGroup(TyperGroup):
     """The top-level group: eager commands first, then the lazily imported ones."""
 
+    def make_context(self, *args: Any, **kwargs: Any) -> Context:
+        from pendcli.cli.help_format import whole_words_context
+
+        base: Any = TyperGroup.context_class  # click's Context
+        self.context_class = whole_words_context(base)
+        return super().make_context(*args, **kwargs)
+
     def parse_args(self, ctx: Context, args: list[str]) -> list[str]:
         _plain_coercion(self.get_params(ctx))  # --help, --install-completion...
+        name_values(self.params)
+        read_values(self.params)
         self.epilog = self.epilog or _epilog("")
         return super().parse_args(ctx, args)
 
@@ -644,9 +659,9 @@ def refuse_blank(args: list[str]) -> None:
         name, equals, value = arg.partition("=") if arg.startswith("--") else ("", "", arg)
         if (equals and not value.strip()) or (not equals and not arg.strip()):
             before = args[index - 1] if index and args[index - 1].startswith("-") else ""
-            after = f" (after {args[index - 1]!r})" if index else ""
+            after = f", after {args[index - 1]!r}," if index else ""
             where = name or before or f"argument {index + 1}{after}"
-            raise PendcliError(f"{where}: an empty or blank value; give one (see --help)")
+            raise PendcliError(f"{where} must not be empty or blank, got {value or arg!r}")
 
 
 def _invoke(args: list[str]) -> int:
@@ -741,12 +756,12 @@ def _typed_option(param: Parameter, args: list[str]) -> str:
 
 
 _EXPECTED = {
-    "float_parsing": ("is not a number", "a real number"),
-    "float_type": ("is not a number", "a real number"),
-    "finite_number": ("is not a finite number", "a finite real number"),
-    "int_parsing": ("is not an integer", "an integer"),
-    "int_type": ("is not an integer", "an integer"),
-    "int_from_float": ("is not an integer", "an integer"),
+    "float_parsing": "a number",
+    "float_type": "a number",
+    "finite_number": "finite",
+    "int_parsing": "an integer",
+    "int_type": "an integer",
+    "int_from_float": "an integer",
 }
 
 
@@ -762,12 +777,16 @@ def usage_message(exc: Exception, args: list[str]) -> str:
     first = errors()[0] if callable(errors) and errors() else {}
     value = first.get("input")
     kind = _EXPECTED.get(str(first.get("type")))
-    help_text = (getattr(param, "help", None) or "").strip()
     if kind is not None:
-        said, expected = kind
-        detail = f" ({help_text.rstrip('.')})" if help_text else ""
-        return f"{name}: {value!r} {said}; expected {expected}{detail}"
+        return f"{name} must be {kind}, got {value!r}"
     message = str(getattr(exc, "message", exc)).removeprefix("Value error, ").rstrip(".")
+    descriptor = getattr(param, "type_descriptor", None)
+    choice = re.match(r"(?P<value>'.*') is not one of ", message)
+    if choice and descriptor is not None and descriptor.is_choice:
+        from pendcli.core.errors import either
+
+        names = either(str(getattr(c, "value", c)) for c in descriptor.choices or ())
+        return f"{name} must be one of {names}, got {choice['value']}"
     return f"{name}: {message}"
 
 
@@ -789,6 +808,8 @@ def _named_as_typed(exc: PendcliError, args: list[str]) -> str:
         key = typed[2:].replace("-", "_")
         if typed.startswith("--") and key and (key == name or name.startswith(f"{key}_")):
             return typed + message[len(name) :]
+    if name in ARGUMENTS:  # a positional argument: named as its help names it (N, CLAIM)
+        return ARGUMENTS[name] + message[len(name) :]
     return message
 
 

@@ -18,6 +18,8 @@ if TYPE_CHECKING:
 app = typer.Typer(
     help="Speed against accuracy: error achieved and time per evaluation, per method.",
     invoke_without_command=True,
+    add_completion=False,
+    rich_markup_mode=None,
     # a group stops reading options at its first positional argument unless told otherwise
     context_settings={"allow_interspersed_args": True},
 )
@@ -39,9 +41,7 @@ def tradeoff(
     ] = False,
     write_tables: Annotated[
         Path | None,
-        typer.Option(
-            "--write-tables", help="Also write each family's table as <DIR>/<family>.csv."
-        ),
+        typer.Option("--write-tables", help="Also write each family's table as DIR/FAMILY.csv."),
     ] = None,
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
