@@ -528,8 +528,10 @@ def reproduce(
     if pdf and out is None:
         raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
     if out is not None:  # refuse a bad folder before the run, not after
+        from pendcli.cli.targets import check_replaced_folder
         from pendcli.report import check_out_folder
 
+        check_replaced_folder(out, "--out")
         check_out_folder(out)
     with result_cache(cache, quiet) as stored:
         if out is not None:  # a cache inside the report's folder would be replaced with it

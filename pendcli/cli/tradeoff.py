@@ -46,9 +46,11 @@ def tradeoff(
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
     from pendcli import tradeoff as wp
+    from pendcli.cli.targets import check_folder_target
     from pendcli.core.plotting import validate_plot_path
 
     plot = validate_plot_path(plot)
+    check_folder_target(write_tables, "--write-tables")
     names = wp.family_names() if family is None else [wp.family(family).name]
     points = _measure(names, quick)
     rows = [p.as_dict() for p in points]
