@@ -198,3 +198,29 @@ def test_the_key_ignores_test_tools_and_other_systems_needs(tmp_path: Path) -> N
     assert key() == before
     (site / "numpy-2.0.dist-info").rename(site / "numpy-2.1.dist-info")
     assert key() != before
+
+
+# ------------------------------------------------------------ progress
+
+
+def test_rows_done_are_counted_across_forked_workers() -> None:
+    """A progress bar reads rows judged in this process and in its forked workers (a cold
+    `equations` bar sat at "tisserand: equations 0/2" for 45 s)."""
+    from pendcli.core.workers import ForkedWorkers, counting_rows, row_done
+
+    def judge(count: int) -> int:
+        for _ in range(count):
+            row_done()
+        return count
+
+    with counting_rows() as done, ForkedWorkers(1) as pool:
+        results = pool.share([5, 7, 11, 13], judge)
+        assert done() == sum(results) == 36
+    row_done()  # outside a counting run: nothing to count, no error
+
+
+def test_status_lines_stay_off_a_pipe(capsys: pytest.CaptureFixture[str]) -> None:
+    from pendcli.core.console import status_line
+
+    status_line("loading the libraries")
+    assert capsys.readouterr().err == ""

@@ -30,6 +30,7 @@ def explain(
     from pendcli.papers.registry import resolve_papers
 
     keys = _papers_for(claim, paper) if claim else resolve_papers(paper)
+    _show_start(keys)
     rows = [r for key in keys for r in _explained(key, claim)]
     _clear_progress()
     if claim and not rows:
@@ -86,6 +87,15 @@ def _progress(key: str) -> Callable[[str], None] | None:
         sys.stderr.flush()
 
     return show
+
+
+def _show_start(keys: tuple[str, ...]) -> None:
+    """A first status line at once (the recomputation before the first search takes seconds)."""
+    from pendcli.core.console import is_quiet
+
+    if not is_quiet() and sys.stderr.isatty():
+        sys.stderr.write(f"\r\033[Kexplain {keys[0]}: recomputing the claims")
+        sys.stderr.flush()
 
 
 def _clear_progress() -> None:

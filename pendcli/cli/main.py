@@ -619,8 +619,11 @@ def check(
     text (published, verdict, cause, a ledger row's status) must be identical. The drift table and
     --format json show each tolerance.
     """
+    from pendcli.core.console import status_line
     from pendcli.regression import run_check
 
+    if not quiet and fmt is CheckFormat.table:  # seconds before the progress bar can start
+        status_line("check: reading the committed tables and the equation ledgers")
     if update and fmt is not CheckFormat.table:
         from pendcli.core.errors import PendcliError
 
