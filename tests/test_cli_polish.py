@@ -203,18 +203,22 @@ def test_the_key_ignores_test_tools_and_other_systems_needs(tmp_path: Path) -> N
 # ------------------------------------------------------------ progress
 
 
+def _judge(count: int) -> int:
+    """``count`` rows judged (a worker receives this function by pickle: module level)."""
+    from pendcli.core.workers import row_done
+
+    for _ in range(count):
+        row_done()
+    return count
+
+
 def test_rows_done_are_counted_across_forked_workers() -> None:
     """A progress bar reads rows judged in this process and in its forked workers (a cold
     `equations` bar sat at "tisserand: equations 0/2" for 45 s)."""
     from pendcli.core.workers import ForkedWorkers, counting_rows, row_done
 
-    def judge(count: int) -> int:
-        for _ in range(count):
-            row_done()
-        return count
-
     with counting_rows() as done, ForkedWorkers(1) as pool:
-        results = pool.share([5, 7, 11, 13], judge)
+        results = pool.share([5, 7, 11, 13], _judge)
         assert done() == sum(results) == 36
     row_done()  # outside a counting run: nothing to count, no error
 
@@ -224,3 +228,15 @@ def test_status_lines_stay_off_a_pipe(capsys: pytest.CaptureFixture[str]) -> Non
 
     status_line("loading the libraries")
     assert capsys.readouterr().err == ""
+
+
+def test_help_of_the_package_lists_reproduce_with_the_functions() -> None:
+    """`pendcli.reproduce` is a callable module, which `help(pendcli)` listed only as a module."""
+    import pydoc
+
+    import pendcli
+
+    text = pydoc.render_doc(pendcli, renderer=pydoc.plaintext)
+    for name in pendcli.__all__:
+        if callable(getattr(pendcli, name)) and not isinstance(getattr(pendcli, name), type):
+            assert f"    {name}(" in text or f", {name}(" in text, name

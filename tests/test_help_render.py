@@ -97,3 +97,10 @@ def test_the_integral_names_its_argument_one_way() -> None:
     assert "[OPTIONS] N\n" in out and "{n}" not in out and "Order n" not in out
     code, _, err = invoke("charbonnier", "integral", "--", "-5")
     assert code == 2 and err.startswith("pendcli: error: N must be in [-1, "), err
+
+
+@pytest.mark.parametrize("group", ["tisserand", "lecornu", "charbonnier", "cache", "tradeoff"])
+def test_each_group_help_ends_with_examples(group: str) -> None:
+    out = _help((group,), 100)
+    examples = out.split("Examples:\n", 1)[1].splitlines() if "Examples:" in out else []
+    assert any(line.strip().startswith(f"pendcli {group}") for line in examples), out

@@ -17,7 +17,9 @@ from typing import Any
 
 __all__ = [
     "ARGUMENTS",
+    "EXAMPLES",
     "METAVARS",
+    "epilog",
     "keep_whole",
     "metavar",
     "name_values",
@@ -139,3 +141,96 @@ def name_values(params: list[Any]) -> None:
             param.display_type_rich = lambda ctx, **kwargs: None
             shown = name if param.required else f"[{name}]"
             param.get_usage_pieces = lambda ctx, shown=shown: [shown]
+
+
+# Examples shown at the end of each command's --help (the command path after `pendcli`).
+EXAMPLES: dict[str, tuple[str, ...]] = {
+    "": (
+        "pendcli reproduce                     all papers: printed against recomputed",
+        "pendcli reproduce -p lecornu --notes  one paper, every column",
+        "pendcli check -f junit > check.xml    CI: a testcase per claim and table",
+    ),
+    "list": ("pendcli list -p tisserand", "pendcli list -f csv > claims.csv"),
+    "reproduce": (
+        "pendcli reproduce --only-failing",
+        "pendcli reproduce -p charbonnier -f json",
+        "pendcli reproduce --out out          report.md, report.html, tables, figures",
+        "pendcli reproduce --out out --pdf    the pages printed to PDF too (Chromium)",
+        "pendcli reproduce --fail-on discrepant,fails   CI: exit 1 on a bad verdict",
+    ),
+    "check": (
+        "pendcli check",
+        "pendcli check -f junit > check.xml",
+        "pendcli check --update               then review and commit the tables",
+    ),
+    "tisserand claims": ("pendcli tisserand claims", "pendcli tisserand claims -f json"),
+    "tisserand example": (
+        "pendcli tisserand example",
+        "pendcli tisserand example --theta0 45° --theta1 20° --plot ex.png",
+    ),
+    "tisserand series": ("pendcli tisserand series --order 4", "pendcli tisserand series -f csv"),
+    "lecornu claims": ("pendcli lecornu claims", "pendcli lecornu claims --g 9.81"),
+    "lecornu zeros": (
+        "pendcli lecornu zeros --order 1 --count 10",
+        "pendcli lecornu zeros --count 1000000 --tol 1e-12 -f csv > zeros.csv",
+    ),
+    "lecornu example": (
+        "pendcli lecornu example",
+        "pendcli lecornu example --speed 0.5 --length 2 --plot theta.png",
+    ),
+    "lecornu ode-check": (
+        "pendcli lecornu ode-check",
+        "pendcli lecornu ode-check --amplitude 1 --amplitude 10",
+    ),
+    "lecornu g-sensitivity": ("pendcli lecornu g-sensitivity",),
+    "lecornu series": ("pendcli lecornu series -f json",),
+    "lecornu zero-length": ("pendcli lecornu zero-length --speed 0.35 --length 1",),
+    "charbonnier table": (
+        "pendcli charbonnier table",
+        "pendcli charbonnier table --n-max 40 --plot table.png",
+    ),
+    "charbonnier integral": (
+        "pendcli charbonnier integral 4              I_4(π) = 16/15",
+        "pendcli charbonnier integral 1000 -x 1.5",
+        "pendcli charbonnier integral 5 --tol 1e-10  the cheapest method for it",
+    ),
+    "formulas": (
+        "pendcli formulas -p lecornu",
+        "pendcli formulas --plot figures/   one residual plot per formula",
+    ),
+    "equations": (
+        "pendcli equations -p tisserand",
+        "pendcli equations --status misprint --notes",
+    ),
+    "tisserand": (
+        "pendcli tisserand claims                 the printed numbers, judged",
+        "pendcli tisserand example --theta0 45°   θ1 keeps the example's ratio",
+        "pendcli tisserand series --order 4",
+    ),
+    "lecornu": (
+        "pendcli lecornu claims --g 9.81",
+        "pendcli lecornu zeros --order 1 --count 10",
+        "pendcli lecornu example --speed 0,5 --plot theta.png",
+        "pendcli lecornu g-sensitivity            which g fits his figures",
+    ),
+    "charbonnier": (
+        "pendcli charbonnier table",
+        "pendcli charbonnier integral 4              I_4(π) = 16/15",
+        "pendcli charbonnier integral 5 --tol 1e-10",
+    ),
+    "cache": ("pendcli cache info", "pendcli cache clear"),
+    "cache info": ("pendcli cache info",),
+    "cache clear": ("pendcli cache clear", "pendcli reproduce --no-cache   all computed afresh"),
+    "tradeoff": ("pendcli tradeoff --quick", "pendcli tradeoff integral_pi --plot wp.png"),
+    "explain": (
+        "pendcli explain -p lecornu     each wrong digit: its mechanism and odds",
+        "pendcli explain lecornu.mean_pendulum_coefficient   every step of one",
+        "pendcli explain -f json > explanations.json",
+    ),
+}
+
+
+def epilog(path: str) -> str | None:
+    """The Examples block of a command's help; "\b" keeps click from rewrapping it."""
+    lines = EXAMPLES.get(path)
+    return "\b\nExamples:\n" + "\n".join(f"  {line}" for line in lines) if lines else None
