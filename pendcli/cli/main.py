@@ -307,7 +307,9 @@ app = typer.Typer(
     name="pendcli",
     help=(
         "Regenerate, number by number, the claims of three historical papers on the pendulum "
-        "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values."
+        "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values. "
+        "A number may be typed with a decimal point or a decimal comma (9.81 or 9,81), a word "
+        "of a list in any case (-p LECORNU)."
     ),
     no_args_is_help=True,
     # -h as well as --help, in every command (click passes it down to each subcommand).
@@ -378,7 +380,12 @@ def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.tabl
 
 OutOption = Annotated[
     Path | None,
-    typer.Option("--out", "-o", help="Also write the report, tables and figures to this folder."),
+    typer.Option(
+        "--out",
+        "-o",
+        help="Also write the report, tables and figures to this folder (replaced whole; a new "
+        "one is created inside an existing folder, never a chain of missing ones).",
+    ),
 ]
 FormulasOption = Annotated[
     bool, typer.Option("--formulas/--no-formulas", help="Include the checks of derived formulas.")

@@ -41,7 +41,11 @@ def tradeoff(
     ] = False,
     write_tables: Annotated[
         Path | None,
-        typer.Option("--write-tables", help="Also write each family's table as DIR/FAMILY.csv."),
+        typer.Option(
+            "--write-tables",
+            help="Also write each family's table as DIR/FAMILY.csv (DIR: an existing folder, "
+            "or a new one inside an existing folder).",
+        ),
     ] = None,
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
