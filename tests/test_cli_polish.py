@@ -240,3 +240,41 @@ def test_help_of_the_package_lists_reproduce_with_the_functions() -> None:
     for name in pendcli.__all__:
         if callable(getattr(pendcli, name)) and not isinstance(getattr(pendcli, name), type):
             assert f"    {name}(" in text or f", {name}(" in text, name
+
+
+def _on_a_terminal(*args: str) -> str:
+    """What `pendcli ARGS` writes to a pseudo-terminal (stdout and stderr both)."""
+    import pty
+    import subprocess
+    import sys
+
+    leader, follower = pty.openpty()
+    env = {**os.environ, "COLUMNS": "120", "PENDCLI_CACHE": "off"}
+    with subprocess.Popen(
+        [sys.executable, "-m", "pendcli", *args],
+        stdin=subprocess.DEVNULL,
+        stdout=follower,
+        stderr=follower,
+        env=env,
+    ) as child:
+        os.close(follower)
+        chunks = []
+        while True:
+            try:
+                data = os.read(leader, 65536)
+            except OSError:  # the child closed its end
+                break
+            if not data:
+                break
+            chunks.append(data)
+        child.wait()
+    os.close(leader)
+    return b"".join(chunks).decode("utf-8", "replace")
+
+
+def test_a_slow_step_shows_a_sign_of_life_on_a_terminal_only() -> None:
+    """`lecornu example --speed 0.001` ran 10 s with nothing on stderr."""
+    shown = _on_a_terminal("lecornu", "example")
+    assert "solving the example" in shown, shown[:500]
+    piped = invoke("lecornu", "example", "-f", "csv")
+    assert piped.code == 0 and piped.err == ""
