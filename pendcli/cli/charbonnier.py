@@ -120,9 +120,9 @@ def integral(
     if "warning" in row:  # on stderr, so stdout stays the value (JSON keeps it in the row)
         sys.stderr.write(f"pendcli: warning: {row['warning']}\n")
     columns = [
-        Column("n", "n", justify="right"),
-        Column("x", "x", fmt=lambda r: fmt_float(r["x"], 17), justify="right"),
-        Column("value", "I_n(x)", fmt=lambda r: fmt_float(r["value"], 17), justify="right"),
+        Column("n", "N", justify="right"),
+        Column("x", "X", fmt=lambda r: fmt_float(r["x"], 17), justify="right"),
+        Column("value", "I_N(X)", fmt=lambda r: fmt_float(r["value"], 17), justify="right"),
     ]
     if "exact" in row:
         columns.append(Column("exact", "exact"))
