@@ -11,6 +11,20 @@ The Python API (every name in ``__all__``, each documented)::
     array([3.83170597, 7.01558667])
     >>> rows = pendcli.reproduce(paper="charbonnier").claims["charbonnier"]
 
+The functions (``help(pendcli.api)`` documents each; ``help()`` lists ``reproduce`` among
+the package's modules, since the module :mod:`pendcli.reproduce` is what answers the call):
+
+    reproduce(paper=None, formulas=True, equations=False) -> ReproduceResult
+        every printed number of a paper (default: all three) recomputed and judged
+    check(tables=None) -> list[Drift]
+        every table regenerated and compared with the committed ones (empty: all hold)
+    integral_pi(n) -> float, integral_pi_exact(n) -> ExactIntegral
+        Charbonnier's I_n(π), correctly rounded, and exactly (a rational times π^0 or π^1)
+    bessel_zeros(order, count, method="auto") -> numpy array
+        the first zeros of J_1 or J_2 (Lecornu's)
+    period(amplitude, length=1.0, g=None) -> float, period_ratio(amplitude, method="agm")
+        the exact period of the planar pendulum, in seconds, and its ratio T/T0
+
 Names load on first use (PEP 562): ``import pendcli`` imports none of scipy, mpmath, sympy
 or matplotlib, and ``pendcli --help`` stays instant.
 

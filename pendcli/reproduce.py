@@ -11,8 +11,8 @@ import contextlib
 import functools
 import sys
 import types
-from collections.abc import Callable, Iterable, Iterator
-from contextlib import contextmanager, nullcontext
+from collections.abc import Iterable
+from contextlib import nullcontext
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -253,15 +253,21 @@ def _computed(
 ) -> dict[Wanted, Any]:
     """The steps run, shared by this process and the forked workers (reproduce_all), and
     gathered into one value per cached unit: a ledger's parts back in its order."""
-    from pendcli.core.workers import ForkedWorkers, job_count
+    from pendcli.core.console import progress_bar, status_line
+    from pendcli.core.workers import ForkedWorkers, counting_rows, job_count
 
     workers = job_count(jobs, len(steps)) - 1
     if workers:
+        status_line("" if quiet else f"{title}: loading the libraries")
         _preload(steps, keys)
     order = _costliest_first(steps)
+    rows = None if quiet or not sys.stderr.isatty() else _ledger_rows_in(steps)
+    status_line("")
     with contextlib.ExitStack() as lent:
         _lend_formula_rows(lent, stored, steps)
-        with ForkedWorkers(workers) as pool, _progress(quiet, len(steps), title) as advance:
+        done = lent.enter_context(counting_rows())  # before the fork: workers count too
+        bar = progress_bar(quiet, len(steps), title, (rows, done) if rows else None)
+        with ForkedWorkers(workers) as pool, bar as advance:
             run = functools.partial(_run_step, papers=keys)
             values = pool.share(order, run, lambda step, _: advance(_named(step), 1), _named)
     by_step = dict(zip(order, values, strict=True))
@@ -445,23 +451,17 @@ def _steps(
     return steps
 
 
-@contextmanager
-def _progress(
-    quiet: bool, total: int, title: str = "reproducing"
-) -> Iterator[Callable[[str, int], None]]:
-    """A progress bar on stderr, only on a terminal and when not quiet (rich loads only then)."""
-    if quiet or not sys.stderr.isatty():
-        yield lambda _description, _steps: None
-        return
-    from rich.progress import Progress
+def _ledger_rows_in(steps: list[Step]) -> int:
+    """How many ledger rows the steps judge (their parts of each ledger)."""
+    from pendcli.core.ledger import load_ledger
 
-    from pendcli.core.console import console
-
-    with Progress(console=console(stderr=True), transient=True) as progress:
-        task = progress.add_task(title, total=total)
-        yield lambda description, steps: progress.update(
-            task, description=description, advance=steps
-        )
+    total = 0
+    for key, what in steps:
+        if what.startswith(("equations", "formulas+equations")):
+            index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
+            size = len(load_ledger(key).rows)
+            total += size * (index + 1) // count - size * index // count
+    return total
 
 
 Step = tuple[str, str]

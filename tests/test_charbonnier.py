@@ -133,8 +133,8 @@ def test_integral_pi_array_equals_the_scalar_path():
 
 @pytest.mark.parametrize(
     ("ns", "match"),
-    [([1.5, 2.0], "integers"), ([True], "integers"), ([-2, 3], "n: -2"),
-     ([3, 10**16], "n: 10000000000000000")],
+    [([1.5, 2.0], "integers"), ([True], "integers"), ([-2, 3], "n must be .*, got -2"),
+     ([3, 10**16], "n must be .*, got 10000000000000000")],
 )  # fmt: skip
 def test_integral_pi_array_refuses_bad_input(ns, match):
     with pytest.raises(PendcliError, match=match) as err:
@@ -349,9 +349,7 @@ def test_table_column_says_no_when_the_closed_form_differs(monkeypatch, wrong):
 
 @pytest.mark.parametrize("n_max", [-2, 10_001, True, 2.0])
 def test_table_rows_refuses_bad_n_max(n_max):
-    with pytest.raises(
-        PendcliError, match=r"n_max: .* is out of range; expected -1 <= n_max <= "
-    ) as err:
+    with pytest.raises(PendcliError, match=r"n_max must be in \[-1, \d+\], got ") as err:
         explore.table_rows(n_max)
     assert "\n" not in str(err.value)
 
@@ -491,10 +489,10 @@ def _run_cli(*args: str) -> tuple[int, str, str, float]:
 
 @pytest.mark.parametrize(
     ("args", "valid"),
-    [(("300", "--method", "products"), "-1 <= n <= 299"),
-     (("1000000000000", "--method", "products"), "-1 <= n <= 299"),
-     (("100000", "--method", "quad"), "-1 <= n <= 3e+04"),
-     (("1000000000000000000", "--method", "pendcli"), "-1 <= n <= 1e+15")],
+    [(("300", "--method", "products"), "[-1, 299]"),
+     (("1000000000000", "--method", "products"), "[-1, 299]"),
+     (("100000", "--method", "quad"), "[-1, 3e+04]"),
+     (("1000000000000000000", "--method", "pendcli"), "[-1, 1e+15]")],
 )  # fmt: skip
 def test_methods_refuse_inputs_outside_their_measured_domain(args, valid):
     code, out, err, seconds = _run_cli("charbonnier", "integral", *args)

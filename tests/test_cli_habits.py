@@ -13,7 +13,8 @@ import pytest
 import typer
 from cli_helpers import assert_clean_error, invoke
 
-from pendcli.cli.main import EXAMPLES, app
+from pendcli.cli.help_format import EXAMPLES
+from pendcli.cli.main import app
 
 
 def _leaf_commands():
@@ -87,7 +88,7 @@ def test_paper_values_complete():
 def test_bad_paper_has_the_common_wording():
     code, _, err = invoke("list", "--paper", "newton")
     assert_clean_error(code, err)
-    assert "--paper: 'newton' is not valid; expected one of tisserand, lecornu, charbonnier" in err
+    assert "--paper must be one of tisserand, lecornu or charbonnier, got 'newton'" in err
 
 
 def _colour(env):
@@ -131,8 +132,8 @@ def test_an_unwritable_target_is_refused_before_any_work(args, monkeypatch):
 @pytest.mark.parametrize(
     ("args", "named"),
     [
-        (["explain", ""], "argument 2 (after 'explain')"),
-        (["explain", "   "], "argument 2 (after 'explain')"),
+        (["explain", ""], "argument 2, after 'explain',"),
+        (["explain", "   "], "argument 2, after 'explain',"),
         (["formulas", "--plot", ""], "--plot"),
         (["formulas", "--plot="], "--plot"),
         (["reproduce", "-p", " "], "-p"),
@@ -148,5 +149,5 @@ def test_an_empty_or_blank_value_is_one_line_before_any_work(
     monkeypatch.chdir(tmp_path)
     code, out, err = invoke(*args)
     assert_clean_error(code, err)
-    assert f"error: {named}: an empty or blank value" in err, err
+    assert f"error: {named} must not be empty or blank, got " in err, err
     assert out == "" and not list(tmp_path.iterdir())

@@ -370,7 +370,12 @@ def test_angle_text(degrees, text):
 
 @pytest.mark.parametrize(
     ("value", "message"),
-    [(0.0, "out of range"), (-0.5, "out of range"), (float("nan"), "not a number"), (True, "not")],
+    [
+        (0.0, r"must be in \(0, 1e6\] m"),
+        (-0.5, r"must be in \(0, 1e6\] m"),
+        (float("nan"), "not a number"),
+        (True, "not"),
+    ],
 )
 def test_parse_length_errors(value, message):
     with pytest.raises(PendcliError, match=message):
@@ -380,8 +385,8 @@ def test_parse_length_errors(value, message):
 @pytest.mark.parametrize(
     ("theta0", "theta1", "message"),
     [
-        ("90deg", "10deg", "theta0 < 90"),
-        ("0deg", "0deg", "0 < theta0"),
+        ("90deg", "10deg", r"theta0 must be in \(0, 90°\)"),
+        ("0deg", "0deg", r"theta0 must be in \(0, 90°\)"),
         ("10deg", "11deg", "theta1"),
     ],
 )

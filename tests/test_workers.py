@@ -291,8 +291,8 @@ def test_a_bad_process_count_is_one_line_naming_the_variable_and_the_range(
     )
     assert done.returncode == 2 and done.stdout == ""
     assert done.stderr.strip().splitlines() == [
-        f"pendcli: error: PENDCLI_JOBS: {value!r} is not valid; expected a whole number of "
-        "processes, 1 or more"
+        "pendcli: error: PENDCLI_JOBS must be a whole number of processes, 1 or more, "
+        f"got {value!r}"
     ]
 
 

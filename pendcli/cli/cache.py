@@ -5,7 +5,10 @@ from __future__ import annotations
 import typer
 
 app = typer.Typer(
-    help="The result cache: where it is, how big, and emptying it.", no_args_is_help=True
+    help="The result cache: where it is, how big, and emptying it.",
+    no_args_is_help=True,
+    add_completion=False,
+    rich_markup_mode=None,
 )
 
 

@@ -86,9 +86,15 @@ def _table_columns() -> tuple[Column, ...]:
 
 @app.command("integral", context_settings={"ignore_unknown_options": True})
 def integral(
-    n: Annotated[int, typer.Argument(help="Order n: integer, -1 <= n <= 10^15.")],
+    n: Annotated[int, typer.Argument(help="The order N: an integer, -1 <= N <= 10^15.")],
     x: Annotated[
-        float, typer.Option("--x", "-x", help="Upper limit x (real, |x| <= 1e6).")
+        float,
+        typer.Option(
+            "--x",
+            "-x",
+            help="The upper limit X: a real number, |X| <= 1e6; by default π.",
+            show_default=False,
+        ),
     ] = math.pi,
     tol: Annotated[
         float | None,
@@ -106,7 +112,7 @@ def integral(
     ] = None,
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
-    """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (default π)."""
+    """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (by default π)."""
     from pendcli.papers.charbonnier.explore import integral_row
     from pendcli.render import Column, fmt_float
 
@@ -114,9 +120,9 @@ def integral(
     if "warning" in row:  # on stderr, so stdout stays the value (JSON keeps it in the row)
         sys.stderr.write(f"pendcli: warning: {row['warning']}\n")
     columns = [
-        Column("n", "n", justify="right"),
-        Column("x", "x", fmt=lambda r: fmt_float(r["x"], 17), justify="right"),
-        Column("value", "I_n(x)", fmt=lambda r: fmt_float(r["value"], 17), justify="right"),
+        Column("n", "N", justify="right"),
+        Column("x", "X", fmt=lambda r: fmt_float(r["x"], 17), justify="right"),
+        Column("value", "I_N(X)", fmt=lambda r: fmt_float(r["value"], 17), justify="right"),
     ]
     if "exact" in row:
         columns.append(Column("exact", "exact"))

@@ -39,7 +39,9 @@ def _paper_value(value: str | None) -> str | None:
     from pendcli.papers.registry import PAPERS
 
     if value is not None and value.strip().casefold() not in PAPERS:
-        raise bad_value("--paper", value, f"one of {', '.join(PAPERS)}")
+        from pendcli.core.errors import either
+
+        raise bad_value("--paper", value, f"one of {either(PAPERS)}")
     return value
 
 

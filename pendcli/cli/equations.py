@@ -55,7 +55,9 @@ def equations(
     from pendcli.summary import compact_equation_columns
 
     if status is not None and status not in STATUSES:
-        raise bad_value("--status", status, f"one of {', '.join(STATUSES)}")
+        from pendcli.core.errors import either
+
+        raise bad_value("--status", status, f"one of {either(STATUSES)}")
     with result_cache(cache) as stored:
         # a progress bar of the ledgers' parts on a terminal (the workers fork before it)
         rows = ledger_rows(resolve_papers(paper), stored, quiet=is_quiet())

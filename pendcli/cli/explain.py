@@ -29,7 +29,9 @@ def explain(
     """The author's hand computation behind each wrong digit, with the odds of a coincidence."""
     from pendcli.papers.registry import resolve_papers
 
+    claim = _as_listed(claim)
     keys = _papers_for(claim, paper) if claim else resolve_papers(paper)
+    _show_start(keys)
     rows = [r for key in keys for r in _explained(key, claim)]
     _clear_progress()
     if claim and not rows:
@@ -38,13 +40,29 @@ def explain(
     emit(fmt, sections, {"explanations": [r.as_dict() for r in rows]})
 
 
+def _as_listed(claim: str | None) -> str | None:
+    """The claim id as `pendcli list` spells it, whatever the case typed (ids hold capitals:
+    ``charbonnier.I_pi.n3``); an unknown id as typed (refused with the list's pointer)."""
+    if claim is None:
+        return None
+    from pendcli.core.tables import load_paper_table
+    from pendcli.papers.registry import PAPERS
+
+    key = claim.split(".", 1)[0].strip().casefold()
+    if key not in PAPERS:
+        return claim
+    wanted = claim.strip().casefold()
+    found = [c.id for c in load_paper_table(key).claims if c.id.casefold() == wanted]
+    return found[0] if len(found) == 1 else claim
+
+
 def _papers_for(claim: str, paper: str | None) -> tuple[str, ...]:
     """The paper holding ``claim`` (its id's first part), checked against --paper."""
     from pendcli.core.errors import PendcliError
     from pendcli.core.tables import load_paper_table
     from pendcli.papers.registry import PAPERS, resolve_papers
 
-    key = claim.split(".", 1)[0]
+    key = claim.split(".", 1)[0].strip().casefold()
     known = key in PAPERS and any(c.id == claim for c in load_paper_table(key).claims)
     if not known:
         raise PendcliError(
@@ -86,6 +104,15 @@ def _progress(key: str) -> Callable[[str], None] | None:
         sys.stderr.flush()
 
     return show
+
+
+def _show_start(keys: tuple[str, ...]) -> None:
+    """A first status line at once (the recomputation before the first search takes seconds)."""
+    from pendcli.core.console import is_quiet
+
+    if not is_quiet() and sys.stderr.isatty():
+        sys.stderr.write(f"\r\033[Kexplain {keys[0]}: recomputing the claims")
+        sys.stderr.flush()
 
 
 def _clear_progress() -> None:

@@ -205,10 +205,12 @@ def example(
 ) -> None:
     """The shortening pendulum of the example: elongations, amplitudes, vertical passages."""
     from pendcli.core.plotting import validate_plot_path
-    from pendcli.papers.lecornu.explore import example_rows
 
     plot = validate_plot_path(plot)
-    elong, passages, summary = example_rows(speed, length, g)
+    with busy("solving the example: elongations and vertical passages"):
+        from pendcli.papers.lecornu.explore import example_rows
+
+        elong, passages, summary = example_rows(speed, length, g)
     cols_e, cols_p, cols_s = _example_columns()
     emit(
         fmt,
@@ -240,10 +242,11 @@ def ode_check(
     ] = 0.02,
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
-    """Bessel elongation times against solve_ivp on eq. (3), linear and with sin θ."""
-    from pendcli.papers.lecornu.explore import ode_check as check
+    """Bessel elongation times against eq. (3) integrated directly, linear and with sin θ."""
+    with busy("integrating eq. (3) from rest, linear and with sin θ"):
+        from pendcli.papers.lecornu.explore import ode_check as check
 
-    rows = check(speed, length, g, tuple(amplitude) if amplitude else None, floor)
+        rows = check(speed, length, g, tuple(amplitude) if amplitude else None, floor)
     columns = [_col(k, _ode_header(k), 8) for k in rows[0]]
     emit(
         fmt,
@@ -325,8 +328,9 @@ def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
     from pendcli.render import Column
     from pendcli.render.views import printed_for_display
 
-    rows = sensitivity()
-    best = best_g()
+    with busy("the g-dependent claims at several g"):
+        rows = sensitivity()
+        best = best_g()
     columns = [
         Column("id", "claim", fmt=lambda r: str(r["id"]).removeprefix("lecornu.")),
         Column("published", "printed", fmt=lambda r: printed_for_display(r["published"])),
@@ -356,11 +360,12 @@ def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
 @app.command("series")
 def series(fmt: FormatOption = OutputFormat.table) -> None:
     """Lecornu's series (10)/(13) in double precision: where cancellation destroys them."""
-    from pendcli.numerics import besselzeros
-    from pendcli.papers.lecornu.explore import series_cancellation
-    from pendcli.render import Column
+    with busy("the series (10) and (13) against mpmath"):
+        from pendcli.numerics import besselzeros
+        from pendcli.papers.lecornu.explore import series_cancellation
+        from pendcli.render import Column
 
-    rows = series_cancellation()
+        rows = series_cancellation()
     columns = [Column("order", "order")] + [
         _col(k, k.replace("_", " "), 6) for k in rows[0] if k != "order"
     ]
@@ -400,6 +405,7 @@ def zero_length(
     """Amplitude growth as the length goes to zero (linear eq. (3) from rest, to a floor)."""
     from pendcli.papers.lecornu.explore import zero_length_behaviour
 
-    rows = zero_length_behaviour(speed, length, g)
+    with busy("integrating eq. (3) down to the length floor"):
+        rows = zero_length_behaviour(speed, length, g)
     columns = [_col(k, k.replace("_", " "), 6) for k in rows[0]]
     emit(fmt, [("|θ| / θ0 down to a length floor", rows, columns)], {"rows": rows})

@@ -27,6 +27,8 @@ from pendcli.cli.common import (
     complete_verdicts,
     emit,
 )
+from pendcli.cli.help_format import ARGUMENTS, epilog, name_values
+from pendcli.cli.values import read_values
 from pendcli.core.errors import PendcliError
 from pendcli.render import OutputFormat
 
@@ -92,85 +94,10 @@ def _load_command(name: str) -> Command:
 
 
 def summary(command: Command) -> str:
-    """The first line of a command's help, whole: click's short help stops at "eq." or "s.t."."""
-    text = command.short_help or command.help or ""
-    return text.strip().splitlines()[0].strip() if text.strip() else ""
-
-
-# Examples shown at the end of each command's --help (the command path after `pendcli`).
-EXAMPLES: dict[str, tuple[str, ...]] = {
-    "": (
-        "pendcli reproduce                     all papers: printed against recomputed",
-        "pendcli reproduce -p lecornu --notes  one paper, every column",
-        "pendcli check -f junit > check.xml    CI: a testcase per claim and table",
-    ),
-    "list": ("pendcli list -p tisserand", "pendcli list -f csv > claims.csv"),
-    "reproduce": (
-        "pendcli reproduce --only-failing",
-        "pendcli reproduce -p charbonnier -f json",
-        "pendcli reproduce --out out          report.md, report.html, tables, figures",
-        "pendcli reproduce --out out --pdf    the pages printed to PDF too (Chromium)",
-        "pendcli reproduce --fail-on discrepant,fails   CI: exit 1 on a bad verdict",
-    ),
-    "check": (
-        "pendcli check",
-        "pendcli check -f junit > check.xml",
-        "pendcli check --update               then review and commit the tables",
-    ),
-    "tisserand claims": ("pendcli tisserand claims", "pendcli tisserand claims -f json"),
-    "tisserand example": (
-        "pendcli tisserand example",
-        "pendcli tisserand example --theta0 45° --theta1 20° --plot ex.png",
-    ),
-    "tisserand series": ("pendcli tisserand series --order 4", "pendcli tisserand series -f csv"),
-    "lecornu claims": ("pendcli lecornu claims", "pendcli lecornu claims --g 9.81"),
-    "lecornu zeros": (
-        "pendcli lecornu zeros --order 1 --count 10",
-        "pendcli lecornu zeros --count 1000000 --tol 1e-12 -f csv > zeros.csv",
-    ),
-    "lecornu example": (
-        "pendcli lecornu example",
-        "pendcli lecornu example --speed 0.5 --length 2 --plot theta.png",
-    ),
-    "lecornu ode-check": (
-        "pendcli lecornu ode-check",
-        "pendcli lecornu ode-check --amplitude 1 --amplitude 10",
-    ),
-    "lecornu g-sensitivity": ("pendcli lecornu g-sensitivity",),
-    "lecornu series": ("pendcli lecornu series -f json",),
-    "lecornu zero-length": ("pendcli lecornu zero-length --speed 0.35 --length 1",),
-    "charbonnier table": (
-        "pendcli charbonnier table",
-        "pendcli charbonnier table --n-max 40 --plot table.png",
-    ),
-    "charbonnier integral": (
-        "pendcli charbonnier integral 4              I_4(π) = 16/15",
-        "pendcli charbonnier integral 1000 -x 1.5",
-        "pendcli charbonnier integral 5 --tol 1e-10  the cheapest method for it",
-    ),
-    "formulas": (
-        "pendcli formulas -p lecornu",
-        "pendcli formulas --plot figures/   one residual plot per formula",
-    ),
-    "equations": (
-        "pendcli equations -p tisserand",
-        "pendcli equations --status misprint --notes",
-    ),
-    "cache info": ("pendcli cache info",),
-    "cache clear": ("pendcli cache clear", "pendcli reproduce --no-cache   all computed afresh"),
-    "tradeoff": ("pendcli tradeoff --quick", "pendcli tradeoff integral_pi --plot wp.png"),
-    "explain": (
-        "pendcli explain -p lecornu     each wrong digit: its mechanism and odds",
-        "pendcli explain lecornu.mean_pendulum_coefficient   every step of one",
-        "pendcli explain -f json > explanations.json",
-    ),
-}
-
-
-def _epilog(path: str) -> str | None:
-    """The Examples block of a command's help; "\b" keeps click from rewrapping it."""
-    lines = EXAMPLES.get(path)
-    return "\b\nExamples:\n" + "\n".join(f"  {line}" for line in lines) if lines else None
+    """The first paragraph of a command's help, whole: click's short help stops at "eq." or
+    "s.t.", and a docstring's first line is only part of its first sentence."""
+    text = (command.short_help or command.help or "").strip()
+    return " ".join(text.split("\n\n", 1)[0].split())
 
 
 # Options that cannot be given together, refused in every command that has both.
@@ -313,10 +240,13 @@ def _adapt(command: Command, ctx: Context, path: str = "") -> None:
     if getattr(command, "pendcli_adapted", False):
         return
     command.pendcli_adapted = True
+    command.context_class = type(ctx)  # help at the terminal's width, values kept whole
     path = f"{path} {command.name}".strip()
     command.short_help = summary(command) or None
-    command.epilog = command.epilog or _epilog(path)
+    command.epilog = command.epilog or epilog(path)
     _plain_coercion(command.get_params(ctx))  # with its --help (the names are ctx's)
+    name_values(command.params)
+    read_values(command.params)
     subcommands: dict[str, Command] = getattr(command, "commands", {})
     for sub in subcommands.values():
         _adapt(sub, ctx, path)
@@ -334,9 +264,18 @@ def _adapt(command: Command, ctx: Context, path: str = "") -> None:
 class LazyGroup(TyperGroup):
     """The top-level group: eager commands first, then the lazily imported ones."""
 
+    def make_context(self, *args: Any, **kwargs: Any) -> Context:
+        from pendcli.cli.help_format import whole_words_context
+
+        base: Any = TyperGroup.context_class  # click's Context
+        self.context_class = whole_words_context(base)
+        return super().make_context(*args, **kwargs)
+
     def parse_args(self, ctx: Context, args: list[str]) -> list[str]:
         _plain_coercion(self.get_params(ctx))  # --help, --install-completion...
-        self.epilog = self.epilog or _epilog("")
+        name_values(self.params)
+        read_values(self.params)
+        self.epilog = self.epilog or epilog("")
         return super().parse_args(ctx, args)
 
     def list_commands(self, ctx: Context) -> list[str]:
@@ -368,7 +307,9 @@ app = typer.Typer(
     name="pendcli",
     help=(
         "Regenerate, number by number, the claims of three historical papers on the pendulum "
-        "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values."
+        "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values. "
+        "A number may be typed with a decimal point or a decimal comma (9.81 or 9,81), a word "
+        "of a list in any case (-p LECORNU)."
     ),
     no_args_is_help=True,
     # -h as well as --help, in every command (click passes it down to each subcommand).
@@ -439,7 +380,12 @@ def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.tabl
 
 OutOption = Annotated[
     Path | None,
-    typer.Option("--out", "-o", help="Also write the report, tables and figures to this folder."),
+    typer.Option(
+        "--out",
+        "-o",
+        help="Also write the report, tables and figures to this folder (replaced whole; a new "
+        "one is created inside an existing folder, never a chain of missing ones).",
+    ),
 ]
 FormulasOption = Annotated[
     bool, typer.Option("--formulas/--no-formulas", help="Include the checks of derived formulas.")
@@ -513,8 +459,10 @@ def reproduce(
     if pdf and out is None:
         raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
     if out is not None:  # refuse a bad folder before the run, not after
+        from pendcli.cli.targets import check_replaced_folder
         from pendcli.report import check_out_folder
 
+        check_replaced_folder(out, "--out")
         check_out_folder(out)
     with result_cache(cache, quiet) as stored:
         if out is not None:  # a cache inside the report's folder would be replaced with it
@@ -602,8 +550,11 @@ def check(
     text (published, verdict, cause, a ledger row's status) must be identical. The drift table and
     --format json show each tolerance.
     """
+    from pendcli.core.console import status_line
     from pendcli.regression import run_check
 
+    if not quiet and fmt is CheckFormat.table:  # seconds before the progress bar can start
+        status_line("check: reading the committed tables and the equation ledgers")
     if update and fmt is not CheckFormat.table:
         from pendcli.core.errors import PendcliError
 
@@ -644,9 +595,9 @@ def refuse_blank(args: list[str]) -> None:
         name, equals, value = arg.partition("=") if arg.startswith("--") else ("", "", arg)
         if (equals and not value.strip()) or (not equals and not arg.strip()):
             before = args[index - 1] if index and args[index - 1].startswith("-") else ""
-            after = f" (after {args[index - 1]!r})" if index else ""
+            after = f", after {args[index - 1]!r}," if index else ""
             where = name or before or f"argument {index + 1}{after}"
-            raise PendcliError(f"{where}: an empty or blank value; give one (see --help)")
+            raise PendcliError(f"{where} must not be empty or blank, got {value or arg!r}")
 
 
 def _invoke(args: list[str]) -> int:
@@ -741,12 +692,12 @@ def _typed_option(param: Parameter, args: list[str]) -> str:
 
 
 _EXPECTED = {
-    "float_parsing": ("is not a number", "a real number"),
-    "float_type": ("is not a number", "a real number"),
-    "finite_number": ("is not a finite number", "a finite real number"),
-    "int_parsing": ("is not an integer", "an integer"),
-    "int_type": ("is not an integer", "an integer"),
-    "int_from_float": ("is not an integer", "an integer"),
+    "float_parsing": "a number",
+    "float_type": "a number",
+    "finite_number": "finite",
+    "int_parsing": "an integer",
+    "int_type": "an integer",
+    "int_from_float": "an integer",
 }
 
 
@@ -762,12 +713,16 @@ def usage_message(exc: Exception, args: list[str]) -> str:
     first = errors()[0] if callable(errors) and errors() else {}
     value = first.get("input")
     kind = _EXPECTED.get(str(first.get("type")))
-    help_text = (getattr(param, "help", None) or "").strip()
     if kind is not None:
-        said, expected = kind
-        detail = f" ({help_text.rstrip('.')})" if help_text else ""
-        return f"{name}: {value!r} {said}; expected {expected}{detail}"
+        return f"{name} must be {kind}, got {value!r}"
     message = str(getattr(exc, "message", exc)).removeprefix("Value error, ").rstrip(".")
+    descriptor = getattr(param, "type_descriptor", None)
+    choice = re.match(r"(?P<value>'.*') is not one of ", message)
+    if choice and descriptor is not None and descriptor.is_choice:
+        from pendcli.core.errors import either
+
+        names = either(str(getattr(c, "value", c)) for c in descriptor.choices or ())
+        return f"{name} must be one of {names}, got {choice['value']}"
     return f"{name}: {message}"
 
 
@@ -789,6 +744,8 @@ def _named_as_typed(exc: PendcliError, args: list[str]) -> str:
         key = typed[2:].replace("-", "_")
         if typed.startswith("--") and key and (key == name or name.startswith(f"{key}_")):
             return typed + message[len(name) :]
+    if name in ARGUMENTS:  # a positional argument: named as its help names it (N, CLAIM)
+        return ARGUMENTS[name] + message[len(name) :]
     return message
 
 

@@ -23,8 +23,9 @@ app = typer.Typer(
 AngleOption = Annotated[
     str | None,
     typer.Option(
-        help="Angle with its unit: 30°, 30deg, 30', 30arcmin, 90arcsec, 0.52rad "
-        "(default: the example's, read as degrees)."
+        help="Angle with its unit: 30°, 30deg, 30', 30arcmin, 90arcsec, 0.52rad (a unit is "
+        "required). Default: the example's θ0 and θ1; --theta0 alone keeps the example's "
+        "ratio θ1/θ0."
     ),
 ]
 Row = Mapping[str, Any]
@@ -114,10 +115,13 @@ def example(
     from pendcli.papers.tisserand import explore, figures, model, units
 
     plot = validate_plot_path(plot)
-    default0, default1 = model.example_reading()
-    theta0 = default0 if theta0 is None else theta0
-    theta1 = default1 if theta1 is None else theta1
+    derived = theta0 is not None and theta1 is None
+    theta0, theta1 = _angles(theta0, theta1)
     a, b = units.amplitudes(theta0, theta1)
+    if derived:
+        from pendcli.cli.common import say
+
+        say(f"--theta1 not given: {theta1}, the example's ratio θ1/θ0 = {model.example_ratio():g}")
     length = units.parse_length(model.example_length_m() if length is None else length)
     rows = explore.example_rows(a, b, length)
     title = f"Conical pendulum θ0 = {theta0}, θ1 = {theta1}, l = {length:g} m"
@@ -129,6 +133,20 @@ def example(
     if plot is not None:
         with busy("drawing the figure"):
             figures.plot_path(plot, a, b)
+
+
+def _angles(theta0: str | None, theta1: str | None) -> tuple[str, str]:
+    """θ0 and θ1 as given, else the example's; θ1 alone missing keeps the example's ratio
+    θ1/θ0 (the command says so on stderr): ``--theta0 10°`` does not fail on a θ1 never set."""
+    import math
+
+    from pendcli.papers.tisserand import model, units
+
+    default0, default1 = model.example_reading()
+    if theta0 is not None and theta1 is None:
+        ratio = model.example_ratio()
+        theta1 = f"{math.degrees(units.parse_angle(theta0, 'theta0') * ratio):.6g}°"
+    return (default0 if theta0 is None else theta0), (default1 if theta1 is None else theta1)
 
 
 def _example_columns(rows: list[dict[str, Any]]) -> tuple[Column, ...]:

@@ -18,6 +18,8 @@ if TYPE_CHECKING:
 app = typer.Typer(
     help="Speed against accuracy: error achieved and time per evaluation, per method.",
     invoke_without_command=True,
+    add_completion=False,
+    rich_markup_mode=None,
     # a group stops reading options at its first positional argument unless told otherwise
     context_settings={"allow_interspersed_args": True},
 )
@@ -40,15 +42,19 @@ def tradeoff(
     write_tables: Annotated[
         Path | None,
         typer.Option(
-            "--write-tables", help="Also write each family's table as <DIR>/<family>.csv."
+            "--write-tables",
+            help="Also write each family's table as DIR/FAMILY.csv (DIR: an existing folder, "
+            "or a new one inside an existing folder).",
         ),
     ] = None,
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
     from pendcli import tradeoff as wp
+    from pendcli.cli.targets import check_folder_target
     from pendcli.core.plotting import validate_plot_path
 
     plot = validate_plot_path(plot)
+    check_folder_target(write_tables, "--write-tables")
     names = wp.family_names() if family is None else [wp.family(family).name]
     points = _measure(names, quick)
     rows = [p.as_dict() for p in points]

@@ -4,8 +4,9 @@ An entry's key is a SHA-256 over the bytes (and relative names) of every file of
 pendcli package and of the other source folders given (a registered paper's own package),
 the bytes of every file under the tables folder in use (``$PENDCLI_TABLES`` included), the
 version of Python, the machine, the libraries pendcli computes with and every distribution
-they require, transitively (the names ``numpy-2.3.4.dist-info`` of site-packages, followed
-through their ``Requires-Dist``: a test tool installed beside them is not in it), and the
+they require here, transitively (the names ``numpy-2.3.4.dist-info`` of site-packages,
+followed through their ``Requires-Dist`` whose environment marker holds: a test tool
+installed beside them, or a library only another system needs, is not in it), and the
 parameters of the computation (its kind, the paper). Any byte changed in any of them is
 another key: a miss, never a stale result. What the key cannot see (an environment variable
 that picks another BLAS kernel, a libm of the same version) is why ``pendcli check`` never
@@ -62,6 +63,7 @@ __all__ = [
     "required_distributions",
     "rows_from_json",
     "rows_to_json",
+    "runtime_signature",
 ]
 
 ENV = "PENDCLI_CACHE"
@@ -294,22 +296,30 @@ def content_digest(roots: Iterable[tuple[str, Path]]) -> str:
 
 def _installed() -> str:
     """Python's version, the machine, and each distribution pendcli computes with (its
-    libraries and everything they require, transitively), each with its version: a test or
-    lint tool installed beside them (pytest, ruff) is not part of a result, so adding one
-    keeps every entry valid."""
+    libraries and everything they require here, transitively), each with its version: a test
+    or lint tool installed beside them (pytest, ruff, mypy, hypothesis) is not part of a
+    result, so adding one keeps every entry valid."""
     from importlib.util import find_spec
 
     from pendcli.core.versions import DEPENDENCIES
 
-    found = [sys.version, sys.platform, os.uname().machine if hasattr(os, "uname") else ""]
-    folders: dict[str, None] = {}
+    folders: dict[Path, None] = {}
     for name in DEPENDENCIES:  # not pendcli: its files are hashed
         spec = find_spec(name)
         if spec is not None and spec.origin:
-            folders[str(Path(spec.origin).parent.parent)] = None
+            folders[Path(spec.origin).parent.parent] = None
+    return runtime_signature(folders, DEPENDENCIES)
+
+
+def runtime_signature(folders: Iterable[Path], roots: Iterable[str]) -> str:
+    """The part of the key the installed libraries make: Python's version, the machine, and
+    in each of ``folders`` the distributions of ``roots`` and what they require here
+    (:func:`required_distributions`), with their versions."""
+    found = [sys.version, sys.platform, os.uname().machine if hasattr(os, "uname") else ""]
+    roots = tuple(roots)
     for folder in folders:
         with contextlib.suppress(OSError):
-            found += [f"{folder}/{n}" for n in required_distributions(Path(folder), DEPENDENCIES)]
+            found += [f"{folder}/{n}" for n in required_distributions(Path(folder), roots)]
     return "\n".join(found)
 
 
@@ -347,9 +357,30 @@ def _requires(info: Path) -> list[str]:
             continue
         requirement, _, marker = line.removeprefix("Requires-Dist:").partition(";")
         name = re.match(r"\s*([A-Za-z0-9][A-Za-z0-9._-]*)", requirement)
-        if name and "extra" not in marker:
+        if name and _applies(marker):
             out.append(_project(name.group(1)))
     return out
+
+
+def _applies(marker: str) -> bool:
+    """Whether a requirement's environment marker holds here: never for an extra (a test
+    tool), never on another system or Python (``colorama; platform_system == "Windows"``:
+    a test tool installing colorama on Linux changed the key). Without the ``packaging``
+    library to read it, a marker is taken to hold (a key too wide misses, never serves a
+    stale result)."""
+    marker = marker.strip()
+    if not marker:
+        return True
+    if "extra" in marker:
+        return False
+    try:
+        from packaging.markers import Marker
+    except ImportError:
+        return True
+    try:
+        return bool(Marker(marker).evaluate())
+    except Exception:  # an invalid marker: followed, as without packaging
+        return True
 
 
 def _make(folder: Path) -> None:

@@ -12,6 +12,8 @@ import errno
 import os
 import signal
 import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import TYPE_CHECKING, Any, TextIO
 
 if TYPE_CHECKING:
@@ -23,8 +25,10 @@ __all__ = [
     "console",
     "for_display",
     "is_quiet",
+    "progress_bar",
     "protect_streams",
     "set_quiet",
+    "status_line",
 ]
 
 STANDARD_OUTPUT = "standard output"
@@ -169,3 +173,52 @@ def protect_streams() -> TextIO:
     if not isinstance(original, NamedStream):
         sys.stdout = NamedStream(original, STANDARD_OUTPUT)
     return original
+
+
+@contextmanager
+def progress_bar(
+    quiet: bool,
+    total: int,
+    title: str,
+    rows: tuple[int, Callable[[], int]] | None = None,
+) -> Iterator[Callable[[str, int], None]]:
+    """A progress bar of ``total`` steps on stderr, only on a terminal and when not quiet
+    (rich loads only then); yields ``advance(description, steps)``. ``rows``: (rows to do,
+    rows done so far), shown live beside the steps: read at each refresh, in rich's own
+    thread, so the count moves while this process computes (``37/112 ledger rows``)."""
+    if quiet or not sys.stderr.isatty():
+        yield lambda _description, _steps: None
+        return
+    from rich.progress import Progress, ProgressColumn
+    from rich.text import Text
+
+    columns: list[Any] = [*Progress.get_default_columns()]
+    if rows is not None:
+        count, done = rows
+
+        class RowsDone(ProgressColumn):
+            def render(self, task: Any) -> Text:
+                return Text(f"{min(done(), count)}/{count} ledger rows")
+
+        columns.append(RowsDone())
+    with Progress(*columns, console=console(stderr=True), transient=True) as progress:
+        task = progress.add_task(title, total=total)
+        yield lambda description, steps: progress.update(
+            task, description=description, advance=steps
+        )
+
+
+def status_line(text: str) -> None:
+    """``text`` as the one status line on a terminal's stderr, replacing the previous one
+    (``""`` clears it); nothing in a pipe or under --quiet. No thread: safe across a fork,
+    for the seconds before a progress bar can start (loading the libraries, the ledgers)."""
+    if _quiet or not sys.stderr.isatty():
+        return
+    import shutil
+
+    width = shutil.get_terminal_size().columns - 1
+    try:
+        sys.stderr.write(f"\r\033[K{text[:width]}")
+        sys.stderr.flush()
+    except (OSError, ValueError):
+        pass

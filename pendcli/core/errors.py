@@ -7,6 +7,7 @@ Also the wording of an error line itself: :func:`one_line` (a newline in a path 
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 
 
 class PendcliError(Exception):
@@ -21,17 +22,42 @@ class PendcliError(Exception):
         self.parameter = parameter
 
 
+def either(values: Iterable[object]) -> str:
+    """``values`` as a reader lists them: ``1 or 2``, ``auto, scipy or series``."""
+    names = [str(v) for v in values]
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
+
+
 def invalid_value(parameter: str, value: object, expected: str) -> PendcliError:
-    """The one wording of a refused value: ``parameter: 'value' is not valid; expected ...``."""
-    return PendcliError(f"{parameter}: {value!r} is not valid; expected {expected}", parameter)
+    """The one wording of a refused value: ``parameter must be EXPECTED, got 'value'``."""
+    return PendcliError(f"{parameter} must be {expected}, got {value!r}", parameter)
+
+
+# ``lo <= name <= hi unit``, ``0 < l <= 1e6 m``: a range as the models write it
+_RANGE = re.compile(r"^(?P<lo>\S+) (?P<a><=?) [^\s|]+ (?P<b><=?) (?P<hi>[^\s,;]+)(?P<rest>.*)$")
+_BOUND = re.compile(r"^\S+ (?P<op>[<>]=?) (?P<limit>\S+)$")
+_DOTS = re.compile(r"^(?P<lo>[^.\s]+)\.\.(?P<hi>[^.\s]+(?:\.\d+)?)$")
+
+
+def _condition(expected: str) -> str:
+    """``lo <= x <= hi m`` as ``in [lo, hi] m``; ``x > 0`` as ``> 0``; ``1..20`` as
+    ``in [1, 20]``; anything else as ``such that EXPECTED``."""
+    if found := _RANGE.match(expected):
+        left = "[" if found["a"] == "<=" else "("
+        right = "]" if found["b"] == "<=" else ")"
+        return f"in {left}{found['lo']}, {found['hi']}{right}{found['rest']}"
+    if found := _BOUND.match(expected):
+        return f"{found['op']} {found['limit']}"
+    if found := _DOTS.match(expected):
+        return f"in [{found['lo']}, {found['hi']}]"
+    return f"such that {expected}"
 
 
 def out_of_range(parameter: str, value: object, expected: str, what: str = "") -> PendcliError:
-    """The one wording of a value outside its domain: ``parameter: value is out of range;
-    expected lo <= parameter <= hi`` (``what``: the method or table whose domain it is)."""
-    return PendcliError(
-        f"{parameter}: {value} is out of range{what}; expected {expected}", parameter
-    )
+    """The one wording of a value outside its domain: ``parameter must be in [lo, hi], got
+    value`` (``expected``: the domain as ``lo <= parameter <= hi``; ``what``: the method or
+    table whose domain it is)."""
+    return PendcliError(f"{parameter} must be {_condition(expected)}{what}, got {value}", parameter)
 
 
 # Characters that would end or rewrite a line on a terminal: C0 and C1 controls (newline,

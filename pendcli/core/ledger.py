@@ -60,6 +60,7 @@ from pendcli.core.rows import EquationRow
 from pendcli.core.text_blocks import Span, validate_span
 from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES
 from pendcli.core.vocabulary import EquationStatus as Status
+from pendcli.core.workers import row_done
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
@@ -522,6 +523,7 @@ def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> lis
         problem = problem or (condition.problem if condition is not None else None)
         context = row_context(row, ledger, condition, step)
         out.append(Evaluated(row, problem, dims, computed, measured(row, formulas), context))
+        row_done()  # a progress bar counts rows (core.workers)
     return out
 
 

@@ -52,6 +52,41 @@ _STOPS = (signal.SIGTERM, signal.SIGHUP)  # the stops a worker dies of, as the p
 _HANDED_BACK = -1  # a worker's slot once its work is sent back (else: 1 + the item's index)
 
 
+# Rows done in this run, one 8-byte count per process (this one: 0, worker k: k + 1) in
+# memory the forked workers share, so a progress bar moves by rows whoever computes them;
+# None outside :func:`counting_rows`.
+_rows_done: mmap.mmap | None = None
+_row_slot = 0
+_ROW_SLOTS = 64
+
+
+def row_done() -> None:
+    """One more row of work done (a ledger row judged): counted when a run counts rows."""
+    memory = _rows_done
+    if memory is not None:
+        at = 8 * _row_slot
+        memory[at : at + 8] = (int.from_bytes(memory[at : at + 8], "little") + 1).to_bytes(
+            8, "little"
+        )
+
+
+@contextlib.contextmanager
+def counting_rows() -> Iterator[Callable[[], int]]:
+    """Count :func:`row_done` in this process and the workers forked inside the block; yields
+    the count so far (enter before forking: the workers inherit the shared memory)."""
+    global _rows_done
+    memory = _rows_done = mmap.mmap(-1, 8 * _ROW_SLOTS)
+
+    def done() -> int:
+        return sum(int.from_bytes(memory[8 * i : 8 * i + 8], "little") for i in range(_ROW_SLOTS))
+
+    try:
+        yield done
+    finally:
+        _rows_done = None
+        memory.close()
+
+
 class WorkerDied(Interrupted):
     """A forked worker ended before handing back its work: the run stops, exit 2."""
 
@@ -187,7 +222,9 @@ def _serve(
 ) -> NoReturn:
     """A forked worker's life: each piece of work read from ``conn`` done and sent back,
     until the pipe closes or the parent kills it; it never returns, nor runs exit handlers."""
+    global _row_slot
     code = 1
+    _row_slot = min(slot + 1, _ROW_SLOTS - 1)
     try:
         _start_worker(parent)
         for other in others:  # the parent's ends: this worker's death must close its own

@@ -43,7 +43,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from pendcli.core.errors import PendcliError, invalid_value, out_of_range
+from pendcli.core.errors import PendcliError, either, invalid_value, out_of_range
 
 __all__ = [
     "AUTO_SWITCH",
@@ -84,7 +84,7 @@ _SPLIT = 134217729.0  # 2**27 + 1, Dekker's splitter for exact products in doubl
 def check_zeros_request(order: int, count: int, method: str) -> None:
     """Raise :class:`PendcliError` naming the valid range unless the request is valid."""
     if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or order not in ORDERS:
-        raise PendcliError(f"order must be one of {ORDERS}, got {order!r}")
+        raise PendcliError(f"order must be {either(ORDERS)}, got {order!r}", "order")
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)):
         raise PendcliError(f"count must be an integer 1 <= count <= {MAX_COUNT}, got {count!r}")
     if not 1 <= count <= MAX_COUNT:
