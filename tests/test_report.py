@@ -129,7 +129,9 @@ def _stub_figures(monkeypatch):
     """Figures drawn as empty files in this process: the folder logic, not matplotlib."""
 
     def draw(function, args):
-        name = function.__name__
+        # a paper's hook by its place (module:function), or a function of the report's own
+        name = getattr(function, "__name__", "") or function.places[0].rsplit(".", 1)[1]
+        name = name.replace(":", "_")
         folder = args[-1] if name == "plot_tradeoff" else args[0]
         path = folder if name == "plot_tradeoff" else folder / f"{name.strip('_')}.png"
         path.parent.mkdir(parents=True, exist_ok=True)
