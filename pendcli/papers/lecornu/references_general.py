@@ -286,6 +286,32 @@ def reference_rolle() -> Any:
     return reference({}, "φ' at consecutive roots of φ", each_case=cases)
 
 
+def reference_kick_at_vertical() -> Any:
+    """Line 258: the motion started by a lateral kick at the vertical, at the length of a root
+    x1 of φ (u = 0, u' = 1 there): u = αφ + β√x Y₁(2√x) with α, β solved from those data
+    (mpmath, 40 digits; d/dx √x Z₁(2√x) = Z₀(2√x)), at the next four roots of φ (j₁,ₖ²/4)."""
+    import mpmath
+
+    with mpmath.workdps(40):
+        roots = [mpmath.besseljzero(1, k) ** 2 / 4 for k in range(1, 6)]
+        s = 2 * mpmath.sqrt(roots[0])
+        rows = [
+            [
+                mpmath.sqrt(roots[0]) * mpmath.besselj(1, s),
+                mpmath.sqrt(roots[0]) * mpmath.bessely(1, s),
+            ],
+            [mpmath.besselj(0, s), mpmath.bessely(0, s)],
+        ]
+        alpha, beta = mpmath.lu_solve(mpmath.matrix(rows), mpmath.matrix([0, 1]))
+
+        def u(x: Any) -> Any:
+            t = 2 * mpmath.sqrt(x)
+            return mpmath.sqrt(x) * (alpha * mpmath.besselj(1, t) + beta * mpmath.bessely(1, t))
+
+        cases = tuple({"u": float40(u(r))} for r in roots[1:])
+    return reference({}, "the motion kicked at a root of φ, at the next roots", each_case=cases)
+
+
 def reference_x_of_l() -> Any:
     """Lines 284, 344: x = gl/b², line 112's definition of x, solved for x."""
     length, g, b = symbols("l", "g", "b")
@@ -306,4 +332,5 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_hopital_at_beta": reference_hopital_at_beta,
     "reference_rolle": reference_rolle,
     "reference_x_of_l": reference_x_of_l,
+    "reference_kick_at_vertical": reference_kick_at_vertical,
 }
