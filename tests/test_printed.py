@@ -87,6 +87,13 @@ INCONSISTENT = {
     "lecornu.result.t_prime_recalled",
     # line 1102: 1/ρ² (a pure number: ρ is the amplitude of (50)) = 1/(a + bt)² (L^-2): 1/l².
     "lecornu.result.inverse_square_length",
+    # line 204 (a misprint): « la longueur … vis-à-vis de la vitesse d'allongement », l > b
+    # compares L with L T^-1: l > b²/g is meant.
+    "lecornu.result.length_against_speed",
+    # line 214 (a misprint): « la vitesse d'allongement √(g/ξ) », L^1/2 T^-1 named a speed.
+    "lecornu.result.speed_named_at_one_metre",
+    # line 344 (a misprint): « x par (g/l²) l », g/l (T^-2) for the pure number x = gl/b².
+    "lecornu.result.x_recalled",
 }
 
 
@@ -118,6 +125,11 @@ IMPLIED_ZERO = {
     "lecornu.result.inflection_at_vertical",
     "lecornu.result.area_theorem",
     "lecornu.result.xref_monotone",
+    # « également positive » (dl/dt > 0), « la tangente passe au point de suspension » (h = 0),
+    # « ne tend pas vers zéro » (dθ/dt² > 0)
+    "lecornu.result.speed_of_lengthening",
+    "lecornu.result.tangent_through_suspension",
+    "lecornu.result.angular_speed_at_zero_length",
 }
 
 

@@ -171,8 +171,9 @@ def test_the_curvature_reference_is_the_paths_and_refutes_the_claim() -> None:
     computed, problem = verify_printed(
         row, committed_ledger("lecornu").symbols_for(row), REFERENCES
     )
-    # a misprint since nothing later uses the curvature (tables/README.md, Blame)
-    assert problem is None and computed is not None and computed.startswith("misprint:")
+    # fails: it restates line 134's « proportionnel à u », which the curvature carries
+    # (lecornu.result.second_derivative_proportional; tables/README.md, Blame)
+    assert problem is None and computed is not None and computed.startswith("fails:")
 
 
 def _first_zero_of_27(p: Any) -> Any:

@@ -258,6 +258,66 @@ def reference_limit_at_zero() -> Any:
     return reference(exact, "(9)'s solutions near x = 0")
 
 
+def reference_hopital_at_beta() -> Any:
+    """Line 280: the « vraie valeur » of ∫_(x0)^x dx/φ² over 1/φ as x → β, by L'Hôpital: the
+    ratio of the two derivatives, taken by sympy for an unknown function φ(x) and written in
+    the ledger's φ, φ' (lhop)."""
+    import sympy as sp
+
+    x, x0, varphi, dvarphi = symbols("x", "x0", "varphi", "dvarphi_dx")
+    f = sp.Function("f_")(x)
+    top = sp.Integral(1 / f**2, (x, x0, x)).diff(x)
+    bottom = (1 / f).diff(x)
+    ratio = (top / bottom).subs(f.diff(x), dvarphi).subs(f, varphi)
+    return reference({"lhop": sp.simplify(ratio)}, "L'Hôpital's ratio of ∫dx/φ² to 1/φ")
+
+
+def reference_rolle() -> Any:
+    """Line 282: φ' = J₀(2√x) at consecutive roots α, β of φ = √x J₁(2√x): x = j₁,ₖ²/4
+    (mpmath.besseljzero), the first four pairs; φ' taken by sympy from φ."""
+    import mpmath
+
+    (x,) = symbols("x")
+    slope = phi_of(x).diff(x)
+    with mpmath.workdps(40):
+        roots = [mpmath.besseljzero(1, k) ** 2 / 4 for k in range(1, 6)]
+    values = [slope.subs(x, float40(r)).evalf(30) for r in roots]
+    cases = tuple({"dvarphi_alpha": values[k], "dvarphi_beta": values[k + 1]} for k in range(4))
+    return reference({}, "φ' at consecutive roots of φ", each_case=cases)
+
+
+def reference_kick_at_vertical() -> Any:
+    """Line 258: the motion started by a lateral kick at the vertical, at the length of a root
+    x1 of φ (u = 0, u' = 1 there): u = αφ + β√x Y₁(2√x) with α, β solved from those data
+    (mpmath, 40 digits; d/dx √x Z₁(2√x) = Z₀(2√x)), at the next four roots of φ (j₁,ₖ²/4)."""
+    import mpmath
+
+    with mpmath.workdps(40):
+        roots = [mpmath.besseljzero(1, k) ** 2 / 4 for k in range(1, 6)]
+        s = 2 * mpmath.sqrt(roots[0])
+        rows = [
+            [
+                mpmath.sqrt(roots[0]) * mpmath.besselj(1, s),
+                mpmath.sqrt(roots[0]) * mpmath.bessely(1, s),
+            ],
+            [mpmath.besselj(0, s), mpmath.bessely(0, s)],
+        ]
+        alpha, beta = mpmath.lu_solve(mpmath.matrix(rows), mpmath.matrix([0, 1]))
+
+        def u(x: Any) -> Any:
+            t = 2 * mpmath.sqrt(x)
+            return mpmath.sqrt(x) * (alpha * mpmath.besselj(1, t) + beta * mpmath.bessely(1, t))
+
+        cases = tuple({"u": float40(u(r))} for r in roots[1:])
+    return reference({}, "the motion kicked at a root of φ, at the next roots", each_case=cases)
+
+
+def reference_x_of_l() -> Any:
+    """Lines 284, 344: x = gl/b², line 112's definition of x, solved for x."""
+    length, g, b = symbols("l", "g", "b")
+    return reference({"x": g * length / b**2}, "x = gl/b² (line 112)")
+
+
 # the builders of this section, by the name the ledger cites
 REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_bessel_general": reference_bessel_general,
@@ -269,4 +329,8 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_bessel_switches": reference_bessel_switches,
     "reference_initial_data": reference_initial_data,
     "reference_limit_at_zero": reference_limit_at_zero,
+    "reference_hopital_at_beta": reference_hopital_at_beta,
+    "reference_rolle": reference_rolle,
+    "reference_x_of_l": reference_x_of_l,
+    "reference_kick_at_vertical": reference_kick_at_vertical,
 }

@@ -215,6 +215,24 @@ def reference_u_of_x() -> Any:
     return reference(exact, "(7) with u = θl, l = (b²/g)x")
 
 
+def reference_u_of_x_shortened() -> Any:
+    """Line 218, « au lieu de s'allonger, aille en se raccourcissant »: (9) from (7) as in
+    reference_u_of_x, the speed b replaced by −b throughout."""
+    (b,) = symbols("b")
+    built = reference_u_of_x()
+    exact = {name: value.subs(b, -b) for name, value in built.exact.items()}
+    return reference(exact, "(7) with u = θl, l = (b²/g)x, b → −b")
+
+
+def reference_speed_of_lengthening() -> Any:
+    """Line 64: the rate of l = a + bt (line 62), for b > 0 (« sauf avis contraire »)."""
+    import sympy as sp
+
+    a, b, t = symbols("a", "b", "t")
+    domain = {"b": (sp.Rational(1, 10), sp.Integer(2))}
+    return reference({"dl_dt": (a + b * t).diff(t)}, "l = a + bt", domain=domain)
+
+
 def reference_shortening() -> Any:
     """Lines 690-698, (30): (3) with b → −b (line 694: « nous mettons en évidence le signe de b »),
     then z = a/b − t, s = g/b (line 696): dθ/dt = −dθ/dz, d²θ/dt² = d²θ/dz²."""
@@ -244,4 +262,6 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_riccati": reference_riccati,
     "reference_u_of_x": reference_u_of_x,
     "reference_shortening": reference_shortening,
+    "reference_u_of_x_shortened": reference_u_of_x_shortened,
+    "reference_speed_of_lengthening": reference_speed_of_lengthening,
 }

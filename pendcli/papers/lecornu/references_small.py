@@ -63,8 +63,74 @@ def reference_curvature() -> Any:
     u = _trajectory(zl, cl)
     kappa = u.diff(zl, 2)
     at_c = (kappa / u).subs(zl, cl)  # the constant K of κ = K u, if there were one
-    exact = {"u": u, "kappa": kappa, "theta": u / zl, "K": at_c}
+    exact = {"u": u, "kappa": kappa, "d2u_dzl2": kappa, "theta": u / zl, "K": at_c}
     return reference(exact, "the exact path's u''")
+
+
+def reference_step_of_h() -> Any:
+    """Line 130: the variation Δh of h = u − z du/dz (line 128) over a step Δz of the exact
+    path u(z) (x = z/c, φ of (10)), Δz scaled by ε: « sensiblement » is through ε¹."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    zl, cl, step = symbols("zl", "cl", "Deltaz")
+    u = phi_of(zl / cl)
+    h = u - zl * u.diff(zl)
+    exact = {"u": u, "Deltaz": eps * step, "Deltah": h.subs(zl, zl + eps * step) - h}
+    return reference(exact, "h of the path at z and z + Δz", scale=eps, order=2)
+
+
+def reference_construction() -> Any:
+    """Line 132, the construction drawn in coordinates (z abscissa, u ordinate): P = (0, h) on
+    the u-axis, M = (z, u), A = (z, 0), B = (z, −c), Q = P moved by Δz towards B's side,
+    S = AP ∩ BQ, P' = SM ∩ (u-axis); Δh is the ordinate of P' less h (sympy geometry)."""
+    import sympy as sp
+
+    zl, u, h, cl, step = symbols("zl", "u", "h", "cl", "Deltaz")
+    pa, pb = sp.Point(zl, 0), sp.Point(zl, -cl)
+    pp, pq, pm = sp.Point(0, h), sp.Point(0, h - step), sp.Point(zl, u)
+    (ps,) = sp.Line(pa, pp).intersection(sp.Line(pb, pq))
+    (pp2,) = sp.Line(ps, pm).intersection(sp.Line(sp.Point(0, 0), sp.Point(0, 1)))
+    return reference({"Deltah": sp.simplify(pp2.y - h)}, "the construction of line 132")
+
+
+def reference_projections() -> Any:
+    """Line 134: the rod's projections y = l cos θ, x = l sin θ (line 34) for a small angle
+    (θ scaled by ε, through ε¹), c = b²/g and z = cx (line 124), u = θl (line 112)."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    length, theta, b, g = symbols("l", "theta", "b", "g")
+    small = eps * theta
+    exact = {
+        "theta": small,
+        "yc": length * sp.cos(small),
+        "xc": length * sp.sin(small),
+        "x": g * length / b**2,
+        "zl": length,  # z = cx with c = b²/g, x = gl/b²
+        "u": small * length,
+    }
+    return reference(exact, "the rod's projections at small θ", scale=eps, order=2)
+
+
+def reference_at_elongations() -> Any:
+    """Lines 152, 204: the elongations of (10)'s motion, where θ ∝ φ/x is stationary:
+    d(J₁(2√x)/√x)/dx = −J₂(2√x)/x, so x = j₂,ₖ²/4 (mpmath.besseljzero, the first five),
+    z = 2√x = j₂,ₖ, ξ = x; h = φ − xφ' (line 128 with x = z/c: the ordinate of the tangent
+    over c); l = (b²/g)ξ, b and g from 1/10 to 2 (units left free)."""
+    import mpmath
+    import sympy as sp
+
+    x, xi, b, g = symbols("x", "xi", "b", "g")
+    phi = phi_of(x)
+    with mpmath.workdps(40):
+        zeros = [mpmath.besseljzero(2, k) for k in range(1, 6)]
+        cases = tuple(
+            {"x": float40(j**2 / 4), "xi": float40(j**2 / 4), "z": float40(j)} for j in zeros
+        )
+    exact = {"h": phi - x * phi.diff(x), "l": b**2 * xi / g}
+    domain = {name: (sp.Rational(1, 10), sp.Integer(2)) for name in ("b", "g")}
+    return reference(exact, "the elongations of θl = φ (J₂ = 0)", each_case=cases, domain=domain)
 
 
 def _between(exact: dict[str, Any], low: Any, high: Any) -> Any:
@@ -279,11 +345,57 @@ def reference_zero_length() -> Any:
     )
 
 
+def reference_series_of_nine() -> Any:
+    """Line 160: the solution of (9) analytic at 0 with u(0) = 0, u'(0) = 1 (the first term of
+    (10)), by its own recursion n(n − 1)aₙ = −aₙ₋₁ (sympy rationals), x scaled by ε, through
+    ε⁵; not Bessel's function, which the row's printed form names."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    (x,) = symbols("x")
+    terms, coefficient = [], sp.Integer(1)
+    for n in range(1, 8):
+        if n > 1:
+            coefficient = -coefficient / (n * (n - 1))
+        terms.append(coefficient * (eps * x) ** n)
+    exact = {"x": eps * x, "varphi": sp.Add(*terms)}
+    return reference(exact, "(9)'s solution by its recursion", scale=eps, order=6)
+
+
+def reference_speed_at_one_metre() -> Any:
+    """Line 214: ξ = gl/b² (line 194) for the pendulum « ayant un mètre de longueur », l one
+    metre (a length, kept a symbol); b, g positive."""
+    import sympy as sp
+
+    b, g, metre = symbols("b", "g", "metre")
+    domain = {name: (sp.Rational(1, 10), sp.Integer(2)) for name in ("b", "g", "metre")}
+    return reference({"xi": g * metre / b**2}, "ξ = gl/b² at l = 1 m", domain=domain)
+
+
+def reference_angular_speed_at_zero_length() -> Any:
+    """Line 230: dθ/dt of (10)'s motion, θ = (g/b²)·φ/x times one metre (the memoir's φ carries
+    a length, line 160), dθ/dt = b dθ/dl = (g/b) dθ/dx, at x → 0 (sympy's limit)."""
+    import sympy as sp
+
+    x, b, g, metre = symbols("x", "b", "g", "metre")
+    theta = metre * g * phi_of(x) / (b**2 * x)
+    rate = sp.limit((g / b) * theta.diff(x), x, 0, "+")
+    domain = {name: (sp.Rational(1, 10), sp.Integer(2)) for name in ("b", "g", "metre")}
+    return reference({"dtheta_dt": rate}, "dθ/dt of (10)'s motion at l = 0", domain=domain)
+
+
 # the builders of this section, by the name the ledger cites
 REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_graphical": reference_graphical,
     "reference_inflection": reference_inflection,
     "reference_curvature": reference_curvature,
+    "reference_step_of_h": reference_step_of_h,
+    "reference_construction": reference_construction,
+    "reference_projections": reference_projections,
+    "reference_at_elongations": reference_at_elongations,
+    "reference_series_of_nine": reference_series_of_nine,
+    "reference_speed_at_one_metre": reference_speed_at_one_metre,
+    "reference_angular_speed_at_zero_length": reference_angular_speed_at_zero_length,
     "reference_area": reference_area,
     "reference_phi_series": reference_phi_series,
     "reference_phi_prime_series": reference_phi_prime_series,
