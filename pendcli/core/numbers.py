@@ -44,6 +44,7 @@ __all__ = [
     "exact_number",
     "fixed",
     "fixed_decimals",
+    "paper_decimals",
     "parse_printed",
     "sexagesimal_text",
     "significant",
@@ -420,10 +421,15 @@ def edition_minus(text: str) -> str:
     return _HYPHEN_MINUS.sub("\u2212", text)
 
 
-def edition_text(detail: str) -> str:
-    """A note's detail string as the edition shows it: its numbers with a decimal comma
-    (``order 1,99``, ``6,08·10⁻²``) and the typeset minus; identifiers, versions and code
-    words are left as they are. The JSON and CSV outputs keep the string as it is."""
+# A separator « , » between two numbers, which a decimal comma would make ambiguous.
+_LIST_COMMA = re.compile(r"(?<=\d), (?=[-+\u2212]?\d)")
+
+
+def paper_decimals(text: str) -> str:
+    """A note written with decimal points, in the paper's decimal comma: ``1.286`` ->
+    ``1,286``, ``6.08e-02`` -> ``6,08·10⁻²``, and a list of numbers separated by « ; »
+    (``[1.84, 1.98]`` -> ``[1,84 ; 1,98]``: « 1,84, 1,98 » would read as three numbers).
+    Identifiers, versions and code words are left as they are; the minus is not touched."""
 
     def comma(m: re.Match[str]) -> str:
         text = f"{m.group(1)},{m.group(2)}"
@@ -431,4 +437,12 @@ def edition_text(detail: str) -> str:
             text += "·10" + str(int(m.group(3))).translate(_SUPERSCRIPT)
         return text
 
-    return edition_minus(_POINT_NUMBER.sub(comma, detail))
+    return _POINT_NUMBER.sub(comma, _LIST_COMMA.sub(" ; ", text))
+
+
+def edition_text(detail: str) -> str:
+    """A note's detail string as the edition shows it: its numbers with a decimal comma
+    (``order 1,99``, ``6,08·10⁻²``, lists separated by « ; ») and the typeset minus;
+    identifiers, versions and code words are left as they are. The JSON and CSV outputs keep
+    the string as it is."""
+    return edition_minus(paper_decimals(detail))
