@@ -31,7 +31,7 @@ _NUMBER = r"[-+−]?\d[\d.,]*(?:e[-+]?\d+)?[°'″′%]*"
 _GLUED = re.compile(rf"(?:(?<=\s)|^){_NUMBER}\s(?=[^\W\d_][\w/²³⁻¹·]{{0,13}}(?:[\s,;:.)]|$))")
 
 
-def _cell(column: Column, row: Row, text: str) -> str:
+def _cell(column: Column, text: str) -> str:
     """The cell as rich markup: text cut to ``table_max``, styled or escaped."""
     from rich.markup import escape
 
@@ -75,6 +75,10 @@ def wrapped(text: Text, width: int) -> Text:
     lines: list[Text] = []
     offset = 0
     for line in text.plain.split("\n"):
+        if cell_len(line) <= width:  # as it is: its indent, its alignment padding
+            lines.append(text[offset : offset + len(line)])
+            offset += len(line) + 1
+            continue
         start: int | None = 0  # the first piece keeps the line's indent
         end = 0
         for a, b in _words(line):
@@ -169,7 +173,7 @@ def _fitting_table_class() -> type[Table]:
             sizes: list[int | None] = list(widths) if widths else [None] * len(lower)
             for column, width, col in zip(self.columns, sizes, self.cells, strict=True):
                 column.width = width  # None: rich sizes the column (everything fits)
-                if width is not None:
+                if width is not None:  # the cells wrapped here, not by rich (rich's own list)
                     column._cells = [wrapped(Text.from_markup(c), width) for c in col]
             drawn = sum(widths) if widths else sum(upper)
             if self.title and cell_len(str(self.title)) > drawn + padding:
@@ -198,7 +202,7 @@ def to_rich_table(
         table.add_column(c.header, justify=c.justify, overflow="fold")
     with using(TERMINAL):
         texts = [c.texts(rows) for c in columns]
-    cells = [[_cell(c, r, texts[j][i]) for j, c in enumerate(columns)] for i, r in enumerate(rows)]
+    cells = [[_cell(c, texts[j][i]) for j, c in enumerate(columns)] for i in range(len(rows))]
     for row_cells in cells:
         table.add_row(*row_cells)
     table.cells = [list(col) for col in zip(*cells, strict=True)] or [[] for _ in columns]  # type: ignore[attr-defined]
