@@ -126,6 +126,9 @@ def test_a_note_in_the_papers_decimal_comma():
     assert paper_decimals("see lecornu.eq.25, version 1.2.3 and 6.08e-02") == (
         "see lecornu.eq.25, version 1.2.3 and 6,08·10⁻²"
     )
+    listed = "corrected: 0, 0,91, 1,66, 2,23, 2,63 s"  # five numbers, not nine
+    assert paper_decimals(listed) == "corrected: 0 ; 0,91 ; 1,66 ; 2,23 ; 2,63 s"
+    assert paper_decimals("n = 1, 2, 3; rtol 1e-12, 2.4…n") == "n = 1, 2, 3; rtol 1e-12, 2.4…n"
     already = "(1 - 0,68)/0,35 = 0,914 → 0,91, and no reading"
     assert paper_decimals(already) == already
 

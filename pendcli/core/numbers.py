@@ -421,8 +421,9 @@ def edition_minus(text: str) -> str:
     return _HYPHEN_MINUS.sub("\u2212", text)
 
 
-# A separator « , » between two numbers, which a decimal comma would make ambiguous.
-_LIST_COMMA = re.compile(r"(?<=\d), (?=[-+\u2212]?\d)")
+# A separator « , » beside a number with a decimal comma (« 0, 0,91, 1,66 »), where the two
+# commas would read alike: before another number, or after one.
+_LIST_COMMA = re.compile(r"(\d,\d+), (?=[-+\u2212]?\d)|(?<=\d), (?=[-+\u2212]?\d+,\d)")
 
 
 def paper_decimals(text: str) -> str:
@@ -437,7 +438,8 @@ def paper_decimals(text: str) -> str:
             text += "·10" + str(int(m.group(3))).translate(_SUPERSCRIPT)
         return text
 
-    return _POINT_NUMBER.sub(comma, _LIST_COMMA.sub(" ; ", text))
+    commas = _POINT_NUMBER.sub(comma, text)
+    return _LIST_COMMA.sub(lambda m: f"{m.group(1) or ''} ; ", commas)
 
 
 def edition_text(detail: str) -> str:
