@@ -157,3 +157,10 @@ def test_recomputed_beside_a_printed_angle_is_an_angle_in_every_output():
             for most in (None, 10):
                 text = format_like_printed(value, "-1°7'33''", most)
                 assert text.startswith("-1°7'33") and text.endswith("''"), text
+
+
+def test_an_implicit_float_column_with_a_tiny_value_is_scientific_throughout():
+    column = Column("x", "x")
+    with using(TERMINAL):
+        texts = column.texts([{"x": 0.5}, {"x": 1e-5}, {"x": 2.5e-13}])
+    assert texts == ["5e-01", "1e-05", "2.5e-13"]  # one notation, no trailing zeros

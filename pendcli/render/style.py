@@ -99,7 +99,8 @@ class NumberStyle:
         sig = self.cap(digits) or 17
         finite = [v for v in values if v is not None and math.isfinite(v) and v != 0]
         if any(abs(v) < _FIXED_SMALLEST or abs(v) >= 10**sig for v in finite):
-            return [self._scientific(v, sig) for v in values]
+            texts = [self._scientific(v, sig) for v in values]
+            return [trimmed(t, self.decimal) for t in texts] if trim else texts
         texts = [
             ""
             if v is None or math.isnan(v)
@@ -137,10 +138,12 @@ class NumberStyle:
 
 
 def trimmed(text: str, decimal: str = ".") -> str:
-    """A fixed number without its trailing zeros (``0.3750000`` -> ``0.375``)."""
-    if decimal not in text or not text[-1].isdigit():
+    """A number without the trailing zeros of its digits (``0.3750000`` -> ``0.375``,
+    ``1.000000e-05`` -> ``1e-05``)."""
+    mantissa, mark, power = text.partition("e")
+    if decimal not in mantissa or not mantissa[-1:].isdigit():
         return text
-    return text.rstrip("0").rstrip(decimal)
+    return mantissa.rstrip("0").rstrip(decimal) + mark + power
 
 
 TERMINAL = NumberStyle("terminal", 7)
