@@ -59,13 +59,11 @@ def _cause(row: Row) -> str:
 
 
 def _recomputed(row: Row) -> str:
-    """Three digits beyond the printed precision, in at most ten characters."""
-    value, published = row.get("recomputed"), str(row["published"])
-    text = format_like_printed(value if isinstance(value, float | int) else None, published)
-    if len(text) > 10 and isinstance(value, float | int):  # ten characters at most
-        text = f"{value:.6g}"
-        return text if len(text) <= 10 else f"{value:.3e}"
-    return text
+    """As printed (an angle sexagesimal), three digits beyond it, in about ten characters."""
+    value = row.get("recomputed")
+    return format_like_printed(
+        value if isinstance(value, float | int) else None, str(row["published"]), most=10
+    )
 
 
 def _style(text: str) -> str | None:

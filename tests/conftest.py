@@ -46,6 +46,7 @@ SLOW_FAMILIES = {
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
     "tests/test_terminal_fit.py::*": "each command's whole output at two widths",
+    "tests/test_terminal_render.py::test_render_*": "each command's whole output at three widths",
     "tests/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
     "tests/test_summary.py::test_only_failing_*": "a whole reproduce of a paper, in a process",
     "tests/test_cli.py::test_ascii_only_locale": "each command in a fresh process",

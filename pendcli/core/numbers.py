@@ -42,7 +42,12 @@ __all__ = [
     "edition_quantity",
     "edition_text",
     "exact_number",
+    "fixed",
+    "fixed_decimals",
+    "paper_decimals",
     "parse_printed",
+    "sexagesimal_text",
+    "significant",
 ]
 
 
@@ -315,6 +320,58 @@ def exact_number(printed: PrintedNumber) -> PrintedNumber:
 _SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
 
+def significant(
+    value: float,
+    digits: int,
+    decimal: str = ".",
+    minus: str = "-",
+    typeset_power: bool = False,
+) -> str:
+    """``value`` to ``digits`` significant digits, trailing zeros dropped (``%g``), with the
+    given decimal mark and minus sign; a power of ten as ``e-05`` or, typeset, ``·10⁻⁵``.
+    The one place a number's digits are chosen for a reader: every output style calls it."""
+    mantissa, _, exponent = f"{value:.{digits}g}".partition("e")
+    text = mantissa.replace(".", decimal).replace("-", minus)
+    if exponent and typeset_power:
+        return text + "·10" + str(int(exponent)).translate(_SUPERSCRIPT)
+    return f"{text}e{exponent}" if exponent else text
+
+
+def fixed_decimals(value: float, digits: int) -> int:
+    """The decimals that show ``value`` in fixed notation with ``digits`` significant digits
+    (0 for a number with at least that many digits before the point)."""
+    if value == 0 or not math.isfinite(value):
+        return max(digits - 1, 0)
+    return max(digits - 1 - math.floor(math.log10(abs(value))), 0)
+
+
+def fixed(value: float, decimals: int, decimal: str = ".", minus: str = "-") -> str:
+    """``value`` in fixed notation with ``decimals`` places, trailing zeros kept."""
+    text = f"{value:.{decimals}f}"
+    if text.lstrip("-").strip("0.") == "":  # a rounded zero has no sign
+        text = text.lstrip("-")
+    return text.replace(".", decimal).replace("-", minus)
+
+
+def sexagesimal_text(
+    degrees: float,
+    decimals: int = 2,
+    marks: tuple[str, str, str] = ("°", "'", "''"),
+    decimal: str = ".",
+    minus: str = "-",
+) -> str:
+    """An angle in degrees as the papers print one: ``-1°7'33.14''``, ``2'42.20''``, ``1.69''``
+    (Tisserand's 1°7'33'', 2'42'', 2''): the seconds to ``decimals`` places, the leading zero
+    parts left out as the paper leaves them out, rounding carried into minutes and degrees."""
+    units = round(abs(degrees) * 3600 * 10**decimals)
+    whole, fraction = divmod(units, 10**decimals)
+    deg, rest = divmod(whole, 3600)
+    minutes, seconds = divmod(rest, 60)
+    parts = [f"{deg}{marks[0]}" if deg else "", f"{minutes}{marks[1]}" if deg or minutes else ""]
+    second = f"{seconds}{decimal}{fraction:0{decimals}d}" if decimals else f"{seconds}"
+    return (minus if degrees < 0 and units else "") + "".join(parts) + second + marks[2]
+
+
 def edition_number(value: object, digits: int = 10) -> str:
     """A recomputed number as the three papers print theirs, for the annotated edition.
 
@@ -332,24 +389,13 @@ def edition_number(value: object, digits: int = 10) -> str:
         return str(value).replace("-", "\u2212")
     if not math.isfinite(value):
         return str(value)
-    mantissa, _, exponent = f"{value:.{digits}g}".partition("e")
-    text = mantissa.replace(".", ",").replace("-", "\u2212")
-    if exponent:
-        text += "·10" + str(int(exponent)).translate(_SUPERSCRIPT)
-    return text
+    return significant(value, digits, ",", "\u2212", typeset_power=True)
 
 
 def edition_angle(degrees: float, decimals: int = 2) -> str:
-    """An angle in degrees as the papers print one, sexagesimal: ``−1°7′33,14″``, ``2′42,00″``,
-    ``1,69″`` (Tisserand's 1°7'33'', 2'42'', 2''), the seconds to ``decimals`` places, the
-    leading zero parts left out as the paper leaves them out."""
-    hundredths = round(abs(degrees) * 3600 * 10**decimals)
-    whole, fraction = divmod(hundredths, 10**decimals)
-    deg, rest = divmod(whole, 3600)
-    minutes, seconds = divmod(rest, 60)
-    parts = [f"{deg}°" if deg else "", f"{minutes}′" if deg or minutes else ""]
-    second = f"{seconds},{fraction:0{decimals}d}″" if decimals else f"{seconds}″"
-    return ("\u2212" if degrees < 0 and hundredths else "") + "".join(parts) + second
+    """An angle in degrees as the edition prints one, sexagesimal: ``−1°7′33,14″``,
+    ``2′42,00″``, ``1,69″`` (see :func:`sexagesimal_text`)."""
+    return sexagesimal_text(degrees, decimals, ("°", "′", "″"), ",", "\u2212")
 
 
 def edition_quantity(value: object, unit: str = "", digits: int = 10) -> str:
@@ -375,10 +421,16 @@ def edition_minus(text: str) -> str:
     return _HYPHEN_MINUS.sub("\u2212", text)
 
 
-def edition_text(detail: str) -> str:
-    """A note's detail string as the edition shows it: its numbers with a decimal comma
-    (``order 1,99``, ``6,08·10⁻²``) and the typeset minus; identifiers, versions and code
-    words are left as they are. The JSON and CSV outputs keep the string as it is."""
+# A separator « , » beside a number with a decimal comma (« 0, 0,91, 1,66 »), where the two
+# commas would read alike: before another number, or after one.
+_LIST_COMMA = re.compile(r"(\d,\d+), (?=[-+\u2212]?\d)|(?<=\d), (?=[-+\u2212]?\d+,\d)")
+
+
+def paper_decimals(text: str) -> str:
+    """A note written with decimal points, in the paper's decimal comma: ``1.286`` ->
+    ``1,286``, ``6.08e-02`` -> ``6,08·10⁻²``, and a list of numbers separated by « ; »
+    (``[1.84, 1.98]`` -> ``[1,84 ; 1,98]``: « 1,84, 1,98 » would read as three numbers).
+    Identifiers, versions and code words are left as they are; the minus is not touched."""
 
     def comma(m: re.Match[str]) -> str:
         text = f"{m.group(1)},{m.group(2)}"
@@ -386,4 +438,13 @@ def edition_text(detail: str) -> str:
             text += "·10" + str(int(m.group(3))).translate(_SUPERSCRIPT)
         return text
 
-    return edition_minus(_POINT_NUMBER.sub(comma, detail))
+    commas = _POINT_NUMBER.sub(comma, text)
+    return _LIST_COMMA.sub(lambda m: f"{m.group(1) or ''} ; ", commas)
+
+
+def edition_text(detail: str) -> str:
+    """A note's detail string as the edition shows it: its numbers with a decimal comma
+    (``order 1,99``, ``6,08·10⁻²``, lists separated by « ; ») and the typeset minus;
+    identifiers, versions and code words are left as they are. The JSON and CSV outputs keep
+    the string as it is."""
+    return edition_minus(paper_decimals(detail))

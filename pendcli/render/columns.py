@@ -10,6 +10,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
+from pendcli.render.style import current
 from pendcli.render.values import plain
 
 __all__ = ["Column", "Row", "Section", "fmt_float"]
@@ -26,6 +27,9 @@ class Column:
     justify: Literal["left", "right"] = "left"
     table_max: int | None = None  # in the terminal table only, cut longer text with "…"
     style: Callable[[str], str | None] | None = None  # rich style of a cell, from its text
+    # A numeric column: its floats written together (one notation, decimal points aligned,
+    # trailing zeros kept) with this many significant digits, within the output's style.
+    digits: int | None = None
 
     def text(self, row: Row) -> str:
         if self.fmt is not None:
@@ -39,17 +43,26 @@ class Column:
             return str(plain(value))
         return str(value)
 
+    def texts(self, rows: Sequence[Row]) -> list[str]:
+        """The column's cells, in the style of the output being drawn: a numeric column (one
+        with ``digits``, or no format of its own and only floats) in one notation."""
+        values = [plain(r.get(self.key)) for r in rows]
+        numeric = self.fmt is None and any(isinstance(v, float) for v in values)
+        if (self.digits is not None or numeric) and all(
+            v is None or (isinstance(v, int | float) and not isinstance(v, bool)) for v in values
+        ):
+            floats = [None if v is None else float(v) for v in values]  # type: ignore[arg-type]
+            return current().column(floats, self.digits, trim=self.digits is None)
+        return [self.text(r) for r in rows]
+
 
 # A titled group of rows with the columns to show them in (title "" for none).
 Section = tuple[str, Sequence[Row], Sequence[Column]]
 
 
 def fmt_float(value: float | None, sig: int = 10) -> str:
-    """A float for human eyes: ``sig`` significant digits, no trailing noise."""
+    """A float for human eyes: ``sig`` significant digits, no trailing noise, and never more
+    than the output being drawn shows (7 in the terminal: :mod:`pendcli.render.style`)."""
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
-    if isinstance(value, float) and math.isinf(value):
-        return "inf" if value > 0 else "-inf"
-    if value == 0:
-        return "0"
-    return f"{value:.{sig}g}"
+    return current().number(value, sig)

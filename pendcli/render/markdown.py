@@ -11,6 +11,7 @@ import re
 from collections.abc import Mapping, Sequence
 
 from pendcli.render.columns import Column, Row, Section
+from pendcli.render.style import MARKDOWN, using
 
 __all__ = ["MarkdownRenderer", "code_span", "fence", "markdown_text", "to_markdown"]
 
@@ -56,7 +57,12 @@ def to_markdown(rows: Sequence[Row], columns: Sequence[Column]) -> str:
         "| " + " | ".join(_cell(c.header) for c in columns) + " |",
         "|" + "|".join("---:" if c.justify == "right" else "---" for c in columns) + "|",
     ]
-    lines += ["| " + " | ".join(_cell(c.text(r)) for c in columns) + " |" for r in rows]
+    with using(MARKDOWN):
+        texts = [c.texts(rows) for c in columns]
+    lines += [
+        "| " + " | ".join(_cell(texts[j][i].strip()) for j in range(len(columns))) + " |"
+        for i in range(len(rows))
+    ]
     return "\n".join(lines) + "\n"
 
 

@@ -6,36 +6,53 @@ never draws a table.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from pendcli.render.columns import Column, Row, Section, fmt_float
+from pendcli.render.columns import Column, Row, Section
+from pendcli.render.style import TERMINAL, using
 
 if TYPE_CHECKING:
     from collections.abc import Iterator
 
     from rich.console import Console, RenderableType
     from rich.table import Table
+    from rich.text import Text
 
 __all__ = ["TERMINAL_DIGITS", "TableRenderer", "to_rich_table"]
 
-# Significant digits of a float the terminal shows when its column sets no format of its own.
-TERMINAL_DIGITS = 7
+# Significant digits of a float the terminal shows (the terminal style's: JSON and CSV keep all).
+TERMINAL_DIGITS = TERMINAL.digits
+
+# A number and the unit after it wrap together (« 7.6e-07 s/evaluation », « 0.1966 mm »): a
+# number, then one word of letters (a unit, « s/evaluation », « m/s² »), kept on one line.
+_NUMBER = r"[-+−]?\d[\d.,]*(?:e[-+]?\d+)?[°'″′%]*"
+_GLUED = re.compile(rf"(?:(?<=\s)|^){_NUMBER}\s(?=[^\W\d_][\w/²³⁻¹·]{{0,13}}(?:[\s,;:.)]|$))")
 
 
-def _cell(column: Column, row: Row) -> str:
+def _cell(column: Column, text: str) -> str:
     """The cell as rich markup: text cut to ``table_max``, styled or escaped."""
     from rich.markup import escape
 
-    value = row.get(column.key)
-    if column.fmt is None and isinstance(value, float):
-        text = fmt_float(value, TERMINAL_DIGITS)  # the eye's digits; JSON and CSV keep all 17
-    else:
-        text = column.text(row)
     if column.table_max is not None and len(text) > column.table_max:
         text = text[: column.table_max - 1].rstrip() + "…"
     style = column.style(text) if column.style is not None else None
     return f"[{style}]{escape(text)}[/]" if style else escape(text)
+
+
+def _words(plain: str) -> list[tuple[int, int]]:
+    """The spans of the words of one line of ``plain`` that may not be broken: each word, a
+    number and its unit taken as one."""
+    spans = [(m.start(), m.end()) for m in re.finditer(r"\S+", plain)]
+    glued = {m.end() for m in _GLUED.finditer(plain)}  # where a unit starts after its number
+    merged: list[tuple[int, int]] = []
+    for start, end in spans:
+        if merged and start in glued:
+            merged[-1] = (merged[-1][0], end)
+        else:
+            merged.append((start, end))
+    return merged
 
 
 def _longest_token(text: str) -> int:
@@ -43,7 +60,36 @@ def _longest_token(text: str) -> int:
     from rich.text import Text
 
     plain = Text.from_markup(text).plain
-    return max((cell_len(t) for t in plain.split()), default=0)
+    return max(
+        (cell_len(line[a:b]) for line in plain.splitlines() for a, b in _words(line)), default=0
+    )
+
+
+def wrapped(text: Text, width: int) -> Text:
+    """``text`` with its lines broken at spaces to fit ``width`` cells, a number never apart
+    from its unit (rich would break « 7.6e-07 / s/evaluation »); a word longer than ``width``
+    stays whole on its own line."""
+    from rich.cells import cell_len
+    from rich.text import Text
+
+    lines: list[Text] = []
+    offset = 0
+    for line in text.plain.split("\n"):
+        if cell_len(line) <= width:  # as it is: its indent, its alignment padding
+            lines.append(text[offset : offset + len(line)])
+            offset += len(line) + 1
+            continue
+        start: int | None = 0  # the first piece keeps the line's indent
+        end = 0
+        for a, b in _words(line):
+            if start is not None and end and cell_len(line[start:b]) > width:
+                lines.append(text[offset + start : offset + end])
+                start = None
+            start = a if start is None else start
+            end = b
+        lines.append(text[offset + (start or 0) : offset + end])
+        offset += len(line) + 1
+    return Text("\n").join(lines)
 
 
 def _longest_line(text: str) -> int:
@@ -73,14 +119,16 @@ def fitted_widths(lower: Sequence[int], upper: Sequence[int], room: int) -> list
 
 def _records(table: Table, headers: list[str], width: int) -> Iterator[RenderableType]:
     """The rows one under another, ``header  value`` per line, for a terminal too narrow for
-    the columns side by side: every word and number stays whole, prose wraps at spaces."""
+    the columns side by side: every word and number stays whole, prose wraps at spaces, and a
+    header wraps only when the values would not fit beside it."""
     from rich.table import Table
     from rich.text import Text
 
     if table.title:
         yield Text(str(table.title), style="italic")
     cells: list[list[str]] = getattr(table, "cells", [])
-    label = min(max(len(h) for h in headers), width // 3)
+    values = max((_longest_token(c) for col in cells[1:] for c in col), default=0)
+    label = min(max(len(h) for h in headers[1:] or [""]), max(width - 4 - values, width // 3))
     for i in range(table.row_count):
         grid = Table.grid(padding=(0, 2, 0, 2))
         grid.add_column(width=label, overflow="fold")
@@ -88,17 +136,22 @@ def _records(table: Table, headers: list[str], width: int) -> Iterator[Renderabl
         first = cells[0][i] if cells else ""
         for header, column in zip(headers[1:], cells[1:], strict=True):
             if Text.from_markup(column[i]).plain.strip():
-                grid.add_row(Text(header, style="dim"), column[i])
+                value = wrapped(Text.from_markup(column[i]), width - label - 4)
+                grid.add_row(wrapped(Text(header, style="dim"), label), value)
         yield Text.from_markup(f"[bold]{first}[/]" if first else "")
         yield grid
 
 
 def _fitting_table_class() -> type[Table]:
+    from rich.cells import cell_len
     from rich.table import Table
+    from rich.text import Text
 
     class FittingTable(Table):
         """A table whose columns shrink by wrapping prose at spaces, never inside a word or
-        a number (rich alone folds the widest columns, cutting `-1.000e-04` into two lines)."""
+        a number nor between a number and its unit (rich alone folds the widest columns,
+        cutting `-1.000e-04` into two lines); a title wider than the table is written on its
+        own line rather than wrapped to the table's width."""
 
         cells: list[list[str]]
 
@@ -118,8 +171,14 @@ def _fitting_table_class() -> type[Table]:
                 yield from _records(self, headers, options.max_width)
                 return
             sizes: list[int | None] = list(widths) if widths else [None] * len(lower)
-            for column, width in zip(self.columns, sizes, strict=True):
+            for column, width, col in zip(self.columns, sizes, self.cells, strict=True):
                 column.width = width  # None: rich sizes the column (everything fits)
+                if width is not None:  # the cells wrapped here, not by rich (rich's own list)
+                    column._cells = [wrapped(Text.from_markup(c), width) for c in col]
+            drawn = sum(widths) if widths else sum(upper)
+            if self.title and cell_len(str(self.title)) > drawn + padding:
+                yield Text(str(self.title), style="italic")
+                self.title = None
             yield from super().__rich_console__(console, options)
 
     return FittingTable
@@ -141,7 +200,9 @@ def to_rich_table(
     )
     for c in columns:
         table.add_column(c.header, justify=c.justify, overflow="fold")
-    cells = [[_cell(c, r) for c in columns] for r in rows]
+    with using(TERMINAL):
+        texts = [c.texts(rows) for c in columns]
+    cells = [[_cell(c, texts[j][i]) for j, c in enumerate(columns)] for i in range(len(rows))]
     for row_cells in cells:
         table.add_row(*row_cells)
     table.cells = [list(col) for col in zip(*cells, strict=True)] or [[] for _ in columns]  # type: ignore[attr-defined]

@@ -8,10 +8,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from pendcli.core.numbers import parse_printed
+from pendcli.core.numbers import fixed, parse_printed
 from pendcli.core.rows import equation_notes, equation_status
 from pendcli.core.vocabulary import FormulaVerdict, ProcedureVerdict, Verdict
-from pendcli.render.columns import Column, Row, fmt_float
+from pendcli.render.columns import Column, Row
+from pendcli.render.style import current, trimmed
 
 __all__ = [
     "CLAIM_COLUMNS",
@@ -51,29 +52,39 @@ def printed_for_display(text: object) -> str:
     return shown
 
 
-def format_like_printed(value: float | None, published: str) -> str:
-    """The recomputed value shown three digits beyond the printed precision."""
+def format_like_printed(value: float | None, published: str, most: int | None = None) -> str:
+    """The recomputed value written as the printed one is: a decimal three digits beyond the
+    printed precision, an angle sexagesimal (the seconds to two decimals), anything else (an
+    exact expression, an integer) to the output's digits; always in fixed notation. With
+    ``most``, a decimal too long for ``most`` characters keeps fewer digits (an angle stays
+    sexagesimal, whole seconds at the least)."""
     if value is None:
         return ""
+    style = current()
     try:
         printed = parse_printed(published)
     except Exception:
-        return fmt_float(value)
-    if printed.kind == "decimal" and printed.decimals:
-        return f"{value:.{printed.decimals + 3}f}"
-    if printed.kind == "decimal":  # an integer as printed: a count or a round figure
-        return fmt_float(value)
+        return style.number(value)
     if printed.kind == "sexagesimal":
-        return sexagesimal(value, seconds_decimals=2)
-    return fmt_float(value, 16)
+        for decimals in (2, 1, 0):
+            text = style.angle(value, decimals)
+            if most is None or len(text) <= most + 2:  # ° ' '' are narrow: two more allowed
+                break
+        return text
+    if printed.kind == "decimal" and printed.decimals:
+        text = fixed(value, printed.decimals + 3, style.decimal, style.minus)
+        return text if most is None or len(text) <= most else style.fixed(value, most=most)
+    if printed.kind == "decimal" and float(value).is_integer():  # a count, a round figure
+        return style.number(value)
+    if style.digits is None and most is None:
+        return style.number(value)
+    return trimmed(style.fixed(value, most=most), style.decimal)  # 3/8: 0.375, not 0.3750000
 
 
 def sexagesimal(degrees: float, seconds_decimals: int = 2) -> str:
-    sign = "-" if degrees < 0 else ""
-    total = round(abs(degrees) * 3600, seconds_decimals)
-    d, rem = divmod(total, 3600)
-    m, s = divmod(rem, 60)
-    return f"{sign}{int(d)}°{int(m)}'{s:.{seconds_decimals}f}''"
+    """An angle in degrees as the output being drawn writes one (see
+    :meth:`~pendcli.render.style.NumberStyle.angle`): ``-1°7'33.14''``, ``1.69''``."""
+    return current().angle(degrees, seconds_decimals)
 
 
 def _rel(row: Row) -> str:

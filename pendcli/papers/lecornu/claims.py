@@ -12,13 +12,14 @@ fuller model (released from rest, or the exact solution extrapolated to b → 0)
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from pendcli.core.causes import Procedure
 from pendcli.core.claims import Recomputed
 from pendcli.core.errors import PendcliError
+from pendcli.core.numbers import paper_decimals
 from pendcli.numerics.besselzeros import bessel_zeros
 from pendcli.papers.lecornu.model import (
     Array,
@@ -410,7 +411,8 @@ def recompute(g: float | None = None) -> dict[str, Recomputed]:
     out: Claims = {}
     for build in BUILDERS:
         out.update(build(inputs))
-    return out
+    # the computed notes in the memoir's decimal comma, as the table's notes beside them
+    return {k: replace(r, note=paper_decimals(r.note)) for k, r in out.items()}
 
 
 # --- the author's own procedures, from his printed values --------------------------------
