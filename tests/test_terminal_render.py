@@ -25,9 +25,6 @@ import sys
 import pytest
 from cli_helpers import PENDCLI, invoke
 
-# The zeros' column is written with repr by its command (pendcli/cli/lecornu.py), not through
-# the terminal's number style: the one table still showing 16-17 digits.
-_REPR_COLUMN = pytest.mark.xfail(strict=True, reason="the command formats its column with repr")
 COMMANDS = [
     ("reproduce",),
     ("reproduce", "--notes"),
@@ -42,7 +39,7 @@ COMMANDS = [
     ("charbonnier", "integral", "5"),
     ("charbonnier", "integral", "5", "--tol", "1e-10"),
     ("lecornu", "claims"),
-    pytest.param(("lecornu", "zeros"), marks=_REPR_COLUMN),
+    ("lecornu", "zeros"),
     ("lecornu", "example"),
     ("lecornu", "ode-check"),
     ("lecornu", "g-sensitivity"),

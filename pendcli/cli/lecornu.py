@@ -138,7 +138,7 @@ def _zeros_rich_table(title: str, document: dict[str, object], values: list[floa
     rows = [{"k": k + 1, "zero": z} for k, z in enumerate(values)]
     columns = [
         Column("k", "k", justify="right"),
-        Column("zero", "j", fmt=lambda r: repr(r["zero"]), justify="right"),
+        Column("zero", "j", justify="right", digits=7),
     ]
     emit(OutputFormat.table, [(title, rows, columns)], {**document, "zeros": rows})
 
@@ -310,11 +310,12 @@ def _best_g_rows(best: dict[str, object], g0: float) -> list[dict[str, str]]:
 
 def _g_column(key: str) -> Column:
     from pendcli.render import Column
+    from pendcli.render.style import current
 
     def text(row: Row) -> str:
         value = row.get(key)
         mark = _VERDICT_MARKS.get(str(row.get(f"verdict {key}")), "?")
-        return f"{value:.5g} {mark}" if isinstance(value, float) else ""
+        return f"{current().fixed(value, 5)}\u00a0{mark}" if isinstance(value, float) else ""
 
     return Column(key, key.replace("g=", "g = "), fmt=text, justify="right")
 

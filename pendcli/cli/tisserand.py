@@ -94,7 +94,7 @@ def _reading_columns(printed: Mapping[str, str]) -> tuple[Column, ...]:
         Column(
             "displacement_mm",
             f"shift, mm (printed {printed['shift']})",
-            fmt=lambda r: f"{r['displacement_mm']:.3g}",
+            digits=3,
             justify="right",
         ),
     )
@@ -157,15 +157,15 @@ def _example_columns(rows: list[dict[str, Any]]) -> tuple[Column, ...]:
         Column("published", "published", justify="right"),
         Column("series", "series (I)-(V)", fmt=_angle_or_number("series"), justify="right"),
         Column("exact", "exact (quad)", fmt=_angle_or_number("exact"), justify="right"),
-        Column("series_error", "series - exact", fmt=_number("series_error", 3), justify="right"),
+        Column("series_error", "series - exact", justify="right", digits=3),
         Column(
             "series_rel_error", "rel. error", fmt=_relative("series_rel_error"), justify="right"
         ),
-        Column("methods_diff", "ODE - quad", fmt=_number("methods_diff", 2), justify="right"),
+        Column("methods_diff", "ODE - quad", justify="right", digits=2),
         Column(
             "elliptic_rel_diff",
             "elliptic/quad - 1",
-            fmt=_number("elliptic_rel_diff", 2),
+            digits=2,
             justify="right",
         ),
         Column("unit", "diff. unit"),
@@ -203,16 +203,14 @@ def _series_columns() -> list[Column]:
     from pendcli.render import Column
 
     columns = [
-        Column("theta0_deg", "θ0 (°)", fmt=_number("theta0_deg", 6), justify="right"),
-        Column("theta1_deg", "θ1 (°)", fmt=_number("theta1_deg", 6), justify="right"),
+        Column("theta0_deg", "θ0 (°)", justify="right", digits=6),
+        Column("theta1_deg", "θ1 (°)", justify="right", digits=6),
     ]
     # The exact value to 6 digits and the series' relative error: the series value itself is
     # exact·(1 + error), in full in JSON and CSV (an 80-column terminal holds 8 columns).
     for key, label in (("k1", "k'/k"), ("k2", "k''/k"), ("precession", "Ω (rad)")):
         columns += [
-            Column(
-                f"{key}_exact", f"{label} exact", fmt=_number(f"{key}_exact", 6), justify="right"
-            ),
+            Column(f"{key}_exact", f"{label} exact", justify="right", digits=6),
             Column(
                 f"{key}_rel_error",
                 "series error",
