@@ -78,6 +78,10 @@ INCONSISTENT = {
     "lecornu.result.vertical_to_elongation",
     # lines 920-932: the same (π² ± 12b), and 1/g for b/g at line 920.
     "lecornu.result.t_equals_t_prime",
+    # line 930: the same (π² − 12b) beside b/g, in the root expanded.
+    "lecornu.result.t_prime_root",
+    # line 579: the same √(b/(gl)), now named a difference of amplitudes.
+    "lecornu.result.elongation_difference_relative",
     # lines 1004, 1008: c² cos θ/(l² sin³θ) beside l θ'' (l³ is due), and the l-form's
     # derivatives printed in t (d²θ/dt² beside dθ/dt: L T^-2 against T^-1).
     "lecornu.result.conical_linear_form",
@@ -118,6 +122,11 @@ IMPLIED_ZERO = {
     "lecornu.result.inflection_at_vertical",
     "lecornu.result.area_theorem",
     "lecornu.result.xref_monotone",
+    # lines 462-1135: (9) cited (line 501, its 0 printed at line 116), « raccourcissement »
+    # (a sign: > 0, line 565), « la vitesse négative » (< 0, line 902)
+    "lecornu.result.reduces_to_9",
+    "lecornu.result.descending_half_lengthened",
+    "lecornu.result.negative_speed_quarter",
 }
 
 
