@@ -127,6 +127,8 @@ IMPLIED_ZERO = {
     "lecornu.result.reduces_to_9",
     "lecornu.result.descending_half_lengthened",
     "lecornu.result.negative_speed_quarter",
+    # « tend vers zéro » (line 579)
+    "lecornu.result.elongation_difference_vanishes",
 }
 
 

@@ -346,6 +346,19 @@ def reference_elongation_difference() -> Any:
     return reference(exact, "amplitude ∝ l^(-3/4) at l and l'", scale=eps, order=2)
 
 
+def reference_elongation_difference_far() -> Any:
+    """Line 579, « tend vers zéro à mesure que la longueur augmente »: θ' as in
+    reference_elongation_difference, the length large (l -> l/ε²), through ε⁰."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    b, g, length, theta = symbols("b", "g", "l", "theta")
+    far = length / eps**2
+    later = far + b * sp.pi * sp.sqrt(far / g)
+    exact = {"thetap": theta * (far / later) ** sp.Rational(3, 4), "l": far}
+    return reference(exact, "amplitude ∝ l^(-3/4), l large", scale=eps, order=1)
+
+
 def reference_vertical_phase() -> Any:
     """Line 599: the pendulum vertical at t = 0 in (22), (2/b)√(ga) − φ = λπ (line 513 at
     l = a), so φ = 2/p − λπ, and ψ = φ − 2/p (lines 593-595 as read) = −λπ; λ = 0, 1, 2."""
@@ -390,6 +403,7 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_half_durations": reference_half_durations,
     "reference_largest_length_sign": reference_largest_length_sign,
     "reference_elongation_difference": reference_elongation_difference,
+    "reference_elongation_difference_far": reference_elongation_difference_far,
     "reference_vertical_phase": reference_vertical_phase,
     "reference_x_in_t": reference_x_in_t,
 }
