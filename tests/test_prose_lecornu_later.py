@@ -180,3 +180,45 @@ def test_with_sin_alpha_zero_the_integral_of_18_is_a_multiple_of_phi() -> None:
             )
             phi = mpmath.sqrt(x) * mpmath.besselj(1, 2 * mpmath.sqrt(x))
             assert integral == pytest.approx(mpmath.pi / 4 * phi, rel=1e-20)
+
+
+# --- line 599: the phase that vanishes is ψ, not φ ------------------------------------------------
+
+
+def test_vertical_at_the_start_makes_psi_not_phi_a_multiple_of_pi() -> None:
+    """(22) in t, θ = R l^(-3/4) sin((2/b)√(gl) − φ), vertical at t = 0 (l = a): φ = 2/p − λπ,
+    and (25)'s ψ = φ − 2/p; then θ(0) = 0 while sin φ is not 0."""
+    with mpmath.workdps(30):
+        a, g, b = mpmath.mpf(1), mpmath.mpf("9.81"), mpmath.mpf("0.05")
+        p = b / mpmath.sqrt(g * a)
+        for lam in (0, 1, 2):
+            phi = 2 / p - lam * mpmath.pi
+            assert abs(mpmath.sin(2 / b * mpmath.sqrt(g * a) - phi)) < mpmath.mpf("1e-25")
+            assert abs(mpmath.sin(phi - 2 / p)) < mpmath.mpf("1e-25")
+            assert abs(mpmath.sin(phi)) > mpmath.mpf("0.1")
+
+
+# --- line 690: s = g/b is a rate; (31) is good when s·z0 is small -------------------------------
+
+
+def _error_of_31(s: float, z0: float, alpha: float = 0.3) -> float:
+    """(30), z θ'' + 2θ' + s sin θ = 0, from z0 (θ = α, θ' = 0) down to z0/2, against (31)."""
+
+    def rhs(z: float, y: np.ndarray) -> list[float]:
+        return [y[1], -(2 * y[1] + s * math.sin(y[0])) / z]
+
+    z = z0 / 2
+    sol = solve_ivp(rhs, (z0, z), [alpha, 0.0], rtol=1e-12, atol=1e-14)
+    bracket = (z - z0) * (z**2 - 5 * z * z0 - 2 * z0**2) / (2 * z) + 3 * z0**2 * math.log(z / z0)
+    printed = alpha - s * math.sin(alpha) / (2 * z) * (z - z0) ** 2
+    printed += s**2 * math.sin(2 * alpha) / 12 * bracket
+    return abs(printed - float(sol.y[0, -1]))
+
+
+def test_the_series_in_s_needs_s_times_z0_small_not_s() -> None:
+    """The same small s = 0.01 per second: (31) is good for z0 = 1 s (s·z0 = 0.01) and useless
+    for z0 = 3000 s (s·z0 = 30); its error grows as (s·z0)³, the first power it neglects: the
+    number that must be small is s·z0 = ga/b²."""
+    assert _error_of_31(0.01, 1.0) < 1e-9
+    assert _error_of_31(0.01, 3000.0) > 0.1
+    assert _error_of_31(0.01, 100.0) / _error_of_31(0.01, 10.0) == pytest.approx(1000, rel=0.05)
