@@ -44,6 +44,7 @@ SLOW_FAMILIES = {
     "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
     "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
+    "tests/test_prose_lecornu_later.py::test_the_reference_of_*": "the table after (26), sympy",
     "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
     "tests/test_terminal_fit.py::*": "each command's whole output at two widths",
     "tests/test_terminal_render.py::test_render_*": "each command's whole output at three widths",

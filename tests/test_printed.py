@@ -78,6 +78,10 @@ INCONSISTENT = {
     "lecornu.result.vertical_to_elongation",
     # lines 920-932: the same (π² ± 12b), and 1/g for b/g at line 920.
     "lecornu.result.t_equals_t_prime",
+    # line 930: the same (π² − 12b) beside b/g, in the root expanded.
+    "lecornu.result.t_prime_root",
+    # line 579: the same √(b/(gl)), now named a difference of amplitudes.
+    "lecornu.result.elongation_difference_relative",
     # lines 1004, 1008: c² cos θ/(l² sin³θ) beside l θ'' (l³ is due), and the l-form's
     # derivatives printed in t (d²θ/dt² beside dθ/dt: L T^-2 against T^-1).
     "lecornu.result.conical_linear_form",
@@ -118,7 +122,7 @@ def test_every_row_with_a_formula_has_its_printed_form(paper: str) -> None:
 _NAME_OR_NUMBER = re.compile(r"[A-Za-z_][A-Za-z_0-9]*|\d+")
 
 
-# Prose claims whose formula has a 0 the sentence says in words (a19): « une inflexion »
+# Prose claims whose formula has a 0 the sentence says in words: « une inflexion »
 # (u'' = 0 where u = 0), « cette intégrale est nulle », « varie toujours dans le même sens »
 # (a sign: > 0).
 IMPLIED_ZERO = {
@@ -130,6 +134,13 @@ IMPLIED_ZERO = {
     "lecornu.result.speed_of_lengthening",
     "lecornu.result.tangent_through_suspension",
     "lecornu.result.angular_speed_at_zero_length",
+    # lines 462-1135: (9) cited (line 501, its 0 printed at line 116), « raccourcissement »
+    # (a sign: > 0, line 565), « la vitesse négative » (< 0, line 902)
+    "lecornu.result.reduces_to_9",
+    "lecornu.result.descending_half_lengthened",
+    "lecornu.result.negative_speed_quarter",
+    # « tend vers zéro » (line 579)
+    "lecornu.result.elongation_difference_vanishes",
 }
 
 

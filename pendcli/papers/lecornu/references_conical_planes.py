@@ -210,6 +210,37 @@ def reference_homothety() -> Any:
     )
 
 
+def reference_projection_length() -> Any:
+    """Line 1096: the rod's projection on a vertical plane at the azimuth φ from it,
+    l√(1 − sin²θ sin²φ), with θ small (θ -> εθ), through ε: « confondre la longueur du
+    pendule avec sa projection »."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    length, theta, phi = real_symbols("l", "theta", "phi")
+    projection = length * sp.sqrt(1 - sp.sin(eps * theta) ** 2 * sp.sin(phi) ** 2)
+    exact = {"lproj": projection, "theta": eps * theta}
+    return make_reference(exact, "the projection of the rod, θ small", scale=eps, order=2)
+
+
+def reference_rotation_angle() -> Any:
+    """Line 1110: the ω that makes the new phase difference π/2, i.e. cancels
+    2ρ'1ρ'2 cos(ψ'2 − ψ'1) = 2 Re(Z'1 conj Z'2) of the planes turned by ω (the model of
+    reference_rotated_planes); the printed tangent of 2ω is judged as the condition
+    (tan 2ω − X) = −2 Re(Z'1 conj Z'2)/((ρ1² − ρ2²) cos 2ω), the model's product normalised."""
+    import sympy as sp
+
+    rho1, rho2, psi1, psi2, omega = real_symbols("rho1", "rho2", "psi1", "psi2", "omega")
+    z1 = rho1 * (sp.cos(psi1) - sp.I * sp.sin(psi1))
+    z2 = rho2 * (sp.cos(psi2) - sp.I * sp.sin(psi2))
+    t1 = z1 * sp.cos(omega) + z2 * sp.sin(omega)
+    t2 = -z1 * sp.sin(omega) + z2 * sp.cos(omega)
+    product = sp.expand(2 * sp.re(sp.expand(t1 * sp.conjugate(t2))))
+    condition = -product / ((rho1**2 - rho2**2) * sp.cos(2 * omega))
+    return make_reference({}, "the planes turned by ω, the new phases in quadrature",
+                          conditions=(condition,))  # fmt: skip
+
+
 # Each builder by the name the ledger's rows cite (``reference = "…"``).
 REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_primitive_angles": reference_primitive_angles,  # (47), lines 1064-1074
@@ -222,4 +253,6 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_rotated_planes": reference_rotated_planes,  # lines 1106-1108
     "reference_rotated_phases": reference_rotated_phases,  # (52), lines 1112-1126
     "reference_homothety": reference_homothety,  # lines 1128-1134
+    "reference_projection_length": reference_projection_length,  # line 1096
+    "reference_rotation_angle": reference_rotation_angle,  # line 1110
 }

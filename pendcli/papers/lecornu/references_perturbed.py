@@ -265,6 +265,20 @@ def reference_t_equals_t_prime() -> Any:
     return make_reference(exact, "(42) at k = 0, to first order in b", scale=scale, order=2)
 
 
+def reference_speed_at_quarter() -> Any:
+    """Line 902, « avec la vitesse négative »: dθ/dt at u = π/2 of reference_eq41, over k up to
+    sin 45°, p small and rg = √(g/a) about 1/s (an inequality needs every symbol's range)."""
+    import sympy as sp
+
+    exact = dict(reference_eq41().exact)
+    domain = {
+        "k": (sp.Rational(1, 20), sp.Rational(7, 10)),
+        "p": (sp.Rational(1, 1000), sp.Rational(1, 20)),
+        "rg": (sp.Rational(1, 2), 4),
+    }
+    return make_reference(exact, "θ = ω + p(kβ + k³δ) at u = π/2", domain=domain)
+
+
 # Each builder by the name the ledger's rows cite (``reference = "…"``).
 REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_eq39": reference_eq39,  # (39), lines 818-824
@@ -278,4 +292,5 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_eq42": reference_eq42,  # (42), lines 906-908
     "reference_eq42_prime": reference_eq42_prime,  # (42'), lines 910-912
     "reference_t_equals_t_prime": reference_t_equals_t_prime,  # lines 918-934
+    "reference_speed_at_quarter": reference_speed_at_quarter,  # line 902
 }

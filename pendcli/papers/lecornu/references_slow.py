@@ -13,7 +13,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from pendcli.papers.lecornu.references_base import reference, symbols
+from pendcli.papers.lecornu.references_base import phi_of, reference, symbols
 from pendcli.papers.taylor import taylor
 
 
@@ -281,6 +281,106 @@ def reference_root_epsilon() -> Any:
     return reference(exact, "the root of (27)'s solution near γt = π", scale=p, order=3)
 
 
+# --- the claims of the prose, lines 462-614 ---------------------------------------------------
+
+
+def reference_sin_alpha_zero() -> Any:
+    """Line 462, « dans le cas contraire […] la formule (10) »: (18) of line 384 with sin α = 0
+    (α = 0), its integral as printed, beside φ = √x J₁(2√x) of (10) and the constant factor."""
+    import sympy as sp
+
+    x, omega, big_c = symbols("x", "omega", "C")
+    integral = sp.Integral(sp.cos(2 * sp.sqrt(x) * sp.cos(omega)) * sp.sin(omega) ** 2,
+                           (omega, 0, sp.pi / 2))  # fmt: skip
+    # the factor the sentence leaves unnamed, by Poisson's integral for J₁
+    exact = {"u": big_c * x * integral, "varphi": phi_of(x), "Cp": big_c * sp.pi / 4}
+    return reference(exact, "(18) of line 384 at α = 0, and φ of (10)")
+
+
+def reference_large_x() -> Any:
+    """Line 501: the equation of line 499, x u'' + (1 + 3/(16x))u = 0, solved for u'', with x
+    large (x -> x/ε), through ε⁰: (9) is it with 3/(16x) neglected beside 1."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    x, u = symbols("x", "u")
+    big_x = x / eps
+    exact = {"x": big_x, "d2u_dx2": -(1 + 3 / (16 * big_x)) * u / big_x}
+    return reference(exact, "line 499's equation at large x", scale=eps, order=1)
+
+
+def _table_domain() -> dict[str, Any]:
+    """a, g about their physical values, b small beside √(ga) (the first order of the table)."""
+    import sympy as sp
+
+    small = (sp.Rational(1, 100), sp.Rational(1, 10))
+    return {"a": (sp.Rational(1, 2), 2), "g": (9, 10), "b": small}
+
+
+def reference_half_durations() -> Any:
+    """Line 565, against the smallest length a: the halves of the first oscillation from the
+    table after (26) (ascending te1 − tv1, descending tv2 − te1), first order in b."""
+    from pendcli.core.printed_check import Reference
+
+    return Reference(_table_26(), domain=_table_domain(), what="the table after (26)")
+
+
+def reference_largest_length_sign() -> Any:
+    """Line 565, against the largest length: the changes of duration of reference_largest_length
+    over a range of a, b, g (an inequality needs every symbol's range)."""
+    from pendcli.core.printed_check import Reference
+
+    exact = dict(reference_largest_length().exact)
+    return Reference(exact, domain=_table_domain(), what="quarter period at the largest length")
+
+
+def reference_elongation_difference() -> Any:
+    """Line 579: θ' = θ (l/l')^(3/4) (the amplitude of (22) at an elongation, ∝ l^(-3/4),
+    lines 569-577), l' = l + bπ√(l/g) half a period later (line 523); b scaled by ε, through ε."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    b, g, length, theta = symbols("b", "g", "l", "theta")
+    later = length + eps * b * sp.pi * sp.sqrt(length / g)
+    exact = {"thetap": theta * (length / later) ** sp.Rational(3, 4), "b": eps * b}
+    return reference(exact, "amplitude ∝ l^(-3/4) at l and l'", scale=eps, order=2)
+
+
+def reference_elongation_difference_far() -> Any:
+    """Line 579, « tend vers zéro à mesure que la longueur augmente »: θ' as in
+    reference_elongation_difference, the length large (l -> l/ε²), through ε⁰."""
+    import sympy as sp
+
+    eps = sp.Symbol("eps_", positive=True)
+    b, g, length, theta = symbols("b", "g", "l", "theta")
+    far = length / eps**2
+    later = far + b * sp.pi * sp.sqrt(far / g)
+    exact = {"thetap": theta * (far / later) ** sp.Rational(3, 4), "l": far}
+    return reference(exact, "amplitude ∝ l^(-3/4), l large", scale=eps, order=1)
+
+
+def reference_vertical_phase() -> Any:
+    """Line 599: the pendulum vertical at t = 0 in (22), (2/b)√(ga) − φ = λπ (line 513 at
+    l = a), so φ = 2/p − λπ, and ψ = φ − 2/p (lines 593-595 as read) = −λπ; λ = 0, 1, 2."""
+    import sympy as sp
+
+    p, lam = symbols("p", "lam")
+    exact = {"phi": 2 / p - lam * sp.pi, "psi": -lam * sp.pi}
+    cases = tuple({"lam": sp.Integer(n)} for n in range(3))
+    return reference(exact, "(22) vertical at t = 0", each_case=cases)
+
+
+def reference_x_in_t() -> Any:
+    """Line 614: x = gl/b² (line 112's l = b²x/g) with l = a + bt, b = p√(ga), γ = √(g/a)."""
+    import sympy as sp
+
+    a, g, t, p = symbols("a", "g", "t", "p")
+    speed = p * sp.sqrt(g * a)
+    length = a + speed * t
+    exact = {"l": length, "b": speed, "x": g * length / speed**2, "gamma": sp.sqrt(g / a)}
+    return reference(exact, "x = gl/b², l = a + bt")
+
+
 # the builders of this section, by the name the ledger cites
 REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_elongation_lengths": reference_elongation_lengths,
@@ -298,4 +398,12 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_eq27_from_9": reference_eq27_from_9,
     "reference_eq27": reference_eq27,
     "reference_root_epsilon": reference_root_epsilon,
+    "reference_sin_alpha_zero": reference_sin_alpha_zero,
+    "reference_large_x": reference_large_x,
+    "reference_half_durations": reference_half_durations,
+    "reference_largest_length_sign": reference_largest_length_sign,
+    "reference_elongation_difference": reference_elongation_difference,
+    "reference_elongation_difference_far": reference_elongation_difference_far,
+    "reference_vertical_phase": reference_vertical_phase,
+    "reference_x_in_t": reference_x_in_t,
 }
