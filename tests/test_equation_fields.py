@@ -62,7 +62,11 @@ def test_a_failing_printed_form_carries_its_evidence() -> None:
     and says why in ``evidence``, not in ``note``."""
     row = _json_row("lecornu", "lecornu.eq.16")
     entry = _toml("lecornu")["lecornu.eq.16"]
-    assert (row["status"], row["against"], row["computed"]) == ("misprint", "numbers_eq16", "misprint")
+    assert (row["status"], row["against"], row["computed"]) == (
+        "misprint",
+        "numbers_eq16",
+        "misprint",
+    )
     evidence = str(row["evidence"])
     assert evidence.startswith("the printed numbers fail (1 of 1 off: #1 0.00313"), evidence
     assert row["note"] == entry["note"] and "computed from the printed form" not in row["note"]

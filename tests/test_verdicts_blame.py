@@ -39,11 +39,19 @@ def test_every_later_use_lies_after_its_row(name: str) -> None:
     ("name", "row", "old", "new"),
     [
         # the conclusion of the row's own sentence (the old record of resal-rate)
-        ("tisserand", "tisserand.result.square-from-formula-5",
-         "used_at = [72]", "used_at = [70, 72]"),
+        (
+            "tisserand",
+            "tisserand.result.square-from-formula-5",
+            "used_at = [72]",
+            "used_at = [70, 72]",
+        ),
         # the last line of the row (the old record of mean_pendulum's kind)
-        ("charbonnier", "charbonnier.result.integration-by-parts",
-         "used_at = [461]", "used_at = [456]"),
+        (
+            "charbonnier",
+            "charbonnier.result.integration-by-parts",
+            "used_at = [461]",
+            "used_at = [456]",
+        ),
     ],
 )
 def test_a_later_use_within_the_row_is_refused(name: str, row: str, old: str, new: str) -> None:
