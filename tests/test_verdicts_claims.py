@@ -84,3 +84,30 @@ def test_the_finishing_rule_is_data() -> None:
         assert own_verdicts(claims, {"n": procedure})["n"].verdict == verdict, (value, rounding)
     with pytest.raises(PendcliError, match="quotes the text's words"):
         Procedure(("z",), lambda z: z, "z", "chopped")
+
+
+def test_the_difference_figure_shows_both_verdicts(rows) -> None:  # type: ignore[no-untyped-def]
+    """Each bar's fill follows its verdict against his procedure (a slip crossed, faithful if
+    chopped hatched, none dotted), and a legend names colours and fills; the title names no
+    colour."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+
+    from pendcli.papers.lecornu import figures
+
+    fig, ax = plt.subplots()
+    try:
+        figures.draw_printed_minus_recomputed(ax, rows, 9.81)
+        ids = [cid for _, group in figures.GROUPS for cid in group]
+        bars = [bar for container in ax.containers for bar in container]
+        hatches = {"slip": "xx", "faithful if chopped": "//", None: "..", "faithful": ""}
+        for bar, cid in zip(bars, ids, strict=True):
+            own = rows[cid].procedure_verdict
+            assert (bar.get_hatch() or "") == hatches[None if own is None else str(own)], cid
+        labels = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert "truth: discrepant" in labels and any(t.startswith("own: a slip") for t in labels)
+        assert "green" not in ax.get_title() and "red" not in ax.get_title()
+    finally:
+        plt.close(fig)
