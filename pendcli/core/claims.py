@@ -258,8 +258,8 @@ def procedure_tally(rows: Iterable[ClaimRow]) -> dict[str, int]:
 
 # --- verdicts that turn on an assumption the paper does not state -------------------------
 
-_GRID = 26  # points across an assumption's range where every claim is judged
-_BISECTIONS = 40  # halvings of a bracket where a claim's verdict changes
+_GRID = 21  # points across an assumption's range where every claim is judged
+_BISECTIONS = 16  # halvings of a bracket where a claim's verdict changes
 
 
 def with_conditions(
