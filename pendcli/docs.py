@@ -129,11 +129,17 @@ def _paper_causes(key: str, rows: list[ClaimRow]) -> list[str]:
     by_cause: dict[str, list[str]] = {}
     for r in rows:
         by_cause.setdefault(str(r.cause), []).append(r.id.split(".", 1)[1])
-    own = {v: sum(str(r.procedure_verdict) == v for r in rows) for v in ("slip", "faithful")}
+    from pendcli.core.vocabulary import PROCEDURE_VERDICTS
+
+    own = {str(v): sum(r.procedure_verdict == v for r in rows) for v in PROCEDURE_VERDICTS}
     unknown = sum(r.procedure_verdict is None for r in rows)
+    conditional = ", ".join(
+        f"{n} {word}" for word, n in own.items() if word.startswith("faithful if") and n
+    )
+    faithful = f"{own['faithful']} faithful" + (f" ({conditional})" if conditional else "")
     lines = [
         f"- **{key.capitalize()}**: {len(rows)} do not agree; against his own procedure "
-        f"{own['slip']} are slips, {own['faithful']} faithful, and {unknown} have no known "
+        f"{own['slip']} are slips, {faithful}, and {unknown} have no known "
         "procedure. By cause:"
     ]
     for cause in (*CAUSE_PHRASES, *sorted(set(by_cause) - set(CAUSE_PHRASES))):

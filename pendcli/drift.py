@@ -47,6 +47,7 @@ CLAIM_COLUMNS = (
     "procedure_value",
     "cause",
     "from",
+    "condition",
 )
 FORMULA_COLUMNS = ("id", "source", "claimed_order", "observed_order", "verdict", "cause", "from")
 # finding: a failing or misprinted row that restates no other (tables/README.md, Blame);
@@ -70,7 +71,8 @@ TOLERANCES: dict[str, tuple[str, float]] = {
     "lines": ("same", 0.0),
     "status": ("same", 0.0),  # the ledger's computed status, and its printed form's dimensions
     "kind": ("same", 0.0),  # the kind of check that decides the row
-    "finding": ("same", 0.0),  # a finding of its own, and a conditional verdict's two sides
+    # a finding of its own, and a conditional verdict's sides (a ledger row's or a claim's)
+    "finding": ("same", 0.0),
     "condition": ("same", 0.0),
     "dimensions": ("same", 0.0),
     "recomputed": ("rel", 1e-9),  # closed forms, special functions: last-bit noise only

@@ -762,7 +762,9 @@ def _claim_note(row: Row) -> str:
     text = f"printed {printed}, recomputed {recomputed} {unit}".rstrip()
     cause = word_of(row.get("cause"))
     own = f"; against his procedure, {own_of(row)}" if row.get("procedure_verdict") else ""
-    return f"{text}{own}; {cause}" if cause and disagrees(row) else text
+    # a verdict that turns on an unstated assumption names each side, as the ledger's rows do
+    condition = f"; {text_of(row, 'condition')}" if row.get("condition") else ""
+    return f"{text}{own}{condition}; {cause}" if cause and disagrees(row) else text + condition
 
 
 def _equation_note(row: Row) -> str:

@@ -63,6 +63,8 @@ def _cells(row: dict[str, object], columns: tuple[str, ...]) -> dict[str, object
     cells = {k: row[k] for k in columns}
     cells["from"] = " ".join(str(i) for i in row["from"])  # type: ignore[attr-defined]
     cells["cause"] = row["cause"] or ""
+    if "condition" in cells:
+        cells["condition"] = cells["condition"] or ""
     return cells
 
 

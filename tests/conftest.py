@@ -116,6 +116,7 @@ SLOW_CASES = {
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
+    "lecornu_across_g": "Lecornu's claims evaluated, each judged across the range of g",
 }
 # The long families of like cases: one case per committed ledger row, or one edit of
 # the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps

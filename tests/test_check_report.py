@@ -19,10 +19,10 @@ from pendcli.drift import find_drifts
 
 HEADER = (
     "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,procedure_verdict,"
-    "procedure_value,cause,from\n"
+    "procedure_value,cause,from,condition\n"
 )
-ROW_A = 'x.a,"5,14",,5.135622301840683,,-0.0043776,-0.00085,agrees,,,,\n'
-ROW_B = 'x.b,"2,5",,2.5,,0.0,0.0,agrees,,,,\n'
+ROW_A = 'x.a,"5,14",,5.135622301840683,,-0.0043776,-0.00085,agrees,,,,,\n'
+ROW_B = 'x.b,"2,5",,2.5,,0.0,0.0,agrees,,,,,\n'
 NAME = "p-claims.csv"
 
 

@@ -57,21 +57,26 @@ def test_the_ledgers_words_are_their_own_fields(key: str) -> None:
 
 
 def test_a_failing_printed_form_carries_its_evidence() -> None:
-    """Lecornu's (16) prints 0,00313 for b²/(4g) = 0,0031218: the engine computes fails from
-    the printed digits, and says why in ``evidence``, not in ``note``."""
+    """Lecornu's (16) prints 0,00313 for b²/(4g) = 0,0031218: the engine computes, from the
+    printed digits, a misprint (its 0,00312 reading holds; no later length carries the digit)
+    and says why in ``evidence``, not in ``note``."""
     row = _json_row("lecornu", "lecornu.eq.16")
     entry = _toml("lecornu")["lecornu.eq.16"]
-    assert (row["status"], row["against"], row["computed"]) == ("fails", "numbers_eq16", "fails")
+    assert (row["status"], row["against"], row["computed"]) == (
+        "misprint",
+        "numbers_eq16",
+        "misprint",
+    )
     evidence = str(row["evidence"])
     assert evidence.startswith("the printed numbers fail (1 of 1 off: #1 0.00313"), evidence
     assert row["note"] == entry["note"] and "computed from the printed form" not in row["note"]
-    assert row["corrected_note"] == entry["corrected"] and row["kind"] == "digits"
+    assert row["reading_note"] == entry["reading"] and row["kind"] == "digits"
     assert row["inconsistency"] is None
     joined = equation_notes(row)
-    assert f"computed from the printed form: fails: {evidence}" in joined
+    assert f"computed from the printed form: misprint: {evidence}" in joined
     # its verdict turns with g, which the paper does not print: the note says so first
-    assert joined.startswith("conditional: holds for g <= 9.80, fails for g > 9.80 ")
-    assert f"; corrected: {entry['corrected']}; " in joined
+    assert joined.startswith("conditional: holds for g <= 9.80, misprint for g > 9.80 ")
+    assert f"; reading: {entry['reading']}; " in joined
 
 
 def test_a_row_without_a_reference_has_no_computed_status() -> None:

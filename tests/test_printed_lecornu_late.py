@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 from ledgers import committed_ledger, committed_row, first_line, row_ids
-from mutations import altered_tables, judged_after_edit, printed_line
+from mutations import altered_tables, field_line, judged_after_edit, printed_line
 
 from pendcli.core.dimensions import check_dimensions
 from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, verify_printed
@@ -438,20 +438,23 @@ def test_an_inequality_is_judged_on_its_margin() -> None:
     assert computed is not None and "margin" in computed
 
 
-def test_the_vertical_to_elongation_misprint_set_to_its_reading_is_refused() -> None:
+def test_the_vertical_to_elongation_failure_set_to_its_correction_is_refused() -> None:
     row_id = "lecornu.result.vertical_to_elongation"
-    _, problem = _problem(row_id, _printed_line(row_id), _reading_line(row_id))
+    corrected = printed_line(committed_ledger("lecornu"), row_id, "corrected_formula")
+    _, problem = _problem(row_id, _printed_line(row_id), corrected)
     assert problem is not None
-    assert problem.startswith("recorded misprint, but the printed form gives holds")
+    assert problem.startswith("recorded fails, but the printed form gives holds")
 
 
 @pytest.mark.parametrize(("decimal", "passes"), [("0.12", False), ("0.133", True)])
 def test_a_rounded_decimal_is_judged_to_its_last_digit(decimal: str, passes: bool) -> None:
-    """Line 563's 0,13 in the reading: (π² − 12)/16 = −0,1332 is not 0,12 rounded, and is
+    """Line 563's 0,13 in the correction: (π² − 12)/16 = −0,1332 is not 0,12 rounded, and is
     0,133 rounded."""
     row_id = "lecornu.result.vertical_to_elongation"
-    reading = _reading_line(row_id).replace("printed = '", "reading_formula = '")
-    computed, problem = _problem(row_id, reading, reading.replace("- 0.13*b/g", f"- {decimal}*b/g"))
+    corrected = field_line(committed_row(row_id), "corrected_formula")
+    computed, problem = _problem(
+        row_id, corrected, corrected.replace("- 0.13*b/g", f"- {decimal}*b/g")
+    )
     if passes:
         assert problem is None, problem
     else:
@@ -467,7 +470,7 @@ def test_the_mean_pendulum_correction_is_computed() -> None:
     row = committed_row("lecornu.result.mean_pendulum")
     symbols = committed_ledger("lecornu").symbols_for(row)
     computed, problem = verify_printed(row, symbols, REFERENCES)
-    assert problem is None and computed is not None and computed.startswith("fails:")
+    assert problem is None and computed is not None and computed.startswith("misprint:")
     assert "7*pi**3" in computed
     ratios = []
     with mpmath.workdps(25):

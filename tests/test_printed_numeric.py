@@ -307,7 +307,7 @@ def _verified_in(paper: str, row_id: str, root: Path = TABLES) -> tuple[str | No
 @pytest.mark.parametrize(
     ("paper", "row_id", "status"),
     [
-        ("tisserand", "tisserand.result.numerical-application", "misprint"),
+        ("tisserand", "tisserand.result.numerical-application", "holds"),
         ("tisserand", "tisserand.result.displacement", "holds"),
         ("lecornu", "lecornu.result.table_26", "holds"),
         ("lecornu", "lecornu.result.largest_length_comparison", "misprint"),
@@ -323,21 +323,29 @@ def test_the_rows_status_is_computed(paper: str, row_id: str, status: str) -> No
 
 
 def test_tisserands_amplitudes_in_minutes_give_none_of_his_coefficients() -> None:
-    # the misprint's two sides: 30', 15' give about 1'' for 1°7'33''; 30°, 15° give it
+    # the OCR reading's two sides: 30°, 15° (read) give all three coefficients; 30', 15'
+    # (the OCR's primes, the reading removed) give about 1'' for 1°7'33''
+    import dataclasses
+
     computed, _ = _verified_in("tisserand", "tisserand.result.numerical-application")
-    assert computed is not None
-    printed_side, reading_side = computed.split("the reading holds")
-    assert "3 of 3 off, theta0 = 0.5, theta1 = 0.25" in printed_side
-    assert "1°7'33'' agrees" in reading_side and "2'42'' agrees" in reading_side
+    assert computed is not None and computed.startswith("holds:")
+    assert "1°7'33'' agrees" in computed and "2'42'' agrees" in computed
+    ledger = load_ledger("tisserand")
+    row = next(r for r in ledger.rows if r.id == "tisserand.result.numerical-application")
+    assert [i for i, _ in row.readings] == ["degree-as-prime"]
+    unread = dataclasses.replace(row, readings=())
+    references = paper_named("tisserand").references()
+    computed, problem = verify_printed(unread, ledger.symbols_for(row), references)
+    assert "3 of 3 off, theta0 = 0.5, theta1 = 0.25" in f"{computed} {problem}"
 
 
 @pytest.mark.parametrize(
     ("paper", "row_id", "old", "new"),
     [
-        # the misprint's printed set to its reading: refused (recorded misprint, computed holds)
+        # an amplitude the reading does not read: refused (recorded holds, computed not)
         ("tisserand", "tisserand.result.numerical-application",
          "printed = 'theta0 = 30*arcmin; theta1 = 15*arcmin;",
-         "printed = 'theta0 = 30*degree; theta1 = 15*degree;"),
+         "printed = 'theta0 = 30*arcmin; theta1 = 14*arcmin;"),
         ("lecornu", "lecornu.result.largest_length_comparison",
          "printed = 'dasc = (3*pi**2 + 12*b)/(16*g); ddesc = (pi**2 - 12*b)/(16*g)'",
          "printed = 'dasc = (3*pi**2 + 12)*b/(16*g); ddesc = (pi**2 - 12)*b/(16*g)'"),

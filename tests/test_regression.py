@@ -11,9 +11,9 @@ from pendcli.drift import TOLERANCES, compare_tables
 
 HEADER = (
     "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,procedure_verdict,"
-    "procedure_value,cause,from\n"
+    "procedure_value,cause,from,condition\n"
 )
-ROW = 'x.a,"5,14",,5.135622301840683,,-0.004377698159317,-0.00085,agrees,,,,\n'
+ROW = 'x.a,"5,14",,5.135622301840683,,-0.004377698159317,-0.00085,agrees,,,,,\n'
 
 
 def test_identical_tables_have_no_drift():
@@ -67,8 +67,8 @@ def test_malformed_committed_table_names_the_file(bad):
         ("", "empty table; expected the header line id,published,unit"),
         (HEADER.replace("verdict", "verdicts") + ROW, "line 1: header"),
         (HEADER.replace("unit,", "") + ROW, "line 1: header"),
-        (HEADER + ROW + "x.b,1\n", "line 3 has 2 fields; expected 12"),
-        (HEADER + ROW.replace("agrees", "agrees,extra"), "line 2 has 13 fields"),
+        (HEADER + ROW + "x.b,1\n", "line 3 has 2 fields; expected 13"),
+        (HEADER + ROW.replace("agrees", "agrees,extra"), "line 2 has 14 fields"),
         (HEADER + ROW + ROW, "line 3 repeats id 'x.a'"),
         (HEADER + ROW.replace("x.a", ""), "line 2 has an empty id"),
         (HEADER + ROW + ROW.replace("x.a", "x.b").replace("-0.00085", '"0,1"'), "line 3, column"),

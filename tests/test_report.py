@@ -76,6 +76,8 @@ def test_tally_and_summary_count_each_verdict():
             "last-digit": 0,
             "discrepant": 0,
             "faithful": 0,
+            "faithful if chopped": 0,
+            "faithful if rounded": 0,
             "slip": 0,
             "no procedure": 2,
             "formulas holding": 1,

@@ -7,10 +7,13 @@ his earlier printed values (his lengths from his rounded zeros, his times from h
 a = the procedure on his printed inputs, and the number is
 
 ``faithful``
-    when a, rounded or chopped at the printed precision (he does both), is the printed value:
-    his digits follow from his printed inputs;
+    when a, finished by the procedure's rule (``rounding``: ``rounded``, the default, or
+    ``chopped`` where the text says so, its words in ``said``), is the printed value;
+``faithful if chopped`` / ``faithful if rounded``
+    when only the other finish gives it: faithful on a condition, that he finished this number
+    otherwise than his rule (−0,130 for his J₀(5,14) = −0,13079 is faithful if chopped);
 ``slip``
-    when it is not. A number with no known procedure has neither (never guessed).
+    when neither does. A number with no known procedure has none (never guessed).
 
 **The rule** (:func:`rule_cause`), for a number with a procedure that does not agree with the
 truth. An input *carries a slip* when it is a slip against its own procedure, or is itself
@@ -41,10 +44,18 @@ from dataclasses import dataclass
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber
 from pendcli.core.verdict import Verdict, judge
-from pendcli.core.vocabulary import CAUSES, ROOT_CAUSES, SLIP_CAUSES, Cause, ProcedureVerdict
+from pendcli.core.vocabulary import (
+    CAUSES,
+    FAITHFUL_VERDICTS,
+    ROOT_CAUSES,
+    SLIP_CAUSES,
+    Cause,
+    ProcedureVerdict,
+)
 
 __all__ = [
     "CAUSES",
+    "FINISHES",
     "ROOT_CAUSES",
     "SLIP_CAUSES",
     "ErrorSplit",
@@ -61,13 +72,27 @@ __all__ = [
 ]
 
 
+# how the author finishes a procedure's value at the printed precision
+FINISHES = ("rounded", "chopped")
+
+
 @dataclass(frozen=True)
 class Procedure:
-    """How the author computed a printed value from earlier printed values (claim ids)."""
+    """How the author computed a printed value from earlier printed values (claim ids), and
+    how he finishes it: ``rounding`` is ``rounded`` unless the text says he chops (``said``:
+    its words, « Je néglige les décimales qui suivent la seconde »)."""
 
     inputs: tuple[str, ...]
     compute: Callable[..., float]  # the inputs' values, in order -> the value
     text: str = ""  # the procedure as the paper does it, e.g. "(1 - l)/0,35"
+    rounding: str = "rounded"
+    said: str = ""  # the text's words that fix ``rounding``, where it says so
+
+    def __post_init__(self) -> None:
+        if self.rounding not in FINISHES:
+            raise PendcliError(f"a procedure's rounding is one of {FINISHES}: {self.rounding!r}")
+        if self.rounding == "chopped" and not self.said.strip():
+            raise PendcliError("a chopped procedure quotes the text's words that say so (said)")
 
     def __call__(self, values: Mapping[str, float]) -> float:
         """The procedure on ``values`` (claim id -> value; only the inputs are read)."""
@@ -123,10 +148,20 @@ def corrected_value(
 # --- against his own procedure, and the rule ------------------------------------------------
 
 
-def procedure_verdict(number: PrintedNumber, author: float) -> ProcedureVerdict:
-    """``faithful`` when his own value ``author`` rounds or chops to the printed one."""
-    faithful = rounds_to(number, author) or chops_to(number, author)
-    return ProcedureVerdict.FAITHFUL if faithful else ProcedureVerdict.SLIP
+def procedure_verdict(
+    number: PrintedNumber, author: float, rounding: str = "rounded"
+) -> ProcedureVerdict:
+    """``faithful`` when his own value ``author`` finished by his rule (``rounding``) is the
+    printed one, faithful on the other finish when only that gives it, else ``slip``."""
+    rounded, chopped = rounds_to(number, author), chops_to(number, author)
+    own, other = (rounded, chopped) if rounding == "rounded" else (chopped, rounded)
+    if own:
+        return ProcedureVerdict.FAITHFUL
+    if other:
+        if rounding == "rounded":
+            return ProcedureVerdict.FAITHFUL_IF_CHOPPED
+        return ProcedureVerdict.FAITHFUL_IF_ROUNDED
+    return ProcedureVerdict.SLIP
 
 
 def rule_cause(
@@ -135,12 +170,13 @@ def rule_cause(
     author: float,
     slip_inputs: tuple[str, ...],
     comparison: str = "equal",
+    rounding: str = "rounded",
 ) -> tuple[Cause | None, tuple[str, ...]]:
     """The cause of a printed number with a known procedure, and its ``from`` (module doc):
     ``author`` is his procedure on his printed inputs, ``slip_inputs`` those that carry a slip."""
     if judge(number, recomputed, comparison).verdict is Verdict.AGREES:
         return None, ()
-    faithful = procedure_verdict(number, author) is ProcedureVerdict.FAITHFUL
+    faithful = procedure_verdict(number, author, rounding) in FAITHFUL_VERDICTS
     own = 0.0 if faithful else number.value - author
     if slip_inputs and (faithful or abs(author - recomputed) > abs(own)):
         return Cause.PROPAGATED, slip_inputs
@@ -195,8 +231,10 @@ def own_verdicts(
         procedure, claim = procedures[claim_id], claims[claim_id]
         author = procedure(printed)
         slips = tuple(s for s in procedure.inputs if carries_slip(s))
-        cause, sources = rule_cause(claim.number, claim.recomputed, author, slips, claim.comparison)
-        verdict = procedure_verdict(claim.number, author)
+        cause, sources = rule_cause(
+            claim.number, claim.recomputed, author, slips, claim.comparison, procedure.rounding
+        )
+        verdict = procedure_verdict(claim.number, author, procedure.rounding)
         done[claim_id] = OwnVerdict(verdict, author, procedure, cause, sources)
         return done[claim_id]
 

@@ -11,12 +11,14 @@ a claim without a computation is a defect, reported as an error, never silently 
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
 
 from pendcli.core.causes import Judged, Procedure, own_verdicts
 from pendcli.core.errors import PendcliError
+from pendcli.core.ledger_conditions import Assumption
 from pendcli.core.rows import ClaimRow, FormulaRow, Recomputed
 from pendcli.core.tables import (
     PaperTable,
@@ -49,6 +51,7 @@ __all__ = [
     "shared_formula_rows",
     "sharing_formula_rows",
     "with_causes",
+    "with_conditions",
     "with_own_verdicts",
 ]
 
@@ -118,7 +121,8 @@ def evaluate_paper(
     where the author's ``procedures`` know how he got it, against his own procedure."""
     table = load_paper_table(key)
     rows = join_claims(table, recompute())
-    return with_own_verdicts(table, rows, procedures) if procedures else rows
+    rows = with_own_verdicts(table, rows, procedures) if procedures else rows
+    return with_conditions(key, rows, recompute)
 
 
 def with_own_verdicts(
@@ -250,3 +254,119 @@ def procedure_tally(rows: Iterable[ClaimRow]) -> dict[str, int]:
     for row in rows:
         counts[NO_PROCEDURE if row.procedure_verdict is None else str(row.procedure_verdict)] += 1
     return counts
+
+
+# --- verdicts that turn on an assumption the paper does not state -------------------------
+
+_GRID = 21  # points across an assumption's range where every claim is judged
+_BISECTIONS = 16  # halvings of a bracket where a claim's verdict changes
+
+
+def with_conditions(
+    key: str, rows: Sequence[ClaimRow], recompute: Callable[[], Mapping[str, Recomputed]]
+) -> list[ClaimRow]:
+    """``rows`` with, for each claim whose verdict against the truth changes within the range
+    of an unstated numeric assumption of its paper (the ledger's ``[[assumption]]`` with a
+    ``constant`` and a ``range``: Lecornu's g), the verdict on each side of each change, in
+    ``condition`` (tables/README.md, « Assumptions and conditional verdicts »). Each change
+    is found by computation: the claims judged at points across the range, recomputed afresh
+    under each value (``tables.assuming``), the change bracketed and bisected."""
+    out = list(rows)
+    for found in _numeric_assumptions(key):
+        texts = _conditions(key, found, recompute)
+        out = [dataclasses.replace(r, condition=texts[r.id]) if r.id in texts else r for r in out]
+    return out
+
+
+def _numeric_assumptions(key: str) -> list[Assumption]:
+    from pendcli.core.ledger import ledger_path
+    from pendcli.core.ledger_conditions import parse_assumptions
+    from pendcli.core.tables import read_toml
+
+    path = ledger_path(key)
+    if not path.is_file():
+        return []
+    raw = read_toml(path, "equation ledger").get("assumption")
+    return [a for a in parse_assumptions(path, raw, None) if a.constant and a.range]
+
+
+def _conditions(
+    key: str, found: Assumption, recompute: Callable[[], Mapping[str, Recomputed]]
+) -> dict[str, str]:
+    """Claim id -> its verdicts on each side of each change within ``found``'s range."""
+    from pendcli.core.tables import assuming
+
+    assert found.constant is not None and found.range is not None
+    constant, (low, high) = found.constant, found.range
+    table = load_paper_table(key)
+    seen: dict[float, dict[str, Verdict]] = {}
+
+    def at(value: float) -> dict[str, Verdict]:
+        if value not in seen:
+            with assuming(key, constant, value):
+                results = recompute()
+            seen[value] = {
+                c.id: judge(c.number, results[c.id].value, c.comparison).verdict
+                for c in table.claims
+            }
+        return seen[value]
+
+    grid = [low + (high - low) * k / (_GRID - 1) for k in range(_GRID)]
+    out = {}
+    for claim in table.claims:
+        verdicts = [at(v)[claim.id] for v in grid]
+        if len(set(verdicts)) > 1:
+            sides = _sides(claim.id, grid, verdicts, at)
+            out[claim.id] = _condition_text(found, sides, table.constant(constant))
+    return out
+
+
+def _sides(
+    claim_id: str,
+    grid: list[float],
+    verdicts: list[Verdict],
+    at: Callable[[float], dict[str, Verdict]],
+) -> list[tuple[float, str, Verdict]]:
+    """Each change of the claim's verdict: (the bound, as printed to 4 decimals, its side
+    "<=" when the bound itself keeps the verdict below, else "<", the verdict below), then
+    (inf, "", the last verdict)."""
+    sides = []
+    for k in range(len(grid) - 1):
+        if verdicts[k] == verdicts[k + 1]:
+            continue
+        a, b = grid[k], grid[k + 1]
+        for _ in range(_BISECTIONS):
+            middle = (a + b) / 2
+            a, b = (middle, b) if at(middle)[claim_id] == verdicts[k] else (a, middle)
+        bound = round((a + b) / 2, 4)
+        op = "<=" if at(bound)[claim_id] == verdicts[k] else "<"
+        sides.append((bound, op, verdicts[k]))
+    return [*sides, (math.inf, "", verdicts[-1])]
+
+
+def _condition_text(
+    found: Assumption, sides: list[tuple[float, str, Verdict]], table_value: float
+) -> str:
+    """« agrees for g <= 9.8, last-digit for g > 9.8 (assumption g: from 9.78 to 9.83, the
+    tables take 9.81) »: every side named, as the ledger's conditional rows are."""
+    name = found.id
+    assert found.range is not None
+    parts, previous = [], None
+    flip = {"<=": ">", "<": ">="}
+    for bound, op, verdict in sides:
+        below = (
+            f"{name} {op} {bound:g}"
+            if previous is None
+            else (
+                f"{previous[0]:g} {flip[previous[1]].replace('>', '<')} {name} {op} {bound:g}"
+                if math.isfinite(bound)
+                else f"{name} {flip[previous[1]]} {previous[0]:g}"
+            )
+        )
+        parts.append(f"{verdict} for {below}")
+        previous = (bound, op)
+    low, high = found.range
+    return (
+        f"{', '.join(parts)} (assumption {name}: from {low:g} to {high:g}, the tables take "
+        f"{table_value:g})"
+    )

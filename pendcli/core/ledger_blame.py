@@ -2,7 +2,8 @@
 
 A row's slip is the author's (``fails``) when his own later work uses the wrong form: a later
 line, a footnote, a later section, or the text's next step computes with it. ``used_at``
-lists those lines and ``used`` the words there (verbatim, each on one of the lines) that
+lists those lines, each after the row's last (a row's own lines are the slip, never its later
+use), and ``used`` the words there (verbatim, each on one of the lines) that
 show it. A slip that the next step or a later use does not carry is a ``misprint``:
 ``used_at`` and ``used`` then show the right form taken, or ``unused`` says why nothing
 later uses the form. A row whose only slip is another row's (cited in a sentence, or carried
@@ -126,15 +127,17 @@ def _check_record(where: str, row: LedgerRow) -> None:
 
 
 def _check_used(where: str, row: LedgerRow, lines: list[str]) -> None:
-    """Each line of ``used_at`` in the text, not before the row, holding one of the words of
-    ``used``; each word on one of those lines."""
-    first = row.lines[0] if row.lines is not None else 1
+    """Each line of ``used_at`` in the text and later than the row (after its last line: a
+    row's own lines are the slip, never its later use), holding one of the words of ``used``;
+    each word on one of those lines."""
+    last = row.lines[1] if row.lines is not None else 0
     assert row.used_at is not None
     for number in row.used_at:
-        if not first <= number <= len(lines):
+        if not last < number <= len(lines):
             raise PendcliError(
-                f"{where}: used_at line {number} is not in [{first}, {len(lines)}] (the row's "
-                "first line to the text's last)"
+                f"{where}: used_at line {number} is not a later use: it must lie after the "
+                f"row's lines, in [{last + 1}, {len(lines)}] (the line after the row's last to "
+                "the text's last)"
             )
     texts = {n: lines[n - 1] for n in row.used_at}
     for word in row.used_words:

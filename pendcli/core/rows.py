@@ -64,6 +64,9 @@ class ClaimRow:
     procedure_value: float | None = None  # his procedure on his printed inputs
     procedure: str = ""  # the procedure, as he does it ("(1 m - l)/b"); "" when none is known
     procedure_inputs: tuple[str, ...] = ()  # the claims it reads, as printed
+    # its verdict on each side of each change within an assumption the paper leaves open
+    # (core/claims.with_conditions): "agrees for g <= 9.8, last-digit for g > 9.8 (...)"
+    condition: str | None = None
 
     def as_dict(self) -> dict[str, object]:
         """The row as JSON, CSV and the tables show it (``as_printed`` is the HTML's only):

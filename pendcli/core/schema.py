@@ -111,6 +111,12 @@ CLAIMS = RowKind(
         Field("method", _TEXT, "how it was recomputed"),
         Field("note", _TEXT, "OCR corrections, explanations of any disagreement"),
         Field("cause", ("string", "null"), _CAUSE_MEANING, CAUSES),
+        Field(
+            "condition",
+            _OPT_TEXT,
+            "its verdict on each side of each change within the range of an assumption the "
+            "paper does not state (Lecornu's g), computed; null when none turns it",
+        ),
         Field("from", ("array",), _FROM_MEANING),
     ),
 )

@@ -14,6 +14,7 @@ __all__ = [
     "CAUSES",
     "CHECKED_STATUSES",
     "CLAIM_VERDICTS",
+    "FAITHFUL_VERDICTS",
     "FORMULA_VERDICTS",
     "PROCEDURE_VERDICTS",
     "ROOT_CAUSES",
@@ -42,6 +43,10 @@ class ProcedureVerdict(StrEnum):
     (:mod:`pendcli.core.causes`): his digits follow from them with his rounding, or not."""
 
     FAITHFUL = "faithful"
+    # his digits follow only if he finished this number otherwise than his procedure's rule
+    # (a condition on the number, as an assumed g is on a verdict): chopped where he rounds
+    FAITHFUL_IF_CHOPPED = "faithful if chopped"
+    FAITHFUL_IF_ROUNDED = "faithful if rounded"  # rounded where he says he chops
     SLIP = "slip"
 
 
@@ -77,6 +82,10 @@ class Cause(StrEnum):
 
 CLAIM_VERDICTS: tuple[Verdict, ...] = tuple(Verdict)
 PROCEDURE_VERDICTS: tuple[ProcedureVerdict, ...] = tuple(ProcedureVerdict)
+# the verdicts that find his digits in his procedure (unconditionally or on a finishing rule)
+FAITHFUL_VERDICTS: tuple[ProcedureVerdict, ...] = tuple(
+    v for v in ProcedureVerdict if v is not ProcedureVerdict.SLIP
+)
 FORMULA_VERDICTS: tuple[FormulaVerdict, ...] = tuple(FormulaVerdict)
 STATUSES: tuple[EquationStatus, ...] = tuple(EquationStatus)
 # the statuses whose row names a check (a definition or a not-checkable row has none)

@@ -33,6 +33,8 @@ VERDICT_STYLES: dict[str, str] = {
     Verdict.DISCREPANT: "bold red",
     FormulaVerdict.FAILS: "bold red",  # and an equation that fails
     ProcedureVerdict.FAITHFUL: "green",
+    ProcedureVerdict.FAITHFUL_IF_CHOPPED: "yellow",  # faithful on a condition
+    ProcedureVerdict.FAITHFUL_IF_ROUNDED: "yellow",
     ProcedureVerdict.SLIP: "bold red",
 }
 NO_PROCEDURE = "no procedure known"  # a number whose author's procedure is not known
@@ -96,6 +98,18 @@ def _verdict_style(text: str) -> str | None:
     return VERDICT_STYLES.get(text)
 
 
+def _truth(row: Row) -> str:
+    """The verdict against the truth; one that turns on an unstated assumption names each
+    side (« last-digit (last-digit for g <= 9.8277, agrees for g > 9.8277) »)."""
+    condition = str(row.get("condition") or "")
+    verdict = str(row.get("verdict", ""))
+    return f"{verdict} ({condition.split(' (', 1)[0]})" if condition else verdict
+
+
+def _truth_style(text: str) -> str | None:
+    return VERDICT_STYLES.get(text.split(" (", 1)[0])
+
+
 def _own(row: Row) -> str:
     """The verdict against his own procedure, and the procedure; or that none is known."""
     verdict = row.get("procedure_verdict")
@@ -147,7 +161,7 @@ CLAIM_COLUMNS: tuple[Column, ...] = (
     ),
     Column("unit", "unit"),
     Column("rel_diff", "rel. diff", fmt=_rel, justify="right"),
-    Column("verdict", "against the truth", style=_verdict_style),
+    Column("verdict", "against the truth", fmt=_truth, style=_truth_style),
     Column("procedure_verdict", "against his procedure", fmt=_own, style=_own_style),
     Column("cause", "cause", fmt=_cause),
     # Notes can run to paragraphs: the terminal table shows their start, JSON, CSV, Markdown

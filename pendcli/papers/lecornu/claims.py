@@ -195,7 +195,7 @@ def _lengths(c: ExampleInputs) -> Claims:
             exact=_exact_at(c.rest.elongation_lengths, k),
             method=f"(b²/4g) j_(2,k)², b = {c.b} (eq. (16))",
             note=(
-                f"Author's procedure {_coefficient_text()}·z² (printed z) gives "
+                f"His printed {_coefficient_text()}·z² (printed z) gives "
                 f"{author[k]:.4f}; with l = (z/{first})² ({c.l0} at the first elongation) "
                 f"{(z_desc[k] / z_desc[0]) ** 2:.4f}."
             ),
@@ -336,7 +336,7 @@ def _j1_lengths(c: ExampleInputs) -> Claims:
         out[f"lecornu.j1_lengths.{k + 1}"] = Recomputed(
             float(c.model.passage_lengths[k]),
             method=f"(b²/4g) j_(1,k)², b = {c.b} (eq. (16))",
-            note=f"Author's procedure {_coefficient_text()}·z² (printed z) gives {author[k]:.4f}.",
+            note=f"His printed {_coefficient_text()}·z² (printed z) gives {author[k]:.4f}.",
         )
     smallest = printed_number("lecornu.j1_zeros.6")  # 3,83
     out["lecornu.x_bound"] = Recomputed(
@@ -424,11 +424,15 @@ def _text(claim_id: str) -> str:
 
 
 def _lengths_from_zeros(prefix: str, zeros: list[str]) -> dict[str, Procedure]:
-    """l = (b²/4g) z² (16), his printed coefficient times his printed zero, for each row."""
-    c = "lecornu.coefficient_b2_4g"
-    text = f"{_text(c)}·z² (16)"
+    """l = (b²/4g) z² (16) at his printed zero, for each row: b²/(4g) itself, not his printed
+    0,00313, which the lengths of lines 224 and 256 do not carry (rounded, 0,00313·z² gives
+    0,69 and 0,56 for the printed 0,68 and 0,55; b²/(4g) gives them at every g from 9,80 to
+    9,81: ledger row lecornu.eq.16). g is the tables' (the paper prints none)."""
+    speed, g = constant("speed"), constant("g")
+    text = f"b²/(4g)·z² (16), b = {_comma(speed)}, g = {g:g}"
+    coefficient = speed**2 / (4 * g)
     return {
-        f"{prefix}{k}": Procedure((c, z), lambda coef, zero: coef * zero**2, text)
+        f"{prefix}{k}": Procedure((z,), lambda zero: coefficient * zero**2, text)
         for k, z in enumerate(zeros, start=1)
     }
 

@@ -209,14 +209,50 @@ def difference_bars(rows: dict[str, ClaimRow]) -> tuple[list[Bar], list[tuple[st
     return bars, spans
 
 
+# the verdict against his own procedure, as the bar's fill pattern and edge (None: no
+# procedure of his is known)
+_OWN_HATCHES: dict[str | None, tuple[str, str]] = {
+    "faithful": ("", "faithful to his procedure (plain)"),
+    "faithful if chopped": ("//", "faithful if he chopped here (hatched /)"),
+    "faithful if rounded": ("\\\\", "faithful if he rounded here (hatched \\)"),
+    "slip": ("xx", "a slip against his procedure (crossed)"),
+    None: ("..", "no known procedure (dotted)"),
+}
+_TRUTH_LEGEND = (("C2", "agrees"), ("C1", "truncated / last digit"), ("C3", "discrepant"))
+
+
+def _legend(ax: Axes, seen: set[str | None]) -> None:
+    """Colour: the verdict against the truth; fill: the verdict against his procedure."""
+    from matplotlib.patches import Patch
+
+    handles = [Patch(facecolor=c, label=f"truth: {w}") for c, w in _TRUTH_LEGEND]
+    handles += [
+        Patch(facecolor="white", edgecolor="0.2", hatch=h, label=f"own: {w}")
+        for key, (h, w) in _OWN_HATCHES.items()
+        if key in seen
+    ]
+    ax.legend(
+        handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False
+    )
+
+
 def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float) -> None:
-    """Figure 2: printed minus recomputed, in printed units, coloured by verdict."""
+    """Figure 2: printed minus recomputed, in printed units; the colour is the verdict
+    against the truth, the fill pattern the verdict against his own procedure."""
     bars, spans = difference_bars(rows)
+    ids = [cid for _, group in GROUPS for cid in group]
     # Symmetric-log beyond ±1: the deviations miss by up to ~40 units, the rest by under 1.
     top = 3.0 * max(max(b[1] for b in bars), 1.0)
     bottom = 1.6 * min(min(b[1] for b in bars), -1.0)
-    for bx, d, verdict, _ in bars:
-        ax.bar(bx, d, color=_VERDICT_COLOURS.get(verdict, "C3"))
+    seen: set[str | None] = set()
+    for (bx, d, verdict, _), cid in zip(bars, ids, strict=True):
+        own = rows[cid].procedure_verdict
+        key = None if own is None else str(own)
+        seen.add(key)
+        ax.bar(
+            bx, d, color=_VERDICT_COLOURS.get(verdict, "C3"), hatch=_OWN_HATCHES[key][0],
+            edgecolor="0.2", linewidth=0.6,
+        )  # fmt: skip
     for name, start, end in spans:
         ax.text((start + end) / 2, top / 2, name, ha="center", va="center", fontsize=8)
     ax.axhspan(-0.5, 0.5, color="0.9", zorder=0)
@@ -228,11 +264,8 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
     ticks = sorted({s * sign for s in steps for sign in (1, -1) if bottom <= s * sign <= top})
     ax.set_yticks(ticks, [f"{v:g}".replace("-", "−") for v in ticks])
     ax.minorticks_off()
-    ax.set_title(
-        f"Lecornu's example, printed minus recomputed (g = {g:g}): green agrees, "
-        "orange truncated/last digit, red discrepant",
-        fontsize=9,
-    )
+    ax.set_title(f"Lecornu's example, printed minus recomputed (g = {g:g})", fontsize=9)
+    _legend(ax, seen)
 
 
 # The report prints these under the figures (file stem -> caption).
@@ -250,9 +283,11 @@ CAPTIONS = {
     "lecornu_printed_minus_recomputed": (
         "Every number of Lecornu's example, printed minus recomputed, in units of its last "
         "printed digit (linear within ±1, logarithmic beyond, so the deviations, off by up to "
-        "about 40 units, fit beside the rest): inside the grey band (±½) a number agrees; "
-        "orange bars round one unit away or are truncated; red bars are discrepant (see each "
-        "row's cause)."
+        "about 40 units, fit beside the rest): inside the grey band (±½) a number agrees. "
+        "The colour is the verdict against the truth (green agrees, orange truncated or one "
+        "unit away, red discrepant: see each row's cause); the fill is the verdict against "
+        "his own procedure on his printed inputs (plain faithful, hatched faithful only if he "
+        "chopped, crossed a slip, dotted no known procedure), as the legend says."
     ),
 }
 
@@ -262,15 +297,15 @@ def figures(outdir: str | Path) -> list[Path]:
     passages marked; (2) printed minus recomputed, in units of the printed last digit."""
     from pendcli.core.claims import evaluate_paper
     from pendcli.core.plotting import new_figure
-    from pendcli.papers.lecornu.claims import recompute
+    from pendcli.papers.lecornu.claims import author_procedures, recompute
 
     outdir = Path(outdir)
     m = example_model()
-    rows = {r.id: r for r in evaluate_paper("lecornu", recompute)}
+    rows = {r.id: r for r in evaluate_paper("lecornu", recompute, author_procedures())}
     path1 = outdir / "lecornu_example_theta.png"
     with new_figure(path1, size=(8.0, 4.8)) as (_fig, ax):
         draw_example_claims(ax, m, rows)
     path2 = outdir / "lecornu_printed_minus_recomputed.png"
-    with new_figure(path2, size=(9.0, 4.5)) as (_fig, ax):
+    with new_figure(path2, size=(11.5, 4.5)) as (_fig, ax):
         draw_printed_minus_recomputed(ax, rows, constant("g"))
     return [path1, path2]
