@@ -351,7 +351,7 @@ def test_each_formula_of_a_printed_form_is_marked_at_its_own_formula() -> None:
     assert [lines.get(k) for k in ("tisserand.result.cos-series",
             "tisserand.result.cos-series~formula1", "tisserand.result.cos-series~formula2")] == [
         56, 58, 60]  # fmt: skip
-    # the numerical application is a misprint (n19): marked at its wrong term, θ0 = 30',
+    # the numerical application (its 30', 15' read as degrees): marked at θ0 = 30',
     # θ1 = 15' (line 194); its printed numbers, at lines 198 and 200, by their claims
     example = sorted(m.lines[0] for m in marks
                      if m.row_id == "tisserand.result.numerical-application")  # fmt: skip

@@ -59,7 +59,7 @@ INCONSISTENT = {
     "charbonnier.result.ec-monomial",
     # lines 227-229: E_c = (1/(k²α))∫₀^θ φ dv, v a speed, upper limit an angle (for θ').
     "charbonnier.result.e-angle-integrals",
-    # lines 170-178 (a19): θl = φ, θ dl/dx = dφ/dx, (b²/g)θ = dφ/dx equate a length to the
+    # lines 170-178: θl = φ, θ dl/dx = dφ/dx, (b²/g)θ = dφ/dx equate a length to the
     # pure number φ (the memoir's φ is « multipliée par une constante arbitraire », line 160,
     # here a unit length); a holds row: the numbers hold, and (12), φ/x = φ', is consistent.
     "lecornu.eq.12",
@@ -285,7 +285,7 @@ def test_a_misprint_whose_printed_form_is_its_reading_is_refused() -> None:
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
 
-# --- d19: inequalities and per-equation cases (core/printed_check) ------------------------
+# --- inequalities and per-equation cases (core/printed_check) ------------------------
 
 
 def test_an_inequality_is_judged_at_the_random_points() -> None:
