@@ -45,6 +45,7 @@ SLOW_FAMILIES = {
     "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
+    "tests/test_reader_scan.py::test_the_pages_of_a_whole_report_*": "a whole report",
     "tests/test_terminal_fit.py::*": "each command's whole output at two widths",
     "tests/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
     "tests/test_summary.py::test_only_failing_*": "a whole reproduce of a paper, in a process",
