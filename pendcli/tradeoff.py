@@ -467,6 +467,8 @@ def method_name(family: str, method: str) -> str:
 def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
     """One panel: log error against log time, one line per method (failed points left out);
     errors outside ERROR_RANGE sit on its edge as ▲ (above) or ▼ (below, exact)."""
+    from matplotlib.colors import to_hex
+
     rows = [p for p in points if p.family == name and p.error is not None]
     edges: dict[str, set[str]] = {}  # marker -> the colours drawn with it
     for method in dict.fromkeys(p.method for p in rows):
@@ -486,7 +488,7 @@ def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
                 (p.seconds, y) for p, (y, edge) in zip(pts, drawn, strict=True) if edge == marker
             ]
             if off:
-                edges.setdefault(marker, set()).add(line.get_color())
+                edges.setdefault(marker, set()).add(to_hex(line.get_color()))
                 ax.plot(
                     *zip(*off, strict=True),
                     marker,
