@@ -588,7 +588,7 @@ def _verdict_line(row: FormulaRow) -> str:
 def draw_study(ax: Axes, row: FormulaRow, labels: PanelLabels) -> None:
     """|residual| against the parameter on log-log axes, green if it holds, red if it fails,
     with a dashed line of the claimed slope through the smallest parameter's residual."""
-    from matplotlib.ticker import LogLocator, NullFormatter, NullLocator
+    from matplotlib.ticker import LogFormatterSciNotation, LogLocator, NullFormatter, NullLocator
 
     ps = np.array([p for p, _ in row.residuals])
     rs = np.array([r for _, r in row.residuals])
@@ -618,6 +618,9 @@ def draw_study(ax: Axes, row: FormulaRow, labels: PanelLabels) -> None:
     # axis has more than one labelled tick
     if shown.size and np.floor(np.log10(shown.max())) - np.ceil(np.log10(shown.min())) < 1:
         ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+        ax.yaxis.set_major_formatter(  # every one of them labelled, not only the decade
+            LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(np.inf, np.inf))
+        )
     ax.tick_params(labelsize=PANEL_FONT)
     ax.grid(True, alpha=0.3)
 
