@@ -115,6 +115,7 @@ SLOW_CASES = {
 SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
+    "edition_pages": "the three papers' pages built whole, every formula as MathML",
 }
 # The long families of like cases: one case per committed ledger row, or one edit of
 # the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps

@@ -142,7 +142,7 @@ def test_a_word_cut_at_its_hyphen_is_joined() -> None:
 
 
 @pytest.fixture(scope="module")
-def edition(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
+def edition_pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
     """The three papers' pages and the report page, from the tables' rows (no computation),
     as write_html_report writes them."""
     from pendcli.core.tables import load_paper_table, paper_text
@@ -166,28 +166,29 @@ def edition(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
 
 
 @pytest.mark.parametrize("paper", PAPERS)
-def test_the_edition_joins_the_words_the_ocr_cut(edition: dict[str, str], paper: str) -> None:
-    shown = " ".join(visible_text(edition[paper]).split())
+def test_the_edition_joins_the_words_the_ocr_cut(edition_pages: dict[str, str], paper: str) -> None:
+    shown = " ".join(visible_text(edition_pages[paper]).split())
     for head, tail in _cut_words(paper):
         assert f"{head}{tail}" in shown, (head, tail)
         assert f"{head}- {tail}" not in shown and f"{head}-\n" not in shown
 
 
-def test_the_edition_calls_its_notes_in_order(edition: dict[str, str]) -> None:
+def test_the_edition_calls_its_notes_in_order(edition_pages: dict[str, str]) -> None:
     for paper in PAPERS:
-        body = edition[paper].split('class="edition"', 1)[1].split("<h2>", 1)[0]
+        body = edition_pages[paper].split('class="edition"', 1)[1].split("<h2>", 1)[0]
         calls = [int(n) for n in re.findall(r'<sup class="call[^"]*">(?:<a[^>]*>)?\[(\d+)\]', body)]
         assert calls == sorted(calls), paper
 
 
 @pytest.mark.parametrize("page", [*PAPERS, "report"])
-def test_the_edition_shows_no_internal_name(edition: dict[str, str], page: str) -> None:
-    assert internal_names(visible_text(edition[page])) == []
+def test_the_edition_shows_no_internal_name(edition_pages: dict[str, str], page: str) -> None:
+    assert internal_names(visible_text(edition_pages[page])) == []
 
 
-def test_the_legend_explains_every_badge(edition: dict[str, str]) -> None:
-    legend = edition["lecornu"].split('class="legend"', 1)[1].split("</p>", 1)[0]
-    badges = set(re.findall(r'<span class="(?:hl )?(s-[\w-]+|v-[\w-]+)[" ]', edition["lecornu"]))
+def test_the_legend_explains_every_badge(edition_pages: dict[str, str]) -> None:
+    page = edition_pages["lecornu"]
+    legend = page.split('class="legend"', 1)[1].split("</p>", 1)[0]
+    badges = set(re.findall(r'<span class="(?:hl )?(s-[\w-]+|v-[\w-]+)[" ]', page))
     assert badges and all(f'class="{b}"' in legend for b in badges), badges
 
 
