@@ -294,14 +294,12 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
                  stats: RenderStats,
                  rows: Mapping[str, Row]) -> list[dict[str, object]]:  # fmt: skip
     segments = math_segments(text)
-    # one number per note: a later piece of a quote or formula is called to its first's; in
-    # the order the calls are read, at each mark's end (a mark held inside another, ending
-    # first or at the same place, is called first)
+    # one number per note (a later piece of a quote or formula is called to its first's), in
+    # the order the calls are read: at each mark's end, a mark held in another called first
     called = [m for m in [*marks, *(p for _, p in passages)] if not m.continues]
-    order = sorted(called, key=lambda m: (m.end, -m.start))
-    numbers = {m.key: i for i, m in enumerate(order, 1)}
+    numbers = {m.key: i for i, m in enumerate(sorted(called, key=lambda m: (m.end, -m.start)), 1)}
     blocks: list[dict[str, object]] = []
-    texts: list[str] = []  # each block's text, for the paragraphs the OCR cut in two
+    texts: list[str] = []  # each block's text: html_prose joins what the OCR cut in two
     front = front_matter_end(text)
     breaks = page_breaks(text)
     for a, b in _split_at(text, paragraph_spans(text, segments), breaks):

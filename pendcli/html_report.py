@@ -61,10 +61,12 @@ __all__ = [
     "chromium",
     "cited_formulas",
     "locate",
+    "markdown_for_a_reader",
     "paper_page",
     "place_marks",
     "print_pdfs",
     "propagation_svg",
+    "reference_words",
     "render_stats",
     "report_page",
     "require_chromium",
@@ -326,3 +328,11 @@ def reference_words(texts: list[str]) -> dict[str, str]:
 
     tables = {p.key: reference_table(p) for p in registry.all_papers()}
     return reference_descriptions(texts, tables)
+
+
+def markdown_for_a_reader(text: str) -> str:
+    """``report.md`` as a historian reads it: no module path, no reference builder's name, no
+    raw TeX (:func:`pendcli.core.reader_text.markdown_for_reader`)."""
+    from pendcli.core.reader_text import markdown_for_reader
+
+    return markdown_for_reader(text, reference_words([text]))

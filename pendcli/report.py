@@ -382,8 +382,7 @@ def _fill(
     pdf: bool = False,
 ) -> list[Path]:
     """Every file of the report, written into ``folder``; their paths relative to it."""
-    from pendcli.core.reader_text import markdown_for_reader
-    from pendcli.html_report import reference_words
+    from pendcli.html_report import markdown_for_a_reader
     from pendcli.regression import regenerated_tables
 
     writer = _Writer(folder, quiet)
@@ -402,8 +401,7 @@ def _fill(
     lines += _stability_section(result)
     lines += _tradeoff_section(writer, tradeoff, figures.get("tradeoff", []))
     lines += _environment_section()
-    text = "\n".join(lines)  # what a historian reads: pendcli.core.reader_text
-    writer.text("report.md", markdown_for_reader(text, reference_words([text])))
+    writer.text("report.md", markdown_for_a_reader("\n".join(lines)))
     pages = _html_pages(result, folder, figures)
     writer.add(pages)
     if pdf:  # inside the folder being built, so the manifest lists the PDFs too
