@@ -102,7 +102,7 @@ lint: $(STAMP)
 	$(BIN)/mypy pendcli
 
 bench: $(STAMP)
-	$(BIN)/python -m pendcli.bench --write docs/benchmarks.md --summary README.md
+	$(BIN)/python -m pendcli.bench --write docs/benchmarks.md --summary docs/install.md
 
 # The API page (docs/api/pendcli.html): pdoc over the names `import pendcli` offers. They load
 # lazily, so they are fetched first (pdoc reads the module's __dict__).

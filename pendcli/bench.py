@@ -696,9 +696,9 @@ def _tagged(text: str, tag: str, load: tuple[float, float], heads: list[Any]) ->
 
     extra = [h for h in heads if h.what.startswith(("`make test`", "install"))]
     lines = [
-        f"Measurement `{tag}` (the README's timings block carries the same tag); one-minute "
-        f"load average {load[0]:.2f} at the start, {load[1]:.2f} at the end (2 cores: a load "
-        "above 1 slows every figure).",
+        f"Measurement `{tag}` (the timings block of docs/install.md carries the same tag); "
+        f"one-minute load average {load[0]:.2f} at the start, {load[1]:.2f} at the end "
+        "(2 cores: a load above 1 slows every figure).",
         "",
     ]
     if extra:

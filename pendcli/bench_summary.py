@@ -136,7 +136,7 @@ def summary_lines(
     at = f", at a load average of {load[0]:.1f} to {load[1]:.1f} on 2 cores" if load else ""
     lines = [
         f"Measured by one `make bench` run{at} (measurement `{tag}`, the same tag as in "
-        "[docs/benchmarks.md](docs/benchmarks.md), which has every figure and how it was taken):",
+        "[benchmarks.md](benchmarks.md), which has every figure and how it was taken):",
         "",
         "| what | wall (s) | CPU (s) | ratio | target |",
         "|---|---:|---:|---:|---|",

@@ -1,6 +1,7 @@
-"""Regenerate the generated sections of README, docs/schema.md and docs/ENGINE.md (`make regen`).
+"""Regenerate the generated sections of the docs pages (`make regen`): docs/findings.md,
+docs/verdicts.md, docs/schema.md and docs/ENGINE.md (the README links to them).
 
-The README shows real output and the real JSON schema; this module produces both, so nothing
+The pages show real output and the real JSON schema; this module produces both, so nothing
 there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
 (``<!-- sample:start -->`` ... ``<!-- sample:end -->`` for the sample output,
 ``<!-- causes:start -->`` ... for the counts of the numbers that do not agree, by cause,
@@ -267,12 +268,12 @@ SECTIONS: dict[str, Callable[[], str]] = {
 }
 # marker name -> the file holding its markers, relative to the README's folder
 SECTION_FILES: dict[str, str] = {
-    "sample": "README.md",
-    "causes": "README.md",
+    "sample": "docs/findings.md",
+    "causes": "docs/findings.md",
     "schema": "docs/schema.md",
-    "ledger": "README.md",
+    "ledger": "docs/verdicts.md",
     "kinds": "docs/ENGINE.md",
-    "findings": "README.md",
+    "findings": "docs/findings.md",
 }
 
 

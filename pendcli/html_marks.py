@@ -742,17 +742,13 @@ def _printed_terms(row: Row) -> list[str]:
     return [str(v) for v in value] if isinstance(value, list | tuple) else []
 
 
-# A unit the tables keep in the OCR's TeX (0^{sec},94; 1^m,22) as the paper sets it: raised
-_UNIT_FORMS = {"sec": "ˢᵉᶜ", "m": "ᵐ", "h": "ʰ", "s": "ˢ", "\\circ": "°"}
-_UNIT_TEX = re.compile(r"\^\{?(sec|m|h|s|\\circ)\}?")
-
-
 def printed_form(published: str) -> str:
     """A printed number as the paper sets it, not as TeX: ``0^{sec},94`` is 0ˢᵉᶜ,94, and
     ``-1,27`` is −1,27 (the typeset minus of the page)."""
     from pendcli.core.numbers import edition_minus
+    from pendcli.core.reader_text import UNIT_FORMS, UNIT_TEX
 
-    return edition_minus(_UNIT_TEX.sub(lambda m: _UNIT_FORMS[m.group(1)], published))
+    return edition_minus(UNIT_TEX.sub(lambda m: UNIT_FORMS[m.group(1)], published))
 
 
 def _claim_note(row: Row) -> str:

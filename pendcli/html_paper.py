@@ -46,6 +46,7 @@ from pendcli.html_math import (
     to_mathml,
     wrap_marks,
 )
+from pendcli.html_prose import join_continued, prose_html
 
 if TYPE_CHECKING:
     from jinja2 import Environment
@@ -293,13 +294,16 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
                  stats: RenderStats,
                  rows: Mapping[str, Row]) -> list[dict[str, object]]:  # fmt: skip
     segments = math_segments(text)
-    # one number per note: a later piece of a quote or formula is called to its first's
+    # one number per note (a later piece of a quote or formula is called to its first's), in
+    # the order the calls are read: at each mark's end, a mark held in another called first
     called = [m for m in [*marks, *(p for _, p in passages)] if not m.continues]
-    numbers = {m.key: i for i, m in enumerate(sorted(called, key=lambda m: m.start), 1)}
+    numbers = {m.key: i for i, m in enumerate(sorted(called, key=lambda m: (m.end, -m.start)), 1)}
     blocks: list[dict[str, object]] = []
+    texts: list[str] = []  # each block's text: html_prose joins what the OCR cut in two
     front = front_matter_end(text)
     breaks = page_breaks(text)
     for a, b in _split_at(text, paragraph_spans(text, segments), breaks):
+        texts.append(text[a:b])
         if (a, b) in breaks:
             blocks.append(_page_break(text, a, b, breaks.index((a, b))))
             continue
@@ -309,15 +313,15 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
                        key=lambda m: numbers[m.key])  # fmt: skip
         html = _render_span(text, a, b, inside, segments, numbers, stats)
         blocks.append({
-            "html": markup(html.strip().replace("\n", "<br>")),
-            "heading": is_heading(text[a:b]),
+            "html": markup(prose_html(html, heading := is_heading(text[a:b]))),
+            "heading": heading,
             "figure": bool(_FIGURE.fullmatch(text[a:b].strip())) and not inside,
             "front": b <= front,
             "pagebreak": "",
             "notes": (drawn := [_note(m, numbers[m.key], rows.get(m.row_id)) for m in notes]),
             "dense": _is_dense(drawn),
         })  # fmt: skip
-    return blocks
+    return join_continued(blocks, texts, _is_dense)
 
 
 # A paragraph with this many findings (or notes in all) sets its notes below it, not in the

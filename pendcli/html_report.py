@@ -61,10 +61,12 @@ __all__ = [
     "chromium",
     "cited_formulas",
     "locate",
+    "markdown_for_a_reader",
     "paper_page",
     "place_marks",
     "print_pdfs",
     "propagation_svg",
+    "reference_words",
     "render_stats",
     "report_page",
     "require_chromium",
@@ -186,11 +188,12 @@ def write_html_report(
 ) -> list[Path]:
     """Write ``out/report.html`` and ``out/papers/<paper>.html`` (atomically); return them."""
     from pendcli.core.files import atomic_write
+    from pendcli.core.reader_text import html_for_reader
 
     (out / "papers").mkdir(parents=True, exist_ok=True)
-    written = []
+    pages: dict[Path, str] = {}
     for p in papers:
-        page = paper_page(
+        pages[out / "papers" / f"{p}.html"] = paper_page(
             p,
             citations.get(p, ""),
             texts.get(p, ""),
@@ -199,10 +202,12 @@ def write_html_report(
             equations.get(p, []),
             figures.get(p, []),
         )
-        written.append(atomic_write(out / "papers" / f"{p}.html", page))
-    page = report_page(papers, claims, formulas, equations, figures.get("", []))
-    written.append(atomic_write(out / "report.html", page))
-    return written
+    pages[out / "report.html"] = report_page(
+        papers, claims, formulas, equations, figures.get("", [])
+    )
+    # what a historian reads: no module path, no builder name, no raw TeX (core/reader_text)
+    references = reference_words(list(pages.values()))
+    return [atomic_write(path, html_for_reader(page, references)) for path, page in pages.items()]
 
 
 def _ledger_fields(paper: str, rows: Sequence[Row]) -> list[Row]:
@@ -311,3 +316,23 @@ def _print_pdf(browser: str, page: Path) -> Path:
     os.chmod(tmp, 0o644)
     os.replace(tmp, target)
     return target
+
+
+def reference_words(texts: list[str]) -> dict[str, str]:
+    """Reference builder name -> what it models, for each reference of a registered paper
+    that one of ``texts`` names (only those are built): a note names a reference by what it
+    models, never by its builder (:func:`pendcli.core.reader_text.reference_descriptions`)."""
+    from pendcli.core.ledger_references import reference_table
+    from pendcli.core.reader_text import reference_descriptions
+    from pendcli.papers import registry
+
+    tables = {p.key: reference_table(p) for p in registry.all_papers()}
+    return reference_descriptions(texts, tables)
+
+
+def markdown_for_a_reader(text: str) -> str:
+    """``report.md`` as a historian reads it: no module path, no reference builder's name, no
+    raw TeX (:func:`pendcli.core.reader_text.markdown_for_reader`)."""
+    from pendcli.core.reader_text import markdown_for_reader
+
+    return markdown_for_reader(text, reference_words([text]))

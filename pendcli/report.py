@@ -382,24 +382,26 @@ def _fill(
     pdf: bool = False,
 ) -> list[Path]:
     """Every file of the report, written into ``folder``; their paths relative to it."""
+    from pendcli.html_report import markdown_for_a_reader
     from pendcli.regression import regenerated_tables
 
     writer = _Writer(folder, quiet)
     tradeoff = _tradeoff_data(result.papers, measure, writer)  # timings first, alone
     tasks = _figure_tasks(result, folder, tradeoff)
-    writer.status(f"drawing {len(tasks)} figures")
+    writer.status(f"drawing {len(tasks)} sets of figures")
     with _Drawing(tasks, jobs) as drawing:
         writer.text("claims.json", to_json(result.document()))
-        for name, text in regenerated_tables(result).items():
-            writer.text(f"tables/{name}", text)
+        for name, table in regenerated_tables(result).items():
+            writer.text(f"tables/{name}", table)
         figures = drawing.results()
+    writer.status(f"drew {sum(p.suffix == '.png' for ps in figures.values() for p in ps)} figures")
     lines = _introduction(result)
     for key in result.papers:
         lines += _paper_section(result, key, writer, figures.get(key, []))
     lines += _stability_section(result)
     lines += _tradeoff_section(writer, tradeoff, figures.get("tradeoff", []))
     lines += _environment_section()
-    writer.text("report.md", "\n".join(lines))
+    writer.text("report.md", markdown_for_a_reader("\n".join(lines)))
     pages = _html_pages(result, folder, figures)
     writer.add(pages)
     if pdf:  # inside the folder being built, so the manifest lists the PDFs too

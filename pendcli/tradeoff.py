@@ -407,10 +407,10 @@ CAPTION = (
 
 def family_title(name: str) -> str:
     """The panel title of a family: its declared title, wrapped (the name if undeclared)."""
-    import textwrap
+    from pendcli.core.reader_text import figure_text, wrapped
 
     title = families()[name].title if name in families() else name
-    return textwrap.fill(title, 56)
+    return wrapped(figure_text(title), 56)  # « (n, β) » whole; j_(ν,s) set as j with ν,s below
 
 
 def _on_scale(error: float) -> tuple[float, str]:
@@ -467,8 +467,10 @@ def method_name(family: str, method: str) -> str:
 def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
     """One panel: log error against log time, one line per method (failed points left out);
     errors outside ERROR_RANGE sit on its edge as ▲ (above) or ▼ (below, exact)."""
+    from matplotlib.colors import to_hex
+
     rows = [p for p in points if p.family == name and p.error is not None]
-    edges: set[str] = set()
+    edges: dict[str, set[str]] = {}  # marker -> the colours drawn with it
     for method in dict.fromkeys(p.method for p in rows):
         pts = [p for p in rows if p.method == method]  # in order of the setting
         drawn = [_on_scale(p.error or 0.0) for p in pts]
@@ -486,7 +488,7 @@ def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
                 (p.seconds, y) for p, (y, edge) in zip(pts, drawn, strict=True) if edge == marker
             ]
             if off:
-                edges.add(marker)
+                edges.setdefault(marker, set()).add(to_hex(line.get_color()))
                 ax.plot(
                     *zip(*off, strict=True),
                     marker,
@@ -498,7 +500,7 @@ def draw_family(ax: Axes, name: str, points: list[Point]) -> None:
     _family_axes(ax, name, edges)
 
 
-def _family_axes(ax: Axes, name: str, edges: set[str]) -> None:
+def _family_axes(ax: Axes, name: str, edges: dict[str, set[str]]) -> None:
     """Scales, the cut error range, labels, and a legend outside the data (with the edges')."""
     from matplotlib.lines import Line2D
     from matplotlib.ticker import LogLocator, NullFormatter
@@ -518,11 +520,17 @@ def _family_axes(ax: Axes, name: str, edges: set[str]) -> None:
     ax.grid(True, which="both", alpha=0.3)
     handles, _ = ax.get_legend_handles_labels()
     notes = {"^": f"error > {high:g}, off scale", "v": f"error < {low:.0e}, off scale"}
-    extra = [
-        Line2D([], [], color="gray", ls="", marker=m, ms=7, label=notes[m])
-        for m in ("^", "v")
-        if m in edges
-    ]
+    # drawn in its method's colour: the key shows that colour where one method is off scale,
+    # and a hollow marker (« in its method's colour ») where several are
+    extra = []
+    for m in ("^", "v"):
+        colours = edges.get(m, set())
+        if len(colours) == 1:
+            extra.append(Line2D([], [], color=next(iter(colours)), ls="", marker=m, ms=7,
+                                label=notes[m]))  # fmt: skip
+        elif colours:
+            extra.append(Line2D([], [], color="black", mfc="none", ls="", marker=m, ms=7,
+                                label=f"{notes[m]} (its method's colour)"))  # fmt: skip
     ax.legend(
         handles=[*handles, *extra],
         fontsize=8,
@@ -540,10 +548,13 @@ def plot_tradeoff(points: list[Point], path: str | Path) -> Path:
     ncols = 2 if len(names) > 1 else 1
     nrows = max(1, math.ceil(len(names) / ncols))
     size = (7.5 * ncols, 4.4 * nrows)  # each panel's legend sits to its right
-    with new_figure(path, nrows=nrows, ncols=ncols, size=size) as (_fig, axes):
+    with new_figure(path, nrows=nrows, ncols=ncols, size=size) as (fig, axes):
         flat = [ax for row in axes for ax in row] if nrows * ncols > 1 else [axes]
+        if len(names) % ncols:  # a last row of one: centred, not beside an empty cell
+            for ax in flat[-ncols:]:
+                ax.remove()
+            spec = flat[-1].get_subplotspec().get_gridspec()[nrows - 1, :]
+            flat[-ncols] = fig.add_subplot(spec.subgridspec(1, 4)[0, 1:3])
         for ax, name in zip(flat, names, strict=False):
             draw_family(ax, name, points)
-        for ax in flat[len(names) :]:
-            ax.set_visible(False)
     return Path(path)

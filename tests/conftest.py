@@ -46,6 +46,7 @@ SLOW_FAMILIES = {
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/test_prose_lecornu_later.py::test_the_reference_of_*": "the table after (26), sympy",
     "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
+    "tests/test_reader_scan.py::test_the_pages_of_a_whole_report_*": "a whole report",
     "tests/test_terminal_fit.py::*": "each command's whole output at two widths",
     "tests/test_terminal_render.py::test_render_*": "each command's whole output at three widths",
     "tests/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
@@ -117,6 +118,7 @@ SLOW_FIXTURES = {
     "charbonnier_report": "reproduces Charbonnier with its ledger and writes the whole report",
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
     "lecornu_across_g": "Lecornu's claims evaluated, each judged across the range of g",
+    "edition_pages": "the three papers' pages built whole, every formula as MathML",
 }
 # The long families of like cases: one case per committed ledger row, or one edit of
 # the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps

@@ -24,7 +24,7 @@ from cli_helpers import assert_clean_error, invoke
 
 PENDCLI = (sys.executable, "-m", "pendcli")
 CHEAP = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")
-README = Path(__file__).resolve().parent.parent / "README.md"
+README = Path(__file__).resolve().parent.parent / "docs" / "usage.md"
 MB = 1 << 20
 
 

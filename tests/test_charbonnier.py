@@ -406,9 +406,9 @@ def test_figure_asymptote_approaches_from_below(table_axes):
 def test_figure_axes_and_labels(table_axes):
     assert table_axes.get_xscale() == "log" and table_axes.get_yscale() == "log"
     assert table_axes.get_xlabel() == "n + 2"
-    assert "I_n(π)" in table_axes.get_ylabel()
+    assert "Iₙ(π)" in table_axes.get_ylabel() and "_" not in table_axes.get_ylabel()
     assert [t.get_text() for t in table_axes.get_legend().get_texts()] == [
-        "recomputed I_n(π)",
+        "recomputed Iₙ(π)",
         "printed (Charbonnier 1908, no. 15)",
         "asymptote √(2π/(n+2))",
     ]

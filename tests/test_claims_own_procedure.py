@@ -28,7 +28,7 @@ from pendcli.core.tables import load_paper_table
 from pendcli.core.vocabulary import SLIP_CAUSES
 from pendcli.papers.registry import PAPERS, evaluate, formula_checks, paper
 
-README = Path(__file__).resolve().parent.parent / "README.md"
+README = Path(__file__).resolve().parent.parent / "docs" / "findings.md"
 
 
 @pytest.fixture(scope="module")

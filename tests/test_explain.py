@@ -332,7 +332,8 @@ def test_cli_bad_claim_is_one_line(args):
 def test_readme_paragraph_matches_the_search(rows):
     from pathlib import Path
 
-    text = (Path(__file__).resolve().parent.parent / "README.md").read_text(encoding="utf-8")
+    page = Path(__file__).resolve().parent.parent / "docs" / "findings.md"
+    text = page.read_text(encoding="utf-8")
     paragraph = " ".join(text.split("**How he got his digits**", 1)[1].split("\n\n", 1)[0].split())
     lecornu = [r for r in rows.values() if r.paper == "lecornu" and r.verdict != "agrees"]
     explained = sum(r.explained for r in lecornu)

@@ -9,7 +9,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def _layout_section() -> str:
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    text = (ROOT / "docs" / "layout.md").read_text(encoding="utf-8")
     match = re.search(r"## Layout\n\n```\n(.*?)```", text, re.S)
     assert match, "README has no Layout section"
     return match.group(1)

@@ -530,7 +530,8 @@ def test_example_figure_curves_are_the_solutions_of_eq_3(axes, rows):
     m = model.example_model()
     figures.draw_example_claims(axes, m, rows)
     sol10, rest = solution_10_by_ode(), from_rest_by_ode()
-    curve = _line(axes, f"solution (10), b = 0,35 m/s, g = {G:g}")
+    g = f"{G:g}".replace(".", ",")  # the paper's decimal comma, in every label
+    curve = _line(axes, f"solution (10), b = 0,35 m/s, g = {g} m/s²")
     t, y = curve.get_xdata(), curve.get_ydata()
     keep = (L - B * t) >= 0.02
     theta = sol10.sol(t[keep])[0] / sol10.y_events[0][0, 0]  # θ0 at the first elongation
@@ -637,7 +638,7 @@ def test_example_plot_curve_for_other_inputs(axes):
 
         expected = np.array([theta(float(ti)) for ti in t])
     np.testing.assert_allclose(y, expected, rtol=0, atol=1e-10 * np.max(np.abs(expected)))
-    assert axes.get_xlabel() == "t (s), L = 2 m at t = 0, shortening at 0.5 m/s, g = 9.8"
+    assert axes.get_xlabel() == "t (s), L = 2 m at t = 0, shortening at 0,5 m/s, g = 9,8 m/s²"
 
 
 def test_difference_figure_draws_every_discrepant_claim(rows):

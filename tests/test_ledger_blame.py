@@ -181,7 +181,7 @@ def test_the_readmes_findings_come_from_the_ledger() -> None:
     each paper's count of findings, and (52) among the misprints, not the failures."""
     from pendcli.docs import _findings_line
 
-    readme = (TABLES.parent / "README.md").read_text("utf-8")
+    readme = (TABLES.parent / "docs" / "findings.md").read_text("utf-8")
     section = readme.split("<!-- findings:start -->")[1].split("<!-- findings:end -->")[0]
     for name in PAPERS:
         rows = _output_rows(name)

@@ -370,11 +370,17 @@ def main(
 def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.table) -> None:
     """Every claim with its id, paper and source (reads the tables only; computes nothing)."""
     from pendcli.core.claims import list_rows
+    from pendcli.core.reader_text import for_reader
     from pendcli.papers.registry import resolve_papers
     from pendcli.render import Column
 
     rows = list_rows(resolve_papers(paper))
-    columns = [Column(k, k) for k in ("id", "paper", "source", "quantity", "published", "unit")]
+
+    def raised(key: str) -> Column:  # the OCR's 0^m,5 as the page prints it, 0ᵐ,5
+        return Column(key, key, fmt=lambda r: for_reader(str(r.get(key) or ""), plain=True))
+
+    columns = [raised(k) if k in ("source", "quantity", "published") else Column(k, k)
+               for k in ("id", "paper", "source", "quantity", "published", "unit")]  # fmt: skip
     emit(fmt, [("", rows, columns)], {"claims": rows})
 
 

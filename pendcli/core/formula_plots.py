@@ -114,7 +114,7 @@ def _verdict_line(row: FormulaRow) -> str:
 def draw_study(ax: Axes, row: FormulaRow, labels: PanelLabels) -> None:
     """|residual| against the parameter on log-log axes, green if it holds, red if it fails,
     with a dashed line of the claimed slope through the smallest parameter's residual."""
-    from matplotlib.ticker import LogLocator, NullFormatter, NullLocator
+    from matplotlib.ticker import LogFormatterSciNotation, LogLocator, NullFormatter, NullLocator
 
     ps = np.array([p for p, _ in row.residuals])
     rs = np.array([r for _, r in row.residuals])
@@ -126,9 +126,12 @@ def draw_study(ax: Axes, row: FormulaRow, labels: PanelLabels) -> None:
         line = rs[i] * (ps / ps[i]) ** row.claimed_order
         ax.loglog(ps, line, "--", color="gray", lw=1)
     # the title carries what a legend would (drawing 20 legends doubled the figure's cost)
-    ax.set_title(f"{row.source}  {labels.name}\n{_verdict_line(row)}", fontsize=PANEL_FONT)
-    ax.set_xlabel(labels.parameter, fontsize=PANEL_FONT)
-    ax.set_ylabel(f"|reference − formula| ({labels.residual})", fontsize=PANEL_FONT)
+    from pendcli.core.reader_text import figure_text  # b_n v^n as bₙ vⁿ
+
+    title = figure_text(f"{row.source}  {labels.name}")
+    ax.set_title(f"{title}\n{_verdict_line(row)}", fontsize=PANEL_FONT)
+    ax.set_xlabel(figure_text(labels.parameter), fontsize=PANEL_FONT)
+    ax.set_ylabel(figure_text(f"|reference − formula| ({labels.residual})"), fontsize=PANEL_FONT)
     # Minor log ticks over many decades make tight_layout take seconds: majors only, with
     # a labelled tick at each end of a sweep narrower than a decade.
     for axis in (ax.xaxis, ax.yaxis):
@@ -136,6 +139,14 @@ def draw_study(ax: Axes, row: FormulaRow, labels: PanelLabels) -> None:
         axis.set_minor_locator(NullLocator())
         axis.set_minor_formatter(NullFormatter())
     _label_sweep_ends(ax, ps)
+    shown = rs[positive]
+    # fewer than two powers of ten within the residuals: 1, 2, 5 of each decade, so that the
+    # axis has more than one labelled tick
+    if shown.size and np.floor(np.log10(shown.max())) - np.ceil(np.log10(shown.min())) < 1:
+        ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+        ax.yaxis.set_major_formatter(  # every one of them labelled, not only the decade
+            LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(np.inf, np.inf))
+        )
     ax.tick_params(labelsize=PANEL_FONT)
     ax.grid(True, alpha=0.3)
 

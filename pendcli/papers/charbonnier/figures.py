@@ -28,10 +28,10 @@ __all__ = [
 # The report prints these under the figures (file stem -> caption).
 CAPTIONS = {
     "charbonnier-In-pi": (
-        "Charbonnier's I_n(π) = ∫₀^π sin^(n+1) x dx against n + 2 (log-log): the printed table "
+        "Charbonnier's Iₙ(π) = ∫₀^π sinⁿ⁺¹x dx against n + 2 (log-log): the printed table "
         "entries (circles) sit on the recomputed curve by construction, since every printed "
         "entry is an exact expression (π·1·3/(2·4), …); the lower panel shows the value of "
-        "each printed expression minus the recomputed I_n(π), in units in the last place of "
+        "each printed expression minus the recomputed Iₙ(π), in units in the last place of "
         "the recomputed double (0 for all seven). The dotted line is the asymptote "
         "√(2π/(n+2)) the large-n entries approach."
     ),
@@ -88,7 +88,7 @@ def draw_table(ax: Axes, n_max: int = 5) -> None:
     ns = list(range(-1, max(n_max, MIN_N_MAX) + 1))
     xs = [n + 2 for n in ns]
     ax.plot(
-        xs, [integral_pi(n) for n in ns], "-", color="tab:blue", lw=1.2, label="recomputed I_n(π)"
+        xs, [integral_pi(n) for n in ns], "-", color="tab:blue", lw=1.2, label="recomputed Iₙ(π)"
     )
     printed = printed_points()
     ax.plot(
@@ -105,8 +105,25 @@ def draw_table(ax: Axes, n_max: int = 5) -> None:
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("n + 2")
-    ax.set_ylabel("I_n(π) = ∫₀^π sin^(n+1) x dx")
+    ax.set_ylabel("Iₙ(π) = ∫₀$^π$ sinⁿ⁺¹x dx")
+    _plain_ticks(ax)
     # the printed entries are exact expressions: on the curve by construction, not by fit
-    ax.set_title("Charbonnier's I_n(π): printed (exact expressions) and recomputed")
+    ax.set_title("Charbonnier's Iₙ(π): printed (exact expressions) and recomputed")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
+
+
+def _plain_ticks(ax: Axes) -> None:
+    """The log axes' ticks as plain numbers with the paper's decimal comma (0,2 · 1 · 100),
+    not 2×10⁻¹."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    from pendcli.core.numbers import edition_number
+
+    plain = FuncFormatter(lambda v, _pos: edition_number(float(f"{v:.3g}"), 3))
+    ax.xaxis.set_major_formatter(plain)
+    ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.yaxis.set_major_formatter(plain)
+    ax.yaxis.set_minor_formatter(  # 0,2 0,3 0,5 between the decades, not every ninth
+        FuncFormatter(lambda v, pos: plain(v, pos) if f"{v:.0e}"[0] in "235" else "")
+    )

@@ -53,8 +53,19 @@ GROUPS: tuple[tuple[str, tuple[str, ...]], ...] = (
 )
 
 
+def _power(v: float) -> str:
+    """−1,2·10⁴: two figures and a power of ten, the decimal comma of the other labels."""
+    mantissa, exponent = f"{v:.1e}".split("e")
+    sup = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+    return f"{_comma(float(mantissa))}·10{str(int(exponent)).translate(sup)}"
+
+
 def _comma(v: float) -> str:
-    return f"{v:g}".replace(".", ",")
+    """A number as the paper prints one: the decimal comma (0,35; g = 9,81), one style in
+    every label of a figure."""
+    from pendcli.core.numbers import edition_number
+
+    return edition_number(float(v), 6)
 
 
 def _passage_ticks(ax: Axes, times: np.ndarray, label: str) -> None:
@@ -95,7 +106,7 @@ def _rest_label(theta_rest: np.ndarray, ax: Axes, base: str) -> str:
         ax.text(
             0.99,
             0.02,
-            f"dashed curve clipped: it goes on down to {low:.1e}".replace("-", "−"),
+            f"dashed curve clipped: it goes on down to {_power(low)}",
             transform=ax.transAxes,
             ha="right",
             fontsize=7,
@@ -114,7 +125,10 @@ def draw_example(ax: Axes, m: ExampleModel) -> None:
     ax.plot(t, theta_rest, color="C1", lw=0.8, ls="--", label=label)
     ax.plot(m.elongation_times, m.amplitude_ratios, "o", color="C0", label="elongations (10)")
     _passage_ticks(ax, m.passage_times, "vertical passages (10)")
-    ax.set_xlabel(f"t (s), L = {m.length:g} m at t = 0, shortening at {m.speed:g} m/s, g = {m.g:g}")
+    ax.set_xlabel(
+        f"t (s), L = {_comma(m.length)} m at t = 0, shortening at {_comma(m.speed)} m/s, "
+        f"g = {_comma(m.g)} m/s²"
+    )
     ax.set_ylabel("θ/θ0 (asinh scale)")
     ax.legend(fontsize=8, loc="lower left")
 
@@ -171,14 +185,20 @@ def draw_example_claims(ax: Axes, m: ExampleModel, rows: dict[str, ClaimRow]) ->
     theta, theta_rest = theta_curves(m, t)
     speed = _comma(m.speed)
     _theta_axis(ax, theta)
-    ax.plot(t, theta, color="0.3", lw=1.0, label=f"solution (10), b = {speed} m/s, g = {m.g:g}")
-    base = f"released from rest at {m.length:g} m (exact column)"
+    ax.plot(
+        t,
+        theta,
+        color="0.3",
+        lw=1.0,
+        label=f"solution (10), b = {speed} m/s, g = {_comma(m.g)} m/s²",
+    )
+    base = f"released from rest at {_comma(m.length)} m (exact column)"
     ax.plot(t, theta_rest, color="C1", lw=0.8, ls="--", label=_rest_label(theta_rest, ax, base))
     ax.plot(
         m.elongation_times, m.amplitude_ratios, "o", color="C0", label="elongations, recomputed"
     )
     _draw_printed_points(ax, m, rows)
-    ax.set_xlabel(f"t (s), pendulum {m.length:g} m long at t = 0, shortening at {speed} m/s")
+    ax.set_xlabel(f"t (s), pendulum {_comma(m.length)} m long at t = 0, shortening at {speed} m/s")
     ax.set_ylabel("θ/θ0 (asinh scale)")
     ax.set_title("Lecornu's example: elongations and vertical passages")
     ax.axhline(0, color="0.8", lw=0.5)
@@ -271,7 +291,7 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
 # The report prints these under the figures (file stem -> caption).
 CAPTIONS = {
     "lecornu_example_theta": (
-        "Lecornu's example (pendulum 1 m long at t = 0, shortened at 0,35 m/s, g = 9.81 m/s²): "
+        "Lecornu's example (pendulum 1 m long at t = 0, shortened at 0,35 m/s, g = 9,81 m/s²): "
         "θ/θ0 of the Bessel solution (10) against time, on an asinh scale (linear near 0, "
         "logarithmic beyond). Crosses: the "
         "printed elongation times and amplitudes; dots: recomputed; the vertical passages from "
