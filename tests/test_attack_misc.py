@@ -251,4 +251,4 @@ def test_a_reader_of_standard_error_that_stops_early_costs_no_output():
     )
     os.close(write)
     assert proc.returncode == 0
-    assert proc.stdout.count(b"\n") >= 5 and b"17.9598194949878" in proc.stdout
+    assert proc.stdout.count(b"\n") >= 5 and b"17.95982" in proc.stdout

@@ -303,18 +303,20 @@ def test_write_set_refuses_a_file_created_or_removed_since_it_was_read(tmp_path:
 
 
 def _docs_set(tmp_path: Path) -> Path:
-    """A README, docs/schema.md and docs/ENGINE.md with the generated sections' markers, and
-    no tables."""
-    readme = tmp_path / "README.md"
+    """A README and the docs pages holding the generated sections' markers (docs/findings.md,
+    verdicts.md, schema.md, ENGINE.md: pendcli.docs.SECTION_FILES), and no tables. Returns
+    docs/verdicts.md, the page of the ledger's section."""
+    (tmp_path / "README.md").write_text("# readme\n")
 
     def marks(*names: str) -> str:
         return "".join(f"<!-- {n}:start -->\nold {n}\n<!-- {n}:end -->\n" for n in names)
 
-    readme.write_text(f"# readme\n{marks('sample', 'causes', 'ledger', 'findings')}")
     (tmp_path / "docs").mkdir()
+    (tmp_path / "docs" / "findings.md").write_text(marks("sample", "causes", "findings"))
+    (tmp_path / "docs" / "verdicts.md").write_text(f"# verdicts\n{marks('ledger')}")
     (tmp_path / "docs" / "schema.md").write_text(marks("schema"))
     (tmp_path / "docs" / "ENGINE.md").write_text(marks("kinds"))
-    return readme
+    return tmp_path / "docs" / "verdicts.md"
 
 
 @pytest.mark.parametrize("tables", [True, False], ids=["regen", "sections"])
@@ -325,7 +327,7 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
     in between (here by the compute step itself) is refused, nothing written, the edit kept."""
     from pendcli import docs, regression, reproduce
 
-    readme = _docs_set(tmp_path)
+    page = _docs_set(tmp_path)
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
     monkeypatch.setattr(
         reproduce, "reproduce_all", lambda *a, **k: reproduce.ReproduceResult(papers=())
@@ -337,21 +339,21 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
     monkeypatch.setitem(docs.SECTIONS, "findings", lambda: "new findings")
 
     def ledger_while_someone_edits() -> str:
-        with readme.open("a") as fh:
+        with page.open("a") as fh:
             fh.write("my edit\n")
         return "new ledger"
 
     monkeypatch.setitem(docs.SECTIONS, "ledger", ledger_while_someone_edits)
-    before = readme.read_text()
-    argv = ["--readme", str(readme), *(["--tables"] if tables else [])]
-    with pytest.raises(PendcliError, match=r"README\.md' changed since this run read it"):
+    before = page.read_text()
+    argv = ["--readme", str(tmp_path / "README.md"), *(["--tables"] if tables else [])]
+    with pytest.raises(PendcliError, match=r"verdicts\.md' changed since this run read it"):
         docs.main(argv)
-    assert readme.read_text() == before + "my edit\n"
+    assert page.read_text() == before + "my edit\n"
     assert "old" in (tmp_path / "docs" / "schema.md").read_text()
     assert not list((tmp_path / "tables").rglob("*.csv"))
     monkeypatch.setitem(docs.SECTIONS, "ledger", lambda: "new ledger")
     assert docs.main(argv) == 0  # nothing edited meanwhile: written, the edit kept
-    assert "new ledger" in readme.read_text() and "my edit" in readme.read_text()
+    assert "new ledger" in page.read_text() and "my edit" in page.read_text()
     assert (tmp_path / "tables" / "regenerated" / "x-claims.csv").exists() == tables
 
 

@@ -294,7 +294,7 @@ def test_notes_use_the_printed_intermediates(rows):
     # written with the memoir's decimal comma as the table's notes beside them
     assert "0,2214" in rows["lecornu.example.length.4"].note  # 0,00313 × 8,41²
     assert f"{3.83**2 / 4:.5f}".replace(".", ",") in rows["lecornu.x_bound"].note
-    assert "g <= 9.800" in rows["lecornu.coefficient_b2_4g"].note
+    assert "g <= 9,800" in rows["lecornu.coefficient_b2_4g"].note
 
 
 # --- the numbers come from the table, not from the code -----------------------------------
