@@ -28,8 +28,13 @@ READINGS = [
     ("charbonnier.result.resistance-opposes", "*l0*d2theta_dt2 < 0'", "*v < 0'"),
     (
         "charbonnier.result.in-pi-table-odd-label",
-        "printed = 'I(-1, pi) = pi*1/2; I(-1, pi) = pi*1*3/(2*4); I(-1, pi)",
-        "printed = 'I(1, pi) = pi*1/2; I(3, pi) = pi*1*3/(2*4); I(5, pi)",
+        "printed = 'I(-1, pi) = pi*1/2; I(-1, pi) = pi*1*3/(2*4)'",
+        "printed = 'I(1, pi) = pi*1/2; I(3, pi) = pi*1*3/(2*4)'",
+    ),
+    (
+        "charbonnier.result.in-pi-table-odd-label-498",
+        "printed = 'I(-1, pi) = ",
+        "printed = 'I(5, pi) = ",
     ),
 ]
 
