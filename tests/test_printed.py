@@ -59,6 +59,8 @@ INCONSISTENT = {
     "charbonnier.result.ec-monomial",
     # lines 227-229: E_c = (1/(k²α))∫₀^θ φ dv, v a speed, upper limit an angle (for θ').
     "charbonnier.result.e-angle-integrals",
+    # line 113: εφ (T^-2), added to d²θ/dt², called the acceleration along the arc (L T^-2).
+    "charbonnier.result.perturbing-acceleration-named",
     # lines 170-178: θl = φ, θ dl/dx = dφ/dx, (b²/g)θ = dφ/dx equate a length to the
     # pure number φ (the memoir's φ is « multipliée par une constante arbitraire », line 160,
     # here a unit length); a holds row: the numbers hold, and (12), φ/x = φ', is consistent.
@@ -141,6 +143,7 @@ IMPLIED_ZERO = {
     "lecornu.result.negative_speed_quarter",
     # « tend vers zéro » (line 579)
     "lecornu.result.elongation_difference_vanishes",
+    "charbonnier.result.es-pi-nonzero",  # « n'est pas nulle », line 378: a sign, > 0
 }
 
 

@@ -230,6 +230,16 @@ PROSE_CHANGES = [
     ("charbonnier.result.friction-independent", "Delta_x, alpha", "Delta_x, g"),
     ("charbonnier.result.infinite-count", "<= 0", ">= 0"),
     ("charbonnier.result.infinite-count", "1 + Delta_x/alpha > 0", "1 + Delta_x/alpha < 0"),
+    # the claims of the sentences of lines 54-500 (tests/test_prose_charbonnier.py: the slips)
+    ("charbonnier.result.moment-of-velocity", "h_M = l**2*dtheta_dt", "h_M = l*dtheta_dt"),
+    ("charbonnier.result.moment-of-weight", "g*l*sin(theta)", "g*l*cos(theta)"),
+    ("charbonnier.result.es-pi-nonzero", "E_s(pi) > 0", "E_s(pi) < 0"),
+    ("charbonnier.result.monomial-acceleration", "b_n*v**n", "b_n*v**(n + 1)"),
+    ("charbonnier.result.corrections-add", "+ Delta_x_2'", "+ 2*Delta_x_2'"),
+    ("charbonnier.result.recurrence-table-even", "5*I(4, x) = ", "4*I(4, x) = "),
+    ("charbonnier.result.recurrence-table-odd", "4*I(3, x) = ", "3*I(3, x) = "),
+    ("charbonnier.result.in-pi-table", "2*2*4/(1*3*5)", "2*2*4/(1*3*7)"),
+    ("charbonnier.result.diminution-of-amplitude", "Delta_x < 0", "Delta_x > 0"),
 ]
 
 

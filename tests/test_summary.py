@@ -85,8 +85,11 @@ def test_equations_command_lists_each_label_and_filters_by_status(monkeypatch, s
     code, out, err = invoke(*args)
     rows = json.loads(out)["equations"]
     assert rows and {r["status"] for r in rows} == {"misprint"}
-    # each read (the evident reading, in words and as a formula) and its blame recorded
-    assert all(r["reading_note"] and r["reading"] and r["later_use"] for r in rows)
+    # each read (the evident reading, in words and as a formula) and its blame recorded (a
+    # row restating another's slip records none: the restated row does)
+    assert all(r["reading_note"] and r["reading"] for r in rows)
+    assert all(r["later_use"] for r in rows if not r["restates"])
+    assert any(r["restates"] for r in rows)  # the I_(-1) label printed again, line 498
     assert_clean_error(*invoke("equations", "--status", "wrong")[::2])
 
 

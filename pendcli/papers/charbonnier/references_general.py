@@ -29,11 +29,13 @@ __all__ = [
     "ledger_symbols",
     "principal_motion",
     "reference_angle_integrals",
+    "reference_arc_acceleration",
     "reference_differentiated",
     "reference_expansion",
     "reference_first_order",
     "reference_linear_perturbation",
     "reference_linearised",
+    "reference_moments",
     "reference_newton",
     "reference_principal_motion",
     "reference_principal_turn",
@@ -108,6 +110,28 @@ def reference_newton() -> Reference:
     """(1) and the theorem of moments: θ'' from Newton's law; d/dt a total derivative."""
     exact = {"d2theta_dt2": _newton_angular_acceleration()}
     return Reference(exact, transform=_total_derivative(_rates()), what="Newton's law")
+
+
+# n° 2, lines 54 and 60: the speed of M, the moment of its velocity about O, the moment of
+# the weight
+def reference_moments() -> Reference:
+    """n° 2: M at x = l sin θ, y = −l cos θ, the length l and the angle θ both functions of t:
+    its speed v_M, the component v_n of its velocity along the normal to the thread (θ
+    increasing), the moment h_M = x y' − y x' of its velocity about O, and the magnitude G_M of
+    the moment of the weight (0, −g) about O (per unit mass, as the text's g and gl sin θ)."""
+    import sympy as sp
+
+    theta, dtheta, ell, dell, g = ledger_symbols("theta", "dtheta_dt", "l", "dl_dt", "g")
+    x, y = ell * sp.sin(theta), -ell * sp.cos(theta)
+    rates = {theta: dtheta, ell: dell}
+    dx, dy = (sum(sp.diff(z, s) * r for s, r in rates.items()) for z in (x, y))
+    exact = {
+        "v_M": sp.sqrt(dx**2 + dy**2),
+        "v_n": dx * sp.cos(theta) + dy * sp.sin(theta),
+        "h_M": x * dy - y * dx,
+        "G_M": sp.Abs(x * (-g) - y * 0),
+    }
+    return Reference(exact, what="M in Cartesian coordinates, l and θ varying")
 
 
 # n° 3, lines 72 (sin θ replaced by θ) and 77-81 ((2), k² = g/l0)
@@ -187,6 +211,20 @@ def _phi_polynomial() -> Any:
     a, b, c = sp.symbols("a b c", real=True)
     body = p[0] + p[1] * a + p[2] * b + p[3] * a * b + p[4] * a**2 + p[5] * c * b
     return sp.Lambda((a, b, c), body)
+
+
+# n° 4, line 113: the acceleration the perturbing force gives M along the arc
+def reference_arc_acceleration() -> Reference:
+    """n° 4: a_arc, the acceleration the perturbing force gives M along the arc (counted in
+    the sense that lowers θ, as gravity's in (1)), from the motion along the arc of the small
+    oscillations of constant length l0 (n° 3), l0 θ'' = −g θ − a_arc, with θ'' from the
+    perturbed equation of line 119, φ of a family with free parameters."""
+    theta, dtheta, t, k, eps, l0 = ledger_symbols("theta", "dtheta_dt", "t", "k", "epsilon", "l0")
+    phi = _phi_polynomial()
+    angular = -(k**2) * theta - eps * phi(theta, dtheta, t)
+    g = k**2 * l0
+    exact = {"phi": phi, "g": g, "a_arc": -l0 * angular - g * theta}
+    return Reference(exact, what="the motion along the arc, l0θ'' = −gθ − a_arc")
 
 
 @cache

@@ -20,11 +20,13 @@ from pendcli.papers.charbonnier.references_resisting import resisted
 
 __all__ = [
     "reference_constant_resistance",
+    "reference_corrections_add",
     "reference_friction",
     "reference_friction_in_g_and_t",
     "reference_in",
     "reference_in_pi",
     "reference_monomial",
+    "reference_monomial_acceleration",
     "reference_monomial_decay",
     "reference_monomial_parity",
     "reference_monomial_points",
@@ -73,6 +75,33 @@ def reference_constant_resistance() -> Reference:
     (c,) = ledger_symbols("c")
     exact = _monomial(phase=True, power=0)
     return Reference(exact, scale=c, order=2, domain=_monomial_domain(), what="F = B_0")
+
+
+# n° 14, line 421: b_n vⁿ named the acceleration of the resistance
+def reference_monomial_acceleration() -> Reference:
+    """n° 14: the acceleration of the resistance along the arc, cF(v) (n° 11, line 299), for
+    F(v) = B_n vⁿ (line 419), with b_n = cB_n."""
+    c, big, v, n = ledger_symbols("c", "B_n", "v", "n")
+    exact = {"a_arc": c * big * v**n, "b_n": c * big}
+    return Reference(exact, what="cF(v) for F = B_n vⁿ")
+
+
+# n° 14, lines 425-427: the corrections of the monomials added
+def reference_corrections_add() -> Reference:
+    """n° 14: Δα of F = B_0 + B_1v + B_2v² and the Δα of each monomial apart (Delta_x_0,
+    Delta_x_1, Delta_x_2), each from Duhamel's integral (E of kt), through c."""
+    import sympy as sp
+
+    c, b0, b1, b2 = ledger_symbols("c", "B_0", "B_1", "B_2")
+    v = sp.Symbol("v_", real=True)
+    terms = (b0, b1 * sp.Abs(v), b2 * v**2)
+    whole = resisted(sp.Lambda(v, sp.Add(*terms)), phase=True)["Delta_alpha"]
+    exact = {"Delta_x": whole}
+    for index, term in enumerate(terms):
+        exact[f"Delta_x_{index}"] = resisted(sp.Lambda(v, term), phase=True)["Delta_alpha"]
+    half, one = sp.Rational(1, 2), sp.Integer(1)
+    domain = {**_monomial_domain(), "B_0": (half, one), "B_1": (half, one), "B_2": (half, one)}
+    return Reference(exact, scale=c, order=2, domain=domain, what="F = B_0 + B_1v + B_2v²")
 
 
 # n° 15, 1°, lines 429-433 and 435 (E_c), 2°, lines 439-444 (E_s)

@@ -24,6 +24,7 @@ __all__ = [
     "reference_air",
     "reference_air_first_oscillation",
     "reference_air_points",
+    "reference_resistance_sense",
     "resisted",
 ]
 
@@ -147,3 +148,21 @@ def reference_air_points() -> Reference:
         transform=_along_the_arc(),
         what="F in the air",
     )
+
+
+# n° 11, line 309: the sense of the resistance's acceleration along the arc
+def reference_resistance_sense() -> Reference:
+    """n° 11: on the first simple oscillation (0 < kt < π), the speed v = l0 θ' and the angular
+    acceleration θ'' of the equation of line 307 along the principal motion, θ'' = −k²θ0 −
+    (c/l0)F(v), F = q0 + q1v + q2v² with positive q's; the resistance's acceleration along the
+    arc is −cF(v) in the sense of θ increasing (the term enters that equation as gravity's)."""
+    import sympy as sp
+
+    k, l0, c = ledger_symbols("k", "l0", "c")
+    theta0, speed0 = principal_motion()
+    force = _air_force()
+    speed = l0 * speed0
+    exact = {"F": force, "v": speed, "d2theta_dt2": -(k**2) * theta0 - c / l0 * force(speed)}
+    domain = {"t": (sp.Rational(1, 10), sp.Integer(3)), "k": (sp.Rational(1, 2), sp.Integer(1))}
+    domain.update(_positive_air_domain())
+    return Reference(exact, domain=domain, what="the first oscillation in the air")
