@@ -38,6 +38,8 @@ NUMBERS_CITED = {
     "charbonnier.result.es-symmetry": "2*E_s(pi/2), E_s(pi) > 0",
     "charbonnier.result.period-constant-resistance": "E_c(π) = 0, ΔT = 0 of n° 13, 1°",
     "charbonnier.result.infinite-count": "1 + Δα/α > 0",
+    # line 1010, « cos θ par l'unité »: the 1 in words
+    "lecornu.result.conical_order_comparison": "cos(theta) = 1",
     # line 30, Resal's ellipse turning uniformly, in words: (17) and φ' = (dφ'/dt)·t
     "tisserand.result.resal-small-oscillations": "the ellipse (17), in words",
     # lines 126, 154, 190 cite (13), (15), (II), (V) by number: their coefficients
