@@ -71,8 +71,10 @@ def test_faithful_only_if_chopped_is_said_so(lecornu_across_g) -> None:  # type:
 
 def test_the_finishing_rule_is_data() -> None:
     """A made-up 0,13 from 0,1349 (rounds to 0,13) and 0,139 (chops to 0,13): faithful or
-    conditional by the procedure's rule; a chopped rule needs the text's words."""
-    claims = {"z": Judged(parse_printed("1"), 1.0), "n": Judged(parse_printed("0,13"), 0.2)}
+    conditional by the procedure's rule; a chopped rule needs the text's words. From an input
+    printed 1,0 (0,95 to 1,05), 0,141·z finishes to 0,13 only below z = 0,957: faithful if he
+    kept more digits of z than he printed."""
+    claims = {"z": Judged(parse_printed("1,000"), 1.0), "n": Judged(parse_printed("0,13"), 0.2)}
     for value, rounding, said, verdict in (
         (0.1349, "rounded", "", "faithful"),
         (0.139, "rounded", "", "faithful if chopped"),
@@ -82,6 +84,10 @@ def test_the_finishing_rule_is_data() -> None:
     ):
         procedure = Procedure(("z",), lambda z, v=value: v * z, "v·z", rounding, said)
         assert own_verdicts(claims, {"n": procedure})["n"].verdict == verdict, (value, rounding)
+    coarse = {**claims, "z": Judged(parse_printed("1,0"), 1.0)}
+    procedure = Procedure(("z",), lambda z: 0.141 * z, "0,141·z")
+    assert own_verdicts(coarse, {"n": procedure})["n"].verdict == "faithful if he kept more digits"
+    assert own_verdicts(claims, {"n": procedure})["n"].verdict == "slip"  # z printed 1,000
     with pytest.raises(PendcliError, match="quotes the text's words"):
         Procedure(("z",), lambda z: z, "z", "chopped")
 
@@ -103,6 +109,7 @@ def test_the_difference_figure_shows_both_verdicts(lecornu_across_g) -> None:  #
         ids = [cid for _, group in figures.GROUPS for cid in group]
         bars = [bar for container in ax.containers for bar in container]
         hatches = {"slip": "xx", "faithful if chopped": "//", None: "..", "faithful": ""}
+        hatches["faithful if he kept more digits"] = "--"
         for bar, cid in zip(bars, ids, strict=True):
             own = lecornu_across_g[cid].procedure_verdict
             assert (bar.get_hatch() or "") == hatches[None if own is None else str(own)], cid
@@ -137,3 +144,29 @@ def test_every_conditional_row_and_its_claims_turn_at_one_bound(lecornu_across_g
             assert claim.cause == row.status, claim.id
             checked += 1
     assert checked >= 1
+
+
+def _printed(claim_id: str) -> mpmath.mpf:
+    from pendcli.core.tables import load_paper_table
+
+    return mpmath.mpf(load_paper_table("lecornu").claim(claim_id).number.value)
+
+
+def test_a_ratio_faithful_only_with_digits_he_kept(lecornu_across_g) -> None:  # type: ignore[no-untyped-def]
+    """−3,45 = his J₀(8,41)/J₀(17,96): the printed +0,072 and −0,021 give −3,43, but his
+    J₀(17,96) unrounded (mpmath) with a numerator anywhere that prints +0,072 reaches −3,45;
+    −1,27 = J₀(14,80)/J₀(17,96) is reached by none of his own digits (both J₀ faithful: their
+    unrounded values give −1,30), so it stays a slip of his."""
+    with mpmath.workdps(30):
+        first = mpmath.besselj(0, _printed("lecornu.j2_zeros.5"))
+        low, high = mpmath.mpf("0.0715") / first, mpmath.mpf("0.0725") / first
+        assert low > -3.455 > high  # a value that rounds to −3,45 lies between
+        assert mpmath.nint(_printed("lecornu.j0_at_j2_zeros.2") / mpmath.mpf("-0.021") * 100) != (
+            -345
+        )
+        unrounded = mpmath.besselj(0, _printed("lecornu.j2_zeros.4")) / first
+        assert abs(unrounded - mpmath.mpf("-1.27")) > 0.02
+    rows = lecornu_across_g
+    assert rows["lecornu.deviation.4"].procedure_verdict == "faithful if he kept more digits"
+    assert rows["lecornu.deviation.4"].cause == "propagated"
+    assert rows["lecornu.deviation.2"].procedure_verdict == "slip"

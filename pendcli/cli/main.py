@@ -307,7 +307,8 @@ app = typer.Typer(
     name="pendcli",
     help=(
         "Regenerate, number by number, the claims of three historical papers on the pendulum "
-        "(Tisserand 1881, Lecornu 1894, Charbonnier 1908): published against recomputed values. "
+        "(Tisserand 1881, Lecornu after 1894, Charbonnier 1908): published against recomputed "
+        "values. "
         "A number may be typed with a decimal point or a decimal comma (9.81 or 9,81), a word "
         "of a list in any case (-p LECORNU)."
     ),

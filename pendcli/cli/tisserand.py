@@ -110,7 +110,7 @@ def example(
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
 ) -> None:
-    """Published / series / exact (two methods) side by side for any amplitudes."""
+    """Published / series / exact (by quadrature, ODE and elliptic integrals) side by side."""
     from pendcli.core.plotting import validate_plot_path
     from pendcli.papers.tisserand import explore, figures, model, units
 

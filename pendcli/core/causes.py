@@ -12,8 +12,15 @@ a = the procedure on his printed inputs, and the number is
 ``faithful if chopped`` / ``faithful if rounded``
     when only the other finish gives it: faithful on a condition, that he finished this number
     otherwise than his rule (−0,130 for his J₀(5,14) = −0,13079 is faithful if chopped);
+``faithful if he kept more digits``
+    when neither finish of a gives it, but the procedure on the digits he may have kept does:
+    an input he computed faithfully by his own procedure at its unrounded value, any other
+    (a slip of his, a number without a procedure) anywhere within its printed last place (±
+    half a unit; the procedure at the corners): faithful on the condition that he computed
+    with digits he did not print (−3,45 from his −0,02087 needs a numerator of 0,0720 to
+    0,0725, which his slip +0,072 may be);
 ``slip``
-    when neither does. A number with no known procedure has none (never guessed).
+    when none does. A number with no known procedure has none (never guessed).
 
 **The rule** (:func:`rule_cause`), for a number with a procedure that does not agree with the
 truth. An input *carries a slip* when it is a slip against its own procedure, or is itself
@@ -149,10 +156,15 @@ def corrected_value(
 
 
 def procedure_verdict(
-    number: PrintedNumber, author: float, rounding: str = "rounded"
+    number: PrintedNumber,
+    author: float,
+    rounding: str = "rounded",
+    span: tuple[float, float] | None = None,
 ) -> ProcedureVerdict:
     """``faithful`` when his own value ``author`` finished by his rule (``rounding``) is the
-    printed one, faithful on the other finish when only that gives it, else ``slip``."""
+    printed one, faithful on the other finish when only that gives it, faithful if he kept
+    more digits when the procedure's ``span`` over its inputs' printed last place holds a
+    value his rule finishes to the printed one, else ``slip``."""
     rounded, chopped = rounds_to(number, author), chops_to(number, author)
     own, other = (rounded, chopped) if rounding == "rounded" else (chopped, rounded)
     if own:
@@ -161,7 +173,49 @@ def procedure_verdict(
         if rounding == "rounded":
             return ProcedureVerdict.FAITHFUL_IF_CHOPPED
         return ProcedureVerdict.FAITHFUL_IF_ROUNDED
+    if span is not None and _reachable(number, span, rounding):
+        return ProcedureVerdict.FAITHFUL_IF_MORE_DIGITS
     return ProcedureVerdict.SLIP
+
+
+def _reachable(number: PrintedNumber, span: tuple[float, float], rounding: str) -> bool:
+    """Whether a value in ``span`` finishes (by ``rounding``) to the printed number: the
+    printed value's own interval (± half a unit rounded, toward zero a unit chopped) meets it."""
+    if number.resolution is None:
+        return False
+    unit, value = number.resolution, number.value
+    if rounding == "rounded":
+        low, high = value - unit / 2, value + unit / 2
+    else:
+        low, high = (value, value + unit) if value >= 0 else (value - unit, value)
+    return span[0] <= high and low <= span[1]
+
+
+def input_span(
+    procedure: Procedure, claims: Mapping[str, Judged], known: Mapping[str, float]
+) -> tuple[float, float] | None:
+    """The procedure's least and greatest value over the digits he may have kept: an input
+    whose own procedure he followed (``known``: its unrounded value, his computation) is that
+    value; any other within half a unit of its printed last place (at the corners: a ratio, a
+    root, a product are monotone in each input over so small a box). None when an input is
+    exact."""
+    import itertools
+
+    boxes: list[tuple[str, tuple[float, ...]]] = []
+    for name in procedure.inputs:
+        number = claims[name].number
+        if name in known:
+            boxes.append((name, (known[name],)))
+            continue
+        if number.resolution is None:
+            return None
+        half = number.resolution / 2
+        boxes.append((name, (number.value - half, number.value + half)))
+    values = [
+        procedure(dict(zip([n for n, _ in boxes], corner, strict=True)))
+        for corner in itertools.product(*(b for _, b in boxes))
+    ]
+    return min(values), max(values)
 
 
 def rule_cause(
@@ -171,12 +225,14 @@ def rule_cause(
     slip_inputs: tuple[str, ...],
     comparison: str = "equal",
     rounding: str = "rounded",
+    span: tuple[float, float] | None = None,
 ) -> tuple[Cause | None, tuple[str, ...]]:
     """The cause of a printed number with a known procedure, and its ``from`` (module doc):
-    ``author`` is his procedure on his printed inputs, ``slip_inputs`` those that carry a slip."""
+    ``author`` is his procedure on his printed inputs, ``slip_inputs`` those that carry a slip,
+    ``span`` the procedure over his inputs' printed last place."""
     if judge(number, recomputed, comparison).verdict is Verdict.AGREES:
         return None, ()
-    faithful = procedure_verdict(number, author, rounding) in FAITHFUL_VERDICTS
+    faithful = procedure_verdict(number, author, rounding, span) in FAITHFUL_VERDICTS
     own = 0.0 if faithful else number.value - author
     if slip_inputs and (faithful or abs(author - recomputed) > abs(own)):
         return Cause.PROPAGATED, slip_inputs
@@ -222,6 +278,15 @@ def own_verdicts(
             return own.verdict is ProcedureVerdict.SLIP or own.cause is Cause.PROPAGATED
         return claims[source].cause in (*SLIP_CAUSES, Cause.PROPAGATED)
 
+    def kept_digits(inputs: tuple[str, ...]) -> dict[str, float]:
+        """The inputs whose digits beyond the printed ones are known: those he computed by
+        his own procedure without a slip (its value unrounded)."""
+        known = {}
+        for source in inputs:
+            if source in procedures and visit(source).verdict is ProcedureVerdict.FAITHFUL:
+                known[source] = visit(source).value
+        return known
+
     def visit(claim_id: str) -> OwnVerdict:
         if claim_id in done:
             return done[claim_id]
@@ -230,11 +295,13 @@ def own_verdicts(
         visiting.add(claim_id)
         procedure, claim = procedures[claim_id], claims[claim_id]
         author = procedure(printed)
+        span = input_span(procedure, claims, kept_digits(procedure.inputs))
         slips = tuple(s for s in procedure.inputs if carries_slip(s))
         cause, sources = rule_cause(
-            claim.number, claim.recomputed, author, slips, claim.comparison, procedure.rounding
-        )
-        verdict = procedure_verdict(claim.number, author, procedure.rounding)
+            claim.number, claim.recomputed, author, slips, claim.comparison,
+            procedure.rounding, span,
+        )  # fmt: skip
+        verdict = procedure_verdict(claim.number, author, procedure.rounding, span)
         done[claim_id] = OwnVerdict(verdict, author, procedure, cause, sources)
         return done[claim_id]
 

@@ -47,6 +47,9 @@ class ProcedureVerdict(StrEnum):
     # (a condition on the number, as an assumed g is on a verdict): chopped where he rounds
     FAITHFUL_IF_CHOPPED = "faithful if chopped"
     FAITHFUL_IF_ROUNDED = "faithful if rounded"  # rounded where he says he chops
+    # his digits follow only from inputs within their printed last place, not from the inputs
+    # as printed: he computed with digits he did not print
+    FAITHFUL_IF_MORE_DIGITS = "faithful if he kept more digits"
     SLIP = "slip"
 
 

@@ -35,6 +35,7 @@ VERDICT_STYLES: dict[str, str] = {
     ProcedureVerdict.FAITHFUL: "green",
     ProcedureVerdict.FAITHFUL_IF_CHOPPED: "yellow",  # faithful on a condition
     ProcedureVerdict.FAITHFUL_IF_ROUNDED: "yellow",
+    ProcedureVerdict.FAITHFUL_IF_MORE_DIGITS: "yellow",
     ProcedureVerdict.SLIP: "bold red",
 }
 NO_PROCEDURE = "no procedure known"  # a number whose author's procedure is not known

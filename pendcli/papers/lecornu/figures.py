@@ -235,6 +235,7 @@ _OWN_HATCHES: dict[str | None, tuple[str, str]] = {
     "faithful": ("", "faithful to his procedure (plain)"),
     "faithful if chopped": ("//", "faithful if he chopped here (hatched /)"),
     "faithful if rounded": ("\\\\", "faithful if he rounded here (hatched \\)"),
+    "faithful if he kept more digits": ("--", "faithful if he kept unprinted digits (dashed -)"),
     "slip": ("xx", "a slip against his procedure (crossed)"),
     None: ("..", "no known procedure (dotted)"),
 }
