@@ -78,6 +78,7 @@ def test_tally_and_summary_count_each_verdict():
             "faithful": 0,
             "faithful if chopped": 0,
             "faithful if rounded": 0,
+            "faithful if he kept more digits": 0,
             "slip": 0,
             "no procedure": 2,
             "formulas holding": 1,
