@@ -296,8 +296,11 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
     segments = math_segments(text)
     # one number per note (a later piece of a quote or formula is called to its first's), in
     # the order the calls are read: at each mark's end, a mark held in another called first
-    called = [m for m in [*marks, *(p for _, p in passages)] if not m.continues]
-    numbers = {m.key: i for i, m in enumerate(sorted(called, key=lambda m: (m.end, -m.start)), 1)}
+    # (two marks of one span: the later in ``marks`` is drawn held in the earlier, called first)
+    called = [(m.end, -m.start, -i, m) for i, m in enumerate(marks) if not m.continues]
+    called += [(p.end, -p.start, 1, p) for _, p in passages if not p.continues]
+    order = sorted(called, key=lambda c: c[:3])
+    numbers = {c[3].key: i for i, c in enumerate(order, 1)}
     blocks: list[dict[str, object]] = []
     texts: list[str] = []  # each block's text: html_prose joins what the OCR cut in two
     front = front_matter_end(text)

@@ -30,6 +30,7 @@ from cli_helpers import NO_BYTECODE, assert_clean_error, invoke
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import clear_table_cache
+from pendcli.drift import CLAIM_COLUMNS
 from pendcli.papers.registry import PAPERS, evaluate
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
@@ -307,7 +308,7 @@ def test_non_finite_committed_values_fail_the_check(tables_copy: Path) -> None:
         (lambda text: "", "empty table; expected the header line"),
         (lambda text: text[: len(text) // 2], "cut short"),  # cut mid-row
         (lambda text: text[: text.index("\n", 500)], "cut short"),  # cut at a row's end
-        (lambda text: text.replace(",agrees,", ",", 1), "fields; expected 12"),
+        (lambda text: text.replace(",agrees,", ",", 1), f"fields; expected {len(CLAIM_COLUMNS)}"),
         (lambda text: text.replace("recomputed", "recomputd"), "line 1: header"),
     ],
 )
