@@ -46,3 +46,23 @@ def committed_row(row_id: str) -> LedgerRow:
     """Row ``row_id`` of its paper's committed (validated) ledger."""
     ledger = committed_ledger(row_id.split(".")[0])
     return next(r for r in ledger.rows if r.id == row_id)
+
+
+def paragraphs_by_hand(text: str) -> list[tuple[int, int]]:
+    """The text's paragraphs of prose counted by hand, independently of
+    pendcli.core.reading.prose_paragraphs: a line is prose unless it lies in a $$ block (the
+    blocks of the committed texts begin and end on lines of their own)."""
+    spans: list[tuple[int, int]] = []
+    inside, first = False, None
+    for number, line in enumerate(text.split("\n"), 1):
+        opens = line.count("$$") % 2 == 1
+        prose = bool(line.strip()) and not inside and not line.strip().startswith("$$")
+        if opens:
+            inside = not inside
+        if prose and first is None:
+            first = number
+        if not prose and first is not None:
+            spans.append((first, number - 1))
+            first = None
+    last = len(text.split("\n"))
+    return spans if first is None else [*spans, (first, last)]

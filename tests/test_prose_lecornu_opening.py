@@ -13,7 +13,7 @@ from pathlib import Path
 import mpmath
 import numpy as np
 import pytest
-from ledgers import committed_ledger
+from ledgers import committed_ledger, paragraphs_by_hand
 from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq
 from scipy.special import jn_zeros, jv
@@ -27,31 +27,14 @@ def _text_lines() -> list[str]:
     return (TABLES / "papers" / "lecornu.txt").read_text(encoding="utf-8").split("\n")
 
 
-def _prose_runs(lines: list[str]) -> list[tuple[int, int]]:
-    """Runs of non-blank lines outside $$ blocks, by hand (every block of the text up to line
-    461 begins and ends on lines of its own, or lies within one line)."""
-    runs: list[tuple[int, int]] = []
-    inside, first = False, None
-    for number, line in enumerate(lines, 1):
-        opens = line.count("$$") % 2 == 1
-        prose = bool(line.strip()) and not inside and not line.strip().startswith("$$")
-        if opens:
-            inside = not inside
-        if prose and first is None:
-            first = number
-        if not prose and first is not None:
-            runs.append((first, number - 1))
-            first = None
-    return runs
-
-
 def _record() -> list[dict[str, object]]:
     raw = tomllib.loads((TABLES / "papers" / "lecornu.reading.toml").read_text("utf-8"))
     return list(raw["paragraph"])
 
 
 def test_every_paragraph_up_to_line_461_is_read_once_in_order() -> None:
-    runs = [r for r in _prose_runs(_text_lines()) if r[1] <= LAST_LINE]
+    text = (TABLES / "papers" / "lecornu.txt").read_text(encoding="utf-8")
+    runs = [r for r in paragraphs_by_hand(text) if r[1] <= LAST_LINE]
     listed = [tuple(e["lines"]) for e in _record() if e["lines"][1] <= LAST_LINE]  # type: ignore[index]
     assert len(runs) == 144
     assert listed == runs

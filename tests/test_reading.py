@@ -12,7 +12,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from ledgers import committed_ledger
+from ledgers import committed_ledger, paragraphs_by_hand
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.reading import (
@@ -29,29 +29,10 @@ COMPLETE = ("tisserand", "charbonnier")
 WITH_RECORD = ("tisserand", "charbonnier")
 
 
-def _paragraphs_by_hand(text: str) -> list[tuple[int, int]]:
-    """The same definition, line by line: a line is prose unless it lies in a $$ block (the
-    blocks of the committed texts begin and end on lines of their own)."""
-    spans: list[tuple[int, int]] = []
-    inside, first = False, None
-    for number, line in enumerate(text.split("\n"), 1):
-        opens = line.count("$$") % 2 == 1
-        prose = bool(line.strip()) and not inside and not line.strip().startswith("$$")
-        if opens:
-            inside = not inside
-        if prose and first is None:
-            first = number
-        if not prose and first is not None:
-            spans.append((first, number - 1))
-            first = None
-    last = len(text.split("\n"))
-    return spans if first is None else [*spans, (first, last)]
-
-
 @pytest.mark.parametrize("paper", ["tisserand", "lecornu", "charbonnier"])
 def test_paragraphs_are_the_runs_of_prose_between_blank_lines_and_formulas(paper: str) -> None:
     text = (TABLES / "papers" / f"{paper}.txt").read_text(encoding="utf-8")
-    assert list(prose_paragraphs(text)) == _paragraphs_by_hand(text)
+    assert list(prose_paragraphs(text)) == paragraphs_by_hand(text)
 
 
 def test_paragraphs_of_a_small_text() -> None:
