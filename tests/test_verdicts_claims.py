@@ -146,26 +146,32 @@ def test_every_conditional_row_and_its_claims_turn_at_one_bound(lecornu_across_g
     assert checked >= 1
 
 
-def _printed(claim_id: str) -> mpmath.mpf:
+def _printed(claim_id: str) -> tuple[mpmath.mpf, mpmath.mpf]:
+    """A printed number of Lecornu's table and half a unit of its last printed place."""
     from pendcli.core.tables import load_paper_table
 
-    return mpmath.mpf(load_paper_table("lecornu").claim(claim_id).number.value)
+    number = load_paper_table("lecornu").claim(claim_id).number
+    return mpmath.mpf(number.value), mpmath.mpf(number.resolution) / 2
 
 
 def test_a_ratio_faithful_only_with_digits_he_kept(lecornu_across_g) -> None:  # type: ignore[no-untyped-def]
     """−3,45 = his J₀(8,41)/J₀(17,96): the printed +0,072 and −0,021 give −3,43, but his
     J₀(17,96) unrounded (mpmath) with a numerator anywhere that prints +0,072 reaches −3,45;
     −1,27 = J₀(14,80)/J₀(17,96) is reached by none of his own digits (both J₀ faithful: their
-    unrounded values give −1,30), so it stays a slip of his."""
+    unrounded values give −1,30), so it stays a slip of his. Every printed number is read
+    from the table."""
     with mpmath.workdps(30):
-        first = mpmath.besselj(0, _printed("lecornu.j2_zeros.5"))
-        low, high = mpmath.mpf("0.0715") / first, mpmath.mpf("0.0725") / first
-        assert low > -3.455 > high  # a value that rounds to −3,45 lies between
-        assert mpmath.nint(_printed("lecornu.j0_at_j2_zeros.2") / mpmath.mpf("-0.021") * 100) != (
-            -345
-        )
-        unrounded = mpmath.besselj(0, _printed("lecornu.j2_zeros.4")) / first
-        assert abs(unrounded - mpmath.mpf("-1.27")) > 0.02
+        first = mpmath.besselj(0, _printed("lecornu.j2_zeros.5")[0])
+        numerator, half = _printed("lecornu.j0_at_j2_zeros.2")
+        ratio, ratio_half = _printed("lecornu.deviation.4")
+        low, high = (numerator - half) / first, (numerator + half) / first
+        reach = (min(low, high), max(low, high))  # his digits of +0,072 over his J₀(17,96)
+        assert reach[0] <= ratio + ratio_half and ratio - ratio_half <= reach[1]
+        printed_ratio = numerator / _printed("lecornu.j0_at_j2_zeros.5")[0]
+        assert abs(printed_ratio - ratio) > ratio_half  # the printed inputs do not
+        unrounded = mpmath.besselj(0, _printed("lecornu.j2_zeros.4")[0]) / first
+        deviation_2, half_2 = _printed("lecornu.deviation.2")
+        assert abs(unrounded - deviation_2) > 4 * half_2  # his unrounded J₀ give −1,30
     rows = lecornu_across_g
     assert rows["lecornu.deviation.4"].procedure_verdict == "faithful if he kept more digits"
     assert rows["lecornu.deviation.4"].cause == "propagated"
