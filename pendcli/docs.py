@@ -287,6 +287,20 @@ def splice(readme: str, section: str, name: str = "sample") -> str:
     return f"{head}{start}\n{section}\n{end}{tail}"
 
 
+def _store_derivations() -> None:
+    """Each ledger's derivations stored (core/derivation_store), for the package's own tables
+    only: a tables folder of one's own is derived afresh when judged, never stored."""
+    from pendcli.core.derivation_store import stores_here
+    from pendcli.core.ledger_references import store_derivations
+    from pendcli.core.tables import tables_dir
+    from pendcli.papers.registry import PAPERS, ledger_papers, paper
+
+    if not stores_here(tables_dir()):
+        return
+    for key in (k for k in ledger_papers() if k in PAPERS):  # an added paper has no store
+        store_derivations(paper(key))
+
+
 def main(argv: list[str]) -> int:
     """Rewrite (``--check``: compare) the generated sections of the README and docs/schema.md;
     ``--tables``: with the committed tables regenerated from the same run, all written as one
@@ -298,6 +312,8 @@ def main(argv: list[str]) -> int:
     from pendcli.core.files import content_digest
     from pendcli.core.tables import read_table_text
 
+    if "--tables" in argv:  # the ledger's derivations first: its statuses are judged from them
+        _store_derivations()
     # the ledger only for the committed tables; the README's sections show claims and formulas
     full = _reproduce_all(equations="--tables" in argv)
     result = replace(full, equations={})

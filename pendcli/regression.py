@@ -117,6 +117,11 @@ def run_check(
     _load_ledgers(root)
     if not update:  # a damaged committed table is named at once, not after the computation
         _read_committed_tables(folder)
+    stale = _derivations(update, root)
+    if stale:  # the statuses below are judged from these: stale ones would mislead
+        for line in stale:
+            console(stderr=True).print(line, markup=False, highlight=False)
+        return 1
     result = reproduce_all(keys(), formulas=True, equations=True, quiet=quiet or fmt != "table")
     tables = regenerated_tables(result)
     out = console()
@@ -151,6 +156,26 @@ def run_check(
         f"tables/regenerated within tolerance"
     )
     return 0
+
+
+def _derivations(update: bool, root: Path | None) -> list[str]:
+    """Each ledger paper's stored derivations derived again (core/derivation_store): with
+    ``update``, written; else how they differ from what the code derives, a line per row
+    naming its reference (empty when every one agrees). Only the package's own tables have a
+    store; a tables folder of one's own is derived afresh when judged."""
+    from pendcli.core.ledger_references import derivation_drift, store_derivations
+    from pendcli.papers.registry import PAPERS, ledger_papers, paper
+
+    from pendcli.core.derivation_store import stores_here
+
+    if not stores_here(root or tables_dir()):
+        return []
+    built_in = [k for k in ledger_papers() if k in PAPERS]  # an added paper has no store
+    if update:
+        for key in built_in:
+            store_derivations(paper(key))
+        return []
+    return [line for key in built_in for line in derivation_drift(paper(key))]
 
 
 def _read_committed_tables(folder: Path) -> None:

@@ -41,6 +41,8 @@ from timing import (  # noqa: E402, F401
 # when it asks for a fixture named below; each says why it cannot be fast. Whatever the
 # families miss, `make test-durations` lists (a test not marked slow over 2 s).
 SLOW_FAMILIES = {
+    "tests/test_derivation_store.py::test_float64_decides_only_as_*": "every stored item "
+    "judged by the exact engine too",
     "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
     "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",

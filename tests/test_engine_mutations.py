@@ -41,6 +41,8 @@ correction unjudged (fails rows)                        7          7         6
 tolerance 1e-15 -> 1e-3 (holds rows)                   17         43        13
 tolerance 1e-15 -> 1e-1 (holds rows)                   17         43        14
 Cauchy coefficients' bound 1e-40 -> 1e-3 (series)      17         21        11
+float64's "holds" margin 1e-14 -> 1e-3 (checked)       35         73        28
+float64 refuses its own rounding (checked rows)         30         73        24
 series order + 1 (rows with a scale)                   13         31        11
 series order - 1 (rows with a scale)                   17         31        14
 « … » no longer set to 0 (rows printing it)            15         15        10
@@ -72,7 +74,15 @@ import pytest
 from ledgers import committed_ledger
 from mutations import altered_field, judged_after_edit
 
-from pendcli.core import point_values, printed_check, printed_numeric, printed_verdict, series_proof
+from pendcli.core import (
+    derived,
+    float_verdict,
+    point_values,
+    printed_check,
+    printed_numeric,
+    printed_verdict,
+    series_proof,
+)
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, reference_table
 from pendcli.core.ledger_formulas import printed_status
@@ -363,14 +373,31 @@ def order_shifted(step: int) -> Callable[[pytest.MonkeyPatch], None]:
 
     def mutation(monkeypatch: pytest.MonkeyPatch) -> None:
         def wrapper(original: Callable[..., Any]) -> Callable[..., Any]:
-            def mutant(residual: Any, reference: Any, order: int | None) -> Any:
-                return original(residual, reference, None if order is None else order + step)
+            def mutant(item: Any) -> Any:
+                if item.order is None:
+                    return original(item)
+                return original(dataclasses.replace(item, order=item.order + step))
 
             return mutant
 
-        wrapped(monkeypatch, printed_check, "_equation_passes", wrapper)
+        wrapped(monkeypatch, derived, "item_passes", wrapper)
 
     return mutation
+
+
+def float_tolerance(value: float) -> Callable[[pytest.MonkeyPatch], None]:
+    """Float64's margin for "holds" (1e-14 of the residual's terms) set to ``value``."""
+
+    def mutation(monkeypatch: pytest.MonkeyPatch) -> None:
+        monkeypatch.setattr(float_verdict, "HOLDS", value)
+
+    return mutation
+
+
+def float_fails_at_rounding(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Float64 refuses a residual at its rounding (FAILS 1e-6 -> 1e-18): a true form fails."""
+    monkeypatch.setattr(float_verdict, "FAILS", 1e-18)
+    monkeypatch.setattr(float_verdict, "HOLDS", 1e-19)
 
 
 def ellipsis_kept(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -438,6 +465,12 @@ MUTATIONS = {
     "tolerance 1e-15 -> 1e-1": EngineMutation(tolerance(1e-1), status_is("holds"), 14),
     "Cauchy tolerance 1e-40 -> 1e-3": EngineMutation(
         cauchy_tolerance, lambda s: s.series and s.row.status == "holds", 11
+    ),
+    "float tolerance 1e-14 -> 1e-3": EngineMutation(
+        float_tolerance(1e-3), status_is("holds", "misprint", "fails"), 28
+    ),
+    "float refuses its rounding": EngineMutation(
+        float_fails_at_rounding, status_is("holds", "misprint", "fails"), 24
     ),
     "order + 1": EngineMutation(order_shifted(1), lambda s: s.series, 11),
     "order - 1": EngineMutation(order_shifted(-1), lambda s: s.series, 14),

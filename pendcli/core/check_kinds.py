@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from pendcli.core.printed import Formula
 
-__all__ = ["KINDS", "kind_called_for", "kind_problem"]
+__all__ = ["KINDS", "kind_called_for", "kind_mismatch", "kind_problem"]
 
 # kind -> what it proves, in one line (the docs page says more)
 KINDS: dict[str, str] = {
@@ -67,6 +67,9 @@ def kind_problem(kind: str, formula: Formula, reference: Any) -> str | None:
     """Why the declared ``kind`` is not the one the reference and printed form call for, or
     None when it is."""
     called = kind_called_for(formula, reference)
-    if called == kind:
-        return None
-    return f"kind {kind!r} is declared, but its reference and printed form make it {called!r}"
+    return None if called == kind else kind_mismatch(kind, called)
+
+
+def kind_mismatch(declared: str, called: str) -> str:
+    """The one line naming a declared kind that is not the one called for."""
+    return f"kind {declared!r} is declared, but its reference and printed form make it {called!r}"

@@ -22,6 +22,7 @@ from pendcli.core.rows import NO_STATUS
 if TYPE_CHECKING:
     from pendcli.core.ledger import Ledger, LedgerRow
     from pendcli.core.paper import Paper
+    from pendcli.core.printed import Formula
     from pendcli.core.printed_check import Reference
 
 __all__ = [
@@ -29,9 +30,14 @@ __all__ = [
     "References",
     "cited_references",
     "conditional",
+    "derivation_drift",
+    "derivation_records",
     "printed_problem",
     "reference_table",
+    "row_derivation",
     "row_printed_status",
+    "store_derivations",
+    "use_store",
     "verify_printed",
 ]
 
@@ -110,15 +116,118 @@ def row_printed_status(
 def _printed_status(
     row: LedgerRow, symbols: tuple[tuple[str, str], ...], builder: Callable[[], Any], tables: str
 ) -> tuple[str | None, str]:
-    from pendcli.core.check_kinds import kind_problem
+    from pendcli.core.check_kinds import kind_mismatch, kind_problem
+    from pendcli.core.printed_verdict import stored_status
 
     assert row.reference is not None and row.kind is not None
+    stored = _stored(row, dict(symbols), tables)
+    if stored is not None:  # derived by `make regen` from these very tables
+        kind, forms = stored
+        return (None, kind_mismatch(row.kind, kind)) if kind != row.kind else stored_status(forms)
     reference = _reference(builder, row.paper, row.reference, tables)
     formula = row_formula(f"{row.id}: printed", row.printed or "", dict(symbols))
     wrong_kind = kind_problem(row.kind, formula, reference)
     if wrong_kind:
         return None, wrong_kind
     return printed_status(row, dict(symbols), reference)
+
+
+def row_derivation(
+    row: LedgerRow, symbols: Mapping[str, str], references: References
+) -> dict[str, Any] | None:
+    """What the store keeps of ``row`` (core/derivation_store): its inputs' digest, the kind
+    its reference calls for and each form's items; None for a row the store cannot keep (no
+    reference, printed numbers, a rounded decimal: judged from the live reference)."""
+    from pendcli.core.check_kinds import kind_called_for
+    from pendcli.core.derivation_store import item_record, row_inputs
+    from pendcli.core.printed_numeric import Numbers
+    from pendcli.core.printed_verdict import derived_forms
+
+    if row.reference is None or row.reference not in references:
+        return None
+    name = row.reference
+    reference = _reference(references[name], row.paper, name, _read_by_references())
+    inputs = row_inputs(row, symbols)
+    if isinstance(reference, Numbers):
+        return {"inputs": inputs, "reference": name, "live": "printed numbers"}
+
+    def parsed(field: str) -> Formula | None:
+        text = row.read(field)
+        return None if text is None else row_formula(f"{row.id}: {field}", text, symbols)
+
+    printed = parsed("printed")
+    assert printed is not None
+    reading, corrected = parsed("reading_formula"), parsed("corrected_formula")
+    forms = derived_forms(printed, reading, corrected, reference)
+    live = _live_only(forms)
+    if live:
+        return {"inputs": inputs, "reference": name, "live": live}
+    return {
+        "inputs": inputs,
+        "reference": name,
+        "kind": kind_called_for(printed, reference),
+        "forms": {
+            f: {"holds": d.holds, "items": [item_record(i) for i in d.items]}
+            for f, d in forms.items()
+        },
+    }
+
+
+def _live_only(forms: Mapping[str, Any]) -> str | None:
+    """Why the row's items can only be judged from the live reference (a rounded decimal, a
+    function known by its numbers only), or None."""
+    from sympy.core.function import AppliedUndef
+
+    for derived in forms.values():
+        for item in derived.items:
+            if item.call == "rounded":
+                return "a rounded decimal"
+            if item.expr is not None and any(
+                hasattr(f, "_imp_") for f in item.expr.atoms(AppliedUndef)
+            ):
+                return "a function known by its numbers"
+    return None
+
+
+# off: every row derived afresh from its live reference (`pendcli check`, the engine's tests)
+_STORE = {"on": True}
+
+
+def use_store(on: bool) -> None:
+    """Whether rows are judged from the stored derivations when they are current."""
+    _STORE["on"] = on
+    _printed_status.cache_clear()
+
+
+def _stored(row: LedgerRow, symbols: Mapping[str, str], tables: str) -> Any:
+    """The row's stored derivation (kind, forms) when the store is on and current for the
+    row and the tables in use; else None (and, once per paper, a line on stderr)."""
+    from pendcli.core.derivation_store import row_inputs, row_record, stored_rows
+
+    if not _STORE["on"]:
+        return None
+    entry = stored_rows(row.paper, tables).get(row.id)
+    if entry is None or entry[0] != row_inputs(row, symbols):
+        _say_derived_afresh(row.paper)
+        return None
+    if "live" in entry[1]:  # judged from the live reference by design
+        return None
+    return row_record(row.id, entry[1])
+
+
+_SAID: set[str] = set()
+
+
+def _say_derived_afresh(paper: str) -> None:
+    import sys
+
+    if paper not in _SAID:
+        _SAID.add(paper)
+        print(
+            f"pendcli: the {paper} ledger is derived afresh (its stored derivations are for "
+            "other tables; `make regen` stores them): slower",
+            file=sys.stderr,
+        )
 
 
 @cache
@@ -174,3 +283,46 @@ def _register_reference_caches() -> None:
 
 
 _register_reference_caches()
+
+
+def derivation_records(paper: Paper, root: Path | None = None) -> dict[str, dict[str, Any]]:
+    """Every row of the paper's ledger the store can keep, derived from its live reference:
+    what ``make regen`` writes and ``pendcli check`` compares with the store."""
+    from pendcli.core.ledger import load_ledger
+
+    ledger = load_ledger(paper.key, root)
+    table = reference_table(paper)
+    out = {}
+    for row in ledger.rows:
+        record = row_derivation(row, ledger.symbols_for(row), table)
+        if record is not None:
+            out[row.id] = record
+    return out
+
+
+def store_derivations(paper: Paper) -> Path:
+    """Derive and write the paper's store (core/derivation_store), for the tables in use."""
+    from pendcli.core.derivation_store import write_store
+
+    return write_store(paper.key, _read_by_references(), derivation_records(paper))
+
+
+def derivation_drift(paper: Paper) -> list[str]:
+    """How the stored derivations differ from what the code derives now: one line per row
+    (its reference named), empty when they agree."""
+    from pendcli.core.derivation_store import stored_rows
+
+    stored = stored_rows(paper.key, _read_by_references())
+    if not stored and paper.references is not None:
+        return [f"{paper.key}: no stored derivations for these tables (run `make regen`)"]
+    fresh = derivation_records(paper)
+    lines = []
+    for row_id in sorted(set(stored) | set(fresh)):
+        old = stored.get(row_id, (None, None))[1]
+        new = fresh.get(row_id)
+        if old != new:
+            reference = (new or old or {}).get("reference", "")
+            lines.append(
+                f"{row_id}: the stored derivation differs from the code's {reference}".rstrip()
+            )
+    return lines

@@ -20,6 +20,7 @@ from pendcli.core.recent import Recent
 
 __all__ = [
     "DIGITS",
+    "FLOOR",
     "POINTS",
     "Sampled",
     "compiled",
@@ -66,7 +67,7 @@ def vanishes_at_points(expr: Any, reference: Sampled) -> tuple[bool, str]:
         shown = ", ".join(f"{k}={v}" for k, v in point.items())
         if not value.is_number:
             return False, f"the residual is not a number at {shown}"
-        if abs(value) > _FLOOR and abs(value) > _TOLERANCE * _size_at(expr, free, point, size_at):
+        if abs(value) > FLOOR and abs(value) > _TOLERANCE * _size_at(expr, free, point, size_at):
             return False, f"residual {sp.N(value, 6)} at {shown}"
     return True, f"vanishes at {POINTS} random rational points"
 
@@ -186,10 +187,10 @@ def _integrals_by_quadrature(expr: Any) -> Any:
 
 # The residual is refused when above _TOLERANCE relative to its size (its terms' absolute
 # values summed through sums and products, at the point): 1e-15 of terms of 1e6 is
-# rounding, 1e-15 of terms of 1e-12 is not. Below _FLOOR (far under the working precision's
+# rounding, 1e-15 of terms of 1e-12 is not. Below FLOOR (far under the working precision's
 # rounding) it is 0 whatever its terms, and the size is not computed.
 _TOLERANCE = 10.0 ** (5 - DIGITS)
-_FLOOR = 10.0 ** -(DIGITS + 8)
+FLOOR = 10.0 ** -(DIGITS + 8)
 
 
 def _size_at(expr: Any, free: list[Any], point: dict[Any, Any], built: list[Any]) -> Any:

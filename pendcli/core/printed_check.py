@@ -27,19 +27,16 @@ status follows:
 
 from __future__ import annotations
 
-import random
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from pendcli.core.point_values import DIGITS, POINTS, evaluator, vanishes_at_points
+from pendcli.core.derived import Derived, Item, item_passes, passes, truncated
+from pendcli.core.point_values import DIGITS
 from pendcli.core.printed import ELLIPSIS, Formula
-from pendcli.core.series_proof import finite_limit, taylor_verdict
+from pendcli.core.series_proof import cauchy_applies
 
-__all__ = ["Reference", "formula_passes", "is_relation", "judged"]
-
-# an inequality's points: it may fail on a part of its domain only, which few points miss
-RELATION_POINTS = 32
+__all__ = ["Reference", "derive", "derive_formula", "formula_passes", "is_relation", "judged"]
 
 
 @dataclass(frozen=True)
@@ -113,54 +110,80 @@ def _meaningless(reference: Reference) -> str | None:
 def formula_passes(formula: Formula, reference: Reference) -> tuple[bool, str]:
     """Whether every equation (and inequality) of ``formula`` holds under ``reference``, and
     why not."""
+    return passes(derive_formula(formula, reference))
+
+
+def derive_formula(formula: Formula, reference: Reference, where: str = "") -> Derived:
+    """The items of ``formula`` under ``reference`` (core/derived), each failure prefixed by
+    ``where`` (a case's number)."""
+    items = []
     for index, (lhs, rhs) in enumerate(formula.equations):
         against = reference.cases[index] if index < len(reference.cases) else reference
         if lhs is None:
             if not is_relation(rhs):  # a bare expression: no claim the engine could judge
-                return False, f"{rhs}: neither an equation nor a relation, nothing to judge"
-            ok, why = _relation_passes(rhs, against)
-            if not ok:
-                return False, f"{rhs}: {why}"
+                why = "neither an equation nor a relation, nothing to judge"
+                items.append(Item("refused", f"{where}{rhs}", why=why))
+            else:
+                items.append(_relation_item(rhs, against, f"{where}{rhs}"))
             continue
         order = against.orders.get(getattr(lhs, "name", ""), against.order)
+        named = f"{where}{lhs} = {rhs}"
         if against.bounded and against.scale is not None:
-            ok, why = _bounded_passes(lhs - rhs, against)
+            items.append(_item("bounded", named, _substituted(lhs - rhs, against), against))
         elif against.rounded and _decimals(lhs - rhs):
-            ok, why = _rounded_passes(lhs - rhs, against, order, formula.source)
+            items.append(_rounded_item(lhs - rhs, against, order, formula.source, named))
         else:
-            ok, why = _equation_passes(lhs - rhs, against, order)
-        if not ok:
-            return False, f"{lhs} = {rhs}: {why}"
-    return True, "every equation holds" + (f" against {reference.what}" if reference.what else "")
+            expr = _substituted(lhs - rhs, against)
+            items.append(_item("equation", named, expr, against, order))
+    holds = "every equation holds" + (f" against {reference.what}" if reference.what else "")
+    return Derived(tuple(items), holds)
 
 
-def _equation_passes(residual: Any, reference: Reference, order: int | None) -> tuple[bool, str]:
+def _item(call: str, where: str, expr: Any, reference: Reference, order: int | None = None) -> Item:
+    scale = reference.scale if call == "bounded" or order is not None else None
+    if call == "equation" and scale is not None and order is not None:
+        return _series_item(where, expr, reference, order)
+    return Item(call, where, expr, scale, order, dict(reference.domain))
+
+
+def _series_item(where: str, expr: Any, reference: Reference, order: int) -> Item:
+    """A series residual; one Cauchy's integral cannot judge (an integral in it, a branch it
+    cannot follow) is truncated by sympy here, once, and judged as an identity: the same
+    verdict as truncating when judged, paid when derived."""
     import sympy as sp
 
-    expr = _substituted(residual, reference)
-    if reference.scale is not None and order is not None:
-        proved, why = taylor_verdict(expr, reference, order)
-        if proved is not None:
-            return proved, why
-        try:
-            expr = _truncated(expr, reference.scale, order)
-        except (sp.PoleError, NotImplementedError) as exc:  # sin(1/p): no series about 0
-            return False, (
-                f"the residual has no power series in {reference.scale} about 0 that sympy can "
-                f"find ({type(exc).__name__}), so it is not shown to vanish to order {order}"
-            )
-    # The random points first: cheap, and decisive when the residual is not 0; simplify only
-    # where a point gives no number. An integral is never simplified (sympy's antiderivatives
-    # can take minutes).
-    ok, why = vanishes_at_points(expr, reference)
-    if ok or "not a number" not in why or expr.has(sp.Integral):
-        return ok, why
-    return (True, "simplifies to 0") if sp.simplify(expr) == 0 else (False, why)
+    domain = dict(reference.domain)
+    if cauchy_applies(expr, reference):
+        return Item("equation", where, expr, reference.scale, order, domain)
+    try:
+        expr = truncated(expr, reference.scale, order)
+    except (sp.PoleError, NotImplementedError):  # the verdict says so, when judged
+        return Item("equation", where, expr, reference.scale, order, domain)
+    return Item("equation", where, expr, None, None, domain)
+
+
+def _relation_item(relation: Any, reference: Reference, where: str) -> Item:
+    """A printed inequality's margin, the greater side less the lesser, substituted as an
+    equation's residual (and truncated, in a series' reference)."""
+    gap = _substituted(relation.gts - relation.lts, reference)
+    if reference.scale is not None and reference.order is not None:
+        gap = truncated(gap, reference.scale, reference.order)
+    strict = relation.rel_op in ("<", ">")
+    return Item("relation", where, gap, None, None, dict(reference.domain), strict)
+
+
+def _rounded_item(
+    residual: Any, reference: Reference, order: int | None, source: str, where: str
+) -> Item:
+    def live() -> tuple[bool, str]:
+        return _rounded_passes(residual, reference, order, source)
+
+    return Item("rounded", where, live=live)
 
 
 def _substituted(residual: Any, reference: Reference) -> Any:
     """``residual`` with « … » set to 0, the reference's transform, rates and values put in
-    and its derivatives taken: what :func:`_equation_passes` evaluates, before a series."""
+    and its derivatives taken: the residual an item carries (core/derived)."""
     import sympy as sp
 
     expr = residual.subs({s: 0 for s in residual.free_symbols if s.name == ELLIPSIS})
@@ -199,67 +222,6 @@ def is_relation(expr: Any) -> bool:
     return isinstance(expr, Relational) and not expr.is_Equality
 
 
-def _relation_passes(relation: Any, reference: Reference) -> tuple[bool, str]:
-    """A printed inequality (``a > b``, ``a >= b``, ``<``, ``<=``: a sign, « toujours
-    positive », « diminuée »): the greater side less the lesser, substituted as an equation's
-    residual, at :data:`RELATION_POINTS` random rational points of the reference's ``domain``
-    (30 digits); a strict one must hold by more than the engine's tolerance, a wide one fall
-    short of 0 by no more. A symbol the reference neither gives nor bounds leaves it
-    undetermined (it does not hold): an inequality, unlike an identity, is true only over the
-    range its reference states. An inequality false on a share f of its domain passes with
-    chance (1 - f)**RELATION_POINTS (0.03 for f = 0.1)."""
-    import sympy as sp
-
-    gap = _substituted(relation.gts - relation.lts, reference)
-    if reference.scale is not None and reference.order is not None:
-        gap = _truncated(gap, reference.scale, reference.order)
-    free = sorted(gap.free_symbols, key=lambda s: s.name)
-    unbounded = [s.name for s in free if s.name not in reference.domain]
-    if unbounded:
-        return False, f"undetermined: the reference fixes no value or range of {unbounded}"
-    generator = random.Random(19)
-    tolerance = sp.Float(10) ** (5 - DIGITS)
-    strict = relation.rel_op in ("<", ">")
-    at = evaluator(gap, free)
-    for _ in range(RELATION_POINTS if free else 1):
-        point = {}
-        for s in free:
-            low, high = reference.domain[s.name]
-            point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
-        value = at(point)
-        shown = ", ".join(f"{k}={v}" for k, v in point.items()) or "the reference's values"
-        if not value.is_number or not value.is_real:
-            return False, f"not a real number at {shown}"
-        if value < tolerance if strict else value < -tolerance:
-            return False, f"the margin is {sp.N(value, 6)} at {shown}"
-    return True, "the inequality holds" + (f" at {RELATION_POINTS} random points" if free else "")
-
-
-def _bounded_passes(residual: Any, reference: Reference) -> tuple[bool, str]:
-    """``reference.bounded``: the residual's limit as the scale tends to 0+ is finite (proved
-    by :func:`finite_limit` by Cauchy's integral, else sympy's limit), at :data:`POINTS`
-    random rational values of the other symbols."""
-    import sympy as sp
-
-    expr = _substituted(residual, reference)
-    generator = random.Random(19)
-    others = sorted(expr.free_symbols - {reference.scale}, key=lambda s: s.name)
-    limit, shown = None, ""
-    for _ in range(POINTS if others else 1):
-        point = {}
-        for s in others:
-            low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
-            point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
-        limit = finite_limit(expr.subs(point), reference.scale)
-        if limit is None:
-            limit = sp.limit(expr.subs(point), reference.scale, 0, "+")
-        shown = ", ".join(f"{k}={v}" for k, v in point.items())
-        if not limit.is_finite:
-            return False, f"the residual tends to {limit} as {reference.scale} -> 0+ at {shown}"
-    where = f" at {POINTS} points, the last {shown}" if others else ""
-    return True, f"finite as {reference.scale} -> 0+ (limit {sp.N(limit, 6)}{where})"
-
-
 def _decimals(expr: Any) -> set[Any]:
     import sympy as sp
 
@@ -287,7 +249,8 @@ def _rounded_passes(
     value = _value_somewhere(needed, reference, order)
     if value is None:
         return False, f"the value the decimal {printed} stands for is not a number"
-    ok, why = _equation_passes(needed - value, reference, order)
+    expr = _substituted(needed - value, reference)
+    ok, why = item_passes(_item("equation", "", expr, reference, order))
     if not ok:
         return False, f"the decimal {printed} stands for no constant ({why})"
     half = _half_unit(printed, source)
@@ -304,7 +267,7 @@ def _value_somewhere(expr: Any, reference: Reference, order: int | None) -> Any:
 
     expr = _substituted(expr, reference)
     if reference.scale is not None and order is not None:
-        expr = _truncated(expr, reference.scale, order)
+        expr = truncated(expr, reference.scale, order)
     middle = {}
     for s in expr.free_symbols:
         low, high = reference.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
@@ -345,20 +308,6 @@ def _along_the_rates(expr: Any, rates: Mapping[str, Mapping[str, Any]]) -> Any:
     return expr.replace(lambda e: isinstance(e, sp.Derivative), evaluate)
 
 
-def _truncated(expr: Any, scale: Any, order: int) -> Any:
-    """The series of ``expr`` in ``scale`` below ``order`` (sympy's series of a polynomial
-    with unevaluated integrals for coefficients can take minutes)."""
-    import sympy as sp
-
-    if expr.is_polynomial(scale):  # its Taylor coefficients, by differentiation
-        terms, term = [], expr
-        for j in range(order):
-            terms.append(term.subs(scale, 0) * scale**j / sp.factorial(j))
-            term = sp.diff(term, scale)
-        return sum(terms)
-    return sp.series(expr, scale, 0, order).removeO()
-
-
 def _functions_replaced(expr: Any, reference: Reference) -> Any:
     """Each call of a declared function the reference gives (``E_c(pi)``) by its value."""
     from sympy.core.function import AppliedUndef
@@ -375,21 +324,33 @@ def _functions_replaced(expr: Any, reference: Reference) -> Any:
 def judged(formula: Formula, reference: Reference) -> tuple[bool, str]:
     """:func:`formula_passes`, in each of the reference's ``each_case`` (every one must pass)
     and with its ``conditions``."""
+    return passes(derive(formula, reference))
+
+
+def derive(formula: Formula, reference: Reference) -> Derived:
+    """The items :func:`judged` judges: the formula's, in each of the reference's
+    ``each_case`` in turn (a failure names its case), its ``conditions`` added."""
     from dataclasses import replace
 
     if reference.each_case:
-        why = ""
+        items: list[Item] = []
+        holds = ""
+        count = len(reference.each_case)
         for index, case in enumerate(reference.each_case, 1):
             one = replace(reference, exact=_in_case(reference.exact, case), each_case=())
-            ok, why = judged(formula, one)
-            if not ok:
-                return False, f"case {index} of {len(reference.each_case)}: {why}"
-        return True, f"{why}, in each of {len(reference.each_case)} cases"
+            derived = _derive_one(formula, one, f"case {index} of {count}: ")
+            items.extend(derived.items)
+            holds = derived.holds
+        return Derived(tuple(items), f"{holds}, in each of {count} cases")
+    return _derive_one(formula, reference, "")
+
+
+def _derive_one(formula: Formula, reference: Reference, where: str) -> Derived:
     if reference.conditions:
         pairs = zip(formula.equations, reference.conditions, strict=False)
         shifted = [(l, r if c is None or l is None else r + c) for (l, r), c in pairs]
         formula = Formula(formula.source, (*shifted, *formula.equations[len(shifted) :]))
-    return formula_passes(formula, reference)
+    return derive_formula(formula, reference, where)
 
 
 def _in_case(exact: Mapping[str, Any], case: Mapping[str, Any]) -> dict[str, Any]:

@@ -16,7 +16,7 @@ from typing import Any
 
 from pendcli.core.point_values import DIGITS, POINTS, Sampled, compiled, random_value
 
-__all__ = ["finite_limit", "taylor_verdict"]
+__all__ = ["cauchy_applies", "finite_limit", "taylor_verdict"]
 
 
 # samples on the circle of _cauchy_verdict: the error goes as (radius / distance to the
@@ -114,6 +114,22 @@ def taylor_verdict(expr: Any, reference: Sampled, order: int) -> tuple[bool | No
     s**order those below t**(q * order). (True, why): proved; (False, why): a coefficient
     below the order is decisively not 0 (:func:`_cauchy_verdict`); (None, ""): decides
     nothing, ``expr`` is then truncated by sympy and judged at the points as before."""
+
+    in_root = _in_root(expr, reference)
+    if in_root is None:
+        return None, ""
+    variable, branch = in_root[1:]
+    return _cauchy_verdict(in_root[0], reference, branch * order, variable, branch)
+
+
+def cauchy_applies(expr: Any, reference: Sampled) -> bool:
+    """Whether :func:`taylor_verdict` can judge ``expr`` by Cauchy's integral at all (no
+    integral, derivative or substitution in it; a rational domain; analytic in a root of the
+    scale but for a pole); when not, sympy's series is the only way, and is taken once."""
+    return _in_root(expr, reference) is not None
+
+
+def _in_root(expr: Any, reference: Sampled) -> tuple[Any, Any, int] | None:
     import sympy as sp
 
     scale = reference.scale
@@ -121,12 +137,8 @@ def taylor_verdict(expr: Any, reference: Sampled, order: int) -> tuple[bool | No
     if expr.has(sp.Integral, sp.Derivative, sp.Subs) or not all(
         isinstance(sp.sympify(b, strict=True), sp.Rational) for b in (low, high)
     ):
-        return None, ""
-    in_root = _meromorphic_in_root(expr, scale, positive=sp.sympify(low, strict=True) > 0)
-    if in_root is None:
-        return None, ""
-    variable, branch = in_root[1:]
-    return _cauchy_verdict(in_root[0], reference, branch * order, variable, branch)
+        return None
+    return _meromorphic_in_root(expr, scale, positive=sp.sympify(low, strict=True) > 0)
 
 
 def _meromorphic_in_root(expr: Any, scale: Any, positive: bool) -> tuple[Any, Any, int] | None:

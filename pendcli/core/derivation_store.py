@@ -1,0 +1,306 @@
+"""The engine's derivations as data: ``tables/derivations/<paper>.json``.
+
+What a row's reference gives (the exact symbolic work of :func:`pendcli.core.printed_check.derive`:
+each residual with the model put in, its cases spelled out) is written once by ``make
+regen`` and read back here, so that a cold ``pendcli equations`` judges every row without
+building one reference. ``pendcli check`` derives them again and fails on any difference.
+
+The format (JSON, one file per paper)::
+
+    {"format": 1, "paper": "...", "tables": "<digest of the published tables and ledgers>",
+     "rows": {"<row id>": {"inputs": "<digest of the row>", "kind": "<kind called for>",
+                           "forms": {"printed": {"holds": "...", "items": [ITEM, ...]},
+                                     "reading": ..., "corrected": ...}}}}
+
+with ITEM = {"call", "where", "expr", "scale", "order", "domain", "strict", "why"}; each
+expression is sympy's ``srepr`` and is read back by a closed grammar (:func:`read_expr`):
+calls of the sympy constructors in :data:`HEADS` with number, string and boolean arguments,
+nothing evaluated, the size of a file and the depth of an expression bounded. The store is
+used only when its ``tables`` digest is that of the tables in use and the row's ``inputs``
+digest is the row's; otherwise the row is derived afresh (said once on stderr). Only the
+store shipped with the package is read, never one from a tables folder given by
+``PENDCLI_TABLES``: a folder with the same content shares it, an edited one derives.
+"""
+
+from __future__ import annotations
+
+import ast
+import hashlib
+import json
+from collections.abc import Mapping
+from functools import cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from pendcli.core.derived import CALLS, Derived, Item, canonical_dummies
+from pendcli.core.errors import PendcliError
+
+if TYPE_CHECKING:
+    from pendcli.core.ledger import LedgerRow
+
+__all__ = [
+    "FORMAT",
+    "HEADS",
+    "StoredRow",
+    "read_expr",
+    "row_inputs",
+    "row_record",
+    "store_path",
+    "stores_here",
+    "stored_rows",
+    "write_store",
+]
+
+FORMAT = 1
+# the sympy constructors (and constants) an expression of the store may name
+HEADS = frozenset(
+    [
+        "Symbol",
+        "Dummy",
+        "Integer",
+        "Rational",
+        "Float",
+        "Add",
+        "Mul",
+        "Pow",
+        "Tuple",
+        "Function",
+        "Integral",
+        "Derivative",
+        "Subs",
+        "sin",
+        "cos",
+        "tan",
+        "exp",
+        "log",
+        "atan",
+        "asin",
+        "acos",
+        "atan2",
+        "sinh",
+        "cosh",
+        "tanh",
+        "Abs",
+        "floor",
+        "sign",
+        "arg",
+        "factorial2",
+        "factorial",
+        "besselj",
+        "bessely",
+        "elliptic_k",
+        "elliptic_e",
+        "sqrt",
+        "re",
+        "im",
+    ]
+)
+CONSTANTS = frozenset(["pi", "E", "I", "oo", "zoo", "nan", "EulerGamma"])
+_MAX_BYTES = 8_000_000  # a store's file
+_MAX_NODES = 200_000  # one expression's
+_MAX_DEPTH = 200
+# an integer literal's bound: a power or factorial of larger ones would take the machine
+_MAX_INTEGER = 10**60
+_MAX_EXPONENT = 10_000
+
+
+# A row's stored derivation: the kind its reference calls for, and each form's items
+StoredRow = tuple[str, dict[str, Derived]]
+
+
+_PACKAGE_TABLES = Path(__file__).resolve().parent.parent / "_tables"
+
+
+def store_path(paper: str) -> Path:
+    """The store shipped with the package (never a ``PENDCLI_TABLES`` folder's)."""
+    return _PACKAGE_TABLES / "derivations" / f"{paper}.json"
+
+
+def stores_here(tables: Path) -> bool:
+    """Whether ``tables`` is the package's own folder, the only one whose derivations are
+    stored (``make regen``, ``check --update``) and compared (``check``)."""
+    return tables.resolve() == _PACKAGE_TABLES.resolve()
+
+
+def row_inputs(row: LedgerRow, symbols: Mapping[str, str]) -> str:
+    """The digest of what the row's derivation reads of the row itself."""
+    parts = [
+        row.read("printed"),
+        row.read("reading_formula"),
+        row.read("corrected_formula"),
+        row.reference,
+        row.kind,
+        sorted(symbols.items()),
+    ]
+    return hashlib.sha256(json.dumps(parts, ensure_ascii=True).encode()).hexdigest()
+
+
+def stored_rows(paper: str, tables: str) -> dict[str, tuple[str, dict[str, Any]]]:
+    """{row id: (inputs digest, record)} of the paper's store when it was derived from tables
+    whose digest is ``tables``; empty when there is none or it is stale. The records are read
+    as JSON here, their expressions only when a row is judged (:func:`row_record`)."""
+    raw = _raw_store(paper)
+    if raw is None or raw.get("tables") != tables or raw.get("format") != FORMAT:
+        return {}
+    rows = raw.get("rows")
+    if not isinstance(rows, dict):
+        raise PendcliError(f"{store_path(paper)}: 'rows' is not a table")
+    return {k: (str(v.get("inputs")), v) for k, v in rows.items() if isinstance(v, dict)}
+
+
+@cache
+def _raw_store(paper: str) -> dict[str, Any] | None:
+    path = store_path(paper)
+    try:
+        with path.open("rb") as handle:
+            data = handle.read(_MAX_BYTES + 1)
+    except FileNotFoundError:
+        return None
+    except OSError as exc:
+        raise PendcliError(f"{path}: cannot read the derivations ({exc.strerror})") from None
+    if len(data) > _MAX_BYTES:
+        raise PendcliError(f"{path}: more than {_MAX_BYTES} bytes of derivations")
+    try:
+        raw = json.loads(data)
+    except (ValueError, RecursionError):
+        raise PendcliError(f"{path}: not JSON: run `make regen`") from None
+    return raw if isinstance(raw, dict) else None
+
+
+def row_record(where: str, record: Mapping[str, Any]) -> StoredRow:
+    """A stored row read back: (kind, {form: Derived}); a malformed record is an error naming
+    the row."""
+    kind, forms = record.get("kind"), record.get("forms")
+    if not isinstance(kind, str) or not isinstance(forms, dict) or "printed" not in forms:
+        raise PendcliError(f"{where}: a stored derivation needs 'kind' and 'forms.printed'")
+    out = {}
+    for form, derived in forms.items():
+        if form not in ("printed", "reading", "corrected") or not isinstance(derived, dict):
+            raise PendcliError(f"{where}: unknown stored form {str(form)[:40]!r}")
+        items = tuple(_item(f"{where} {form}", i) for i in derived.get("items", ()))
+        out[form] = Derived(items, str(derived.get("holds", "")))
+    return kind, out
+
+
+def _item(where: str, raw: Any) -> Item:
+    if not isinstance(raw, dict) or raw.get("call") not in CALLS or raw["call"] == "rounded":
+        raise PendcliError(f"{where}: a stored item needs a call among {', '.join(CALLS[:3])}")
+    text = raw.get("expr")
+    if text is not None and not isinstance(text, str):
+        raise PendcliError(f"{where}: a stored expression must be a string")
+    scale = read_expr(where, raw["scale"]) if raw.get("scale") is not None else None
+    domain = {
+        str(name): (read_expr(where, low), read_expr(where, high))
+        for name, (low, high) in dict(raw.get("domain") or {}).items()
+    }
+    order = raw.get("order")
+    if order is not None and not isinstance(order, int):
+        raise PendcliError(f"{where}: a stored order must be an integer")
+    where_shown, strict, why = str(raw.get("where", "")), bool(raw.get("strict")), raw.get("why")
+    return Item(
+        raw["call"], where_shown, None, scale, order, domain, strict, str(why or ""), text=text
+    )
+
+
+def item_record(item: Item) -> dict[str, Any]:
+    """An item as the store writes it (a rounded item, judged from its live reference, has
+    no record: its row is never stored)."""
+    import sympy as sp
+
+    if item.call == "rounded":
+        raise ValueError("a rounded item is judged from its live reference")
+
+    def text(value: Any) -> str | None:
+        if value is None:
+            return None
+        return canonical_dummies(sp.srepr(sp.sympify(value, strict=True)))
+
+    return {
+        "call": item.call,
+        "where": item.where,
+        "expr": item.source,
+        "scale": text(item.scale),
+        "order": item.order,
+        "domain": {k: [text(low), text(high)] for k, (low, high) in sorted(item.domain.items())},
+        "strict": item.strict,
+        "why": item.why,
+    }
+
+
+def write_store(paper: str, tables: str, rows: Mapping[str, dict[str, Any]]) -> Path:
+    """Write the paper's store atomically (a crash never leaves half a file)."""
+    from pendcli.core.files import atomic_write
+
+    body = {"format": FORMAT, "paper": paper, "tables": tables, "rows": dict(rows)}
+    text = json.dumps(body, indent=1, ensure_ascii=False, sort_keys=True) + "\n"
+    _raw_store.cache_clear()
+    return atomic_write(store_path(paper), text)
+
+
+# --- the closed grammar of an expression -------------------------------------------------
+
+
+@cache
+def read_expr(where: str, text: str) -> Any:
+    """A sympy expression from its ``srepr``, read by walking the parsed syntax tree: only
+    calls of :data:`HEADS`, the names of :data:`CONSTANTS`, and number, string and boolean
+    literals; anything else is an error naming ``where``. Nothing is evaluated as code."""
+    if not isinstance(text, str) or len(text) > _MAX_BYTES:
+        raise PendcliError(f"{where}: a stored expression must be a string")
+    try:
+        tree = ast.parse(text, mode="eval")
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        raise PendcliError(f"{where}: a stored expression does not parse") from None
+    if sum(1 for _ in ast.walk(tree)) > _MAX_NODES:
+        raise PendcliError(f"{where}: a stored expression of more than {_MAX_NODES} nodes")
+    try:
+        return _build(where, tree.body, 0)
+    except PendcliError:
+        raise
+    except Exception as exc:  # a constructor refusing its arguments: the file is malformed
+        raise PendcliError(
+            f"{where}: a stored expression sympy refuses ({type(exc).__name__})"
+        ) from None
+
+
+def _refuse_huge(where: str, head: str, args: list[Any]) -> None:
+    """A power or factorial whose exact value would not fit the machine is refused."""
+    import sympy as sp
+
+    if head not in ("Pow", "factorial", "factorial2"):
+        return
+    checked = args[1:] if head == "Pow" else args
+    for arg in checked:
+        if isinstance(arg, sp.Integer) and abs(arg) > _MAX_EXPONENT:
+            raise PendcliError(f"{where}: a stored {head} of an integer beyond {_MAX_EXPONENT}")
+
+
+def _build(where: str, node: ast.AST, depth: int) -> Any:
+    import sympy as sp
+
+    if depth > _MAX_DEPTH:
+        raise PendcliError(f"{where}: a stored expression nested more than {_MAX_DEPTH} deep")
+    if isinstance(node, ast.Constant) and isinstance(node.value, (int, str, bool)):
+        if isinstance(node.value, int) and abs(node.value) > _MAX_INTEGER:
+            raise PendcliError(f"{where}: a stored integer beyond {_MAX_INTEGER:.0e}")
+        return node.value
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        value = _build(where, node.operand, depth + 1)
+        if isinstance(value, int) and not isinstance(value, bool):
+            return -value
+    if isinstance(node, ast.Name) and node.id in CONSTANTS:
+        return getattr(sp, node.id)
+    if isinstance(node, ast.Call):
+        if isinstance(node.func, ast.Call):  # Function('f')(x): an undefined function applied
+            head = _build(where, node.func, depth + 1)
+            if isinstance(head, sp.core.function.UndefinedFunction):
+                return head(*(_build(where, a, depth + 1) for a in node.args))
+        elif isinstance(node.func, ast.Name) and node.func.id in HEADS:
+            args = [_build(where, a, depth + 1) for a in node.args]
+            if any(k.arg is None for k in node.keywords):
+                raise PendcliError(f"{where}: a stored expression with ** arguments")
+            keywords = {str(k.arg): _build(where, k.value, depth + 1) for k in node.keywords}
+            _refuse_huge(where, node.func.id, args)
+            return getattr(sp, node.func.id)(*args, **keywords)
+    shown = ast.dump(node)[:60]
+    raise PendcliError(f"{where}: a stored expression holds what the grammar refuses: {shown}")

@@ -1,0 +1,433 @@
+"""Float64 first: an item judged in double precision, decided only where its margin is wide.
+
+An item's residual (its stored text, sympy's srepr) is compiled once to a numpy function by
+walking its syntax tree (no sympy object is built, nothing is evaluated as code), together
+with its *size*: the same expression with every sum a sum of absolute values, the scale of
+the cancellation a vanishing residual shows. Then:
+
+* an **identity** (an equation without an order) holds when the residual is below
+  :data:`HOLDS` of its size at :data:`POINTS` random points of the domain, and fails when it is
+  above :data:`FAILS` of its size at one of them, a finite real number;
+* a **series** (an equation with a scale and an order) is expanded by Cauchy's integral on two
+  circles about 0 (:data:`CIRCLE` samples each, the other symbols at random real points): it
+  holds when every coefficient below the order contributes less than :data:`HOLDS` of the
+  size on the circle, on both circles; it fails when one contributes more than :data:`FAILS`
+  and the two circles give the same Laurent coefficients (the function is analytic in the
+  ring between them: no branch cut, which principal-branch arithmetic would show as spurious
+  coefficients);
+* a **relation** (an inequality) holds when its margin clears :data:`HOLDS` of its size with
+  the right sign at the engine's 32 rational points, and fails when it has the wrong sign by
+  more than :data:`FAILS` of its size at one of them.
+
+Everything between (a residual of 1e-9 of its terms, a coefficient of 1e-8, a branch, a
+function float64 lacks: an integral on the complex circle, an undefined function) is
+undecided, and the exact engine (mpmath at 20 digits, Cauchy at 40, sympy) judges. Float64
+rounding leaves a residual near 1e-16 of its size times the depth of the expression, so
+:data:`HOLDS` = 1e-14 is a margin of about 100 over rounding, and a verdict of "holds" here is
+agreement to fourteen digits of the residual's terms at each point, not a proof
+(``docs/ENGINE.md``). It is that fine because a slip can hide there: a printed 2 made
+2.000002 inside a function stationary at that point moves the residual by 1e-12 only. The slow tests
+judge every stored item both ways and require the same verdict wherever float64 decides.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+import random
+from collections.abc import Callable
+from fractions import Fraction
+from functools import cache
+from typing import TYPE_CHECKING, Any
+
+from pendcli.core.point_values import FLOOR
+
+if TYPE_CHECKING:
+    from pendcli.core.derived import Item
+
+__all__ = ["CIRCLE", "FAILS", "HOLDS", "POINTS", "compile_text", "quick_verdict"]
+
+HOLDS = 1e-14
+FAILS = 1e-6
+POINTS = 8
+CIRCLE = 64
+_DEFAULT_DOMAIN = (Fraction(1, 10), Fraction(1, 2))
+
+Verdict = tuple[bool, str]
+
+
+class Unsupported(Exception):
+    """What float64 cannot evaluate here: the exact engine judges."""
+
+
+def quick_verdict(item: Item) -> Verdict | None:
+    """The item's verdict in float64, or None when float64 does not decide it."""
+    if item.call not in ("equation", "relation") or item.source is None:
+        return None
+    try:
+        compiled = compile_text(item.source)
+        if item.call == "relation":
+            return _relation(item, compiled)
+        if item.scale is not None and item.order is not None:
+            return _series(item, compiled)
+        return _identity(item, compiled)
+    except (Unsupported, ArithmeticError, ValueError, TypeError):
+        return None
+
+
+# --- the points -------------------------------------------------------------------------
+
+
+def _domain(item: Item, name: str) -> tuple[Fraction, Fraction]:
+    if name not in item.domain:
+        return _DEFAULT_DOMAIN
+    low, high = item.domain[name]
+    return _fraction(low), _fraction(high)
+
+
+def _fraction(value: Any) -> Fraction:
+    import sympy as sp
+
+    value = sp.sympify(value, strict=True)
+    if not isinstance(value, sp.Rational):
+        raise Unsupported("an irrational end of a domain")
+    return Fraction(int(value.p), int(value.q))
+
+
+def _points(item: Item, names: list[str], count: int) -> list[dict[str, Fraction]]:
+    """``count`` random rational points, drawn as the exact engine draws them."""
+    generator = random.Random(19)
+    out = []
+    for _ in range(count):
+        point = {}
+        for name in names:
+            low, high = _domain(item, name)
+            point[name] = low + (high - low) * Fraction(generator.randint(1, 999), 1000)
+        out.append(point)
+    return out
+
+
+def _shown(point: dict[str, Fraction]) -> str:
+    return ", ".join(f"{k}={v}" for k, v in point.items())
+
+
+def _at(point: dict[str, Fraction]) -> str:
+    return f" at {_shown(point)}" if point else ""
+
+
+# --- the three verdicts -----------------------------------------------------------------
+
+
+def _identity(item: Item, compiled: Compiled) -> Verdict | None:
+    import numpy as np
+
+    names = sorted(compiled.names - _REAL_ONLY)
+    points = _points(item, names, POINTS)
+    env = {n: np.array([float(p[n]) for p in points]) for n in names}
+    value, size = compiled.value(env, points=len(points)), compiled.size(env, points=len(points))
+    if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
+        return None
+    if np.iscomplexobj(value) and np.any(np.abs(value.imag) > HOLDS * size):
+        return None
+    value = np.real(value)
+    if np.all((np.abs(value) <= HOLDS * size) | (np.abs(value) <= FLOOR)):
+        return True, f"vanishes at {POINTS} random points to 1e-14 of its terms (float64)"
+    for index, (v, s) in enumerate(zip(value, size, strict=True)):
+        if abs(v) > FAILS * s and abs(v) > FLOOR:
+            return False, f"residual {v:.6g}{_at(points[index])} (float64)"
+    return None
+
+
+def _relation(item: Item, compiled: Compiled) -> Verdict | None:
+    import numpy as np
+
+    from pendcli.core.derived import RELATION_POINTS
+
+    names = sorted(compiled.names - _REAL_ONLY)
+    unbounded = [n for n in names if n not in item.domain]
+    if unbounded:
+        return None  # the exact engine words it
+    points = _points(item, names, RELATION_POINTS if names else 1)
+    env = {n: np.array([float(p[n]) for p in points]) for n in names}
+    value, size = compiled.value(env, points=len(points)), compiled.size(env, points=len(points))
+    if np.iscomplexobj(value) or not np.all(np.isfinite(value)):
+        return None
+    for index, (v, s) in enumerate(zip(value, size, strict=True)):
+        if v < -FAILS * s:
+            return False, f"the margin is {v:.6g}{_at(points[index])} (float64)"
+    if np.all(value > HOLDS * size + 1e-300):
+        return True, "the inequality holds" + (
+            f" at {RELATION_POINTS} random points" if names else ""
+        )
+    return None
+
+
+def _series(item: Item, compiled: Compiled) -> Verdict | None:
+    import numpy as np
+
+    scale = str(item.scale)
+    order = item.order
+    assert order is not None
+    if compiled.names & _REAL_ONLY:
+        return None
+    others = sorted(compiled.names - {scale} - _REAL_ONLY)
+    high = float(_domain(item, scale)[1])
+    radii = (min(high, 0.5), min(high, 0.5) / 2)
+    roots = np.exp(2j * np.pi * np.arange(CIRCLE) / CIRCLE)
+    powers = np.fft.fftfreq(CIRCLE, 1 / CIRCLE).astype(int)  # 0, 1, …, -2, -1
+    failing = None
+    for point in _points(item, others, 3 if others else 1):
+        coefficients, sizes = [], []
+        for radius in radii:
+            env = {n: np.full(CIRCLE, float(point[n]), dtype=complex) for n in others}
+            env[scale] = radius * roots
+            value = compiled.value(env, points=CIRCLE)
+            size = compiled.size(env, points=CIRCLE)
+            if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
+                return None
+            coefficients.append(np.fft.fft(value) / CIRCLE / radius ** powers.astype(float))
+            sizes.append(float(np.max(size)))
+        below = powers < order
+        for a, s, r in zip(coefficients, sizes, radii, strict=True):
+            contribution = np.abs(a[below]) * r ** powers[below].astype(float)
+            if np.any(contribution > HOLDS * s):
+                break
+        else:
+            continue  # every coefficient below the order is 0 to float64 on both circles
+        failing = _decisive_failure(coefficients, sizes, radii, powers, order, scale)
+        if failing is None:
+            return None
+        where = f" at {_shown(point)}" if others else ""
+        return False, f"{failing}{where} (float64 Cauchy)"
+    return True, f"its series in {scale} vanishes below order {order} (float64 Cauchy)"
+
+
+def _decisive_failure(
+    coefficients: list[Any],
+    sizes: list[float],
+    radii: tuple[float, float],
+    powers: Any,
+    order: int,
+    scale: str,
+) -> str | None:
+    """The lowest power below the order whose coefficient is decisively not 0, when the two
+    circles agree on every coefficient (the residual analytic between them); else None."""
+    import numpy as np
+
+    near, far = coefficients[1], coefficients[0]
+    inner = radii[1] ** powers.astype(float)
+    agree = np.abs(near - far) * inner <= 1e-9 * max(sizes)
+    tail = np.abs(powers) >= CIRCLE // 4
+    if not np.all(agree[~tail]) or np.any(
+        np.abs(far[tail]) * radii[0] ** powers[tail].astype(float) > 1e-9 * sizes[0]
+    ):
+        return None
+    for power in sorted(int(p) for p in powers[powers < order]):
+        index = int(np.nonzero(powers == power)[0][0])
+        if power < 0 and abs(far[index]) * radii[0] ** power > HOLDS * sizes[0]:
+            return None  # a pole or worse: the exact engine says whether a series exists
+        if abs(far[index]) * radii[0] ** power > FAILS * sizes[0]:
+            value = far[index]
+            shown = f"{value.real:.6g}" if abs(value.imag) <= 1e-9 * abs(value) else f"{value:.6g}"
+            return f"the coefficient of {scale}**{power} is {shown}"
+    return None
+
+
+# --- compiling a stored expression ------------------------------------------------------
+
+
+class Compiled:
+    """A residual's value and size as numpy functions of its symbols' arrays."""
+
+    def __init__(self, value: Node, size: Node, names: frozenset[str]) -> None:
+        self._value, self._size, self.names = value, size, names
+
+    def value(self, env: dict[str, Any], points: int) -> Any:
+        import numpy as np
+
+        with np.errstate(all="ignore"):
+            return np.broadcast_to(self._value(env), (points,))
+
+    def size(self, env: dict[str, Any], points: int) -> Any:
+        import numpy as np
+
+        with np.errstate(all="ignore"):
+            return np.abs(np.broadcast_to(self._size(env), (points,)))
+
+
+Node = Callable[[dict[str, Any]], Any]
+
+
+@cache
+def compile_text(text: str) -> Compiled:
+    """The value and size functions of a stored expression (sympy's srepr)."""
+    tree = ast.parse(text, mode="eval").body
+    names: set[str] = set()
+    value = _node(tree, names)
+    size = _size_node(tree, names)
+    return Compiled(value, size, frozenset(names))
+
+
+# heads whose value is not analytic in a complex scale: a series that has one is not judged here
+_REAL_ONLY = frozenset({"Abs", "floor", "sign", "arg", "re", "im", "atan2", "Integral"})
+_UNARY = {
+    "sin": "sin",
+    "cos": "cos",
+    "tan": "tan",
+    "exp": "exp",
+    "log": "log",
+    "atan": "arctan",
+    "asin": "arcsin",
+    "acos": "arccos",
+    "sinh": "sinh",
+    "cosh": "cosh",
+    "tanh": "tanh",
+    "Abs": "abs",
+    "floor": "floor",
+    "sign": "sign",
+    "re": "real",
+    "im": "imag",
+    "arg": "angle",
+}
+_CONSTANTS = {"pi": math.pi, "E": math.e, "EulerGamma": 0.5772156649015329, "I": 1j}
+
+
+def _head(node: ast.AST) -> str:
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
+        return node.func.id
+    raise Unsupported(ast.dump(node)[:40])
+
+
+def _number(node: ast.AST) -> float | int | str:
+    if isinstance(node, ast.Constant) and isinstance(node.value, (int, float, str)):
+        return node.value
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        inner = _number(node.operand)
+        if isinstance(inner, (int, float)):
+            return -inner
+    raise Unsupported("not a literal")
+
+
+def _node(tree: ast.AST, names: set[str]) -> Node:
+    """The value of ``tree`` as a function of the symbols' arrays."""
+    import numpy as np
+
+    if isinstance(tree, ast.Name):
+        if tree.id not in _CONSTANTS:
+            raise Unsupported(tree.id)
+        constant = _CONSTANTS[tree.id]
+        return lambda env: constant
+    head = _head(tree)
+    names.add(head) if head in _REAL_ONLY else None
+    args = tree.args  # type: ignore[attr-defined]
+    if head == "Symbol":
+        name = str(_number(args[0]))
+        names.add(name)
+        return lambda env: env[name]
+    if head in ("Integer", "Rational", "Float"):
+        numbers = [_number(a) for a in args]
+        value = float(numbers[0]) if head != "Rational" else int(numbers[0]) / int(numbers[1])
+        return lambda env: value
+    if head in ("Add", "Mul"):
+        parts = [_node(a, names) for a in args]
+        if head == "Add":
+            return lambda env: sum(p(env) for p in parts)
+        return lambda env: math.prod((p(env) for p in parts), start=1.0)
+    if head == "Pow":
+        base, exponent = (_node(a, names) for a in args)
+        return lambda env: np.power(base(env), exponent(env))
+    if head in _UNARY:
+        (inner,) = (_node(a, names) for a in args)
+        function = getattr(np, _UNARY[head])
+        return lambda env: function(inner(env))
+    return _special(head, args, names)
+
+
+def _special(head: str, args: list[ast.AST], names: set[str]) -> Node:
+    import numpy as np
+
+    if head == "atan2":
+        y, x = (_node(a, names) for a in args)
+        return lambda env: np.arctan2(y(env), x(env))
+    if head in ("besselj", "bessely"):
+        from scipy import special
+
+        function = special.jv if head == "besselj" else special.yv
+        order, argument = (_node(a, names) for a in args)
+        return lambda env: function(order(env), argument(env))
+    if head in ("factorial", "factorial2") and _head(args[0]) == "Integer":
+        from sympy import factorial, factorial2
+
+        n = int(_number(args[0].args[0]))  # type: ignore[attr-defined]
+        value = float((factorial if head == "factorial" else factorial2)(n))
+        return lambda env: value
+    if head == "Integral":
+        return _integral(args, names)
+    raise Unsupported(head)
+
+
+def _size_node(tree: ast.AST, names: set[str]) -> Node:
+    """The size of ``tree``: every sum a sum of absolute values (ε·(a − b): |ε|·(|a| + |b|))."""
+    import numpy as np
+
+    head = _head(tree) if isinstance(tree, ast.Call) else ""
+    args = getattr(tree, "args", [])
+    if head in ("Add", "Mul"):
+        parts = [_size_node(a, names) for a in args]
+        if head == "Add":
+            return lambda env: sum(np.abs(p(env)) for p in parts)
+        return lambda env: math.prod((np.abs(p(env)) for p in parts), start=1.0)
+    if head == "Pow" and _head(args[1]) == "Integer" and int(_number(args[1].args[0])) > 0:
+        base, power = _size_node(args[0], names), int(_number(args[1].args[0]))
+        return lambda env: np.abs(base(env)) ** power
+    value = _node(tree, names)
+    return lambda env: np.abs(value(env))
+
+
+# tanh-sinh quadrature on [-1, 1]: steps h and h/2, nodes until the weights underflow
+_LEVELS = (1 / 8, 1 / 16)
+
+
+@cache
+def _tanh_sinh(step: float) -> tuple[Any, Any]:
+    import numpy as np
+
+    k = np.arange(-int(3.2 / step), int(3.2 / step) + 1) * step
+    u = np.pi / 2 * np.sinh(k)
+    nodes = np.tanh(u)
+    weights = step * np.pi / 2 * np.cosh(k) / np.cosh(u) ** 2
+    keep = np.abs(nodes) < 1.0  # the nodes float64 still tells from the ends
+    return nodes[keep], weights[keep]
+
+
+def _integral(args: list[ast.AST], names: set[str]) -> Node:
+    """A definite integral by tanh-sinh quadrature at every point at once (the ends may be
+    singular); when two step sizes differ by more than 1e-13 of the value, undecided."""
+    import numpy as np
+
+    if len(args) != 2 or _head(args[1]) != "Tuple":
+        raise Unsupported("a multiple integral")
+    variable, low, high = args[1].args  # type: ignore[attr-defined]
+    name = str(_number(variable.args[0]))
+    inside: set[str] = set()
+    integrand = _node(args[0], inside)
+    names |= inside - {name}
+    lower, upper = _node(low, names), _node(high, names)
+
+    def value(env: dict[str, Any]) -> Any:
+        a, b = np.asarray(lower(env)), np.asarray(upper(env))
+        results = []
+        for step in _LEVELS:
+            nodes, weights = _tanh_sinh(step)
+            inner = {k: np.asarray(v)[..., None] for k, v in env.items()}
+            half, middle = (b - a)[..., None] / 2, (b + a)[..., None] / 2
+            inner[name] = middle + half * nodes
+            results.append(np.sum(integrand(inner) * weights * half, axis=-1))
+        coarse, fine = results
+        if np.any(np.abs(fine - coarse) > 1e-13 * np.abs(fine) + 1e-300) or not np.all(
+            np.isfinite(fine)
+        ):
+            raise Unsupported("a quadrature that does not settle")
+        return fine
+
+    return value

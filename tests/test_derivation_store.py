@@ -1,0 +1,215 @@
+"""The ledger's derivations as data (pendcli/core/derivation_store.py, float_verdict.py).
+
+The store is read by a closed grammar (code in it is refused, sizes bounded); it is used only
+for the tables it was derived from, and never read from a tables folder given by
+PENDCLI_TABLES; float64 decides an item only where the exact engine would say the same; and
+its verdicts on expressions of known expansion are checked against mpmath.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import mpmath
+import pytest
+import sympy as sp
+
+from pendcli.core import float_verdict, ledger_references
+from pendcli.core.derivation_store import read_expr, row_record, store_path, stored_rows
+from pendcli.core.derived import Item, item_passes
+from pendcli.core.errors import PendcliError
+from pendcli.core.ledger import load_ledger
+from pendcli.core.ledger_references import row_printed_status
+from pendcli.core.printed import ledger_symbols
+from pendcli.papers.registry import ledger_papers, paper
+
+# --- the closed grammar ---------------------------------------------------------------------
+
+REFUSED = [
+    "__import__('os').system('true')",
+    "Symbol('x').__class__",
+    "(lambda: 1)()",
+    "open('/etc/passwd')",
+    "Pow(Integer(10), Integer(100000000))",
+    "factorial(Integer(100000))",
+    "Integer(" + "9" * 80 + ")",
+    "Add(" * 300 + "Integer(1)" + ")" * 300,
+    "Symbol(**{'name': 'x'})",
+    "[Integer(1)]",
+    "Add(Integer(1), 'x' + 'y')",
+    "Integer(1",
+]
+
+
+@pytest.mark.parametrize("text", REFUSED)
+def test_the_grammar_refuses_what_is_not_a_stored_expression(text: str) -> None:
+    with pytest.raises(PendcliError) as raised:
+        read_expr("a row", text)
+    assert str(raised.value).startswith("a row: ") and "\n" not in str(raised.value)
+
+
+def test_the_grammar_reads_back_what_srepr_writes() -> None:
+    x, t = sp.Symbol("x", real=True), sp.Symbol("t", real=True)
+    expr = sp.besselj(0, x) * sp.Integral(sp.sin(t) / t, (t, 0, sp.pi)) - sp.Rational(3, 7) * x**2
+    assert read_expr("here", sp.srepr(expr)) == expr
+
+
+def test_a_store_is_bounded_and_must_be_json(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    from pendcli.core import derivation_store
+
+    bad = tmp_path / "x-derivations.json"
+    monkeypatch.setattr(derivation_store, "store_path", lambda key: bad)
+    derivation_store._raw_store.cache_clear()
+    bad.write_text("{not json")
+    with pytest.raises(PendcliError, match="not JSON"):
+        stored_rows("x", "digest")
+    derivation_store._raw_store.cache_clear()
+    monkeypatch.setattr(derivation_store, "_MAX_BYTES", 10)
+    bad.write_text('{"format": 1, "rows": {}}')
+    with pytest.raises(PendcliError, match="more than 10 bytes"):
+        stored_rows("x", "digest")
+    derivation_store._raw_store.cache_clear()
+
+
+def test_a_malformed_record_names_its_row() -> None:
+    with pytest.raises(PendcliError, match=r"^row 7 printed: "):
+        row_record("row 7", {"kind": "identity", "forms": {"printed": {"items": [{"call": "x"}]}}})
+
+
+# --- used only for its own tables -------------------------------------------------------------
+
+
+def _row(paper_key: str, status: str) -> tuple[object, dict[str, str]]:
+    ledger = load_ledger(paper_key)
+    row = next(r for r in ledger.rows if r.status == status and r.kind == "identity")
+    return row, ledger.symbols_for(row)
+
+
+def test_a_foreign_store_is_never_read(tables: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A tables folder of one's own may carry a store that says a failing row holds: it is
+    not read (only the package's is), and the row is judged from the same tables as before."""
+    key = "charbonnier"
+    row, symbols = _row(key, "misprint")
+    committed = json.loads(store_path(key).read_text())
+    committed["rows"][row.id]["forms"]["printed"]["items"] = []  # nothing to judge: "holds"
+    (tables / "derivations" / f"{key}.json").write_text(json.dumps(committed))
+    ledger_references._clear_reference_caches()
+    status, _ = row_printed_status(row, symbols, paper(key).references())
+    assert status == "misprint"
+
+
+def test_an_edited_row_is_derived_afresh_and_said_once(
+    tables: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """An edited ledger makes the store stale for these tables: every row is derived from its
+    live reference, and stderr says so once."""
+    key = "tisserand"
+    ledger_file = tables / "equations" / f"{key}.toml"
+    ledger_file.write_text(ledger_file.read_text() + "\n# an edit\n")
+    ledger_references._clear_reference_caches()
+    ledger_references._SAID.clear()
+    rows = load_ledger(key).rows[:3]
+    for row in rows:
+        if row.reference:
+            row_printed_status(row, load_ledger(key).symbols_for(row), paper(key).references())
+    assert capsys.readouterr().err.count("derived afresh") == 1
+
+
+# --- float64 against the exact engine ---------------------------------------------------------
+
+
+def _exact(item: Item, monkeypatch: pytest.MonkeyPatch) -> tuple[bool, str]:
+    with monkeypatch.context() as patch:
+        patch.setattr(float_verdict, "quick_verdict", lambda item: None)
+        return item_passes(item)
+
+
+def _stored_items() -> list[tuple[str, Item]]:
+    out = []
+    for key in ledger_papers():
+        for row_id, (_, record) in stored_rows(
+            key, ledger_references._read_by_references()
+        ).items():
+            if "live" in record:
+                continue
+            for form, derived in row_record(row_id, record)[1].items():
+                out += [(f"{row_id} {form} {item.where[:40]}", item) for item in derived.items]
+    return out
+
+
+def test_float64_decides_only_as_the_exact_engine_does(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every stored item float64 decides, judged again by the exact engine alone (mpmath at
+    20 digits, Cauchy at 40, sympy): the same verdict, every time."""
+    items = _stored_items()
+    assert len(items) > 700
+    decided, disagree = 0, []
+    for name, item in items:
+        quick = float_verdict.quick_verdict(item)
+        if quick is None:
+            continue
+        decided += 1
+        if quick[0] != _exact(item, monkeypatch)[0]:
+            disagree.append(name)
+    assert disagree == []
+    assert decided > 0.85 * len(items)
+
+
+# --- float64 against mpmath, on expressions of known expansion --------------------------------
+
+S, X = ledger_symbols("s", "x")
+
+
+def _item(expr: sp.Expr, order: int | None = None, domain: dict | None = None) -> Item:
+    scale = S if order is not None else None
+    return Item("equation", "e", expr, scale, order, domain or {})
+
+
+def test_an_identity_holds_and_a_slip_is_measured() -> None:
+    assert float_verdict.quick_verdict(_item(sp.sin(X) ** 2 + sp.cos(X) ** 2 - 1)) == (
+        True,
+        "vanishes at 8 random points to 1e-14 of its terms (float64)",
+    )
+    ok, why = float_verdict.quick_verdict(_item(sp.sin(2 * X) - 2 * sp.sin(X)))
+    x = mpmath.mpf(why.split("x=")[1].split(" ")[0].split("/")[0]) / mpmath.mpf(
+        why.split("x=")[1].split(" ")[0].split("/")[1]
+    )
+    assert not ok and float(why.split()[1]) == pytest.approx(
+        float(mpmath.sin(2 * x) - 2 * mpmath.sin(x)), rel=1e-6
+    )
+
+
+def test_a_series_coefficient_below_the_order_is_named_with_its_value() -> None:
+    residual = sp.exp(S) - (1 + S + S**2 / 2)
+    assert float_verdict.quick_verdict(_item(residual, order=3))[0] is True
+    ok, why = float_verdict.quick_verdict(_item(residual, order=4))
+    coefficient = float(mpmath.taylor(mpmath.exp, 0, 3)[3])  # 1/6 by mpmath
+    assert not ok and "s**3" in why
+    assert float(why.split(" is ")[1].split()[0]) == pytest.approx(
+        coefficient, rel=1e-5
+    )  # six digits shown
+
+
+@pytest.mark.parametrize(
+    "residual",
+    [
+        sp.sqrt(S) - sp.sqrt(S),  # trivially 0: holds
+        sp.sqrt(S) * (1 + S) - sp.sqrt(S),  # a branch at 0: undecided, the exact engine follows it
+        sp.Abs(S - 1) - (1 - S),  # not analytic in a complex scale: undecided
+        sp.sin(3 / S) * S**4,  # an essential singularity: undecided
+    ],
+)
+def test_what_float64_cannot_follow_is_left_to_the_exact_engine(residual: sp.Expr) -> None:
+    verdict = float_verdict.quick_verdict(_item(residual, order=2))
+    assert verdict is None or (verdict[0] is True and residual == 0)
+
+
+def test_an_integral_is_integrated_and_compared() -> None:
+    t = sp.Symbol("t", real=True)
+    exact = mpmath.quad(lambda u: mpmath.sqrt(u) * mpmath.exp(-u), [0, 1])
+    integral = sp.Integral(sp.sqrt(t) * sp.exp(-t), (t, 0, 1))
+    assert float_verdict.quick_verdict(_item(integral - sp.Float(str(exact), 30)))[0] is True
+    ok, _ = float_verdict.quick_verdict(_item(integral - sp.Float(str(exact), 30) * 1.001))
+    assert ok is False
