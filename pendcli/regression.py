@@ -163,10 +163,9 @@ def _derivations(update: bool, root: Path | None) -> list[str]:
     ``update``, written; else how they differ from what the code derives, a line per row
     naming its reference (empty when every one agrees). Only the package's own tables have a
     store; a tables folder of one's own is derived afresh when judged."""
+    from pendcli.core.derivation_store import stores_here
     from pendcli.core.ledger_references import derivation_drift, store_derivations
     from pendcli.papers.registry import PAPERS, ledger_papers, paper
-
-    from pendcli.core.derivation_store import stores_here
 
     if not stores_here(root or tables_dir()):
         return []

@@ -46,8 +46,8 @@ __all__ = [
     "row_inputs",
     "row_record",
     "store_path",
-    "stores_here",
     "stored_rows",
+    "stores_here",
     "write_store",
 ]
 
