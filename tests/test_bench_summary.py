@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from pendcli import bench, bench_summary
+from tools import bench, bench_summary
 
 STARTUP = {
     "import typer": 0.05,
@@ -81,7 +81,7 @@ def test_a_bad_bench_argument_is_one_line_and_exit_2(args: list[str], says: str)
     import sys
 
     run = subprocess.run(
-        [sys.executable, "-m", "pendcli.bench", *args], capture_output=True, text=True
+        [sys.executable, "-m", "tools.bench", *args], capture_output=True, text=True
     )
     assert run.returncode == 2
     assert says in run.stderr.strip().splitlines()[-1]

@@ -332,7 +332,7 @@ def test_a_warm_report_is_the_cold_report(tmp_path, monkeypatch):
     cold = invoke(*args, "--out", str(tmp_path / "cold"), env=env)
     assert cold.code == 0, cold.err
     _refuse_to_compute(monkeypatch)
-    monkeypatch.setattr("pendcli.report._fill", lambda *a: pytest.fail("report not cached"))
+    monkeypatch.setattr("pendcli.output.report._fill", lambda *a: pytest.fail("report not cached"))
     warm = invoke(*args, "--out", str(tmp_path / "warm"), env=env)
     assert (warm.code, warm.out) == (0, cold.out), warm.err
     names = sorted(p.relative_to(tmp_path / "cold") for p in (tmp_path / "cold").rglob("*"))
@@ -347,7 +347,7 @@ def test_a_warm_report_is_the_cold_report(tmp_path, monkeypatch):
 def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
     import sys
 
-    from pendcli import bench
+    from tools import bench
 
     quick = [sys.executable, "-c", "pass"]
     monkeypatch.setattr(

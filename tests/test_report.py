@@ -7,10 +7,10 @@ from dataclasses import replace
 import pytest
 from cli_helpers import invoke
 
-from pendcli import report
 from pendcli.core.claims import ClaimRow, FormulaRow
 from pendcli.core.errors import PendcliError
-from pendcli.report import check_out_folder, disagreement_digest, write_report
+from pendcli.output import report
+from pendcli.output.report import check_out_folder, disagreement_digest, write_report
 from pendcli.reproduce import ReproduceResult
 
 

@@ -8,8 +8,8 @@ import sys
 
 import pytest
 
-from pendcli import bench
-from pendcli.render import OutputFormat  # named by the probe command's annotations
+from pendcli.output import OutputFormat  # named by the probe command's annotations
+from tools import bench
 
 HEAVY = ("scipy", "matplotlib")
 

@@ -428,7 +428,7 @@ def test_pi_only_methods_refuse_other_x():
 
 
 def test_bench_growth_runs_each_size_alone_and_stops_at_the_time_limit():
-    from pendcli import bench
+    from tools import bench
 
     wall, peak = bench.run_sized(["--version"])
     assert float(wall) > 0 and float(peak) > 1  # MB: a Python interpreter at least
@@ -440,7 +440,7 @@ def test_bench_growth_runs_each_size_alone_and_stops_at_the_time_limit():
 
 
 def test_bench_peers_give_the_same_answers():
-    from pendcli import bench
+    from tools import bench
 
     rows = bench.peer_ratios(quick=True)
     assert [r["what"].split()[0] for r in rows] == ["zeros", "I_n(π)", "conical", "planar"]

@@ -1,9 +1,9 @@
 """``out/papers/<paper>.html``: one paper's OCR text as an annotated edition.
 
-Its TeX rendered as MathML (:mod:`pendcli.html_math`), the marks placed by
-:mod:`pendcli.html_marks` drawn inside prose and formulas with a numbered note beside each
+Its TeX rendered as MathML (:mod:`pendcli.output.html.math`), the marks placed by
+:mod:`pendcli.output.html.marks` drawn inside prose and formulas with a numbered note beside each
 paragraph, then the paper's claims, equations, formulas and figures. Also the Jinja2
-environment both pages are rendered with (:mod:`pendcli.html_report` writes the overview).
+environment both pages are rendered with (:mod:`pendcli.output.html.report` writes the overview).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from pendcli.core.numbers import edition_quantity, edition_text
-from pendcli.html_marks import (
+from pendcli.output.html.marks import (
     EQUATION_CAUSE,
     STATUS_CLASSES,
     VERDICT_CLASSES,
@@ -38,7 +38,7 @@ from pendcli.html_marks import (
     verdict_of,
     word_of,
 )
-from pendcli.html_math import (
+from pendcli.output.html.math import (
     balanced,
     mark_mathml,
     math_segments,
@@ -46,13 +46,13 @@ from pendcli.html_math import (
     to_mathml,
     wrap_marks,
 )
-from pendcli.html_prose import join_continued, prose_html
+from pendcli.output.html.prose import join_continued, prose_html
 
 if TYPE_CHECKING:
     from jinja2 import Environment
     from markupsafe import Markup
 
-    from pendcli.html_math import MathSegment
+    from pendcli.output.html.math import MathSegment
 
 
 @dataclass(frozen=True)
@@ -238,7 +238,7 @@ def _environment() -> Environment:
     from jinja2 import Environment, PackageLoader, StrictUndefined
 
     return Environment(
-        loader=PackageLoader("pendcli", "templates"),
+        loader=PackageLoader("pendcli.output.html", "templates"),
         autoescape=True,
         undefined=StrictUndefined,
         keep_trailing_newline=True,
@@ -302,7 +302,7 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
     order = sorted(called, key=lambda c: c[:3])
     numbers = {c[3].key: i for i, c in enumerate(order, 1)}
     blocks: list[dict[str, object]] = []
-    texts: list[str] = []  # each block's text: html_prose joins what the OCR cut in two
+    texts: list[str] = []  # each block's text: prose.py joins what the OCR cut in two
     front = front_matter_end(text)
     breaks = page_breaks(text)
     for a, b in _split_at(text, paragraph_spans(text, segments), breaks):

@@ -22,17 +22,17 @@ from typing import TYPE_CHECKING, Any
 from pendcli.core.errors import PendcliError
 from pendcli.core.rows import equation_notes, equation_status
 from pendcli.core.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
-from pendcli.render.columns import Column, Row
-from pendcli.render.json import to_json
-from pendcli.render.markdown import code_span, fence, markdown_text, to_markdown
-from pendcli.render.views import FORMULA_COLUMNS, claim_columns
-from pendcli.reproduce import ReproduceResult
+from pendcli.output.columns import Column, Row
+from pendcli.output.json import to_json
+from pendcli.output.markdown import code_span, fence, markdown_text, to_markdown
+from pendcli.output.views import FORMULA_COLUMNS, claim_columns
 
 if TYPE_CHECKING:
     from pendcli.core.cache import ResultCache
     from pendcli.core.claims import ClaimRow
     from pendcli.core.explain import ExplainedRow
     from pendcli.core.rows import EquationRow
+    from pendcli.reproduce import ReproduceResult
     from pendcli.tradeoff import Point
 
 __all__ = ["write_report"]
@@ -274,7 +274,7 @@ def write_report(
 
     target = check_out_folder(out)
     if pdf:  # refused before anything is written, not after
-        from pendcli.html_report import require_chromium
+        from pendcli.output.html.report import require_chromium
 
         require_chromium()
     for key in result.papers:  # the HTML pages show them: missing or empty is an error
@@ -382,7 +382,7 @@ def _fill(
     pdf: bool = False,
 ) -> list[Path]:
     """Every file of the report, written into ``folder``; their paths relative to it."""
-    from pendcli.html_report import markdown_for_a_reader
+    from pendcli.output.html.report import markdown_for_a_reader
     from pendcli.regression import regenerated_tables
 
     writer = _Writer(folder, quiet)
@@ -405,7 +405,7 @@ def _fill(
     pages = _html_pages(result, folder, figures)
     writer.add(pages)
     if pdf:  # inside the folder being built, so the manifest lists the PDFs too
-        from pendcli.html_report import print_pdfs
+        from pendcli.output.html.report import print_pdfs
 
         writer.status(f"printing {len(pages)} pages to PDF")
         writer.add(print_pdfs(folder))
@@ -416,7 +416,7 @@ def _html_pages(
     result: ReproduceResult, folder: Path, figures: dict[str, list[Path]]
 ) -> list[Path]:
     """report.html and one annotated page per paper, figures embedded with their captions."""
-    from pendcli.html_report import Figure, write_for_result
+    from pendcli.output.html.report import Figure, write_for_result
 
     captioned = {
         ("" if key == "tradeoff" else key): [
@@ -428,7 +428,7 @@ def _html_pages(
 
 
 def _introduction(result: ReproduceResult) -> list[str]:
-    from pendcli.summary import propagation_tree
+    from pendcli.output.summary import propagation_tree
 
     summary = result.summary_rows()
     rows = [*result.claim_dicts(), *result.formula_dicts()]

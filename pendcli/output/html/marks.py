@@ -1,9 +1,9 @@
 """Where each row is printed in a paper's OCR text, and the marks of its annotated page.
 
 The accessors below are the only places that know the rows' keys (row dicts, ``as_dict()``
-of the rows); :mod:`pendcli.html_paper` and :mod:`pendcli.html_report` read rows through
-them. A row is located by its printed string, tolerant of the OCR's TeX spacing, inside the
-stretches of text its quoted words, its label or "after (N)" point to.
+of the rows); :mod:`pendcli.output.html.paper` and :mod:`pendcli.output.html.report` read
+rows through them. A row is located by its printed string, tolerant of the OCR's TeX
+spacing, inside the stretches of text its quoted words, its label or "after (N)" point to.
 """
 
 from __future__ import annotations
@@ -18,10 +18,10 @@ from pendcli.core.vocabulary import (
     CLAIM_VERDICTS,
     STATUSES,
 )
-from pendcli.html_math import balanced, math_segments
+from pendcli.output.html.math import balanced, math_segments
 
 if TYPE_CHECKING:
-    from pendcli.html_math import MathSegment
+    from pendcli.output.html.math import MathSegment
 
 Row = Mapping[str, object]
 
@@ -614,11 +614,11 @@ NEAR = 0.5
 
 def _place_formulas(page: _Page, row: Row, region: tuple[int, int]) -> bool:
     """Each formula of the row's printed form (else of its statement) marked at the piece of
-    its lines nearest to it (:func:`pendcli.html_match.best_pieces`), if near enough: one
+    its lines nearest to it (:func:`pendcli.output.html.match.best_pieces`), if near enough: one
     line or equation of a display where it can be drawn alone, else the whole display. The
     first mark carries the note; a misprint or failure whose wrong term the ledger does not
     record says so beside its reading or correction."""
-    from pendcli.html_match import best_pieces, formula_parts
+    from pendcli.output.html.match import best_pieces, formula_parts
 
     source = text_of(row, "printed") or text_of(row, "statement")
     parts = formula_parts(source)

@@ -1,19 +1,19 @@
 """``out/report.html`` and ``out/papers/<paper>.html``: the report and an annotated edition.
 
 Each paper page is the paper's OCR text (``tables/papers/<paper>.txt``) as an edition: its
-TeX rendered as MathML at build time (:mod:`pendcli.html_math`), each printed number,
+TeX rendered as MathML at build time (:mod:`pendcli.output.html.math`), each printed number,
 equation label and stated result marked where it is printed, a misprinted or wrong term
 marked itself, and beside each paragraph a numbered note per mark with the verdict and the
 reading or the correction. The overview page carries the counts, the propagation graph
-(:mod:`pendcli.html_graph`) and one entry per finding. The pages come from the Jinja2
-templates in ``pendcli/templates`` (autoescaped; one stylesheet, inlined), figures are data
-URIs: nothing is fetched. Everything here works on row dicts (``as_dict()`` of the rows),
-read through the small accessors of :mod:`pendcli.html_marks`: it knows the report's keys,
-not pendulums.
+(:mod:`pendcli.output.html.graph`) and one entry per finding. The pages come from the Jinja2
+templates in ``pendcli/output/html/templates`` (autoescaped; one stylesheet, inlined),
+figures are data URIs: nothing is fetched. Everything here works on row dicts (``as_dict()``
+of the rows), read through the small accessors of :mod:`pendcli.output.html.marks`: it knows
+the report's keys, not pendulums.
 
 This module is the entry point: the overview page, writing both pages, printing them to
-PDF. Locating and marking the rows is :mod:`pendcli.html_marks`; the paper page is
-:mod:`pendcli.html_paper`.
+PDF. Locating and marking the rows is :mod:`pendcli.output.html.marks`; the paper page is
+:mod:`pendcli.output.html.paper`.
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.vocabulary import PROCEDURE_VERDICTS
-from pendcli.html_marks import (
+from pendcli.output.html.marks import (
     EQUATION_CAUSE,
     STATUS_CLASSES,
     VERDICT_CLASSES,
@@ -40,7 +40,7 @@ from pendcli.html_marks import (
     verdict_of,
     word_of,
 )
-from pendcli.html_paper import (
+from pendcli.output.html.paper import (
     Figure,
     cited_formulas,
     figure_entries,
@@ -80,7 +80,7 @@ __all__ = [
 
 def propagation_svg(rows: Sequence[Row]) -> str:
     """The layered graph of the slips: each root on the left, what inherits it to its right."""
-    from pendcli.html_graph import layered_graph
+    from pendcli.output.html.graph import layered_graph
 
     ids = {id_of(r) for r in rows}
     edges = [(s, id_of(r)) for r in rows for s in sources_of(r) if s in ids]
