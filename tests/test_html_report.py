@@ -19,14 +19,13 @@ from pendcli.core.ledger import load_ledger
 from pendcli.core.numbers import edition_text
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.output.html.graph import layered_graph
-from pendcli.output.html.marks import Placement
+from pendcli.output.html.locate import locate
+from pendcli.output.html.marks import Placement, place_marks
 from pendcli.output.html.math import math_segments, plain_math, to_mathml
 from pendcli.output.html.report import (
     cited_formulas,
     correction_of,
-    locate,
     paper_page,
-    place_marks,
     propagation_svg,
     render_stats,
     report_page,

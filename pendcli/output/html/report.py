@@ -23,23 +23,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.vocabulary import PROCEDURE_VERDICTS
-from pendcli.output.html.marks import (
-    EQUATION_CAUSE,
-    STATUS_CLASSES,
-    VERDICT_CLASSES,
-    Placement,
-    Row,
-    correction_of,
-    disagrees,
-    id_of,
-    locate,
-    own_of,
-    place_marks,
-    sources_of,
-    text_of,
-    verdict_of,
-    word_of,
-)
 from pendcli.output.html.paper import (
     Figure,
     cited_formulas,
@@ -50,6 +33,20 @@ from pendcli.output.html.paper import (
     render_stats,
     render_template,
 )
+from pendcli.output.html.rows import (
+    EQUATION_CAUSE,
+    STATUS_CLASSES,
+    VERDICT_CLASSES,
+    Row,
+    correction_of,
+    disagrees,
+    id_of,
+    own_of,
+    sources_of,
+    text_of,
+    verdict_of,
+    word_of,
+)
 
 if TYPE_CHECKING:
     from pendcli.core.rows import EquationRow
@@ -57,13 +54,10 @@ if TYPE_CHECKING:
 
 __all__ = [
     "Figure",
-    "Placement",
     "chromium",
     "cited_formulas",
-    "locate",
     "markdown_for_a_reader",
     "paper_page",
-    "place_marks",
     "print_pdfs",
     "propagation_svg",
     "reference_words",
