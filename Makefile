@@ -99,7 +99,7 @@ regen: $(RUNTIME)
 lint: $(STAMP)
 	$(BIN)/ruff check pendcli tools tests
 	$(BIN)/ruff format --check pendcli tools tests
-	$(BIN)/mypy pendcli
+	$(BIN)/mypy pendcli tools
 
 bench: $(STAMP)
 	$(BIN)/python -m tools.bench --write docs/benchmarks.md --summary docs/install.md
