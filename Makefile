@@ -89,20 +89,20 @@ test-browser: $(STAMP)
 
 check: $(RUNTIME)
 	$(BIN)/pendcli check
-	$(BIN)/python -m pendcli.docs --check
+	$(BIN)/python -m tools.docs --check
 
 # One process, one run: the regenerated tables and the README's sections written as one set
 # (pendcli.core.files.write_set), so an interrupt leaves all old or all new.
 regen: $(RUNTIME)
-	$(BIN)/python -m pendcli.docs --tables
+	$(BIN)/python -m tools.docs --tables
 
 lint: $(STAMP)
-	$(BIN)/ruff check pendcli tests
-	$(BIN)/ruff format --check pendcli tests
-	$(BIN)/mypy pendcli
+	$(BIN)/ruff check pendcli tools tests
+	$(BIN)/ruff format --check pendcli tools tests
+	$(BIN)/mypy pendcli tools
 
 bench: $(STAMP)
-	$(BIN)/python -m pendcli.bench --write docs/benchmarks.md --summary docs/install.md
+	$(BIN)/python -m tools.bench --write docs/benchmarks.md --summary docs/install.md
 
 # The API page (docs/api/pendcli.html): pdoc over the names `import pendcli` offers. They load
 # lazily, so they are fetched first (pdoc reads the module's __dict__).

@@ -29,7 +29,7 @@ Names load on first use (PEP 562): ``import pendcli`` imports none of scipy, mpm
 or matplotlib, and ``pendcli --help`` stays instant.
 
 Layout: :mod:`pendcli.core` (printed numbers, verdicts, published tables, the claim and
-formula engines, errors), :mod:`pendcli.render` (one renderer per output format, knowing
+formula engines, errors), :mod:`pendcli.output` (one renderer per output format, knowing
 nothing of pendulums), :mod:`pendcli.numerics` (Bessel zeros, planar and spherical
 pendulum done exactly), :mod:`pendcli.papers` (one package per paper: its model, claims,
 formulas, figures and speed/accuracy families) and :mod:`pendcli.cli`, a thin adapter.

@@ -7,7 +7,7 @@ numbers where a column is numeric), and :func:`compare_tables` lists every :clas
 between a committed table and its regeneration: a row added or removed, a cell changed, or
 a numeric cell moved beyond its column's tolerance (:data:`TOLERANCES`: relative for values,
 absolute for fitted orders). :mod:`pendcli.regression` runs the check;
-:mod:`pendcli.check_report` formats its drifts.
+:mod:`pendcli.output.check_formats` formats its drifts.
 """
 
 from __future__ import annotations

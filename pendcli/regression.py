@@ -37,9 +37,9 @@ from pendcli.drift import (
     read_committed,
     read_table,
 )
+from pendcli.output.columns import Column
+from pendcli.output.csv import to_csv
 from pendcli.papers.registry import keys
-from pendcli.render.columns import Column
-from pendcli.render.csv import to_csv
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -108,7 +108,7 @@ def run_check(
     """Regenerate every table; compare (or, with ``update``, rewrite). Returns the exit code.
 
     ``fmt``: ``table`` (the drift table), ``json`` or ``junit`` (a testcase per claim,
-    formula and table), on standard output; see :mod:`pendcli.check_report`.
+    formula and table), on standard output; see :mod:`pendcli.output.check_formats`.
     """
     from pendcli.core.console import console
     from pendcli.reproduce import reproduce_all
@@ -126,7 +126,7 @@ def run_check(
     tables = regenerated_tables(result)
     out = console()
     if update:
-        from pendcli.check_report import changed_cells
+        from pendcli.output.check_formats import changed_cells
 
         # no reader's lock: the folder is swapped whole, so this reads the old set or the new
         # one; a lock file only a reader made would be left behind by an interrupt
@@ -303,23 +303,23 @@ def _report(
     drift (on stderr when stdout carries a JSON or JUnit document)."""
     import sys
 
-    from pendcli import check_report
+    from pendcli.output import check_formats
 
     if fmt == "json":
-        sys.stdout.write(check_report.to_json(drifts, tables))
+        sys.stdout.write(check_formats.to_json(drifts, tables))
     elif fmt == "junit":
-        sys.stdout.write(check_report.to_junit(drifts, tables))
+        sys.stdout.write(check_formats.to_junit(drifts, tables))
     elif drifts:
         _print_drifts(out, drifts)
-    if drifts and check_report.in_github_actions():
+    if drifts and check_formats.in_github_actions():
         stream = sys.stdout if fmt == "table" else sys.stderr
-        for line in check_report.github_annotations(drifts, folder):
+        for line in check_formats.github_annotations(drifts, folder):
             print(line, file=stream)
 
 
 def _by_table(out: Console, rows: list[dict[str, str]], keys: tuple[str, ...], title: str) -> None:
     """One table per regenerated table (its name as title): the columns then fit a terminal."""
-    from pendcli.render.table import to_rich_table
+    from pendcli.output.table import to_rich_table
 
     out.print(title)
     for name in dict.fromkeys(r["table"] for r in rows):
@@ -329,7 +329,7 @@ def _by_table(out: Console, rows: list[dict[str, str]], keys: tuple[str, ...], t
 
 
 def _print_drifts(out: Console, drifts: list[Drift]) -> None:
-    from pendcli.check_report import drift_rows
+    from pendcli.output.check_formats import drift_rows
 
     keys = ("id", "column", "published", "committed", "now", "difference", "tolerance")
     _by_table(out, drift_rows(drifts), keys, f"check FAILED: {len(drifts)} drift(s)")
@@ -338,7 +338,7 @@ def _print_drifts(out: Console, drifts: list[Drift]) -> None:
 
 def _print_changes(out: Console, changes: list[Drift], folder: Path, count: int) -> None:
     """`check --update`: every value it rewrote ("noise": within tolerance), then the count."""
-    from pendcli.check_report import drift_rows
+    from pendcli.output.check_formats import drift_rows
 
     if changes:
         keys = ("id", "column", "committed", "now", "difference")

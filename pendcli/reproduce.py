@@ -26,9 +26,9 @@ from pendcli.core.vocabulary import (
     EquationStatus,
     FormulaVerdict,
 )
+from pendcli.output.columns import Column, Row, Section
+from pendcli.output.summary import disagrees
 from pendcli.papers.registry import evaluate, formula_checks
-from pendcli.render.columns import Column, Row, Section
-from pendcli.summary import disagrees
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -90,12 +90,12 @@ class ReproduceResult:
         return out + self.summary_sections()
 
     def _paper_sections(self, key: str, compact: bool, only_failing: bool) -> list[Section]:
-        from pendcli.render.views import EQUATION_COLUMNS, FORMULA_COLUMNS, claim_columns
-        from pendcli.summary import (
+        from pendcli.output.summary import (
             compact_claim_columns,
             compact_equation_columns,
             compact_formula_columns,
         )
+        from pendcli.output.views import EQUATION_COLUMNS, FORMULA_COLUMNS, claim_columns
 
         name = key.capitalize()
         rows = [r.as_dict() for r in self.claims.get(key, [])]
@@ -120,7 +120,7 @@ class ReproduceResult:
 
     def summary_sections(self) -> list[Section]:
         """Counts per paper (verdicts, causes, equations), then the propagation tree."""
-        from pendcli.summary import propagation_tree
+        from pendcli.output.summary import propagation_tree
 
         summary = self.summary_rows()
         out: list[Section] = [

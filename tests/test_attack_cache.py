@@ -312,7 +312,7 @@ def test_a_damaged_report_entry_is_recomputed(
 ) -> None:
     """Each such entry (its digest made right) failed every run (exit 2 or 3) until the
     cache was cleared; now it is a miss: the report is written afresh and stored again."""
-    from pendcli.report import write_report
+    from pendcli.output.report import write_report
     from pendcli.reproduce import ReproduceResult
 
     written = []
@@ -322,7 +322,7 @@ def test_a_damaged_report_entry_is_recomputed(
         (folder / "report.md").write_text("fresh", encoding="utf-8")
         return [Path("report.md")]
 
-    monkeypatch.setattr("pendcli.report._fill", fill)
+    monkeypatch.setattr("pendcli.output.report._fill", fill)
     cache = ResultCache(tmp_path / "cache", tables_dir())
     result = ReproduceResult(papers=("tisserand",))
     write_report(result, tmp_path / "first", cache=cache)
@@ -335,14 +335,14 @@ def test_a_damaged_report_entry_is_recomputed(
 
 
 def test_an_edited_report_entry_is_not_copied_into_the_report(tmp_path: Path, monkeypatch) -> None:
-    from pendcli.report import write_report
+    from pendcli.output.report import write_report
     from pendcli.reproduce import ReproduceResult
 
     def fill(_result: object, folder: Path, *_args: object) -> list[Path]:
         (folder / "report.md").write_text("fresh", encoding="utf-8")
         return [Path("report.md")]
 
-    monkeypatch.setattr("pendcli.report._fill", fill)
+    monkeypatch.setattr("pendcli.output.report._fill", fill)
     result = ReproduceResult(papers=("tisserand",))
     write_report(result, tmp_path / "first", cache=ResultCache(tmp_path / "c", tables_dir()))
     (entry,) = entries_of(tmp_path / "c", "report")
@@ -360,7 +360,7 @@ def test_a_cache_inside_the_out_folder_is_turned_off_before_the_run(
         (folder / "report.md").write_text("fresh", encoding="utf-8")
         return [Path("report.md")]
 
-    monkeypatch.setattr("pendcli.report._fill", fill)
+    monkeypatch.setattr("pendcli.output.report._fill", fill)
     out = tmp_path / "out"
     cache = out if inside == "the-folder" else out / "cache"
     args = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")

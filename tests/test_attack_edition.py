@@ -5,7 +5,7 @@ The paper's TeX goes through latex2mathml, which copies ``\\text{…}`` verbatim
 ``\\href``: its MathML is filtered through an allowlist (checked here on crafted formulas and on
 hypothesis' junk, whose output must parse as XML holding allowlisted tags and attributes only).
 The tables' strings (quantity, source, note, ocr, unit, citation, the ledger's fields) are
-escaped in the pages by Jinja and in Markdown by :mod:`pendcli.render.markdown` (rendered
+escaped in the pages by Jinja and in Markdown by :mod:`pendcli.output.markdown` (rendered
 here by markdown-it with every link allowed, so that a link would show). Most tests build
 the pages in this process from small crafted rows; one runs ``reproduce --out`` for real on
 a copy of ``tables/`` full of markup.
@@ -30,13 +30,13 @@ from markdown_it import MarkdownIt
 
 from pendcli.core.rows import ClaimRow
 from pendcli.core.vocabulary import Verdict
-from pendcli.html_math import MATHML_ATTRIBUTES, MATHML_ELEMENTS, sanitise_mathml, to_mathml
-from pendcli.html_paper import paper_page
-from pendcli.html_report import report_page
-from pendcli.render.columns import Column
-from pendcli.render.markdown import code_span, fence, markdown_text, to_markdown
-from pendcli.render.views import claim_columns
-from pendcli.report import disagreement_digest, explanation_section
+from pendcli.output.columns import Column
+from pendcli.output.html.math import MATHML_ATTRIBUTES, MATHML_ELEMENTS, sanitise_mathml, to_mathml
+from pendcli.output.html.paper import paper_page
+from pendcli.output.html.report import report_page
+from pendcli.output.markdown import code_span, fence, markdown_text, to_markdown
+from pendcli.output.report_sections import disagreement_digest, explanation_section
+from pendcli.output.views import claim_columns
 from pendcli.reproduce import ReproduceResult
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"

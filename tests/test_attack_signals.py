@@ -262,7 +262,7 @@ def handles(pid: int, signum: int) -> bool:
     return bool(caught >> (signum - 1) & 1)
 
 
-@pytest.mark.parametrize("module", ["pendcli.docs", "pendcli.bench"])
+@pytest.mark.parametrize("module", ["tools.docs", "tools.bench"])
 def test_ctrl_c_in_make_regen_or_make_bench_is_one_line_130_and_changes_nothing(
     tmp_path: Path, module: str
 ) -> None:
@@ -270,13 +270,13 @@ def test_ctrl_c_in_make_regen_or_make_bench_is_one_line_130_and_changes_nothing(
     line, every file of the set as it was."""
     readme = tmp_path / "README.md"
     readme.write_text("# x\n<!-- bench:start -->\nold\n<!-- bench:end -->\n", encoding="utf-8")
-    args = ["--tables", "--readme", str(readme)] if module == "pendcli.docs" else []
-    if module == "pendcli.bench":
+    args = ["--tables", "--readme", str(readme)] if module == "tools.docs" else []
+    if module == "tools.bench":
         args = ["--write", str(readme), "--runs", "1", "--quick", "--tables-root", str(tmp_path)]
     proc = subprocess.Popen(
         [sys.executable, "-m", module, *args],
         cwd=tmp_path,
-        env=child_env(),
+        env={**child_env(), "PYTHONPATH": str(Path(__file__).resolve().parents[1])},  # tools/
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
         start_new_session=True,

@@ -182,7 +182,7 @@ TRADEOFF += [("tradeoff/measured.toml", k) for k in ("binary", "latin-1", "empty
 def test_a_damaged_tradeoff_file_fails_the_report_before_it_is_drawn(
     tables: Path, tmp_path: Path, name: str, kind: str
 ) -> None:
-    from pendcli.report import write_report
+    from pendcli.output.report import write_report
     from pendcli.reproduce import ReproduceResult
 
     path = tables / name

@@ -77,8 +77,8 @@ def test_a_table_file_over_the_size_limit_is_refused_unread(tables: Path) -> Non
 def test_rich_markup_in_a_styled_cell_is_shown_as_text() -> None:
     from rich.console import Console
 
-    from pendcli.render.columns import Column
-    from pendcli.render.table import to_rich_table
+    from pendcli.output.columns import Column
+    from pendcli.output.table import to_rich_table
 
     text = "[link=https://example.invalid]x[/link] [bold]y[/]"
     column = Column("v", "v", style=lambda _: "red")

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from pendcli import bench, bench_summary
+from tools import bench_startup, bench_summary
 
 STARTUP = {
     "import typer": 0.05,
@@ -17,16 +17,18 @@ STARTUP = {
 }
 
 
-def _floor() -> bench.FloorTimes:
-    times: bench.FloorTimes = {(bench.FLOOR, ""): (1.0, 2.0)}
-    for label in bench.FLOOR_TARGETS:
+def _floor() -> bench_startup.FloorTimes:
+    times: bench_startup.FloorTimes = {(bench_startup.FLOOR, ""): (1.0, 2.0)}
+    for label in bench_startup.FLOOR_TARGETS:
         times[label, "cold"] = (9.0, 30.0)
         times[label, "warm"] = (0.5, 0.25)
     return times
 
 
 def test_each_headline_is_its_figure_over_its_reference_judged_against_its_target() -> None:
-    heads = {h.what: h for h in bench.headlines(STARTUP, _floor(), (30.0, 50.0), (12.0, 8.0))}
+    heads = {
+        h.what: h for h in bench_startup.headlines(STARTUP, _floor(), (30.0, 50.0), (12.0, 8.0))
+    }
     assert heads["`pendcli --help`"].ratio == "wall 1.20x `import typer`"
     assert heads["`pendcli --help`"].target == "<= 1.3x (met)"
     assert heads["`pendcli reproduce --format json`"].target == "<= 1.8x (missed)"
@@ -49,8 +51,8 @@ def test_the_readme_block_is_replaced_between_its_markers_only() -> None:
 
 
 def test_the_tag_changes_with_any_figure() -> None:
-    one = bench.headlines(STARTUP, _floor(), (30.0, 50.0), None)
-    other = bench.headlines(STARTUP, _floor(), (30.5, 50.0), None)
+    one = bench_startup.headlines(STARTUP, _floor(), (30.0, 50.0), None)
+    other = bench_startup.headlines(STARTUP, _floor(), (30.5, 50.0), None)
     assert bench_summary.measurement_tag(list(map(str, one))) != bench_summary.measurement_tag(
         list(map(str, other))
     )
@@ -81,7 +83,7 @@ def test_a_bad_bench_argument_is_one_line_and_exit_2(args: list[str], says: str)
     import sys
 
     run = subprocess.run(
-        [sys.executable, "-m", "pendcli.bench", *args], capture_output=True, text=True
+        [sys.executable, "-m", "tools.bench", *args], capture_output=True, text=True
     )
     assert run.returncode == 2
     assert says in run.stderr.strip().splitlines()[-1]
@@ -108,22 +110,31 @@ def test_a_timed_run_accounts_its_children_and_raises_with_their_stderr() -> Non
 
 def test_the_ledgers_floor_is_shown_as_its_share_of_b_in_cpu() -> None:
     """What a cold `equations` pays before any check, as CPU over B's CPU (3.0 / 2.0)."""
-    times = {**_floor(), (bench.LEDGERS, ""): (2.5, 3.0)}
-    text = "\n".join(bench.floor_lines(times, 1))
-    assert f"| {bench.LEDGERS} | | 2.50 | 3.00 | CPU 1.50x B | |" in text
-    assert bench.LEDGERS not in "\n".join(bench.floor_lines(_floor(), 1))
+    times = {**_floor(), (bench_startup.LEDGERS, ""): (2.5, 3.0)}
+    text = "\n".join(bench_startup.floor_lines(times, 1))
+    assert f"| {bench_startup.LEDGERS} | | 2.50 | 3.00 | CPU 1.50x B | |" in text
+    assert bench_startup.LEDGERS not in "\n".join(bench_startup.floor_lines(_floor(), 1))
 
 
 def test_the_references_floor_is_a_row_of_the_table_and_a_headline_as_its_share_of_b() -> None:
     """Built references, without a verdict: 7.0 s of CPU over B's 2.0 s is 3.50x B, in the
     table beside the ledgers' row and among the README's headlines; absent, neither shows."""
-    times = {**_floor(), (bench.LEDGERS, ""): (2.5, 3.0), (bench.REFERENCES, ""): (6.0, 7.0)}
-    text = "\n".join(bench.floor_lines(times, 1))
-    assert f"| {bench.REFERENCES} | | 6.00 | 7.00 | CPU 3.50x B | |" in text
-    assert text.index(bench.LEDGERS) < text.index(bench.REFERENCES)
-    heads = {h.what: h for h in bench.headlines(STARTUP, times, None, None)}
-    assert (heads[bench.REFERENCES].cpu, heads[bench.REFERENCES].ratio) == (7.0, "CPU 3.50x B")
-    assert bench.REFERENCES not in {h.what for h in bench.headlines(STARTUP, _floor(), None, None)}
+    times = {
+        **_floor(),
+        (bench_startup.LEDGERS, ""): (2.5, 3.0),
+        (bench_startup.REFERENCES, ""): (6.0, 7.0),
+    }
+    text = "\n".join(bench_startup.floor_lines(times, 1))
+    assert f"| {bench_startup.REFERENCES} | | 6.00 | 7.00 | CPU 3.50x B | |" in text
+    assert text.index(bench_startup.LEDGERS) < text.index(bench_startup.REFERENCES)
+    heads = {h.what: h for h in bench_startup.headlines(STARTUP, times, None, None)}
+    assert (heads[bench_startup.REFERENCES].cpu, heads[bench_startup.REFERENCES].ratio) == (
+        7.0,
+        "CPU 3.50x B",
+    )
+    assert bench_startup.REFERENCES not in {
+        h.what for h in bench_startup.headlines(STARTUP, _floor(), None, None)
+    }
 
 
 def test_the_references_floor_command_builds_what_every_ledger_cites(
@@ -134,7 +145,7 @@ def test_the_references_floor_command_builds_what_every_ledger_cites(
 
     built: list[str] = []
     monkeypatch.setattr(ledger, "cited_references", lambda paper: built.append(paper.key))
-    exec(bench.BUILD_REFERENCES, {})
+    exec(bench_startup.BUILD_REFERENCES, {})
     assert built == list(ledger_papers()) and len(built) == 3
 
 
@@ -144,5 +155,5 @@ def test_the_ledgers_floor_command_reads_every_ledger(monkeypatch: pytest.Monkey
 
     read: list[str] = []
     monkeypatch.setattr(ledger, "load_ledger", lambda key: read.append(key))
-    exec(bench.READ_LEDGERS, {})
+    exec(bench_startup.READ_LEDGERS, {})
     assert read == list(ledger_papers()) and len(read) == 3

@@ -23,7 +23,7 @@ import pytest
 
 from pendcli.core.ledger import load_ledger
 from pendcli.core.tables import load_paper_table
-from pendcli.html_report import chromium, write_for_result
+from pendcli.output.html.report import chromium, write_for_result
 from pendcli.papers.registry import PAPERS
 from pendcli.reproduce import reproduce_all
 
@@ -227,7 +227,7 @@ def test_the_report_shows_no_tex_and_every_link_lands(pages: Path) -> None:
 
 
 def test_a_paper_page_prints_to_pdf(pages: Path) -> None:
-    from pendcli.html_report import print_pdfs
+    from pendcli.output.html.report import print_pdfs
 
     folder = pages / "print"
     (folder / "papers").mkdir(parents=True)

@@ -332,7 +332,7 @@ def test_a_warm_report_is_the_cold_report(tmp_path, monkeypatch):
     cold = invoke(*args, "--out", str(tmp_path / "cold"), env=env)
     assert cold.code == 0, cold.err
     _refuse_to_compute(monkeypatch)
-    monkeypatch.setattr("pendcli.report._fill", lambda *a: pytest.fail("report not cached"))
+    monkeypatch.setattr("pendcli.output.report._fill", lambda *a: pytest.fail("report not cached"))
     warm = invoke(*args, "--out", str(tmp_path / "warm"), env=env)
     assert (warm.code, warm.out) == (0, cold.out), warm.err
     names = sorted(p.relative_to(tmp_path / "cold") for p in (tmp_path / "cold").rglob("*"))
@@ -347,21 +347,21 @@ def test_a_warm_report_is_the_cold_report(tmp_path, monkeypatch):
 def test_the_bench_measures_cold_and_warm_against_the_floor(monkeypatch):
     import sys
 
-    from pendcli import bench
+    from tools import bench_startup
 
     quick = [sys.executable, "-c", "pass"]
     monkeypatch.setattr(
-        bench,
+        bench_startup,
         "_floor_commands",
-        lambda folder: dict.fromkeys((bench.FLOOR, *bench.FLOOR_TARGETS), quick),
+        lambda folder: dict.fromkeys((bench_startup.FLOOR, *bench_startup.FLOOR_TARGETS), quick),
     )
-    times = bench.floor_times(runs=1)
+    times = bench_startup.floor_times(runs=1)
     assert set(times) == {
-        (bench.FLOOR, ""),
-        *((label, mode) for label in bench.FLOOR_TARGETS for mode in ("cold", "warm")),
+        (bench_startup.FLOOR, ""),
+        *((label, mode) for label in bench_startup.FLOOR_TARGETS for mode in ("cold", "warm")),
     }
-    text = "\n".join(bench.floor_lines(times, 1))
-    for label in bench.FLOOR_TARGETS:
+    text = "\n".join(bench_startup.floor_lines(times, 1))
+    for label in bench_startup.FLOOR_TARGETS:
         assert f"| `{label}` | cold |" in text and f"| `{label}` | warm |" in text
 
 

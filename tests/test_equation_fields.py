@@ -16,8 +16,8 @@ from pendcli.core import schema
 from pendcli.core.cache import rows_from_json, rows_to_json
 from pendcli.core.ledger import Evaluated, evaluate, load_ledger
 from pendcli.core.rows import EquationRow, equation_notes
+from pendcli.output.json import to_json
 from pendcli.papers.registry import ledger_papers, paper
-from pendcli.render.json import to_json
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 ENGINE = ("against", "computed", "evidence")

@@ -304,7 +304,7 @@ def test_write_set_refuses_a_file_created_or_removed_since_it_was_read(tmp_path:
 
 def _docs_set(tmp_path: Path) -> Path:
     """A README and the docs pages holding the generated sections' markers (docs/findings.md,
-    verdicts.md, schema.md, ENGINE.md: pendcli.docs.SECTION_FILES), and no tables. Returns
+    verdicts.md, schema.md, ENGINE.md: tools.docs.SECTION_FILES), and no tables. Returns
     docs/verdicts.md, the page of the ledger's section."""
     (tmp_path / "README.md").write_text("# readme\n")
 
@@ -325,7 +325,8 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
 ) -> None:
     """`make regen` reads the README, computes for most of a minute, then writes: an edit made
     in between (here by the compute step itself) is refused, nothing written, the edit kept."""
-    from pendcli import docs, regression, reproduce
+    from pendcli import regression, reproduce
+    from tools import docs
 
     page = _docs_set(tmp_path)
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
@@ -358,7 +359,7 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
 
 
 def test_bench_refuses_to_write_over_an_edit_made_after_it_read(tmp_path: Path) -> None:
-    from pendcli import bench
+    from tools import bench
 
     page, table = tmp_path / "benchmarks.md", tmp_path / "family.csv"
     page.write_text(f"# b\n{bench.START}\nold\n{bench.END}\n")

@@ -13,7 +13,7 @@ import pytest
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import load_ledger
 from pendcli.core.tables import tables_dir
-from pendcli.html_marks import ALSO_WRONG, place_marks
+from pendcli.output.html.marks import ALSO_WRONG, place_marks
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_html_report import edition_rows, misplaced, quote_is_printed

@@ -12,8 +12,8 @@ import pytest
 
 from pendcli.core.numbers import edition_number
 from pendcli.core.tables import tables_dir
-from pendcli.html_math import math_segments, to_mathml
-from pendcli.html_paper import paper_page
+from pendcli.output.html.math import math_segments, to_mathml
+from pendcli.output.html.paper import paper_page
 from pendcli.papers.registry import PAPERS
 from pendcli.papers.registry import paper as paper_of
 
@@ -98,7 +98,7 @@ def test_an_angle_is_shown_sexagesimal_as_the_paper_prints_it() -> None:
 
 
 def test_a_subscript_the_ocr_left_in_the_prose_is_set_as_one() -> None:
-    from pendcli.html_paper import paper_page
+    from pendcli.output.html.paper import paper_page
 
     page = paper_page("p", "c", "Une relation entre I_n et I_n-2 ; E_c et psi_sin2.\n", [])
     assert "I<sub>n</sub> et I<sub>n\u22122</sub>" in page and "E<sub>c</sub>" in page
@@ -107,7 +107,7 @@ def test_a_subscript_the_ocr_left_in_the_prose_is_set_as_one() -> None:
 
 
 def test_the_reports_findings_name_a_cause_once_and_break_ids_at_their_dots() -> None:
-    from pendcli.html_report import report_page
+    from pendcli.output.html.report import report_page
 
     claims: list[dict[str, object]] = [
         {"id": "p.b", "published": "8,41", "verdict": "discrepant", "cause": "arithmetic-slip"}

@@ -18,15 +18,14 @@ from markupsafe import escape
 from pendcli.core.ledger import load_ledger
 from pendcli.core.numbers import edition_text
 from pendcli.core.tables import load_paper_table, tables_dir
-from pendcli.html_graph import layered_graph
-from pendcli.html_marks import Placement
-from pendcli.html_math import math_segments, plain_math, to_mathml
-from pendcli.html_report import (
+from pendcli.output.html.graph import layered_graph
+from pendcli.output.html.locate import locate
+from pendcli.output.html.marks import Placement, place_marks
+from pendcli.output.html.math import math_segments, plain_math, to_mathml
+from pendcli.output.html.report import (
     cited_formulas,
     correction_of,
-    locate,
     paper_page,
-    place_marks,
     propagation_svg,
     render_stats,
     report_page,
@@ -610,8 +609,8 @@ def test_the_cover_page_of_the_digitisation_is_shown_apart() -> None:
 def test_pdf_printing_refuses_without_out_or_without_chromium(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from pendcli import html_report
     from pendcli.core.errors import PendcliError
+    from pendcli.output.html import report as html_report
     from tests.cli_helpers import invoke
 
     code, _, err = invoke("reproduce", "-p", "tisserand", "--pdf")
@@ -630,7 +629,7 @@ def test_pdf_printing_refuses_without_out_or_without_chromium(
 def test_the_ledgers_spellings_read_as_the_tex_prints_them() -> None:
     """∂²θ/∂u∂k spelt th_uk, ∂²θ/∂u² th_uu, ∫dx Integral(1, …): the same atoms as the TeX;
     an environment's name is no atom (a two-line aligned formula matches its printed form)."""
-    from pendcli.html_match import atoms_of_printed, atoms_of_tex
+    from pendcli.output.html.match import atoms_of_printed, atoms_of_tex
 
     assert atoms_of_printed("th_uk") == atoms_of_tex(
         r"\frac{\partial^2 \theta}{\partial u \partial k}"

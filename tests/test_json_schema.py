@@ -102,7 +102,7 @@ def test_check_row_refuses_a_verdict_outside_the_list():
 
 
 def test_docs_schema_section_is_generated_from_the_schema():
-    from pendcli.docs import schema_section
+    from tools.docs import schema_section
 
     text = SCHEMA_DOC.read_text(encoding="utf-8")
     between = text.split("<!-- schema:start -->\n", 1)[1].split("\n<!-- schema:end -->", 1)[0]

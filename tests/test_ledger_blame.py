@@ -177,9 +177,9 @@ def test_a_restatement_takes_the_status_of_the_row_it_restates() -> None:
 
 
 def test_the_readmes_findings_come_from_the_ledger() -> None:
-    """The section between the findings markers is what pendcli.docs writes from the rows:
+    """The section between the findings markers is what tools.docs writes from the rows:
     each paper's count of findings, and (52) among the misprints, not the failures."""
-    from pendcli.docs import _findings_line
+    from tools.docs import _findings_line
 
     readme = (TABLES.parent / "docs" / "findings.md").read_text("utf-8")
     section = readme.split("<!-- findings:start -->")[1].split("<!-- findings:end -->")[0]

@@ -1,4 +1,4 @@
-"""The number style of each output (pendcli.render.style), against independent expectations.
+"""The number style of each output (pendcli.output.style), against independent expectations.
 
 The expected texts are worked out here by other means: Decimal rounding for significant
 digits, integer arithmetic in seconds of arc for angles, the printed-number parser reading an
@@ -14,9 +14,9 @@ from decimal import ROUND_HALF_EVEN, Decimal
 import pytest
 
 from pendcli.core.numbers import edition_angle, edition_number, paper_decimals, parse_printed
-from pendcli.render.columns import Column, fmt_float
-from pendcli.render.style import EDITION, MACHINE, MARKDOWN, TERMINAL, current, using
-from pendcli.render.views import format_like_printed
+from pendcli.output.columns import Column, fmt_float
+from pendcli.output.style import EDITION, MACHINE, MARKDOWN, TERMINAL, current, using
+from pendcli.output.views import format_like_printed
 
 
 def _significant(text: str) -> int:

@@ -18,7 +18,7 @@ from typer.testing import CliRunner
 
 from pendcli.core.reader_text import figure_text, for_reader, markdown_for_reader, wrapped
 from pendcli.core.reading import prose_paragraphs
-from pendcli.html_prose import continues, prose_html
+from pendcli.output.html.prose import continues, prose_html
 
 ROOT = Path(__file__).resolve().parent.parent
 PAPERS = ("tisserand", "lecornu", "charbonnier")
@@ -146,7 +146,7 @@ def edition_pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
     """The three papers' pages and the report page, from the tables' rows (no computation),
     as write_html_report writes them."""
     from pendcli.core.tables import load_paper_table, paper_text
-    from pendcli.html_report import write_html_report
+    from pendcli.output.html.report import write_html_report
     from tests.test_html_report import edition_rows
 
     out = tmp_path_factory.mktemp("edition")
@@ -206,8 +206,8 @@ def test_list_shows_printed_units_raised() -> None:
 
 
 def test_the_pages_of_a_whole_report_show_no_internal_name(tmp_path: Path) -> None:
+    from pendcli.output.report import write_report
     from pendcli.papers import registry
-    from pendcli.report import write_report
     from pendcli.reproduce import reproduce_all
 
     result = reproduce_all(registry.keys(), equations=True, jobs=1)

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from rich.console import Console
 
-from pendcli.render import (
+from pendcli.output import (
     Column,
     OutputFormat,
     fmt_float,
@@ -22,7 +22,7 @@ from pendcli.render import (
     to_json,
     to_markdown,
 )
-from pendcli.render.stream import StreamedColumn, StreamedRows, write_stream
+from pendcli.output.stream import StreamedColumn, StreamedRows, write_stream
 
 ROWS = [
     {"id": "a", "x": 1.5, "verdict": "agrees", "note": "pipe | here"},

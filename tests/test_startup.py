@@ -8,8 +8,8 @@ import sys
 
 import pytest
 
-from pendcli import bench
-from pendcli.render import OutputFormat  # named by the probe command's annotations
+from pendcli.output import OutputFormat  # named by the probe command's annotations
+from tools import bench, bench_startup
 
 HEAVY = ("scipy", "matplotlib")
 
@@ -52,7 +52,7 @@ def test_light_commands_do_not_import_scipy_or_matplotlib(args):
 
 
 def test_import_costs_parses_importtime():
-    costs = dict(bench.import_costs(["--help"], top=50))
+    costs = dict(bench_startup.import_costs(["--help"], top=50))
     assert "typer" in costs and costs["typer"] > 0
     assert not set(costs) & set(HEAVY)
 
@@ -60,7 +60,7 @@ def test_import_costs_parses_importtime():
 def test_bench_runs_on_a_tiny_configuration(tmp_path, monkeypatch):
     quick = [sys.executable, "-c", "pass"]
     monkeypatch.setattr(
-        bench,
+        bench_startup,
         "_commands",
         lambda: {
             k: quick

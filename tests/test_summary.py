@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from cli_helpers import run_cli
 
-from pendcli.summary import disagrees, propagation_tree
+from pendcli.output.summary import disagrees, propagation_tree
 
 
 def test_tree_draws_each_root_with_what_inherits_from_it():

@@ -205,7 +205,7 @@ def test_render_through_a_real_terminal_of_80_columns(tmp_path):
 def test_prose_wraps_at_spaces_keeping_a_number_with_its_unit():
     from rich.text import Text
 
-    from pendcli.render.table import wrapped
+    from pendcli.output.table import wrapped
 
     prose = (
         "gammaln (exp(gammaln diff)): cheapest with measured worst error 2.9e-13 <= tol 1e-10 "

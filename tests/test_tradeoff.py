@@ -428,21 +428,23 @@ def test_pi_only_methods_refuse_other_x():
 
 
 def test_bench_growth_runs_each_size_alone_and_stops_at_the_time_limit():
-    from pendcli import bench
+    from tools import bench_scaling
 
-    wall, peak = bench.run_sized(["--version"])
+    wall, peak = bench_scaling.run_sized(["--version"])
     assert float(wall) > 0 and float(peak) > 1  # MB: a Python interpreter at least
-    wall, peak = bench.run_sized(["lecornu", "zeros", "--count", "10000000", "-f", "json"], 0.05)
+    wall, peak = bench_scaling.run_sized(
+        ["lecornu", "zeros", "--count", "10000000", "-f", "json"], 0.05
+    )
     assert wall == "> 0 (stopped)" and peak == "n/a"
-    labels = [label for label, _ in bench.growth_cases(quick=False)]
+    labels = [label for label, _ in bench_scaling.growth_cases(quick=False)]
     assert "lecornu zeros --count 1e+07 -f csv" in labels
     assert "charbonnier table --n-max 10000 -f json" in labels
 
 
 def test_bench_peers_give_the_same_answers():
-    from pendcli import bench
+    from tools import bench_scaling
 
-    rows = bench.peer_ratios(quick=True)
+    rows = bench_scaling.peer_ratios(quick=True)
     assert [r["what"].split()[0] for r in rows] == ["zeros", "I_n(π)", "conical", "planar"]
     for row in rows:  # the comparison is fair only if both compute the same numbers
         assert float(row["largest relative difference"]) < 1e-8, row

@@ -9,10 +9,10 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, busy, emit
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
-    from pendcli.render import Column
+    from pendcli.output import Column
 
 app = typer.Typer(
     help="Charbonnier 1908: perturbations, the table of I_n(π).",
@@ -33,11 +33,11 @@ def table(
     """The printed table of I_n(π), n = 0..5, and its closed forms, against recomputation."""
     from pendcli.core.claims import evaluate_paper
     from pendcli.core.plotting import validate_plot_path
+    from pendcli.output.views import FORMULA_COLUMNS, claim_columns
     from pendcli.papers.charbonnier.claims import recompute
     from pendcli.papers.charbonnier.explore import table_rows
     from pendcli.papers.charbonnier.figures import plot_table
     from pendcli.papers.charbonnier.formulas import closed_form_rows
-    from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
     plot = validate_plot_path(plot)
     rows = table_rows(n_max)
@@ -63,7 +63,7 @@ def table(
 
 
 def _table_columns() -> tuple[Column, ...]:
-    from pendcli.render import Column, fmt_float
+    from pendcli.output import Column, fmt_float
 
     return (
         Column("n", "n", justify="right"),
@@ -113,8 +113,8 @@ def integral(
     fmt: FormatOption = OutputFormat.table,
 ) -> None:
     """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (by default π)."""
+    from pendcli.output import Column, fmt_float
     from pendcli.papers.charbonnier.explore import integral_row
-    from pendcli.render import Column, fmt_float
 
     row = integral_row(n, x, tol=tol, method=method)
     if "warning" in row:  # on stderr, so stdout stays the value (JSON keeps it in the row)

@@ -12,14 +12,14 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from pendcli.core.console import console
-from pendcli.render import OutputFormat, Section
+from pendcli.output import OutputFormat, Section
 
 if TYPE_CHECKING:
     from pendcli.core.cache import ResultCache
 
 
 class CheckFormat(StrEnum):
-    """`pendcli check --format`: the same names as :class:`pendcli.check_report.CheckFormat`
+    """`pendcli check --format`: the same names as :class:`pendcli.output.check_formats.CheckFormat`
     (kept here so `pendcli --help` does not import the check's modules)."""
 
     table = "table"
@@ -111,7 +111,7 @@ def result_cache(use: bool, quiet: bool = False) -> Iterator[ResultCache]:
 def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, object]) -> None:
     """Print titled sections of rows (tables) or the whole document (JSON, CSV, Markdown)."""
     from pendcli.core.console import for_display
-    from pendcli.render import render
+    from pendcli.output import render
 
     # rich (~0.02 s to import) only for the table: the data formats never use the console.
     text = render(fmt, sections, document, console=console() if fmt is OutputFormat.table else None)

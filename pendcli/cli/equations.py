@@ -16,7 +16,7 @@ from pendcli.cli.common import (
     emit,
     result_cache,
 )
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.core.cache import ResultCache
@@ -48,11 +48,11 @@ def equations(
     from pendcli.core.console import is_quiet
     from pendcli.core.ledger import coverage
     from pendcli.core.vocabulary import STATUSES
+    from pendcli.output import Column
+    from pendcli.output.summary import compact_equation_columns
+    from pendcli.output.views import EQUATION_COLUMNS
     from pendcli.papers.registry import resolve_papers
-    from pendcli.render import Column
-    from pendcli.render.views import EQUATION_COLUMNS
     from pendcli.reproduce import ledger_rows
-    from pendcli.summary import compact_equation_columns
 
     if status is not None and status not in STATUSES:
         from pendcli.core.errors import either

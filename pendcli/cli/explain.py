@@ -9,11 +9,11 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from pendcli.cli.common import FormatOption, PaperOption, emit
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.core.explain import ExplainedRow
-    from pendcli.render import Section
+    from pendcli.output import Section
 
 ClaimArgument = Annotated[
     str | None,
@@ -124,8 +124,8 @@ def _clear_progress() -> None:
 
 
 def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[Section]:
-    from pendcli.render import Column
-    from pendcli.render.views import printed_for_display
+    from pendcli.output import Column
+    from pendcli.output.views import printed_for_display
 
     columns = [
         Column("id", "claim"),
@@ -150,7 +150,7 @@ def _sections(rows: list[ExplainedRow], keys: tuple[str, ...]) -> list[Section]:
 
 def _steps_sections(row: ExplainedRow) -> list[Section]:
     """One claim: every step of its simplest chains, and the space searched."""
-    from pendcli.render import Column
+    from pendcli.output import Column
 
     d = row.as_dict()
     chains = d["steps"] if isinstance(d["steps"], list) else []

@@ -8,11 +8,11 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from pendcli.cli.common import FormatOption, PaperOption, busy, emit
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.core.claims import FormulaRow
-    from pendcli.render import Section
+    from pendcli.output import Section
 
 FigureFolderOption = Annotated[
     Path | None,
@@ -49,7 +49,7 @@ def _check_figure_folder(plot: Path | None) -> None:
 
 
 def _sections(results: dict[str, list[FormulaRow]]) -> list[Section]:
-    from pendcli.render.views import FORMULA_COLUMNS
+    from pendcli.output.views import FORMULA_COLUMNS
 
     return [
         (f"{key.capitalize()}: derived formulas", [r.as_dict() for r in rows], FORMULA_COLUMNS)

@@ -7,14 +7,14 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, busy, emit
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterator
 
     import numpy as np
 
-    from pendcli.render import Column, Row
+    from pendcli.output import Column, Row
 
 app = typer.Typer(
     help="Lecornu: the pendulum of variable length (Bessel zeros, the 0,35 m/s example).",
@@ -43,7 +43,7 @@ GOption = Annotated[
 
 
 def _col(key: str, header: str, sig: int = 10) -> Column:
-    from pendcli.render import Column, fmt_float
+    from pendcli.output import Column, fmt_float
 
     return Column(key, header, fmt=lambda r: fmt_float(r.get(key), sig), justify="right")
 
@@ -56,9 +56,9 @@ def claims(
     """Every printed number of the memoir against its recomputation, with a verdict."""
     from pendcli.core.checks import real_in_range
     from pendcli.core.claims import evaluate_paper
+    from pendcli.output.views import claim_columns
     from pendcli.papers.lecornu.claims import author_procedures, recompute
     from pendcli.papers.lecornu.model import G_RANGE, constant
-    from pendcli.render.views import claim_columns
 
     g = real_in_range("g", constant("g") if g is None else g, *G_RANGE, "m/s²")
     claims = evaluate_paper("lecornu", lambda: recompute(g), author_procedures())
@@ -133,7 +133,7 @@ RICH_TABLE_MAX_ROWS = 5000
 
 
 def _zeros_rich_table(title: str, document: dict[str, object], values: list[float]) -> None:
-    from pendcli.render import Column
+    from pendcli.output import Column
 
     rows = [{"k": k + 1, "zero": z} for k, z in enumerate(values)]
     columns = [
@@ -153,7 +153,7 @@ def _zeros_streamed(
     """The zeros written as they are computed, in the key layout of the list output."""
     import numpy as np
 
-    from pendcli.render.stream import StreamedColumn, StreamedRows, write_stream
+    from pendcli.output.stream import StreamedColumn, StreamedRows, write_stream
 
     def numbered() -> Iterator[tuple[np.ndarray, np.ndarray]]:
         start = 1
@@ -171,7 +171,7 @@ def _zeros_streamed(
 
 def _example_columns() -> tuple[list[Column], list[Column], list[Column]]:
     """Columns of `example`: elongations, vertical passages, summary."""
-    from pendcli.render import Column
+    from pendcli.output import Column
 
     elongations = [
         _col("k", "k"),
@@ -309,8 +309,8 @@ def _best_g_rows(best: dict[str, object], g0: float) -> list[dict[str, str]]:
 
 
 def _g_column(key: str) -> Column:
-    from pendcli.render import Column
-    from pendcli.render.style import current
+    from pendcli.output import Column
+    from pendcli.output.style import current
 
     def text(row: Row) -> str:
         value = row.get(key)
@@ -323,11 +323,11 @@ def _g_column(key: str) -> Column:
 @app.command("g-sensitivity")
 def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
     """The g-dependent claims at several g, their verdicts, and the g that fits best."""
+    from pendcli.output import Column
+    from pendcli.output.views import printed_for_display
     from pendcli.papers.lecornu.explore import best_g
     from pendcli.papers.lecornu.explore import g_sensitivity as sensitivity
     from pendcli.papers.lecornu.model import constant
-    from pendcli.render import Column
-    from pendcli.render.views import printed_for_display
 
     with busy("the g-dependent claims at several g"):
         rows = sensitivity()
@@ -363,8 +363,8 @@ def series(fmt: FormatOption = OutputFormat.table) -> None:
     """Lecornu's series (10)/(13) in double precision: where cancellation destroys them."""
     with busy("the series (10) and (13) against mpmath"):
         from pendcli.numerics import besselzeros
+        from pendcli.output import Column
         from pendcli.papers.lecornu.explore import series_cancellation
-        from pendcli.render import Column
 
         rows = series_cancellation()
     columns = [Column("order", "order")] + [

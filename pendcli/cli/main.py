@@ -30,7 +30,7 @@ from pendcli.cli.common import (
 from pendcli.cli.help_format import ARGUMENTS, epilog, name_values
 from pendcli.cli.values import read_values
 from pendcli.core.errors import PendcliError
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     # click's Command, Context, Parameter and HelpFormatter live inside typer, under a private
@@ -372,8 +372,8 @@ def list_claims(paper: PaperOption = None, fmt: FormatOption = OutputFormat.tabl
     """Every claim with its id, paper and source (reads the tables only; computes nothing)."""
     from pendcli.core.claims import list_rows
     from pendcli.core.reader_text import for_reader
+    from pendcli.output import Column
     from pendcli.papers.registry import resolve_papers
-    from pendcli.render import Column
 
     rows = list_rows(resolve_papers(paper))
 
@@ -467,7 +467,7 @@ def reproduce(
         raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
     if out is not None:  # refuse a bad folder before the run, not after
         from pendcli.cli.targets import check_replaced_folder
-        from pendcli.report import check_out_folder
+        from pendcli.output.report import check_out_folder
 
         check_replaced_folder(out, "--out")
         check_out_folder(out)
@@ -485,7 +485,7 @@ def reproduce(
         compact = fmt is OutputFormat.table and not notes
         emit(fmt, result.sections(compact, only_failing), result.document(only_failing))
         if compact:
-            from pendcli.summary import CAUSE_LEGEND
+            from pendcli.output.summary import CAUSE_LEGEND
 
             print(CAUSE_LEGEND)
         if out is not None:
@@ -523,7 +523,7 @@ def _write_report(
     cache: ResultCache | None = None,
 ) -> None:
     from pendcli.cli.common import say
-    from pendcli.report import write_report
+    from pendcli.output.report import write_report
 
     written = write_report(result, out, quiet=quiet, measure=measure, pdf=pdf, cache=cache)
     if not quiet:

@@ -8,10 +8,10 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, busy, emit
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
-    from pendcli.render import Column
+    from pendcli.output import Column
 
 app = typer.Typer(
     help="Tisserand 1881: the conical pendulum, series (I)-(VI) against the exact motion.",
@@ -32,7 +32,7 @@ Row = Mapping[str, Any]
 
 
 def _number(key: str, sig: int = 12) -> Callable[[Row], str]:
-    from pendcli.render import fmt_float
+    from pendcli.output import fmt_float
 
     return lambda r: "" if r.get(key) is None else fmt_float(r[key], sig)
 
@@ -57,10 +57,10 @@ def _angle_or_number(key: str) -> Callable[[Row], str]:
 def claims(fmt: FormatOption = OutputFormat.table) -> None:
     """The printed numbers of the example and Resal's rate, with verdicts and the unit reading."""
     from pendcli.core.claims import evaluate_paper
+    from pendcli.output.views import FORMULA_COLUMNS, claim_columns
     from pendcli.papers.tisserand import explore, model
     from pendcli.papers.tisserand.claims import recompute
     from pendcli.papers.tisserand.formulas import formula_checks
-    from pendcli.render.views import FORMULA_COLUMNS, claim_columns
 
     rows = [r.as_dict() for r in evaluate_paper("tisserand", recompute)]
     formulas = [f.as_dict() for f in formula_checks()]
@@ -82,7 +82,7 @@ def claims(fmt: FormatOption = OutputFormat.table) -> None:
 
 
 def _reading_columns(printed: Mapping[str, str]) -> tuple[Column, ...]:
-    from pendcli.render import Column
+    from pendcli.output import Column
 
     return (
         Column("reading", "reading"),
@@ -150,7 +150,7 @@ def _angles(theta0: str | None, theta1: str | None) -> tuple[str, str]:
 
 
 def _example_columns(rows: list[dict[str, Any]]) -> tuple[Column, ...]:
-    from pendcli.render import Column
+    from pendcli.output import Column
 
     columns = (
         Column("quantity", "quantity"),
@@ -200,7 +200,7 @@ def series(
 
 
 def _series_columns() -> list[Column]:
-    from pendcli.render import Column
+    from pendcli.output import Column
 
     columns = [
         Column("theta0_deg", "θ0 (°)", justify="right", digits=6),

@@ -9,10 +9,10 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 
 from pendcli.cli.common import FormatOption, PlotOption, busy, emit
-from pendcli.render import OutputFormat
+from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
-    from pendcli.render import Column
+    from pendcli.output import Column
     from pendcli.tradeoff import Point
 
 app = typer.Typer(
@@ -101,7 +101,7 @@ def _measure(names: list[str], quick: bool) -> list[Point]:
 
 
 def _columns() -> tuple[Column, ...]:
-    from pendcli.render import Column, fmt_float
+    from pendcli.output import Column, fmt_float
 
     return (
         Column("method", "method"),

@@ -117,7 +117,7 @@ def stop_on_signals() -> None:
 
 
 def run_entry(main: Callable[[], int], prog: str) -> int:
-    """Run a module's ``main`` (``python -m pendcli.docs``...): an interrupt or a
+    """Run a module's ``main`` (``python -m tools.docs``...): an interrupt or a
     :class:`~pendcli.core.errors.PendcliError` is one line on stderr, never a traceback."""
     from pendcli.core.errors import PendcliError
 

@@ -3,7 +3,7 @@
 ``pendcli reproduce --format json`` prints one object whose lists hold rows of the kinds
 below; every paper subcommand prints ``claims`` and ``formulas`` rows the same way (and adds
 its own keys beside them); ``pendcli tradeoff --format json`` prints ``rows``. The README's
-"JSON schema" section is generated from here (``python -m pendcli.docs``) and
+"JSON schema" section is generated from here (``python -m tools.docs``) and
 ``tests/test_json_schema.py`` checks real output against it.
 """
 

@@ -77,7 +77,7 @@ def amplitudes(theta0: str, theta1: str) -> tuple[float, float]:
 
 def angle_text(rad: float) -> str:
     """1°7'33.14'' for readable angles; seconds in scientific notation below 0.01''."""
-    from pendcli.render.views import sexagesimal
+    from pendcli.output.views import sexagesimal
 
     if abs(rad) < 0.01 * ARCSEC:
         return f"{rad / ARCSEC:.2e}''"

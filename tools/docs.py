@@ -2,7 +2,7 @@
 docs/verdicts.md, docs/schema.md and docs/ENGINE.md (the README links to them).
 
 The pages show real output and the real JSON schema; this module produces both, so nothing
-there is typed in. ``python -m pendcli.docs`` rewrites the text between each pair of markers
+there is typed in. ``python -m tools.docs`` rewrites the text between each pair of markers
 (``<!-- sample:start -->`` ... ``<!-- sample:end -->`` for the sample output,
 ``<!-- causes:start -->`` ... for the counts of the numbers that do not agree, by cause,
 ``<!-- schema:start -->`` ... ``<!-- schema:end -->`` for the JSON schema from
@@ -19,8 +19,8 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.render.columns import Column, Row
-from pendcli.render.markdown import to_markdown
+from pendcli.output.columns import Column, Row
+from pendcli.output.markdown import to_markdown
 
 if TYPE_CHECKING:
     from pendcli.core.claims import ClaimRow
@@ -47,7 +47,7 @@ def _reproduce_all(equations: bool = False) -> ReproduceResult:
 
 
 def sample_section(result: ReproduceResult | None = None) -> str:
-    from pendcli.render.views import claim_columns
+    from pendcli.output.views import claim_columns
 
     result = result if result is not None else _reproduce_all()
     summary = result.summary_rows()
@@ -356,4 +356,4 @@ def main(argv: list[str]) -> int:
 if __name__ == "__main__":
     from pendcli.core.interrupts import run_entry
 
-    sys.exit(run_entry(lambda: main(sys.argv[1:]), "python -m pendcli.docs"))
+    sys.exit(run_entry(lambda: main(sys.argv[1:]), "python -m tools.docs"))

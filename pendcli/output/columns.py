@@ -10,8 +10,8 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
-from pendcli.render.style import current
-from pendcli.render.values import plain
+from pendcli.output.style import current
+from pendcli.output.values import plain
 
 __all__ = ["Column", "Row", "Section", "fmt_float"]
 
@@ -62,7 +62,7 @@ Section = tuple[str, Sequence[Row], Sequence[Column]]
 
 def fmt_float(value: float | None, sig: int = 10) -> str:
     """A float for human eyes: ``sig`` significant digits, no trailing noise, and never more
-    than the output being drawn shows (7 in the terminal: :mod:`pendcli.render.style`)."""
+    than the output being drawn shows (7 in the terminal: :mod:`pendcli.output.style`)."""
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
     return current().number(value, sig)

@@ -10,8 +10,8 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping, Sequence
 
-from pendcli.render.columns import Column, Row, Section
-from pendcli.render.style import MARKDOWN, using
+from pendcli.output.columns import Column, Row, Section
+from pendcli.output.style import MARKDOWN, using
 
 __all__ = ["MarkdownRenderer", "code_span", "fence", "markdown_text", "to_markdown"]
 

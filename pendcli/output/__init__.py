@@ -1,11 +1,22 @@
-"""Output formats over plain rows (mappings): rich table, JSON, CSV, Markdown.
+"""Every output pendcli writes, over plain rows (the ``as_dict()`` mappings of core's rows).
 
-One module per format (:mod:`~pendcli.render.table`, :mod:`~pendcli.render.json`,
-:mod:`~pendcli.render.csv`, :mod:`~pendcli.render.markdown`), each a renderer turning titled
+The formats: one module per format (:mod:`~pendcli.output.table`, :mod:`~pendcli.output.json`,
+:mod:`~pendcli.output.csv`, :mod:`~pendcli.output.markdown`), each a renderer turning titled
 sections of rows (and the whole document, which JSON prints) into text; :class:`OutputFormat`
 maps ``--format`` to one. Renderers know columns and values, nothing about pendulums, and are
 deterministic: the same rows give the same bytes (no timestamps, fixed key order, floats
-written with ``repr`` in JSON and CSV so they round-trip exactly).
+written with ``repr`` in JSON and CSV so they round-trip exactly). The number style of each
+output is written once (:mod:`~pendcli.output.style`); only :mod:`~pendcli.output.views`
+knows what a claim row looks like.
+
+The documents made of those rows: the terminal summary (:mod:`~pendcli.output.summary`),
+``out/report.md`` (:mod:`~pendcli.output.report`), what ``pendcli check`` prints
+(:mod:`~pendcli.output.check_formats`) and the HTML edition (:mod:`pendcli.output.html`).
+
+May import: ``pendcli.core``, ``pendcli.numerics``, the registry (``pendcli.papers.registry``,
+inside functions) and the committed tables' columns (``pendcli.drift``). Never the CLI, a
+paper's own modules, or the run (``reproduce``, ``regression``), except the report: it takes a
+``ReproduceResult`` and the regenerated tables' names, the one place an output knows the run.
 """
 
 from __future__ import annotations
@@ -14,15 +25,15 @@ from collections.abc import Mapping, Sequence
 from enum import StrEnum
 from typing import TYPE_CHECKING, Protocol
 
-from pendcli.render.columns import Column, Row, Section, fmt_float
+from pendcli.output.columns import Column, Row, Section, fmt_float
 
 if TYPE_CHECKING:
     from rich.console import Console
 
-    from pendcli.render.csv import to_csv
-    from pendcli.render.json import to_json
-    from pendcli.render.markdown import to_markdown
-    from pendcli.render.table import to_rich_table
+    from pendcli.output.csv import to_csv
+    from pendcli.output.json import to_json
+    from pendcli.output.markdown import to_markdown
+    from pendcli.output.table import to_rich_table
 
 __all__ = [
     "Column",
@@ -54,19 +65,19 @@ class OutputFormat(StrEnum):
 def __getattr__(name: str) -> object:
     # the renderers' functions, loaded on first use: `pendcli --help` needs only the enum
     if name == "to_csv":
-        from pendcli.render.csv import to_csv
+        from pendcli.output.csv import to_csv
 
         return to_csv
     if name == "to_json":
-        from pendcli.render.json import to_json
+        from pendcli.output.json import to_json
 
         return to_json
     if name == "to_markdown":
-        from pendcli.render.markdown import to_markdown
+        from pendcli.output.markdown import to_markdown
 
         return to_markdown
     if name == "to_rich_table":
-        from pendcli.render.table import to_rich_table
+        from pendcli.output.table import to_rich_table
 
         return to_rich_table
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
@@ -76,18 +87,18 @@ def renderer(fmt: OutputFormat, console: Console | None = None) -> Renderer:
     """The renderer of ``fmt``; ``console`` (width, colour) matters to the table only.
     Each renderer's module loads on first use."""
     if fmt is OutputFormat.table:
-        from pendcli.render.table import TableRenderer
+        from pendcli.output.table import TableRenderer
 
         return TableRenderer(console)
     if fmt is OutputFormat.json:
-        from pendcli.render.json import JsonRenderer
+        from pendcli.output.json import JsonRenderer
 
         return JsonRenderer()
     if fmt is OutputFormat.csv:
-        from pendcli.render.csv import CsvRenderer
+        from pendcli.output.csv import CsvRenderer
 
         return CsvRenderer()
-    from pendcli.render.markdown import MarkdownRenderer
+    from pendcli.output.markdown import MarkdownRenderer
 
     return MarkdownRenderer()
 

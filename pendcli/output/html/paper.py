@@ -1,9 +1,9 @@
 """``out/papers/<paper>.html``: one paper's OCR text as an annotated edition.
 
-Its TeX rendered as MathML (:mod:`pendcli.html_math`), the marks placed by
-:mod:`pendcli.html_marks` drawn inside prose and formulas with a numbered note beside each
+Its TeX rendered as MathML (:mod:`pendcli.output.html.math`), the marks placed by
+:mod:`pendcli.output.html.marks` drawn inside prose and formulas with a numbered note beside each
 paragraph, then the paper's claims, equations, formulas and figures. Also the Jinja2
-environment both pages are rendered with (:mod:`pendcli.html_report` writes the overview).
+environment both pages are rendered with (:mod:`pendcli.output.html.report` writes the overview).
 """
 
 from __future__ import annotations
@@ -17,11 +17,28 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from pendcli.core.numbers import edition_quantity, edition_text
-from pendcli.html_marks import (
+from pendcli.output.html.locate import paragraph_spans
+from pendcli.output.html.marks import Placement, place_marks
+from pendcli.output.html.math import (
+    balanced,
+    mark_mathml,
+    math_segments,
+    plain_math,
+    to_mathml,
+    wrap_marks,
+)
+from pendcli.output.html.prose import (
+    front_matter_end,
+    is_heading,
+    join_continued,
+    page_breaks,
+    prose_html,
+    split_at_heads,
+)
+from pendcli.output.html.rows import (
     EQUATION_CAUSE,
     STATUS_CLASSES,
     VERDICT_CLASSES,
-    Placement,
     Row,
     correction_of,
     css_of,
@@ -30,29 +47,18 @@ from pendcli.html_marks import (
     lines_of,
     number_text,
     own_of,
-    paragraph_spans,
-    place_marks,
     printed_form,
     sources_of,
     text_of,
     verdict_of,
     word_of,
 )
-from pendcli.html_math import (
-    balanced,
-    mark_mathml,
-    math_segments,
-    plain_math,
-    to_mathml,
-    wrap_marks,
-)
-from pendcli.html_prose import join_continued, prose_html
 
 if TYPE_CHECKING:
     from jinja2 import Environment
     from markupsafe import Markup
 
-    from pendcli.html_math import MathSegment
+    from pendcli.output.html.math import MathSegment
 
 
 @dataclass(frozen=True)
@@ -238,7 +244,7 @@ def _environment() -> Environment:
     from jinja2 import Environment, PackageLoader, StrictUndefined
 
     return Environment(
-        loader=PackageLoader("pendcli", "templates"),
+        loader=PackageLoader("pendcli.output.html", "templates"),
         autoescape=True,
         undefined=StrictUndefined,
         keep_trailing_newline=True,
@@ -302,10 +308,10 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
     order = sorted(called, key=lambda c: c[:3])
     numbers = {c[3].key: i for i, c in enumerate(order, 1)}
     blocks: list[dict[str, object]] = []
-    texts: list[str] = []  # each block's text: html_prose joins what the OCR cut in two
+    texts: list[str] = []  # each block's text: prose.py joins what the OCR cut in two
     front = front_matter_end(text)
     breaks = page_breaks(text)
-    for a, b in _split_at(text, paragraph_spans(text, segments), breaks):
+    for a, b in split_at_heads(text, paragraph_spans(text, segments), breaks):
         texts.append(text[a:b])
         if (a, b) in breaks:
             blocks.append(_page_break(text, a, b, breaks.index((a, b))))
@@ -339,33 +345,7 @@ def _is_dense(notes: list[dict[str, object]]) -> bool:
     return findings >= DENSE_FINDINGS or len(notes) >= DENSE_NOTES
 
 
-# A running head or foot the OCR kept as a line of the text: the journal's foot at the bottom
-# of a signature's first page ("Ann. de Mathémat., 4^e série, t. VIII. (Avril 1908.) 10"),
-# or a page number alone ("( 146 )", "— 146 —").
-_RUNNING_HEAD = re.compile(
-    r"^[ \t]*(?:Ann\. de Math[ée]mat\.,[^\n$]*\(\w+ \d{4}\.?\)[ \t]*\d*"
-    r"|\([ \t]*\d{1,3}[ \t]*\)|— \d{1,3} —)[ \t]*$",
-    re.MULTILINE,
-)
 _PAGES = re.compile(r"\bp\. (\d+)\s*-\s*(\d+)")
-
-
-def page_breaks(text: str) -> list[tuple[int, int]]:
-    """The lines of ``text`` that are a page's running head or foot, not the paper's text."""
-    return [m.span() for m in _RUNNING_HEAD.finditer(text)]
-
-
-def _split_at(
-    text: str, spans: Sequence[tuple[int, int]], cuts: Sequence[tuple[int, int]]
-) -> list[tuple[int, int]]:
-    """The paragraphs, each running head inside one cut out as a block of its own."""
-    out = []
-    for a, b in spans:
-        for x, y in (c for c in cuts if a <= c[0] and c[1] <= b):
-            out += [(a, x), (x, y)]
-            a = y
-        out.append((a, b))
-    return [(a, b) for a, b in out if text[a:b].strip()]
 
 
 def _page_break(text: str, a: int, b: int, index: int) -> dict[str, object]:
@@ -380,33 +360,6 @@ def _page_break(text: str, a: int, b: int, index: int) -> dict[str, object]:
 
 # A figure's caption alone on its line (the figure itself is not in the OCR text): « Fig. 2. »
 _FIGURE = re.compile(r"Fig\. \d+\.?")
-_NUMERAL = re.compile(r"[IVX]+\.(?:\s*—.*)?")
-
-
-def is_heading(paragraph: str) -> bool:
-    """A title of the paper or of a part: a Markdown heading, or one line in capitals
-    (« SUR LE PENDULE DE LONGUEUR VARIABLE », « II. — LE MOUVEMENT … ») or a part's numeral
-    alone (« I. »)."""
-    line = paragraph.strip()
-    if line.startswith("#"):
-        return True
-    if "$" in line or len(line) > 120 or line.count("\n") > 2:
-        return False
-    letters = [c for c in line if c.isalpha()]
-    return bool(_NUMERAL.fullmatch(line)) or (len(letters) >= 4 and line.upper() == line)
-
-
-# The digitisation's cover page (NUMDAM's title page, copyright and terms of use) ends with
-# the archive's address, within the first lines of the text.
-_COVER_END = re.compile(r"^<?https?://www\.numdam\.org/?>?[ \t]*$", re.MULTILINE)
-
-
-def front_matter_end(text: str, within: int = 40) -> int:
-    """Where the digitisation's cover page ends (0 where the text has none): after the last
-    line of the first ``within`` lines that is the archive's bare address."""
-    head = "\n".join(text.split("\n")[:within])
-    ends = [m.end() for m in _COVER_END.finditer(head)]
-    return ends[-1] if ends else 0
 
 
 MARGIN_DIGITS = 6  # an agreeing number's recomputed value in the margin; the table gives 10

@@ -13,8 +13,8 @@ import io
 import json
 from collections.abc import Mapping, Sequence
 
-from pendcli.render.columns import Row, Section
-from pendcli.render.json import plain
+from pendcli.output.columns import Row, Section
+from pendcli.output.json import plain
 
 __all__ = ["TABLE_KEY", "CsvRenderer", "to_csv"]
 

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from pendcli.html_math import MathSegment
+    from pendcli.output.html.math import MathSegment
 
 __all__ = [
     "Piece",

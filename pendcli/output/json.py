@@ -5,8 +5,8 @@ from __future__ import annotations
 import json
 from collections.abc import Mapping, Sequence
 
-from pendcli.render.columns import Section
-from pendcli.render.values import plain
+from pendcli.output.columns import Section
+from pendcli.output.values import plain
 
 __all__ = ["JsonRenderer", "plain", "to_json"]
 

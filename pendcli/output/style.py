@@ -12,7 +12,7 @@ Within a column the notation is one: fixed, trailing zeros kept and the decimal 
 (:meth:`NumberStyle.column`), never a switch to ``9.092e-04`` among fixed numbers unless the
 column needs a power of ten throughout. An angle beside a sexagesimal printed value is written
 sexagesimal (:meth:`NumberStyle.angle`). The renderers set the style while they format
-(:func:`using`), so a column's own format (:func:`~pendcli.render.columns.fmt_float`) follows
+(:func:`using`), so a column's own format (:func:`~pendcli.output.columns.fmt_float`) follows
 the output it is drawn in. Nothing here knows what the numbers measure.
 """
 

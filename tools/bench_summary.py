@@ -1,7 +1,7 @@
 """The suite and the install, timed by ``make bench``, and the README's summary of the run.
 
 The project asks that every timing the project states comes from one measurement. ``python -m
-pendcli.bench`` measures everything in one run; this module adds what only a checkout can
+tools.bench`` measures everything in one run; this module adds what only a checkout can
 measure (the fast test suite as ``make test`` runs it; installing the runtime from the lock
 into a new venv with empty download caches: "from nothing") and writes the few headline
 figures into the README between ``<!-- timings:start -->`` and ``<!-- timings:end -->``. Both

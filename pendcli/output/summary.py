@@ -13,8 +13,8 @@ from collections.abc import Mapping, Sequence
 
 from pendcli.core.rows import equation_status
 from pendcli.core.vocabulary import Cause, disagrees_word
-from pendcli.render.columns import Column, Row
-from pendcli.render.views import VERDICT_STYLES, format_like_printed
+from pendcli.output.columns import Column, Row
+from pendcli.output.views import VERDICT_STYLES, format_like_printed
 
 __all__ = [
     "CAUSE_LABELS",
@@ -83,7 +83,7 @@ def disagrees(row: Row) -> bool:
 
 
 def _printed(row: Row) -> str:
-    from pendcli.render.views import printed_for_display
+    from pendcli.output.views import printed_for_display
 
     return printed_for_display(row["published"])
 

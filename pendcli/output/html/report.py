@@ -1,19 +1,19 @@
 """``out/report.html`` and ``out/papers/<paper>.html``: the report and an annotated edition.
 
 Each paper page is the paper's OCR text (``tables/papers/<paper>.txt``) as an edition: its
-TeX rendered as MathML at build time (:mod:`pendcli.html_math`), each printed number,
+TeX rendered as MathML at build time (:mod:`pendcli.output.html.math`), each printed number,
 equation label and stated result marked where it is printed, a misprinted or wrong term
 marked itself, and beside each paragraph a numbered note per mark with the verdict and the
 reading or the correction. The overview page carries the counts, the propagation graph
-(:mod:`pendcli.html_graph`) and one entry per finding. The pages come from the Jinja2
-templates in ``pendcli/templates`` (autoescaped; one stylesheet, inlined), figures are data
-URIs: nothing is fetched. Everything here works on row dicts (``as_dict()`` of the rows),
-read through the small accessors of :mod:`pendcli.html_marks`: it knows the report's keys,
-not pendulums.
+(:mod:`pendcli.output.html.graph`) and one entry per finding. The pages come from the Jinja2
+templates in ``pendcli/output/html/templates`` (autoescaped; one stylesheet, inlined),
+figures are data URIs: nothing is fetched. Everything here works on row dicts (``as_dict()``
+of the rows), read through the small accessors of :mod:`pendcli.output.html.marks`: it knows
+the report's keys, not pendulums.
 
 This module is the entry point: the overview page, writing both pages, printing them to
-PDF. Locating and marking the rows is :mod:`pendcli.html_marks`; the paper page is
-:mod:`pendcli.html_paper`.
+PDF. Locating and marking the rows is :mod:`pendcli.output.html.marks`; the paper page is
+:mod:`pendcli.output.html.paper`.
 """
 
 from __future__ import annotations
@@ -23,24 +23,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.vocabulary import PROCEDURE_VERDICTS
-from pendcli.html_marks import (
-    EQUATION_CAUSE,
-    STATUS_CLASSES,
-    VERDICT_CLASSES,
-    Placement,
-    Row,
-    correction_of,
-    disagrees,
-    id_of,
-    locate,
-    own_of,
-    place_marks,
-    sources_of,
-    text_of,
-    verdict_of,
-    word_of,
-)
-from pendcli.html_paper import (
+from pendcli.output.html.paper import (
     Figure,
     cited_formulas,
     figure_entries,
@@ -50,6 +33,20 @@ from pendcli.html_paper import (
     render_stats,
     render_template,
 )
+from pendcli.output.html.rows import (
+    EQUATION_CAUSE,
+    STATUS_CLASSES,
+    VERDICT_CLASSES,
+    Row,
+    correction_of,
+    disagrees,
+    id_of,
+    own_of,
+    sources_of,
+    text_of,
+    verdict_of,
+    word_of,
+)
 
 if TYPE_CHECKING:
     from pendcli.core.rows import EquationRow
@@ -57,13 +54,10 @@ if TYPE_CHECKING:
 
 __all__ = [
     "Figure",
-    "Placement",
     "chromium",
     "cited_formulas",
-    "locate",
     "markdown_for_a_reader",
     "paper_page",
-    "place_marks",
     "print_pdfs",
     "propagation_svg",
     "reference_words",
@@ -80,7 +74,7 @@ __all__ = [
 
 def propagation_svg(rows: Sequence[Row]) -> str:
     """The layered graph of the slips: each root on the left, what inherits it to its right."""
-    from pendcli.html_graph import layered_graph
+    from pendcli.output.html.graph import layered_graph
 
     ids = {id_of(r) for r in rows}
     edges = [(s, id_of(r)) for r in rows for s in sources_of(r) if s in ids]

@@ -2,7 +2,7 @@
 
 A :class:`StreamedRows` is a result too large to hold as a list of dicts (millions of rows):
 named columns that arrive as numpy arrays, one chunk at a time. :func:`write_stream` writes it
-in any :class:`~pendcli.render.OutputFormat` as each chunk arrives, so memory stays that of
+in any :class:`~pendcli.output.OutputFormat` as each chunk arrives, so memory stays that of
 one chunk whatever the count. The bytes are those the list renderers would give for the same
 rows: JSON in the document's key layout (two-space indent), floats as ``repr`` (exact round
 trip) everywhere, non-finite floats as ``null`` in JSON and empty elsewhere. The table format
@@ -19,13 +19,13 @@ from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Literal, TextIO
 
-from pendcli.render.json import to_json
+from pendcli.output.json import to_json
 
 if TYPE_CHECKING:
     import numpy as np
     from rich.progress import Progress, TaskID
 
-    from pendcli.render import OutputFormat
+    from pendcli.output import OutputFormat
 
 __all__ = ["StreamedColumn", "StreamedRows", "write_stream"]
 
@@ -170,7 +170,7 @@ def write_stream(
     JSON prints ``document`` with ``rows`` as the list under ``key``; CSV one header line and
     a line per row; Markdown a pipe table under ``### title``; the table plain aligned text.
     """
-    from pendcli.render import OutputFormat
+    from pendcli.output import OutputFormat
 
     out = sys.stdout if out is None else out
     parts = {

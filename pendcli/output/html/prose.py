@@ -9,15 +9,27 @@ paragraph to the one before when it continues it (the one before ends without a 
 the next begins in lower case), removing the hyphen of a cut word, and sets the page break
 that fell inside after the joined paragraph. Within a paragraph, lines are joined by a space
 (or by nothing, at a cut word); a line of a table (a tab) or of a list keeps its break.
+
+The text's lines that are not the paper's prose are told apart here too: a page's running head
+or foot (:func:`page_breaks`), a title (:func:`is_heading`), the digitisation's cover page
+(:func:`front_matter_end`).
 """
 
 from __future__ import annotations
 
 import itertools
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
-__all__ = ["continues", "join_continued", "prose_html"]
+__all__ = [
+    "continues",
+    "front_matter_end",
+    "is_heading",
+    "join_continued",
+    "page_breaks",
+    "prose_html",
+    "split_at_heads",
+]
 
 # a line, or a paragraph, that ends a sentence, a display formula or a title
 _ENDED = re.compile(r"[.:;?!»)\]$*]\s*$")
@@ -101,3 +113,63 @@ def _joined(
     notes = [*first["notes"], *second["notes"]]  # type: ignore[misc]
     return {**first, "html": Markup(head + str(second["html"])), "notes": notes,
             "dense": dense(notes)}  # fmt: skip
+
+
+# --- the text's other lines: running heads, titles, the cover page --------------------------
+
+
+# A running head or foot the OCR kept as a line of the text: the journal's foot at the bottom
+# of a signature's first page ("Ann. de Mathémat., 4^e série, t. VIII. (Avril 1908.) 10"),
+# or a page number alone ("( 146 )", "— 146 —").
+_RUNNING_HEAD = re.compile(
+    r"^[ \t]*(?:Ann\. de Math[ée]mat\.,[^\n$]*\(\w+ \d{4}\.?\)[ \t]*\d*"
+    r"|\([ \t]*\d{1,3}[ \t]*\)|— \d{1,3} —)[ \t]*$",
+    re.MULTILINE,
+)
+
+
+def page_breaks(text: str) -> list[tuple[int, int]]:
+    """The lines of ``text`` that are a page's running head or foot, not the paper's text."""
+    return [m.span() for m in _RUNNING_HEAD.finditer(text)]
+
+
+def split_at_heads(
+    text: str, spans: Sequence[tuple[int, int]], cuts: Sequence[tuple[int, int]]
+) -> list[tuple[int, int]]:
+    """The paragraphs, each running head inside one cut out as a block of its own."""
+    out = []
+    for a, b in spans:
+        for x, y in (c for c in cuts if a <= c[0] and c[1] <= b):
+            out += [(a, x), (x, y)]
+            a = y
+        out.append((a, b))
+    return [(a, b) for a, b in out if text[a:b].strip()]
+
+
+_NUMERAL = re.compile(r"[IVX]+\.(?:\s*—.*)?")
+
+
+def is_heading(paragraph: str) -> bool:
+    """A title of the paper or of a part: a Markdown heading, or one line in capitals
+    (« SUR LE PENDULE DE LONGUEUR VARIABLE », « II. — LE MOUVEMENT … ») or a part's numeral
+    alone (« I. »)."""
+    line = paragraph.strip()
+    if line.startswith("#"):
+        return True
+    if "$" in line or len(line) > 120 or line.count("\n") > 2:
+        return False
+    letters = [c for c in line if c.isalpha()]
+    return bool(_NUMERAL.fullmatch(line)) or (len(letters) >= 4 and line.upper() == line)
+
+
+# The digitisation's cover page (NUMDAM's title page, copyright and terms of use) ends with
+# the archive's address, within the first lines of the text.
+_COVER_END = re.compile(r"^<?https?://www\.numdam\.org/?>?[ \t]*$", re.MULTILINE)
+
+
+def front_matter_end(text: str, within: int = 40) -> int:
+    """Where the digitisation's cover page ends (0 where the text has none): after the last
+    line of the first ``within`` lines that is the archive's bare address."""
+    head = "\n".join(text.split("\n")[:within])
+    ends = [m.end() for m in _COVER_END.finditer(head)]
+    return ends[-1] if ends else 0

@@ -10,8 +10,8 @@ import re
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from pendcli.render.columns import Column, Row, Section
-from pendcli.render.style import TERMINAL, using
+from pendcli.output.columns import Column, Row, Section
+from pendcli.output.style import TERMINAL, using
 
 if TYPE_CHECKING:
     from collections.abc import Iterator

@@ -1,6 +1,6 @@
 """Columns for claim, formula and equation rows: what the table and Markdown outputs show.
 
-The one module under :mod:`pendcli.render` that knows what a claim is: the renderers know
+The one module under :mod:`pendcli.output` that knows what a claim is: the renderers know
 only columns and rows, the paper packages only numbers. The colour of a verdict is set here.
 """
 
@@ -11,8 +11,8 @@ from collections.abc import Sequence
 from pendcli.core.numbers import fixed, parse_printed
 from pendcli.core.rows import equation_notes, equation_status
 from pendcli.core.vocabulary import FormulaVerdict, ProcedureVerdict, Verdict
-from pendcli.render.columns import Column, Row
-from pendcli.render.style import current, trimmed
+from pendcli.output.columns import Column, Row
+from pendcli.output.style import current, trimmed
 
 __all__ = [
     "CLAIM_COLUMNS",
@@ -86,7 +86,7 @@ def format_like_printed(value: float | None, published: str, most: int | None = 
 
 def sexagesimal(degrees: float, seconds_decimals: int = 2) -> str:
     """An angle in degrees as the output being drawn writes one (see
-    :meth:`~pendcli.render.style.NumberStyle.angle`): ``-1°7'33.14''``, ``1.69''``."""
+    :meth:`~pendcli.output.style.NumberStyle.angle`): ``-1°7'33.14''``, ``1.69''``."""
     return current().angle(degrees, seconds_decimals)
 
 

@@ -1,0 +1,112 @@
+"""The figures of ``out/report``: what to draw, drawn in forked workers, and their captions.
+
+Each figure set is one call of a paper's ``figures`` / ``formula_figures`` hook or of the
+work-precision plot; :class:`Drawing` shares the calls among ``jobs`` processes
+(:mod:`pendcli.core.workers`) and gives the files per paper.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from pendcli.reproduce import ReproduceResult
+    from pendcli.tradeoff import Point
+
+
+def figure_caption(path: Path) -> str:
+    """The caption of a report figure: its paper's ``captions``, or the tradeoff's ``CAPTION``."""
+    from pendcli.papers.registry import all_papers
+
+    for paper in all_papers():
+        captions = paper.captions() if paper.captions is not None else {}
+        if path.stem in captions:
+            return str(captions[path.stem])
+    if path.stem == "work-precision":
+        from pendcli.tradeoff import CAPTION
+
+        return str(CAPTION)
+    return path.stem.replace("_", " ")
+
+
+# (paper or "tradeoff", "claims"/"formulas"/"tradeoff", the drawing function, its arguments):
+# each figure is drawn by one call, in any process
+Task = tuple[str, str, Callable[..., Any], tuple[Any, ...]]
+
+
+def figure_tasks(result: ReproduceResult, folder: Path, tradeoff: list[Point] | None) -> list[Task]:
+    """Every figure to draw, the costliest first (so two processes finish together);
+    ``tradeoff``: the work-precision points, where the report has that section."""
+    from pendcli.papers.registry import paper
+
+    tasks: list[Task] = []
+    for key in result.papers:
+        formula_figures = paper(key).formula_figures
+        if key in result.formulas and formula_figures is not None:
+            args = (folder / "figures" / key / "formulas", result.formulas[key])
+            tasks.append((key, "formulas", formula_figures, args))
+    if tradeoff is not None:
+        from pendcli.tradeoff import plot_tradeoff
+
+        path = folder / "tradeoff" / "work-precision.png"
+        tasks.append(("tradeoff", "tradeoff", plot_tradeoff, (tradeoff, path)))
+    for key in result.papers:
+        claim_figures = paper(key).figures
+        if claim_figures is not None:
+            tasks.append((key, "claims", claim_figures, (folder / "figures" / key,)))
+    return tasks
+
+
+def _draw(function: Callable[..., Any], args: tuple[Any, ...]) -> list[Path]:
+    """Draw one task (in a worker process or this one); the files it wrote."""
+    out = function(*args)
+    return [Path(p) for p in out] if isinstance(out, list | tuple) else [Path(out)]
+
+
+def _draw_task(task: Task) -> list[Path]:
+    _, _, function, args = task
+    return _draw(function, args)
+
+
+def _task_name(task: Task) -> str:
+    """``tisserand claims figures``, ``tradeoff figures``: what a dead worker was drawing."""
+    return " ".join(dict.fromkeys(task[:2])) + " figures"
+
+
+class Drawing:
+    """Draws the tasks in ``jobs`` processes: this one and forked workers (core/workers.py)."""
+
+    def __init__(self, tasks: list[Task], jobs: int | None) -> None:
+        from pendcli.core.workers import ForkedWorkers, job_count
+
+        self.tasks = tasks
+        self.workers = ForkedWorkers(job_count(jobs, len(tasks)) - 1)
+
+    def __enter__(self) -> Drawing:
+        if self.workers.processes:
+            _pyplot()  # once, here: the forked workers inherit it
+        self.workers.__enter__()
+        return self
+
+    def results(self) -> dict[str, list[Path]]:
+        """Figures per paper (and "tradeoff"), claim figures before formula figures."""
+        drawn = self.workers.share(self.tasks, _draw_task, name=_task_name)
+        by_key: dict[str, list[Path]] = {}
+        for (key, kind, _, _), paths in zip(self.tasks, drawn, strict=True):
+            claims_first = kind == "claims"
+            by_key.setdefault(key, [])
+            by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
+        return by_key
+
+    def __exit__(self, *exc: Any) -> None:
+        self.workers.__exit__(*exc)
+
+
+def _pyplot() -> None:
+    """Load matplotlib (Agg) before forking the workers, rather than once in each."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot
