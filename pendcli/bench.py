@@ -19,7 +19,7 @@ time per call, ratio, and the largest relative difference of the two answers); t
 cost with size (``lecornu zeros --count`` 1e3..1e7, ``charbonnier table --n-max`` 1e2..1e4:
 wall time and peak memory, each run in its own process, stopped at a time and memory limit);
 it regenerates the work-precision tables ``tables/tradeoff/<family>.csv``
-(:mod:`pendcli.tradeoff`, with the date in ``tables/tradeoff/measured.toml``) and rewrites the
+(:mod:`pendcli.run.tradeoff`, with the date in ``tables/tradeoff/measured.toml``) and rewrites the
 README section between ``<!-- bench:start -->`` and ``<!-- bench:end -->`` atomically (or prints
 it when the markers are absent).  These are benchmarks, not tests: nothing here fails on a slow
 machine.
@@ -40,7 +40,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from pendcli.tradeoff import Point
+    from pendcli.run.tradeoff_engine import Point
 
 START, END = "<!-- bench:start -->", "<!-- bench:end -->"
 HELP_TARGET, REPRODUCE_TARGET = 1.3, 1.8
@@ -279,7 +279,7 @@ def regenerate_tables(quick: bool = False, root: Path | None = None) -> dict[str
 
 def measure_tables(quick: bool = False) -> dict[str, list[Point]]:
     """Every family's work-precision points, measured now (nothing written)."""
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff
 
     return {name: tradeoff.measure_family(name, quick=quick) for name in tradeoff.family_names()}
 
@@ -290,7 +290,7 @@ def table_files(
     """The files ``measured`` makes: each family's CSV and ``measured.toml`` with today's date."""
     import datetime
 
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff_engine as tradeoff
 
     files: dict[Path, str | bytes | None] = {}
     for name, points in measured.items():
@@ -372,7 +372,7 @@ def peer_ratios(quick: bool = False) -> list[dict[str, str]]:
     """Time per call of pendcli and of its peer, measured alternately, and their ratio."""
     import numpy as np
 
-    from pendcli.tradeoff import time_per_call
+    from pendcli.run.tradeoff_engine import time_per_call
 
     rows = []
     for what, mine, fn, peer, peer_fn in _peer_cases(quick):
@@ -512,7 +512,7 @@ def _startup_lines(times: dict[str, float], runs: int) -> list[str]:
 
 def _choice_cell(name: str, tol: float, points: list[Point]) -> str:
     from pendcli.core.errors import PendcliError
-    from pendcli.tradeoff import choose
+    from pendcli.run.tradeoff_engine import choose
 
     try:
         p = choose(name, tol, points)
@@ -753,10 +753,10 @@ def headlines(
 
 def committed_tables(root: Path | None = None) -> dict[str, list[Point]]:
     """The work-precision tables as committed (``--no-tables``: choices from them, unchanged)."""
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff, tradeoff_engine
 
-    paths = {name: tradeoff.table_path(name, root) for name in tradeoff.family_names()}
-    return {name: tradeoff.read_table(path) for name, path in paths.items() if path.is_file()}
+    paths = {name: tradeoff_engine.table_path(name, root) for name in tradeoff.family_names()}
+    return {name: tradeoff_engine.read_table(p) for name, p in paths.items() if p.is_file()}
 
 
 def _has_timings_block(path: Path) -> bool:

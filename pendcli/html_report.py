@@ -53,7 +53,7 @@ from pendcli.html_paper import (
 
 if TYPE_CHECKING:
     from pendcli.core.rows import EquationRow
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
 __all__ = [
     "Figure",

@@ -37,7 +37,7 @@ from pendcli.render.columns import Column
 from pendcli.render.markdown import code_span, fence, markdown_text, to_markdown
 from pendcli.render.views import claim_columns
 from pendcli.report import disagreement_digest, explanation_section
-from pendcli.reproduce import ReproduceResult
+from pendcli.run.reproduce import ReproduceResult
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
 

@@ -15,7 +15,7 @@ from pendcli.check_report import (
     to_json,
     to_junit,
 )
-from pendcli.drift import find_drifts
+from pendcli.run.drift import find_drifts
 
 HEADER = (
     "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,procedure_verdict,"

@@ -207,7 +207,7 @@ def test_no_propagated_row_names_a_source_without_a_slip(claims, key):
 
 def test_readme_counts_of_causes_are_the_codes(claims):
     from pendcli.docs import causes_section
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
     text = README.read_text(encoding="utf-8")
     shown = text.split("<!-- causes:start -->\n", 1)[1].split("\n<!-- causes:end -->", 1)[0]

@@ -73,7 +73,7 @@ def test_bench_runs_on_a_tiny_configuration(tmp_path, monkeypatch):
         },
     )
     monkeypatch.setattr(bench, "import_costs", lambda args, top=8: [("typer", 0.01)])
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff
 
     monkeypatch.setattr(tradeoff, "family_names", lambda: ["planar_period"])
     text = bench.run(runs=1, quick=True, tables=True, root=tmp_path)

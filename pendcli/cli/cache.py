@@ -18,7 +18,7 @@ def info() -> None:
     (and, when its folder is not used, why)."""
     from pendcli.cli.common import say
     from pendcli.core.cache import ENV, entries
-    from pendcli.reproduce import result_cache
+    from pendcli.run.reproduce import result_cache
 
     cache = result_cache()
     if cache.folder is None:
@@ -37,7 +37,7 @@ def clear() -> None:
     """Remove every entry of the result cache (the next run computes everything); nothing
     else in its folder is touched."""
     from pendcli.cli.common import say
-    from pendcli.reproduce import result_cache
+    from pendcli.run.reproduce import result_cache
 
     cache = result_cache()
     say(f"removed {cache.clear()} entries from {cache.folder}" if cache.folder else "cache off")

@@ -54,7 +54,7 @@ def complete_papers(incomplete: str) -> list[str]:
 
 def complete_verdicts(incomplete: str) -> list[str]:
     """Shell completion of a comma-separated list of verdicts or statuses (``--fail-on``)."""
-    from pendcli.reproduce import VERDICT_NAMES
+    from pendcli.run.reproduce import VERDICT_NAMES
 
     done, _, last = incomplete.rpartition(",")
     prefix = f"{done}," if done else ""
@@ -100,7 +100,7 @@ CacheOption = Annotated[
 def result_cache(use: bool, quiet: bool = False) -> Iterator[ResultCache]:
     """The run's result cache; after the run, one status line if it could not be written
     (none under ``quiet``, none after an error: that error is the one line)."""
-    from pendcli.reproduce import result_cache as open_cache
+    from pendcli.run.reproduce import result_cache as open_cache
 
     cache = open_cache(use)
     yield cache

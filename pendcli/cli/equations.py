@@ -51,7 +51,7 @@ def equations(
     from pendcli.papers.registry import resolve_papers
     from pendcli.render import Column
     from pendcli.render.views import EQUATION_COLUMNS
-    from pendcli.reproduce import ledger_rows
+    from pendcli.run.reproduce import ledger_rows
     from pendcli.summary import compact_equation_columns
 
     if status is not None and status not in STATUSES:

@@ -76,9 +76,10 @@ def _zeros_method(method: str | None, tol: float | None) -> tuple[str, str]:
         return method, "forced by --method"
     if tol is None:
         return "auto", "default"
-    from pendcli.tradeoff import choose
+    from pendcli.run.tradeoff import family
+    from pendcli.run.tradeoff_engine import choose, measured_points
 
-    chosen = choose("bessel_zeros", tol)
+    chosen = choose("bessel_zeros", tol, measured_points(family("bessel_zeros")))
     reason = (
         f"cheapest with measured worst error {chosen.error:.1e} <= tol {tol:g}, "
         f"{chosen.seconds:.1e} s/evaluation"

@@ -40,7 +40,7 @@ if TYPE_CHECKING:
     Parameter = Any
 
     from pendcli.core.cache import ResultCache
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
 # Subcommands whose modules load only when named: `pendcli --help` then costs neither their
 # imports nor typer's conversion of their parameters (about half of start-up otherwise).
@@ -456,7 +456,7 @@ def reproduce(
     from pendcli.cli.common import result_cache
     from pendcli.core.errors import PendcliError
     from pendcli.papers.registry import resolve_papers
-    from pendcli.reproduce import EQUATION_ONLY, reproduce_all
+    from pendcli.run.reproduce import EQUATION_ONLY, reproduce_all
 
     fail_names = _fail_names(fail_on)
     if fail_names & EQUATION_ONLY and equations is None:
@@ -497,7 +497,7 @@ def reproduce(
 def _fail_names(text: str | None) -> frozenset[str]:
     if text is None:
         return frozenset()
-    from pendcli.reproduce import parse_verdicts
+    from pendcli.run.reproduce import parse_verdicts
 
     return parse_verdicts(text)
 
@@ -558,7 +558,7 @@ def check(
     --format json show each tolerance.
     """
     from pendcli.core.console import status_line
-    from pendcli.regression import run_check
+    from pendcli.run.regression import run_check
 
     if not quiet and fmt is CheckFormat.table:  # seconds before the progress bar can start
         status_line("check: reading the committed tables and the equation ledgers")

@@ -13,7 +13,7 @@ from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.render import Column
-    from pendcli.tradeoff import Point
+    from pendcli.run.tradeoff_engine import Point
 
 app = typer.Typer(
     help="Speed against accuracy: error achieved and time per evaluation, per method.",
@@ -49,9 +49,10 @@ def tradeoff(
     ] = None,
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
-    from pendcli import tradeoff as wp
     from pendcli.cli.targets import check_folder_target
     from pendcli.core.plotting import validate_plot_path
+    from pendcli.run import tradeoff as wp
+    from pendcli.run.tradeoff_engine import write_table
 
     plot = validate_plot_path(plot)
     check_folder_target(write_tables, "--write-tables")
@@ -66,7 +67,7 @@ def tradeoff(
     emit(fmt, sections, {"rows": rows, "skipped": {}})
     if write_tables is not None:
         for name in names:
-            wp.write_table([p for p in points if p.family == name], write_tables / f"{name}.csv")
+            write_table([p for p in points if p.family == name], write_tables / f"{name}.csv")
     if plot is not None:
         with busy("drawing the figure"):
             wp.plot_tradeoff(points, plot)
@@ -78,8 +79,8 @@ def _measure(names: list[str], quick: bool) -> list[Point]:
 
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from pendcli import tradeoff as wp
     from pendcli.core.console import console
+    from pendcli.run import tradeoff as wp
 
     points: list[Point] = []
     with Progress(

@@ -24,7 +24,10 @@ from typing import TYPE_CHECKING
 from pendcli.core.errors import PendcliError
 from pendcli.core.files import lock_file, locked, replace_owned_folder, write_through
 from pendcli.core.tables import tables_dir
-from pendcli.drift import (
+from pendcli.papers.registry import keys
+from pendcli.render.columns import Column
+from pendcli.render.csv import to_csv
+from pendcli.run.drift import (
     CLAIM_COLUMNS,
     EQUATION_COLUMNS,
     FORMULA_COLUMNS,
@@ -37,14 +40,11 @@ from pendcli.drift import (
     read_committed,
     read_table,
 )
-from pendcli.papers.registry import keys
-from pendcli.render.columns import Column
-from pendcli.render.csv import to_csv
 
 if TYPE_CHECKING:
     from rich.console import Console
 
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
 __all__ = [
     "TOLERANCES",
@@ -111,7 +111,7 @@ def run_check(
     formula and table), on standard output; see :mod:`pendcli.check_report`.
     """
     from pendcli.core.console import console
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"
     _load_ledgers(root)
