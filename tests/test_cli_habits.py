@@ -13,8 +13,8 @@ import pytest
 import typer
 from cli_helpers import assert_clean_error, invoke
 
+from pendcli.cli.app import app
 from pendcli.cli.help_format import EXAMPLES
-from pendcli.cli.main import app
 
 
 def _leaf_commands():

@@ -16,7 +16,7 @@ from tests.cli_helpers import assert_clean_error, invoke
 
 def _commands() -> list[tuple[tuple[str, ...], Any]]:
     """(path, command) of every command that runs (groups' subcommands included)."""
-    from pendcli.cli.main import app
+    from pendcli.cli.app import app
 
     root = typer.main.get_command(app)
     found = []

@@ -10,12 +10,14 @@ from pendcli.cli.common import (
     CacheOption,
     FormatOption,
     PaperOption,
+    QuietFlag,
     bad_value,
     busy,
     complete_statuses,
     emit,
     result_cache,
 )
+from pendcli.cli.values import word
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
@@ -26,6 +28,8 @@ StatusOption = Annotated[
     typer.Option(
         "--status",
         "-s",
+        metavar="STATUS",
+        parser=word,
         help="Only this status: holds, fails, misprint, definition or not-checkable.",
         autocompletion=complete_statuses,
     ),
@@ -43,6 +47,7 @@ def equations(
     notes: NotesOption = False,
     fmt: FormatOption = OutputFormat.table,
     cache: CacheOption = True,
+    quiet: QuietFlag = False,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
     from pendcli.core.console import is_quiet

@@ -8,30 +8,23 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, busy, emit
+from pendcli.cli.common import FormatOption, PlotOption, QuietFlag, busy, emit
+from pendcli.cli.values import word
 from pendcli.render import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.render import Column
     from pendcli.run.tradeoff_engine import Point
 
-app = typer.Typer(
-    help="Speed against accuracy: error achieved and time per evaluation, per method.",
-    invoke_without_command=True,
-    add_completion=False,
-    rich_markup_mode=None,
-    # a group stops reading options at its first positional argument unless told otherwise
-    context_settings={"allow_interspersed_args": True},
-)
 
-
-@app.callback(invoke_without_command=True)
 def tradeoff(
     family: Annotated[
         str | None,
         typer.Argument(
+            metavar="FAMILY",
+            parser=word,
             help="One family, e.g. integral_pi, planar_period, bessel_zeros, conical (an "
-            "unknown name lists them all); default: every family of every paper."
+            "unknown name lists them all); default: every family of every paper.",
         ),
     ] = None,
     fmt: FormatOption = OutputFormat.table,
@@ -43,10 +36,12 @@ def tradeoff(
         Path | None,
         typer.Option(
             "--write-tables",
+            metavar="DIR",
             help="Also write each family's table as DIR/FAMILY.csv (DIR: an existing folder, "
             "or a new one inside an existing folder).",
         ),
     ] = None,
+    quiet: QuietFlag = False,
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
     from pendcli.cli.targets import check_folder_target
