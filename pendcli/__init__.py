@@ -11,8 +11,7 @@ The Python API (every name in ``__all__``, each documented)::
     array([3.83170597, 7.01558667])
     >>> rows = pendcli.reproduce(paper="charbonnier").claims["charbonnier"]
 
-The functions (``help(pendcli.api)`` documents each; ``help()`` lists ``reproduce`` among
-the package's modules, since the module :mod:`pendcli.reproduce` is what answers the call):
+The functions (``help(pendcli.api)`` documents each):
 
     reproduce(paper=None, formulas=True, equations=False) -> ReproduceResult
         every printed number of a paper (default: all three) recomputed and judged
@@ -49,11 +48,12 @@ if TYPE_CHECKING:
         integral_pi_exact,
         period,
         period_ratio,
+        reproduce,
     )
     from pendcli.core.errors import PendcliError
     from pendcli.papers.registry import PAPERS
-    from pendcli.regression import Drift
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.regression import Drift
+    from pendcli.run.reproduce import ReproduceResult
 
 # name -> the module that defines it (imported on first access)
 _LAZY = {
@@ -64,10 +64,11 @@ _LAZY = {
     "integral_pi_exact": "pendcli.api",
     "period": "pendcli.api",
     "period_ratio": "pendcli.api",
+    "reproduce": "pendcli.api",
     "PAPERS": "pendcli.papers.registry",
     "PendcliError": "pendcli.core.errors",
-    "Drift": "pendcli.regression",
-    "ReproduceResult": "pendcli.reproduce",
+    "Drift": "pendcli.run.regression",
+    "ReproduceResult": "pendcli.run.reproduce",
 }
 
 __all__ = [
@@ -93,10 +94,6 @@ def __getattr__(name: str) -> object:
         from importlib.metadata import version
 
         return version("pendcli")
-    if name == "reproduce":
-        # The submodule pendcli.reproduce is also the API function (it is callable): the import
-        # system binds the package attribute to the module whatever this returned.
-        return importlib.import_module("pendcli.reproduce")
     if name in _LAZY:
         value = getattr(importlib.import_module(_LAZY[name]), name)
         globals()[name] = value  # later lookups (and doc tools reading __dict__) find it

@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING, NamedTuple
 if TYPE_CHECKING:
     import numpy as np
 
-    from pendcli.regression import Drift
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.regression import Drift
+    from pendcli.run.reproduce import ReproduceResult
 
 __all__ = [
     "ExactIntegral",
@@ -108,17 +108,14 @@ def reproduce(
 ) -> ReproduceResult:
     """Recompute every printed number of ``paper`` (default: all three) and judge it.
 
-    Returns a :class:`pendcli.reproduce.ReproduceResult`: ``.claims[paper]`` is a list of
+    Returns a :class:`pendcli.run.reproduce.ReproduceResult`: ``.claims[paper]`` is a list of
     typed claim rows (published string, recomputed value, verdict, cause, source...),
     ``.formulas[paper]`` the derived-formula checks (with ``formulas``), ``.equations[paper]``
     the equation ledger (with ``equations``, about 10 s); ``.document()`` is what
     ``pendcli reproduce --format json`` prints. Runs in this process (no fork), silently.
-
-    Reached as ``pendcli.reproduce(...)``: the module :mod:`pendcli.reproduce` is callable
-    and calls this function.
     """
     from pendcli.papers.registry import resolve_papers
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     keys = resolve_papers(paper)
     return reproduce_all(keys, formulas=formulas, equations=equations, quiet=True, jobs=1)
@@ -127,11 +124,11 @@ def reproduce(
 def check(tables: str | Path | None = None) -> list[Drift]:
     """Regenerate every table and compare it with the committed ones in
     ``tables/regenerated`` (or ``<tables>/regenerated``): the list of drifts beyond the
-    tolerances (:data:`pendcli.regression.TOLERANCES`), empty when everything holds."""
+    tolerances (:data:`pendcli.run.regression.TOLERANCES`), empty when everything holds."""
     from pendcli.core.tables import tables_dir
     from pendcli.papers.registry import PAPERS
-    from pendcli.regression import find_drifts, regenerated_tables
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.regression import find_drifts, regenerated_tables
+    from pendcli.run.reproduce import reproduce_all
 
     folder = (Path(tables) if tables is not None else tables_dir()).resolve() / "regenerated"
     result = reproduce_all(PAPERS, formulas=True, equations=True, quiet=True, jobs=1)

@@ -38,8 +38,10 @@ def test_bessel_zeros_are_zeros_of_j1():
 
 
 def test_reproduce_returns_typed_rows():
-    import pendcli.reproduce  # binds the package attribute to the module: still callable
+    import pendcli.api
+    import pendcli.run.reproduce  # the orchestration module, imported, hides no API name
 
+    assert pendcli.reproduce is pendcli.api.reproduce
     result = pendcli.reproduce(paper="charbonnier", formulas=False)
     rows = result.claims["charbonnier"]
     assert rows

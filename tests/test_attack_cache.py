@@ -313,7 +313,7 @@ def test_a_damaged_report_entry_is_recomputed(
     """Each such entry (its digest made right) failed every run (exit 2 or 3) until the
     cache was cleared; now it is a miss: the report is written afresh and stored again."""
     from pendcli.output.report import write_report
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
     written = []
 
@@ -336,7 +336,7 @@ def test_a_damaged_report_entry_is_recomputed(
 
 def test_an_edited_report_entry_is_not_copied_into_the_report(tmp_path: Path, monkeypatch) -> None:
     from pendcli.output.report import write_report
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
     def fill(_result: object, folder: Path, *_args: object) -> list[Path]:
         (folder / "report.md").write_text("fresh", encoding="utf-8")

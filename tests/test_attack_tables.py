@@ -183,7 +183,7 @@ def test_a_damaged_tradeoff_file_fails_the_report_before_it_is_drawn(
     tables: Path, tmp_path: Path, name: str, kind: str
 ) -> None:
     from pendcli.output.report import write_report
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
     path = tables / name
     path.write_bytes(JUNK[kind])

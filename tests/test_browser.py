@@ -25,7 +25,7 @@ from pendcli.core.ledger import load_ledger
 from pendcli.core.tables import load_paper_table
 from pendcli.output.html.report import chromium, write_for_result
 from pendcli.papers.registry import PAPERS
-from pendcli.reproduce import reproduce_all
+from pendcli.run.reproduce import reproduce_all
 
 pytestmark = pytest.mark.browser
 

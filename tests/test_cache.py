@@ -97,15 +97,15 @@ def _refuse_to_compute(monkeypatch: pytest.MonkeyPatch) -> None:
     def computed(*_args: object, **_kwargs: object) -> None:
         raise AssertionError("computed, not read from the cache")
 
-    # imported before the registry is patched: imported after, pendcli.reproduce would bind
+    # imported before the registry is patched: imported after, pendcli.run.reproduce would bind
     # the patched functions by its `from ... import`, and the monkeypatch's undo would then
     # restore them, failing every later test of this worker (seen under -n 2)
-    import pendcli.reproduce  # noqa: F401
+    import pendcli.run.reproduce  # noqa: F401
 
     for name in ("evaluate", "formula_checks", "equation_rows", "stability_rows"):
         monkeypatch.setattr(registry, name, computed)
-    monkeypatch.setattr("pendcli.reproduce.evaluate", computed)
-    monkeypatch.setattr("pendcli.reproduce.formula_checks", computed)
+    monkeypatch.setattr("pendcli.run.reproduce.evaluate", computed)
+    monkeypatch.setattr("pendcli.run.reproduce.formula_checks", computed)
 
 
 @pytest.mark.slow

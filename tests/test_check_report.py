@@ -9,13 +9,13 @@ import xml.etree.ElementTree as ET
 import pytest
 from cli_helpers import assert_clean_error, invoke
 
-from pendcli.drift import find_drifts
 from pendcli.output.check_formats import (
     changed_cells,
     github_annotations,
     to_json,
     to_junit,
 )
+from pendcli.run.drift import find_drifts
 
 HEADER = (
     "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,procedure_verdict,"

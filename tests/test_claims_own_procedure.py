@@ -206,7 +206,7 @@ def test_no_propagated_row_names_a_source_without_a_slip(claims, key):
 
 
 def test_readme_counts_of_causes_are_the_codes(claims):
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
     from tools.docs import causes_section
 
     text = README.read_text(encoding="utf-8")

@@ -13,8 +13,8 @@ import pytest
 import typer
 from cli_helpers import assert_clean_error, invoke
 
+from pendcli.cli.app import app
 from pendcli.cli.help_format import EXAMPLES
-from pendcli.cli.main import app
 
 
 def _leaf_commands():
@@ -117,12 +117,12 @@ def test_force_color_colours_a_pipe_and_no_color_wins():
     ],
 )
 def test_an_unwritable_target_is_refused_before_any_work(args, monkeypatch):
-    import pendcli.reproduce
+    import pendcli.run.reproduce
 
     def fail(*_a, **_k):
         raise AssertionError("computed before checking the output target")
 
-    monkeypatch.setattr(pendcli.reproduce, "reproduce_all", fail)
+    monkeypatch.setattr(pendcli.run.reproduce, "reproduce_all", fail)
     monkeypatch.setattr("pendcli.papers.tisserand.model.check_amplitudes", fail, raising=False)
     code, _, err = invoke(*args)
     assert_clean_error(code, err)

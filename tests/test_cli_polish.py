@@ -16,7 +16,7 @@ from tests.cli_helpers import assert_clean_error, invoke
 
 def _commands() -> list[tuple[tuple[str, ...], Any]]:
     """(path, command) of every command that runs (groups' subcommands included)."""
-    from pendcli.cli.main import app
+    from pendcli.cli.app import app
 
     root = typer.main.get_command(app)
     found = []
@@ -73,8 +73,8 @@ def _no_work(monkeypatch: pytest.MonkeyPatch) -> None:
     def fail(*args: object, **kwargs: object) -> None:
         raise AssertionError("work started before the target was checked")
 
-    monkeypatch.setattr("pendcli.tradeoff.measure_family", fail)
-    monkeypatch.setattr("pendcli.reproduce.reproduce_all", fail)
+    monkeypatch.setattr("pendcli.run.tradeoff.measure_family", fail)
+    monkeypatch.setattr("pendcli.run.reproduce.reproduce_all", fail)
 
 
 @pytest.mark.parametrize(
@@ -231,7 +231,7 @@ def test_status_lines_stay_off_a_pipe(capsys: pytest.CaptureFixture[str]) -> Non
 
 
 def test_help_of_the_package_lists_reproduce_with_the_functions() -> None:
-    """`pendcli.reproduce` is a callable module, which `help(pendcli)` listed only as a module."""
+    """`help(pendcli)` lists every function of the API, `reproduce` among them."""
     import pydoc
 
     import pendcli

@@ -30,8 +30,8 @@ from cli_helpers import NO_BYTECODE, assert_clean_error, invoke
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import clear_table_cache
-from pendcli.drift import CLAIM_COLUMNS
 from pendcli.papers.registry import PAPERS, evaluate
+from pendcli.run.drift import CLAIM_COLUMNS
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
 CLONE_NEWUSER = 0x10000000  # linux/sched.h

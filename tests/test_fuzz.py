@@ -311,7 +311,7 @@ def test_parser_level_garbage(command: list[str], value: str, extra: list[str]) 
     code, _, err = well_behaved(*command, value, *extra)
     if code == 2:
         assert err.startswith("pendcli: error: "), err
-        assert "Input should be" not in err, err  # pydantic's words, rephrased by cli.main
+        assert "Input should be" not in err, err  # pydantic's words, rephrased by cli.messages
 
 
 # Found by PENDCLI_FUZZ_SCALE=8 runs, then fixed: each must stay a clean one-line outcome.

@@ -22,7 +22,7 @@ INTERNAL = re.compile(
 
 def _tree() -> list[tuple[tuple[str, ...], Any]]:
     """(command path, click command) of the top level, every group and every command."""
-    from pendcli.cli.main import app
+    from pendcli.cli.app import app
 
     root = typer.main.get_command(app)
     found: list[tuple[tuple[str, ...], Any]] = [((), root)]

@@ -114,7 +114,7 @@ def test_docs_schema_section_is_generated_from_the_schema():
 
 def test_every_disagreement_is_explained():
     """A verdict other than `agrees` carries a note; a failing formula says what is right."""
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     result = reproduce_all(PAPERS, formulas=True)
     for row in result.claim_dicts():

@@ -19,7 +19,7 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import Evaluated, coverage, load_ledger, verify_printed
 from pendcli.core.ledger_references import conditional
 from pendcli.papers.registry import paper
-from pendcli.reproduce import ReproduceResult
+from pendcli.run.reproduce import ReproduceResult
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 PAPERS = ("tisserand", "lecornu", "charbonnier")

@@ -99,7 +99,7 @@ def test_a_figure_title_breaks_outside_parentheses_and_sets_its_scripts() -> Non
 
 
 def test_the_work_precision_titles_have_no_raw_notation() -> None:
-    from pendcli.tradeoff import families, family_title
+    from pendcli.run.tradeoff import families, family_title
 
     for name in families():
         title = family_title(name)
@@ -193,7 +193,7 @@ def test_the_legend_explains_every_badge(edition_pages: dict[str, str]) -> None:
 
 
 def test_list_shows_printed_units_raised() -> None:
-    from pendcli.cli.main import app
+    from pendcli.cli.app import app
 
     for fmt in ("table", "markdown"):
         result = CliRunner().invoke(app, ["list", "-f", fmt], env={"COLUMNS": "200"})
@@ -208,7 +208,7 @@ def test_list_shows_printed_units_raised() -> None:
 def test_the_pages_of_a_whole_report_show_no_internal_name(tmp_path: Path) -> None:
     from pendcli.output.report import write_report
     from pendcli.papers import registry
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     result = reproduce_all(registry.keys(), equations=True, jobs=1)
     write_report(result, tmp_path / "out", quiet=True, jobs=1)

@@ -7,7 +7,7 @@ import shutil
 import pytest
 
 from pendcli.core.errors import PendcliError
-from pendcli.drift import TOLERANCES, compare_tables
+from pendcli.run.drift import TOLERANCES, compare_tables
 
 HEADER = (
     "id,published,unit,recomputed,exact,abs_diff,rel_diff,verdict,procedure_verdict,"
@@ -115,14 +115,14 @@ def test_a_huge_finite_change_is_drift():
 
 
 def test_every_committed_column_has_an_explicit_tolerance():
-    from pendcli.drift import CLAIM_COLUMNS, FORMULA_COLUMNS
+    from pendcli.run.drift import CLAIM_COLUMNS, FORMULA_COLUMNS
 
     for col in set(CLAIM_COLUMNS + FORMULA_COLUMNS) - {"id"}:
         assert col in TOLERANCES
 
 
 def test_missing_and_extra_committed_tables_are_drift(tmp_path):
-    from pendcli.drift import find_drifts
+    from pendcli.run.drift import find_drifts
 
     (tmp_path / "old.csv").write_text(HEADER + ROW, encoding="utf-8")
     (tmp_path / "same.csv").write_text(HEADER + ROW, encoding="utf-8")
@@ -145,7 +145,7 @@ def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
     and a committed ledger status tampered names each of the three drifts by its row."""
     from pendcli.api import check
     from pendcli.core.tables import clear_table_cache, tables_dir
-    from pendcli.regression import run_check
+    from pendcli.run.regression import run_check
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
@@ -193,7 +193,7 @@ def test_check_update_keeps_what_moved_only_within_the_tolerance(tmp_path) -> No
     is within its tolerance stays byte for byte; a row moved beyond it is rewritten, the rest
     of the table kept (check --update on a fresh clone changes no byte)."""
     from pendcli.core.tables import tables_dir
-    from pendcli.regression import kept_within_tolerance
+    from pendcli.run.regression import kept_within_tolerance
 
     name = "lecornu-formulas.csv"
     committed = (tables_dir() / "regenerated" / name).read_text(encoding="utf-8")
@@ -216,7 +216,7 @@ def test_check_update_leaves_a_set_that_holds_its_bytes_as_it_is(tmp_path, monke
     time, and it says so; with one committed cell moved beyond its tolerance it rewrites the
     set, and that cell is the regenerated one again."""
     from pendcli.core.tables import clear_table_cache, tables_dir
-    from pendcli.regression import run_check
+    from pendcli.run.regression import run_check
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
@@ -251,8 +251,8 @@ def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift(
     is a drift naming the row, an observed order within 0.05 is not."""
     from pendcli.core.rows import EquationRow
     from pendcli.core.vocabulary import EquationStatus
-    from pendcli.regression import regenerated_tables
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.regression import regenerated_tables
+    from pendcli.run.reproduce import ReproduceResult
 
     def row(
         rid: str,

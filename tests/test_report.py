@@ -9,10 +9,9 @@ from cli_helpers import invoke
 
 from pendcli.core.claims import ClaimRow, FormulaRow
 from pendcli.core.errors import PendcliError
-from pendcli.output import report_figures
-from pendcli.output.report import check_out_folder, write_report
-from pendcli.output.report_sections import disagreement_digest
-from pendcli.reproduce import ReproduceResult
+from pendcli.output import report
+from pendcli.output.report import check_out_folder, disagreement_digest, write_report
+from pendcli.run.reproduce import ReproduceResult
 
 
 def _claim(cid: str, verdict: str, note: str = "") -> ClaimRow:
@@ -142,7 +141,7 @@ def _stub_figures(monkeypatch):
         path.write_bytes(b"")
         return [path]
 
-    monkeypatch.setattr(report_figures, "_draw", draw)
+    monkeypatch.setattr(report, "_draw", draw)
 
 
 def _earlier_manifest(out, *names):
@@ -172,7 +171,7 @@ def test_a_failure_while_writing_leaves_the_old_folder_intact(tmp_path, monkeypa
     def broken(*_args):
         raise PendcliError("cannot write figure: disk full")
 
-    monkeypatch.setattr(report_figures, "_draw", broken)
+    monkeypatch.setattr(report, "_draw", broken)
     out = tmp_path / "out"
     out.mkdir()
     (out / "report.md").write_text("old report", encoding="utf-8")
@@ -185,7 +184,7 @@ def test_a_failure_while_writing_leaves_the_old_folder_intact(tmp_path, monkeypa
 
 
 def test_report_of_one_paper_times_only_its_families_from_the_committed_tables(tmp_path):
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff, tradeoff_engine
 
     result = ReproduceResult(papers=("charbonnier",))
     out = tmp_path / "out"
@@ -195,7 +194,7 @@ def test_report_of_one_paper_times_only_its_families_from_the_committed_tables(t
     assert csvs == sorted(tradeoff.family_names(("charbonnier",)))
     assert set(csvs).isdisjoint(tradeoff.family_names(("lecornu", "tisserand")))
     for name in csvs:  # copied byte for byte, not measured again
-        committed = tradeoff.table_path(name).read_bytes()
+        committed = tradeoff_engine.table_path(name).read_bytes()
         assert (out / "tradeoff" / f"{name}.csv").read_bytes() == committed
     text = (out / "report.md").read_text(encoding="utf-8")
     assert "committed tables" in text and "by `make bench`" in text
@@ -203,7 +202,7 @@ def test_report_of_one_paper_times_only_its_families_from_the_committed_tables(t
 
 
 def test_the_two_lanes_give_what_one_process_gives():
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     keys = ("tisserand", "charbonnier")
     forked, alone = reproduce_all(keys, jobs=2), reproduce_all(keys, jobs=1)
@@ -213,7 +212,7 @@ def test_the_two_lanes_give_what_one_process_gives():
 
 @pytest.fixture(scope="module")
 def charbonnier_report(tmp_path_factory):
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     out = tmp_path_factory.mktemp("report") / "out"
     result = reproduce_all(("charbonnier",), equations=True, jobs=1)

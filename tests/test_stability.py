@@ -1,6 +1,6 @@
 """The stability summary is generated from measurements made at run time.
 
-The helpers (:mod:`pendcli.stability`) are checked against values worked out by hand; the
+The helpers (:mod:`pendcli.run.stability`) are checked against values worked out by hand; the
 rows are each paper's (``pendcli.papers.<paper>.stability``), collected in paper order.
 """
 
@@ -11,13 +11,13 @@ import re
 
 import pytest
 
-from pendcli import stability
 from pendcli.core.errors import PendcliError
 from pendcli.papers import registry
 from pendcli.papers.charbonnier import stability as charbonnier_stability
 from pendcli.papers.lecornu import stability as lecornu_stability
 from pendcli.papers.registry import PAPERS
 from pendcli.papers.tisserand import stability as tisserand_stability
+from pendcli.run import stability
 
 # each paper's own module, named here, so the collected rows are checked against them
 STABILITY_MODULES = {

@@ -3,13 +3,17 @@ code runs on a tiny configuration (no timing is asserted: timings are benchmarks
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
+from typing import Annotated
 
 import pytest
+import typer
 
-from pendcli.output import OutputFormat  # named by the probe command's annotations
-from tools import bench, bench_startup
+from pendcli.cli.values import number, word  # named by the probe command's annotations
+from pendcli.output import OutputFormat
+from tools import bench
 
 HEAVY = ("scipy", "matplotlib")
 
@@ -52,7 +56,7 @@ def test_light_commands_do_not_import_scipy_or_matplotlib(args):
 
 
 def test_import_costs_parses_importtime():
-    costs = dict(bench_startup.import_costs(["--help"], top=50))
+    costs = dict(bench.import_costs(["--help"], top=50))
     assert "typer" in costs and costs["typer"] > 0
     assert not set(costs) & set(HEAVY)
 
@@ -60,7 +64,7 @@ def test_import_costs_parses_importtime():
 def test_bench_runs_on_a_tiny_configuration(tmp_path, monkeypatch):
     quick = [sys.executable, "-c", "pass"]
     monkeypatch.setattr(
-        bench_startup,
+        bench,
         "_commands",
         lambda: {
             k: quick
@@ -73,7 +77,7 @@ def test_bench_runs_on_a_tiny_configuration(tmp_path, monkeypatch):
         },
     )
     monkeypatch.setattr(bench, "import_costs", lambda args, top=8: [("typer", 0.01)])
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff
 
     monkeypatch.setattr(tradeoff, "family_names", lambda: ["planar_period"])
     text = bench.run(runs=1, quick=True, tables=True, root=tmp_path)
@@ -101,7 +105,8 @@ LIGHT_JSON = [
 
 @pytest.mark.parametrize("args", LIGHT_JSON, ids=lambda a: " ".join(a))
 def test_plain_options_and_data_formats_import_neither_pydantic_nor_rich(args):
-    """typer would convert every option through pydantic (~0.04 s); rich is for tables only."""
+    """typer would convert every option through pydantic (pendcli.cli.coercion: ~0.19 s of
+    CPU); rich is for tables only."""
     proc = subprocess.run(
         [sys.executable, "-c", PROBE.format(args=args, heavy={"pydantic", "rich"})],
         capture_output=True,
@@ -113,23 +118,26 @@ def test_plain_options_and_data_formats_import_neither_pydantic_nor_rich(args):
 
 
 def _typer_coercions():
-    """Per annotation: (pendcli's PlainCoercion, typer's own pydantic-backed coercion)."""
-    import typer
-
-    from pendcli.cli.main import PlainCoercion
+    """Per parameter: (pendcli's PlainCoercion, typer's own pydantic-backed coercion)."""
+    from pendcli.cli.coercion import PlainCoercion
 
     def probe(
-        real: float = 0.0, whole: int = 0, text: str = "", fmt: OutputFormat = OutputFormat.table
+        real: float = 0.0,
+        whole: int = 0,
+        text: str = "",
+        fmt: OutputFormat = OutputFormat.table,
+        read: Annotated[float, typer.Option(parser=number)] = 0.0,
+        folded: Annotated[str, typer.Option(parser=word)] = "",
     ) -> None:
         """Only carries the options."""
 
     app = typer.Typer(add_completion=False)
-    app.command()(probe)
+    app.command()(probe)  # a plain typer command: its parameters keep typer's coercion
     params = typer.main.get_command(app).params
     return {
-        p.type_descriptor.annotation: (
-            PlainCoercion(p, p.type_descriptor.annotation),
-            p.get_runtime_param(),  # nothing installed yet: typer's own
+        p.name: (
+            PlainCoercion(p, p.type_descriptor.annotation, p.type_descriptor.parameter_info.parser),
+            p.get_runtime_param(),
             p,
         )
         for p in params
@@ -147,17 +155,47 @@ SPELLINGS = [
 @pytest.mark.parametrize("value", SPELLINGS, ids=repr)
 def test_plain_coercion_gives_what_typer_gives(value):
     """Where PlainCoercion converts directly, typer's coercion gives the same value and type;
-    elsewhere it defers, so typer's value or error stands."""
+    where the option's reader refuses, typer refuses in its words; elsewhere it defers, so
+    typer's value or error stands."""
+    import math
+
     import typer
 
-    from pendcli.cli.main import _UNSET
+    from pendcli.cli.coercion import UNSET
 
-    for annotation, (plain, typer_own, param) in _typer_coercions().items():
-        direct = plain.direct(value)
-        if direct is _UNSET:
+    for name, (plain, typer_own, param) in _typer_coercions().items():
+        try:
+            direct = plain.direct(value)
+        except ValueError as refused:
+            with pytest.raises(typer.BadParameter, match=re.escape(str(refused))):
+                typer_own.coerce(value, param=param, ctx=None)
+            continue
+        if direct is UNSET:
             continue
         try:
             expected = typer_own.coerce(value, param=param, ctx=None)
         except typer.BadParameter as exc:
-            raise AssertionError(f"{annotation}: {value!r} accepted, typer refuses: {exc}") from exc
-        assert type(direct) is type(expected) and direct == expected, (annotation, value)
+            raise AssertionError(f"{name}: {value!r} accepted, typer refuses: {exc}") from exc
+        same = direct == expected or (math.isnan(direct) and math.isnan(expected))
+        assert type(direct) is type(expected) and same, (name, value)
+
+
+# Assignments that change what typer or click made, by the attribute they set: a class swapped,
+# a method replaced on an instance (a parameter's reader, its usage, a command's callback).
+_REWRITES = re.compile(
+    r"\.(__class__|process_value|get_usage_pieces|display_type_rich|callback|context_class"
+    r"|short_help|epilog|metavar|get_runtime_param)\s*=[^=]"
+)
+
+
+def test_the_cli_changes_nothing_typer_made_but_in_its_one_trick():
+    """typer is used as it comes (its public ``cls``, ``metavar``, ``parser``, ``epilog``):
+    the one start-up trick, plain values without pydantic, lives in pendcli/cli/coercion.py."""
+    from pathlib import Path
+
+    folder = Path(__file__).resolve().parents[1] / "pendcli" / "cli"
+    found = {
+        path.name: [m.group(1) for m in _REWRITES.finditer(path.read_text(encoding="utf-8"))]
+        for path in sorted(folder.glob("*.py"))
+    }
+    assert {name: hits for name, hits in found.items() if hits} == {"coercion.py": ["__class__"]}

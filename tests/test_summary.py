@@ -41,7 +41,7 @@ def _reproduce(*args: str) -> str:
 
 def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary():
     from pendcli.papers.registry import PAPERS
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     text = _reproduce()
     lines = text.splitlines()
@@ -97,7 +97,7 @@ def test_ledger_parts_in_two_processes_give_the_ledger_in_order():
     # reproduce cuts each ledger in parts run in two processes; the rows must come back
     # whole and in the ledger's order, equal to one direct evaluation.
     from pendcli.papers.registry import equation_rows
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     direct = equation_rows(["charbonnier"])
     for jobs in (1, 2):

@@ -220,24 +220,24 @@ TRADEOFF_ROWS = "demo,fast,n=1,1e-06,0.001,12,\ndemo,exact,,0.0001,0,,\ndemo,nai
 
 @pytest.mark.parametrize("name", sorted(p.stem for p in (tables_dir() / "tradeoff").glob("*.csv")))
 def test_shipped_tradeoff_tables_are_valid(name):
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff_engine
 
-    points = tradeoff.read_table(tables_dir() / "tradeoff" / f"{name}.csv")
+    points = tradeoff_engine.read_table(tables_dir() / "tradeoff" / f"{name}.csv")
     assert points and all(p.family == name for p in points)
 
 
 def test_a_valid_tradeoff_table_reads(tmp_path):
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff_engine
 
     path = tmp_path / "demo.csv"
     path.write_text(TRADEOFF_HEADER + TRADEOFF_ROWS, encoding="utf-8")
-    points = tradeoff.read_table(path)
+    points = tradeoff_engine.read_table(path)
     assert [(p.method, p.error, p.evaluations) for p in points] == [
         ("fast", 0.001, 12),
         ("exact", 0.0, None),
         ("naive", None, None),
     ]
-    assert tradeoff.choose("demo", 0.01, points).method == "fast"
+    assert tradeoff_engine.choose("demo", 0.01, points).method == "fast"
 
 
 @pytest.mark.parametrize(
@@ -263,23 +263,23 @@ def test_a_valid_tradeoff_table_reads(tmp_path):
     ],
 )
 def test_a_bad_tradeoff_table_names_file_and_line(tmp_path, text, message):
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff_engine
 
     path = tmp_path / "demo.csv"
     path.write_text(text, encoding="utf-8")
     with pytest.raises(PendcliError) as err:
-        tradeoff.read_table(path)
+        tradeoff_engine.read_table(path)
     assert str(err.value).startswith(f"{path}: ")
     assert message in str(err.value)
     assert "\n" not in str(err.value)
 
 
 def test_a_tradeoff_table_that_is_not_text_is_an_error(tmp_path):
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff_engine
 
     path = tmp_path / "demo.csv"
     path.write_bytes(b"\xff\xfe" + TRADEOFF_HEADER.encode())
     with pytest.raises(PendcliError, match="not UTF-8"):
-        tradeoff.read_table(path)
+        tradeoff_engine.read_table(path)
     with pytest.raises(PendcliError, match="cannot read"):
-        tradeoff.read_table(tmp_path)  # a folder where the file should be
+        tradeoff_engine.read_table(tmp_path)  # a folder where the file should be

@@ -1,6 +1,7 @@
 """Work-precision measurements, the choice of a method, and `pendcli tradeoff`.
 
-The engine (:mod:`pendcli.tradeoff`) is generic; the families are each paper's
+The engine (:mod:`pendcli.run.tradeoff_engine`) is generic, the catalogue
+(:mod:`pendcli.run.tradeoff`) collects every paper's families; the families are each paper's
 (``pendcli.papers.<paper>.speed``).  References are checked here against other methods
 (mpmath quadrature, exact rationals, the defining equation of a zero), never against
 themselves.
@@ -17,11 +18,11 @@ import mpmath
 import pytest
 from cli_helpers import invoke
 
-from pendcli import tradeoff
 from pendcli.core.errors import PendcliError
 from pendcli.papers.charbonnier import speed as charbonnier_speed
 from pendcli.papers.lecornu import speed as lecornu_speed
 from pendcli.papers.tisserand import speed as tisserand_speed
+from pendcli.run import tradeoff, tradeoff_engine
 
 matplotlib.use("Agg")
 
@@ -58,7 +59,7 @@ def test_families_are_collected_from_every_paper_in_order():
     }
     assert tradeoff.FAMILIES is tradeoff.families()  # one mapping, built once
     for name in declared:  # every family has its published table
-        assert tradeoff.table_path(name).exists()
+        assert tradeoff_engine.table_path(name).exists()
 
 
 def test_unknown_family_names_the_valid_ones():
@@ -156,10 +157,10 @@ def test_lecornu_reference_agrees_with_the_ode():
 
 
 def test_relative_error_and_timing():
-    assert tradeoff.relative_error(1.5, 1) == 0.5
-    assert tradeoff.relative_error(1e-300, 0) == 1e-300  # absolute when the reference is 0
+    assert tradeoff_engine.relative_error(1.5, 1) == 0.5
+    assert tradeoff_engine.relative_error(1e-300, 0) == 1e-300  # absolute when the reference is 0
     calls = []
-    seconds = tradeoff.time_per_call(lambda: calls.append(1), quick=True)
+    seconds = tradeoff_engine.time_per_call(lambda: calls.append(1), quick=True)
     assert 0 < seconds < 1e-3 and len(calls) >= 2  # warm-up, then a batch
 
 
@@ -198,13 +199,13 @@ def test_naive_forms_fail_visibly(monkeypatch):
     monkeypatch.setitem(
         tradeoff.FAMILIES,
         "products_only",
-        tradeoff.Family(
+        tradeoff_engine.Family(
             "products_only",
             "products",
             [100, 3000],
             fam.reference,
             lambda quick: [
-                tradeoff.Candidate("products", "floats", charbonnier_speed.printed_products)
+                tradeoff_engine.Candidate("products", "floats", charbonnier_speed.printed_products)
             ],
         ),
     )
@@ -213,12 +214,12 @@ def test_naive_forms_fail_visibly(monkeypatch):
     assert math.isnan(point.seconds)
     assert "OverflowError" in point.note
     with pytest.raises(PendcliError, match="out of reach"):
-        tradeoff.choose("products_only", 1.0, [point])  # a failed point is never chosen
+        tradeoff_engine.choose("products_only", 1.0, [point])  # a failed point is never chosen
 
 
 def test_choose_picks_cheapest_meeting_tol(planar_points):
     for tol in (1e-2, 1e-6, 1e-12):
-        chosen = tradeoff.choose("planar_period", tol, planar_points)
+        chosen = tradeoff_engine.choose("planar_period", tol, planar_points)
         assert chosen.error <= tol
         cheaper = [
             p
@@ -227,35 +228,37 @@ def test_choose_picks_cheapest_meeting_tol(planar_points):
         ]
         assert not cheaper
     with pytest.raises(PendcliError, match="out of reach"):
-        tradeoff.choose("planar_period", 1e-30, planar_points)
+        tradeoff_engine.choose("planar_period", 1e-30, planar_points)
     with pytest.raises(PendcliError):
-        tradeoff.choose("planar_period", -1.0, planar_points)
+        tradeoff_engine.choose("planar_period", -1.0, planar_points)
 
 
 def test_choose_on_hand_made_points():
     points = [
-        tradeoff.Point("f", "slow-exact", "", 1e-3, 1e-16),
-        tradeoff.Point("f", "fast-rough", "", 1e-6, 1e-4),
-        tradeoff.Point("f", "middle", "", 1e-5, 1e-9),
-        tradeoff.Point("f", "broken", "", math.nan, None, note="fails"),
+        tradeoff_engine.Point("f", "slow-exact", "", 1e-3, 1e-16),
+        tradeoff_engine.Point("f", "fast-rough", "", 1e-6, 1e-4),
+        tradeoff_engine.Point("f", "middle", "", 1e-5, 1e-9),
+        tradeoff_engine.Point("f", "broken", "", math.nan, None, note="fails"),
     ]
-    assert tradeoff.choose("f", 1e-3, points).method == "fast-rough"
-    assert tradeoff.choose("f", 1e-8, points).method == "middle"
-    assert tradeoff.choose("f", 1e-15, points).method == "slow-exact"
+    assert tradeoff_engine.choose("f", 1e-3, points).method == "fast-rough"
+    assert tradeoff_engine.choose("f", 1e-8, points).method == "middle"
+    assert tradeoff_engine.choose("f", 1e-15, points).method == "slow-exact"
 
 
 def test_choose_method_reads_published_table(tmp_path, monkeypatch, planar_points):
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path))
-    tradeoff.write_table(planar_points, tradeoff.table_path("planar_period"))
-    back = tradeoff.read_table(tradeoff.table_path("planar_period"))
+    tradeoff_engine.write_table(planar_points, tradeoff_engine.table_path("planar_period"))
+    back = tradeoff_engine.read_table(tradeoff_engine.table_path("planar_period"))
     assert [(p.method, p.setting) for p in back] == [(p.method, p.setting) for p in planar_points]
     for a, b in zip(back, planar_points, strict=True):  # three significant digits kept
         assert (a.error is None) == (b.error is None)
         if b.error is not None:
             assert a.error == pytest.approx(b.error, rel=5e-3, abs=1e-300)
     assert (
-        tradeoff.choose_method("planar_period", 1e-6)
-        == tradeoff.choose("planar_period", 1e-6, planar_points).method
+        tradeoff_engine.choose(
+            "planar_period", 1e-6, tradeoff_engine.measured_points(tradeoff.family("planar_period"))
+        ).method
+        == tradeoff_engine.choose("planar_period", 1e-6, planar_points).method
     )
 
 
@@ -265,13 +268,13 @@ def test_choose_method_reads_published_table(tmp_path, monkeypatch, planar_point
 
 def _hand_points():
     return [
-        tradeoff.Point("a", "m1", "s=1", 1e-6, 1e-3),
-        tradeoff.Point("a", "m1", "s=2", 1e-5, 1e-9),
-        tradeoff.Point("a", "m2", "", 1e-4, 0.0),  # exact: drawn on the bottom edge
-        tradeoff.Point("a", "m3", "", math.nan, None, note="fails"),  # not drawn
-        tradeoff.Point("a", "m5", "n=1", 3e-6, 1e-2),
-        tradeoff.Point("a", "m5", "n=2", 4e-6, 1e37),  # diverges: drawn on the top edge
-        tradeoff.Point("b", "m4", "", 2e-6, 1e-12),
+        tradeoff_engine.Point("a", "m1", "s=1", 1e-6, 1e-3),
+        tradeoff_engine.Point("a", "m1", "s=2", 1e-5, 1e-9),
+        tradeoff_engine.Point("a", "m2", "", 1e-4, 0.0),  # exact: drawn on the bottom edge
+        tradeoff_engine.Point("a", "m3", "", math.nan, None, note="fails"),  # not drawn
+        tradeoff_engine.Point("a", "m5", "n=1", 3e-6, 1e-2),
+        tradeoff_engine.Point("a", "m5", "n=2", 4e-6, 1e37),  # diverges: drawn on the top edge
+        tradeoff_engine.Point("b", "m4", "", 2e-6, 1e-12),
     ]
 
 
@@ -324,7 +327,7 @@ def test_draw_family_titles_a_declared_family_by_its_title():
 
     fig, ax = plt.subplots()
     try:
-        points = [tradeoff.Point("integral_pi", "m", "", 1e-6, 1e-10)]
+        points = [tradeoff_engine.Point("integral_pi", "m", "", 1e-6, 1e-10)]
         tradeoff.draw_family(ax, "integral_pi", points)
         title = ax.get_title()
         declared = tradeoff.family("integral_pi").title  # I_n(π), the subscript set: Iₙ(π)
@@ -379,7 +382,7 @@ def test_cli_write_tables(tmp_path):
         "tradeoff", "bessel_zeros", "--quick", "-f", "csv", "--write-tables", str(tmp_path)
     )
     assert result.code == 0, result.out
-    back = tradeoff.read_table(tmp_path / "bessel_zeros.csv")
+    back = tradeoff_engine.read_table(tmp_path / "bessel_zeros.csv")
     assert {p.method for p in back} >= {"mpmath", "scipy", "mcmahon"}
 
 
@@ -392,7 +395,7 @@ def test_charbonnier_integral_method_and_tol(tmp_path, monkeypatch):
     """--method forces a method; --tol picks one whose value is then within tol of mpmath."""
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path))
     points = tradeoff.measure_family("integral_x", quick=True)
-    tradeoff.write_table(points, tradeoff.table_path("integral_x"))
+    tradeoff_engine.write_table(points, tradeoff_engine.table_path("integral_x"))
     n, x = 50, 0.7
     with mpmath.workdps(50):
         ref = mpmath.quad(lambda t: mpmath.sin(t) ** (n + 1), [0, 0.35, 0.6, x])

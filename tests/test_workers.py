@@ -343,7 +343,7 @@ def test_equations_shares_each_ledger_s_parts_and_gives_them_back_in_ledger_orde
     taken by this process and a forked worker; the rows come back paper by paper, part by
     part, whichever process computed them, and in one process the same list."""
     from pendcli.papers import registry
-    from pendcli.reproduce import LEDGER_PARTS, ledger_rows
+    from pendcli.run.reproduce import LEDGER_PARTS, ledger_rows
 
     parent, taken = os.getpid(), tmp_path / "a worker took a part"
     # this process waits for the worker to take a part, however loaded the machine; a hang

@@ -19,7 +19,7 @@ time per call, ratio, and the largest relative difference of the two answers); t
 cost with size (``lecornu zeros --count`` 1e3..1e7, ``charbonnier table --n-max`` 1e2..1e4:
 wall time and peak memory, each run in its own process, stopped at a time and memory limit);
 it regenerates the work-precision tables ``tables/tradeoff/<family>.csv``
-(:mod:`pendcli.tradeoff`, with the date in ``tables/tradeoff/measured.toml``) and rewrites the
+(:mod:`pendcli.run.tradeoff`, with the date in ``tables/tradeoff/measured.toml``) and rewrites the
 README section between ``<!-- bench:start -->`` and ``<!-- bench:end -->`` atomically (or prints
 it when the markers are absent).  These are benchmarks, not tests: nothing here fails on a slow
 machine.
@@ -51,7 +51,7 @@ from tools.bench_startup import (
 )
 
 if TYPE_CHECKING:
-    from pendcli.tradeoff import Point
+    from pendcli.run.tradeoff import Point
 
 START, END = "<!-- bench:start -->", "<!-- bench:end -->"
 
@@ -68,7 +68,7 @@ def regenerate_tables(quick: bool = False, root: Path | None = None) -> dict[str
 
 def measure_tables(quick: bool = False) -> dict[str, list[Point]]:
     """Every family's work-precision points, measured now (nothing written)."""
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff
 
     return {name: tradeoff.measure_family(name, quick=quick) for name in tradeoff.family_names()}
 
@@ -79,7 +79,7 @@ def table_files(
     """The files ``measured`` makes: each family's CSV and ``measured.toml`` with today's date."""
     import datetime
 
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff_engine as tradeoff
 
     files: dict[Path, str | bytes | None] = {}
     for name, points in measured.items():
@@ -97,7 +97,7 @@ def table_files(
 
 def _choice_cell(name: str, tol: float, points: list[Point]) -> str:
     from pendcli.core.errors import PendcliError
-    from pendcli.tradeoff import choose
+    from pendcli.run.tradeoff import choose
 
     try:
         p = choose(name, tol, points)
@@ -294,10 +294,10 @@ def _tagged(text: str, tag: str, load: tuple[float, float], heads: list[Any]) ->
 
 def committed_tables(root: Path | None = None) -> dict[str, list[Point]]:
     """The work-precision tables as committed (``--no-tables``: choices from them, unchanged)."""
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff, tradeoff_engine
 
-    paths = {name: tradeoff.table_path(name, root) for name in tradeoff.family_names()}
-    return {name: tradeoff.read_table(path) for name, path in paths.items() if path.is_file()}
+    paths = {name: tradeoff_engine.table_path(name, root) for name in tradeoff.family_names()}
+    return {name: tradeoff_engine.read_table(p) for name, p in paths.items() if p.is_file()}
 
 
 def _has_timings_block(path: Path) -> bool:

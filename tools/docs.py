@@ -25,7 +25,7 @@ from pendcli.output.markdown import to_markdown
 if TYPE_CHECKING:
     from pendcli.core.claims import ClaimRow
     from pendcli.core.rows import EquationRow
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
 __all__ = [
     "SECTIONS",
@@ -41,7 +41,7 @@ __all__ = [
 
 def _reproduce_all(equations: bool = False) -> ReproduceResult:
     from pendcli.papers.registry import PAPERS
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     return reproduce_all(PAPERS, formulas=True, equations=equations, quiet=True)
 
@@ -338,7 +338,7 @@ def main(argv: list[str]) -> int:
             print(f"{stale_path}: a generated section is stale; run `make regen`", file=sys.stderr)
         return 1 if stale else 0
     if "--tables" in argv:
-        from pendcli.regression import regenerated_tables, rewrite_with
+        from pendcli.run.regression import regenerated_tables, rewrite_with
 
         tables = regenerated_tables(full)
         removed = rewrite_with(tables, new, unchanged=read)

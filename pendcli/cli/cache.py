@@ -2,23 +2,19 @@
 
 from __future__ import annotations
 
-import typer
+from pendcli.cli.common import QuietFlag
+from pendcli.cli.help_format import command, group
 
-app = typer.Typer(
-    help="The result cache: where it is, how big, and emptying it.",
-    no_args_is_help=True,
-    add_completion=False,
-    rich_markup_mode=None,
-)
+app = group("The result cache: where it is, how big, and emptying it.", "cache")
 
 
-@app.command("info")
-def info() -> None:
+@command(app, "cache info")
+def info(quiet: QuietFlag = False) -> None:
     """Where the result cache is ($PENDCLI_CACHE, off, or the default), its entries and size
     (and, when its folder is not used, why)."""
     from pendcli.cli.common import say
     from pendcli.core.cache import ENV, entries
-    from pendcli.reproduce import result_cache
+    from pendcli.run.reproduce import result_cache
 
     cache = result_cache()
     if cache.folder is None:
@@ -32,12 +28,12 @@ def info() -> None:
         say(refusal)
 
 
-@app.command("clear")
-def clear() -> None:
+@command(app, "cache clear")
+def clear(quiet: QuietFlag = False) -> None:
     """Remove every entry of the result cache (the next run computes everything); nothing
     else in its folder is touched."""
     from pendcli.cli.common import say
-    from pendcli.reproduce import result_cache
+    from pendcli.run.reproduce import result_cache
 
     cache = result_cache()
     say(f"removed {cache.clear()} entries from {cache.folder}" if cache.folder else "cache off")

@@ -8,27 +8,28 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, busy, emit
+from pendcli.cli.common import FormatOption, PlotOption, QuietFlag, busy, emit, refuse_both
+from pendcli.cli.help_format import command, group
+from pendcli.cli.values import number, word
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.output import Column
 
-app = typer.Typer(
-    help="Charbonnier 1908: perturbations, the table of I_n(π).",
-    no_args_is_help=True,
-    add_completion=False,
-    rich_markup_mode=None,
-)
+app = group("Charbonnier 1908: perturbations, the table of I_n(π).", "charbonnier")
 
 
-@app.command("table")
+@command(app, "charbonnier table")
 def table(
     n_max: Annotated[
-        int, typer.Option("--n-max", help="Extend the table beyond the printed n = 5 up to N.")
+        int,
+        typer.Option(
+            "--n-max", metavar="N", help="Extend the table beyond the printed n = 5 up to N."
+        ),
     ] = 5,
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
+    quiet: QuietFlag = False,
 ) -> None:
     """The printed table of I_n(π), n = 0..5, and its closed forms, against recomputation."""
     from pendcli.core.claims import evaluate_paper
@@ -84,14 +85,18 @@ def _table_columns() -> tuple[Column, ...]:
     )
 
 
-@app.command("integral", context_settings={"ignore_unknown_options": True})
+@command(app, "charbonnier integral", context_settings={"ignore_unknown_options": True})
 def integral(
-    n: Annotated[int, typer.Argument(help="The order N: an integer, -1 <= N <= 10^15.")],
+    n: Annotated[
+        int, typer.Argument(metavar="N", help="The order N: an integer, -1 <= N <= 10^15.")
+    ],
     x: Annotated[
         float,
         typer.Option(
             "--x",
             "-x",
+            metavar="X",
+            parser=number,
             help="The upper limit X: a real number, |X| <= 1e6; by default π.",
             show_default=False,
         ),
@@ -100,6 +105,8 @@ def integral(
         float | None,
         typer.Option(
             "--tol",
+            metavar="TOL",
+            parser=number,
             help="Use the cheapest method whose measured worst relative error is <= TOL "
             "(tables/tradeoff, see `pendcli tradeoff`).",
         ),
@@ -107,12 +114,17 @@ def integral(
     method: Annotated[
         str | None,
         typer.Option(
-            "--method", help="Force a method of the tradeoff tables (recurrence, quad, ...)."
+            "--method",
+            metavar="METHOD",
+            parser=word,
+            help="Force a method of the tradeoff tables (recurrence, quad, ...).",
         ),
     ] = None,
     fmt: FormatOption = OutputFormat.table,
+    quiet: QuietFlag = False,
 ) -> None:
     """I_N(X) = ∫_0^X sin^(N+1) t dt for any integer N >= -1 and real X (by default π)."""
+    refuse_both("tol", tol, "method", method)
     from pendcli.output import Column, fmt_float
     from pendcli.papers.charbonnier.explore import integral_row
 

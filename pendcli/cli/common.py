@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
+from pendcli.cli.values import word
 from pendcli.core.console import console
 from pendcli.output import OutputFormat, Section
 
@@ -54,7 +55,7 @@ def complete_papers(incomplete: str) -> list[str]:
 
 def complete_verdicts(incomplete: str) -> list[str]:
     """Shell completion of a comma-separated list of verdicts or statuses (``--fail-on``)."""
-    from pendcli.reproduce import VERDICT_NAMES
+    from pendcli.run.reproduce import VERDICT_NAMES
 
     done, _, last = incomplete.rpartition(",")
     prefix = f"{done}," if done else ""
@@ -78,13 +79,17 @@ PaperOption = Annotated[
         "--paper",
         "-p",
         help="Only this paper: tisserand, lecornu or charbonnier.",
+        metavar="PAPER",
+        parser=word,
         callback=_paper_value,
         autocompletion=complete_papers,
     ),
 ]
 PlotOption = Annotated[
     Path | None,
-    typer.Option("--plot", help="Also draw the comparison to this file (.png, .svg or .pdf)."),
+    typer.Option(
+        "--plot", metavar="FILE", help="Also draw the comparison to this file (.png, .svg or .pdf)."
+    ),
 ]
 CacheOption = Annotated[
     bool,
@@ -96,11 +101,43 @@ CacheOption = Annotated[
 ]
 
 
+def _quiet_flag(value: bool) -> bool:
+    from pendcli.core.console import set_quiet
+
+    set_quiet(bool(value))
+    return value
+
+
+# `--quiet/-q` for a command without a quiet of its own: silences :func:`say` (its value is not
+# passed on: a command declares ``quiet: QuietFlag = False`` and reads nothing from it).
+QuietFlag = Annotated[
+    bool,
+    typer.Option(
+        "--quiet",
+        "-q",
+        help="No status lines on stderr (method chosen, files written).",
+        callback=_quiet_flag,
+        expose_value=False,
+    ),
+]
+
+
+def refuse_both(first: str, first_value: object, second: str, second_value: object) -> None:
+    """Options that exclude each other (``--tol`` and ``--method``): both given is an error."""
+    if first_value is not None and second_value is not None:
+        from pendcli.core.errors import PendcliError
+
+        raise PendcliError(
+            f"--{first} and --{second} exclude each other: --{first} picks the cheapest "
+            f"method meeting the tolerance, --{second} forces one; give one of them"
+        )
+
+
 @contextmanager
 def result_cache(use: bool, quiet: bool = False) -> Iterator[ResultCache]:
     """The run's result cache; after the run, one status line if it could not be written
     (none under ``quiet``, none after an error: that error is the one line)."""
-    from pendcli.reproduce import result_cache as open_cache
+    from pendcli.run.reproduce import result_cache as open_cache
 
     cache = open_cache(use)
     yield cache

@@ -10,12 +10,14 @@ from pendcli.cli.common import (
     CacheOption,
     FormatOption,
     PaperOption,
+    QuietFlag,
     bad_value,
     busy,
     complete_statuses,
     emit,
     result_cache,
 )
+from pendcli.cli.values import word
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
@@ -26,6 +28,8 @@ StatusOption = Annotated[
     typer.Option(
         "--status",
         "-s",
+        metavar="STATUS",
+        parser=word,
         help="Only this status: holds, fails, misprint, definition or not-checkable.",
         autocompletion=complete_statuses,
     ),
@@ -43,6 +47,7 @@ def equations(
     notes: NotesOption = False,
     fmt: FormatOption = OutputFormat.table,
     cache: CacheOption = True,
+    quiet: QuietFlag = False,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
     from pendcli.core.console import is_quiet
@@ -52,7 +57,7 @@ def equations(
     from pendcli.output.summary import compact_equation_columns
     from pendcli.output.views import EQUATION_COLUMNS
     from pendcli.papers.registry import resolve_papers
-    from pendcli.reproduce import ledger_rows
+    from pendcli.run.reproduce import ledger_rows
 
     if status is not None and status not in STATUSES:
         from pendcli.core.errors import either

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from pendcli.cli.common import FormatOption, PaperOption, emit
+from pendcli.cli.common import FormatOption, PaperOption, QuietFlag, emit
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
@@ -17,7 +17,9 @@ if TYPE_CHECKING:
 
 ClaimArgument = Annotated[
     str | None,
-    typer.Argument(help="One claim id (pendcli list shows them); default: every row."),
+    typer.Argument(
+        metavar="CLAIM", help="One claim id (pendcli list shows them); default: every row."
+    ),
 ]
 
 
@@ -25,6 +27,7 @@ def explain(
     claim: ClaimArgument = None,
     paper: PaperOption = None,
     fmt: FormatOption = OutputFormat.table,
+    quiet: QuietFlag = False,
 ) -> None:
     """The author's hand computation behind each wrong digit, with the odds of a coincidence."""
     from pendcli.papers.registry import resolve_papers

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PaperOption, busy, emit
+from pendcli.cli.common import FormatOption, PaperOption, QuietFlag, busy, emit
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
@@ -16,7 +16,9 @@ if TYPE_CHECKING:
 
 FigureFolderOption = Annotated[
     Path | None,
-    typer.Option("--plot", help="Also draw residual against parameter (log-log) into DIR."),
+    typer.Option(
+        "--plot", metavar="DIR", help="Also draw residual against parameter (log-log) into DIR."
+    ),
 ]
 
 
@@ -24,6 +26,7 @@ def formulas(
     paper: PaperOption = None,
     fmt: FormatOption = OutputFormat.table,
     plot: FigureFolderOption = None,
+    quiet: QuietFlag = False,
 ) -> None:
     """Residual of each derived formula as its small parameter shrinks: observed order, verdict."""
     from pendcli.papers.registry import formula_checks, resolve_papers

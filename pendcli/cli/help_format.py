@@ -7,24 +7,37 @@ hyphen, so a value a user copies came out as ``mcmahon-`` / ``newton`` and a def
 terminal's own, else 80), and the tokens that must stay whole are bound before wrapping (a
 hyphen between two characters of a word, the spaces of a bracketed note, of a comparison
 such as ``1 <= K <= 10^7``) and unbound in the finished text.
+
+Every command and group of pendcli is made with the classes here, given to typer by its public
+``cls`` (:func:`command`, :func:`group`): :class:`HelpContext` (the width and the formatter),
+:class:`Command` (an argument named by its value alone: ``N``, ``[CLAIM]``) and :class:`Group`
+(each subcommand listed with the whole first paragraph of its help). Each option names its
+value itself (``typer.Option(metavar="K")``).
 """
 
 from __future__ import annotations
 
-import functools
 import re
+from collections.abc import Callable
 from typing import Any
+
+import typer
+from typer.core import TyperCommand, TyperGroup
+
+from pendcli.cli.coercion import plain_coercion
 
 __all__ = [
     "ARGUMENTS",
     "EXAMPLES",
-    "METAVARS",
+    "Command",
+    "Group",
+    "HelpContext",
+    "command",
     "epilog",
+    "group",
     "keep_whole",
-    "metavar",
-    "name_values",
     "restore",
-    "whole_words_context",
+    "summary",
 ]
 
 # a width far above any terminal's: click then takes the terminal's own (minus its margin)
@@ -34,35 +47,8 @@ _WORD_HYPHEN = re.compile(r"(?<=[\w.'])-(?=[\w.])")
 _BRACKETED = re.compile(r"\[[^\[\]\n]{1,60}\]")
 _COMPARISON = re.compile(r"[^\s(]+ (?:<=|>=|<|>|=|≤|≥) [^\s,;)]+(?: (?:<=|<|≤) [^\s,;)]+)?")
 
-# The value a user types, as each option and argument names it in help, by parameter name
-# (else by type: a number, a whole number, a text, a file).
-METAVARS = {
-    "amplitude": "DEGREES",
-    "claim": "CLAIM",
-    "count": "K",
-    "family": "FAMILY",
-    "fail_on": "VERDICT[,...]",
-    "floor": "FRACTION",
-    "g": "G",
-    "length": "METRES",
-    "method": "METHOD",
-    "n": "N",
-    "n_max": "N",
-    "order": "ORDER",
-    "out": "DIR",
-    "paper": "PAPER",
-    "ratio": "RATIO",
-    "speed": "B",
-    "status": "STATUS",
-    "theta0": "ANGLE",
-    "theta1": "ANGLE",
-    "tol": "TOL",
-    "write_tables": "DIR",
-    "x": "X",
-}
-# the positional arguments, named in an error as in help
-ARGUMENTS = {name: METAVARS[name] for name in ("claim", "family", "n")}
-_BY_TYPE = {"int": "INTEGER", "float": "NUMBER", "str": "TEXT"}
+# the positional arguments by parameter name, named in an error as their help names them
+ARGUMENTS = {"claim": "CLAIM", "family": "FAMILY", "n": "N"}
 
 
 def keep_whole(text: str) -> str:
@@ -78,69 +64,111 @@ def restore(text: str) -> str:
     return text.replace(_SPACE, " ").replace(_HYPHEN, "-")
 
 
-def metavar(param: Any) -> str | None:
-    """The name of the value ``param`` takes, for its help; None for a flag or a choice
-    (click shows a choice's values) or a parameter that names its own."""
-    if getattr(param, "metavar", None) or getattr(param, "is_flag", False):
-        return None
-    descriptor = getattr(param, "type_descriptor", None)
-    if descriptor is not None and descriptor.is_choice:
-        return None
-    name = param.name or ""
-    if name in METAVARS:
-        return METAVARS[name]
-    if name == "plot":  # a file, or the folder of a command drawing several figures
-        return "DIR" if "folder" in (param.help or "") or "DIR" in (param.help or "") else "FILE"
-    annotation = getattr(descriptor, "annotation", None)
-    return _BY_TYPE.get(getattr(annotation, "__name__", ""), "VALUE")
+_Formatter: Any = typer.Context.formatter_class  # click's HelpFormatter
 
 
-@functools.cache
-def _whole_words_formatter(base: Any) -> type:
-    """``base`` (click's HelpFormatter) writing text and definition lists with values bound."""
+class WholeWordsFormatter(_Formatter):
+    """click's help formatter writing text and definition lists with values bound."""
 
-    def write_text(self: Any, text: str) -> None:
-        base.write_text(self, keep_whole(text))
+    def write_text(self, text: str) -> None:
+        super().write_text(keep_whole(text))
 
-    def write_dl(self: Any, rows: Any, *args: Any, **kwargs: Any) -> None:
-        bound = [(first, keep_whole(second)) for first, second in rows]
-        base.write_dl(self, bound, *args, **kwargs)
+    def write_dl(self, rows: Any, *args: Any, **kwargs: Any) -> None:
+        super().write_dl([(first, keep_whole(second)) for first, second in rows], *args, **kwargs)
 
-    def getvalue(self: Any) -> str:
-        return restore(base.getvalue(self))
-
-    methods = {"write_text": write_text, "write_dl": write_dl, "getvalue": getvalue}
-    return type(f"WholeWords{base.__name__}", (base,), methods)
+    def getvalue(self) -> str:
+        return restore(super().getvalue())
 
 
-@functools.cache
-def whole_words_context(base: Any) -> Any:
-    """``base`` (click's Context) whose help formatter keeps values whole, at the terminal's
-    full width."""
+class HelpContext(typer.Context):
+    """The context of every pendcli command: help at the terminal's full width, values whole."""
 
-    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+    formatter_class = WholeWordsFormatter
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
         kwargs.setdefault("max_content_width", MAX_CONTENT_WIDTH)
-        base.__init__(self, *args, **kwargs)
-
-    attributes = {
-        "__init__": __init__,
-        "formatter_class": _whole_words_formatter(base.formatter_class),
-    }
-    return type(f"WholeWords{base.__name__}", (base,), attributes)
+        super().__init__(*args, **kwargs)
 
 
-def name_values(params: list[Any]) -> None:
-    """Give each option and argument the name of its value (:func:`metavar`); an argument is
-    shown by that name alone (``N``, ``[CLAIM]``), not with its Python type."""
-    for param in params:
-        name = metavar(param)
-        if name is None:
-            continue
-        param.metavar = name
-        if param.param_type_name == "argument":
-            param.display_type_rich = lambda ctx, **kwargs: None
-            shown = name if param.required else f"[{name}]"
-            param.get_usage_pieces = lambda ctx, shown=shown: [shown]
+def summary(command: Any) -> str:
+    """The first paragraph of a command's help, whole: click's short help stops at "eq." or
+    "s.t.", and a docstring's first line is only part of its first sentence."""
+    text = (command.short_help or command.help or "").strip()
+    return " ".join(text.split("\n\n", 1)[0].split())
+
+
+def _argument_name(param: Any) -> str:
+    return str(param.metavar or (param.name or "").upper())
+
+
+class Command(TyperCommand):
+    """A pendcli command: its arguments shown by the name of their value (``N``, ``[CLAIM]``),
+    not with their Python type (``N <int>``) or in braces (``{N}``)."""
+
+    context_class = HelpContext
+
+    def get_params(self, ctx: Any) -> list[Any]:
+        return plain_coercion(super().get_params(ctx))  # without pydantic (start-up)
+
+    def collect_usage_pieces(self, ctx: Any) -> list[str]:
+        pieces = [self.options_metavar] if self.options_metavar else []
+        for param in self.get_params(ctx):
+            if param.param_type_name == "argument":
+                name = _argument_name(param)
+                pieces.append(name if param.required else f"[{name}]")
+        return pieces
+
+    def format_options(self, ctx: Any, formatter: Any) -> None:
+        rows: dict[str, list[tuple[str, str]]] = {"argument": [], "option": []}
+        for param in self.get_params(ctx):
+            record = param.get_help_record(ctx)
+            if record is not None and param.param_type_name in rows:
+                first = _argument_name(param) if param.param_type_name == "argument" else None
+                rows[param.param_type_name].append((first or record[0], record[1]))
+        for title, kind in (("Arguments", "argument"), ("Options", "option")):
+            if rows[kind]:
+                with formatter.section(title):
+                    formatter.write_dl(rows[kind])
+
+
+class Group(TyperGroup):
+    """A pendcli group: its commands listed with the whole first paragraph of their help."""
+
+    context_class = HelpContext
+
+    def get_params(self, ctx: Any) -> list[Any]:
+        return plain_coercion(super().get_params(ctx))  # without pydantic (start-up)
+
+    def format_commands(self, ctx: Any, formatter: Any) -> None:
+        rows = [(name, self.summary_of(ctx, name)) for name in self.list_commands(ctx)]
+        if rows:
+            with formatter.section("Commands"):
+                formatter.write_dl(rows)
+
+    def summary_of(self, ctx: Any, name: str) -> str:
+        """The line that lists the subcommand ``name``."""
+        found = self.get_command(ctx, name)
+        return summary(found) if found is not None else ""
+
+
+def command(app: typer.Typer, path: str, **settings: Any) -> Callable[..., Any]:
+    """``app.command`` for the command ``pendcli <path>``: made a :class:`Command`, with its
+    examples (:func:`epilog`)."""
+    name = path.rsplit(" ", 1)[-1]
+    return app.command(name, cls=Command, epilog=epilog(path), **settings)
+
+
+def group(help: str, path: str) -> typer.Typer:
+    """The Typer app of the group ``pendcli <path>``: a :class:`Group`, plain help (typer's
+    rich help imports rich.markdown and markdown_it, ~130 ms), its examples."""
+    return typer.Typer(
+        cls=Group,
+        help=help,
+        epilog=epilog(path),
+        no_args_is_help=True,
+        add_completion=False,
+        rich_markup_mode=None,
+    )
 
 
 # Examples shown at the end of each command's --help (the command path after `pendcli`).

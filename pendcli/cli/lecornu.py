@@ -6,7 +6,9 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, busy, emit
+from pendcli.cli.common import FormatOption, PlotOption, QuietFlag, busy, emit, refuse_both
+from pendcli.cli.help_format import command, group
+from pendcli.cli.values import number, word
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
@@ -16,29 +18,36 @@ if TYPE_CHECKING:
 
     from pendcli.output import Column, Row
 
-app = typer.Typer(
-    help="Lecornu: the pendulum of variable length (Bessel zeros, the 0,35 m/s example).",
-    no_args_is_help=True,
-    add_completion=False,
-    rich_markup_mode=None,
+app = group(
+    "Lecornu: the pendulum of variable length (Bessel zeros, the 0,35 m/s example).", "lecornu"
 )
 
 SpeedOption = Annotated[
     float | None,
     typer.Option(
         "--speed",
+        metavar="B",
+        parser=number,
         help="Shortening speed b (m/s), 0.001 <= b <= 1000 (default: the table's).",
     ),
 ]
 LengthOption = Annotated[
     float | None,
     typer.Option(
-        "--length", help="Length at t = 0 (m), 0.001 <= L <= 1000 (default: the table's)."
+        "--length",
+        metavar="METRES",
+        parser=number,
+        help="Length at t = 0 (m), 0.001 <= L <= 1000 (default: the table's).",
     ),
 ]
 GOption = Annotated[
     float | None,
-    typer.Option("--g", help="Gravity (m/s²), 0.1 <= g <= 100 (default: the table's g)."),
+    typer.Option(
+        "--g",
+        metavar="G",
+        parser=number,
+        help="Gravity (m/s²), 0.1 <= g <= 100 (default: the table's g).",
+    ),
 ]
 
 
@@ -48,10 +57,11 @@ def _col(key: str, header: str, sig: int = 10) -> Column:
     return Column(key, header, fmt=lambda r: fmt_float(r.get(key), sig), justify="right")
 
 
-@app.command("claims")
+@command(app, "lecornu claims")
 def claims(
     g: GOption = None,
     fmt: FormatOption = OutputFormat.table,
+    quiet: QuietFlag = False,
 ) -> None:
     """Every printed number of the memoir against its recomputation, with a verdict."""
     from pendcli.core.checks import real_in_range
@@ -76,9 +86,10 @@ def _zeros_method(method: str | None, tol: float | None) -> tuple[str, str]:
         return method, "forced by --method"
     if tol is None:
         return "auto", "default"
-    from pendcli.tradeoff import choose
+    from pendcli.run.tradeoff import family
+    from pendcli.run.tradeoff_engine import choose, measured_points
 
-    chosen = choose("bessel_zeros", tol)
+    chosen = choose("bessel_zeros", tol, measured_points(family("bessel_zeros")))
     reason = (
         f"cheapest with measured worst error {chosen.error:.1e} <= tol {tol:g}, "
         f"{chosen.seconds:.1e} s/evaluation"
@@ -86,14 +97,18 @@ def _zeros_method(method: str | None, tol: float | None) -> tuple[str, str]:
     return chosen.method, reason
 
 
-@app.command("zeros")
+@command(app, "lecornu zeros")
 def zeros(
-    order: Annotated[int, typer.Option("--order", help="Order of J: 1 or 2.")] = 2,
-    count: Annotated[int, typer.Option("--count", help="How many zeros, 1 <= K <= 10^7.")] = 5,
+    order: Annotated[int, typer.Option("--order", metavar="ORDER", help="Order of J: 1 or 2.")] = 2,
+    count: Annotated[
+        int, typer.Option("--count", metavar="K", help="How many zeros, 1 <= K <= 10^7.")
+    ] = 5,
     method: Annotated[
         str | None,
         typer.Option(
             "--method",
+            metavar="METHOD",
+            parser=word,
             help="Force one: auto, scipy, mcmahon, mcmahon-newton, mpmath or series.",
         ),
     ] = None,
@@ -101,13 +116,17 @@ def zeros(
         float | None,
         typer.Option(
             "--tol",
+            metavar="TOL",
+            parser=number,
             help="Cheapest method whose measured worst relative error is <= TOL "
             "(tables/tradeoff/bessel_zeros.csv).",
         ),
     ] = None,
     fmt: FormatOption = OutputFormat.table,
+    quiet: QuietFlag = False,
 ) -> None:
     """The first K positive zeros of J_1 or J_2 (Lecornu's (15) and the vertical passages)."""
+    refuse_both("tol", tol, "method", method)
     from functools import partial
 
     from pendcli.numerics.besselzeros import check_zeros_request, iter_bessel_zeros
@@ -195,13 +214,14 @@ def _example_columns() -> tuple[list[Column], list[Column], list[Column]]:
     return elongations, passages, summary
 
 
-@app.command("example")
+@command(app, "lecornu example")
 def example(
     speed: SpeedOption = None,
     length: LengthOption = None,
     g: GOption = None,
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
+    quiet: QuietFlag = False,
 ) -> None:
     """The shortening pendulum of the example: elongations, amplitudes, vertical passages."""
     from pendcli.core.plotting import validate_plot_path
@@ -228,19 +248,31 @@ def example(
             plot_example(plot, speed, length, g)
 
 
-@app.command("ode-check")
+@command(app, "lecornu ode-check")
 def ode_check(
     speed: SpeedOption = None,
     length: LengthOption = None,
     g: GOption = None,
     amplitude: Annotated[
         list[float] | None,
-        typer.Option("--amplitude", help="Initial amplitude(s) in degrees for eq. (3) with sin θ."),
+        typer.Option(
+            "--amplitude",
+            metavar="DEGREES",
+            parser=number,
+            help="Initial amplitude(s) in degrees for eq. (3) with sin θ.",
+        ),
     ] = None,
     floor: Annotated[
-        float, typer.Option("--floor", help="Stop at this fraction of the length, 1e-9..0.5.")
+        float,
+        typer.Option(
+            "--floor",
+            metavar="FRACTION",
+            parser=number,
+            help="Stop at this fraction of the length, 1e-9..0.5.",
+        ),
     ] = 0.02,
     fmt: FormatOption = OutputFormat.table,
+    quiet: QuietFlag = False,
 ) -> None:
     """Bessel elongation times against eq. (3) integrated directly, linear and with sin θ."""
     with busy("integrating eq. (3) from rest, linear and with sin θ"):
@@ -320,8 +352,8 @@ def _g_column(key: str) -> Column:
     return Column(key, key.replace("g=", "g = "), fmt=text, justify="right")
 
 
-@app.command("g-sensitivity")
-def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
+@command(app, "lecornu g-sensitivity")
+def g_sensitivity(fmt: FormatOption = OutputFormat.table, quiet: QuietFlag = False) -> None:
     """The g-dependent claims at several g, their verdicts, and the g that fits best."""
     from pendcli.output import Column
     from pendcli.output.views import printed_for_display
@@ -358,8 +390,8 @@ def g_sensitivity(fmt: FormatOption = OutputFormat.table) -> None:
     )
 
 
-@app.command("series")
-def series(fmt: FormatOption = OutputFormat.table) -> None:
+@command(app, "lecornu series")
+def series(fmt: FormatOption = OutputFormat.table, quiet: QuietFlag = False) -> None:
     """Lecornu's series (10)/(13) in double precision: where cancellation destroys them."""
     with busy("the series (10) and (13) against mpmath"):
         from pendcli.numerics import besselzeros
@@ -396,12 +428,13 @@ def series(fmt: FormatOption = OutputFormat.table) -> None:
     )
 
 
-@app.command("zero-length")
+@command(app, "lecornu zero-length")
 def zero_length(
     speed: SpeedOption = None,
     length: LengthOption = None,
     g: GOption = None,
     fmt: FormatOption = OutputFormat.table,
+    quiet: QuietFlag = False,
 ) -> None:
     """Amplitude growth as the length goes to zero (linear eq. (3) from rest, to a floor)."""
     from pendcli.papers.lecornu.explore import zero_length_behaviour

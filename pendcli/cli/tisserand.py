@@ -7,25 +7,24 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, busy, emit
+from pendcli.cli.common import FormatOption, PlotOption, QuietFlag, busy, emit
+from pendcli.cli.help_format import command, group
+from pendcli.cli.values import number
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.output import Column
 
-app = typer.Typer(
-    help="Tisserand 1881: the conical pendulum, series (I)-(VI) against the exact motion.",
-    no_args_is_help=True,
-    add_completion=False,
-    rich_markup_mode=None,
-)
+app = group("Tisserand 1881: the conical pendulum, series (I)-(VI) against the exact motion.",
+            "tisserand")  # fmt: skip
 
 AngleOption = Annotated[
     str | None,
     typer.Option(
+        metavar="ANGLE",
         help="Angle with its unit: 30°, 30deg, 30', 30arcmin, 90arcsec, 0.52rad (a unit is "
         "required). Default: the example's θ0 and θ1; --theta0 alone keeps the example's "
-        "ratio θ1/θ0."
+        "ratio θ1/θ0.",
     ),
 ]
 Row = Mapping[str, Any]
@@ -53,8 +52,8 @@ def _angle_or_number(key: str) -> Callable[[Row], str]:
     return text
 
 
-@app.command("claims")
-def claims(fmt: FormatOption = OutputFormat.table) -> None:
+@command(app, "tisserand claims")
+def claims(fmt: FormatOption = OutputFormat.table, quiet: QuietFlag = False) -> None:
     """The printed numbers of the example and Resal's rate, with verdicts and the unit reading."""
     from pendcli.core.claims import evaluate_paper
     from pendcli.output.views import FORMULA_COLUMNS, claim_columns
@@ -100,15 +99,21 @@ def _reading_columns(printed: Mapping[str, str]) -> tuple[Column, ...]:
     )
 
 
-@app.command("example")
+@command(app, "tisserand example")
 def example(
     theta0: AngleOption = None,
     theta1: AngleOption = None,
     length: Annotated[
-        float | None, typer.Option(help="Pendulum length in metres (default: the remark's l).")
+        float | None,
+        typer.Option(
+            metavar="METRES",
+            parser=number,
+            help="Pendulum length in metres (default: the remark's l).",
+        ),
     ] = None,
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
+    quiet: QuietFlag = False,
 ) -> None:
     """Published / series / exact (by quadrature, ODE and elliptic integrals) side by side."""
     from pendcli.core.plotting import validate_plot_path
@@ -176,14 +181,16 @@ def _example_columns(rows: list[dict[str, Any]]) -> tuple[Column, ...]:
     return columns
 
 
-@app.command("series")
+@command(app, "tisserand series")
 def series(
     ratio: Annotated[
-        float | None, typer.Option(help="θ1/θ0, 0..1 (default: the example's).")
+        float | None,
+        typer.Option(metavar="RATIO", parser=number, help="θ1/θ0, 0..1 (default: the example's)."),
     ] = None,
-    order: Annotated[int, typer.Option(help="Series order: 0, 2, 4 or 6.")] = 6,
+    order: Annotated[int, typer.Option(metavar="ORDER", help="Series order: 0, 2, 4 or 6.")] = 6,
     fmt: FormatOption = OutputFormat.table,
     plot: PlotOption = None,
+    quiet: QuietFlag = False,
 ) -> None:
     """k', k'' and the precession from the series against the exact values over θ0."""
     from pendcli.core.plotting import validate_plot_path

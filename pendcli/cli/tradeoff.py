@@ -8,30 +8,23 @@ from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 
-from pendcli.cli.common import FormatOption, PlotOption, busy, emit
+from pendcli.cli.common import FormatOption, PlotOption, QuietFlag, busy, emit
+from pendcli.cli.values import word
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
     from pendcli.output import Column
-    from pendcli.tradeoff import Point
-
-app = typer.Typer(
-    help="Speed against accuracy: error achieved and time per evaluation, per method.",
-    invoke_without_command=True,
-    add_completion=False,
-    rich_markup_mode=None,
-    # a group stops reading options at its first positional argument unless told otherwise
-    context_settings={"allow_interspersed_args": True},
-)
+    from pendcli.run.tradeoff_engine import Point
 
 
-@app.callback(invoke_without_command=True)
 def tradeoff(
     family: Annotated[
         str | None,
         typer.Argument(
+            metavar="FAMILY",
+            parser=word,
             help="One family, e.g. integral_pi, planar_period, bessel_zeros, conical (an "
-            "unknown name lists them all); default: every family of every paper."
+            "unknown name lists them all); default: every family of every paper.",
         ),
     ] = None,
     fmt: FormatOption = OutputFormat.table,
@@ -43,15 +36,18 @@ def tradeoff(
         Path | None,
         typer.Option(
             "--write-tables",
+            metavar="DIR",
             help="Also write each family's table as DIR/FAMILY.csv (DIR: an existing folder, "
             "or a new one inside an existing folder).",
         ),
     ] = None,
+    quiet: QuietFlag = False,
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
-    from pendcli import tradeoff as wp
     from pendcli.cli.targets import check_folder_target
     from pendcli.core.plotting import validate_plot_path
+    from pendcli.run import tradeoff as wp
+    from pendcli.run.tradeoff_engine import write_table
 
     plot = validate_plot_path(plot)
     check_folder_target(write_tables, "--write-tables")
@@ -66,7 +62,7 @@ def tradeoff(
     emit(fmt, sections, {"rows": rows, "skipped": {}})
     if write_tables is not None:
         for name in names:
-            wp.write_table([p for p in points if p.family == name], write_tables / f"{name}.csv")
+            write_table([p for p in points if p.family == name], write_tables / f"{name}.csv")
     if plot is not None:
         with busy("drawing the figure"):
             wp.plot_tradeoff(points, plot)
@@ -78,8 +74,8 @@ def _measure(names: list[str], quick: bool) -> list[Point]:
 
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from pendcli import tradeoff as wp
     from pendcli.core.console import console
+    from pendcli.run import tradeoff as wp
 
     points: list[Point] = []
     with Progress(

@@ -7,25 +7,23 @@
 * **Finite**: every number pendcli takes is finite; ``1e400`` (infinite as a double), ``inf``
   and ``nan`` are refused in the one wording (``--length must be finite, got 1e400``).
 * **Case**: a word chosen from a list (``--paper``, ``--status``, ``--method``, a family, the
-  verdicts of ``--fail-on``, ``--format``) is read whatever its case and surrounding spaces:
-  ``-p LECORNU`` and ``-s Holds`` are ``lecornu`` and ``holds``.
+  verdicts of ``--fail-on``) is read whatever its case and surrounding spaces: ``-p LECORNU``
+  and ``-s Holds`` are ``lecornu`` and ``holds`` (``--format``: typer's ``case_sensitive=False``).
 * **Blank**: an empty or blank value is refused before anything runs
   (:func:`pendcli.cli.main.refuse_blank`).
+
+Each option declares its reader with typer's ``parser=``: ``typer.Option(parser=number)``,
+``typer.Option(parser=word)``. A refused value raises ``ValueError("must ...")``, which
+:func:`pendcli.cli.messages.usage_message` names by the option as typed.
 """
 
 from __future__ import annotations
 
 import math
 import re
-from collections.abc import Callable
-from typing import Any
 
-from pendcli.core.errors import PendcliError
+__all__ = ["decimal_point", "number", "word"]
 
-__all__ = ["CASE_FOLDED", "decimal_point", "read_values"]
-
-# options and arguments whose value is a word of a list, read in any case
-CASE_FOLDED = frozenset({"paper", "status", "method", "family", "fail_on"})
 _DECIMAL_COMMA = re.compile(r"[+-]?[0-9]+,[0-9]+(?:[eE][+-]?[0-9]+)?")
 
 
@@ -35,53 +33,20 @@ def decimal_point(text: str) -> str:
     return stripped.replace(",", ".") if _DECIMAL_COMMA.fullmatch(stripped) else text
 
 
-def _is_number(param: Any) -> bool:
-    annotation = getattr(getattr(param, "type_descriptor", None), "annotation", None)
-    return annotation is float or str(annotation) == "list[float]"
+def number(text: str | float) -> float:
+    """A finite number, typed with a decimal point or a decimal comma."""
+    if isinstance(text, float | int) and not isinstance(text, bool):
+        value = float(text)
+    else:
+        try:
+            value = float(decimal_point(str(text)))
+        except ValueError:
+            raise ValueError(f"must be a number, got {text!r}") from None
+    if not math.isfinite(value):
+        raise ValueError(f"must be finite, got {text}")
+    return value
 
 
-def _each(value: Any, change: Callable[[Any], Any]) -> Any:
-    if isinstance(value, (tuple, list)):
-        return type(value)(_each(v, change) for v in value)
-    return change(value)
-
-
-def _fold(value: Any) -> Any:
-    return value.strip().casefold() if isinstance(value, str) else value
-
-
-def _as_number(value: Any) -> Any:
-    return decimal_point(value) if isinstance(value, str) else value
-
-
-def _refuse_infinite(param: Any, typed: Any, value: Any) -> None:
-    values = value if isinstance(value, (tuple, list)) else (value,)
-    texts = typed if isinstance(typed, (tuple, list)) else (typed,)
-    for number, text in zip(values, texts, strict=False):
-        if isinstance(number, float) and not math.isfinite(number):
-            raise PendcliError(f"{param.name} must be finite, got {text}", param.name)
-
-
-def read_values(params: list[Any]) -> None:
-    """Make each parameter read its value by the rules above (once per parameter)."""
-    for param in params:
-        number, fold = _is_number(param), param.name in CASE_FOLDED
-        if not (number or fold) or getattr(param, "pendcli_reads", False):
-            continue
-        param.pendcli_reads = True
-        param.process_value = _reader(param, param.process_value, number, fold)
-
-
-def _reader(param: Any, original: Callable[..., Any], number: bool, fold: bool) -> Any:
-    def process_value(ctx: Any, value: Any) -> Any:
-        typed = value
-        if number:
-            value = _each(value, _as_number)
-        if fold:
-            value = _each(value, _fold)
-        result = original(ctx, value)
-        if number:
-            _refuse_infinite(param, typed, result)
-        return result
-
-    return process_value
+def word(text: str) -> str:
+    """A word of a list, in any case and with surrounding spaces: ``" Holds"`` is ``holds``."""
+    return text.strip().casefold()

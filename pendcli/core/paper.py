@@ -123,8 +123,8 @@ class Paper:
     ``formula_checks`` (derived formulas against numerical solutions), ``references`` (each
     reference a ledger row cites, by name, to its builder), ``author_procedures`` (how the
     author obtained a printed value from his earlier ones, :mod:`pendcli.core.causes`),
-    ``tradeoff_families`` (work-precision families, :mod:`pendcli.tradeoff`),
-    ``stability_rows`` (:mod:`pendcli.stability`), ``figures`` (the report's figures of the
+    ``tradeoff_families`` (work-precision families, :mod:`pendcli.run.tradeoff`),
+    ``stability_rows`` (:mod:`pendcli.run.stability`), ``figures`` (the report's figures of the
     claims, into a folder), ``formula_figures`` (residual figures of the formula rows),
     ``captions`` (figure file stem -> caption), ``explanations`` (the author's hand computations
     that ``pendcli explain`` searches, :mod:`pendcli.core.explain`) and ``cli`` (the sub-app).

@@ -1,9 +1,9 @@
 """What `pendcli check` tells a person or a CI system: the drift table, JSON, JUnit XML,
 GitHub annotations, and the value-by-value list of what `check --update` rewrote.
 
-Pure functions over :class:`~pendcli.regression.Drift` and the regenerated tables; the
-comparison itself (and its tolerances, :data:`~pendcli.regression.TOLERANCES`) lives in
-:mod:`pendcli.regression`.
+Pure functions over :class:`~pendcli.run.regression.Drift` and the regenerated tables; the
+comparison itself (and its tolerances, :data:`~pendcli.run.regression.TOLERANCES`) lives in
+:mod:`pendcli.run.regression`.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
 from pendcli.core.errors import PendcliError
-from pendcli.drift import TOLERANCES, Drift, cell_drift, expected_columns, read_table
+from pendcli.run.drift import TOLERANCES, Drift, cell_drift, expected_columns, read_table
 
 __all__ = [
     "changed_cells",

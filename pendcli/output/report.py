@@ -35,8 +35,8 @@ from pendcli.output.report_store import pack, result_digest, unpack
 
 if TYPE_CHECKING:
     from pendcli.core.cache import ResultCache
-    from pendcli.reproduce import ReproduceResult
-    from pendcli.tradeoff import Point
+    from pendcli.run.reproduce import ReproduceResult
+    from pendcli.run.tradeoff import Point
 
 __all__ = ["write_report"]
 
@@ -124,7 +124,7 @@ def write_report(
     """Write report.md, claims.json, the per-paper CSVs and every figure into ``out`` (and,
     with ``pdf``, each HTML page printed to PDF by headless Chromium).
 
-    With a ``cache`` (:func:`pendcli.reproduce.result_cache`), the report's files are read
+    With a ``cache`` (:func:`pendcli.run.reproduce.result_cache`), the report's files are read
     from it when a report of the same result was stored (its key: every field of every row
     of ``result``, and the code, tables and versions), else written and stored; never with
     ``measure`` (timings of now) or ``pdf`` (Chromium's output is not pendcli's).
@@ -171,7 +171,7 @@ def _fill(
 ) -> list[Path]:
     """Every file of the report, written into ``folder``; their paths relative to it."""
     from pendcli.output.html.report import markdown_for_a_reader
-    from pendcli.regression import regenerated_tables
+    from pendcli.run.regression import regenerated_tables
 
     writer = _Writer(folder, quiet)
     tradeoff = _tradeoff_data(result.papers, measure, writer)  # timings first, alone
@@ -242,7 +242,7 @@ class _Tradeoff:
 def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tradeoff | None:
     """The families' tables, copied from the committed ones or (``measure``) measured now,
     written under ``tradeoff/``."""
-    from pendcli import tradeoff
+    from pendcli.run import tradeoff, tradeoff_engine
 
     names = tradeoff.family_names(keys)
     if not names:
@@ -250,18 +250,18 @@ def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tr
     points: list[Point] = []
     fresh = []
     for name in names:
-        committed = tradeoff.table_path(name)
+        committed = tradeoff_engine.table_path(name)
         if measure or not committed.is_file():
             writer.status(f"measuring {name}")
             measured = tradeoff.measure_family(name)
-            tradeoff.write_table(measured, writer.out / "tradeoff" / f"{name}.csv")
+            tradeoff_engine.write_table(measured, writer.out / "tradeoff" / f"{name}.csv")
             writer.written.append(Path("tradeoff") / f"{name}.csv")
             points += measured
             fresh.append(name)
         else:  # validated (UTF-8, every cell) before it is copied
-            points += tradeoff.read_table(committed)
+            points += tradeoff_engine.read_table(committed)
             writer.text(f"tradeoff/{name}.csv", committed.read_text(encoding="utf-8"))
-    return _Tradeoff(points, _provenance(tradeoff, names, fresh))
+    return _Tradeoff(points, _provenance(tradeoff_engine, names, fresh))
 
 
 def _provenance(tradeoff: ModuleType, names: list[str], fresh: list[str]) -> str:

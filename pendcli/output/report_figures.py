@@ -12,8 +12,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from pendcli.reproduce import ReproduceResult
-    from pendcli.tradeoff import Point
+    from pendcli.run.reproduce import ReproduceResult
+    from pendcli.run.tradeoff import Point
 
 
 def figure_caption(path: Path) -> str:
@@ -25,7 +25,7 @@ def figure_caption(path: Path) -> str:
         if path.stem in captions:
             return str(captions[path.stem])
     if path.stem == "work-precision":
-        from pendcli.tradeoff import CAPTION
+        from pendcli.run.tradeoff import CAPTION
 
         return str(CAPTION)
     return path.stem.replace("_", " ")
@@ -48,7 +48,7 @@ def figure_tasks(result: ReproduceResult, folder: Path, tradeoff: list[Point] | 
             args = (folder / "figures" / key / "formulas", result.formulas[key])
             tasks.append((key, "formulas", formula_figures, args))
     if tradeoff is not None:
-        from pendcli.tradeoff import plot_tradeoff
+        from pendcli.run.tradeoff import plot_tradeoff
 
         path = folder / "tradeoff" / "work-precision.png"
         tasks.append(("tradeoff", "tradeoff", plot_tradeoff, (tradeoff, path)))

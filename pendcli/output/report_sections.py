@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from pendcli.core.claims import ClaimRow
     from pendcli.core.explain import ExplainedRow
     from pendcli.core.rows import EquationRow
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
 _VERDICT_RULES = """\
 A printed number fixes its own precision: `5,14` is known to 0.01, `1°7'33''` to one

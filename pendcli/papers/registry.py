@@ -120,7 +120,7 @@ def _no_rows() -> list[FormulaRow]:
 
 
 def stability_rows(keys_: Iterable[str] | None = None) -> list[dict[str, str]]:
-    """The stability rows (:mod:`pendcli.stability`) of the papers ``keys_`` (default: every
+    """The stability rows (:mod:`pendcli.run.stability`) of the papers ``keys_`` (default: every
     paper), in the registry's order."""
     wanted = None if keys_ is None else tuple(keys_)
     rows: list[dict[str, str]] = []

@@ -50,7 +50,7 @@ from pendcli.output.html.rows import (
 
 if TYPE_CHECKING:
     from pendcli.core.rows import EquationRow
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
 __all__ = [
     "Figure",

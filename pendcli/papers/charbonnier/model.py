@@ -214,7 +214,7 @@ def _integral_0_pi(n: int, x: float, x_lo: float = 0.0) -> float:
 
     I_n(x) = ½ B(sin²x; a, ½), a = (n+2)/2, behaves like (sin²x)^a: rounding sin²x to a double
     costs a ulp (300 ulp at n = 1000), and scipy's own betainc loses up to ~200 ulp at large a
-    (measured, see pendcli.stability).  So sin²x and the incomplete beta function are evaluated
+    (measured, see pendcli.run.stability).  So sin²x and the incomplete beta function are evaluated
     at 40 digits (mpmath's hypergeometric series; 0.2..2 ms) and rounded once.  For x > π/2,
     I_n(x) = B(a, ½) - ½ B(sin²x; a, ½) has no cancellation (the difference is >= half).
     """

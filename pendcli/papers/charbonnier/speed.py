@@ -1,6 +1,6 @@
 """Charbonnier's speed/accuracy families: I_n(π), I_n(x) and the amplitude lost per swing.
 
-Each family (:class:`pendcli.tradeoff.Family`) has a reference from an independent method:
+Each family (:class:`~pendcli.run.tradeoff_engine.Family`) has a reference from an independent
 I_n(π) = B(½, (n+2)/2) and the positive hypergeometric series of I_n(x), both with mpmath at
 50 digits (no beta-function code of pendcli), and the loss per swing by mpmath's ODE solver
 at 40 digits.  The methods measured are pendcli's own (:mod:`pendcli.papers.charbonnier.model`)
@@ -23,7 +23,7 @@ from functools import cache, partial
 from typing import Any
 
 from pendcli.core.errors import PendcliError, invalid_value, out_of_range
-from pendcli.tradeoff import Candidate, Family, choose
+from pendcli.run.tradeoff_engine import Candidate, Family, choose, measured_points
 
 __all__ = [
     "FAMILIES",
@@ -356,7 +356,7 @@ def integral_with_choice_checked(
     if tol is None:
         raise PendcliError("give --tol or --method")
     name = "integral_pi" if x == math.pi else "integral_x"
-    chosen = choose(name, tol)
+    chosen = choose(name, tol, measured_points(_BY_NAME[name]))
     n_max = max(p if isinstance(p, int) else p[0] for p in _BY_NAME[name].problems)
     if n > n_max or not 0.0 <= x <= math.pi:
         return (

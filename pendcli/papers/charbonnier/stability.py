@@ -4,7 +4,7 @@ I_n(π) is checked for n from -1 to 10^12 against mpmath's beta function at 50 d
 on a grid of (n, x) against the positive hypergeometric series (and near π/2 for huge n
 against mpmath's incomplete beta at 80 digits); the amplitude-loss formula (no. 16) against
 direct ODE integration.  Rows are built from the measurements only (see
-:mod:`pendcli.stability`).
+:mod:`pendcli.run.stability`).
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from pendcli.papers.charbonnier.speed import (
     reference_integral_x,
     scipy_beta,
 )
-from pendcli.stability import rel, row, ulps, worst
+from pendcli.run.stability import rel, row, ulps, worst
 
 __all__ = ["integral_rows", "resistance_rows", "stability_rows"]
 

@@ -14,7 +14,7 @@ from functools import partial
 from typing import Any
 
 from pendcli.core.tables import load_paper_table
-from pendcli.tradeoff import Candidate, Family
+from pendcli.run.tradeoff_engine import Candidate, Family
 
 __all__ = [
     "FAMILIES",

@@ -10,7 +10,7 @@ from typing import Any
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table
 from pendcli.papers.lecornu.speed import reference_period_ratio
-from pendcli.stability import rel, row, short
+from pendcli.run.stability import rel, row, short
 
 __all__ = ["bessel_rows", "planar_rows", "stability_rows"]
 

@@ -11,7 +11,7 @@ import math
 from functools import partial
 from typing import Any
 
-from pendcli.tradeoff import Candidate, Family
+from pendcli.run.tradeoff_engine import Candidate, Family
 
 __all__ = ["FAMILIES", "reference_conical"]
 

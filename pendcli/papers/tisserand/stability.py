@@ -10,7 +10,7 @@ from collections.abc import Callable
 
 from pendcli.core.errors import PendcliError
 from pendcli.papers.tisserand.speed import reference_conical
-from pendcli.stability import rel, row, short
+from pendcli.run.stability import rel, row, short
 
 __all__ = ["conical_rows", "stability_rows"]
 

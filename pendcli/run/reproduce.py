@@ -1,16 +1,11 @@
-"""Run every claim (and formula check) of the chosen papers: the data behind `reproduce`.
-
-The module is callable: ``pendcli.reproduce(paper="lecornu")`` is
-:func:`pendcli.api.reproduce` (the package attribute ``reproduce`` is this module, since
-Python binds a submodule to its package's attribute of the same name).
-"""
+"""Run every claim (and formula check) of the chosen papers: the data behind `reproduce`
+(the command) and :func:`pendcli.api.reproduce` (the function ``pendcli.run.reproduce``)."""
 
 from __future__ import annotations
 
 import contextlib
 import functools
 import sys
-import types
 from collections.abc import Iterable
 from contextlib import nullcontext
 from dataclasses import dataclass, field
@@ -584,16 +579,3 @@ def parse_verdicts(text: str, option: str = "--fail-on") -> frozenset[str]:
             expected = f"one or more of {', '.join(VERDICT_NAMES)} (comma-separated)"
             raise invalid_value(option, name, expected)
     return frozenset(names)
-
-
-class _CallableModule(types.ModuleType):
-    def __call__(
-        self, paper: str | None = None, formulas: bool = True, equations: bool = False
-    ) -> ReproduceResult:
-        """Recompute and judge every printed number: see :func:`pendcli.api.reproduce`."""
-        from pendcli.api import reproduce
-
-        return reproduce(paper, formulas=formulas, equations=equations)
-
-
-sys.modules[__name__].__class__ = _CallableModule

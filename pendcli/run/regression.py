@@ -24,7 +24,10 @@ from typing import TYPE_CHECKING
 from pendcli.core.errors import PendcliError
 from pendcli.core.files import lock_file, locked, replace_owned_folder, write_through
 from pendcli.core.tables import tables_dir
-from pendcli.drift import (
+from pendcli.output.columns import Column
+from pendcli.output.csv import to_csv
+from pendcli.papers.registry import keys
+from pendcli.run.drift import (
     CLAIM_COLUMNS,
     EQUATION_COLUMNS,
     FORMULA_COLUMNS,
@@ -37,14 +40,11 @@ from pendcli.drift import (
     read_committed,
     read_table,
 )
-from pendcli.output.columns import Column
-from pendcli.output.csv import to_csv
-from pendcli.papers.registry import keys
 
 if TYPE_CHECKING:
     from rich.console import Console
 
-    from pendcli.reproduce import ReproduceResult
+    from pendcli.run.reproduce import ReproduceResult
 
 __all__ = [
     "TOLERANCES",
@@ -111,17 +111,12 @@ def run_check(
     formula and table), on standard output; see :mod:`pendcli.output.check_formats`.
     """
     from pendcli.core.console import console
-    from pendcli.reproduce import reproduce_all
+    from pendcli.run.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"
     _load_ledgers(root)
     if not update:  # a damaged committed table is named at once, not after the computation
         _read_committed_tables(folder)
-    stale = _derivations(update, root)
-    if stale:  # the statuses below are judged from these: stale ones would mislead
-        for line in stale:
-            console(stderr=True).print(line, markup=False, highlight=False)
-        return 1
     result = reproduce_all(keys(), formulas=True, equations=True, quiet=quiet or fmt != "table")
     tables = regenerated_tables(result)
     out = console()
@@ -156,25 +151,6 @@ def run_check(
         f"tables/regenerated within tolerance"
     )
     return 0
-
-
-def _derivations(update: bool, root: Path | None) -> list[str]:
-    """Each ledger paper's stored derivations derived again (core/derivation_store): with
-    ``update``, written; else how they differ from what the code derives, a line per row
-    naming its reference (empty when every one agrees). Only the package's own tables have a
-    store; a tables folder of one's own is derived afresh when judged."""
-    from pendcli.core.derivation_store import stores_here
-    from pendcli.core.ledger_references import derivation_drift, store_derivations
-    from pendcli.papers.registry import PAPERS, ledger_papers, paper
-
-    if not stores_here(root or tables_dir()):
-        return []
-    built_in = [k for k in ledger_papers() if k in PAPERS]  # an added paper has no store
-    if update:
-        for key in built_in:
-            store_derivations(paper(key))
-        return []
-    return [line for key in built_in for line in derivation_drift(paper(key))]
 
 
 def _read_committed_tables(folder: Path) -> None:
@@ -303,17 +279,17 @@ def _report(
     drift (on stderr when stdout carries a JSON or JUnit document)."""
     import sys
 
-    from pendcli.output import check_formats
+    from pendcli.output import check_formats as check_report
 
     if fmt == "json":
-        sys.stdout.write(check_formats.to_json(drifts, tables))
+        sys.stdout.write(check_report.to_json(drifts, tables))
     elif fmt == "junit":
-        sys.stdout.write(check_formats.to_junit(drifts, tables))
+        sys.stdout.write(check_report.to_junit(drifts, tables))
     elif drifts:
         _print_drifts(out, drifts)
-    if drifts and check_formats.in_github_actions():
+    if drifts and check_report.in_github_actions():
         stream = sys.stdout if fmt == "table" else sys.stderr
-        for line in check_formats.github_annotations(drifts, folder):
+        for line in check_report.github_annotations(drifts, folder):
             print(line, file=stream)
 
 

@@ -6,7 +6,7 @@ Each regenerated CSV has a fixed header (:data:`CLAIM_COLUMNS`, :data:`FORMULA_C
 numbers where a column is numeric), and :func:`compare_tables` lists every :class:`Drift`
 between a committed table and its regeneration: a row added or removed, a cell changed, or
 a numeric cell moved beyond its column's tolerance (:data:`TOLERANCES`: relative for values,
-absolute for fitted orders). :mod:`pendcli.regression` runs the check;
+absolute for fitted orders). :mod:`pendcli.run.regression` runs the check;
 :mod:`pendcli.output.check_formats` formats its drifts.
 """
 
