@@ -35,7 +35,7 @@ from pendcli.output.html.math import MATHML_ATTRIBUTES, MATHML_ELEMENTS, sanitis
 from pendcli.output.html.paper import paper_page
 from pendcli.output.html.report import report_page
 from pendcli.output.markdown import code_span, fence, markdown_text, to_markdown
-from pendcli.output.report import disagreement_digest, explanation_section
+from pendcli.output.report_sections import disagreement_digest, explanation_section
 from pendcli.output.views import claim_columns
 from pendcli.run.reproduce import ReproduceResult
 

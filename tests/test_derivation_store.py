@@ -16,12 +16,13 @@ import pytest
 import sympy as sp
 
 from pendcli.core import float_verdict, ledger_references
-from pendcli.core.derivation_store import read_expr, row_record, store_path, stored_rows
+from pendcli.core.derivation_store import row_record, store_path, stored_rows
 from pendcli.core.derived import Item, item_passes
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import load_ledger
 from pendcli.core.ledger_references import row_printed_status
 from pendcli.core.printed import ledger_symbols
+from pendcli.core.stored_expr import read_expr
 from pendcli.papers.registry import ledger_papers, paper
 
 # --- the closed grammar ---------------------------------------------------------------------

@@ -22,8 +22,51 @@ FORBIDDEN = {
         "pendcli.papers.tisserand",
         "pendcli.papers.charbonnier",
     ),
+    "output": (
+        "pendcli.cli",
+        "pendcli.api",
+        "pendcli.papers.lecornu",
+        "pendcli.papers.tisserand",
+        "pendcli.papers.charbonnier",
+        "tools",
+    ),
     "run": ("pendcli.cli", "pendcli.api"),
 }
+
+# The run's modules, and what of them an output may import when it runs: the report lists the
+# regenerated tables (regression.regenerated_tables). Its result's type (ReproduceResult) is
+# named under TYPE_CHECKING only, which never imports it.
+THE_RUN = ("reproduce", "regression")
+RUNS_WITH_THE_RUN = {"report.py": {"regression"}}
+
+
+def type_only(tree: ast.Module) -> set[ast.AST]:
+    """The import statements inside ``if TYPE_CHECKING:`` blocks."""
+    return {
+        node
+        for block in ast.walk(tree)
+        if isinstance(block, ast.If) and ast.unparse(block.test) == "TYPE_CHECKING"
+        for stmt in block.body
+        for node in ast.walk(stmt)
+        if isinstance(node, ast.Import | ast.ImportFrom)
+    }
+
+
+def run_imports(path: Path) -> set[str]:
+    """The run's modules that ``path`` imports when it runs (a function's imports included)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    skip = type_only(tree)
+    names = [
+        name
+        for node in ast.walk(tree)
+        if node not in skip
+        for name in (
+            [node.module or ""] if isinstance(node, ast.ImportFrom)
+            else [a.name for a in node.names] if isinstance(node, ast.Import)
+            else []
+        )
+    ]  # fmt: skip
+    return {n.rsplit(".", 1)[-1] for n in names if n.rsplit(".", 1)[-1] in THE_RUN}
 
 
 def imported(path: Path) -> list[str]:
@@ -40,14 +83,39 @@ def imported(path: Path) -> list[str]:
 def test_a_package_imports_nothing_its_docstring_forbids(package: str) -> None:
     found = [
         f"{path.name}: {name}"
-        for path in sorted((ROOT / package).glob("*.py"))
+        for path in sorted((ROOT / package).rglob("*.py"))
         for name in imported(path)
         if name.startswith(FORBIDDEN[package])
     ]
     assert found == []
 
 
-@pytest.mark.parametrize("package", ["core", "numerics", "papers", "render", "cli", "run"])
+def test_output_knows_the_run_only_in_the_report() -> None:
+    """The outputs render rows: only the report, which lists the regenerated tables, imports
+    a module of the run when it runs."""
+    found = {
+        path.relative_to(ROOT / "output").as_posix(): run
+        for path in sorted((ROOT / "output").rglob("*.py"))
+        if (run := run_imports(path))
+    }
+    assert found == RUNS_WITH_THE_RUN
+
+
+def test_nothing_installed_imports_the_developer_tools() -> None:
+    """`tools/` (make bench, make regen) is not in the wheel: a pendcli module importing it
+    would fail once installed."""
+    found = [
+        f"{path.relative_to(ROOT)}: {name}"
+        for path in sorted(ROOT.rglob("*.py"))
+        for name in imported(path)
+        if name == "tools" or name.startswith("tools.")
+    ]
+    assert found == []
+
+
+@pytest.mark.parametrize(
+    "package", ["core", "numerics", "papers", "output", "output/html", "cli", "run", "../tools"]
+)
 def test_every_package_opens_with_a_docstring(package: str) -> None:
     doc = ast.get_docstring(ast.parse((ROOT / package / "__init__.py").read_text("utf-8")))
     assert doc and "TODO" not in doc and len(doc) > 80

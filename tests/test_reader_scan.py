@@ -193,7 +193,7 @@ def test_the_legend_explains_every_badge(edition_pages: dict[str, str]) -> None:
 
 
 def test_list_shows_printed_units_raised() -> None:
-    from pendcli.cli.app import app
+    from pendcli.cli.main import app
 
     for fmt in ("table", "markdown"):
         result = CliRunner().invoke(app, ["list", "-f", fmt], env={"COLUMNS": "200"})

@@ -9,8 +9,9 @@ from cli_helpers import invoke
 
 from pendcli.core.claims import ClaimRow, FormulaRow
 from pendcli.core.errors import PendcliError
-from pendcli.output import report
-from pendcli.output.report import check_out_folder, disagreement_digest, write_report
+from pendcli.output import report_figures
+from pendcli.output.report import check_out_folder, write_report
+from pendcli.output.report_sections import disagreement_digest
 from pendcli.run.reproduce import ReproduceResult
 
 
@@ -141,7 +142,7 @@ def _stub_figures(monkeypatch):
         path.write_bytes(b"")
         return [path]
 
-    monkeypatch.setattr(report, "_draw", draw)
+    monkeypatch.setattr(report_figures, "_draw", draw)
 
 
 def _earlier_manifest(out, *names):
@@ -171,7 +172,7 @@ def test_a_failure_while_writing_leaves_the_old_folder_intact(tmp_path, monkeypa
     def broken(*_args):
         raise PendcliError("cannot write figure: disk full")
 
-    monkeypatch.setattr(report, "_draw", broken)
+    monkeypatch.setattr(report_figures, "_draw", broken)
     out = tmp_path / "out"
     out.mkdir()
     (out / "report.md").write_text("old report", encoding="utf-8")

@@ -13,7 +13,7 @@ import typer
 
 from pendcli.cli.values import number, word  # named by the probe command's annotations
 from pendcli.output import OutputFormat
-from tools import bench
+from tools import bench, bench_startup
 
 HEAVY = ("scipy", "matplotlib")
 
@@ -56,7 +56,7 @@ def test_light_commands_do_not_import_scipy_or_matplotlib(args):
 
 
 def test_import_costs_parses_importtime():
-    costs = dict(bench.import_costs(["--help"], top=50))
+    costs = dict(bench_startup.import_costs(["--help"], top=50))
     assert "typer" in costs and costs["typer"] > 0
     assert not set(costs) & set(HEAVY)
 
@@ -64,7 +64,7 @@ def test_import_costs_parses_importtime():
 def test_bench_runs_on_a_tiny_configuration(tmp_path, monkeypatch):
     quick = [sys.executable, "-c", "pass"]
     monkeypatch.setattr(
-        bench,
+        bench_startup,
         "_commands",
         lambda: {
             k: quick

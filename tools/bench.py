@@ -51,7 +51,7 @@ from tools.bench_startup import (
 )
 
 if TYPE_CHECKING:
-    from pendcli.run.tradeoff import Point
+    from pendcli.run.tradeoff_engine import Point
 
 START, END = "<!-- bench:start -->", "<!-- bench:end -->"
 
@@ -97,7 +97,7 @@ def table_files(
 
 def _choice_cell(name: str, tol: float, points: list[Point]) -> str:
     from pendcli.core.errors import PendcliError
-    from pendcli.run.tradeoff import choose
+    from pendcli.run.tradeoff_engine import choose
 
     try:
         p = choose(name, tol, points)

@@ -82,7 +82,7 @@ def peer_ratios(quick: bool = False) -> list[dict[str, str]]:
     """Time per call of pendcli and of its peer, measured alternately, and their ratio."""
     import numpy as np
 
-    from pendcli.run.tradeoff import time_per_call
+    from pendcli.run.tradeoff_engine import time_per_call
 
     rows = []
     for what, mine, fn, peer, peer_fn in _peer_cases(quick):

@@ -13,9 +13,9 @@ The format (JSON, one file per paper)::
                                      "reading": ..., "corrected": ...}}}}
 
 with ITEM = {"call", "where", "expr", "scale", "order", "domain", "strict", "why"}; each
-expression is sympy's ``srepr`` and is read back by a closed grammar (:func:`read_expr`):
-calls of the sympy constructors in :data:`HEADS` with number, string and boolean arguments,
-nothing evaluated, the size of a file and the depth of an expression bounded. The store is
+expression is sympy's ``srepr``, read back by a closed grammar (core/stored_expr): calls of
+the sympy constructors of its ``HEADS`` with number, string and boolean arguments, nothing
+evaluated, the size of a file and the depth of an expression bounded. The store is
 used only when its ``tables`` digest is that of the tables in use and the row's ``inputs``
 digest is the row's; otherwise the row is derived afresh (said once on stderr). Only the
 store shipped with the package is read, never one from a tables folder given by
@@ -24,7 +24,6 @@ store shipped with the package is read, never one from a tables folder given by
 
 from __future__ import annotations
 
-import ast
 import hashlib
 import json
 from collections.abc import Mapping
@@ -34,15 +33,14 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.core.derived import CALLS, Derived, Item, canonical_dummies
 from pendcli.core.errors import PendcliError
+from pendcli.core.stored_expr import read_expr
 
 if TYPE_CHECKING:
-    from pendcli.core.ledger import LedgerRow
+    from pendcli.core.derived import StoredRowFields as LedgerRow
 
 __all__ = [
     "FORMAT",
-    "HEADS",
     "StoredRow",
-    "read_expr",
     "row_inputs",
     "row_record",
     "store_path",
@@ -52,56 +50,7 @@ __all__ = [
 ]
 
 FORMAT = 1
-# the sympy constructors (and constants) an expression of the store may name
-HEADS = frozenset(
-    [
-        "Symbol",
-        "Dummy",
-        "Integer",
-        "Rational",
-        "Float",
-        "Add",
-        "Mul",
-        "Pow",
-        "Tuple",
-        "Function",
-        "Integral",
-        "Derivative",
-        "Subs",
-        "sin",
-        "cos",
-        "tan",
-        "exp",
-        "log",
-        "atan",
-        "asin",
-        "acos",
-        "atan2",
-        "sinh",
-        "cosh",
-        "tanh",
-        "Abs",
-        "floor",
-        "sign",
-        "arg",
-        "factorial2",
-        "factorial",
-        "besselj",
-        "bessely",
-        "elliptic_k",
-        "elliptic_e",
-        "sqrt",
-        "re",
-        "im",
-    ]
-)
-CONSTANTS = frozenset(["pi", "E", "I", "oo", "zoo", "nan", "EulerGamma"])
 _MAX_BYTES = 8_000_000  # a store's file
-_MAX_NODES = 200_000  # one expression's
-_MAX_DEPTH = 200
-# an integer literal's bound: a power or factorial of larger ones would take the machine
-_MAX_INTEGER = 10**60
-_MAX_EXPONENT = 10_000
 
 
 # A row's stored derivation: the kind its reference calls for, and each form's items
@@ -235,72 +184,3 @@ def write_store(paper: str, tables: str, rows: Mapping[str, dict[str, Any]]) -> 
     text = json.dumps(body, indent=1, ensure_ascii=False, sort_keys=True) + "\n"
     _raw_store.cache_clear()
     return atomic_write(store_path(paper), text)
-
-
-# --- the closed grammar of an expression -------------------------------------------------
-
-
-@cache
-def read_expr(where: str, text: str) -> Any:
-    """A sympy expression from its ``srepr``, read by walking the parsed syntax tree: only
-    calls of :data:`HEADS`, the names of :data:`CONSTANTS`, and number, string and boolean
-    literals; anything else is an error naming ``where``. Nothing is evaluated as code."""
-    if not isinstance(text, str) or len(text) > _MAX_BYTES:
-        raise PendcliError(f"{where}: a stored expression must be a string")
-    try:
-        tree = ast.parse(text, mode="eval")
-    except (SyntaxError, ValueError, RecursionError, MemoryError):
-        raise PendcliError(f"{where}: a stored expression does not parse") from None
-    if sum(1 for _ in ast.walk(tree)) > _MAX_NODES:
-        raise PendcliError(f"{where}: a stored expression of more than {_MAX_NODES} nodes")
-    try:
-        return _build(where, tree.body, 0)
-    except PendcliError:
-        raise
-    except Exception as exc:  # a constructor refusing its arguments: the file is malformed
-        raise PendcliError(
-            f"{where}: a stored expression sympy refuses ({type(exc).__name__})"
-        ) from None
-
-
-def _refuse_huge(where: str, head: str, args: list[Any]) -> None:
-    """A power or factorial whose exact value would not fit the machine is refused."""
-    import sympy as sp
-
-    if head not in ("Pow", "factorial", "factorial2"):
-        return
-    checked = args[1:] if head == "Pow" else args
-    for arg in checked:
-        if isinstance(arg, sp.Integer) and abs(arg) > _MAX_EXPONENT:
-            raise PendcliError(f"{where}: a stored {head} of an integer beyond {_MAX_EXPONENT}")
-
-
-def _build(where: str, node: ast.AST, depth: int) -> Any:
-    import sympy as sp
-
-    if depth > _MAX_DEPTH:
-        raise PendcliError(f"{where}: a stored expression nested more than {_MAX_DEPTH} deep")
-    if isinstance(node, ast.Constant) and isinstance(node.value, (int, str, bool)):
-        if isinstance(node.value, int) and abs(node.value) > _MAX_INTEGER:
-            raise PendcliError(f"{where}: a stored integer beyond {_MAX_INTEGER:.0e}")
-        return node.value
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-        value = _build(where, node.operand, depth + 1)
-        if isinstance(value, int) and not isinstance(value, bool):
-            return -value
-    if isinstance(node, ast.Name) and node.id in CONSTANTS:
-        return getattr(sp, node.id)
-    if isinstance(node, ast.Call):
-        if isinstance(node.func, ast.Call):  # Function('f')(x): an undefined function applied
-            head = _build(where, node.func, depth + 1)
-            if isinstance(head, sp.core.function.UndefinedFunction):
-                return head(*(_build(where, a, depth + 1) for a in node.args))
-        elif isinstance(node.func, ast.Name) and node.func.id in HEADS:
-            args = [_build(where, a, depth + 1) for a in node.args]
-            if any(k.arg is None for k in node.keywords):
-                raise PendcliError(f"{where}: a stored expression with ** arguments")
-            keywords = {str(k.arg): _build(where, k.value, depth + 1) for k in node.keywords}
-            _refuse_huge(where, node.func.id, args)
-            return getattr(sp, node.func.id)(*args, **keywords)
-    shown = ast.dump(node)[:60]
-    raise PendcliError(f"{where}: a stored expression holds what the grammar refuses: {shown}")

@@ -25,9 +25,9 @@ import random
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any
+from typing import Any, Protocol
 
-from pendcli.core.point_values import DIGITS, evaluator, vanishes_at_points
+from pendcli.core.point_values import DIGITS, RELATION_POINTS, evaluator, vanishes_at_points
 from pendcli.core.series_proof import taylor_verdict
 
 __all__ = [
@@ -35,14 +35,12 @@ __all__ = [
     "RELATION_POINTS",
     "Derived",
     "Item",
+    "StoredRowFields",
     "canonical_dummies",
     "item_passes",
     "passes",
     "truncated",
 ]
-
-# an inequality's points: it may fail on a part of its domain only, which few points miss
-RELATION_POINTS = 32
 
 # what an item asks: an equation's residual vanishes (to an order, in a scale); a relation's
 # margin has its sign; a residual stays finite as the scale tends to 0+; a rounded decimal
@@ -82,7 +80,7 @@ class Item:
         """The residual as a sympy expression (read from :attr:`text` the first time)."""
         if self.residual is not None or self.text is None:
             return self.residual
-        from pendcli.core.derivation_store import read_expr
+        from pendcli.core.stored_expr import read_expr
 
         return read_expr(self.where, self.text)
 
@@ -107,6 +105,17 @@ def canonical_dummies(text: str) -> str:
         return f"dummy_index={numbers.setdefault(match.group(1), str(len(numbers) + 1))}"
 
     return re.sub(r"dummy_index=(\d+)", renumbered, text)
+
+
+class StoredRowFields(Protocol):
+    """What a row's store entry is keyed on (a ledger row has them): its forms as read through
+    the paper's reading table, its reference and its kind."""
+
+    @property
+    def reference(self) -> str | None: ...
+    @property
+    def kind(self) -> str | None: ...
+    def read(self, name: str) -> str | None: ...
 
 
 @dataclass(frozen=True)

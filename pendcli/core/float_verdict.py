@@ -35,15 +35,28 @@ from __future__ import annotations
 import ast
 import math
 import random
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from fractions import Fraction
 from functools import cache
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
-from pendcli.core.point_values import FLOOR
+from pendcli.core.point_values import FLOOR, RELATION_POINTS
 
-if TYPE_CHECKING:
-    from pendcli.core.derived import Item
+
+class Item(Protocol):
+    """What float64 reads of an item (:class:`pendcli.core.derived.Item`)."""
+
+    @property
+    def call(self) -> str: ...
+    @property
+    def source(self) -> str | None: ...
+    @property
+    def scale(self) -> Any: ...
+    @property
+    def order(self) -> int | None: ...
+    @property
+    def domain(self) -> Mapping[str, tuple[Any, Any]]: ...
+
 
 __all__ = ["CIRCLE", "FAILS", "HOLDS", "POINTS", "compile_text", "quick_verdict"]
 
@@ -140,8 +153,6 @@ def _identity(item: Item, compiled: Compiled) -> Verdict | None:
 
 def _relation(item: Item, compiled: Compiled) -> Verdict | None:
     import numpy as np
-
-    from pendcli.core.derived import RELATION_POINTS
 
     names = sorted(compiled.names - _REAL_ONLY)
     unbounded = [n for n in names if n not in item.domain]

@@ -22,6 +22,7 @@ __all__ = [
     "DIGITS",
     "FLOOR",
     "POINTS",
+    "RELATION_POINTS",
     "Sampled",
     "compiled",
     "evaluator",
@@ -30,6 +31,8 @@ __all__ = [
 ]
 
 POINTS = 3  # random rational points tried when sympy cannot simplify a residual to 0
+# an inequality's points: it may fail on a part of its domain only, which few points miss
+RELATION_POINTS = 32
 DIGITS = 20
 
 

@@ -36,7 +36,7 @@ from pendcli.output.report_store import pack, result_digest, unpack
 if TYPE_CHECKING:
     from pendcli.core.cache import ResultCache
     from pendcli.run.reproduce import ReproduceResult
-    from pendcli.run.tradeoff import Point
+    from pendcli.run.tradeoff_engine import Point
 
 __all__ = ["write_report"]
 

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from pendcli.run.reproduce import ReproduceResult
-    from pendcli.run.tradeoff import Point
+    from pendcli.run.tradeoff_engine import Point
 
 
 def figure_caption(path: Path) -> str:
