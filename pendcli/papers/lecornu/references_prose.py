@@ -1,0 +1,50 @@
+"""Lecornu (1894): the sentences whose claim is a judgement with a scale, put in the notation
+as an inequality against the model.
+
+Line 248, « l'hypothèse des oscillations infiniment petites ne reste admissible, dans le
+voisinage de la longueur nulle, que si l'écart initial est extrêmement faible »: the deviation
+at zero length is θ0/|J₀(z₅)| (lines 236-246: θ ∝ J₀(z) at the elongations, the limit 1 at
+z = 0, z₅ = 17,96 the fifth zero of J₂ where θ = θ0), so a start admissible at zero length is
+θ0 = a·θs·|J₀(z₅)|, a in (0, 1) the share of θs, the largest deviation small oscillations
+admit, that it reaches there. The ledger states the scale of « extrêmement faible ».
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from pendcli.papers.lecornu.references_base import float40, reference, symbols
+
+__all__ = ["amplification_to_zero_length", "reference_small_start"]
+
+
+def amplification_to_zero_length() -> Any:
+    """|θ at zero length / θ0| = 1/|J₀(z₅)|, z₅ the fifth zero of J₂ (mpmath, 40 digits)."""
+    import mpmath
+
+    with mpmath.workdps(40):
+        return 1 / abs(mpmath.besselj(0, mpmath.besseljzero(2, 5)))
+
+
+def reference_small_start() -> Any:
+    """Line 248: every start θ0 admissible at zero length, θ0 = a·θs/(1/|J₀(z₅)|), over
+    a in (0, 1) and θs from 1/100 to 1/2 radian."""
+    import sympy as sp
+
+    (theta_s,) = symbols("theta_s")
+    share = sp.Symbol("a_share", real=True)
+    exact = {"theta0": share * theta_s / float40(amplification_to_zero_length())}
+    domain = {
+        "a_share": (sp.Integer(0), sp.Integer(1)),
+        "theta_s": (sp.Rational(1, 100), sp.Rational(1, 2)),
+    }
+    return reference(
+        exact, "θ at zero length = θ0/|J₀(z₅)|, z₅ the fifth zero of J₂", domain=domain
+    )
+
+
+# the builders of this section, by the name the ledger cites
+REFERENCES: dict[str, Callable[[], Any]] = {
+    "reference_small_start": reference_small_start,
+}
