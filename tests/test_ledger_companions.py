@@ -180,3 +180,41 @@ def test_an_entry_naming_no_unjudged_companion_is_refused(
     with pytest.raises(PendcliError, match=message) as caught:
         ledger_companions(load_ledger("lecornu", root))
     assert "lecornu.toml" in str(caught.value) and "\n" not in str(caught.value)
+
+
+def test_a_flawed_companion_writing_the_wrong_form_again_must_say_it_carries() -> None:
+    """Line 565 writes line 561's (π² − 12b)/(16g) again: lecornu.result.largest_length_comparison
+    names it (carries). Without that record its computed status (a misprint of its own) does
+    not judge it: it is left as printed."""
+    from dataclasses import replace
+
+    ledger = committed_ledger("lecornu")
+    source = "lecornu.result.vertical_to_elongation"
+    companion = "lecornu.result.largest_length_comparison"
+    rows = tuple(replace(r, carries=None) if r.id == companion else r for r in ledger.rows)
+    spans = [r.lines for r in rows if r.lines is not None]
+    found = companions_of(replace(ledger, rows=rows), [], spans, _text("lecornu"))[source]
+    assert [(c.row, c.judged) for c in found if c.row == companion] == [(companion, LEFT)]
+    judged = {c.row: c.judged for c in ledger_companions(ledger)[source]}
+    assert judged[companion] == "carries"
+    assert judged["lecornu.result.descending_half_lengthened"] == "restates"
+
+
+def test_the_shortening_of_line_565_is_the_sign_of_the_printed_form() -> None:
+    """« un léger raccourcissement, égal à (π² − 12b)/(16g) »: the printed form is positive for
+    every b below π²/12 m/s, the corrected (π² − 12)b/(16g) negative for every b > 0 (the
+    ledger's own formulas, evaluated by sympy over b from 0,01 to 0,8 m/s; the integration of
+    tests/test_prose_lecornu_later.py finds the half lengthened by 0,133 b/g)."""
+    import sympy as sp
+
+    row = next(
+        r
+        for r in committed_ledger("lecornu").rows
+        if r.id == "lecornu.result.largest_length_comparison"
+    )
+    assert row.printed is not None and row.reading_formula is not None
+    b, g = sp.symbols("b g", positive=True)
+    printed = sp.sympify(row.printed.split(";")[1].split("=")[1], {"b": b, "g": g})
+    read = sp.sympify(row.reading_formula.split(";")[1].split("=")[1], {"b": b, "g": g})
+    for speed in (0.01, 0.2, 0.35, 0.6, 0.8):
+        assert printed.subs({b: speed, g: 9.81}) > 0 > read.subs({b: speed, g: 9.81})

@@ -43,13 +43,15 @@ def test_the_amplification_to_zero_length_agrees_with_the_integration() -> None:
 
 
 def test_the_engine_judges_the_stated_scale_as_the_integration_does() -> None:
-    """The row holds (« extrêmement faible »: at most θs/10) because the amplification
-    exceeds 10; the same form with a scale beyond the amplification (θs/50) fails, one
-    below it (θs/40) holds: the engine's verdict turns where the integration's value lies."""
+    """The row holds (« extrêmement faible », theta_xf: at most θs/10) because the
+    amplification exceeds 10; the same form with a scale beyond the amplification (θs/50)
+    fails, one below it (θs/40) holds: the engine's verdict turns where the integration's
+    value lies."""
     row = committed_row(ROW)
     symbols = committed_ledger("lecornu").symbols_for(row)
     table = reference_table(paper("lecornu"))
     assert row.status == "holds" and row.kind == "inequality"
+    assert row_printed_status(row, symbols, table)[0] == "holds"
     by_ode = _amplification_by_integration()
     for divisor in (10, 40, 50, 100):
         computed, _ = row_printed_status(

@@ -17,7 +17,9 @@ Each companion is *judged* one way, in this order: ``restates`` or ``carries`` (
 names the source: ``restates``, ``carries``, ``step_from``), ``used_at`` (the source's later
 use, ``used_at``, falls on its lines: the slip carried in a ``fails`` row, the right form
 taken in a ``misprint`` one), ``checked`` (its status is computed against its reference, the
-model, so a companion that took the wrong form would not hold), ``independent`` (the ledger's
+model, so a companion that took the wrong form would not hold; but a flawed companion whose
+own wrong term is the source's has written the wrong form again, which the blame rule calls
+carried, so its computed status alone does not judge it), ``independent`` (the ledger's
 ``[[companion]]`` table says why it does not depend on the slip) or else ``left as printed``:
 an unexamined companion, which ``tests/test_ledger_companions.py`` refuses.
 
@@ -54,6 +56,7 @@ MAX_WHY = 300
 LEFT = "left as printed"
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _FORMULAS = ("printed", "reading_formula", "corrected_formula")
+_FLAWED = (EquationStatus.MISPRINT, EquationStatus.FAILS)
 
 
 @dataclass(frozen=True)
@@ -84,7 +87,7 @@ class Independent:
 
 
 def _is_source(row: LedgerRow) -> bool:
-    flawed = row.status in (EquationStatus.MISPRINT, EquationStatus.FAILS)
+    flawed = row.status in _FLAWED
     return (flawed and not row.restated) or bool(row.readings and row.equation)
 
 
@@ -180,13 +183,15 @@ def _judged(source: LedgerRow, row: LedgerRow) -> tuple[str, str] | None:
         return "restates", f"{row.id} restates {source.id}: its status, {row.status.value}"
     if source.id in (row.carries, row.step_from):
         return "carries", f"{row.id} carries {source.id}'s printed form ({row.status.value})"
+    if row.status in _FLAWED and set(row.wrong_terms) & set(source.wrong_terms):
+        return None  # the source's wrong form written again: carried, unless said otherwise
     used = [n for n in source.used_at or () if row.lines[0] <= n <= row.lines[1]]
-    if used:
-        what = "the slip carried" if source.status is EquationStatus.FAILS else "the form taken"
-        return "used_at", f"{source.id}'s later use at line {used[0]}: {what}"
+    what = "the slip carried" if source.status is EquationStatus.FAILS else "the form taken"
+    later = f"{source.id}'s later use at line {used[0]}: {what}" if used else ""
     if row.status in CHECKED_STATUSES:
-        return "checked", f"{row.status.value} against {row.reference}, the model, not the print"
-    return None
+        checked = f"{row.status.value} against {row.reference}, the model, not the print"
+        return "checked", f"{checked}; on its lines, {later}" if later else checked
+    return ("used_at", later) if later else None
 
 
 def companions_of(

@@ -6,7 +6,7 @@ voisinage de la longueur nulle, que si l'écart initial est extrêmement faible 
 at zero length is θ0/|J₀(z₅)| (lines 236-246: θ ∝ J₀(z) at the elongations, the limit 1 at
 z = 0, z₅ = 17,96 the fifth zero of J₂ where θ = θ0), so a start admissible at zero length is
 θ0 = a·θs·|J₀(z₅)|, a in (0, 1) the share of θs, the largest deviation small oscillations
-admit, that it reaches there. The ledger states the scale of « extrêmement faible ».
+admit, that it reaches there. « Extrêmement faible » is put on a stated scale, a tenth of θs.
 """
 
 from __future__ import annotations
@@ -16,7 +16,11 @@ from typing import Any
 
 from pendcli.papers.lecornu.references_base import float40, reference, symbols
 
-__all__ = ["amplification_to_zero_length", "reference_small_start"]
+__all__ = ["EXTREMELY", "amplification_to_zero_length", "reference_small_start"]
+
+# the scale the ledger states for « extrêmement faible »: at most this fraction of θs, the
+# largest deviation the small-oscillation hypothesis admits (an order of magnitude below it)
+EXTREMELY = (1, 10)
 
 
 def amplification_to_zero_length() -> Any:
@@ -29,12 +33,16 @@ def amplification_to_zero_length() -> Any:
 
 def reference_small_start() -> Any:
     """Line 248: every start θ0 admissible at zero length, θ0 = a·θs/(1/|J₀(z₅)|), over
-    a in (0, 1) and θs from 1/100 to 1/2 radian."""
+    a in (0, 1) and θs from 1/100 to 1/2 radian, against « extrêmement faible », θxf =
+    θs/10 (:data:`EXTREMELY`)."""
     import sympy as sp
 
     (theta_s,) = symbols("theta_s")
     share = sp.Symbol("a_share", real=True)
-    exact = {"theta0": share * theta_s / float40(amplification_to_zero_length())}
+    exact = {
+        "theta0": share * theta_s / float40(amplification_to_zero_length()),
+        "theta_xf": sp.Rational(*EXTREMELY) * theta_s,
+    }
     domain = {
         "a_share": (sp.Integer(0), sp.Integer(1)),
         "theta_s": (sp.Rational(1, 100), sp.Rational(1, 2)),
