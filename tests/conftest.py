@@ -47,6 +47,7 @@ SLOW_FAMILIES = {
     "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/test_prose_lecornu_later.py::test_the_reference_of_*": "the table after (26), sympy",
+    "tests/test_prose_scales.py::test_the_engine_judges_*": "four inequalities judged, sympy",
     "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
     "tests/test_reader_scan.py::test_the_pages_of_a_whole_report_*": "a whole report",
     "tests/test_terminal_fit.py::*": "each command's whole output at two widths",

@@ -30,6 +30,7 @@ from pendcli.core.ledger_blame import (
     row_context,
     validate_blame,
 )
+from pendcli.core.ledger_companions import parse_companions
 from pendcli.core.ledger_conditions import (
     Assumption,
     check_listed,
@@ -245,7 +246,7 @@ def parse_ledger(
     """Validate a parsed ledger: unknown keys, missing fields and bad values are errors.
     ``partial``: the rows are a selection of the ledger (one row's formulas read alone), so
     a row they name but do not hold (restated, carried, an assumption's) is not missing."""
-    top = ("ledger", "equation", "symbols", "scope", "reading", "assumption")
+    top = ("ledger", "equation", "symbols", "scope", "reading", "assumption", "companion")
     _refuse_unknown(f"{path}", "top-level key(s)", raw, top)
     header = raw.get("ledger")
     if not isinstance(header, dict) or header.get("paper") != paper:
@@ -276,6 +277,7 @@ def parse_ledger(
     for row in rows:
         parse_condition(f"{path}: {row.id}", row, named)
     check_listed(path, rows, assumptions)
+    parse_companions(f"{path}", raw.get("companion"))  # its shape; its match: when judged
     ledger = Ledger(paper, text_path, path, tuple(rows), symbols, scopes, readings, assumptions)
     validate_formulas(path, rows, ledger.symbols_for)
     if not partial:

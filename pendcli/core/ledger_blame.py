@@ -203,6 +203,8 @@ class Context:
     step: str | None = None
     readings: str | None = None
     assumptions: tuple[str, ...] = ()
+    # a corrected or read row's companions, each judged (core/ledger_companions)
+    companions: tuple[str, ...] = ()
 
 
 def row_context(
@@ -221,4 +223,11 @@ def row_context(
         step=step,
         readings="; ".join(shown[i] for i, _ in row.readings) or None,
         assumptions=tuple(a.id for a in ledger.assumptions if row.id in a.rows),
+        companions=_companions(row, ledger),
     )
+
+
+def _companions(row: LedgerRow, ledger: Ledger) -> tuple[str, ...]:
+    from pendcli.core.ledger_companions import ledger_companions
+
+    return tuple(c.shown() for c in ledger_companions(ledger).get(row.id, ()))

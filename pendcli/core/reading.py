@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from pendcli.core.errors import PendcliError
+from pendcli.core.reading_citations import Citation, parse_citations, unsaid_citations
 from pendcli.core.text_blocks import Span
 
 __all__ = [
@@ -88,6 +89,10 @@ class Reading:
     paragraphs: tuple[Paragraph, ...]
     # every paragraph of the text, read or not
     text_paragraphs: tuple[Span, ...]
+    # which printing each citation of a label printed twice means (core/reading_citations)
+    citations: tuple[Citation, ...] = ()
+    # the (label, line) citations of a label printed twice that no citation entry says
+    unsaid: tuple[tuple[str, int], ...] = ()
 
     @property
     def missing(self) -> tuple[Span, ...]:
@@ -128,7 +133,7 @@ def parse_reading(
     """Validate a parsed record against the text (its paragraphs) and the ledger's rows by id
     with their quotes; ``text_name`` is the ledger's ``[ledger] text``, which the record's
     ``[reading] text`` must repeat. Every problem is one line naming the file."""
-    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("reading", "paragraph"))
+    _refuse_unknown(f"{path}", "top-level key(s)", raw, ("reading", "paragraph", "citation"))
     head = raw.get("reading")
     if not isinstance(head, dict) or head.get("paper") != paper:
         raise PendcliError(f"{path}: [reading] must be a table with paper = {paper!r}")
@@ -151,7 +156,10 @@ def parse_reading(
             )
         _check_rows(f"{path}: paragraph {list(paragraph.lines)}", paragraph, lines, quotes)
         paragraphs.append(paragraph)
-    return Reading(paper, path, tuple(paragraphs), spans)
+    twice = {k: v for k, v in label_lines(text).items() if len(v) > 1}
+    citations = parse_citations(f"{path}", raw.get("citation"), text, twice)
+    unsaid = unsaid_citations(text, twice, citations)
+    return Reading(paper, path, tuple(paragraphs), spans, citations, unsaid)
 
 
 def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: tuple[str, ...]) -> None:

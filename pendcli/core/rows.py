@@ -170,6 +170,9 @@ class EquationRow:
     step: str | None = None  # its own slip, judged against the printed input it carries
     readings: str | None = None  # the OCR readings of the paper's table applied to its formulas
     assumptions: tuple[str, ...] = ()  # the ledger's unstated assumptions its verdict rests on
+    # a corrected or read row's companions (later rows and sentences depending on it), each
+    # with how it was judged against the changed form (core/ledger_companions)
+    companions: tuple[str, ...] = ()
 
     def as_dict(self) -> dict[str, object]:
         out = dict(self.__dict__)
@@ -177,6 +180,7 @@ class EquationRow:
         out["restates"] = list(self.restates)
         out["used_at"] = list(self.used_at) if self.used_at is not None else None
         out["assumptions"] = list(self.assumptions)
+        out["companions"] = list(self.companions)
         return out
 
 

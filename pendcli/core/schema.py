@@ -253,6 +253,13 @@ EQUATIONS = RowKind(
         ),
         Field("readings", _OPT_TEXT, "the OCR readings of the paper's table applied to it"),
         Field("assumptions", ("array",), "ids of the ledger's unstated assumptions it rests on"),
+        Field(
+            "companions",
+            ("array",),
+            "a corrected or read row's companions (later rows and sentences citing its label, "
+            "printing its wrong term or sharing a name it introduces), each with how it was "
+            "judged against the changed form; empty for other rows",
+        ),
     ),
 )
 STABILITY = RowKind(

@@ -14,6 +14,8 @@ the tables in the order of the text. No name is given by two sections
   818-934: references_perturbed
 * § IV, the conical pendulum, lines 940-1062: references_conical; its planes, lines
   1064-1135: references_conical_planes
+* the judgements a sentence puts on a scale (« extrêmement faible », line 248):
+  references_prose
 """
 
 from __future__ import annotations
@@ -31,6 +33,7 @@ from pendcli.papers.lecornu import (
     references_motion,
     references_numeric,
     references_perturbed,
+    references_prose,
     references_slow,
     references_small,
 )
@@ -47,6 +50,7 @@ SECTIONS = (
     references_perturbed,
     references_conical,
     references_conical_planes,
+    references_prose,
 )
 
 REFERENCES: dict[str, Callable[[], Any]] = {
