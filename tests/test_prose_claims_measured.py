@@ -7,6 +7,8 @@ its own (mpmath, solve_ivp), independent of the reference the engine judges the 
   (lecornu.result.composed_planes, holds to a relative ε²): the motion in space integrated;
 * Lecornu line 1136, the conjecture of a turning ellipse (lecornu.result.finite_conical_ellipse,
   not-checkable): what the motion in space shows, as its note says;
+* Lecornu line 84, l' = l + R²/l (lecornu.result.equivalent_length), and Tisserand's (16),
+  ρ = lu (tisserand.eq.16): two rows once recorded definitions, each derived;
 * Charbonnier lines 237-241, kt = π + (ε/kα)E_c(π) « en négligeant un terme en ε³ »
   (charbonnier.result.turning-time-inversion): the term neglected in inverting the sine is
   in ε³, the formula's distance from the motion itself in ε².
@@ -156,6 +158,50 @@ def test_finite_conical_swings_keep_their_shape_and_turn() -> None:
     _, small_azimuths = _swings(0.02, 0.05, 20.0)
     assert abs(float(np.mean(np.diff(small_azimuths[0::2]) - np.pi))) < 0.01
     assert committed_row("lecornu.result.finite_conical_ellipse").status == "not-checkable"
+
+
+# --- Lecornu line 84, Tisserand (16) ----------------------------------------------------
+
+
+def _half_period(accel: object, theta0: float) -> float:
+    """The time from θ0 at rest to the lowest point (θ = 0), for θ'' = accel(θ)."""
+    lowest = lambda t, y: y[0]  # noqa: E731
+    lowest.terminal = True  # type: ignore[attr-defined]
+    sol = solve_ivp(lambda t, y: [y[1], accel(y[0])], [0, 10], [theta0, 0.0],  # type: ignore[operator]
+                    rtol=1e-12, atol=1e-14, events=lowest)  # fmt: skip
+    return float(sol.t_events[0][0])
+
+
+def test_a_dumbbell_swings_as_the_simple_pendulum_of_the_known_length() -> None:
+    """Two equal masses on a rigid rod at l − R and l + R from the axis (centre of gravity at
+    l, radius of gyration R about it): their moments summed mass by mass, swung from 1 rad,
+    take the time of the simple pendulum of length l + R²/l, not l's."""
+    length, radius = 0.7, 0.3
+    arms = (length - radius, length + radius)
+
+    def dumbbell(theta: float) -> float:
+        return -G * sum(arms) * np.sin(theta) / sum(r * r for r in arms)
+
+    equivalent = length + radius**2 / length
+    quarter = _half_period(dumbbell, 1.0)
+    assert quarter == pytest.approx(_half_period(lambda th: -G * np.sin(th) / equivalent, 1.0),
+                                    rel=1e-9)  # fmt: skip
+    assert abs(quarter / _half_period(lambda th: -G * np.sin(th) / length, 1.0) - 1) > 0.05
+    assert committed_row("lecornu.result.equivalent_length").status == "holds"
+
+
+def test_the_projection_of_the_bob_is_at_l_sin_theta_from_the_foot_of_the_vertical() -> None:
+    """Bobs on the sphere of radius l by their Cartesian coordinates (θ from the downward
+    vertical, any azimuth): the distance of the projection from O is l·u, u = sin θ."""
+    rng = np.random.default_rng(7)
+    length = 1.3
+    for _ in range(20):
+        theta, phi = rng.uniform(0, np.pi / 2), rng.uniform(0, 2 * np.pi)
+        bob = length * np.array([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi),
+                                 -np.cos(theta)])  # fmt: skip
+        assert np.isclose(np.linalg.norm(bob), length)
+        assert np.hypot(bob[0], bob[1]) == pytest.approx(length * np.sin(theta), rel=1e-12)
+    assert committed_row("tisserand.eq.16").status == "holds"
 
 
 # --- Charbonnier lines 237-241 -----------------------------------------------------------

@@ -39,6 +39,7 @@ from pendcli.papers.tisserand.references_numeric import (
 from pendcli.papers.tisserand.references_prose import (
     reference_angles_second_order,
     reference_ellipse_axes,
+    reference_projection_radius,
     reference_start_of_psi,
     reference_uniform_rotation,
 )
@@ -163,6 +164,7 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_uniform_rotation": reference_uniform_rotation,
     "reference_start_of_psi": reference_start_of_psi,
     "reference_ellipse_axes": reference_ellipse_axes,
+    "reference_projection_radius": reference_projection_radius,  # (16), line 128
     "reference_angles_second_order": reference_angles_second_order,
     # p. 454: the numerical application
     "numbers_numerical_application": numbers_numerical_application,
