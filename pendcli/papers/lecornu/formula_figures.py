@@ -58,7 +58,8 @@ CAPTIONS = {
         "Lecornu",
         "Reference: solve_ivp (DOP853, rtol 1e-12) on Lecornu's own equations in his reduced "
         "variables τ = t√(g/a), p = b/√(ga); times in units of √(a/g). The amplitude series "
-        "against mpmath's am u; θ² for sin²θ and 1/l² against their closed forms.",
+        "against mpmath's am u; θ² for sin²θ and 1/l² against their closed forms; the two "
+        "plane pendulums of line 1094 against the bob's motion in space (l = 1 + 0.05t m).",
     ),
 }
 
