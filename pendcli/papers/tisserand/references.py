@@ -7,8 +7,8 @@ core/printed_numeric), by the sections of the paper, and their table :data:`REFE
     p. 452, lines 96-156        the ellipse (9), (10), (16), (17): here
     p. 453-454, lines 158-206   the summary (I)-(VI) and its approximations: here
     p. 454, lines 192-202       the numerical application: :mod:`.references_numeric`
-    lines 30, 44, 152, 178-180  the sentences' own claims (the reading record):
-                                :mod:`.references_prose`
+    lines 30, 44, 128, 152,     the sentences' own claims (the reading record):
+    178-180                     :mod:`.references_prose`
 
 Each builder maps ledger symbols to exact expressions (or, for the numbers, computes them)
 from what the printed formula rests on, never from a copy of the formula the row prints.

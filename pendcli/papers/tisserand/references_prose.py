@@ -4,6 +4,7 @@ tables/papers/tisserand.reading.toml), where no reference of the formulas serves
     line 30, 180   Resal's ellipse whose major axis turns uniformly, in the same sense as
                    the pendulum: the exact motion through the fourth order in ψ
     line 44        « Pour t = 0, on aura ψ = 0 »: (3) at ψ = 0
+    line 128       (16), ρ = lu: the radius vector of the projection, from the bob's position
     line 152       the ellipse (17): its centre, its major axis Ox', its axes 2ρ0 and 2ρ1
     line 178       « u0u1 est un terme du second ordre »
 
