@@ -40,7 +40,7 @@ RHO1, RHO2 = 1.0, 0.4  # the axes of the trace (lines 1120-1134)
 NEAR = np.linspace(0.05, 1.4, 200)  # u on the first quarter turn: x, y > 0 (the arctangent)
 TURN = np.linspace(0.0, 2 * PI, 401)
 AMPLITUDES = (0.04, 0.02, 0.01, 0.005)  # the bob's first angle, rad (line 1094)
-SPACE_A, SPACE_B, SPACE_G = 1.0, 0.05, 9.81  # l = a + bt (m, m/s) and g of the motion in space
+SPACE_A, SPACE_B = 1.0, 0.05  # l = a + bt of the motion in space (m, m/s); g the tables'
 
 
 def _p_study(residuals: Sequence[float] | Array, ref: Integrator) -> Study:
@@ -65,15 +65,19 @@ def _area_row(ref: Integrator) -> FormulaRow:
     )
 
 
-def _in_space(t: float, y: Array) -> Array:
+def _in_space(g: float) -> Callable[[float, Array], Array]:
     """The bob in space (z downward, |r| = a + bt): the tension per unit length from the
     constraint differentiated twice, r·r'' + v·v = b² (l'' = 0)."""
-    r, v = y[:3], y[3:]
-    pull = (SPACE_G * r[2] + v @ v - SPACE_B**2) / (SPACE_A + SPACE_B * t) ** 2
-    return np.concatenate([v, np.array([0.0, 0.0, SPACE_G]) - pull * r])
+
+    def rhs(t: float, y: Array) -> Array:
+        r, v = y[:3], y[3:]
+        pull = (g * r[2] + v @ v - SPACE_B**2) / (SPACE_A + SPACE_B * t) ** 2
+        return np.concatenate([v, np.array([0.0, 0.0, g]) - pull * r])
+
+    return rhs
 
 
-def _plane_law() -> Callable[[float, Array], list[float]]:
+def _plane_law(g: float) -> Callable[[float, Array], list[float]]:
     """The printed law of line 1094's row (its first equation) solved for θ'' (it is linear
     in it): y' = (θ', θ'') in one plane."""
     ((lhs, rhs), _) = ledger_sides("result.composed_planes")
@@ -81,7 +85,7 @@ def _plane_law() -> Callable[[float, Array], list[float]]:
     law = evaluator(lhs - rhs, names)
 
     def rhs_(t: float, y: Array) -> list[float]:
-        at = (SPACE_A + SPACE_B * t, SPACE_B, SPACE_G, y[0], y[1])
+        at = (SPACE_A + SPACE_B * t, SPACE_B, g, y[0], y[1])
         free = law(*at, 0.0)
         return [y[1], -free / (law(*at, 1.0) - free)]
 
@@ -92,14 +96,17 @@ def _composed_row(ref: Integrator) -> FormulaRow:
     """Line 1094: the angles of the rod's projections on the fixed planes xz, yz of the
     motion in space against the printed law integrated in each plane, started alike
     (θ1 = A at rest, θ2' = 0.6·A·√(g/a)); the largest gap over the largest angle, 4 s."""
-    law, end = _plane_law(), 4.0
+    from pendcli.papers.lecornu.model import constant
+
+    g = constant("g")
+    space, law, end = _in_space(g), _plane_law(g), 4.0
     ts = np.linspace(0.0, end, 801)
     gaps = []
     for amp in AMPLITUDES:
-        w2 = 0.6 * amp * np.sqrt(SPACE_G / SPACE_A)
+        w2 = 0.6 * amp * np.sqrt(g / SPACE_A)
         x0, z0 = SPACE_A * np.sin(amp), SPACE_A * np.cos(amp)
         start = [x0, 0.0, z0, SPACE_B * np.sin(amp), z0 * w2, SPACE_B * np.cos(amp)]
-        x, y, z = ref.solve(_in_space, end, start)(ts)[:3]
+        x, y, z = ref.solve(space, end, start)(ts)[:3]
         one, two = ref.solve(law, end, [amp, 0.0])(ts)[0], ref.solve(law, end, [0.0, w2])(ts)[0]
         angles = (np.arctan2(x, z), np.arctan2(y, z))
         gap = np.hypot(angles[0] - one, angles[1] - two)
@@ -110,7 +117,7 @@ def _composed_row(ref: Integrator) -> FormulaRow:
         ledger_text("result.composed_planes"),
         Study("first angle A = 0.04 … 0.005 rad", AMPLITUDES, tuple(gaps), 2, ref.error_bound),
         ref,
-        note="The bob in space (l = 1 + 0.05t m, g = 9.81) against two plane pendulums of "
+        note="The bob in space (l = 1 + 0.05t m, the tables' g) against two plane pendulums of "
         "the printed law in fixed rectangular planes: the angles of the projections, "
         "atan(x/z) and atan(y/z), their largest gap over the largest angle, 0 ≤ t ≤ 4 s.",
     )
