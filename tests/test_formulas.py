@@ -67,6 +67,7 @@ EXPECTED = {
     "lecornu.amplitude_series": "holds",
     "lecornu.k3_neglected": "holds",
     "lecornu.area_small_angle": "holds",
+    "lecornu.composed_planes": "holds",  # the motion in space against (48) in two planes
     "lecornu.eq50": "holds",
     "lecornu.inverse_square_length": "holds",
     "lecornu.eq52_as_read": "holds",  # (52) with −u sin u, +u cos u

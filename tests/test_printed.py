@@ -40,6 +40,10 @@ NUMBERS_CITED = {
     "charbonnier.result.infinite-count": "1 + Δα/α > 0",
     # line 1010, « cos θ par l'unité »: the 1 in words
     "lecornu.result.conical_order_comparison": "cos(theta) = 1",
+    # line 1094, « deux pendules qui oscillent dans deux plans fixes »: (48)'s law, in words;
+    # line 1136, « une ellipse ... semblable à elle-même »: its equation, in words
+    "lecornu.result.composed_planes": "(48)'s law for each plane",
+    "lecornu.result.finite_conical_ellipse": "a turned ellipse, its axis ratio kept",
     # line 30, Resal's ellipse turning uniformly, in words: (17) and φ' = (dφ'/dt)·t
     "tisserand.result.resal-small-oscillations": "the ellipse (17), in words",
     # lines 126, 154, 190 cite (13), (15), (II), (V) by number: their coefficients
@@ -348,7 +352,10 @@ def _holds_rows_with_a_number() -> list[tuple[str, LedgerRow]]:
 
 # Terms of a printed series beyond the order its row compares, as its note says: a change
 # there is not seen by the engine (the row's kind checks through its order only).
-BEYOND_THE_ORDER = {"lecornu.result.small_p_series": "p**2/(1*2*3)"}
+BEYOND_THE_ORDER = {
+    "lecornu.result.small_p_series": "p**2/(1*2*3)",
+    "lecornu.result.half_period_root": "p**2/32*(3 - 3*gamma**2*t**2 - gamma**4*t**4)",
+}
 
 
 def _span_of(printed: str, term: str) -> tuple[int, int]:

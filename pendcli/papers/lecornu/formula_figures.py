@@ -41,6 +41,7 @@ _PANELS: tuple[tuple[str, str, str, str], ...] = (
     ("eq42_terms_in_b", "∂T/∂p of the quarter period", _K, _TIME),
     ("eq42prime_terms_in_b", "(42) with k = θ0/2", "θ0 (rad)", _TIME),
     ("area_small_angle", "θ² for sin²θ in (44)", "θ (rad)", "relative"),
+    ("composed_planes", "two plane pendulums for the conical", "first angle A (rad)", "relative"),
     ("eq50", "conical pendulum θ1, θ2", _P, _AMPLITUDE),
     ("inverse_square_length", "1/l² to first order", _P, "× a²"),
     ("eq52_as_read", "conical pendulum θ1, θ2", _P, _AMPLITUDE),
@@ -57,7 +58,8 @@ CAPTIONS = {
         "Lecornu",
         "Reference: solve_ivp (DOP853, rtol 1e-12) on Lecornu's own equations in his reduced "
         "variables τ = t√(g/a), p = b/√(ga); times in units of √(a/g). The amplitude series "
-        "against mpmath's am u; θ² for sin²θ and 1/l² against their closed forms.",
+        "against mpmath's am u; θ² for sin²θ and 1/l² against their closed forms; the two "
+        "plane pendulums of line 1094 against the bob's motion in space (l = 1 + 0.05t m).",
     ),
 }
 

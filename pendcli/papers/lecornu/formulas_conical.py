@@ -3,6 +3,8 @@
 transcribes it (:func:`~pendcli.papers.lecornu.formulas_chapter3.ledger_sides`):
 
 * line 1088, l²θ²φ' for (44)'s l² sin²θ φ' (θ² neglected beside 1);
+* line 1094, the conical pendulum as two plane pendulums (48) in fixed planes, against the
+  bob's motion in space;
 * (50), the two plane components to first order in p;
 * line 1102, 1/l² = (1/a²)(1 − 2pγt) to first order in p;
 * (52) as read (the printed form is :mod:`pendcli.papers.lecornu.formulas`' ``eq52``);
@@ -37,6 +39,8 @@ ANGLES = (0.2, 0.1, 0.05, 0.025, 0.0125)  # θ for line 1088
 RHO1, RHO2 = 1.0, 0.4  # the axes of the trace (lines 1120-1134)
 NEAR = np.linspace(0.05, 1.4, 200)  # u on the first quarter turn: x, y > 0 (the arctangent)
 TURN = np.linspace(0.0, 2 * PI, 401)
+AMPLITUDES = (0.04, 0.02, 0.01, 0.005)  # the bob's first angle, rad (line 1094)
+SPACE_A, SPACE_B = 1.0, 0.05  # l = a + bt of the motion in space (m, m/s); g the tables'
 
 
 def _p_study(residuals: Sequence[float] | Array, ref: Integrator) -> Study:
@@ -58,6 +62,64 @@ def _area_row(ref: Integrator) -> FormulaRow:
         note="(44), l² sin²θ φ' = c, against l²θ²φ' = c « pour le degré d'approximation "
         "adopté »: 1 − (right side)/(left side) = 1 − sin²θ/θ², evaluated in double "
         "precision (no integration: the floor is the arithmetic's).",
+    )
+
+
+def _in_space(g: float) -> Callable[[float, Array], Array]:
+    """The bob in space (z downward, |r| = a + bt): the tension per unit length from the
+    constraint differentiated twice, r·r'' + v·v = b² (l'' = 0)."""
+
+    def rhs(t: float, y: Array) -> Array:
+        r, v = y[:3], y[3:]
+        pull = (g * r[2] + v @ v - SPACE_B**2) / (SPACE_A + SPACE_B * t) ** 2
+        return np.concatenate([v, np.array([0.0, 0.0, g]) - pull * r])
+
+    return rhs
+
+
+def _plane_law(g: float) -> Callable[[float, Array], list[float]]:
+    """The printed law of line 1094's row (its first equation) solved for θ'' (it is linear
+    in it): y' = (θ', θ'') in one plane."""
+    ((lhs, rhs), _) = ledger_sides("result.composed_planes")
+    names = ("l", "b", "g", "theta1", "dtheta1_dt", "d2theta1_dt2")
+    law = evaluator(lhs - rhs, names)
+
+    def rhs_(t: float, y: Array) -> list[float]:
+        at = (SPACE_A + SPACE_B * t, SPACE_B, g, y[0], y[1])
+        free = law(*at, 0.0)
+        return [y[1], -free / (law(*at, 1.0) - free)]
+
+    return rhs_
+
+
+def _composed_row(ref: Integrator) -> FormulaRow:
+    """Line 1094: the angles of the rod's projections on the fixed planes xz, yz of the
+    motion in space against the printed law integrated in each plane, started alike
+    (θ1 = A at rest, θ2' = 0.6·A·√(g/a)); the largest gap over the largest angle, 4 s."""
+    from pendcli.papers.lecornu.model import constant
+
+    g = constant("g")
+    space, law, end = _in_space(g), _plane_law(g), 4.0
+    ts = np.linspace(0.0, end, 801)
+    gaps = []
+    for amp in AMPLITUDES:
+        w2 = 0.6 * amp * np.sqrt(g / SPACE_A)
+        x0, z0 = SPACE_A * np.sin(amp), SPACE_A * np.cos(amp)
+        start = [x0, 0.0, z0, SPACE_B * np.sin(amp), z0 * w2, SPACE_B * np.cos(amp)]
+        x, y, z = ref.solve(space, end, start)(ts)[:3]
+        one, two = ref.solve(law, end, [amp, 0.0])(ts)[0], ref.solve(law, end, [0.0, w2])(ts)[0]
+        angles = (np.arctan2(x, z), np.arctan2(y, z))
+        gap = np.hypot(angles[0] - one, angles[1] - two)
+        gaps.append(float(np.max(gap) / np.max(np.hypot(*angles))))
+    return formula_row(
+        "composed_planes",
+        "line 1094",
+        ledger_text("result.composed_planes"),
+        Study("first angle A = 0.04 … 0.005 rad", AMPLITUDES, tuple(gaps), 2, ref.error_bound),
+        ref,
+        note="The bob in space (l = 1 + 0.05t m, the tables' g) against two plane pendulums of "
+        "the printed law in fixed rectangular planes: the angles of the projections, "
+        "atan(x/z) and atan(y/z), their largest gap over the largest angle, 0 ≤ t ≤ 4 s.",
     )
 
 
@@ -185,6 +247,7 @@ def conical_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     each as read where it is a misprint."""
     return [
         _area_row(ref),
+        _composed_row(ref),
         _eq50_row(ref),
         _inverse_square_row(ref),
         _eq52_row(ref),

@@ -1,6 +1,7 @@
 """Lecornu, § IV « Pendule conique de longueur variable », lines 1064-1135: the references
-the printed forms of (47)-(52), the trace of the pendulum and its homothety after half a turn
-are judged against (core/printed_check).
+the printed forms of (47)-(52), the theorem of line 1094 (two plane pendulums, against the bob's
+motion in space), the trace of the pendulum and its homothety after half a turn are judged
+against (core/printed_check).
 
 Each ``reference_*`` maps ledger symbols (tables/equations/lecornu.toml [symbols]) to exact
 expressions: the angles in the two planes from (9) and (46), the O(p) solution of (48)
@@ -210,6 +211,35 @@ def reference_homothety() -> Any:
     )
 
 
+@cache
+def reference_composed_planes() -> Any:
+    """Line 1094's theorem from the bob's motion in space (lines 942-946: x'' = −Tx/l,
+    y'' = −Ty/l, z'' = −Tz/l + g, |r| = l = a + bt), not from (48): the angles θ1 = atan(x/z),
+    θ2 = atan(y/z) of the rod's projections on the fixed vertical planes xz and yz, their
+    rates along the motion (z and z' from the constraint, T from it differentiated twice:
+    T l = g z + v² − b²), the horizontal state scaled by ε (small oscillations)."""
+    import sympy as sp
+
+    a, b, g, t = real_symbols("a", "b", "g", "t")
+    x, y, dx, dy = real_symbols("X", "Y", "dX_dt", "dY_dt")
+    eps = sp.Symbol("eps_", positive=True)
+    length = a + b * t
+    z = sp.sqrt(length**2 - x**2 - y**2)
+    dz = (length * b - x * dx - y * dy) / z
+    tension = (g * z + dx**2 + dy**2 + dz**2 - b**2) / length
+    along = derivative_along({t: 1, x: dx, y: dy, dx: -tension * x / length,
+                              dy: -tension * y / length})  # fmt: skip
+    small = {x: eps * x, y: eps * y, dx: eps * dx, dy: eps * dy}
+    exact: dict[str, Any] = {"l": length}
+    for name, horizontal in (("theta1", x), ("theta2", y)):
+        angle = sp.atan(horizontal / z)
+        rate = along(angle)
+        for key, value in ((name, angle), (f"d{name}_dt", rate), (f"d2{name}_dt2", along(rate))):
+            exact[key] = value.subs(small, simultaneous=True)
+    what = "the bob's motion in space, the projections' angles, the horizontal state ~ ε"
+    return make_reference(exact, what, scale=eps, order=3)
+
+
 def reference_projection_length() -> Any:
     """Line 1096: the rod's projection on a vertical plane at the azimuth φ from it,
     l√(1 − sin²θ sin²φ), with θ small (θ -> εθ), through ε: « confondre la longueur du
@@ -255,4 +285,5 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_homothety": reference_homothety,  # lines 1128-1134
     "reference_projection_length": reference_projection_length,  # line 1096
     "reference_rotation_angle": reference_rotation_angle,  # line 1110
+    "reference_composed_planes": reference_composed_planes,  # line 1094
 }

@@ -160,6 +160,18 @@ def reference_compound() -> Any:
     )
 
 
+def reference_equivalent_length() -> Any:
+    """Line 84's « formule connue » from the compound pendulum of fixed length: about the axis
+    its moment of inertia per unit mass is l² + R² (the parallel axes), so
+    (l² + R²)θ'' + g l sin θ = 0; the simple pendulum with the same θ'' has the length
+    l' = −g sin θ/θ''."""
+    import sympy as sp
+
+    length, rg, g, theta = symbols("l", "Rg", "g", "theta")
+    d2theta = -g * length * sp.sin(theta) / (length**2 + rg**2)
+    return reference({"lp": -g * sp.sin(theta) / d2theta}, "(l² + R²)θ'' + g l sin θ = 0")
+
+
 def reference_compound_motion() -> Any:
     """Lines 92-94 against the compound pendulum itself: d/dt[(l² + R²)θ'] + g l sin θ = 0
     (moment of inertia l² + R² per unit mass, l = a + bt the distance of the centre of
@@ -256,6 +268,7 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_chain_rule": reference_chain_rule,
     "reference_motion_in_l": reference_motion_in_l,
     "reference_eq6": reference_eq6,
+    "reference_equivalent_length": reference_equivalent_length,
     "reference_compound": reference_compound,
     "reference_compound_motion": reference_compound_motion,
     "reference_small_angle": reference_small_angle,

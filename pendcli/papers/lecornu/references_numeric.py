@@ -21,6 +21,7 @@ __all__ = [
     "numbers_eq16",
     "numbers_j1_roots",
     "numbers_j2_roots",
+    "numbers_j2_roots_chopped",
     "numbers_table_amplitudes",
     "numbers_table_intervals",
     "numbers_table_j0",
@@ -64,6 +65,19 @@ def numbers_j2_roots() -> Any:
     with mpmath.workdps(_DPS):
         roots = [mpmath.besseljzero(2, k) for k in range(1, 6)]
     return _numbers(roots, "the zeros of J₂ (mpmath.besseljzero)", list(J2))
+
+
+def numbers_j2_roots_chopped() -> Any:
+    """Line 210, « Je néglige les décimales qui suivent la seconde », applied to (15): each
+    zero of J₂ (mpmath) with its decimals after the second dropped (toward zero), the value
+    the sentence says each printed root is."""
+    import mpmath
+
+    with mpmath.workdps(_DPS):
+        hundred = mpmath.mpf(100)
+        roots = [mpmath.floor(mpmath.besseljzero(2, k) * hundred) / hundred for k in range(1, 6)]
+    what = "the zeros of J₂ (mpmath.besseljzero) with the decimals after the second dropped"
+    return _numbers(roots, what, list(J2))
 
 
 def numbers_table_speeds() -> Any:
@@ -177,6 +191,7 @@ def numbers_vertical_lengths() -> Any:
 # the builders of this section, by the name the ledger cites
 REFERENCES: dict[str, Callable[[], Any]] = {
     "numbers_j2_roots": numbers_j2_roots,
+    "numbers_j2_roots_chopped": numbers_j2_roots_chopped,  # line 210
     "numbers_table_speeds": numbers_table_speeds,
     "numbers_eq16": numbers_eq16,
     "numbers_table_lengths": numbers_table_lengths,

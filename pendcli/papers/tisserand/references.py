@@ -7,8 +7,8 @@ core/printed_numeric), by the sections of the paper, and their table :data:`REFE
     p. 452, lines 96-156        the ellipse (9), (10), (16), (17): here
     p. 453-454, lines 158-206   the summary (I)-(VI) and its approximations: here
     p. 454, lines 192-202       the numerical application: :mod:`.references_numeric`
-    lines 30, 44, 152, 178-180  the sentences' own claims (the reading record):
-                                :mod:`.references_prose`
+    lines 30, 44, 128, 152,     the sentences' own claims (the reading record):
+    178-180                     :mod:`.references_prose`
 
 Each builder maps ledger symbols to exact expressions (or, for the numbers, computes them)
 from what the printed formula rests on, never from a copy of the formula the row prints.
@@ -39,6 +39,7 @@ from pendcli.papers.tisserand.references_numeric import (
 from pendcli.papers.tisserand.references_prose import (
     reference_angles_second_order,
     reference_ellipse_axes,
+    reference_projection_radius,
     reference_start_of_psi,
     reference_uniform_rotation,
 )
@@ -163,6 +164,7 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_uniform_rotation": reference_uniform_rotation,
     "reference_start_of_psi": reference_start_of_psi,
     "reference_ellipse_axes": reference_ellipse_axes,
+    "reference_projection_radius": reference_projection_radius,  # (16), line 128
     "reference_angles_second_order": reference_angles_second_order,
     # p. 454: the numerical application
     "numbers_numerical_application": numbers_numerical_application,

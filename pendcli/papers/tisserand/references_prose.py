@@ -4,6 +4,7 @@ tables/papers/tisserand.reading.toml), where no reference of the formulas serves
     line 30, 180   Resal's ellipse whose major axis turns uniformly, in the same sense as
                    the pendulum: the exact motion through the fourth order in ψ
     line 44        « Pour t = 0, on aura ψ = 0 »: (3) at ψ = 0
+    line 128       (16), ρ = lu: the radius vector of the projection, from the bob's position
     line 152       the ellipse (17): its centre, its major axis Ox', its axes 2ρ0 and 2ρ1
     line 178       « u0u1 est un terme du second ordre »
 
@@ -26,6 +27,7 @@ from pendcli.papers.tisserand.references_series import motion_series, reference_
 __all__ = [
     "reference_angles_second_order",
     "reference_ellipse_axes",
+    "reference_projection_radius",
     "reference_start_of_psi",
     "reference_uniform_rotation",
 ]
@@ -93,6 +95,19 @@ def reference_ellipse_axes() -> Reference:
         "l": (r(1, 10), r(1, 2)),
     }
     return Reference(exact, domain=domain, what="(3), (16), line 142")
+
+
+# Line 128, (16): the radius vector of the projection, from the bob's position.
+def reference_projection_radius() -> Reference:
+    """The bob at l(sin θ cos φ, sin θ sin φ, −cos θ) from the point of suspension, its
+    projection on the horizontal plane at the distance √(x² + y²) from O, the foot of the
+    vertical; u = sin θ (line 42)."""
+    import sympy as sp
+
+    length, theta, phi = ledger_symbols("l", "theta", "phi")
+    x = length * sp.sin(theta) * sp.cos(phi)
+    y = length * sp.sin(theta) * sp.sin(phi)
+    return Reference({"rho": sp.sqrt(x**2 + y**2), "u": sp.sin(theta)}, what="the bob's position")
 
 
 # Line 178, « u0u1 est un terme du second ordre »: the angles' order.
