@@ -331,8 +331,8 @@ def _node(tree: ast.AST, names: set[str]) -> Node:
     head = _head(tree)
     names.add(head) if head in _REAL_ONLY else None
     args = tree.args  # type: ignore[attr-defined]
-    if head == "Symbol":
-        name = str(_number(args[0]))
+    if head in ("Symbol", "Dummy"):
+        name = _symbol_name(tree)
         names.add(name)
         return lambda env: env[name]
     if head in ("Integer", "Rational", "Float"):
@@ -352,6 +352,18 @@ def _node(tree: ast.AST, names: set[str]) -> Node:
         function = getattr(np, _UNARY[head])
         return lambda env: function(inner(env))
     return _special(head, args, names)
+
+
+def _symbol_name(node: ast.AST) -> str:
+    """A symbol's name; a dummy's is its own (never the ledger's symbol of the same name)."""
+    head = _head(node)
+    if head not in ("Symbol", "Dummy"):
+        raise Unsupported(head)
+    name = str(_number(node.args[0]))  # type: ignore[attr-defined]
+    if head == "Symbol":
+        return name
+    index = [k.value for k in node.keywords if k.arg == "dummy_index"]  # type: ignore[attr-defined]
+    return f"\\0{name}_{_number(index[0]) if index else 0}"
 
 
 def _special(head: str, args: list[ast.AST], names: set[str]) -> Node:
@@ -388,6 +400,8 @@ def _size_node(tree: ast.AST, names: set[str]) -> Node:
         if head == "Add":
             return lambda env: sum(np.abs(p(env)) for p in parts)
         return lambda env: math.prod((np.abs(p(env)) for p in parts), start=1.0)
+    if head == "Integral":
+        return _integral(args, names, absolute=True)
     if head == "Pow" and _head(args[1]) == "Integer" and int(_number(args[1].args[0])) > 0:
         base, power = _size_node(args[0], names), int(_number(args[1].args[0]))
         return lambda env: np.abs(base(env)) ** power
@@ -396,7 +410,7 @@ def _size_node(tree: ast.AST, names: set[str]) -> Node:
 
 
 # tanh-sinh quadrature on [-1, 1]: steps h and h/2, nodes until the weights underflow
-_LEVELS = (1 / 8, 1 / 16)
+_LEVELS = (1 / 16, 1 / 32)
 
 
 @cache
@@ -411,19 +425,31 @@ def _tanh_sinh(step: float) -> tuple[Any, Any]:
     return nodes[keep], weights[keep]
 
 
-def _integral(args: list[ast.AST], names: set[str]) -> Node:
+def _integral(args: list[ast.AST], names: set[str], absolute: bool = False) -> Node:
     """A definite integral by tanh-sinh quadrature at every point at once (the ends may be
-    singular); when two step sizes differ by more than 1e-13 of the value, undecided."""
-    import numpy as np
-
+    singular; an upper end at infinity is brought to 1 by t = a + u/(1 − u)); when two step
+    sizes differ by more than 1e-13 of the value, undecided."""
     if len(args) != 2 or _head(args[1]) != "Tuple":
         raise Unsupported("a multiple integral")
     variable, low, high = args[1].args  # type: ignore[attr-defined]
-    name = str(_number(variable.args[0]))
+    name = _symbol_name(variable)
     inside: set[str] = set()
     integrand = _node(args[0], inside)
     names |= inside - {name}
-    lower, upper = _node(low, names), _node(high, names)
+    if absolute:  # the size of an integral: the integral of its integrand's absolute value
+        signed = integrand
+
+        def integrand(env: dict[str, Any]) -> Any:
+            return abs(signed(env))
+
+    lower = _node(low, names)
+    if isinstance(high, ast.Name) and high.id == "oo":
+        return _to_infinity(integrand, lower, name)
+    return _settled(integrand, lower, _node(high, names), name)
+
+
+def _settled(integrand: Node, lower: Node, upper: Node, name: str) -> Node:
+    import numpy as np
 
     def value(env: dict[str, Any]) -> Any:
         a, b = np.asarray(lower(env)), np.asarray(upper(env))
@@ -433,12 +459,29 @@ def _integral(args: list[ast.AST], names: set[str]) -> Node:
             inner = {k: np.asarray(v)[..., None] for k, v in env.items()}
             half, middle = (b - a)[..., None] / 2, (b + a)[..., None] / 2
             inner[name] = middle + half * nodes
-            results.append(np.sum(integrand(inner) * weights * half, axis=-1))
+            terms = integrand(inner) * weights * half
+            results.append(np.sum(terms, axis=-1))
+            size = np.sum(np.abs(terms), axis=-1)  # the scale a vanishing integral is on
         coarse, fine = results
-        if np.any(np.abs(fine - coarse) > 1e-13 * np.abs(fine) + 1e-300) or not np.all(
-            np.isfinite(fine)
-        ):
+        unsettled = np.abs(fine - coarse) > 1e-13 * size + 1e-300
+        if np.any(unsettled) or not np.all(np.isfinite(fine)):
             raise Unsupported("a quadrature that does not settle")
         return fine
 
     return value
+
+
+def _to_infinity(integrand: Node, lower: Node, name: str) -> Node:
+    """∫_a^∞ f(t) dt = ∫_0^1 f(a + u/(1 − u)) du/(1 − u)²."""
+    import numpy as np
+
+    def mapped(env: dict[str, Any]) -> Any:
+        u = env["\0u"]
+        inner = dict(env)
+        inner[name] = lower(env) + u / (1 - u)
+        with np.errstate(all="ignore"):
+            values = integrand(inner) / (1 - u) ** 2
+        far = np.broadcast_to(inner[name], np.shape(values)) > 1e8  # underflow of a decaying tail
+        return np.where(far & ~np.isfinite(values), 0.0, values)
+
+    return _settled(mapped, lambda env: 0.0, lambda env: 1.0, "\0u")
