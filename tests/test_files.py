@@ -325,7 +325,7 @@ def test_regen_refuses_to_write_over_an_edit_made_while_it_computed(
 ) -> None:
     """`make regen` reads the README, computes for most of a minute, then writes: an edit made
     in between (here by the compute step itself) is refused, nothing written, the edit kept."""
-    from pendcli import regression, reproduce
+    from pendcli.run import regression, reproduce
     from tools import docs
 
     page = _docs_set(tmp_path)
