@@ -131,9 +131,7 @@ def _exact(item: Item, monkeypatch: pytest.MonkeyPatch) -> tuple[bool, str]:
 def _stored_items() -> list[tuple[str, Item]]:
     out = []
     for key in ledger_papers():
-        for row_id, (_, record) in stored_rows(
-            key, ledger_references._read_by_references()
-        ).items():
+        for row_id, (_, record) in stored_rows(key, ledger_references.paper_digest(key)).items():
             if "live" in record:
                 continue
             for form, derived in row_record(row_id, record)[1].items():

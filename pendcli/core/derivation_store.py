@@ -7,7 +7,7 @@ building one reference. ``pendcli check`` derives them again and fails on any di
 
 The format (JSON, one file per paper)::
 
-    {"format": 1, "paper": "...", "tables": "<digest of the published tables and ledgers>",
+    {"format": 1, "paper": "...", "tables": "<digest of the paper's published table and ledger>",
      "rows": {"<row id>": {"inputs": "<digest of the row>", "kind": "<kind called for>",
                            "forms": {"printed": {"holds": "...", "items": [ITEM, ...]},
                                      "reading": ..., "corrected": ...}}}}

@@ -32,6 +32,7 @@ __all__ = [
     "conditional",
     "derivation_drift",
     "derivation_records",
+    "paper_digest",
     "printed_problem",
     "reference_table",
     "row_derivation",
@@ -120,7 +121,7 @@ def _printed_status(
     from pendcli.core.printed_verdict import stored_status
 
     assert row.reference is not None and row.kind is not None
-    stored = _stored(row, dict(symbols), tables)
+    stored = _stored(row, dict(symbols))
     if stored is not None:  # derived by `make regen` from these very tables
         kind, forms = stored
         return (None, kind_mismatch(row.kind, kind)) if kind != row.kind else stored_status(forms)
@@ -199,14 +200,14 @@ def use_store(on: bool) -> None:
     _printed_status.cache_clear()
 
 
-def _stored(row: LedgerRow, symbols: Mapping[str, str], tables: str) -> Any:
+def _stored(row: LedgerRow, symbols: Mapping[str, str]) -> Any:
     """The row's stored derivation (kind, forms) when the store is on and current for the
     row and the tables in use; else None (and, once per paper, a line on stderr)."""
     from pendcli.core.derivation_store import row_inputs, row_record, stored_rows
 
     if not _STORE["on"]:
         return None
-    entry = stored_rows(row.paper, tables).get(row.id)
+    entry = stored_rows(row.paper, paper_digest(row.paper)).get(row.id)
     if entry is None or entry[0] != row_inputs(row, symbols):
         _say_derived_afresh(row.paper)
         return None
@@ -270,7 +271,29 @@ def _read_by_references() -> str:
     return _DIGESTS[str(root)]
 
 
+# (tables folder, paper) -> the digest of the paper's published table and ledger
+_PAPER_DIGESTS: dict[tuple[str, str], str] = {}
+
+
+def paper_digest(paper: str) -> str:
+    """The digest of what a paper's derivations read: its published table and its ledger
+    (the store is current for a paper while these are unchanged; another paper's edit leaves
+    it current)."""
+    import hashlib
+
+    from pendcli.core.files import file_digest
+    from pendcli.core.tables import tables_dir
+
+    root = tables_dir()
+    key = (str(root), paper)
+    if key not in _PAPER_DIGESTS:
+        parts = [file_digest(root / f / f"{paper}.toml") or "" for f in ("published", "equations")]
+        _PAPER_DIGESTS[key] = hashlib.sha256("\n".join(parts).encode()).hexdigest()
+    return _PAPER_DIGESTS[key]
+
+
 def _clear_reference_caches() -> None:
+    _PAPER_DIGESTS.clear()
     _printed_status.cache_clear()
     _reference.cache_clear()
     _DIGESTS.clear()
@@ -304,7 +327,7 @@ def store_derivations(paper: Paper) -> Path:
     """Derive and write the paper's store (core/derivation_store), for the tables in use."""
     from pendcli.core.derivation_store import write_store
 
-    return write_store(paper.key, _read_by_references(), derivation_records(paper))
+    return write_store(paper.key, paper_digest(paper.key), derivation_records(paper))
 
 
 def derivation_drift(paper: Paper) -> list[str]:
@@ -312,7 +335,7 @@ def derivation_drift(paper: Paper) -> list[str]:
     (its reference named), empty when they agree."""
     from pendcli.core.derivation_store import stored_rows
 
-    stored = stored_rows(paper.key, _read_by_references())
+    stored = stored_rows(paper.key, paper_digest(paper.key))
     if not stored and paper.references is not None:
         return [f"{paper.key}: no stored derivations for these tables (run `make regen`)"]
     fresh = derivation_records(paper)
