@@ -291,6 +291,7 @@ def test_the_threshold_decides_explained(rows):
 # --- the CLI -------------------------------------------------------------------------------
 
 
+@pytest.mark.usefixtures("shared_claims")
 def test_cli_json_shape():
     code, out, _ = invoke("explain", "-p", "lecornu", "-f", "json")
     assert code == 0
@@ -303,6 +304,7 @@ def test_cli_json_shape():
     assert by_id["lecornu.mean_pendulum_coefficient"]["steps"][0][-1] == "printed 6,47"
 
 
+@pytest.mark.usefixtures("shared_claims")
 def test_cli_one_claim_and_formats():
     code, out, _ = invoke("explain", "lecornu.x_bound", "-f", "json")
     assert code == 0 and [e["id"] for e in json.loads(out)["explanations"]] == ["lecornu.x_bound"]
@@ -321,6 +323,7 @@ def test_cli_one_claim_and_formats():
         ("explain", "-p", "nowhere"),
     ],
 )
+@pytest.mark.usefixtures("shared_claims")
 def test_cli_bad_claim_is_one_line(args):
     code, _, err = invoke(*args)
     assert_clean_error(code, err)
