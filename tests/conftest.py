@@ -180,6 +180,19 @@ def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
     return str(tmp_path_factory.mktemp("shared-result-cache"))
 
 
+@pytest.fixture
+def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
+    """For the tests of a command's output form (its shape, formats, one-line errors): the
+    registry's ``evaluate`` serves the committed tables' claims computed once per process
+    (tests/evaluated.py), so the command runs whole but does not compute its paper's claims
+    again for each such test. No test of a computation uses it."""
+    from evaluated import committed_claims
+
+    from pendcli.papers import registry
+
+    monkeypatch.setattr(registry, "evaluate", lambda key: list(committed_claims(key)))
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     members: dict[str, list[pytest.Item]] = defaultdict(list)

@@ -21,6 +21,7 @@ import re
 from fractions import Fraction
 
 import pytest
+from evaluated import committed_claims, committed_formulas
 
 from pendcli.core.causes import (
     CAUSES,
@@ -39,17 +40,17 @@ from pendcli.core.claims import (
 )
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table
-from pendcli.papers.registry import PAPERS, evaluate, formula_checks, paper
+from pendcli.papers.registry import PAPERS, paper
 
 
 @pytest.fixture(scope="module")
 def claims() -> dict[str, dict[str, ClaimRow]]:
-    return {key: {r.id: r for r in evaluate(key)} for key in PAPERS}
+    return {key: {r.id: r for r in committed_claims(key)} for key in PAPERS}
 
 
 @pytest.fixture(scope="module")
 def formulas() -> dict[str, dict[str, FormulaRow]]:
-    return {key: {r.id: r for r in formula_checks(key)} for key in PAPERS}
+    return {key: {r.id: r for r in committed_formulas(key)} for key in PAPERS}
 
 
 def _procedures(key: str) -> dict[str, Procedure]:
@@ -349,9 +350,9 @@ def test_with_causes_refuses_unknown_rows_and_causes():
 def test_a_number_that_agrees_with_the_truth_has_no_cause() -> None:
     """A cause says why a printed number disagrees: one that agrees has none (the rule of
     tables/README.md), though its note may say how he rounded it."""
-    from pendcli.papers.registry import PAPERS, evaluate
+    from pendcli.papers.registry import PAPERS
 
     with_cause = [
-        r.id for key in PAPERS for r in evaluate(key) if r.verdict == "agrees" and r.cause
+        r.id for key in PAPERS for r in committed_claims(key) if r.verdict == "agrees" and r.cause
     ]
     assert with_cause == []

@@ -14,11 +14,11 @@ from fractions import Fraction
 import mpmath
 import numpy as np
 import pytest
+from evaluated import committed_claims, committed_formulas
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table
 from pendcli.papers.charbonnier import claims, explore, figures, model
-from pendcli.papers.registry import evaluate, formula_checks
 
 CLAIMS = load_paper_table("charbonnier").claims
 
@@ -64,7 +64,7 @@ def test_printed_entry_equals_independent_quadrature(claim):
     n = int(claim.id.rsplit(".n", 1)[1])
     reference = mp_integral(n, math.pi)
     assert float(abs(claim.number.value - reference) / reference) < 1e-15  # the print holds
-    rows = {r.id: r for r in evaluate("charbonnier")}
+    rows = {r.id: r for r in committed_claims("charbonnier")}
     assert rows[claim.id].verdict == "agrees"
     assert float(abs(rows[claim.id].recomputed - reference) / reference) < 3e-16
 
@@ -237,7 +237,7 @@ def test_log_gamma_ratio_series_against_mpmath_loggamma(m):
 
 @pytest.fixture(scope="module")
 def formula_rows():
-    return formula_checks("charbonnier")
+    return committed_formulas("charbonnier")
 
 
 def test_closed_form_formula_rows_hold(formula_rows):

@@ -9,11 +9,11 @@ import dataclasses
 
 import pytest
 import sympy as sp
+from evaluated import committed_formulas
 from ledgers import committed_ledger, committed_row
 from mutations import judged_after_edit
 
 from pendcli.core.check_kinds import KINDS, kind_called_for, kind_problem
-from pendcli.core.claims import shared_formula_rows
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import measured, reference_table
 from pendcli.core.printed import Formula
@@ -105,9 +105,8 @@ def test_the_formula_checks_a_row_names_agree_with_its_status() -> None:
     later work carries the slip (tables/README.md, Blame), not which form a check measures."""
     for key in ("tisserand", "lecornu", "charbonnier"):
         rows = [r for r in committed_ledger(key).rows if r.measured]
-        formula_checks = paper(key).formula_checks
-        assert formula_checks is not None
-        formulas = {f.id: f for f in shared_formula_rows(key, formula_checks)}
+        assert paper(key).formula_checks is not None
+        formulas = {f.id: f for f in committed_formulas(key)}  # once per process
         for row in rows:
             verdicts = {formulas[f"{key}.{name}"].verdict for name in row.measured or ()}
             if row.status == "holds":

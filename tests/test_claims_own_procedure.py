@@ -19,6 +19,7 @@ from pathlib import Path
 
 import mpmath
 import pytest
+from evaluated import committed_claims, committed_formulas
 
 from pendcli.core.causes import Judged, Procedure, own_verdicts, rule_cause
 from pendcli.core.claims import ClaimRow, cause_tally, with_own_verdicts
@@ -26,14 +27,14 @@ from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import parse_printed
 from pendcli.core.tables import load_paper_table
 from pendcli.core.vocabulary import SLIP_CAUSES
-from pendcli.papers.registry import PAPERS, evaluate, formula_checks, paper
+from pendcli.papers.registry import PAPERS, paper
 
 README = Path(__file__).resolve().parent.parent / "docs" / "findings.md"
 
 
 @pytest.fixture(scope="module")
 def claims() -> dict[str, dict[str, ClaimRow]]:
-    return {key: {r.id: r for r in evaluate(key)} for key in PAPERS}
+    return {key: {r.id: r for r in committed_claims(key)} for key in PAPERS}
 
 
 # --- the six numbers, against an independent recomputation ------------------------------
@@ -138,7 +139,7 @@ def test_the_slips_and_the_numbers_that_carry_one():
     """Who slipped: 0,94 and +0,072 are his own slips; the intervals from 0,94 and
     -3,45 carry one (-3,45 is faithful only to digits of +0,072 he did not print); -1,27,
     whose inputs carry none, is a slip of his own."""
-    rows = {r.id.split(".", 1)[1]: r for r in evaluate("lecornu")}
+    rows = {r.id.split(".", 1)[1]: r for r in committed_claims("lecornu")}
     carried = {k for k, r in rows.items() if r.cause == "propagated"}
     assert carried == {"example.interval.1", "example.interval.2", "deviation.4"}
     assert rows["deviation.4"].cause_from == ("lecornu.j0_at_j2_zeros.2",)
@@ -172,7 +173,7 @@ def test_the_rule_tells_a_rounded_input_from_a_slip():
 
 def test_a_cause_written_for_a_number_with_a_procedure_is_refused():
     table = load_paper_table("lecornu")
-    rows = evaluate("lecornu")
+    rows = committed_claims("lecornu")
     entries = tuple(
         dataclasses.replace(c, cause="propagated", cause_from=("lecornu.example.length.3",))
         if c.id == "lecornu.example.time.3"
@@ -190,7 +191,7 @@ def test_a_cause_written_for_a_number_with_a_procedure_is_refused():
 
 @pytest.mark.parametrize("key", PAPERS)
 def test_no_propagated_row_names_a_source_without_a_slip(claims, key):
-    formulas = {r.id: r for r in formula_checks(key)}
+    formulas = {r.id: r for r in committed_formulas(key)}
     for rows in (claims[key], formulas):
         for row in rows.values():
             if row.cause != "propagated":

@@ -11,10 +11,13 @@ from pathlib import Path
 
 import pytest
 from cli_helpers import invoke
+from evaluated import committed_formulas
+from ledgers import committed_ledger
 
 from pendcli.core import schema
 from pendcli.core.cache import rows_from_json, rows_to_json
-from pendcli.core.ledger import Evaluated, evaluate, load_ledger
+from pendcli.core.claims import sharing_formula_rows
+from pendcli.core.ledger import Evaluated, evaluate
 from pendcli.core.rows import EquationRow, equation_notes
 from pendcli.output.json import to_json
 from pendcli.papers.registry import ledger_papers, paper
@@ -30,10 +33,13 @@ def _toml(key: str) -> dict[str, dict[str, object]]:
 
 
 def _json_row(key: str, row_id: str) -> dict[str, object]:
-    """Row ``row_id`` evaluated alone (a slice of one row of its ledger), as JSON prints it."""
-    rows = load_ledger(key).rows
+    """Row ``row_id`` evaluated alone (a slice of one row of its ledger), as JSON prints it.
+    The paper's formula checks (which its measured rows cite) are lent as a reproduction
+    lends them to its ledger's parts, computed once per process (tests/evaluated.py)."""
+    rows = committed_ledger(key).rows
     index = [r.id for r in rows].index(row_id)
-    (item,) = evaluate(paper(key), part=(index, len(rows)))
+    with sharing_formula_rows(key, list(committed_formulas(key))):
+        (item,) = evaluate(paper(key), part=(index, len(rows)))
     assert item.problem is None
     document = json.loads(to_json({"equations": [item.output_row().as_dict()]}))
     assert schema.check_row(schema.DOCUMENT["equations"], document["equations"][0]) == []
@@ -45,7 +51,7 @@ def test_the_ledgers_words_are_their_own_fields(key: str) -> None:
     """For every committed row: ``note`` is exactly the ledger's note, the reading's and the
     correction's prose are fields, and ``against`` names the row's reference."""
     entries = _toml(key)
-    for row in load_ledger(key).rows:
+    for row in committed_ledger(key).rows:
         out = Evaluated(row, None, None).output_row()
         entry = entries[row.id]
         assert out.note == entry.get("note", ""), row.id

@@ -16,11 +16,11 @@ from fractions import Fraction
 import mpmath
 import pytest
 from cli_helpers import assert_clean_error, invoke
+from evaluated import committed_claims
 
 from pendcli.core import explain as ex
 from pendcli.core.tables import load_paper_table
 from pendcli.papers.registry import PAPERS, explanations
-from pendcli.papers.registry import evaluate as evaluate_paper
 
 F = Fraction
 
@@ -34,7 +34,7 @@ def _decimal(x: Fraction, places: int, mode: str) -> Fraction:
 def rows() -> dict[str, ex.ExplainedRow]:
     out = {}
     for key in PAPERS:
-        verdicts = {r.id: (r.verdict, r.cause, r.published) for r in evaluate_paper(key)}
+        verdicts = {r.id: (r.verdict, r.cause, r.published) for r in committed_claims(key)}
         out |= {r.id: r for r in ex.explain_rows(key, explanations(key), verdicts)}
     return out
 
@@ -260,7 +260,7 @@ def test_random_targets_keep_size_and_sign():
 
 @pytest.mark.parametrize("key", PAPERS)
 def test_every_row_that_does_not_agree_has_an_explanation_or_a_stated_search(rows, key):
-    wrong = [r.id for r in evaluate_paper(key) if r.verdict != "agrees"]
+    wrong = [r.id for r in committed_claims(key) if r.verdict != "agrees"]
     for claim_id in wrong:
         row = rows[claim_id]
         assert row.explanation is not None, f"{claim_id}: no computation declared"
@@ -291,6 +291,7 @@ def test_the_threshold_decides_explained(rows):
 # --- the CLI -------------------------------------------------------------------------------
 
 
+@pytest.mark.usefixtures("shared_claims")
 def test_cli_json_shape():
     code, out, _ = invoke("explain", "-p", "lecornu", "-f", "json")
     assert code == 0
@@ -303,6 +304,7 @@ def test_cli_json_shape():
     assert by_id["lecornu.mean_pendulum_coefficient"]["steps"][0][-1] == "printed 6,47"
 
 
+@pytest.mark.usefixtures("shared_claims")
 def test_cli_one_claim_and_formats():
     code, out, _ = invoke("explain", "lecornu.x_bound", "-f", "json")
     assert code == 0 and [e["id"] for e in json.loads(out)["explanations"]] == ["lecornu.x_bound"]
@@ -321,6 +323,7 @@ def test_cli_one_claim_and_formats():
         ("explain", "-p", "nowhere"),
     ],
 )
+@pytest.mark.usefixtures("shared_claims")
 def test_cli_bad_claim_is_one_line(args):
     code, _, err = invoke(*args)
     assert_clean_error(code, err)

@@ -13,6 +13,7 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
+from evaluated import committed_formulas
 
 from pendcli.core import formula_engine as engine
 from pendcli.core import formula_plots as plots
@@ -29,11 +30,9 @@ TIGHT = engine.Integrator(rtol=1e-13, atol=1e-15)
 
 @pytest.fixture(scope="module")
 def rows():
-    return {
-        "lecornu": fle.formula_checks(),
-        "tisserand": fti.formula_checks(),
-        "charbonnier": fch.formula_checks(),
-    }
+    # the registry's checks (each paper's formula_checks()), shared with the other files that
+    # read them; test_deterministic below computes them again and compares
+    return {key: committed_formulas(key) for key in ("lecornu", "tisserand", "charbonnier")}
 
 
 def by_id(rows) -> dict:
@@ -404,7 +403,7 @@ def test_lecornu_reference_second_tolerance():
     """DOP853 at rtol 1e-13 moves no residual by more than the stated error bound."""
     fle.event_times.cache_clear()
     _same_residuals(
-        fle.formula_checks(),
+        committed_formulas("lecornu"),  # the default integrator's, computed once per process
         fle.formula_checks(TIGHT),
         engine.DEFAULT_INTEGRATOR.error_bound,
     )

@@ -13,9 +13,9 @@ from html import unescape
 from pathlib import Path
 
 import pytest
+from ledgers import committed_ledger
 from markupsafe import escape
 
-from pendcli.core.ledger import load_ledger
 from pendcli.core.numbers import edition_text
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.output.html.graph import layered_graph
@@ -194,7 +194,7 @@ def edition_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, ob
          "status": r.status, "wrong_term": r.wrong_term, "note": r.note or "",
          "lines": r.lines, "quote": r.quote, "reading": r.reading, "corrected": r.corrected,
          "printed": r.printed}
-        for r in load_ledger(paper).rows
+        for r in committed_ledger(paper).rows
     ]  # fmt: skip
     return claims, equations
 

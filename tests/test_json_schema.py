@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 from cli_helpers import invoke
+from evaluated import committed_claims, committed_formulas
 
 from pendcli.core import schema
 from pendcli.core.claims import ClaimRow, FormulaRow
@@ -113,14 +114,13 @@ def test_docs_schema_section_is_generated_from_the_schema():
 
 
 def test_every_disagreement_is_explained():
-    """A verdict other than `agrees` carries a note; a failing formula says what is right."""
-    from pendcli.run.reproduce import reproduce_all
-
-    result = reproduce_all(PAPERS, formulas=True)
-    for row in result.claim_dicts():
+    """A verdict other than `agrees` carries a note; a failing formula says what is right.
+    The rows `reproduce` computes (the registry's evaluate and formula_checks), computed once
+    per process for the tests that read them (tests/evaluated.py)."""
+    for row in (r.as_dict() for key in PAPERS for r in committed_claims(key)):
         if row["verdict"] != "agrees":
             assert len(str(row["note"])) > 20, row["id"]
-    for row in result.formula_dicts():
+    for row in (r.as_dict() for key in PAPERS for r in committed_formulas(key)):
         if row["verdict"] == "fails":
             assert row["recomputed"] != row["published"], row["id"]
             assert len(str(row["note"])) > 20, row["id"]

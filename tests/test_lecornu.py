@@ -20,12 +20,12 @@ import mpmath
 import numpy as np
 import pytest
 from cli_helpers import assert_clean_error, invoke
+from evaluated import committed_claims
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.tables import load_paper_table, tables_dir
 from pendcli.core.verdict import judge
 from pendcli.papers.lecornu import claims, explore, figures, model
-from pendcli.papers.registry import evaluate
 
 TABLE = load_paper_table("lecornu")
 CLAIMS = {c.id: c for c in TABLE.claims}
@@ -221,7 +221,7 @@ def references() -> dict[str, tuple[float, float]]:
 
 @pytest.fixture(scope="module")
 def rows():
-    return {r.id: r for r in evaluate("lecornu")}
+    return {r.id: r for r in committed_claims("lecornu")}
 
 
 # --- every claim --------------------------------------------------------------------------

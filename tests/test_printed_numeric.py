@@ -14,6 +14,7 @@ from pathlib import Path
 
 import mpmath
 import pytest
+from ledgers import committed_ledger
 from mutations import altered_tables
 
 from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
@@ -164,8 +165,9 @@ def test_a_printed_number_that_is_not_the_published_claims_is_refused() -> None:
 # --- the ledger's numeric rows ---------------------------------------------------------------
 
 
-def _rows(root: Path = TABLES) -> dict[str, LedgerRow]:
-    return {r.id: r for r in load_ledger("lecornu", root).rows}
+def _rows() -> dict[str, LedgerRow]:
+    """The committed ledger's rows (loaded once per process: tests/ledgers.py)."""
+    return {r.id: r for r in committed_ledger("lecornu").rows}
 
 
 @pytest.mark.parametrize(("row_id", "reference"), NUMERIC_ROWS.items())
@@ -174,7 +176,7 @@ def test_each_numeric_row_has_its_reference_and_its_status_computed(
 ) -> None:
     row = _rows()[row_id]
     assert row.reference == reference
-    symbols = load_ledger("lecornu", TABLES).symbols_for(row)
+    symbols = committed_ledger("lecornu").symbols_for(row)
     computed, problem = verify_printed(row, symbols, LECORNU)
     assert problem is None, problem
     assert computed is not None and computed.startswith(f"{row.status}: the printed numbers")
@@ -299,8 +301,12 @@ def test_a_fails_row_set_to_its_correction_is_refused(
 TISSERAND_LEDGER = "equations/tisserand.toml"
 
 
-def _verified_in(paper: str, row_id: str, root: Path = TABLES) -> tuple[str | None, str | None]:
-    ledger = load_ledger(paper, root)
+def _verified_in(
+    paper: str, row_id: str, root: Path | None = None
+) -> tuple[str | None, str | None]:
+    """The row's computed status and problem, in ``root``'s ledger (default the committed one,
+    loaded once per process)."""
+    ledger = committed_ledger(paper) if root is None else load_ledger(paper, root)
     row = next(r for r in ledger.rows if r.id == row_id)
     return verify_printed(row, ledger.symbols_for(row), paper_named(paper).references())
 
@@ -331,7 +337,7 @@ def test_tisserands_amplitudes_in_minutes_give_none_of_his_coefficients() -> Non
     computed, _ = _verified_in("tisserand", "tisserand.result.numerical-application")
     assert computed is not None and computed.startswith("holds:")
     assert "1°7'33'' agrees" in computed and "2'42'' agrees" in computed
-    ledger = load_ledger("tisserand")
+    ledger = committed_ledger("tisserand")
     row = next(r for r in ledger.rows if r.id == "tisserand.result.numerical-application")
     assert [i for i, _ in row.readings] == ["degree-as-prime"]
     unread = dataclasses.replace(row, readings=())

@@ -14,13 +14,13 @@ import mpmath
 import numpy as np
 import pytest
 from cli_helpers import assert_clean_error, invoke, run_cli
+from evaluated import committed_claims
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import parse_printed
 from pendcli.core.tables import load_paper_table
 from pendcli.core.verdict import judge
 from pendcli.numerics.spherical import exact_conical
-from pendcli.papers.registry import evaluate
 from pendcli.papers.tisserand import claims, explore, figures, model, units
 
 CLAIMS = load_paper_table("tisserand").claims
@@ -131,7 +131,7 @@ def example_reference():
 
 @pytest.fixture(scope="module")
 def rows():
-    return {r.id: r for r in evaluate("tisserand")}
+    return {r.id: r for r in committed_claims("tisserand")}
 
 
 # ------------------------------------------------------------ the claims

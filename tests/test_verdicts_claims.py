@@ -5,18 +5,18 @@ from __future__ import annotations
 
 import mpmath
 import pytest
+from evaluated import committed_claims
 
 from pendcli.core.causes import Judged, Procedure, own_verdicts
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import parse_printed
-from pendcli.papers.registry import evaluate
 
 B, LENGTH = "0.35", "1"
 
 
 @pytest.fixture(scope="module")
 def lecornu_across_g():  # type: ignore[no-untyped-def]
-    return {r.id: r for r in evaluate("lecornu")}
+    return {r.id: r for r in committed_claims("lecornu")}
 
 
 def _time_3(g: mpmath.mpf) -> mpmath.mpf:

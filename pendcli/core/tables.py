@@ -155,7 +155,10 @@ def tables_dir() -> Path:
     override = os.environ.get("PENDCLI_TABLES")
     if override:
         return Path(override)
-    return Path(__file__).resolve().parent.parent / "_tables"
+    return _PACKAGE_TABLES
+
+
+_PACKAGE_TABLES = Path(__file__).resolve().parent.parent / "_tables"
 
 
 # (paper, constant) -> the value put in place of the table's while a verdict is computed
@@ -352,13 +355,20 @@ def load_paper_table(key: str, root: Path | None = None) -> PaperTable:
 
     Tables are read once per process; :func:`clear_table_cache` forgets them.
     """
-    return _cached_table(key, (root or tables_dir()).resolve())
+    return _cached_table(key, _resolved(str(root or tables_dir())))
+
+
+@cache  # a model reads its printed numbers through here in its inner loops (60,000 calls)
+def _resolved(root: str) -> Path:
+    """``root`` with every symlink resolved (forgotten with the tables)."""
+    return Path(root).resolve()
 
 
 def clear_table_cache() -> None:
     """Forget every table read (after a table file or ``$PENDCLI_TABLES`` changes), and what
     was computed from them (the ledger's references, which may read the published numbers)."""
     _cached_table.cache_clear()
+    _resolved.cache_clear()
     for clear in _DEPENDENT_CACHES:
         clear()
 

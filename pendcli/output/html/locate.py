@@ -12,6 +12,7 @@ from __future__ import annotations
 import itertools
 import re
 from collections.abc import Sequence
+from functools import lru_cache
 from typing import TYPE_CHECKING
 
 from pendcli.output.html.rows import Row, lines_of, quoted_words, text_of
@@ -224,10 +225,16 @@ def lines_region(text: str, row: Row) -> tuple[int, int] | None:
     lines = lines_of(row)
     if lines is None:
         return None
-    starts = [0, *(m.end() for m in re.finditer("\n", text))]
+    starts = _line_starts(text)
     first, last = lines
     end = starts[last] - 1 if last < len(starts) else len(text)
     return starts[first - 1], end
+
+
+@lru_cache(maxsize=8)  # a page asks for each of its rows' lines in the same text
+def _line_starts(text: str) -> tuple[int, ...]:
+    """The offset of each line's start in ``text``."""
+    return (0, *(m.end() for m in re.finditer("\n", text)))
 
 
 def line_of(text: str, at: int) -> int:
