@@ -43,6 +43,8 @@ from timing import (  # noqa: E402, F401
 SLOW_FAMILIES = {
     "tests/test_derivation_store.py::test_float64_decides_only_as_*": "every stored item "
     "judged by the exact engine too",
+    "tests/test_derivation_store.py::test_a_run_says_once_*": "Tisserand's ledger derived "
+    "afresh, in a process",
     "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
     "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",

@@ -212,3 +212,20 @@ def test_an_integral_is_integrated_and_compared() -> None:
     assert float_verdict.quick_verdict(_item(integral - sp.Float(str(exact), 30)))[0] is True
     ok, _ = float_verdict.quick_verdict(_item(integral - sp.Float(str(exact), 30) * 1.001))
     assert ok is False
+
+
+def test_a_run_says_once_that_it_derives_afresh(tables: Path) -> None:
+    """The workers a run forks inherit that the line was said: one line, not one per worker."""
+    import os
+    import subprocess
+    import sys
+
+    ledger_file = tables / "equations" / "tisserand.toml"
+    ledger_file.write_text(ledger_file.read_text() + "\n# an edit\n")
+    env = {**os.environ, "PENDCLI_TABLES": str(tables), "PENDCLI_CACHE": "off", "PENDCLI_JOBS": "2"}
+    out = subprocess.run(
+        [sys.executable, "-m", "pendcli", "equations", "-p", "tisserand", "-f", "json"],
+        capture_output=True, text=True, env=env,
+    )  # fmt: skip
+    assert out.returncode == 0, out.stderr
+    assert out.stderr.count("derived afresh") == 1

@@ -37,6 +37,7 @@ __all__ = [
     "reference_table",
     "row_derivation",
     "row_printed_status",
+    "say_if_derived_afresh",
     "store_derivations",
     "use_store",
     "verify_printed",
@@ -217,6 +218,17 @@ def _stored(row: LedgerRow, symbols: Mapping[str, str]) -> Any:
 
 
 _SAID: set[str] = set()
+
+
+def say_if_derived_afresh(papers: list[Paper]) -> None:
+    """For each of ``papers`` whose stored derivations are not for the tables in use, the one
+    line on stderr that its ledger is derived afresh (a run says it before it forks)."""
+    from pendcli.core.derivation_store import stored_rows
+
+    for paper in papers:
+        stale = paper.references is not None and not stored_rows(paper.key, paper_digest(paper.key))
+        if _STORE["on"] and stale:
+            _say_derived_afresh(paper.key)
 
 
 def _say_derived_afresh(paper: str) -> None:
