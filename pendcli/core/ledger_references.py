@@ -37,7 +37,8 @@ __all__ = [
     "reference_table",
     "row_derivation",
     "row_printed_status",
-    "say_if_derived_afresh",
+    "say_derived_afresh",
+    "stale_ledgers",
     "store_derivations",
     "use_store",
     "verify_printed",
@@ -220,15 +221,32 @@ def _stored(row: LedgerRow, symbols: Mapping[str, str]) -> Any:
 _SAID: set[str] = set()
 
 
-def say_if_derived_afresh(papers: list[Paper]) -> None:
-    """For each of ``papers`` whose stored derivations are not for the tables in use, the one
-    line on stderr that its ledger is derived afresh (a run says it before it forks)."""
+def stale_ledgers(papers: list[Paper]) -> list[str]:
+    """Those of ``papers`` whose stored derivations are not for the tables in use, marked as
+    said (a run's forked workers inherit it and stay quiet): the run says it once, at its end,
+    with :func:`say_derived_afresh`, and not at all when it fails."""
     from pendcli.core.derivation_store import stored_rows
+    from pendcli.core.ledger import load_ledger
 
+    stale = []
     for paper in papers:
-        stale = paper.references is not None and not stored_rows(paper.key, paper_digest(paper.key))
-        if _STORE["on"] and stale:
-            _say_derived_afresh(paper.key)
+        if not _STORE["on"] or paper.references is None or paper.key in _SAID:
+            continue
+        try:  # a ledger that does not load is the run's one-line error, said by the run
+            load_ledger(paper.key)  # (parsed here once: the forked workers inherit it)
+            if not stored_rows(paper.key, paper_digest(paper.key)):
+                stale.append(paper.key)
+        except (PendcliError, OSError):
+            continue
+    _SAID.update(stale)
+    return stale
+
+
+def say_derived_afresh(keys: list[str]) -> None:
+    """The line, once per ledger, that it was derived afresh (slower; ``make regen``)."""
+    for key in keys:
+        _SAID.discard(key)
+        _say_derived_afresh(key)
 
 
 def _say_derived_afresh(paper: str) -> None:

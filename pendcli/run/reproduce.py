@@ -249,12 +249,12 @@ def _computed(
     """The steps run, shared by this process and the forked workers (reproduce_all), and
     gathered into one value per cached unit: a ledger's parts back in its order."""
     from pendcli.core.console import progress_bar, status_line
-    from pendcli.core.ledger_references import say_if_derived_afresh
+    from pendcli.core.ledger_references import say_derived_afresh, stale_ledgers
     from pendcli.core.workers import ForkedWorkers, counting_rows, job_count
     from pendcli.papers.registry import paper
 
-    # said here, once, before the workers fork (they inherit that it was said)
-    say_if_derived_afresh([paper(k) for k in sorted({k for k, w in steps if "equations" in w})])
+    # found before the workers fork (they inherit that it is said), said once at the end
+    stale = stale_ledgers([paper(k) for k in sorted({k for k, w in steps if "equations" in w})])
 
     workers = job_count(jobs, len(steps)) - 1
     if workers:
@@ -279,6 +279,7 @@ def _computed(
         computed[key, "equations"] = [
             row for _, rows in sorted(parts, key=lambda p: p[0]) for row in rows
         ]
+    say_derived_afresh(stale)
     return computed
 
 
