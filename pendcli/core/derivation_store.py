@@ -146,9 +146,20 @@ def _item(where: str, raw: Any) -> Item:
     if order is not None and not isinstance(order, int):
         raise PendcliError(f"{where}: a stored order must be an integer")
     where_shown, strict, why = str(raw.get("where", "")), bool(raw.get("strict")), raw.get("why")
+    rooted = _rooted(where, raw.get("rooted"))
     return Item(
-        raw["call"], where_shown, None, scale, order, domain, strict, str(why or ""), text=text
-    )
+        raw["call"], where_shown, None, scale, order, domain, strict, str(why or ""),
+        text=text, rooted=rooted,
+    )  # fmt: skip
+
+
+def _rooted(where: str, raw: Any) -> tuple[str, int] | None:
+    if raw is None:
+        return None
+    ok = isinstance(raw, list) and len(raw) == 2 and isinstance(raw[0], str)
+    if not ok or not isinstance(raw[1], int) or not 1 < raw[1] <= 12:
+        raise PendcliError(f"{where}: 'rooted' must be [an expression, a degree in 2..12]")
+    return raw[0], raw[1]
 
 
 def item_record(item: Item) -> dict[str, Any]:
@@ -173,6 +184,7 @@ def item_record(item: Item) -> dict[str, Any]:
         "domain": {k: [text(low), text(high)] for k, (low, high) in sorted(item.domain.items())},
         "strict": item.strict,
         "why": item.why,
+        **({"rooted": list(item.rooted)} if item.rooted else {}),
     }
 
 

@@ -58,7 +58,8 @@ class Item:
     ``domain``: as the reference's (a series' variable, the order it is compared through,
     each symbol's range for the random points); ``strict``: a relation's ``<``/``>``;
     ``why``: a refused item's reason; ``live``: a rounded item's verdict, computed from the
-    live reference."""
+    live reference; ``rooted``: a series in a root t of its scale, its residual in t and the
+    root's degree (what float64 expands; the exact engine rewrites ``expr`` alike)."""
 
     call: str
     where: str
@@ -70,6 +71,8 @@ class Item:
     why: str = ""
     live: Callable[[], tuple[bool, str]] | None = field(default=None, compare=False)
     text: str | None = None
+    # a series entering through s**(p/q): (the residual in t = s**(1/q), as srepr; q)
+    rooted: tuple[str, int] | None = None
 
     def __post_init__(self) -> None:
         if self.call not in CALLS:

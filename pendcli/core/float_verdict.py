@@ -56,6 +56,8 @@ class Item(Protocol):
     def order(self) -> int | None: ...
     @property
     def domain(self) -> Mapping[str, tuple[Any, Any]]: ...
+    @property
+    def rooted(self) -> tuple[str, int] | None: ...
 
 
 __all__ = ["CIRCLE", "FAILS", "HOLDS", "POINTS", "compile_text", "quick_verdict"]
@@ -65,6 +67,7 @@ FAILS = 1e-6
 POINTS = 8
 CIRCLE = 64
 _DEFAULT_DOMAIN = (Fraction(1, 10), Fraction(1, 2))
+_DUMMY = "\\0"  # a dummy's name starts so: never a symbol of the ledger
 
 Verdict = tuple[bool, str]
 
@@ -84,7 +87,7 @@ def quick_verdict(item: Item) -> Verdict | None:
         if item.scale is not None and item.order is not None:
             return _series(item, compiled)
         return _identity(item, compiled)
-    except (Unsupported, ArithmeticError, ValueError, TypeError):
+    except (Unsupported, ArithmeticError, ValueError, TypeError, RecursionError):
         return None
 
 
@@ -174,56 +177,118 @@ def _relation(item: Item, compiled: Compiled) -> Verdict | None:
 
 
 def _series(item: Item, compiled: Compiled) -> Verdict | None:
-    import numpy as np
 
     scale = str(item.scale)
-    order = item.order
-    assert order is not None
+    assert item.order is not None
+    variable, branch = scale, 1
+    if item.rooted is not None:  # s = t**q: a Laurent series in t, its terms below t**(q n)
+        compiled, branch = compile_text(item.rooted[0]), item.rooted[1]
+        roots_of = [n for n in compiled.names if n.startswith(_DUMMY + "root_")]
+        if len(roots_of) != 1:
+            return None
+        variable = roots_of[0]
+    order = branch * item.order
     if compiled.names & _REAL_ONLY:
         return None
-    others = sorted(compiled.names - {scale} - _REAL_ONLY)
-    high = float(_domain(item, scale)[1])
-    radii = (min(high, 0.5), min(high, 0.5) / 2)
-    roots = np.exp(2j * np.pi * np.arange(CIRCLE) / CIRCLE)
-    powers = np.fft.fftfreq(CIRCLE, 1 / CIRCLE).astype(int)  # 0, 1, …, -2, -1
+    others = sorted(compiled.names - {variable} - _REAL_ONLY)
+    high = min(float(_domain(item, scale)[1]) ** (1 / branch), 0.5)
     failing = None
     for point in _points(item, others, 3 if others else 1):
-        coefficients, sizes = [], []
-        for radius in radii:
-            env = {n: np.full(CIRCLE, float(point[n]), dtype=complex) for n in others}
-            env[scale] = radius * roots
-            value = compiled.value(env, points=CIRCLE)
-            size = compiled.size(env, points=CIRCLE)
-            if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
+        # two circles; when they decide nothing (a singularity near the larger one: slow
+        # decay, aliasing), two four times smaller
+        for radii in ((high, high / 2), (high / 4, high / 8)):
+            found = _on_circles(compiled, variable, others, point, radii)
+            if found is None:
                 return None
-            coefficients.append(np.fft.fft(value) / CIRCLE / radius ** powers.astype(float))
-            sizes.append(float(np.max(size)))
-        below = powers < order
-        for a, s, r in zip(coefficients, sizes, radii, strict=True):
-            contribution = np.abs(a[below]) * r ** powers[below].astype(float)
-            if np.any(contribution > HOLDS * s):
+            coefficients, sizes = found
+            if _vanishes_below(coefficients, sizes, radii, high, order):
                 break
+            failing = _decisive_failure(coefficients, sizes, radii, order, scale, branch)
+            if failing is not None:
+                where = f" at {_shown(point)}" if others else ""
+                return False, f"{failing}{where} (float64 Cauchy)"
         else:
-            continue  # every coefficient below the order is 0 to float64 on both circles
-        failing = _decisive_failure(coefficients, sizes, radii, powers, order, scale)
-        if failing is None:
             return None
-        where = f" at {_shown(point)}" if others else ""
-        return False, f"{failing}{where} (float64 Cauchy)"
-    return True, f"its series in {scale} vanishes below order {order} (float64 Cauchy)"
+    stated = item.order
+    return True, f"its series in {scale} vanishes below order {stated} (float64 Cauchy)"
+
+
+_POWERS_OF: dict[
+    int, Any
+] = {}  # the circle's sample count -> the power each FFT coefficient belongs to
+
+
+def _powers() -> Any:
+    import numpy as np
+
+    if CIRCLE not in _POWERS_OF:
+        _POWERS_OF[CIRCLE] = np.fft.fftfreq(CIRCLE, 1 / CIRCLE).astype(int)  # 0, 1, …, -1
+    return _POWERS_OF[CIRCLE]
+
+
+def _on_circles(
+    compiled: Compiled,
+    variable: str,
+    others: list[str],
+    point: dict[str, Fraction],
+    radii: tuple[float, float],
+) -> tuple[list[Any], list[float]] | None:
+    """Each circle's Laurent coefficients (by the FFT of CIRCLE samples) and the residual's
+    largest size on it; None where a sample is not a finite number."""
+    import numpy as np
+
+    roots = np.exp(2j * np.pi * np.arange(CIRCLE) / CIRCLE)
+    powers = _powers().astype(float)
+    coefficients, sizes = [], []
+    for radius in radii:
+        env = {n: np.full(CIRCLE, float(point[n]), dtype=complex) for n in others}
+        env[variable] = radius * roots
+        value = compiled.value(env, points=CIRCLE)
+        size = compiled.size(env, points=CIRCLE)
+        if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
+            return None
+        coefficients.append(np.fft.fft(value) / CIRCLE / radius**powers)
+        sizes.append(float(np.max(size)))
+    return coefficients, sizes
+
+
+def _vanishes_below(
+    coefficients: list[Any],
+    sizes: list[float],
+    radii: tuple[float, float],
+    reach: float,
+    order: int,
+) -> bool:
+    """Every coefficient below the order, measured on either circle, contributes less than
+    HOLDS of the size: a power j >= 0 at the largest circle's radius ``reach`` (the same bound
+    whichever circles measured it: a smaller one aliases less and rounds more, never loosens
+    it), a negative power (a pole) on its own circle."""
+    import numpy as np
+
+    powers = _powers()
+    below = (powers < order) & (powers >= 0)
+    poles = powers < 0
+    for a, s, r in zip(coefficients, sizes, radii, strict=True):
+        if np.any(np.abs(a[below]) * reach ** powers[below].astype(float) > HOLDS * s):
+            return False
+        if np.any(np.abs(a[poles]) * r ** powers[poles].astype(float) > HOLDS * s):
+            return False
+    return True
 
 
 def _decisive_failure(
     coefficients: list[Any],
     sizes: list[float],
     radii: tuple[float, float],
-    powers: Any,
     order: int,
     scale: str,
+    branch: int = 1,
 ) -> str | None:
     """The lowest power below the order whose coefficient is decisively not 0, when the two
     circles agree on every coefficient (the residual analytic between them); else None."""
     import numpy as np
+
+    powers = _powers()
 
     near, far = coefficients[1], coefficients[0]
     inner = radii[1] ** powers.astype(float)
@@ -240,7 +305,7 @@ def _decisive_failure(
         if abs(far[index]) * radii[0] ** power > FAILS * sizes[0]:
             value = far[index]
             shown = f"{value.real:.6g}" if abs(value.imag) <= 1e-9 * abs(value) else f"{value:.6g}"
-            return f"the coefficient of {scale}**{power} is {shown}"
+            return f"the coefficient of {scale}**{Fraction(power, branch)} is {shown}"
     return None
 
 
@@ -363,7 +428,7 @@ def _symbol_name(node: ast.AST) -> str:
     if head == "Symbol":
         return name
     index = [k.value for k in node.keywords if k.arg == "dummy_index"]  # type: ignore[attr-defined]
-    return f"\\0{name}_{_number(index[0]) if index else 0}"
+    return f"{_DUMMY}{name}_{_number(index[0]) if index else 0}"
 
 
 def _special(head: str, args: list[ast.AST], names: set[str]) -> Node:

@@ -31,10 +31,17 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from pendcli.core.derived import Derived, Item, item_passes, passes, truncated
+from pendcli.core.derived import (
+    Derived,
+    Item,
+    canonical_dummies,
+    item_passes,
+    passes,
+    truncated,
+)
 from pendcli.core.point_values import DIGITS
 from pendcli.core.printed import ELLIPSIS, Formula
-from pendcli.core.series_proof import cauchy_applies
+from pendcli.core.series_proof import cauchy_applies, in_root
 
 __all__ = ["Reference", "derive", "derive_formula", "formula_passes", "is_relation", "judged"]
 
@@ -154,7 +161,12 @@ def _series_item(where: str, expr: Any, reference: Reference, order: int) -> Ite
 
     domain = dict(reference.domain)
     if cauchy_applies(expr, reference):
-        return Item("equation", where, expr, reference.scale, order, domain)
+        rooted = in_root(expr, reference)
+        if rooted is None:
+            return Item("equation", where, expr, reference.scale, order, domain)
+        in_t, _, branch = rooted  # for float64 only: the exact engine rewrites it alike
+        text = canonical_dummies(sp.srepr(in_t))
+        return Item("equation", where, expr, reference.scale, order, domain, rooted=(text, branch))
     try:
         expr = truncated(expr, reference.scale, order)
     except (sp.PoleError, NotImplementedError):  # the verdict says so, when judged

@@ -16,7 +16,7 @@ from typing import Any
 
 from pendcli.core.point_values import DIGITS, POINTS, Sampled, compiled, random_value
 
-__all__ = ["cauchy_applies", "finite_limit", "taylor_verdict"]
+__all__ = ["cauchy_applies", "finite_limit", "in_root", "taylor_verdict"]
 
 
 # samples on the circle of _cauchy_verdict: the error goes as (radius / distance to the
@@ -127,6 +127,14 @@ def cauchy_applies(expr: Any, reference: Sampled) -> bool:
     integral, derivative or substitution in it; a rational domain; analytic in a root of the
     scale but for a pole); when not, sympy's series is the only way, and is taken once."""
     return _in_root(expr, reference) is not None
+
+
+def in_root(expr: Any, reference: Sampled) -> tuple[Any, Any, int] | None:
+    """(``expr`` in t, t, q) with the scale s = t**q, t > 0, when ``expr`` enters through
+    powers s**(p/q) (q > 1); None when it is analytic in the scale itself or Cauchy's integral
+    cannot judge it: what float64 expands in t (core/float_verdict)."""
+    found = _in_root(expr, reference)
+    return found if found is not None and found[2] > 1 else None
 
 
 def _in_root(expr: Any, reference: Sampled) -> tuple[Any, Any, int] | None:
