@@ -31,7 +31,7 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.derived import CALLS, Derived, Item, canonical_dummies
+from pendcli.core.derived import CALLS, Derived, Item, stored_text
 from pendcli.core.errors import PendcliError
 from pendcli.core.stored_expr import read_expr
 
@@ -165,7 +165,6 @@ def _rooted(where: str, raw: Any) -> tuple[str, int] | None:
 def item_record(item: Item) -> dict[str, Any]:
     """An item as the store writes it (a rounded item, judged from its live reference, has
     no record: its row is never stored)."""
-    import sympy as sp
 
     if item.call == "rounded":
         raise ValueError("a rounded item is judged from its live reference")
@@ -173,7 +172,7 @@ def item_record(item: Item) -> dict[str, Any]:
     def text(value: Any) -> str | None:
         if value is None:
             return None
-        return canonical_dummies(sp.srepr(sp.sympify(value, strict=True)))
+        return stored_text(value)
 
     return {
         "call": item.call,

@@ -36,9 +36,9 @@ __all__ = [
     "Derived",
     "Item",
     "StoredRowFields",
-    "canonical_dummies",
     "item_passes",
     "passes",
+    "stored_text",
     "truncated",
 ]
 
@@ -92,15 +92,18 @@ class Item:
         """The residual as the store writes it (sympy's srepr), None without one."""
         if self.text is not None or self.residual is None:
             return self.text
-        import sympy as sp
-
-        return canonical_dummies(str(sp.srepr(sp.sympify(self.residual, strict=True))))
+        return stored_text(self.residual)
 
 
-def canonical_dummies(text: str) -> str:
-    """``text`` (an srepr) with its dummies numbered 1, 2, … in order of appearance: a
-    dummy's index is a counter of the process, and the store must not change with it."""
+def stored_text(expr: Any) -> str:
+    """``expr`` as the store writes it: sympy's srepr, its dummies numbered 1, 2, … in order
+    of appearance (a dummy's index is a counter of the process, and the store must not
+    change with it)."""
     import re
+
+    import sympy as sp
+
+    text = str(sp.srepr(sp.sympify(expr, strict=True)))
 
     numbers: dict[str, str] = {}
 

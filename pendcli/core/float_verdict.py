@@ -365,7 +365,7 @@ _UNARY = {
     "im": "imag",
     "arg": "angle",
 }
-_CONSTANTS = {"pi": math.pi, "E": math.e, "EulerGamma": 0.5772156649015329, "I": 1j}
+_CONSTANTS = {"pi": math.pi, "E": math.e, "I": 1j}
 
 
 def _head(node: ast.AST) -> str:
@@ -389,9 +389,9 @@ def _node(tree: ast.AST, names: set[str]) -> Node:
     import numpy as np
 
     if isinstance(tree, ast.Name):
-        if tree.id not in _CONSTANTS:
+        if tree.id not in _CONSTANTS and tree.id != "EulerGamma":
             raise Unsupported(tree.id)
-        constant = _CONSTANTS[tree.id]
+        constant = float(np.euler_gamma) if tree.id == "EulerGamma" else _CONSTANTS[tree.id]
         return lambda env: constant
     head = _head(tree)
     names.add(head) if head in _REAL_ONLY else None

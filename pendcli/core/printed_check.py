@@ -34,9 +34,9 @@ from typing import Any
 from pendcli.core.derived import (
     Derived,
     Item,
-    canonical_dummies,
     item_passes,
     passes,
+    stored_text,
     truncated,
 )
 from pendcli.core.point_values import DIGITS
@@ -165,7 +165,7 @@ def _series_item(where: str, expr: Any, reference: Reference, order: int) -> Ite
         if rooted is None:
             return Item("equation", where, expr, reference.scale, order, domain)
         in_t, _, branch = rooted  # for float64 only: the exact engine rewrites it alike
-        text = canonical_dummies(sp.srepr(in_t))
+        text = stored_text(in_t)
         return Item("equation", where, expr, reference.scale, order, domain, rooted=(text, branch))
     try:
         expr = truncated(expr, reference.scale, order)
