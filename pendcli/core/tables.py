@@ -37,6 +37,7 @@ __all__ = [
     "missing_claim",
     "paper_constant",
     "paper_text",
+    "parse_toml",
     "read_table_text",
     "read_toml",
     "tables_dir",
@@ -269,7 +270,12 @@ def _strings(value: object) -> Iterable[str]:
 
 def read_toml(path: Path, what: str) -> dict[str, Any]:
     """A TOML table file, parsed; every problem one line naming ``what`` and the file."""
-    text = read_table_text(path, what)
+    return parse_toml(read_table_text(path, what), path, what)
+
+
+def parse_toml(text: str, path: Path, what: str) -> dict[str, Any]:
+    """``text``, read from the table file ``path`` (:func:`read_table_text`), parsed as
+    :func:`read_toml` parses it."""
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
