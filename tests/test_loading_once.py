@@ -4,6 +4,7 @@ is never kept."""
 
 from __future__ import annotations
 
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -12,6 +13,7 @@ from pendcli.core import printed
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import ledger_path, load_ledger
 from pendcli.core.printed import parse_formula
+from pendcli.core.tables import read_toml
 
 QUOTE = "La formule (5) donnera ensuite"  # a quote of tisserand's ledger, in its text
 
@@ -71,3 +73,17 @@ def test_a_formula_that_fails_is_not_kept(monkeypatch: pytest.MonkeyPatch) -> No
     for where in ("row a: printed", "row b: printed"):
         with pytest.raises(PendcliError, match=f"^{where}: .*undeclared_once"):
             parse_formula(where, "x_once = undeclared_once", {"x_once": "L"})
+
+
+def test_a_table_is_parsed_once_and_each_reader_gets_its_own_copy(tmp_path: Path) -> None:
+    path = tmp_path / "record.toml"
+    path.write_text('[[row]]\nid = "a"\nlines = [1, 2]\n', encoding="utf-8")
+    first = read_toml(path, "record")
+    first["row"][0]["lines"].append(3)  # a reader that edits what it got
+    assert read_toml(path, "record") == tomllib.loads(path.read_text(encoding="utf-8"))
+    path.write_text('[[row]]\nid = "b"\n', encoding="utf-8")
+    assert read_toml(path, "record") == {"row": [{"id": "b"}]}
+    for name in ("bad.toml", "worse.toml"):  # a failure is not kept: each names its file
+        (tmp_path / name).write_text('[[row]]\nid = "b"\nid = "c"\n', encoding="utf-8")
+        with pytest.raises(PendcliError, match=f"record {tmp_path / name} is not valid TOML"):
+            read_toml(tmp_path / name, "record")
