@@ -230,10 +230,8 @@ def ledger_path(paper: str, root: Path | None = None) -> Path:
     return (root or _tables_dir()) / "equations" / f"{paper}.toml"
 
 
-# Each ledger parsed and validated once per content (its TOML and its paper's text), whichever
-# step of a command asks for it: evaluating each part, the stale derivations, the reading
-# record, the coverage (20 loads of 3 ledgers in one cold `equations`). A load that fails
-# raises and is not kept.
+# Each ledger parsed and validated once per content (its TOML and paper text), whichever step
+# asks (20 loads of 3 ledgers in a cold `equations`); a load that fails is not kept.
 _LOADED = Recent(16)
 
 
@@ -258,9 +256,8 @@ def _same_text(ledger: Ledger, root: Path, text: str) -> bool:
     """The ledger's paper text is still inside the tables folder and reads ``text``."""
     from pendcli.core.tables import inside_tables, read_table_text
 
-    where = f"{ledger.path}: [ledger] text"
     try:
-        inside_tables(ledger.text, root, where)
+        inside_tables(ledger.text, root, f"{ledger.path}: [ledger] text")
         return ledger.text.is_file() and read_table_text(ledger.text, "paper text") == text
     except PendcliError:
         return False  # loaded again, to give the error the first load gives
