@@ -3,8 +3,8 @@ tests/test_printed*.py (a changed coefficient, or a misprint set to its reading,
 refused).
 
 The edit is made to the committed ledger's text in memory and validated by the loader's own
-``parse_ledger`` under the committed path. A formula's parse is cached on its place and text
-(``pendcli.core.ledger_formulas.row_formula``), so the rows the edit leaves alone are served
+``parse_ledger`` under the committed path. A formula's parse is cached on its text and symbol
+table (``pendcli.core.printed.parse_formula``), so the rows the edit leaves alone are served
 from the cache and only the edited one is parsed again; a reference is cached on its name and
 the tables folder, so one row's reference is built once per process, not once per case. A
 copy of tables/ (``altered_tables``) is made only where the judgement reads the edited file

@@ -209,6 +209,9 @@ SYMBOLS["b"] = "L^(n) T^(1-2*n)"
         ("l <= t", "inconsistent"),
         ("theta = factorial2(n)/factorial2(n + 1)", "dimensionless"),
         ("theta = factorial2(l)", "inconsistent"),
+        ("l - g*t**2 = 0", "consistent"),  # a zero takes the dimension of the other side
+        ("g*t = Integral(g, (t, 0, t))", "consistent"),  # and of the variable, as a limit
+        ("g*t = Integral(g, (t, 0, l))", "inconsistent"),
     ],
 )
 def test_dimension_verdicts(formula: str, verdict: str) -> None:

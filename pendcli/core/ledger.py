@@ -57,6 +57,7 @@ from pendcli.core.ledger_references import (
     verify_printed,
 )
 from pendcli.core.ledger_step import STEP_KEYS, parse_step, step_evidence, validate_step
+from pendcli.core.recent import Recent
 from pendcli.core.rows import EquationRow
 from pendcli.core.text_blocks import Span, validate_span
 from pendcli.core.vocabulary import CHECKED_STATUSES, STATUSES
@@ -229,15 +230,37 @@ def ledger_path(paper: str, root: Path | None = None) -> Path:
     return (root or _tables_dir()) / "equations" / f"{paper}.toml"
 
 
+# Each ledger parsed and validated once per content (its TOML and paper text), whichever step
+# asks (20 loads of 3 ledgers in a cold `equations`); a load that fails is not kept.
+_LOADED = Recent(16)
+
+
 def load_ledger(paper: str, root: Path | None = None) -> Ledger:
     """Read and strictly validate ``tables/equations/<paper>.toml`` and the text it names
     (missing, empty, not a file or not UTF-8: an error, never an empty ledger)."""
-    from pendcli.core.tables import read_table_text, read_toml
+    from pendcli.core.tables import parse_toml, read_table_text
 
     path = ledger_path(paper, root)
-    ledger = parse_ledger(read_toml(path, "equation ledger"), paper, path, root or _tables_dir())
-    read_table_text(ledger.text, "paper text")
+    folder = root or _tables_dir()
+    source = read_table_text(path, "equation ledger")
+    key = (paper, path, folder, source)
+    kept: tuple[Ledger, str] | None = _LOADED.get(key)
+    if kept is not None and _same_text(kept[0], folder, kept[1]):
+        return kept[0]
+    ledger = parse_ledger(parse_toml(source, path, "equation ledger"), paper, path, folder)
+    _LOADED.put(key, (ledger, read_table_text(ledger.text, "paper text")))
     return ledger
+
+
+def _same_text(ledger: Ledger, root: Path, text: str) -> bool:
+    """The ledger's paper text is still inside the tables folder and reads ``text``."""
+    from pendcli.core.tables import inside_tables, read_table_text
+
+    try:
+        inside_tables(ledger.text, root, f"{ledger.path}: [ledger] text")
+        return ledger.text.is_file() and read_table_text(ledger.text, "paper text") == text
+    except PendcliError:
+        return False  # loaded again, to give the error the first load gives
 
 
 def parse_ledger(

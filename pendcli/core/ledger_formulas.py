@@ -15,7 +15,6 @@ from typing import TYPE_CHECKING, Any
 from pendcli.core.errors import PendcliError
 from pendcli.core.formula_grammar import plain_name
 from pendcli.core.printed import ELLIPSIS, FUNCTIONS, Formula, parse_dimension, parse_formula
-from pendcli.core.recent import Recent
 
 if TYPE_CHECKING:
     from pendcli.core.dimensions import DimensionCheck
@@ -116,22 +115,9 @@ def validate_formulas(
             raise PendcliError(f"{path}: {row.id}: 'corrected_formula' is for fails rows")
 
 
-# Each formula parsed once per text and symbol table, whichever step asks (the load's
-# validation, the dimension check, the printed form's verdict): keyed by content, not by
-# the place named in an error (a parse that fails raises and is not kept).
-_PARSED = Recent(8192)
-
-
 def row_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
-    return _parsed(where, text, tuple(sorted(symbols.items())))
-
-
-def _parsed(where: str, text: str, symbols: tuple[tuple[str, str], ...]) -> Formula:
-    found: Formula | None = _PARSED.get((text, symbols))
-    if found is None:
-        found = parse_formula(where, text, dict(symbols))
-        _PARSED.put((text, symbols), found)
-    return found
+    """``text`` parsed in ``symbols`` (once per text and symbol table: core/printed)."""
+    return parse_formula(where, text, symbols)
 
 
 @cache
@@ -148,7 +134,8 @@ def row_dimensions(row: LedgerRow, symbols: Mapping[str, str]) -> dict[str, Dime
     for field in FORMULA_FIELDS:
         text = getattr(row, field)
         if text is not None:
-            out[field] = check_dimensions(_parsed(f"{row.id}: {field}", text, table), _dims(table))
+            formula = parse_formula(f"{row.id}: {field}", text, symbols)
+            out[field] = check_dimensions(formula, _dims(table))
     return out
 
 

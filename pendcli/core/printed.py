@@ -28,6 +28,7 @@ from pendcli.core.formula_grammar import (
     parse_side,
     plain_name,
 )
+from pendcli.core.recent import Recent
 
 __all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "ledger_symbols", "parse_dimension", "parse_formula"]
 
@@ -121,11 +122,26 @@ def _not_plain(names: tuple[str, ...]) -> str | None:
     return next((n for n in names if not plain_name(n)), None)
 
 
+# Each formula parsed once per text and symbol table, whichever step asks (the ledger's
+# validation, the dimension check, the printed form's verdict, a paper's formula check):
+# keyed by content, not by the place an error names (a parse that fails raises, is not kept).
+_PARSED = Recent(8192)
+
+
 def parse_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
     """Parse ``text`` with the declared ``symbols`` only (names ending in ``()`` are declared
     functions) by the notation's grammar (core/formula_grammar: checked words and tree,
     never python's eval); raises PendcliError naming ``where`` on a syntax error, an
     undeclared name, a word outside the notation or a bound exceeded."""
+    key = (text, tuple(sorted(symbols.items())))
+    found: Formula | None = _PARSED.get(key)
+    if found is None:
+        found = _parse(where, text, symbols)
+        _PARSED.put(key, found)
+    return found
+
+
+def _parse(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
     names = tuple(sorted(n for n in symbols if not n.endswith("()")))
     functions = tuple(sorted(n[:-2] for n in symbols if n.endswith("()")))
     bad = _not_plain((*names, *functions))

@@ -8,6 +8,7 @@ naming the file and the entry.
 
 from __future__ import annotations
 
+import copy
 import math
 import os
 import re
@@ -21,6 +22,7 @@ from typing import Any
 
 from pendcli.core.errors import PendcliError
 from pendcli.core.numbers import PrintedNumber, exact_number, parse_printed
+from pendcli.core.recent import Recent
 from pendcli.core.text_blocks import Span, validate_span
 from pendcli.core.vocabulary import CAUSES  # why a printed value disagrees (tables/README.md)
 
@@ -37,6 +39,7 @@ __all__ = [
     "missing_claim",
     "paper_constant",
     "paper_text",
+    "parse_toml",
     "read_table_text",
     "read_toml",
     "tables_dir",
@@ -269,7 +272,25 @@ def _strings(value: object) -> Iterable[str]:
 
 def read_toml(path: Path, what: str) -> dict[str, Any]:
     """A TOML table file, parsed; every problem one line naming ``what`` and the file."""
-    text = read_table_text(path, what)
+    return parse_toml(read_table_text(path, what), path, what)
+
+
+# Each table's text parsed and checked once, whichever step reads it (a cold `equations`
+# reads each ledger and reading record two or three times); each caller gets its own copy.
+_PARSED_TOML = Recent(32)
+
+
+def parse_toml(text: str, path: Path, what: str) -> dict[str, Any]:
+    """``text``, read from the table file ``path`` (:func:`read_table_text`), parsed as
+    :func:`read_toml` parses it."""
+    kept: dict[str, Any] | None = _PARSED_TOML.get(text)
+    if kept is None:
+        kept = _checked_toml(text, path, what)
+        _PARSED_TOML.put(text, kept)
+    return copy.deepcopy(kept)
+
+
+def _checked_toml(text: str, path: Path, what: str) -> dict[str, Any]:
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
