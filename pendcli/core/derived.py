@@ -217,15 +217,24 @@ def _relation_passes(item: Item) -> tuple[bool, str]:
     positive », « diminuée »): its margin at :data:`RELATION_POINTS` random rational points
     of the reference's ``domain`` (30 digits); a strict one must hold by more than the
     engine's tolerance, a wide one fall short of 0 by no more. An inequality false on a
-    share f of its domain passes with chance (1 - f)**RELATION_POINTS (0.03 for f = 0.1)."""
+    share f of its domain passes with chance (1 - f)**RELATION_POINTS (0.03 for f = 0.1).
+    A point where float64 alone shows the margin positive, well above the tolerance, is not
+    computed again (core/float_verdict.certain_margins)."""
     import sympy as sp
+
+    from pendcli.core.float_verdict import certain_margins
 
     points = relation_points(item)
     if isinstance(points, str):
         return False, points
     tolerance = sp.Float(10) ** (5 - DIGITS)
-    at = evaluator(item.expr, sorted(item.expr.free_symbols, key=lambda s: s.name))
-    for point in points:
+    shown_positive = certain_margins(item, points, float(tolerance))
+    at = None
+    for index, point in enumerate(points):
+        if index in shown_positive:
+            continue
+        if at is None:
+            at = evaluator(item.expr, sorted(item.expr.free_symbols, key=lambda s: s.name))
         value = at(point)
         shown = ", ".join(f"{k}={v}" for k, v in point.items()) or "the reference's values"
         if not value.is_number or not value.is_real:

@@ -35,7 +35,7 @@ from __future__ import annotations
 import ast
 import math
 import random
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 from fractions import Fraction
 from functools import cache
 from typing import Any, Protocol
@@ -64,7 +64,15 @@ class Item(Protocol):
     def limit(self) -> str | None: ...
 
 
-__all__ = ["CIRCLE", "FAILS", "HOLDS", "POINTS", "compile_text", "quick_verdict"]
+__all__ = [
+    "CIRCLE",
+    "FAILS",
+    "HOLDS",
+    "POINTS",
+    "certain_margins",
+    "compile_text",
+    "quick_verdict",
+]
 
 HOLDS = 1e-14
 FAILS = 1e-6
@@ -155,6 +163,8 @@ def _identity(item: Item, compiled: Compiled) -> Verdict | None:
     value = np.real(value)
     if np.all((np.abs(value) <= HOLDS * size) | (np.abs(value) <= FLOOR)):
         return True, f"vanishes at {POINTS} random points to 1e-14 of its terms (float64)"
+    if _FREE_FUNCTION in compiled.names:
+        return None  # nonzero for one function: the exact engine says what it is for the model's
     for index, (v, s) in enumerate(zip(value, size, strict=True)):
         if abs(v) > FAILS * s and abs(v) > FLOOR:
             return False, f"residual {v:.6g}{_at(points[index])} (float64)"
@@ -166,7 +176,7 @@ def _relation(item: Item, compiled: Compiled) -> Verdict | None:
 
     names = sorted(compiled.names - _REAL_ONLY)
     unbounded = [n for n in names if n not in item.domain]
-    if unbounded:
+    if unbounded or _FREE_FUNCTION in compiled.names:
         return None  # the exact engine words it
     points = _points(item, names, RELATION_POINTS if names else 1)
     env = {n: np.array([float(p[n]) for p in points]) for n in names}
@@ -181,6 +191,34 @@ def _relation(item: Item, compiled: Compiled) -> Verdict | None:
             f" at {RELATION_POINTS} random points" if names else ""
         )
     return None
+
+
+def certain_margins(item: Item, points: Sequence[Mapping[Any, Any]], tolerance: float) -> set[int]:
+    """Of a relation float64 did not decide, the indices of the exact engine's ``points``
+    (symbol -> rational) where float64 alone shows the margin positive: a finite real number
+    above :data:`HOLDS` of its size and above twice the exact engine's ``tolerance``. The
+    exact engine judges the others only (a wide relation whose margin is 0 at some points)."""
+    import numpy as np
+
+    if item.call != "relation" or item.source is None or not points:
+        return set()
+    try:
+        compiled = compile_text(item.source)
+        if _FREE_FUNCTION in compiled.names:
+            return set()
+        names = sorted(compiled.names - _REAL_ONLY)
+        by_name = [{str(k): v for k, v in point.items()} for point in points]
+        if any(set(point) != set(names) for point in by_name):
+            return set()
+        env = {n: np.array([float(p[n]) for p in by_name]) for n in names}
+        value = compiled.value(env, points=len(points))
+        size = compiled.size(env, points=len(points))
+    except (Unsupported, ArithmeticError, ValueError, TypeError, RecursionError):
+        return set()
+    if np.iscomplexobj(value) or np.iscomplexobj(size):
+        return set()
+    clear = np.isfinite(value) & (value > HOLDS * size) & (value > 2 * tolerance)
+    return {int(i) for i in np.nonzero(clear)[0]}
 
 
 def _series(item: Item, compiled: Compiled) -> Verdict | None:
@@ -247,7 +285,9 @@ def _stored_limit(item: Item, compiled: Compiled) -> Verdict | None:
         return None
     limit = compile_text(item.limit)
     others = sorted(compiled.names - {str(item.scale)} - _REAL_ONLY)
-    if not limit.names - _REAL_ONLY <= set(others):
+    if _FREE_FUNCTION in limit.names | compiled.names or not limit.names - _REAL_ONLY <= set(
+        others
+    ):
         return None
     points = _points(item, others, POINTS if others else 1)
     env = {n: np.array([float(p[n]) for p in points]) for n in others}
@@ -389,7 +429,9 @@ def compile_text(text: str) -> Compiled:
 
 
 # heads whose value is not analytic in a complex scale: a series that has one is not judged here
-_REAL_ONLY = frozenset({"Abs", "floor", "sign", "arg", "re", "im", "atan2", "Integral"})
+_REAL_ONLY = frozenset(
+    {"Abs", "floor", "sign", "arg", "re", "im", "atan2", "Integral", "\0free function"}
+)
 _UNARY = {
     "sin": "sin",
     "cos": "cos",
@@ -418,6 +460,31 @@ def _head(node: ast.AST) -> str:
     raise Unsupported(ast.dump(node)[:40])
 
 
+# an undefined function applied (a constant of integration, a function the reference leaves
+# free): a residual that vanishes for every such function vanishes for a fixed generic one,
+# so float64 evaluates it as one and decides "holds" only (:data:`_FREE_FUNCTION` in names)
+_FREE_FUNCTION = "\0free function"
+
+
+def _free_function(tree: ast.Call, names: set[str]) -> Node:
+    """``Function('f')(z)`` as exp(a z) sin(b z + c) + d, its coefficients drawn from f's name."""
+    import numpy as np
+
+    func = tree.func
+    if not (
+        isinstance(func, ast.Call)
+        and isinstance(func.func, ast.Name)
+        and func.func.id == "Function"
+        and len(tree.args) == 1
+    ):
+        raise Unsupported(ast.dump(tree)[:40])
+    generator = random.Random(str(_number(func.args[0])))
+    a, b, c, d = (generator.uniform(0.5, 1.5) for _ in range(4))
+    (inner,) = (_node(x, names) for x in tree.args)
+    names.add(_FREE_FUNCTION)
+    return lambda env: np.exp(a * inner(env)) * np.sin(b * inner(env) + c) + d
+
+
 def _number(node: ast.AST) -> float | int | str:
     if isinstance(node, ast.Constant) and isinstance(node.value, (int, float, str)):
         return node.value
@@ -437,6 +504,8 @@ def _node(tree: ast.AST, names: set[str]) -> Node:
             raise Unsupported(tree.id)
         constant = float(np.euler_gamma) if tree.id == "EulerGamma" else _CONSTANTS[tree.id]
         return lambda env: constant
+    if isinstance(tree, ast.Call) and isinstance(tree.func, ast.Call):
+        return _free_function(tree, names)
     head = _head(tree)
     names.add(head) if head in _REAL_ONLY else None
     args = tree.args  # type: ignore[attr-defined]
@@ -502,7 +571,8 @@ def _size_node(tree: ast.AST, names: set[str]) -> Node:
     """The size of ``tree``: every sum a sum of absolute values (ε·(a − b): |ε|·(|a| + |b|))."""
     import numpy as np
 
-    head = _head(tree) if isinstance(tree, ast.Call) else ""
+    named = isinstance(tree, ast.Call) and isinstance(tree.func, ast.Name)
+    head = _head(tree) if named else ""
     args = getattr(tree, "args", [])
     if head in ("Add", "Mul"):
         parts = [_size_node(a, names) for a in args]
