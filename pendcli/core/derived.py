@@ -275,18 +275,18 @@ def _bounded_passes(item: Item) -> tuple[bool, str]:
 
 def derived_once(item: Item) -> dict[str, str]:
     """What the store keeps beside an item's residual for float64, derived here (``make
-    regen``) and again by ``pendcli check``: where float64's Cauchy integral decides nothing
-    about a series (a branch, a pole, a singularity near its circles), the residual's terms
-    below the order (``taylor``, sympy's series, as the exact engine truncates it); for a
-    bounded residual, its limit as the scale tends to 0+ (``limit``, sympy's limit with the
-    other symbols free). Empty where sympy gives neither."""
+    regen``) and again by ``pendcli check``: where the exact engine's Cauchy integral decides
+    nothing about a series (a branch, a singularity that overflows the circle), the
+    residual's terms below the order (``taylor``, sympy's series: what the exact engine then
+    truncates it to); for a bounded residual, its limit as the scale tends to 0+ (``limit``,
+    sympy's limit with the other symbols free). Empty where sympy gives neither. Nothing here
+    depends on float64 (whose rounding may differ between machines): the store is the same
+    wherever it is derived."""
     import sympy as sp
-
-    from pendcli.core.float_verdict import quick_verdict
 
     expr, scale, order = item.expr, item.scale, item.order
     if item.call == "equation" and scale is not None and order is not None:
-        if item.source is None or quick_verdict(item) is not None:
+        if taylor_verdict(expr, item, order)[0] is not None:
             return {}
         try:
             return {"taylor": stored_text(truncated(expr, scale, order))}

@@ -240,8 +240,8 @@ def _series(item: Item, compiled: Compiled) -> Verdict | None:
     failing = None
     for point in _points(item, others, 3 if others else 1):
         # two circles; when they decide nothing (a singularity near the larger one: slow
-        # decay, aliasing), two four times smaller
-        for radii in ((high, high / 2), (high / 4, high / 8)):
+        # decay, aliasing), two twice smaller, then two four times smaller
+        for radii in ((high, high / 2), (high / 2, high / 4), (high / 4, high / 8)):
             found = _on_circles(compiled, variable, others, point, radii)
             if found is None:
                 return None
