@@ -12,7 +12,9 @@ The format (JSON, one file per paper)::
                            "forms": {"printed": {"holds": "...", "items": [ITEM, ...]},
                                      "reading": ..., "corrected": ...}}}}
 
-with ITEM = {"call", "where", "expr", "scale", "order", "domain", "strict", "why"}; each
+with ITEM = {"call", "where", "expr", "scale", "order", "domain", "strict", "why"} and, where
+float64 cannot follow the residual itself, "taylor" (a series' terms below its order) or
+"limit" (a bounded residual's limit), derived once (core/derived.derived_once); each
 expression is sympy's ``srepr``, read back by a closed grammar (core/stored_expr): calls of
 the sympy constructors of its ``HEADS`` with number, string and boolean arguments, nothing
 evaluated, the size of a file and the depth of an expression bounded. The store is
@@ -31,7 +33,7 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.derived import CALLS, Derived, Item, stored_text
+from pendcli.core.derived import CALLS, Derived, Item, derived_once, stored_text
 from pendcli.core.errors import PendcliError
 from pendcli.core.stored_expr import read_expr
 
@@ -147,10 +149,18 @@ def _item(where: str, raw: Any) -> Item:
         raise PendcliError(f"{where}: a stored order must be an integer")
     where_shown, strict, why = str(raw.get("where", "")), bool(raw.get("strict")), raw.get("why")
     rooted = _rooted(where, raw.get("rooted"))
+    taylor, limit = (_optional_text(where, raw, name) for name in ("taylor", "limit"))
     return Item(
         raw["call"], where_shown, None, scale, order, domain, strict, str(why or ""),
-        text=text, rooted=rooted,
+        text=text, rooted=rooted, taylor=taylor, limit=limit,
     )  # fmt: skip
+
+
+def _optional_text(where: str, raw: Mapping[str, Any], name: str) -> str | None:
+    value = raw.get(name)
+    if value is not None and not isinstance(value, str):
+        raise PendcliError(f"{where}: a stored {name} must be a string")
+    return value
 
 
 def _rooted(where: str, raw: Any) -> tuple[str, int] | None:
@@ -184,6 +194,7 @@ def item_record(item: Item) -> dict[str, Any]:
         "strict": item.strict,
         "why": item.why,
         **({"rooted": list(item.rooted)} if item.rooted else {}),
+        **derived_once(item),
     }
 
 

@@ -36,6 +36,7 @@ __all__ = [
     "Derived",
     "Item",
     "StoredRowFields",
+    "derived_once",
     "item_passes",
     "passes",
     "stored_text",
@@ -59,7 +60,11 @@ class Item:
     each symbol's range for the random points); ``strict``: a relation's ``<``/``>``;
     ``why``: a refused item's reason; ``live``: a rounded item's verdict, computed from the
     live reference; ``rooted``: a series in a root t of its scale, its residual in t and the
-    root's degree (what float64 expands; the exact engine rewrites ``expr`` alike)."""
+    root's degree (what float64 expands; the exact engine rewrites ``expr`` alike);
+    ``taylor``, ``limit``: derived once (:func:`derived_once`) where float64 cannot follow the
+    residual itself, as the store keeps them: a series' terms below its order, a bounded
+    residual's limit as the scale tends to 0+ (what float64 judges instead; never the exact
+    engine)."""
 
     call: str
     where: str
@@ -73,6 +78,8 @@ class Item:
     text: str | None = None
     # a series entering through s**(p/q): (the residual in t = s**(1/q), as srepr; q)
     rooted: tuple[str, int] | None = None
+    taylor: str | None = None
+    limit: str | None = None
 
     def __post_init__(self) -> None:
         if self.call not in CALLS:
@@ -210,15 +217,24 @@ def _relation_passes(item: Item) -> tuple[bool, str]:
     positive », « diminuée »): its margin at :data:`RELATION_POINTS` random rational points
     of the reference's ``domain`` (30 digits); a strict one must hold by more than the
     engine's tolerance, a wide one fall short of 0 by no more. An inequality false on a
-    share f of its domain passes with chance (1 - f)**RELATION_POINTS (0.03 for f = 0.1)."""
+    share f of its domain passes with chance (1 - f)**RELATION_POINTS (0.03 for f = 0.1).
+    A point where float64 alone shows the margin positive, well above the tolerance, is not
+    computed again (core/float_verdict.certain_margins)."""
     import sympy as sp
+
+    from pendcli.core.float_verdict import certain_margins
 
     points = relation_points(item)
     if isinstance(points, str):
         return False, points
     tolerance = sp.Float(10) ** (5 - DIGITS)
-    at = evaluator(item.expr, sorted(item.expr.free_symbols, key=lambda s: s.name))
-    for point in points:
+    shown_positive = certain_margins(item, points, float(tolerance))
+    at = None
+    for index, point in enumerate(points):
+        if index in shown_positive:
+            continue
+        if at is None:
+            at = evaluator(item.expr, sorted(item.expr.free_symbols, key=lambda s: s.name))
         value = at(point)
         shown = ", ".join(f"{k}={v}" for k, v in point.items()) or "the reference's values"
         if not value.is_number or not value.is_real:
@@ -255,6 +271,33 @@ def _bounded_passes(item: Item) -> tuple[bool, str]:
             return False, f"the residual tends to {limit} as {scale} -> 0+ at {shown}"
     where = f" at {POINTS} points, the last {shown}" if others else ""
     return True, f"finite as {scale} -> 0+ (limit {sp.N(limit, 6)}{where})"
+
+
+def derived_once(item: Item) -> dict[str, str]:
+    """What the store keeps beside an item's residual for float64, derived here (``make
+    regen``) and again by ``pendcli check``: where the exact engine's Cauchy integral decides
+    nothing about a series (a branch, a singularity that overflows the circle), the
+    residual's terms below the order (``taylor``, sympy's series: what the exact engine then
+    truncates it to); for a bounded residual, its limit as the scale tends to 0+ (``limit``,
+    sympy's limit with the other symbols free). Empty where sympy gives neither. Nothing here
+    depends on float64 (whose rounding may differ between machines): the store is the same
+    wherever it is derived."""
+    import sympy as sp
+
+    expr, scale, order = item.expr, item.scale, item.order
+    if item.call == "equation" and scale is not None and order is not None:
+        if taylor_verdict(expr, item, order)[0] is not None:
+            return {}
+        try:
+            return {"taylor": stored_text(truncated(expr, scale, order))}
+        except (sp.PoleError, NotImplementedError, ValueError):
+            return {}
+    if item.call == "bounded" and expr is not None:
+        try:
+            return {"limit": stored_text(sp.limit(expr, scale, 0, "+"))}
+        except (sp.PoleError, NotImplementedError, ValueError):
+            return {}
+    return {}
 
 
 def truncated(expr: Any, scale: Any, order: int) -> Any:

@@ -32,14 +32,19 @@ judge every stored item both ways and require the same verdict wherever float64 
 
 from __future__ import annotations
 
-import ast
-import math
 import random
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping, Sequence
 from fractions import Fraction
-from functools import cache
 from typing import Any, Protocol
 
+from pendcli.core.float_compile import (
+    DUMMY,
+    FREE_FUNCTION,
+    REAL_ONLY,
+    Compiled,
+    Unsupported,
+    compile_text,
+)
 from pendcli.core.point_values import FLOOR, RELATION_POINTS
 
 
@@ -58,34 +63,44 @@ class Item(Protocol):
     def domain(self) -> Mapping[str, tuple[Any, Any]]: ...
     @property
     def rooted(self) -> tuple[str, int] | None: ...
+    @property
+    def taylor(self) -> str | None: ...
+    @property
+    def limit(self) -> str | None: ...
 
 
-__all__ = ["CIRCLE", "FAILS", "HOLDS", "POINTS", "compile_text", "quick_verdict"]
+__all__ = [
+    "CIRCLE",
+    "FAILS",
+    "HOLDS",
+    "POINTS",
+    "certain_margins",
+    "compile_text",
+    "quick_verdict",
+]
 
 HOLDS = 1e-14
 FAILS = 1e-6
 POINTS = 8
 CIRCLE = 64
 _DEFAULT_DOMAIN = (Fraction(1, 10), Fraction(1, 2))
-_DUMMY = "\\0"  # a dummy's name starts so: never a symbol of the ledger
 
 Verdict = tuple[bool, str]
 
 
-class Unsupported(Exception):
-    """What float64 cannot evaluate here: the exact engine judges."""
-
-
 def quick_verdict(item: Item) -> Verdict | None:
     """The item's verdict in float64, or None when float64 does not decide it."""
-    if item.call not in ("equation", "relation") or item.source is None:
+    if item.call not in ("equation", "relation", "bounded") or item.source is None:
         return None
     try:
         compiled = compile_text(item.source)
+        if item.call == "bounded":
+            return _stored_limit(item, compiled)
         if item.call == "relation":
             return _relation(item, compiled)
         if item.scale is not None and item.order is not None:
-            return _series(item, compiled)
+            verdict = _series(item, compiled)
+            return verdict if verdict is not None else _stored_series(item)
         return _identity(item, compiled)
     except (Unsupported, ArithmeticError, ValueError, TypeError, RecursionError):
         return None
@@ -137,7 +152,7 @@ def _at(point: dict[str, Fraction]) -> str:
 def _identity(item: Item, compiled: Compiled) -> Verdict | None:
     import numpy as np
 
-    names = sorted(compiled.names - _REAL_ONLY)
+    names = sorted(compiled.names - REAL_ONLY)
     points = _points(item, names, POINTS)
     env = {n: np.array([float(p[n]) for p in points]) for n in names}
     value, size = compiled.value(env, points=len(points)), compiled.size(env, points=len(points))
@@ -148,6 +163,8 @@ def _identity(item: Item, compiled: Compiled) -> Verdict | None:
     value = np.real(value)
     if np.all((np.abs(value) <= HOLDS * size) | (np.abs(value) <= FLOOR)):
         return True, f"vanishes at {POINTS} random points to 1e-14 of its terms (float64)"
+    if FREE_FUNCTION in compiled.names:
+        return None  # nonzero for one function: the exact engine says what it is for the model's
     for index, (v, s) in enumerate(zip(value, size, strict=True)):
         if abs(v) > FAILS * s and abs(v) > FLOOR:
             return False, f"residual {v:.6g}{_at(points[index])} (float64)"
@@ -157,9 +174,9 @@ def _identity(item: Item, compiled: Compiled) -> Verdict | None:
 def _relation(item: Item, compiled: Compiled) -> Verdict | None:
     import numpy as np
 
-    names = sorted(compiled.names - _REAL_ONLY)
+    names = sorted(compiled.names - REAL_ONLY)
     unbounded = [n for n in names if n not in item.domain]
-    if unbounded:
+    if unbounded or FREE_FUNCTION in compiled.names:
         return None  # the exact engine words it
     points = _points(item, names, RELATION_POINTS if names else 1)
     env = {n: np.array([float(p[n]) for p in points]) for n in names}
@@ -176,6 +193,34 @@ def _relation(item: Item, compiled: Compiled) -> Verdict | None:
     return None
 
 
+def certain_margins(item: Item, points: Sequence[Mapping[Any, Any]], tolerance: float) -> set[int]:
+    """Of a relation float64 did not decide, the indices of the exact engine's ``points``
+    (symbol -> rational) where float64 alone shows the margin positive: a finite real number
+    above :data:`HOLDS` of its size and above twice the exact engine's ``tolerance``. The
+    exact engine judges the others only (a wide relation whose margin is 0 at some points)."""
+    import numpy as np
+
+    if item.call != "relation" or item.source is None or not points:
+        return set()
+    try:
+        compiled = compile_text(item.source)
+        if FREE_FUNCTION in compiled.names:
+            return set()
+        names = sorted(compiled.names - REAL_ONLY)
+        by_name = [{str(k): v for k, v in point.items()} for point in points]
+        if any(set(point) != set(names) for point in by_name):
+            return set()
+        env = {n: np.array([float(p[n]) for p in by_name]) for n in names}
+        value = compiled.value(env, points=len(points))
+        size = compiled.size(env, points=len(points))
+    except (Unsupported, ArithmeticError, ValueError, TypeError, RecursionError):
+        return set()
+    if np.iscomplexobj(value) or np.iscomplexobj(size):
+        return set()
+    clear = np.isfinite(value) & (value > HOLDS * size) & (value > 2 * tolerance)
+    return {int(i) for i in np.nonzero(clear)[0]}
+
+
 def _series(item: Item, compiled: Compiled) -> Verdict | None:
 
     scale = str(item.scale)
@@ -183,20 +228,20 @@ def _series(item: Item, compiled: Compiled) -> Verdict | None:
     variable, branch = scale, 1
     if item.rooted is not None:  # s = t**q: a Laurent series in t, its terms below t**(q n)
         compiled, branch = compile_text(item.rooted[0]), item.rooted[1]
-        roots_of = [n for n in compiled.names if n.startswith(_DUMMY + "root_")]
+        roots_of = [n for n in compiled.names if n.startswith(DUMMY + "root_")]
         if len(roots_of) != 1:
             return None
         variable = roots_of[0]
     order = branch * item.order
-    if compiled.names & _REAL_ONLY:
+    if compiled.names & REAL_ONLY:
         return None
-    others = sorted(compiled.names - {variable} - _REAL_ONLY)
+    others = sorted(compiled.names - {variable} - REAL_ONLY)
     high = min(float(_domain(item, scale)[1]) ** (1 / branch), 0.5)
     failing = None
     for point in _points(item, others, 3 if others else 1):
         # two circles; when they decide nothing (a singularity near the larger one: slow
-        # decay, aliasing), two four times smaller
-        for radii in ((high, high / 2), (high / 4, high / 8)):
+        # decay, aliasing), two twice smaller, then two four times smaller
+        for radii in ((high, high / 2), (high / 2, high / 4), (high / 4, high / 8)):
             found = _on_circles(compiled, variable, others, point, radii)
             if found is None:
                 return None
@@ -211,6 +256,43 @@ def _series(item: Item, compiled: Compiled) -> Verdict | None:
             return None
     stated = item.order
     return True, f"its series in {scale} vanishes below order {stated} (float64 Cauchy)"
+
+
+def _stored_series(item: Item) -> Verdict | None:
+    """A series Cauchy's integral did not decide, by its terms below the order derived once
+    (the store's ``taylor``: sympy's series, as the exact engine truncates it), judged as an
+    identity with the scale among the random points. Holds only: a failure is the exact
+    engine's to word."""
+    if item.taylor is None:
+        return None
+    verdict = _identity(item, compile_text(item.taylor))
+    if verdict is None or not verdict[0]:
+        return None
+    return True, (
+        f"its terms below order {item.order} in {item.scale} vanish at {POINTS} random points "
+        "(float64, stored series)"
+    )
+
+
+def _stored_limit(item: Item, compiled: Compiled) -> Verdict | None:
+    """A residual that must stay finite as the scale tends to 0+, by its limit derived once
+    (the store's ``limit``: sympy's, the other symbols free): a finite real number at
+    :data:`POINTS` random points of the residual's other symbols. Holds only: a divergence
+    is the exact engine's to word."""
+    import numpy as np
+
+    if item.limit is None:
+        return None
+    limit = compile_text(item.limit)
+    others = sorted(compiled.names - {str(item.scale)} - REAL_ONLY)
+    if FREE_FUNCTION in limit.names | compiled.names or not limit.names - REAL_ONLY <= set(others):
+        return None
+    points = _points(item, others, POINTS if others else 1)
+    env = {n: np.array([float(p[n]) for p in points]) for n in others}
+    value = limit.value(env, points=len(points))
+    if np.iscomplexobj(value) or not np.all(np.isfinite(value)):
+        return None
+    return True, f"finite as {item.scale} -> 0+ (float64, stored limit)"
 
 
 _POWERS_OF: dict[
@@ -307,246 +389,3 @@ def _decisive_failure(
             shown = f"{value.real:.6g}" if abs(value.imag) <= 1e-9 * abs(value) else f"{value:.6g}"
             return f"the coefficient of {scale}**{Fraction(power, branch)} is {shown}"
     return None
-
-
-# --- compiling a stored expression ------------------------------------------------------
-
-
-class Compiled:
-    """A residual's value and size as numpy functions of its symbols' arrays."""
-
-    def __init__(self, value: Node, size: Node, names: frozenset[str]) -> None:
-        self._value, self._size, self.names = value, size, names
-
-    def value(self, env: dict[str, Any], points: int) -> Any:
-        import numpy as np
-
-        with np.errstate(all="ignore"):
-            return np.broadcast_to(self._value(env), (points,))
-
-    def size(self, env: dict[str, Any], points: int) -> Any:
-        import numpy as np
-
-        with np.errstate(all="ignore"):
-            return np.abs(np.broadcast_to(self._size(env), (points,)))
-
-
-Node = Callable[[dict[str, Any]], Any]
-
-
-@cache
-def compile_text(text: str) -> Compiled:
-    """The value and size functions of a stored expression (sympy's srepr)."""
-    tree = ast.parse(text, mode="eval").body
-    names: set[str] = set()
-    value = _node(tree, names)
-    size = _size_node(tree, names)
-    return Compiled(value, size, frozenset(names))
-
-
-# heads whose value is not analytic in a complex scale: a series that has one is not judged here
-_REAL_ONLY = frozenset({"Abs", "floor", "sign", "arg", "re", "im", "atan2", "Integral"})
-_UNARY = {
-    "sin": "sin",
-    "cos": "cos",
-    "tan": "tan",
-    "exp": "exp",
-    "log": "log",
-    "atan": "arctan",
-    "asin": "arcsin",
-    "acos": "arccos",
-    "sinh": "sinh",
-    "cosh": "cosh",
-    "tanh": "tanh",
-    "Abs": "abs",
-    "floor": "floor",
-    "sign": "sign",
-    "re": "real",
-    "im": "imag",
-    "arg": "angle",
-}
-_CONSTANTS = {"pi": math.pi, "E": math.e, "I": 1j}
-
-
-def _head(node: ast.AST) -> str:
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
-        return node.func.id
-    raise Unsupported(ast.dump(node)[:40])
-
-
-def _number(node: ast.AST) -> float | int | str:
-    if isinstance(node, ast.Constant) and isinstance(node.value, (int, float, str)):
-        return node.value
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-        inner = _number(node.operand)
-        if isinstance(inner, (int, float)):
-            return -inner
-    raise Unsupported("not a literal")
-
-
-def _node(tree: ast.AST, names: set[str]) -> Node:
-    """The value of ``tree`` as a function of the symbols' arrays."""
-    import numpy as np
-
-    if isinstance(tree, ast.Name):
-        if tree.id not in _CONSTANTS and tree.id != "EulerGamma":
-            raise Unsupported(tree.id)
-        constant = float(np.euler_gamma) if tree.id == "EulerGamma" else _CONSTANTS[tree.id]
-        return lambda env: constant
-    head = _head(tree)
-    names.add(head) if head in _REAL_ONLY else None
-    args = tree.args  # type: ignore[attr-defined]
-    if head in ("Symbol", "Dummy"):
-        name = _symbol_name(tree)
-        names.add(name)
-        return lambda env: env[name]
-    if head in ("Integer", "Rational", "Float"):
-        numbers = [_number(a) for a in args]
-        value = float(numbers[0]) if head != "Rational" else int(numbers[0]) / int(numbers[1])
-        return lambda env: value
-    if head in ("Add", "Mul"):
-        parts = [_node(a, names) for a in args]
-        if head == "Add":
-            return lambda env: sum(p(env) for p in parts)
-        return lambda env: math.prod((p(env) for p in parts), start=1.0)
-    if head == "Pow":
-        base, exponent = (_node(a, names) for a in args)
-        return lambda env: np.power(base(env), exponent(env))
-    if head in _UNARY:
-        (inner,) = (_node(a, names) for a in args)
-        function = getattr(np, _UNARY[head])
-        return lambda env: function(inner(env))
-    return _special(head, args, names)
-
-
-def _symbol_name(node: ast.AST) -> str:
-    """A symbol's name; a dummy's is its own (never the ledger's symbol of the same name)."""
-    head = _head(node)
-    if head not in ("Symbol", "Dummy"):
-        raise Unsupported(head)
-    name = str(_number(node.args[0]))  # type: ignore[attr-defined]
-    if head == "Symbol":
-        return name
-    index = [k.value for k in node.keywords if k.arg == "dummy_index"]  # type: ignore[attr-defined]
-    return f"{_DUMMY}{name}_{_number(index[0]) if index else 0}"
-
-
-def _special(head: str, args: list[ast.AST], names: set[str]) -> Node:
-    import numpy as np
-
-    if head == "atan2":
-        y, x = (_node(a, names) for a in args)
-        return lambda env: np.arctan2(y(env), x(env))
-    if head in ("besselj", "bessely"):
-        from scipy import special
-
-        function = special.jv if head == "besselj" else special.yv
-        order, argument = (_node(a, names) for a in args)
-        return lambda env: function(order(env), argument(env))
-    if head in ("factorial", "factorial2") and _head(args[0]) == "Integer":
-        from sympy import factorial, factorial2
-
-        n = int(_number(args[0].args[0]))  # type: ignore[attr-defined]
-        value = float((factorial if head == "factorial" else factorial2)(n))
-        return lambda env: value
-    if head == "Integral":
-        return _integral(args, names)
-    raise Unsupported(head)
-
-
-def _size_node(tree: ast.AST, names: set[str]) -> Node:
-    """The size of ``tree``: every sum a sum of absolute values (ε·(a − b): |ε|·(|a| + |b|))."""
-    import numpy as np
-
-    head = _head(tree) if isinstance(tree, ast.Call) else ""
-    args = getattr(tree, "args", [])
-    if head in ("Add", "Mul"):
-        parts = [_size_node(a, names) for a in args]
-        if head == "Add":
-            return lambda env: sum(np.abs(p(env)) for p in parts)
-        return lambda env: math.prod((np.abs(p(env)) for p in parts), start=1.0)
-    if head == "Integral":
-        return _integral(args, names, absolute=True)
-    if head == "Pow" and _head(args[1]) == "Integer" and int(_number(args[1].args[0])) > 0:
-        base, power = _size_node(args[0], names), int(_number(args[1].args[0]))
-        return lambda env: np.abs(base(env)) ** power
-    value = _node(tree, names)
-    return lambda env: np.abs(value(env))
-
-
-# tanh-sinh quadrature on [-1, 1]: steps h and h/2, nodes until the weights underflow
-_LEVELS = (1 / 16, 1 / 32)
-
-
-@cache
-def _tanh_sinh(step: float) -> tuple[Any, Any]:
-    import numpy as np
-
-    k = np.arange(-int(3.2 / step), int(3.2 / step) + 1) * step
-    u = np.pi / 2 * np.sinh(k)
-    nodes = np.tanh(u)
-    weights = step * np.pi / 2 * np.cosh(k) / np.cosh(u) ** 2
-    keep = np.abs(nodes) < 1.0  # the nodes float64 still tells from the ends
-    return nodes[keep], weights[keep]
-
-
-def _integral(args: list[ast.AST], names: set[str], absolute: bool = False) -> Node:
-    """A definite integral by tanh-sinh quadrature at every point at once (the ends may be
-    singular; an upper end at infinity is brought to 1 by t = a + u/(1 − u)); when two step
-    sizes differ by more than 1e-13 of the value, undecided."""
-    if len(args) != 2 or _head(args[1]) != "Tuple":
-        raise Unsupported("a multiple integral")
-    variable, low, high = args[1].args  # type: ignore[attr-defined]
-    name = _symbol_name(variable)
-    inside: set[str] = set()
-    integrand = _node(args[0], inside)
-    names |= inside - {name}
-    if absolute:  # the size of an integral: the integral of its integrand's absolute value
-        signed = integrand
-
-        def integrand(env: dict[str, Any]) -> Any:
-            return abs(signed(env))
-
-    lower = _node(low, names)
-    if isinstance(high, ast.Name) and high.id == "oo":
-        return _to_infinity(integrand, lower, name)
-    return _settled(integrand, lower, _node(high, names), name)
-
-
-def _settled(integrand: Node, lower: Node, upper: Node, name: str) -> Node:
-    import numpy as np
-
-    def value(env: dict[str, Any]) -> Any:
-        a, b = np.asarray(lower(env)), np.asarray(upper(env))
-        results = []
-        for step in _LEVELS:
-            nodes, weights = _tanh_sinh(step)
-            inner = {k: np.asarray(v)[..., None] for k, v in env.items()}
-            half, middle = (b - a)[..., None] / 2, (b + a)[..., None] / 2
-            inner[name] = middle + half * nodes
-            terms = integrand(inner) * weights * half
-            results.append(np.sum(terms, axis=-1))
-            size = np.sum(np.abs(terms), axis=-1)  # the scale a vanishing integral is on
-        coarse, fine = results
-        unsettled = np.abs(fine - coarse) > 1e-13 * size + 1e-300
-        if np.any(unsettled) or not np.all(np.isfinite(fine)):
-            raise Unsupported("a quadrature that does not settle")
-        return fine
-
-    return value
-
-
-def _to_infinity(integrand: Node, lower: Node, name: str) -> Node:
-    """∫_a^∞ f(t) dt = ∫_0^1 f(a + u/(1 − u)) du/(1 − u)²."""
-    import numpy as np
-
-    def mapped(env: dict[str, Any]) -> Any:
-        u = env["\0u"]
-        inner = dict(env)
-        inner[name] = lower(env) + u / (1 - u)
-        with np.errstate(all="ignore"):
-            values = integrand(inner) / (1 - u) ** 2
-        far = np.broadcast_to(inner[name], np.shape(values)) > 1e8  # underflow of a decaying tail
-        return np.where(far & ~np.isfinite(values), 0.0, values)
-
-    return _settled(mapped, lambda env: 0.0, lambda env: 1.0, "\0u")
