@@ -69,10 +69,10 @@ def test_a_declared_kind_other_than_the_references_is_refused_naming_the_row() -
     row_id = "lecornu.eq.25"  # a series in p
     assert committed_row(row_id).kind == "series"
     computed, problem = judged_after_edit(
-        reference_table(paper("lecornu")), row_id, 'kind = "series"', 'kind = "identity"', row_id
+        reference_table(paper("lecornu")), row_id, 'kind = "series"', 'kind = "inequality"', row_id
     )
     assert computed == (
-        "no status the ledger may record: kind 'identity' is declared, but its reference and "
+        "no status the ledger may record: kind 'inequality' is declared, but its reference and "
         "printed form make it 'series'"
     )
     assert problem is not None and problem.startswith("recorded holds, but the printed form")

@@ -69,7 +69,9 @@ def conditional(
     symbols = ledger.symbols_for(row)
 
     def compute() -> tuple[str | None, str]:
-        return printed_status(row, symbols, _built(fresh, paper.key, row.reference or ""))
+        built = _built(fresh, paper.key, row.reference or "")
+        cases = _case_builders(row, references)
+        return printed_status(row, symbols, _with_row_parameters(row, built, cases))
 
     return row_conditional(paper.key, row, ledger.assumptions, compute)
 
@@ -112,12 +114,48 @@ def row_printed_status(
     if builder is None:
         raise PendcliError(f"{row.id}: the {row.paper} references have no {row.reference!r}")
     # keyed on what a reference may read: the published numbers and the ledgers
-    return _printed_status(row, tuple(sorted(symbols.items())), builder, _read_by_references())
+    key = _read_by_references()
+    cases = _case_builders(row, references)
+    return _printed_status(row, tuple(sorted(symbols.items())), builder, key, cases)
+
+
+def _case_builders(row: LedgerRow, references: References) -> tuple[Callable[[], Any], ...]:
+    """The builders of the references the row's ``cases`` key names, in order."""
+    names = dict(row.parameters).get("cases", ())
+    missing = [n for n in names if n not in references]
+    if missing:
+        raise PendcliError(f"{row.id}: the {row.paper} references have no {missing[0]!r}")
+    return tuple(references[n] for n in names)
+
+
+def _with_row_parameters(
+    row: LedgerRow, reference: Any, case_builders: tuple[Callable[[], Any], ...]
+) -> Any:
+    """The reference with the row's kind parameters (core/check_kinds) in place of its own,
+    its ``cases`` built (each once per tables folder)."""
+    from pendcli.core.check_kinds import with_parameters
+
+    if not row.parameters:
+        return reference
+    names = dict(row.parameters).get("cases", ())
+    key = _read_by_references()
+    cases = tuple(
+        _reference(b, row.paper, n, key) for b, n in zip(case_builders, names, strict=True)
+    )
+    try:
+        return with_parameters(reference, row.parameters, cases)
+    except ValueError as exc:  # a combination of parameters that makes no kind of check
+        why = f"{row.id}: reference {row.reference!r} with the row's keys: {exc}"
+        raise PendcliError(why) from None
 
 
 @cache
 def _printed_status(
-    row: LedgerRow, symbols: tuple[tuple[str, str], ...], builder: Callable[[], Any], tables: str
+    row: LedgerRow,
+    symbols: tuple[tuple[str, str], ...],
+    builder: Callable[[], Any],
+    tables: str,
+    case_builders: tuple[Callable[[], Any], ...],
 ) -> tuple[str | None, str]:
     from pendcli.core.check_kinds import kind_mismatch, kind_problem
     from pendcli.core.printed_verdict import stored_status
@@ -127,7 +165,8 @@ def _printed_status(
     if stored is not None:  # derived by `make regen` from these very tables
         kind, forms = stored
         return (None, kind_mismatch(row.kind, kind)) if kind != row.kind else stored_status(forms)
-    reference = _reference(builder, row.paper, row.reference, tables)
+    built = _reference(builder, row.paper, row.reference, tables)
+    reference = _with_row_parameters(row, built, case_builders)
     formula = row_formula(f"{row.id}: printed", row.printed or "", dict(symbols))
     wrong_kind = kind_problem(row.kind, formula, reference)
     if wrong_kind:
@@ -149,7 +188,8 @@ def row_derivation(
     if row.reference is None or row.reference not in references:
         return None
     name = row.reference
-    reference = _reference(references[name], row.paper, name, _read_by_references())
+    built = _reference(references[name], row.paper, name, _read_by_references())
+    reference = _with_row_parameters(row, built, _case_builders(row, references))
     inputs = row_inputs(row, symbols)
     if isinstance(reference, Numbers):
         return {"inputs": inputs, "reference": name, "live": "printed numbers"}
