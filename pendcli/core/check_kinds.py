@@ -219,8 +219,9 @@ _PARSERS: dict[str, Any] = {
 
 
 def with_parameters(reference: Any, parameters: Parameters, cases: tuple[Any, ...] = ()) -> Any:
-    """``reference`` (a ``Reference``) with the row's ``parameters`` in place of its own; the
-    row's ``cases`` (the references it names, built) each given the row's other parameters."""
+    """``reference`` (a ``Reference``) with the row's ``parameters`` in place of its own (a
+    domain: added to its own); its reading and its cases (the row's ``cases``: the references
+    it names, built) each given the row's parameters but the cases'."""
     from dataclasses import replace
 
     if not parameters:
@@ -238,9 +239,12 @@ def with_parameters(reference: Any, parameters: Parameters, cases: tuple[Any, ..
         given["domain"] = {**reference.domain, **dict(values["domain"])}
     if "each_case" in values:
         given["each_case"] = tuple(dict(case) for case in values["each_case"])
-    if cases:
-        own = tuple(p for p in parameters if p[0] != "cases")
-        given["cases"] = tuple(with_parameters(c, own) for c in cases)
+    # the reading and each case are judged for the same row: its parameters apply to them
+    own = tuple(p for p in parameters if p[0] not in ("cases", "each_case"))
+    if reference.reading is not None:
+        given["reading"] = with_parameters(reference.reading, own)
+    if cases or reference.cases:
+        given["cases"] = tuple(with_parameters(c, own) for c in cases or reference.cases)
     return replace(reference, **given)
 
 

@@ -54,27 +54,11 @@ def _monomial(phase: bool, power: Any = None) -> dict[str, Any]:
     return exact
 
 
-def _monomial_domain() -> dict[str, tuple[Any, Any]]:
-    """Values of order 1 (kαl0 near 1), so that B_n(kαl0)ⁿ is far above the tolerance."""
-    import sympy as sp
-
-    half, one, two = sp.Rational(1, 2), sp.Integer(1), sp.Integer(2)
-    return {
-        "n": (one, sp.Integer(4)),
-        "alpha": (half, one),
-        "l0": (one, two),
-        "k": (half, one),
-        "B_n": (half, one),
-        "c": (half, one),
-    }
-
-
 # n° 13, 1°, line 376: E_c(π) = 0 and ΔT = 0 for a constant resistance (n = 0 of n° 14)
 def reference_constant_resistance() -> Reference:
     """n° 13, 1°: ΔT and E_c(π) for a constant resistance F = B_0 (E of kt), through c."""
-    (c,) = ledger_symbols("c")
     exact = _monomial(phase=True, power=0)
-    return Reference(exact, scale=c, order=2, domain=_monomial_domain(), what="F = B_0")
+    return Reference(exact, what="F = B_0")
 
 
 # n° 14, line 421: b_n vⁿ named the acceleration of the resistance
@@ -92,32 +76,27 @@ def reference_corrections_add() -> Reference:
     Delta_x_1, Delta_x_2), each from Duhamel's integral (E of kt), through c."""
     import sympy as sp
 
-    c, b0, b1, b2 = ledger_symbols("c", "B_0", "B_1", "B_2")
+    b0, b1, b2 = ledger_symbols("B_0", "B_1", "B_2")
     v = sp.Symbol("v_", real=True)
     terms = (b0, b1 * sp.Abs(v), b2 * v**2)
     whole = resisted(sp.Lambda(v, sp.Add(*terms)), phase=True)["Delta_alpha"]
     exact = {"Delta_x": whole}
     for index, term in enumerate(terms):
         exact[f"Delta_x_{index}"] = resisted(sp.Lambda(v, term), phase=True)["Delta_alpha"]
-    half, one = sp.Rational(1, 2), sp.Integer(1)
-    domain = {**_monomial_domain(), "B_0": (half, one), "B_1": (half, one), "B_2": (half, one)}
-    return Reference(exact, scale=c, order=2, domain=domain, what="F = B_0 + B_1v + B_2v²")
+    return Reference(exact, what="F = B_0 + B_1v + B_2v²")
 
 
 # n° 15, 1°, lines 429-433 and 435 (E_c), 2°, lines 439-444 (E_s)
 def reference_monomial() -> Reference:
     """n° 15: E_s, E_c (of the time) for F(v) = B_n vⁿ."""
-    return Reference(_monomial(phase=False), domain=_monomial_domain(), what="F = B_n vⁿ")
+    return Reference(_monomial(phase=False), what="F = B_n vⁿ")
 
 
 # n° 15, 1°, line 437 (E_c(π) = 0); n° 16, lines 502-510 (Δα); n° 17, lines 530-534
 # (ΔT_½, Δv_m)
 def reference_monomial_points() -> Reference:
     """n° 16-17: Δα, ΔT_½, Δv_m for F(v) = B_n vⁿ (E of kt), through c."""
-
-    (c,) = ledger_symbols("c")
-    exact, domain = _monomial(phase=True), _monomial_domain()
-    return Reference(exact, scale=c, order=2, domain=domain, what="F = B_n vⁿ")
+    return Reference(_monomial(phase=True), what="F = B_n vⁿ")
 
 
 def _in_definition() -> Any:
@@ -133,10 +112,9 @@ def _in_definition() -> Any:
 # I_(-1), 463-469; I_0(π) = 2, I_(-1)(π) = π and −cos π sinⁿπ = 0, 480-482
 def reference_in() -> Reference:
     """n° 15: I_n = ∫₀^x sin^{n+1} x dx, its definition (quadrature)."""
-    import sympy as sp
 
     exact = {"I": _in_definition()}
-    return Reference(exact, domain={"n": (sp.Integer(2), sp.Integer(5))}, what="I_n's definition")
+    return Reference(exact, what="I_n's definition")
 
 
 # n° 15, 2°, lines 486-489: I_n(π) in closed form, n even and n odd
@@ -172,15 +150,12 @@ def reference_friction_in_g_and_t() -> Reference:
     its derivatives in α and in T say whether it depends on them; through c."""
     import sympy as sp
 
-    c, k, l0, g, big_t = ledger_symbols("c", "k", "l0", "g", "T")
+    k, l0, g, big_t = ledger_symbols("k", "l0", "g", "T")
     exact = _monomial(phase=True, power=0)
     in_g_t = {k: sp.pi / big_t, l0: g * big_t**2 / sp.pi**2}
     shift = exact["Delta_alpha"].subs(in_g_t, simultaneous=True)
     return Reference(
         {"Delta_x": shift},
-        scale=c,
-        order=2,
-        domain={"c": (sp.Rational(1, 2), sp.Integer(1))},
         what="Δα of F = B_0 in g and T",
     )
 
@@ -192,7 +167,6 @@ def reference_friction() -> Reference:
     exact["P"] = ledger_symbols("alpha")[0] / (-exact["Delta_alpha"])
     return Reference(
         exact,
-        domain=_monomial_domain(),
         what="α over the loss of amplitude per oscillation, F = B_0",
     )
 
@@ -201,19 +175,16 @@ def reference_friction() -> Reference:
 def reference_monomial_decay() -> Reference:
     """n° 16, 1°: Δα of F = B_n vⁿ for n in [1, 4) with c small (c < 1/10), so that one simple
     oscillation keeps a positive fraction of the amplitude; through c."""
-    import sympy as sp
 
     base = reference_monomial_points()
-    domain = {**base.domain, "c": (sp.Rational(1, 100), sp.Rational(1, 20))}
-    return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
+    return Reference(base.exact, what=base.what)
 
 
 def _monomial_case(power: Any) -> Reference:
     """Δα of F(v) = B_n vⁿ for the exponent ``power`` (n itself set to it), through c."""
-    (c,) = ledger_symbols("c")
     exact = _monomial(phase=True, power=power)
     exact["n"] = power
-    return Reference(exact, scale=c, order=2, domain=_monomial_domain(), what="F = B_n vⁿ")
+    return Reference(exact, what="F = B_n vⁿ")
 
 
 # n° 16, 2°, lines 522-526: Δα with I_n(π) in closed form, n even and n odd
@@ -227,9 +198,6 @@ def reference_monomial_parity() -> Reference:
     even, odd = _monomial_case(2 * sp.floor(n) - 2), _monomial_case(2 * sp.floor(n) - 1)
     return Reference(
         odd.exact,
-        scale=odd.scale,
-        order=odd.order,
-        domain=odd.domain,
         what="F = B_n vⁿ, n even then n odd",
         cases=(even, odd),
     )

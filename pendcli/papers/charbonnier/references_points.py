@@ -74,10 +74,9 @@ def _family_points() -> dict[str, Any]:
 # amplitude θ_m)
 def reference_turning_point() -> Reference:
     """n° 9, 1°-2°: t is the turning time t* (θ' = 0 near kt = π), through ε."""
-    (eps,) = ledger_symbols("epsilon")
     exact = _family_points()
     exact["t"] = exact["turning"]
-    return Reference(exact, scale=eps, order=2, what="the turning time of θ0 + εθ1")
+    return Reference(exact, what="the turning time of θ0 + εθ1")
 
 
 # n° 9, 1°, lines 237-241: kt from sin kt = −εE_c(π)/(kα), inverted
@@ -88,15 +87,14 @@ def reference_sine_inverted() -> Reference:
     k, alpha, eps = ledger_symbols("k", "alpha", "epsilon")
     exact = _family_points()
     exact["t"] = (sp.pi + sp.asin(eps / (k * alpha) * exact["E_c"](sp.pi))) / k
-    return Reference(exact, scale=eps, order=3, what="the sine relation inverted, through ε²")
+    return Reference(exact, what="the sine relation inverted, through ε²")
 
 
 # (6) line 247, (7) line 265, (8) line 283, (9) line 287: ΔT, Δα, ΔT_½, Δθ'_m
 def reference_remarkable_points() -> Reference:
     """n° 9: ΔT, θ_m, Δα, ΔT_½, Δθ'_m from θ = θ0 + εθ1, compared through ε."""
-    (eps,) = ledger_symbols("epsilon")
     exact = {k: v for k, v in _family_points().items() if k not in ("turning", "lowest")}
-    return Reference(exact, scale=eps, order=2, what="θ0 + εθ1 at its turning and lowest points")
+    return Reference(exact, what="θ0 + εθ1 at its turning and lowest points")
 
 
 def _family_constrained(key: str) -> dict[str, Any]:
@@ -132,7 +130,6 @@ def reference_amplitude_unchanged() -> Reference:
 # n° 9, 3°, lines 271-279: the time of the lowest point
 def reference_lowest_point() -> Reference:
     """n° 9, 3°: t is the time of the lowest point (θ = 0 near kt = π/2), through ε."""
-    (eps,) = ledger_symbols("epsilon")
     exact = _family_points()
     exact["t"] = exact["lowest"]
-    return Reference(exact, scale=eps, order=2, what="the lowest point of θ0 + εθ1")
+    return Reference(exact, what="the lowest point of θ0 + εθ1")

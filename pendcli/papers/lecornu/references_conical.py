@@ -82,13 +82,11 @@ def reference_conical_polar() -> Any:
 def reference_eq43() -> Any:
     """(43) from lines 984-992: r z'' − z r'' − g r + c² z/r³ = 0 with r = l sin θ,
     z = l cos θ, solved for θ'' (l = a + bt, l'' = 0); the printed d/dt by the chain rule."""
-    import sympy as sp
 
     a, b, t, dth = real_symbols("a", "b", "t", "dtheta_dt")
     second = _eq43_second_derivative(a + b * t)
     rates = {"t": {"l": b, "theta": dth, "dtheta_dt": second}}
-    domain = {"theta": (sp.Rational(3, 10), sp.Rational(12, 10))}
-    return make_reference({"l": a + b * t}, "lines 984-992, l = a + bt", rates=rates, domain=domain)
+    return make_reference({"l": a + b * t}, "lines 984-992, l = a + bt", rates=rates)
 
 
 @cache
@@ -127,13 +125,11 @@ def _eq43_second_derivative(length: Any) -> Any:
 def reference_conical_l_form() -> Any:
     """Lines 1002-1008: θ'' from (43) with l' = b (l kept), and the derivatives in l,
     dθ/dl = θ'/b, d²θ/dl² = θ''/b²."""
-    import sympy as sp
 
     length, b, dth = real_symbols("l", "b", "dtheta_dt")
     second = _eq43_second_derivative(length)
     exact = {"d2theta_dt2": second, "dtheta_dl": dth / b, "d2theta_dl2": second / b**2}
-    domain = {"theta": (sp.Rational(3, 10), sp.Rational(12, 10))}
-    return make_reference(exact, "(43), l = a + bt", domain=domain)
+    return make_reference(exact, "(43), l = a + bt")
 
 
 def _small_conical_u() -> Any:
@@ -252,8 +248,7 @@ def reference_conical_solution() -> Any:
     }
     exact["A45"] = sp.Float(mpmath.nstr(numeric["A"], 32), 30)
     exact["B45"] = sp.Float(mpmath.nstr(numeric["B"], 32), 30)
-    domain = {"x": (sp.Integer(2), sp.Integer(3))}
-    return make_reference(exact, "a solution of (45) by mpmath's ODE solver", domain=domain)
+    return make_reference(exact, "a solution of (45) by mpmath's ODE solver")
 
 
 @cache

@@ -45,12 +45,12 @@ def _s_coefficients() -> tuple[Any, list[Any]]:
 def reference_s_coefficients() -> Any:
     """Lines 704-714: u'', v'', w'' solved from the s⁰, s¹, s² coefficients of (30) with
     θ = u + vs + ws² (each coefficient is linear in its second derivative)."""
-    s, coefficients = _s_coefficients()
+    coefficients = _s_coefficients()[1]
     exact = {}
     for name, coefficient in zip(("U", "V", "W"), coefficients, strict=True):
         (second,) = real_symbols(f"d2{name}_dz2")
         exact[second.name] = -coefficient.subs(second, 0) / coefficient.coeff(second)
-    return make_reference(exact, "(30) with θ = u + vs + ws²", scale=s, order=3)
+    return make_reference(exact, "(30) with θ = u + vs + ws²")
 
 
 def _zero_start_double_quadrature(forcing: Any, z: Any, z0: Any) -> Any:
@@ -124,11 +124,9 @@ def _series_31() -> Any:
 @cache
 def reference_31() -> Any:
     """(31): θ through s² for β = 0, solved from (30) (lines 708-714)."""
-    import sympy as sp
 
     theta, _ = _series_31()
-    domain = {"z": (sp.Rational(1, 10), sp.Rational(9, 10)), "z0": (1, 2)}
-    return make_reference({"theta": theta}, "(30) through s², β = 0", domain=domain)
+    return make_reference({"theta": theta}, "(30) through s², β = 0")
 
 
 @cache
@@ -294,7 +292,7 @@ def reference_amplitude_series() -> Any:
         "theta": 2 * sp.atan(k / kp * sp.cos(am)),
         "fu": 9 * sp.cos(u) - sp.cos(3 * u) + 12 * u * sp.sin(u),
     }
-    return make_reference(exact, "am u through k³, (35) at C = 0", scale=k, order=4)
+    return make_reference(exact, "am u through k³, (35) at C = 0")
 
 
 @cache

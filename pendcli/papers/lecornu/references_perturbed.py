@@ -93,7 +93,7 @@ def reference_eq39() -> Any:
     motion = sp.expand(second + sp.sin(theta) + p * (u * second + 2 * first))
     solved = -motion.subs(q, 0) / motion.coeff(q)
     exact = {"d2eps_du2": solved, "d2omega_du2": d2omega, "F": -(u * d2omega + 2 * domega)}
-    return make_reference(exact, "(32) with θ = ω + pε", scale=p, order=1)
+    return make_reference(exact, "(32) with θ = ω + pε")
 
 
 @cache
@@ -102,7 +102,7 @@ def reference_eq40() -> Any:
     f and its derivatives from (38); a series in k through k³."""
     import sympy as sp
 
-    u, k, _ = _u_symbols()
+    u, _k, _ = _u_symbols()
     (eps,) = real_symbols("eps")
     chain = _slow_finite()
     exact = {
@@ -113,7 +113,7 @@ def reference_eq40() -> Any:
         "dfu": chain["f"].diff(u),
         "d2fu": chain["f"].diff(u, 2),
     }
-    return make_reference(exact, "(39) with ω of (38)", scale=k, order=4)
+    return make_reference(exact, "(39) with ω of (38)")
 
 
 @cache
@@ -215,7 +215,7 @@ def reference_k3_neglected() -> Any:
 
     u, p, rho = real_symbols("u", "p", "rho")
     theta = first_order_solution(rho, 3 * p / 4 - sp.pi / 2, u)
-    return make_reference({"theta": theta}, "(48) to O(p), ψ = 3p/4 − π/2", scale=p, order=2)
+    return make_reference({"theta": theta}, "(48) to O(p), ψ = 3p/4 − π/2")
 
 
 @cache
@@ -262,21 +262,15 @@ def reference_t_equals_t_prime() -> Any:
     scale = sp.Symbol("epsilon", positive=True)
     duration = _half_oscillation().subs(k, 0).subs(b, scale * b)
     exact = {"b": scale * b, "T": duration, "Tp": duration, "l": a + scale * b * duration}
-    return make_reference(exact, "(42) at k = 0, to first order in b", scale=scale, order=2)
+    return make_reference(exact, "(42) at k = 0, to first order in b")
 
 
 def reference_speed_at_quarter() -> Any:
     """Line 902, « avec la vitesse négative »: dθ/dt at u = π/2 of reference_eq41, over k up to
     sin 45°, p small and rg = √(g/a) about 1/s (an inequality needs every symbol's range)."""
-    import sympy as sp
 
     exact = dict(reference_eq41().exact)
-    domain = {
-        "k": (sp.Rational(1, 20), sp.Rational(7, 10)),
-        "p": (sp.Rational(1, 1000), sp.Rational(1, 20)),
-        "rg": (sp.Rational(1, 2), 4),
-    }
-    return make_reference(exact, "θ = ω + p(kβ + k³δ) at u = π/2", domain=domain)
+    return make_reference(exact, "θ = ω + p(kβ + k³δ) at u = π/2")
 
 
 # Each builder by the name the ledger's rows cite (``reference = "…"``).

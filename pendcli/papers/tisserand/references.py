@@ -84,7 +84,7 @@ def reference_ellipse() -> Reference:
         "rho0": length * u0,
         "rho1": length * u1,
     }
-    return Reference(exact, domain=base.domain, what="(3), (9), (16)")
+    return Reference(exact, what="(3), (9), (16)")
 
 
 # --- the summary (I)-(VI) and its approximations, p. 453-454 -----------------------------
@@ -109,7 +109,7 @@ def reference_resal() -> Reference:
     secular coefficient of φ' in ψ), k'' through the first order, the rate through the second."""
     base = reference_motion(3, "(4), (5), (3): k'' to order 1, dφ'/dt to order 2", {"kpp": 2})
     exact = {**base.exact, "dphip_dt": base.exact["kp"] * motion_series(3)["P"]}
-    return Reference(exact, scale=base.scale, order=3, what=base.what, orders=base.orders)
+    return Reference(exact, what=base.what)
 
 
 # Lines 182-188, « Deuxième approximation », and line 206, the periodic term cited again.
@@ -130,7 +130,7 @@ def reference_third_approximation() -> Reference:
     # series) and τ over (0, π) but its zero π/2, where the quotient is continued
     domain = {"u0": (r(1, 2), r(7, 10)), "u1": (r(1, 10), r(3, 10))}
     domain.update(s=(r(1, 100), r(1, 10)), tau=(r(1, 10), r(3)))
-    return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
+    return Reference(base.exact, what=base.what)
 
 
 # --- the table the ledger's rows cite, in the order of the paper -------------------------

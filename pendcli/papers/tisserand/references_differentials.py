@@ -68,22 +68,6 @@ def _apsidal_constants(k: Any) -> tuple[Any, Any]:
     return fixed[energy], fixed[h2]
 
 
-# θ0 the largest angle, θ1 the smallest, θ between; in (3)'s variables, ψ in the first
-# quarter, where θ falls from θ0 (the sign convention of the printed roots).
-def _domain_apsides() -> dict[str, Any]:
-    import sympy as sp
-
-    r = sp.Rational
-    return {
-        "theta0": (r(1, 2), r(4, 5)),
-        "theta1": (r(1, 10), r(3, 10)),
-        "theta": (r(7, 20), r(9, 20)),
-        "u0": (r(1, 2), r(7, 10)),
-        "u1": (r(1, 10), r(3, 10)),
-        "psi": (r(1, 10), r(7, 5)),
-    }
-
-
 def _motion_in_theta(theta: Any, dtheta: Any) -> dict[str, Any]:
     """dt and dφ along the motion, from the first integrals (θ decreasing from θ0 at t = 0)."""
     import sympy as sp
@@ -99,7 +83,7 @@ def reference_first_integrals() -> Reference:
     """(1), (2): dt and dφ from the energy and areal integrals, apsides θ0 and θ1."""
     theta, dtheta = ledger_symbols("theta", "dtheta")
     exact = _motion_in_theta(theta, dtheta)
-    return Reference(exact, domain=_domain_apsides(), what="the first integrals")
+    return Reference(exact, what="the first integrals")
 
 
 # --- the substitution (3), lines 42-52 -------------------------------------------------------
@@ -119,7 +103,7 @@ def reference_first_integrals_in_psi() -> Reference:
     apsides = {theta0: sp.asin(u0), theta1: sp.asin(u1)}
     exact = {n: e.subs(apsides) for n, e in _motion_in_theta(theta, dtheta).items()}
     exact.update(theta=theta, theta0=sp.asin(u0), theta1=sp.asin(u1), u=u, dtheta=dtheta)
-    return Reference(exact, domain=_domain_apsides(), what="the first integrals with (3)")
+    return Reference(exact, what="the first integrals with (3)")
 
 
 # (3), line 42: the integrals in ψ of lines 82-88 and tan²ψ of line 134 rest on it.
@@ -129,11 +113,7 @@ def reference_definition_3() -> Reference:
 
     u0, u1, psi = ledger_symbols("u0", "u1", "psi")
     u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
-    domain = {
-        "u0": (sp.Rational(3, 10), sp.Rational(1, 2)),
-        "u1": (sp.Rational(1, 20), sp.Rational(1, 4)),
-    }
-    return Reference({"u": u}, domain=domain, what="(3)")
+    return Reference({"u": u}, what="(3)")
 
 
 # --- the developments in the small angles: lines 54-78, (6), (7) -------------------------
@@ -157,7 +137,7 @@ def reference_small_angles() -> Reference:
     import sympy as sp
 
     x = sp.Symbol("x", positive=True)
-    return Reference(_small_angles(x), scale=x, order=6, what="u = sin θ, to order 4")
+    return Reference(_small_angles(x), what="u = sin θ, to order 4")
 
 
 # Line 70 (the square root of the development) and (6), line 72: dt of (4) as a series.
@@ -173,7 +153,7 @@ def reference_differential_4() -> Reference:
     product = (c + c0) * (c + c1) * (c0 + c1)
     root = sp.sqrt(1 - exact["u"] ** 2)
     exact["dt"] = dpsi / (k * sp.sqrt(2) * root) * sp.sqrt(product) / sp.sqrt(total)
-    return Reference(exact, scale=x, order=6, what="(4), to order 4")
+    return Reference(exact, what="(4), to order 4")
 
 
 def _dphi_from_5(scale_u0_u1: bool) -> dict[str, Any]:
@@ -192,14 +172,14 @@ def _dphi_from_5(scale_u0_u1: bool) -> dict[str, Any]:
 # (7), line 76: the Laurent series of (5).
 def reference_formula_5() -> Reference:
     """(5) through the second order in the angles (its Laurent series in u, u0, u1): (7)."""
-    return Reference(_dphi_from_5(True), scale=scale(), order=3, what="(5)")
+    return Reference(_dphi_from_5(True), what="(5)")
 
 
 # Line 78: the coefficient 1 of 1/u² in (7), « si loin qu'on pousse les approximations ».
 def reference_formula_5_near_u_zero() -> Reference:
     """(5) with u0, u1 exact and u → 0 only: the 1/u² coefficient to every order in u0, u1
     (« si loin qu'on pousse les approximations »)."""
-    return Reference(_dphi_from_5(False), scale=scale(), order=0, what="(5) as u → 0")
+    return Reference(_dphi_from_5(False), what="(5) as u → 0")
 
 
 # Lines 68-70, « La formule (5) donnera ensuite »: the series of (4), cited as (5).
@@ -211,6 +191,4 @@ def reference_formula_5_as_cited() -> Reference:
     x = sp.Symbol("x", positive=True)
     exact = _small_angles(x)
     exact["dphi"] = _dphi_from_5(True)["dphi"].subs(scale(), x)
-    return Reference(
-        exact, scale=x, order=6, what="(5), to order 4", reading=reference_differential_4()
-    )
+    return Reference(exact, what="(5), to order 4", reading=reference_differential_4())

@@ -60,23 +60,14 @@ def reference_uniform_rotation() -> Reference:
         "rho1": length * s * u1,
         "dphip_dt": base.exact["kp"] * motion_series(5)["P"],
     }
-    r = _rational
-    domain = {
-        "u0": (r(1, 2), r(7, 10)),
-        "u1": (r(1, 10), r(3, 10)),
-        "psi": (r(1, 10), r(3, 1)),
-        "s": (r(1, 100), r(1, 10)),
-        "g": (r(1, 10), r(1, 2)),
-        "l": (r(1, 10), r(1, 2)),
-    }
-    return Reference(exact, scale=s, order=4, domain=domain, what=base.what)
+    return Reference(exact, what=base.what)
 
 
 # Line 44, « Pour t = 0, on aura ψ = 0 »: at t = 0, θ = θ0 (line 32), so u = u0.
 def reference_start_of_psi() -> Reference:
     """(3) at ψ = 0: u there is u0, the value of u at t = 0 (θ = θ0)."""
     base = reference_definition_3()
-    return Reference(base.exact, domain=base.domain, each_case=({"psi": 0},), what="(3), ψ = 0")
+    return Reference(base.exact, what="(3), ψ = 0")
 
 
 # Line 152: the ellipse (17) has centre O, major axis Ox', axes 2ρ0 and 2ρ1.
@@ -87,14 +78,7 @@ def reference_ellipse_axes() -> Reference:
     length = ledger_symbols("l")[0]
     u0, u1 = ledger_symbols("u0", "u1")
     exact = {"rho": length * base.exact["u"], "rho0": length * u0, "rho1": length * u1}
-    r = _rational
-    domain = {
-        "u0": (r(1, 2), r(7, 10)),
-        "u1": (r(1, 10), r(3, 10)),
-        "psi": (r(0, 1), r(628, 100)),
-        "l": (r(1, 10), r(1, 2)),
-    }
-    return Reference(exact, domain=domain, what="(3), (16), line 142")
+    return Reference(exact, what="(3), (16), line 142")
 
 
 # Line 128, (16): the radius vector of the projection, from the bob's position.
@@ -116,4 +100,4 @@ def reference_angles_second_order() -> Reference:
     second, no term below s²."""
     s = scale()
     u0, u1 = ledger_symbols("u0", "u1")
-    return Reference({"u0": s * u0, "u1": s * u1}, scale=s, order=2, what="u0, u1 of order 1")
+    return Reference({"u0": s * u0, "u1": s * u1}, what="u0, u1 of order 1")

@@ -147,7 +147,7 @@ def reference_motion(n: int, what: str, orders: dict[str, int] | None = None) ->
         "u0": s * u0,
         "u1": s * u1,
     }
-    return Reference(exact, scale=s, order=n, what=what, orders=orders or {})
+    return Reference(exact, what=what)
 
 
 def _below(expr: Any, n: int) -> Any:
@@ -199,7 +199,7 @@ def reference_in_kpt(n: int, what: str, orders: dict[str, int] | None = None) ->
     exact = dict(base.exact)
     exact.update(psi=in_tau["psi"], phip=in_tau["phip"], t=in_tau["tau"] / base.exact["kp"])
     del exact["phi"], exact["phi1"]  # functions of ψ: not needed in τ
-    return Reference(exact, scale=base.scale, order=n, what=what, orders=orders or {})
+    return Reference(exact, what=what)
 
 
 # --- the builders the ledger cites ------------------------------------------------------------
@@ -235,4 +235,4 @@ def reference_cited_in_kpt() -> Reference:
     _, _, _, _, u0, u1, *_ = series_symbols()
     phi1 = sp.atan(u1 / u0 * sp.tan(base.exact["psi"]))
     exact = {**base.exact, "phi1": phi1, "phi": phi1 + base.exact["phip"]}
-    return Reference(exact, scale=base.scale, order=base.order, what="(4), (5), (3) in k't")
+    return Reference(exact, what="(4), (5), (3) in k't")
