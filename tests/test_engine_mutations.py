@@ -86,6 +86,7 @@ from pendcli.core import (
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, reference_table
 from pendcli.core.ledger_formulas import printed_status
+from pendcli.core.ledger_references import cited_reference
 from pendcli.core.printed_check import Reference
 from pendcli.core.printed_numeric import Numbers
 from pendcli.core.vocabulary import Verdict
@@ -160,8 +161,7 @@ def reference_of(row: LedgerRow) -> Any:
     assert row.reference is not None
     key = (row.paper, row.reference)
     if key not in _REFERENCES:
-        table = reference_table(paper_named(row.paper))
-        _REFERENCES[key] = table[row.reference]()
+        _REFERENCES[key] = cited_reference(paper_named(row.paper), row.reference, row.id)
     return _REFERENCES[key]
 
 

@@ -28,6 +28,7 @@ if TYPE_CHECKING:
 __all__ = [
     "Computed",
     "References",
+    "cited_reference",
     "cited_references",
     "conditional",
     "derivation_drift",
@@ -321,6 +322,20 @@ def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Refere
         raise PendcliError(f"the {paper.key} references have no {', '.join(map(repr, missing))}")
     key = _read_by_references()
     return {n: _reference(table[n], paper.key, n, key) for n in names}
+
+
+def cited_reference(paper: Paper, name: str, row_id: str | None = None) -> Any:
+    """The reference ``name`` as the ledger judges a row against it: built, with the kind
+    parameters of the row ``row_id`` (by default the first row citing it) in place."""
+    from pendcli.core.ledger import load_ledger
+
+    table = reference_table(paper)
+    rows = [r for r in load_ledger(paper.key).rows if r.reference == name]
+    row = next((r for r in rows if row_id in (None, r.id)), None)
+    if name not in table or row is None:
+        raise PendcliError(f"the {paper.key} ledger cites no reference {name!r} in {row_id}")
+    built = _reference(table[name], paper.key, name, _read_by_references())
+    return _with_row_parameters(row, built, _case_builders(row, table))
 
 
 # tables folder -> the digest of what a reference may read in it

@@ -47,7 +47,6 @@ from pendcli.papers.charbonnier.references_monomial import (
     reference_in_pi,
     reference_monomial,
     reference_monomial_acceleration,
-    reference_monomial_decay,
     reference_monomial_parity,
     reference_monomial_points,
 )
@@ -61,7 +60,6 @@ from pendcli.papers.charbonnier.references_points import (
 )
 from pendcli.papers.charbonnier.references_resisting import (
     reference_air,
-    reference_air_first_oscillation,
     reference_air_points,
     reference_resistance_sense,
 )
@@ -100,7 +98,6 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     # part II, n° 11-13: the resistance of the air
     "reference_resistance_sense": reference_resistance_sense,
     "reference_air": reference_air,
-    "reference_air_first_oscillation": reference_air_first_oscillation,
     "reference_air_points": reference_air_points,
     "reference_constant_resistance": reference_constant_resistance,
     # part III, n° 14-17: the monomial resistance and I_n
@@ -112,6 +109,5 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_in_pi": reference_in_pi,
     "reference_friction_in_g_and_t": reference_friction_in_g_and_t,
     "reference_friction": reference_friction,
-    "reference_monomial_decay": reference_monomial_decay,
     "reference_monomial_parity": reference_monomial_parity,
 }

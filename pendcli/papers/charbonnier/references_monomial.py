@@ -27,7 +27,6 @@ __all__ = [
     "reference_in_pi",
     "reference_monomial",
     "reference_monomial_acceleration",
-    "reference_monomial_decay",
     "reference_monomial_parity",
     "reference_monomial_points",
 ]
@@ -169,15 +168,6 @@ def reference_friction() -> Reference:
         exact,
         what="α over the loss of amplitude per oscillation, F = B_0",
     )
-
-
-# n° 16, 1°, line 520: for n ≥ 1 no amplitude reaches 0
-def reference_monomial_decay() -> Reference:
-    """n° 16, 1°: Δα of F = B_n vⁿ for n in [1, 4) with c small (c < 1/10), so that one simple
-    oscillation keeps a positive fraction of the amplitude; through c."""
-
-    base = reference_monomial_points()
-    return Reference(base.exact, what=base.what)
 
 
 def _monomial_case(power: Any) -> Reference:

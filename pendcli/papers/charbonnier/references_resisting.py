@@ -22,7 +22,6 @@ from pendcli.papers.charbonnier.references_points import first_order_points
 
 __all__ = [
     "reference_air",
-    "reference_air_first_oscillation",
     "reference_air_points",
     "reference_resistance_sense",
     "resisted",
@@ -109,15 +108,6 @@ def _along_the_arc() -> Callable[[Any], Any]:
 def reference_air() -> Reference:
     """n° 12: θ, θ' and E_s, E_c (of the time) for F(v) = q0 + q1v + q2v², ε = c/l0."""
     return Reference(_air(phase=False), transform=_along_the_arc(), what="F = q0 + q1v + q2v²")
-
-
-# n° 12, 3°, line 337: E_s(t) > 0, the work of the resistance on the first oscillation
-def reference_air_first_oscillation() -> Reference:
-    """n° 12, 3°: E_s of the time on the first simple oscillation (0 < kt < π), F = q0 + q1v +
-    q2v² with positive q's (F > 0, as n° 11 assumes)."""
-
-    base = reference_air()
-    return Reference(base.exact, transform=base.transform, what=base.what)
 
 
 # n° 12, 3°, lines 356-364 (E_s(π) = 2E_s(π/2)); n° 13, 1°, lines 366-372 (ΔT = 0), 2°,

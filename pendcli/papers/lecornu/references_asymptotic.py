@@ -235,7 +235,7 @@ def reference_vertical_to_elongation() -> Any:
     """Lines 559-563: (l'' − l)/b, the time from the vertical at l to the next elongation
     l'' ((23), (24) solved for l'', as for line 555), through b; the printed decimal 0,13
     a rounding."""
-    quarter = cited("reference_quarter_time")
+    quarter = cited("reference_quarter_oscillation")
     return make_reference(
         dict(quarter.exact),
         "(23), (24) solved for l'', decimals rounded",

@@ -48,14 +48,6 @@ def reference_quarter_oscillation() -> Any:
     return reference(_quarter_oscillation(eps), "(23), (24) solved for l''")
 
 
-def reference_quarter_time() -> Any:
-    """Line 555, through ε (the orders 1 and b)."""
-    import sympy as sp
-
-    eps = sp.Symbol("eps_", positive=True)
-    return reference(_quarter_oscillation(eps), "(23), (24) solved for l''")
-
-
 @cache
 def _table_26() -> dict[str, Any]:
     """The instants of the table after (26), first order in p: tv1, te1, tv2, te2, tv3."""
@@ -373,7 +365,6 @@ def reference_x_in_t() -> Any:
 REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_elongation_lengths": reference_elongation_lengths,
     "reference_quarter_oscillation": reference_quarter_oscillation,
-    "reference_quarter_time": reference_quarter_time,
     "reference_largest_length": reference_largest_length,
     "reference_amplitude_factor": reference_amplitude_factor,
     "reference_successive_elongations": reference_successive_elongations,

@@ -207,11 +207,6 @@ def reference_phi_series() -> Any:
     return _phi_series(5)
 
 
-def reference_phi_prime_series() -> Any:
-    """(11), lines 164-166: the same through ε³, the last term (11) prints."""
-    return _phi_series(4)
-
-
 def _elongation_roots(count: int) -> list[Any]:
     """x at the first elongations of (10)'s motion: where θ ∝ φ/x is stationary, i.e.
     φ − xφ' = 0 (φ = √x J₁(2√x), φ' = J₀(2√x)), x > 0, by a scan (mpmath)."""
@@ -389,7 +384,6 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_angular_speed_at_zero_length": reference_angular_speed_at_zero_length,
     "reference_area": reference_area,
     "reference_phi_series": reference_phi_series,
-    "reference_phi_prime_series": reference_phi_prime_series,
     "reference_elongations_of_12": reference_elongations_of_12,
     "reference_eq13": reference_eq13,
     "reference_x_is_xi": reference_x_is_xi,

@@ -118,21 +118,6 @@ def reference_second_approximation() -> Reference:
     return reference_in_kpt(4, "(4), (5), (3) in k't, to order 3")
 
 
-# Line 190, « La troisième approximation »: the sign of φ''s periodic term.
-def reference_third_approximation() -> Reference:
-    """Line 190: the exact motion in τ = k't through the fourth order, θ0 > θ1 (u0 > u1, the
-    apsides' order), for the sign of φ''s periodic term."""
-    import sympy as sp
-
-    base = reference_in_kpt_order_4()
-    r = sp.Rational
-    # an inequality holds only over the range stated: small amplitudes (the scale s of the
-    # series) and τ over (0, π) but its zero π/2, where the quotient is continued
-    domain = {"u0": (r(1, 2), r(7, 10)), "u1": (r(1, 10), r(3, 10))}
-    domain.update(s=(r(1, 100), r(1, 10)), tau=(r(1, 10), r(3)))
-    return Reference(base.exact, what=base.what)
-
-
 # --- the table the ledger's rows cite, in the order of the paper -------------------------
 
 REFERENCES: dict[str, Callable[[], Any]] = {
@@ -158,7 +143,6 @@ REFERENCES: dict[str, Callable[[], Any]] = {
     "reference_first_approximation": reference_first_approximation,
     "reference_resal": reference_resal,
     "reference_second_approximation": reference_second_approximation,
-    "reference_third_approximation": reference_third_approximation,
     # the sentences' own claims (the reading record): Resal's ellipse, ψ = 0 at t = 0, the
     # axes of (17), the angles' order
     "reference_uniform_rotation": reference_uniform_rotation,
