@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from functools import cache
 from pathlib import Path
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
@@ -28,6 +29,7 @@ if TYPE_CHECKING:
 __all__ = [
     "Computed",
     "References",
+    "builders",
     "cited_reference",
     "cited_references",
     "conditional",
@@ -47,6 +49,26 @@ __all__ = [
 
 # reference name -> the function that builds it (``Paper.references``)
 References = Mapping[str, Callable[[], Any]]
+
+
+# the names of the builders a ledger row may cite (``reference = "…"``)
+BUILDER_PREFIXES = ("reference_", "numbers_")
+
+
+def builders(*modules: ModuleType) -> dict[str, Callable[[], Any]]:
+    """A paper's table of references: every public function a module defines whose name
+    starts with ``reference_`` or ``numbers_``, by that name, in the modules' order; a name
+    two modules define is refused (a later builder would silently replace the first)."""
+    table: dict[str, Callable[[], Any]] = {}
+    for module in modules:
+        for name, value in vars(module).items():
+            mine = getattr(value, "__module__", None) == module.__name__
+            if not (name.startswith(BUILDER_PREFIXES) and callable(value) and mine):
+                continue
+            if name in table:
+                raise ValueError(f"two references named {name!r}: {module.__name__} and another")
+            table[name] = value
+    return table
 
 
 def reference_table(paper: Paper) -> References:

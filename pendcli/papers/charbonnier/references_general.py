@@ -28,20 +28,6 @@ __all__ = [
     "integrand_along",
     "ledger_symbols",
     "principal_motion",
-    "reference_angle_integrals",
-    "reference_arc_acceleration",
-    "reference_differentiated",
-    "reference_expansion",
-    "reference_first_order",
-    "reference_linear_perturbation",
-    "reference_linearised",
-    "reference_moments",
-    "reference_newton",
-    "reference_principal_motion",
-    "reference_principal_turn",
-    "reference_taylor",
-    "reference_theta1_equation",
-    "reference_variation",
 ]
 
 

@@ -18,19 +18,6 @@ from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import ledger_symbols
 from pendcli.papers.charbonnier.references_resisting import resisted
 
-__all__ = [
-    "reference_constant_resistance",
-    "reference_corrections_add",
-    "reference_friction",
-    "reference_friction_in_g_and_t",
-    "reference_in",
-    "reference_in_pi",
-    "reference_monomial",
-    "reference_monomial_acceleration",
-    "reference_monomial_parity",
-    "reference_monomial_points",
-]
-
 # the integers at which each closed form of I_n(π) (lines 486-489) is judged
 EVEN = (0, 2, 4, 6, 8)
 ODD = (1, 3, 5, 7, 9)

@@ -19,15 +19,7 @@ from pendcli.papers.charbonnier.references_general import (
     principal_motion,
 )
 
-__all__ = [
-    "first_order_points",
-    "reference_amplitude_unchanged",
-    "reference_lowest_point",
-    "reference_period_unchanged",
-    "reference_remarkable_points",
-    "reference_sine_inverted",
-    "reference_turning_point",
-]
+__all__ = ["first_order_points"]
 
 
 def first_order_points(theta1: Any, speed1: Any) -> dict[str, Any]:

@@ -20,12 +20,7 @@ from pendcli.papers.charbonnier.references_general import (
 )
 from pendcli.papers.charbonnier.references_points import first_order_points
 
-__all__ = [
-    "reference_air",
-    "reference_air_points",
-    "reference_resistance_sense",
-    "resisted",
-]
+__all__ = ["resisted"]
 
 
 def resisted(force: Any, phase: bool) -> dict[str, Any]:

@@ -20,9 +20,7 @@ the tables in the order of the text. No name is given by two sections
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
+from pendcli.core.ledger_references import builders
 from pendcli.papers.lecornu import (
     references_asymptotic,
     references_conical,
@@ -53,6 +51,5 @@ SECTIONS = (
     references_prose,
 )
 
-REFERENCES: dict[str, Callable[[], Any]] = {
-    name: builder for section in SECTIONS for name, builder in section.REFERENCES.items()
-}
+# every builder the sections define, by its name (core/ledger_references.builders)
+REFERENCES = builders(*SECTIONS)

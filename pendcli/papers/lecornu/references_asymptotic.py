@@ -11,13 +11,10 @@ integrals judged by its derivative in a limit; never a copy of the formula the r
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
 from pendcli.papers.lecornu.references_tools import cited, make_reference, real_symbols
-
-__all__ = ["REFERENCES"]
 
 
 def _upper_limit_derivative(name: str, lower: Any) -> Any:
@@ -290,21 +287,3 @@ def reference_mean_pendulum() -> Any:
         exact,
         "the root of (27)'s solution, l = a + bt/2",
     )
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_tail_expansion": reference_tail_expansion,  # lines 426-428
-    "reference_small_p_series": reference_small_p_series,  # line 440
-    "reference_small_x": reference_small_x,  # lines 448-460
-    "reference_quarter_power": reference_quarter_power,  # lines 466-499
-    "reference_eq21_from_20": reference_eq21_from_20,  # (21)
-    "reference_eq22_from_21": reference_eq22_from_21,  # (22)
-    "reference_vertical_passages": reference_vertical_passages,  # (23)
-    "reference_next_passage": reference_next_passage,  # lines 519-527
-    "reference_elongation_condition": reference_elongation_condition,  # line 535
-    "reference_elongation_arc": reference_elongation_arc,  # (24)
-    "reference_vertical_to_elongation": reference_vertical_to_elongation,  # lines 559-563
-    "reference_variation_of_constants": reference_variation_of_constants,  # lines 624-634
-    "reference_mean_pendulum": reference_mean_pendulum,  # lines 666-676
-}

@@ -10,7 +10,6 @@ of the formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
@@ -19,9 +18,6 @@ from pendcli.papers.lecornu.references_tools import (
     make_reference,
     real_symbols,
 )
-
-__all__ = ["REFERENCES"]
-
 
 # --- § IV, the motion in rectangular and polar coordinates, (43)-(45) (lines 940-1016) ---
 
@@ -264,17 +260,3 @@ def reference_omega_pair() -> Any:
     v = sp.sqrt(omega**2 / big_a + big_a * omega**2 * (iw + big_b) ** 2)
     exact = {"omega1": w1, "omega2": w2, "domega1_dx": along(w1), "domega2_dx": along(w2)}
     return make_reference({**exact, "v": v}, "ω1, ω2 of line 1054")
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_conical_cartesian": reference_conical_cartesian,  # lines 948-984
-    "reference_conical_polar": reference_conical_polar,  # lines 986-992
-    "reference_eq43": reference_eq43,  # (43), lines 994-996
-    "reference_area_theorem": reference_area_theorem,  # (44), lines 998-1000
-    "reference_conical_l_form": reference_conical_l_form,  # lines 1002-1008
-    "reference_conical_small": reference_conical_small,  # lines 1010-1016, (45)
-    "reference_lambda_substitution": reference_lambda_substitution,  # lines 1018-1042
-    "reference_conical_solution": reference_conical_solution,  # lines 1044-1052
-    "reference_omega_pair": reference_omega_pair,  # (46), lines 1058-1062
-}

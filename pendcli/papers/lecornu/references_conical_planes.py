@@ -11,7 +11,6 @@ prints. :func:`first_order_solution` is also § III's (line 890).
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
@@ -21,7 +20,7 @@ from pendcli.papers.lecornu.references_tools import (
     real_symbols,
 )
 
-__all__ = ["REFERENCES", "first_order_solution"]
+__all__ = ["first_order_solution"]
 
 
 @cache
@@ -267,21 +266,3 @@ def reference_rotation_angle() -> Any:
     condition = -product / ((rho1**2 - rho2**2) * sp.cos(2 * omega))
     return make_reference({}, "the planes turned by ω, the new phases in quadrature",
                           conditions=(condition,))  # fmt: skip
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_primitive_angles": reference_primitive_angles,  # (47), lines 1064-1074
-    "reference_plane_angles": reference_plane_angles,  # (48), (49), lines 1076-1080
-    "reference_polar_angle": reference_polar_angle,  # lines 1082-1086, 1116-1118
-    "reference_small_theta": reference_small_theta,  # lines 1086-1090
-    "reference_slow_pair": reference_slow_pair,  # (50), lines 1098-1100
-    "reference_slow_length": reference_slow_length,  # line 1102
-    "reference_conical_phases": reference_conical_phases,  # (51), line 1104
-    "reference_rotated_planes": reference_rotated_planes,  # lines 1106-1108
-    "reference_rotated_phases": reference_rotated_phases,  # (52), lines 1112-1126
-    "reference_homothety": reference_homothety,  # lines 1128-1134
-    "reference_projection_length": reference_projection_length,  # line 1096
-    "reference_rotation_angle": reference_rotation_angle,  # line 1110
-    "reference_composed_planes": reference_composed_planes,  # line 1094
-}

@@ -10,15 +10,11 @@ computed here; never a copy of the formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
 from pendcli.papers.lecornu.references_tools import make_reference, real_symbols
 from pendcli.papers.taylor import taylor
-
-__all__ = ["REFERENCES"]
-
 
 # --- § III from (30): the fast shortening, in powers of s = g/b (lines 699-732) ----------
 
@@ -300,20 +296,3 @@ def reference_identity() -> Any:
     """No substitution: the formula is an identity in its own symbols (checked at random
     rational points)."""
     return make_reference({}, "an identity")
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_s_coefficients": reference_s_coefficients,  # lines 704-714
-    "reference_coefficient_solutions": reference_coefficient_solutions,  # lines 716-722
-    "reference_31": reference_31,  # (31), lines 724-726
-    "reference_polar_trajectory": reference_polar_trajectory,  # lines 728-732
-    "reference_eq3_in_u": reference_eq3_in_u,  # (32), lines 738-740
-    "reference_ordinary_pendulum": reference_ordinary_pendulum,  # (33), lines 742-744
-    "reference_cn_solution": reference_cn_solution,  # (34), (35), lines 746-764, 816
-    "reference_osculating": reference_osculating,  # lines 770-774
-    "reference_eq37": reference_eq37,  # (37), lines 776-780
-    "reference_phase_derivatives": reference_phase_derivatives,  # line 782
-    "reference_amplitude_series": reference_amplitude_series,  # lines 786-816, (38)
-    "reference_identity": reference_identity,  # line 806 (cos³u)
-}

@@ -9,7 +9,6 @@ formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
@@ -293,21 +292,3 @@ def reference_x_of_l() -> Any:
     """Lines 284, 344: x = gl/b², line 112's definition of x, solved for x."""
     length, g, b = symbols("l", "g", "b")
     return reference({"x": g * length / b**2}, "x = gl/b² (line 112)")
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_bessel_general": reference_bessel_general,
-    "reference_monotone_as_cited": reference_monotone_as_cited,
-    "reference_at_beta": reference_at_beta,
-    "reference_one_vertical": reference_one_vertical,
-    "reference_bessel_past_beta": reference_bessel_past_beta,
-    "reference_bessel_past_alpha_prime": reference_bessel_past_alpha_prime,
-    "reference_bessel_switches": reference_bessel_switches,
-    "reference_initial_data": reference_initial_data,
-    "reference_limit_at_zero": reference_limit_at_zero,
-    "reference_hopital_at_beta": reference_hopital_at_beta,
-    "reference_rolle": reference_rolle,
-    "reference_x_of_l": reference_x_of_l,
-    "reference_kick_at_vertical": reference_kick_at_vertical,
-}

@@ -9,7 +9,6 @@ references_late.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 from pendcli.papers.lecornu.references_base import reference, symbols
@@ -86,14 +85,3 @@ def reference_large_lambda() -> Any:
 
     eps = sp.Symbol("eps_", positive=True)
     return reference({"lam": 1 / eps}, "λ = 1/ε")
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_integral_18": reference_integral_18,
-    "reference_integral_solution": reference_integral_solution,
-    "reference_integral_19": reference_integral_19,
-    "reference_c_equals_4_over_pi": reference_c_equals_4_over_pi,
-    "reference_quadrature": reference_quadrature,
-    "reference_large_lambda": reference_large_lambda,
-}

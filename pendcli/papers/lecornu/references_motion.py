@@ -9,7 +9,6 @@ compound pendulum itself; never a second copy of the formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
@@ -254,23 +253,3 @@ def reference_shortening() -> Any:
     return reference(
         {"d2theta_dt2": d2, "d2theta_dzt2": in_z, "s": g / b}, "(3) for l = a − bt, z = a/b − t"
     )
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_cartesian": reference_cartesian,
-    "reference_areal": reference_areal,
-    "reference_cartesian_uniform": reference_cartesian_uniform,
-    "reference_chain_rule": reference_chain_rule,
-    "reference_motion_in_l": reference_motion_in_l,
-    "reference_eq6": reference_eq6,
-    "reference_equivalent_length": reference_equivalent_length,
-    "reference_compound": reference_compound,
-    "reference_compound_motion": reference_compound_motion,
-    "reference_small_angle": reference_small_angle,
-    "reference_riccati": reference_riccati,
-    "reference_u_of_x": reference_u_of_x,
-    "reference_shortening": reference_shortening,
-    "reference_u_of_x_shortened": reference_u_of_x_shortened,
-    "reference_speed_of_lengthening": reference_speed_of_lengthening,
-}

@@ -13,23 +13,9 @@ number, the claim that prints the same number, so that the ledger and the table 
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from itertools import pairwise
 from typing import Any
-
-__all__ = [
-    "numbers_eq16",
-    "numbers_j1_roots",
-    "numbers_j2_roots",
-    "numbers_j2_roots_chopped",
-    "numbers_table_amplitudes",
-    "numbers_table_intervals",
-    "numbers_table_j0",
-    "numbers_table_lengths",
-    "numbers_table_speeds",
-    "numbers_table_times",
-    "numbers_vertical_lengths",
-]
 
 _DPS = 30
 J2 = [f"lecornu.j2_zeros.{k}" for k in range(1, 6)]  # (15), ascending
@@ -186,19 +172,3 @@ def numbers_vertical_lengths() -> Any:
         lengths = [_published(COEFFICIENT) * _published(c) ** 2 for c in J1]
     ids = [f"lecornu.j1_lengths.{k}" for k in range(1, 7)]
     return _numbers(lengths, "0,00313 z² (16) at the printed zeros of J₁", ids)
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "numbers_j2_roots": numbers_j2_roots,
-    "numbers_j2_roots_chopped": numbers_j2_roots_chopped,  # line 210
-    "numbers_table_speeds": numbers_table_speeds,
-    "numbers_eq16": numbers_eq16,
-    "numbers_table_lengths": numbers_table_lengths,
-    "numbers_table_times": numbers_table_times,
-    "numbers_table_intervals": numbers_table_intervals,
-    "numbers_table_j0": numbers_table_j0,
-    "numbers_table_amplitudes": numbers_table_amplitudes,
-    "numbers_j1_roots": numbers_j1_roots,
-    "numbers_vertical_lengths": numbers_vertical_lengths,
-}

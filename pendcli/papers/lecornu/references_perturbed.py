@@ -10,16 +10,12 @@ remark is judged on (41) as the ledger transcribes it: that is what it says of (
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
 from pendcli.papers.lecornu.references_conical_planes import first_order_solution
 from pendcli.papers.lecornu.references_tools import make_reference, real_symbols
 from pendcli.papers.taylor import taylor
-
-__all__ = ["REFERENCES"]
-
 
 # --- § III, (39)-(42'): the perturbation of (38) by the lengthening (lines 818-934) -------
 
@@ -271,20 +267,3 @@ def reference_speed_at_quarter() -> Any:
 
     exact = dict(reference_eq41().exact)
     return make_reference(exact, "θ = ω + p(kβ + k³δ) at u = π/2")
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_eq39": reference_eq39,  # (39), lines 818-824
-    "reference_eq40": reference_eq40,  # (40), lines 826-834
-    "reference_eps_split": reference_eps_split,  # lines 836-848
-    "reference_eps_reduced": reference_eps_reduced,  # lines 850-856
-    "reference_beta_delta": reference_beta_delta,  # lines 858-880
-    "reference_eq41": reference_eq41,  # (41), lines 882-884, 894-900
-    "reference_printed_41": reference_printed_41,  # line 886
-    "reference_k3_neglected": reference_k3_neglected,  # lines 888-892
-    "reference_eq42": reference_eq42,  # (42), lines 906-908
-    "reference_eq42_prime": reference_eq42_prime,  # (42'), lines 910-912
-    "reference_t_equals_t_prime": reference_t_equals_t_prime,  # lines 918-934
-    "reference_speed_at_quarter": reference_speed_at_quarter,  # line 902
-}

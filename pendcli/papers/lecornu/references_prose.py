@@ -17,17 +17,11 @@ the length the first reaches at its next vertical passage, swapped (the table af
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 from pendcli.papers.lecornu.references_base import float40, reference, symbols
 
-__all__ = [
-    "EXTREMELY",
-    "amplification_to_zero_length",
-    "reference_shortening_swap",
-    "reference_small_start",
-]
+__all__ = ["EXTREMELY", "amplification_to_zero_length"]
 
 # the scale the ledger states for « extrêmement faible »: at most this fraction of θs, the
 # largest deviation the small-oscillation hypothesis admits (an order of magnitude below it)
@@ -83,10 +77,3 @@ def reference_shortening_swap() -> Any:
     }
     what = "the table after (26) at −b from a, and at +b from the length of its next vertical"
     return reference(exact, what)
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_small_start": reference_small_start,
-    "reference_shortening_swap": reference_shortening_swap,
-}

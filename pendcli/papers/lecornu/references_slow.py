@@ -9,7 +9,6 @@ never a second copy of the formula the row prints. The builders of lines 466-539
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
@@ -359,30 +358,3 @@ def reference_x_in_t() -> Any:
     length = a + speed * t
     exact = {"l": length, "b": speed, "x": g * length / speed**2, "gamma": sp.sqrt(g / a)}
     return reference(exact, "x = gl/b², l = a + bt")
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_elongation_lengths": reference_elongation_lengths,
-    "reference_quarter_oscillation": reference_quarter_oscillation,
-    "reference_largest_length": reference_largest_length,
-    "reference_amplitude_factor": reference_amplitude_factor,
-    "reference_successive_elongations": reference_successive_elongations,
-    "reference_slow_exact": reference_slow_exact,
-    "reference_slow_pendulum": reference_slow_pendulum,
-    "reference_psi": reference_psi,
-    "reference_cr_note": reference_cr_note,
-    "reference_slow_vertical": reference_slow_vertical,
-    "reference_table_26": reference_table_26,
-    "reference_eq27_from_9": reference_eq27_from_9,
-    "reference_eq27": reference_eq27,
-    "reference_root_epsilon": reference_root_epsilon,
-    "reference_sin_alpha_zero": reference_sin_alpha_zero,
-    "reference_large_x": reference_large_x,
-    "reference_half_durations": reference_half_durations,
-    "reference_largest_length_sign": reference_largest_length_sign,
-    "reference_elongation_difference": reference_elongation_difference,
-    "reference_elongation_difference_far": reference_elongation_difference_far,
-    "reference_vertical_phase": reference_vertical_phase,
-    "reference_x_in_t": reference_x_in_t,
-}

@@ -9,7 +9,6 @@ roots found numerically (mpmath, 40 digits); never a second copy of the formula 
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
 from typing import Any
 
 from pendcli.papers.lecornu.references_base import (
@@ -368,28 +367,3 @@ def reference_angular_speed_at_zero_length() -> Any:
     theta = metre * g * phi_of(x) / (b**2 * x)
     rate = sp.limit((g / b) * theta.diff(x), x, 0, "+")
     return reference({"dtheta_dt": rate}, "dθ/dt of (10)'s motion at l = 0")
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_graphical": reference_graphical,
-    "reference_inflection": reference_inflection,
-    "reference_curvature": reference_curvature,
-    "reference_step_of_h": reference_step_of_h,
-    "reference_construction": reference_construction,
-    "reference_projections": reference_projections,
-    "reference_at_elongations": reference_at_elongations,
-    "reference_series_of_nine": reference_series_of_nine,
-    "reference_speed_at_one_metre": reference_speed_at_one_metre,
-    "reference_angular_speed_at_zero_length": reference_angular_speed_at_zero_length,
-    "reference_area": reference_area,
-    "reference_phi_series": reference_phi_series,
-    "reference_elongations_of_12": reference_elongations_of_12,
-    "reference_eq13": reference_eq13,
-    "reference_x_is_xi": reference_x_is_xi,
-    "reference_first_member_13": reference_first_member_13,
-    "reference_elongation_root": reference_elongation_root,
-    "reference_roots_interlace": reference_roots_interlace,
-    "reference_amplitude_j0": reference_amplitude_j0,
-    "reference_zero_length": reference_zero_length,
-}

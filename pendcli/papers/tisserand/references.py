@@ -17,40 +17,24 @@ sympy is imported inside the functions (start-up stays fast).
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
+import sys
 
+from pendcli.core.ledger_references import builders
 from pendcli.core.printed_check import Reference
+from pendcli.papers.tisserand import (
+    references_differentials,
+    references_numeric,
+    references_prose,
+    references_series,
+)
 from pendcli.papers.tisserand.references_differentials import (
     ledger_symbols,
     reference_definition_3,
-    reference_differential_4,
-    reference_first_integrals,
-    reference_first_integrals_in_psi,
-    reference_formula_5,
-    reference_formula_5_as_cited,
-    reference_formula_5_near_u_zero,
-    reference_small_angles,
-)
-from pendcli.papers.tisserand.references_numeric import (
-    numbers_displacement,
-    numbers_numerical_application,
-)
-from pendcli.papers.tisserand.references_prose import (
-    reference_angles_second_order,
-    reference_ellipse_axes,
-    reference_projection_radius,
-    reference_start_of_psi,
-    reference_uniform_rotation,
 )
 from pendcli.papers.tisserand.references_series import (
+    in_kpt_reference,
+    motion_reference,
     motion_series,
-    reference_cited_in_kpt,
-    reference_in_kpt,
-    reference_in_kpt_order_4,
-    reference_motion,
-    reference_motion_order_2,
-    reference_motion_order_4,
 )
 
 __all__ = ["REFERENCES"]
@@ -93,21 +77,21 @@ def reference_ellipse() -> Reference:
 # (I), line 160: k' and k'' with k = √(g/l), to the orders line 158 announces.
 def reference_summary() -> Reference:
     """(I): k' through the sixth order, k'' through the fourth, as line 158 announces."""
-    return reference_motion(7, "(4), (5), (3): k' to order 6, k'' to order 4", {"kpp": 5})
+    return motion_reference(7, "(4), (5), (3): k' to order 6, k'' to order 4")
 
 
 # Lines 172-178, « dans une première approximation »: ψ = k't, φ' = (3/8)u0u1k''t.
 def reference_first_approximation() -> Reference:
     """« dans une première approximation »: ψ through the first order (its sin 2k't term is
     of the second), φ' through the third (its periodic term is of the fourth)."""
-    return reference_in_kpt(5, "(4), (5), (3): ψ to order 1, φ' to order 3", {"psi": 2, "phip": 4})
+    return in_kpt_reference(5, "(4), (5), (3): ψ to order 1, φ' to order 3")
 
 
 # Line 180, « k'' diffère peu de l'unité »: the axis's angular velocity (Resal's solution).
 def reference_resal() -> Reference:
     """Line 180: k'' and the mean angular velocity of the major axis, dφ'/dt = k'·P (P the
     secular coefficient of φ' in ψ), k'' through the first order, the rate through the second."""
-    base = reference_motion(3, "(4), (5), (3): k'' to order 1, dφ'/dt to order 2", {"kpp": 2})
+    base = motion_reference(3, "(4), (5), (3): k'' to order 1, dφ'/dt to order 2")
     exact = {**base.exact, "dphip_dt": base.exact["kp"] * motion_series(3)["P"]}
     return Reference(exact, what=base.what)
 
@@ -115,42 +99,16 @@ def reference_resal() -> Reference:
 # Lines 182-188, « Deuxième approximation », and line 206, the periodic term cited again.
 def reference_second_approximation() -> Reference:
     """« Deuxième approximation »: ψ and φ' through the third order."""
-    return reference_in_kpt(4, "(4), (5), (3) in k't, to order 3")
+    return in_kpt_reference(4, "(4), (5), (3) in k't, to order 3")
 
 
 # --- the table the ledger's rows cite, in the order of the paper -------------------------
 
-REFERENCES: dict[str, Callable[[], Any]] = {
-    # p. 448-450: the first integrals, (3), the differentials and their developments
-    "reference_first_integrals": reference_first_integrals,
-    "reference_first_integrals_in_psi": reference_first_integrals_in_psi,
-    "reference_small_angles": reference_small_angles,
-    "reference_formula_5_as_cited": reference_formula_5_as_cited,
-    "reference_differential_4": reference_differential_4,
-    "reference_formula_5": reference_formula_5,
-    "reference_formula_5_near_u_zero": reference_formula_5_near_u_zero,
-    "reference_definition_3": reference_definition_3,
-    # p. 450-452: the series in ψ and in k't, (8)-(15), and the sentences citing them
-    "reference_motion_order_4": reference_motion_order_4,
-    "reference_in_kpt_order_4": reference_in_kpt_order_4,
-    "reference_motion_order_2": reference_motion_order_2,
-    "reference_cited_in_kpt": reference_cited_in_kpt,
-    # p. 452: the ellipse
-    "reference_definition_9": reference_definition_9,
-    "reference_ellipse": reference_ellipse,
-    # p. 453-454: the summary and its approximations
-    "reference_summary": reference_summary,
-    "reference_first_approximation": reference_first_approximation,
-    "reference_resal": reference_resal,
-    "reference_second_approximation": reference_second_approximation,
-    # the sentences' own claims (the reading record): Resal's ellipse, ψ = 0 at t = 0, the
-    # axes of (17), the angles' order
-    "reference_uniform_rotation": reference_uniform_rotation,
-    "reference_start_of_psi": reference_start_of_psi,
-    "reference_ellipse_axes": reference_ellipse_axes,
-    "reference_projection_radius": reference_projection_radius,  # (16), line 128
-    "reference_angles_second_order": reference_angles_second_order,
-    # p. 454: the numerical application
-    "numbers_numerical_application": numbers_numerical_application,
-    "numbers_displacement": numbers_displacement,
-}
+# Every builder the ledger cites, by its name there (core/ledger_references.builders).
+REFERENCES = builders(
+    sys.modules[__name__],
+    references_differentials,
+    references_series,
+    references_prose,
+    references_numeric,
+)

@@ -17,18 +17,7 @@ from typing import Any
 from pendcli.core.printed import ledger_symbols
 from pendcli.core.printed_check import Reference
 
-__all__ = [
-    "ledger_symbols",
-    "reference_definition_3",
-    "reference_differential_4",
-    "reference_first_integrals",
-    "reference_first_integrals_in_psi",
-    "reference_formula_5",
-    "reference_formula_5_as_cited",
-    "reference_formula_5_near_u_zero",
-    "reference_small_angles",
-    "scale",
-]
+__all__ = ["ledger_symbols", "scale"]
 
 
 def scale() -> Any:

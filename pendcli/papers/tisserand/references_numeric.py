@@ -15,8 +15,6 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["numbers_displacement", "numbers_numerical_application"]
-
 COEFFICIENTS = (
     "tisserand.example.psi_sin2",
     "tisserand.example.psi_sin4",

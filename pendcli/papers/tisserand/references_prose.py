@@ -22,15 +22,7 @@ from pendcli.papers.tisserand.references_differentials import (
     reference_definition_3,
     scale,
 )
-from pendcli.papers.tisserand.references_series import motion_series, reference_motion
-
-__all__ = [
-    "reference_angles_second_order",
-    "reference_ellipse_axes",
-    "reference_projection_radius",
-    "reference_start_of_psi",
-    "reference_uniform_rotation",
-]
+from pendcli.papers.tisserand.references_series import motion_reference, motion_series
 
 
 def _rational(p: int, q: int) -> Any:
@@ -49,7 +41,7 @@ def reference_uniform_rotation() -> Reference:
     first half-turn, small amplitudes (the scale s), g and l over the default range."""
     import sympy as sp
 
-    base = reference_motion(5, "(4), (5), (3) to order 4, the projection in polar coordinates")
+    base = motion_reference(5, "(4), (5), (3) to order 4, the projection in polar coordinates")
     s, length = scale(), ledger_symbols("l")[0]
     u0, u1, psi = ledger_symbols("u0", "u1", "psi")
     u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)

@@ -18,17 +18,7 @@ from pendcli.core.printed_check import Reference
 from pendcli.papers.taylor import degree_in, taylor
 from pendcli.papers.tisserand.references_differentials import ledger_symbols, scale
 
-__all__ = [
-    "motion_in_kpt",
-    "motion_series",
-    "reference_cited_in_kpt",
-    "reference_in_kpt",
-    "reference_in_kpt_order_4",
-    "reference_motion",
-    "reference_motion_order_2",
-    "reference_motion_order_4",
-    "series_symbols",
-]
+__all__ = ["motion_in_kpt", "motion_series", "series_symbols"]
 
 
 @cache
@@ -124,7 +114,7 @@ def motion_series(n: int) -> dict[str, Any]:
     return {"kt": kt, "phip": phip, "A": kt.coeff(psi, 1), "P": phip.coeff(psi, 1)}
 
 
-def reference_motion(n: int, what: str, orders: dict[str, int] | None = None) -> Reference:
+def motion_reference(n: int, what: str) -> Reference:
     """The exact motion (4), (5), (3) through s**(n − 1): t, φ, φ1, φ', k' (12), k'' (the rate
     of φ' over (3/8)u0u1), k = √(g/l), θ0, θ1 and u0, u1 scaled by s."""
     import sympy as sp
@@ -192,9 +182,9 @@ def motion_in_kpt(n: int) -> dict[str, Any]:
     return {"psi": tau + delta, "phip": phip, "tau": tau}
 
 
-def reference_in_kpt(n: int, what: str, orders: dict[str, int] | None = None) -> Reference:
+def in_kpt_reference(n: int, what: str) -> Reference:
     """The exact motion as functions of τ = k't (t = τ/k'), through s**(n − 1)."""
-    base = reference_motion(n, what, orders)
+    base = motion_reference(n, what)
     in_tau = motion_in_kpt(n)
     exact = dict(base.exact)
     exact.update(psi=in_tau["psi"], phip=in_tau["phip"], t=in_tau["tau"] / base.exact["kp"])
@@ -209,19 +199,19 @@ def reference_in_kpt(n: int, what: str, orders: dict[str, int] | None = None) ->
 def reference_motion_order_4() -> Reference:
     """The exact motion through the fourth order in the angles: (8), (11), the line before
     (13), (13), (II), (15) are compared with it."""
-    return reference_motion(5, "(4), (5), (3) to order 4")
+    return motion_reference(5, "(4), (5), (3) to order 4")
 
 
 # (14), line 120: k'' printed to the second order.
 def reference_motion_order_2() -> Reference:
     """The exact motion through the second order: (14), printed to the second order."""
-    return reference_motion(3, "(4), (5), (3) to order 2")
+    return motion_reference(3, "(4), (5), (3) to order 2")
 
 
 # (13) lines 114-116, (15) line 124, and the summary's (II) line 162: series in k't.
 def reference_in_kpt_order_4() -> Reference:
     """The exact motion in τ = k't through the fourth order: (13), (II), (15)."""
-    return reference_in_kpt(5, "(4), (5), (3) in k't, to order 4")
+    return in_kpt_reference(5, "(4), (5), (3) in k't, to order 4")
 
 
 # Lines 126 and 154: the sentences citing (13), (15) and (10) together.
