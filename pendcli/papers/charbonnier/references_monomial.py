@@ -14,6 +14,9 @@ from __future__ import annotations
 
 from typing import Any
 
+import mpmath
+import sympy as sp
+
 from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import ledger_symbols
 from pendcli.papers.charbonnier.references_resisting import resisted
@@ -26,8 +29,6 @@ ODD = (1, 3, 5, 7, 9)
 def _monomial(phase: bool, power: Any = None) -> dict[str, Any]:
     """F(v) = B_n vⁿ, b_n = cB_n (n° 14), I_n its definition; n on the grid of halves
     floor(2n)/2, so that the powers of the random rationals stay short numbers."""
-    import sympy as sp
-
     c, n, big, k, l0 = ledger_symbols("c", "n", "B_n", "k", "l0")
     grid = sp.floor(2 * n) / 2
     v = sp.Symbol("v_", real=True)
@@ -60,8 +61,6 @@ def reference_monomial_acceleration() -> Reference:
 def reference_corrections_add() -> Reference:
     """n° 14: Δα of F = B_0 + B_1v + B_2v² and the Δα of each monomial apart (Delta_x_0,
     Delta_x_1, Delta_x_2), each from Duhamel's integral (E of kt), through c."""
-    import sympy as sp
-
     b0, b1, b2 = ledger_symbols("B_0", "B_1", "B_2")
     v = sp.Symbol("v_", real=True)
     terms = (b0, b1 * sp.Abs(v), b2 * v**2)
@@ -87,8 +86,6 @@ def reference_monomial_points() -> Reference:
 
 def _in_definition() -> Any:
     """I_n(x) = ∫₀^x sin^{n+1} y dy, x in [0, π] (|sin|: the nodes may round past π)."""
-    import sympy as sp
-
     y = sp.Symbol("y_", real=True)
     m, x = sp.symbols("m_ x_", real=True)
     return sp.Lambda((m, x), sp.Integral(sp.Abs(sp.sin(y)) ** (m + 1), (y, 0, x)))
@@ -107,9 +104,6 @@ def reference_in() -> Reference:
 def reference_in_pi() -> Reference:
     """I_n(π) at the even and odd n, for the two columns of lines 486-489: the residual's
     squares summed over the integers of the column's parity (0 only if each one is)."""
-    import mpmath
-    import sympy as sp
-
     n = sp.Symbol("n", real=True)
     columns = {sp.Symbol("Ipi_even", real=True): EVEN, sp.Symbol("Ipi_odd", real=True): ODD}
 
@@ -134,8 +128,6 @@ def reference_in_pi() -> Reference:
 def reference_friction_in_g_and_t() -> Reference:
     """n° 16, 1°: Δα for n = 0 (F = B_0) written in g and T (k = π/T, l0 = gT²/π²), so that
     its derivatives in α and in T say whether it depends on them; through c."""
-    import sympy as sp
-
     k, l0, g, big_t = ledger_symbols("k", "l0", "g", "T")
     exact = _monomial(phase=True, power=0)
     in_g_t = {k: sp.pi / big_t, l0: g * big_t**2 / sp.pi**2}
@@ -169,8 +161,6 @@ def reference_monomial_parity() -> Reference:
     """n° 16, 2°: the first formula (« pour n pair ») against Δα of F = B_n vⁿ for n = 0, 2, 4,
     the second (« pour n impair ») for n = 1, 3, 5 (2·floor(n) − 2 and 2·floor(n) − 1 at the
     random n in [1, 4)); Δα from Duhamel's integral, never from I_n(π)."""
-    import sympy as sp
-
     (n,) = ledger_symbols("n")
     even, odd = _monomial_case(2 * sp.floor(n) - 2), _monomial_case(2 * sp.floor(n) - 1)
     return Reference(

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 from typing import Any
 
+import sympy as sp
+
 from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import (
     exponential_family,
@@ -25,8 +27,6 @@ __all__ = ["first_order_points"]
 def first_order_points(theta1: Any, speed1: Any) -> dict[str, Any]:
     """The turning time t* = π/k + ετ1 (θ' = 0), the lowest point t0 = π/(2k) + εσ1 (θ = 0),
     the amplitude θ(t*) and the speed θ'(t0), to first order in ε, for a given θ1, θ1'."""
-    import sympy as sp
-
     t, k, alpha, eps = ledger_symbols("t", "k", "alpha", "epsilon")
     theta0, speed0 = principal_motion()
     turn, low = sp.pi / k, sp.pi / (2 * k)
@@ -48,8 +48,6 @@ def first_order_points(theta1: Any, speed1: Any) -> dict[str, Any]:
 
 def _phase(function: Any) -> Any:
     """E of the time -> E of kt, as (6)-(9) write E_c(π), E_c(π/2)."""
-    import sympy as sp
-
     (k,) = ledger_symbols("k")
     u = sp.Symbol("u", real=True)
     return sp.Lambda(u, function(u / k))
@@ -74,8 +72,6 @@ def reference_turning_point() -> Reference:
 # n° 9, 1°, lines 237-241: kt from sin kt = −εE_c(π)/(kα), inverted
 def reference_sine_inverted() -> Reference:
     """n° 9, 1°: kt from sin kt = −εE_c(π)/(kα) inverted exactly (kt near π), through ε²."""
-    import sympy as sp
-
     k, alpha, eps = ledger_symbols("k", "alpha", "epsilon")
     exact = _family_points()
     exact["t"] = (sp.pi + sp.asin(eps / (k * alpha) * exact["E_c"](sp.pi))) / k
@@ -91,8 +87,6 @@ def reference_remarkable_points() -> Reference:
 
 def _family_constrained(key: str) -> dict[str, Any]:
     """The φ of the family for which the first-order ``key`` (ΔT or Δα) vanishes: p3 solved."""
-    import sympy as sp
-
     (eps,) = ledger_symbols("epsilon")
     p3 = free_parameters(4)[3]
     exact = _family_points()

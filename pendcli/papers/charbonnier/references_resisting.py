@@ -11,6 +11,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+import sympy as sp
+
 from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import (
     free_parameters,
@@ -26,8 +28,6 @@ __all__ = ["resisted"]
 def resisted(force: Any, phase: bool) -> dict[str, Any]:
     """θ1, the E's and the remarkable points for the resistance ``force`` (a Lambda of v),
     φ(t) = F(l0 θ0'(t)), ε = c/l0 (n° 12)."""
-    import sympy as sp
-
     t, k, l0, c, eps = ledger_symbols("t", "k", "l0", "c", "epsilon")
     theta0, speed0 = principal_motion()
     w = sp.Symbol("w_", real=True)
@@ -51,16 +51,12 @@ def resisted(force: Any, phase: bool) -> dict[str, Any]:
 
 
 def _air_force() -> Any:
-    import sympy as sp
-
     q0, q1, q2 = free_parameters(3, "q")
     v = sp.Symbol("v_", real=True)
     return sp.Lambda(v, q0 + q1 * v + q2 * v**2)
 
 
 def _air(phase: bool) -> dict[str, Any]:
-    import sympy as sp
-
     t, k, alpha, l0, c = ledger_symbols("t", "k", "alpha", "l0", "c")
     theta0, speed0 = principal_motion()
     force = _air_force()
@@ -91,8 +87,6 @@ def _air(phase: bool) -> dict[str, Any]:
 
 def _along_the_arc() -> Callable[[Any], Any]:
     """ν at the arc s of the principal motion: ν² + k²s² = k²σ² (the energy of (2))."""
-    import sympy as sp
-
     k, sigma, nu = ledger_symbols("k", "sigma", "nu")
     # |…| under the root, ≥ 0 on the arc: the quadrature's nodes may round past its ends
     return integrand_along({"s": lambda v: {nu: k * sp.sqrt(sp.Abs(sigma**2 - v**2))}})

@@ -13,6 +13,9 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
+import mpmath
+import sympy as sp
+
 from pendcli.papers.lecornu.references_tools import (
     derivative_along,
     make_reference,
@@ -26,8 +29,6 @@ def _conical_state() -> dict[str, Any]:
     """The motion of lines 942-946 (x'' = −Tx/l, y'' = −Ty/l, z'' = −Tz/l + g) at a state
     (x, y, z, x', y', z'); r = √(x² + y²), its derivatives by the chain rule along the motion,
     c = x y' − y x' (the constant the area theorem names)."""
-    import sympy as sp
-
     x, y, z, dx, dy, _dz, tn, length, g = real_symbols(
         "X", "Y", "Z", "dX_dt", "dY_dt", "dZ_dt", "Tn", "l", "g"
     )
@@ -60,8 +61,6 @@ def reference_conical_cartesian() -> Any:
 def reference_conical_polar() -> Any:
     """r = l sin θ, z = l cos θ (lines 988-990) and their derivatives along t (l, θ varying);
     the printed d/dt(l² dθ/dt) by the chain rule."""
-    import sympy as sp
-
     length, theta, dl, dth, d2th = real_symbols("l", "theta", "dl_dt", "dtheta_dt", "d2theta_dt2")
     d2l = sp.Symbol("d2l_dt2", real=True)  # any l(t): the identity of line 992 needs no l'' = 0
     rates = {length: dl, theta: dth, dl: d2l, dth: d2th}
@@ -89,8 +88,6 @@ def reference_eq43() -> Any:
 def reference_area_theorem() -> Any:
     """(44) from the area theorem of line 954: c = x y' − y x' with x = r cos φ,
     y = r sin φ, r = l sin θ (l, θ, φ varying)."""
-    import sympy as sp
-
     length, theta, phi, dl, dth, dphi = real_symbols(
         "l", "theta", "phi", "dl_dt", "dtheta_dt", "dphi_dt"
     )
@@ -103,8 +100,6 @@ def reference_area_theorem() -> Any:
 def _eq43_second_derivative(length: Any) -> Any:
     """θ'' from (43) (the eliminated equation of line 984 in θ, reference_eq43) at a length
     ``length`` with l' = b, l'' = 0."""
-    import sympy as sp
-
     g, c, b = real_symbols("g", "c", "b")
     d2th = sp.Symbol("q", real=True)
     polar = reference_conical_polar().exact
@@ -131,8 +126,6 @@ def reference_conical_l_form() -> Any:
 def _small_conical_u() -> Any:
     """(43) for small θ (sin θ -> θ, cos θ -> 1) with θ = u/l, d/dt = b d/dl, solved for
     d²u/dl²: a function of (u, l)."""
-    import sympy as sp
-
     length, b, g, c = real_symbols("l", "b", "g", "c")
     u = sp.Function("u")(length)
     theta = u / length
@@ -145,8 +138,6 @@ def _small_conical_u() -> Any:
 @cache
 def reference_conical_small() -> Any:
     """Lines 1010-1016: (43) for small angles with θ = u/l, x = gl/b², u = v√(bc/g)."""
-    import sympy as sp
-
     length, b, g, c, x, v = real_symbols("l", "b", "g", "c", "x", "v")
     scale = sp.sqrt(b * c / g)
     d2u_dx2 = (b**2 / g) ** 2 * _small_conical_u().subs(length, b**2 * x / g)
@@ -164,8 +155,6 @@ def reference_conical_small() -> Any:
 def reference_lambda_substitution() -> Any:
     """Lines 1018-1042: v = λω with ω a solution of (9) (ω'' = −ω/x) and v of (45):
     v', v'' by the product rule (sympy), λ'' from (45), A the value of the first integral."""
-    import sympy as sp
-
     x, lam, omega, dlam, domega = real_symbols("x", "lam", "omega", "dlam_dx", "domega_dx")
     q = sp.Symbol("q", real=True)  # λ''
     along = derivative_along({lam: dlam, omega: domega, dlam: q, domega: -omega / x})
@@ -186,8 +175,6 @@ def _conical_solution() -> dict[str, Any]:
     v' = 0.3), ω = √x J1(2√x) a solution of (9), λ = v/ω (line 1018), ∫dx/ω² from x = 2
     (quadrature), A the first integral (ω²λ')² + 1/λ² at x = 2 (line 1038) and B its second
     constant: √(Aλ² − 1)/A at x = 2 (line 1042 integrated from there)."""
-    import mpmath
-
     with mpmath.workdps(30):
         solution = mpmath.odefun(
             lambda x, s: [s[1], -s[0] / x + 1 / s[0] ** 3],
@@ -224,8 +211,6 @@ def reference_conical_solution() -> Any:
     digits): v, ω, λ, ∫dx/ω² as functions of x (sympy functions evaluated by mpmath), A and
     B from the state at x = 2; x drawn in (2, 3) (λ grows with ∫dx/ω² there: the branch of
     line 1042's square root)."""
-    import mpmath
-    import sympy as sp
     from sympy.utilities.lambdify import implemented_function
 
     (x,) = real_symbols("x")
@@ -251,8 +236,6 @@ def reference_conical_solution() -> Any:
 def reference_omega_pair() -> Any:
     """Lines 1054-1062: ω1 = ω/√A, ω2 = √A ω(∫dx/ω² + B) (written Iw for ∫dx/ω²), their
     x-derivatives by the chain rule with dIw/dx = 1/ω², and v of line 1050."""
-    import sympy as sp
-
     omega, domega, big_a, big_b, iw = real_symbols("omega", "domega_dx", "A45", "B45", "Iw")
     along = derivative_along({omega: domega, iw: 1 / omega**2})
     w1 = omega / sp.sqrt(big_a)

@@ -14,6 +14,8 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
+import sympy as sp
+
 from pendcli.papers.lecornu.references_tools import (
     derivative_along,
     make_reference,
@@ -27,8 +29,6 @@ __all__ = ["first_order_solution"]
 def reference_primitive_angles() -> Any:
     """(47): θ = (v/l)√(bc/g), θi = (ωi/l)√(bc/g) (lines 1066-1070) with v = √(ω1² + ω2²)
     (line 1062)."""
-    import sympy as sp
-
     w1, w2, length, b, c, g = real_symbols("omega1", "omega2", "l", "b", "c", "g")
     big_k = sp.sqrt(b * c / g) / length
     exact = {"theta": sp.sqrt(w1**2 + w2**2) * big_k, "theta1": w1 * big_k, "theta2": w2 * big_k}
@@ -38,8 +38,6 @@ def reference_primitive_angles() -> Any:
 def _plane_angles() -> dict[str, Any]:
     """θi = K ωi(x)/l (line 1070), K = √(bc/g), x = gl/b², l = a + bt, ωi solutions of (9)
     (xω'' + ω = 0) tied by (46); θi' and θi'' by the chain rule in t (dx/dt = g/b)."""
-    import sympy as sp
-
     a, b, g, c, t = real_symbols("a", "b", "g", "c", "t")
     w1, w2, dw1 = real_symbols("omega1", "omega2", "domega1_dx")
     length = a + b * t
@@ -67,8 +65,6 @@ def reference_plane_angles() -> Any:
 def reference_polar_angle() -> Any:
     """Lines 1084-1086: θ1 = θ cos φ, θ2 = θ sin φ (φ the polar angle of (θ1, θ2)), and c
     from (49): c = l²(θ1θ2' − θ2θ1'), θ and φ varying."""
-    import sympy as sp
-
     theta, phi, dth, dphi, length = real_symbols("theta", "phi", "dtheta_dt", "dphi_dt", "l")
     along = derivative_along({theta: dth, phi: dphi})
     one, two = theta * sp.cos(phi), theta * sp.sin(phi)
@@ -82,8 +78,6 @@ def reference_polar_angle() -> Any:
 def reference_small_theta() -> Any:
     """θ scaled by ε (a series in the angle): line 1088's « pour le degré d'approximation
     adopté », θ² neglected beside 1."""
-    import sympy as sp
-
     theta = sp.Symbol("theta", real=True)
     scale = sp.Symbol("epsilon", positive=True)
     return make_reference({"theta": scale * theta}, "θ -> εθ")
@@ -94,8 +88,6 @@ def _first_order_correction() -> Any:
     """The O(p) part of the solution of (48) in u = γt, (1 + pu)θ'' + 2pθ' + θ = 0, about
     ρ sin(u − ψ): θ1'' + θ1 = ρ(u sin(u − ψ) − 2 cos(u − ψ)), solved by the ansatz
     (a1u² + a2u) cos(u − ψ) + (b1u² + b2u) sin(u − ψ) (no free oscillation added)."""
-    import sympy as sp
-
     u, rho, psi = real_symbols("u", "rho", "psi")
     a1, a2, b1, b2 = sp.symbols("a1 a2 b1 b2")
     w = sp.Symbol("w", real=True)  # the phase u − ψ, d/du acting on u and w alike
@@ -115,8 +107,6 @@ def _first_order_correction() -> Any:
 def first_order_solution(rho: Any, psi: Any, u: Any) -> Any:
     """θ through O(p) of (48) in u = γt about ρ sin(u − ψ): ρ sin(u − ψ) + p θ1 with θ1
     solved here (_first_order_correction), at the given ρ, ψ, u."""
-    import sympy as sp
-
     zero, first = _first_order_correction()
     names = dict(zip(("u", "rho", "psi"), real_symbols("u", "rho", "psi"), strict=True))
     p = sp.Symbol("p", real=True)
@@ -148,8 +138,6 @@ def reference_slow_length() -> Any:
 @cache
 def reference_conical_phases() -> Any:
     """(51): c = l²(θ1θ2' − θ2θ1') from (49) with θi of (50) at t = 0 (l = a), γ = √(g/a)."""
-    import sympy as sp
-
     t, gamma, a, g = real_symbols("t", "gamma", "a", "g")
     pair = reference_slow_pair().exact
     one, two = pair["theta1"], pair["theta2"]
@@ -163,8 +151,6 @@ def reference_conical_phases() -> Any:
 def reference_rotated_phases() -> Any:
     """(52): the O(p) solutions about ρ1 cos u and ρ2 sin u (ψ1 = −π/2, ψ2 = 0, u = γt,
     the phases chosen at line 1110), and c from (49) at t = 0 as for (51)."""
-    import sympy as sp
-
     u, rho1, rho2, a, g = real_symbols("u", "rho1", "rho2", "a", "g")
     one = first_order_solution(rho1, -sp.pi / 2, u)
     two = first_order_solution(rho2, sp.Integer(0), u)
@@ -178,8 +164,6 @@ def reference_rotated_phases() -> Any:
 def reference_rotated_planes() -> Any:
     """Line 1108: the planes turned by ω; each θi = ρi sin(u − ψi) written Im(Zi e^{iu}),
     Zi = ρi e^{−iψi}: Z1' = Z1 cos ω + Z2 sin ω, Z2' = −Z1 sin ω + Z2 cos ω."""
-    import sympy as sp
-
     rho1, rho2, psi1, psi2, omega = real_symbols("rho1", "rho2", "psi1", "psi2", "omega")
     z1 = rho1 * (sp.cos(psi1) - sp.I * sp.sin(psi1))
     z2 = rho2 * (sp.cos(psi2) - sp.I * sp.sin(psi2))
@@ -197,8 +181,6 @@ def reference_homothety() -> Any:
     (48) about ρ1 cos u, ρ2 sin u) lies on the ellipse of axes sρ1, sρ2 homothetic to the
     one of axes ρ1, ρ2, s = √((x/ρ1)² + (y/ρ2)²); after half a turn (u -> u + π) the ratio
     is s(u + π)/s(u). Through p."""
-    import sympy as sp
-
     u, rho1, rho2 = real_symbols("u", "rho1", "rho2")
     phases = reference_rotated_phases()
     one, two = phases.exact["theta1"], phases.exact["theta2"]
@@ -215,8 +197,6 @@ def reference_composed_planes() -> Any:
     θ2 = atan(y/z) of the rod's projections on the fixed vertical planes xz and yz, their
     rates along the motion (z and z' from the constraint, T from it differentiated twice:
     T l = g z + v² − b²), the horizontal state scaled by ε (small oscillations)."""
-    import sympy as sp
-
     a, b, g, t = real_symbols("a", "b", "g", "t")
     x, y, dx, dy = real_symbols("X", "Y", "dX_dt", "dY_dt")
     eps = sp.Symbol("eps_", positive=True)
@@ -241,8 +221,6 @@ def reference_projection_length() -> Any:
     """Line 1096: the rod's projection on a vertical plane at the azimuth φ from it,
     l√(1 − sin²θ sin²φ), with θ small (θ -> εθ), through ε: « confondre la longueur du
     pendule avec sa projection »."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     length, theta, phi = real_symbols("l", "theta", "phi")
     projection = length * sp.sqrt(1 - sp.sin(eps * theta) ** 2 * sp.sin(phi) ** 2)
@@ -255,8 +233,6 @@ def reference_rotation_angle() -> Any:
     2ρ'1ρ'2 cos(ψ'2 − ψ'1) = 2 Re(Z'1 conj Z'2) of the planes turned by ω (the model of
     reference_rotated_planes); the printed tangent of 2ω is judged as the condition
     (tan 2ω − X) = −2 Re(Z'1 conj Z'2)/((ρ1² − ρ2²) cos 2ω), the model's product normalised."""
-    import sympy as sp
-
     rho1, rho2, psi1, psi2, omega = real_symbols("rho1", "rho2", "psi1", "psi2", "omega")
     z1 = rho1 * (sp.cos(psi1) - sp.I * sp.sin(psi1))
     z2 = rho2 * (sp.cos(psi2) - sp.I * sp.sin(psi2))

@@ -11,6 +11,9 @@ from __future__ import annotations
 
 from typing import Any
 
+import sympy as sp
+
+from pendcli.core.printed_check import Reference
 from pendcli.papers.lecornu.references_base import reference, symbols
 
 
@@ -39,8 +42,6 @@ def reference_integral_18() -> Any:
 def reference_integral_solution() -> Any:
     """Lines 386-402: v, w as the integrals they are set to (line 388, 392), u = C(v + w sin α);
     their second derivatives in x taken under the integral sign (sympy)."""
-    import sympy as sp
-
     x, alpha, omega, big_c = symbols("x", "alpha", "omega", "C")
     half = (omega, 0, sp.pi / 2)
     v = x * sp.Integral(sp.cos(2 * sp.sqrt(x) * sp.cos(omega) + alpha) * sp.sin(omega) ** 2, half)
@@ -61,10 +62,6 @@ def reference_integral_19() -> Any:
 def reference_c_equals_4_over_pi() -> Any:
     """Lines 408-412: φ = √x J₁(2√x), the series (10); C the ratio of the two limits the text
     takes at x = 0, lim φ/x over lim ∫₀^(π/2) cos(2√x cos ω) sin²ω dω (sympy)."""
-    import sympy as sp
-
-    from pendcli.core.printed_check import Reference
-
     x, omega = symbols("x", "omega")
     varphi = sp.sqrt(x) * sp.besselj(1, 2 * sp.sqrt(x))
     integral = sp.integrate(sp.sin(omega) ** 2, (omega, 0, sp.pi / 2))  # the integrand at x = 0
@@ -81,7 +78,5 @@ def reference_quadrature() -> Any:
 
 def reference_large_lambda() -> Any:
     """Line 422: (1 + λ²)^(1/2) for large λ: λ = 1/ε, through ε³."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     return reference({"lam": 1 / eps}, "λ = 1/ε")

@@ -17,6 +17,12 @@ from collections.abc import Sequence
 from itertools import pairwise
 from typing import Any
 
+import mpmath
+import sympy as sp
+
+from pendcli.core.printed_check import Reference
+from pendcli.core.printed_numeric import Numbers
+
 _DPS = 30
 J2 = [f"lecornu.j2_zeros.{k}" for k in range(1, 6)]  # (15), ascending
 J1 = [f"lecornu.j1_zeros.{k}" for k in range(1, 7)]  # line 252, descending
@@ -28,8 +34,6 @@ COEFFICIENT = "lecornu.coefficient_b2_4g"
 
 def _published(claim_id: str) -> Any:
     """The printed number of a claim as an exact mpmath decimal (its printed digits)."""
-    import mpmath
-
     from pendcli.papers.lecornu.model import printed_number
 
     number = printed_number(claim_id)
@@ -37,7 +41,6 @@ def _published(claim_id: str) -> Any:
 
 
 def _numbers(values: list[Any], what: str, claims: Sequence[str | None], **kw: Any) -> Any:
-    from pendcli.core.printed_numeric import Numbers
     from pendcli.papers.lecornu.model import printed_number
 
     published = tuple(None if c is None else (c, printed_number(c)) for c in claims)
@@ -46,8 +49,6 @@ def _numbers(values: list[Any], what: str, claims: Sequence[str | None], **kw: A
 
 def numbers_j2_roots() -> Any:
     """(15), line 208: the first five zeros of J₂ (2J₁(z) = zJ₀(z), line 202), mpmath."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         roots = [mpmath.besseljzero(2, k) for k in range(1, 6)]
     return _numbers(roots, "the zeros of J₂ (mpmath.besseljzero)", list(J2))
@@ -57,8 +58,6 @@ def numbers_j2_roots_chopped() -> Any:
     """Line 210, « Je néglige les décimales qui suivent la seconde », applied to (15): each
     zero of J₂ (mpmath) with its decimals after the second dropped (toward zero), the value
     the sentence says each printed root is."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         hundred = mpmath.mpf(100)
         roots = [mpmath.floor(mpmath.besseljzero(2, k) * hundred) / hundred for k in range(1, 6)]
@@ -68,8 +67,6 @@ def numbers_j2_roots_chopped() -> Any:
 
 def numbers_table_speeds() -> Any:
     """Line 216: √(g l/ξ) = 2√(g l)/z for l = 1 m at the roots z of (15) as printed."""
-    import mpmath
-
     from pendcli.papers.lecornu.model import constant
 
     with mpmath.workdps(_DPS):
@@ -83,10 +80,6 @@ def numbers_eq16() -> Any:
     """(16), line 220: its printed 0,00313 against b²/(4g) in metres (b = 0,35 m/s printed,
     g = 9,81 assumed); its equalities as identities from x = gl/b² (line 170) at the root
     x = ξ = z²/4 (z = 2√x, line 200)."""
-    import mpmath
-    import sympy as sp
-
-    from pendcli.core.printed_check import Reference
     from pendcli.papers.lecornu.model import constant
 
     b, g, z = (sp.Symbol(n, real=True) for n in ("b", "g", "z"))
@@ -101,8 +94,6 @@ def numbers_eq16() -> Any:
 
 def numbers_table_lengths() -> Any:
     """Line 224: the lengths 0,00313 z² of (16) at the roots (15) as printed, largest first."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         lengths = [_published(COEFFICIENT) * _published(c) ** 2 for c in J2[::-1]]
     return _numbers(lengths, "0,00313 z² (16) at the printed (15)", list(LENGTHS))
@@ -110,8 +101,6 @@ def numbers_table_lengths() -> Any:
 
 def numbers_table_times() -> Any:
     """Line 228: the instants (1 − l)/0,35 of the elongations at the lengths of line 224."""
-    import mpmath
-
     from pendcli.papers.lecornu.model import constant
 
     with mpmath.workdps(_DPS):
@@ -123,8 +112,6 @@ def numbers_table_times() -> Any:
 def numbers_table_intervals() -> Any:
     """Line 232: the intervals between the successive limit positions, the differences of
     the instants of line 228 and of the zero length, 2,86 s (line 230)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         instants = [_published(c) for c in [*TIMES, "lecornu.example.time_zero_length"]]
         gaps = [later - sooner for sooner, later in pairwise(instants)]
@@ -135,8 +122,6 @@ def numbers_table_intervals() -> Any:
 def numbers_table_j0() -> Any:
     """Line 240: J₀ at the roots (15) as printed (« les valeurs de J₀(z) correspondant aux
     valeurs de z comprises dans le tableau (15) », line 238)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         values = [mpmath.besselj(0, _published(c)) for c in J2]
     return _numbers(values, "J₀ at the printed (15) (mpmath.besselj)", list(J0))
@@ -145,8 +130,6 @@ def numbers_table_j0() -> Any:
 def numbers_table_amplitudes() -> Any:
     """Line 246: θ/θ0 = J₀(z)/J₀(17,96) (line 236) from the J₀ values of line 240, from
     z = 17,96 down, then the zero length, whose limit is 1 (line 242) over J₀(17,96)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         printed = [_published(c) for c in J0[::-1]]
         limit = _published("lecornu.limit_2j1_over_z")
@@ -157,8 +140,6 @@ def numbers_table_amplitudes() -> Any:
 
 def numbers_j1_roots() -> Any:
     """Line 252: the zeros of J₁ below 20, from the largest (mpmath.besseljzero)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         roots = [mpmath.besseljzero(1, k) for k in range(6, 0, -1)]
     return _numbers(roots, "the zeros of J₁ (mpmath.besseljzero)", list(J1))
@@ -166,8 +147,6 @@ def numbers_j1_roots() -> Any:
 
 def numbers_vertical_lengths() -> Any:
     """Line 256: the lengths « en vertu de (16) », 0,00313 z², at the zeros of line 252."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         lengths = [_published(COEFFICIENT) * _published(c) ** 2 for c in J1]
     ids = [f"lecornu.j1_lengths.{k}" for k in range(1, 7)]

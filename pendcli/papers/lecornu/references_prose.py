@@ -19,6 +19,9 @@ from __future__ import annotations
 
 from typing import Any
 
+import mpmath
+import sympy as sp
+
 from pendcli.papers.lecornu.references_base import float40, reference, symbols
 
 __all__ = ["EXTREMELY", "amplification_to_zero_length"]
@@ -30,8 +33,6 @@ EXTREMELY = (1, 10)
 
 def amplification_to_zero_length() -> Any:
     """|θ at zero length / θ0| = 1/|J₀(z₅)|, z₅ the fifth zero of J₂ (mpmath, 40 digits)."""
-    import mpmath
-
     with mpmath.workdps(40):
         return 1 / abs(mpmath.besselj(0, mpmath.besseljzero(2, 5)))
 
@@ -40,8 +41,6 @@ def reference_small_start() -> Any:
     """Line 248: every start θ0 admissible at zero length, θ0 = a·θs/(1/|J₀(z₅)|), over
     a in (0, 1) and θs from 1/100 to 1/2 radian, against « extrêmement faible », θxf =
     θs/10 (:data:`EXTREMELY`)."""
-    import sympy as sp
-
     (theta_s,) = symbols("theta_s")
     share = sp.Symbol("a_share", real=True)
     exact = {
@@ -56,8 +55,6 @@ def reference_shortening_swap() -> Any:
     (26) for l = a − bt (tasc_s, tdesc_s), and for l = a' + bt (tasc_l, tdesc_l), a' = a − b·tv2
     the length at the shortening pendulum's second vertical passage; b scaled by ε, through ε
     (the table's first order)."""
-    import sympy as sp
-
     from pendcli.papers.lecornu.references_slow import reference_half_durations
 
     table = reference_half_durations()

@@ -12,12 +12,13 @@ core/printed_numeric), by the sections of the paper, and their table :data:`REFE
 
 Each builder maps ledger symbols to exact expressions (or, for the numbers, computes them)
 from what the printed formula rests on, never from a copy of the formula the row prints.
-sympy is imported inside the functions (start-up stays fast).
 """
 
 from __future__ import annotations
 
 import sys
+
+import sympy as sp
 
 from pendcli.core.ledger_references import builders
 from pendcli.core.printed_check import Reference
@@ -46,8 +47,6 @@ __all__ = ["REFERENCES"]
 # (10), line 100, « d'où »: the tangent of (9)'s φ1.
 def reference_definition_9() -> Reference:
     """(9): φ1 = arctan((u1/u0) tan ψ)."""
-    import sympy as sp
-
     u0, u1, psi = ledger_symbols("u0", "u1", "psi")
     return Reference({"phi1": sp.atan(u1 / u0 * sp.tan(psi))}, what="(9)")
 
@@ -56,8 +55,6 @@ def reference_definition_9() -> Reference:
 # line 156: (3), (9) and (16) together.
 def reference_ellipse() -> Reference:
     """(3), (9) and (16): u as in (3), φ1 = arctan((u1/u0) tan ψ), ρ = lu, ρ0 = lu0, ρ1 = lu1."""
-    import sympy as sp
-
     u0, u1, psi, length = ledger_symbols("u0", "u1", "psi", "l")
     base = reference_definition_3()
     u = base.exact["u"]

@@ -15,6 +15,10 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
+import mpmath
+
+from pendcli.core.printed_numeric import Numbers
+
 COEFFICIENTS = (
     "tisserand.example.psi_sin2",
     "tisserand.example.psi_sin4",
@@ -44,8 +48,6 @@ def _coefficients(given: Mapping[str, float]) -> tuple[float, ...]:
 # Lines 192-200: ψ and φ' for « θ0 = 30', θ1 = 15' », by (II) and (V).
 def numbers_numerical_application() -> Any:
     """Lines 192-200: the three coefficients for the printed amplitudes (inputs, not judged)."""
-    from pendcli.core.printed_numeric import Numbers
-
     published = (None, None, *((c, _claim(c)) for c in COEFFICIENTS))
     return Numbers(
         _coefficients,
@@ -57,8 +59,6 @@ def numbers_numerical_application() -> Any:
 
 def _shift(given: Mapping[str, float]) -> tuple[float]:
     """l sin θ0 |c| in millimetres, l as printed (metres), c = 2'42'' (line 200)."""
-    import mpmath
-
     from pendcli.core.tables import load_paper_table
 
     with mpmath.workdps(30):
@@ -72,8 +72,6 @@ def _shift(given: Mapping[str, float]) -> tuple[float]:
 def numbers_displacement() -> Any:
     """Line 202: « un petit déplacement égal au plus à un cinquième de millimètre », an upper
     bound, for the printed l = 0^m,5."""
-    from pendcli.core.printed_numeric import Numbers
-
     claim = "tisserand.example.displacement"
     return Numbers(
         _shift,

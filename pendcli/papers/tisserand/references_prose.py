@@ -9,12 +9,14 @@ tables/papers/tisserand.reading.toml), where no reference of the formulas serves
     line 178       « u0u1 est un terme du second ordre »
 
 Each builder maps ledger symbols to exact expressions from the model or the definitions the
-sentence rests on, never from the words it checks. sympy is imported inside the functions.
+sentence rests on, never from the words it checks.
 """
 
 from __future__ import annotations
 
 from typing import Any
+
+import sympy as sp
 
 from pendcli.core.printed_check import Reference
 from pendcli.papers.tisserand.references_differentials import (
@@ -26,8 +28,6 @@ from pendcli.papers.tisserand.references_series import motion_reference, motion_
 
 
 def _rational(p: int, q: int) -> Any:
-    import sympy as sp
-
     return sp.Rational(p, q)
 
 
@@ -39,8 +39,6 @@ def reference_uniform_rotation() -> Reference:
     times t is of the fourth order (its periodic part), so the rotation is uniform through the
     third; the axes ρ0 = lu0, ρ1 = lu1. The domain: the apsides' order u0 > u1 > 0, ψ in its
     first half-turn, small amplitudes (the scale s), g and l over the default range."""
-    import sympy as sp
-
     base = motion_reference(5, "(4), (5), (3) to order 4, the projection in polar coordinates")
     s, length = scale(), ledger_symbols("l")[0]
     u0, u1, psi = ledger_symbols("u0", "u1", "psi")
@@ -78,8 +76,6 @@ def reference_projection_radius() -> Reference:
     """The bob at l(sin θ cos φ, sin θ sin φ, −cos θ) from the point of suspension, its
     projection on the horizontal plane at the distance √(x² + y²) from O, the foot of the
     vertical; u = sin θ (line 42)."""
-    import sympy as sp
-
     length, theta, phi = ledger_symbols("l", "theta", "phi")
     x = length * sp.sin(theta) * sp.cos(phi)
     y = length * sp.sin(theta) * sp.sin(phi)
