@@ -132,10 +132,7 @@ def reference_friction_in_g_and_t() -> Reference:
     exact = _monomial(phase=True, power=0)
     in_g_t = {k: sp.pi / big_t, l0: g * big_t**2 / sp.pi**2}
     shift = exact["Delta_alpha"].subs(in_g_t, simultaneous=True)
-    return Reference(
-        {"Delta_x": shift},
-        what="Δα of F = B_0 in g and T",
-    )
+    return Reference({"Delta_x": shift}, what="Δα of F = B_0 in g and T")
 
 
 # n° 16, 1°, lines 512-518: the count P of simple oscillations until rest (n = 0)
@@ -143,10 +140,7 @@ def reference_friction() -> Reference:
     """n° 16: n = 0, F = B_0: the count P = α/|Δα| of simple oscillations until rest."""
     exact = _monomial(phase=True, power=0)
     exact["P"] = ledger_symbols("alpha")[0] / (-exact["Delta_alpha"])
-    return Reference(
-        exact,
-        what="α over the loss of amplitude per oscillation, F = B_0",
-    )
+    return Reference(exact, what="α over the loss of amplitude per oscillation, F = B_0")
 
 
 def _monomial_case(power: Any) -> Reference:
@@ -163,8 +157,4 @@ def reference_monomial_parity() -> Reference:
     random n in [1, 4)); Δα from Duhamel's integral, never from I_n(π)."""
     (n,) = ledger_symbols("n")
     even, odd = _monomial_case(2 * sp.floor(n) - 2), _monomial_case(2 * sp.floor(n) - 1)
-    return Reference(
-        odd.exact,
-        what="F = B_n vⁿ, n even then n odd",
-        cases=(even, odd),
-    )
+    return Reference(odd.exact, what="F = B_n vⁿ, n even then n odd", cases=(even, odd))

@@ -165,10 +165,7 @@ def reference_next_passage() -> Any:
     following = b**2 / (4 * g) * (phi + (lam + 1) * sp.pi) ** 2  # (22)'s argument (λ + 1)π
     exact = {"lp": following.subs(b, eps * b), "b": eps * b, "mm": lam}
     exact["phi"] = phi.subs(b, eps * b)
-    return make_reference(
-        exact,
-        "(22) = 0 at l and l', b -> εb",
-    )
+    return make_reference(exact, "(22) = 0 at l and l', b -> εb")
 
 
 def _elongation_tangent(length: Any) -> Any:
@@ -209,10 +206,7 @@ def reference_vertical_to_elongation() -> Any:
     l'' ((23), (24) solved for l'', as for line 555), through b; the printed decimal 0,13
     a rounding."""
     quarter = cited("reference_quarter_oscillation")
-    return make_reference(
-        dict(quarter.exact),
-        "(23), (24) solved for l'', decimals rounded",
-    )
+    return make_reference(dict(quarter.exact), "(23), (24) solved for l'', decimals rounded")
 
 
 def _zero_start_forced(rhs: Any, tau: Any, degree: int) -> Any:
@@ -255,7 +249,4 @@ def reference_mean_pendulum() -> Any:
     (a,) = real_symbols("a")
     exact = dict(root.exact)
     exact["l"] = a + exact["b"] * exact["t"] / 2
-    return make_reference(
-        exact,
-        "the root of (27)'s solution, l = a + bt/2",
-    )
+    return make_reference(exact, "the root of (27)'s solution, l = a + bt/2")

@@ -16,11 +16,7 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from pendcli.papers.lecornu.references_tools import (
-    derivative_along,
-    make_reference,
-    real_symbols,
-)
+from pendcli.papers.lecornu.references_tools import derivative_along, make_reference, real_symbols
 
 # --- § IV, the motion in rectangular and polar coordinates, (43)-(45) (lines 940-1016) ---
 

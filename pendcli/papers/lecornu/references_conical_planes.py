@@ -16,11 +16,7 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.papers.lecornu.references_tools import (
-    derivative_along,
-    make_reference,
-    real_symbols,
-)
+from pendcli.papers.lecornu.references_tools import derivative_along, make_reference, real_symbols
 
 __all__ = ["first_order_solution"]
 

@@ -301,10 +301,7 @@ def reference_zero_length() -> Any:
     """Line 242: z = 2√x → 0 (x scaled by ε², z by ε): the limit is the ε⁰ term."""
     eps = sp.Symbol("eps_", positive=True)
     x, z = symbols("x", "z")
-    return reference(
-        {"x": eps**2 * x, "z": eps * z, "varphi": phi_of(eps**2 * x)},
-        "J₁ near 0",
-    )
+    return reference({"x": eps**2 * x, "z": eps * z, "varphi": phi_of(eps**2 * x)}, "J₁ near 0")
 
 
 def reference_series_of_nine() -> Any:

@@ -28,10 +28,7 @@ from pendcli.papers.tisserand import (
     references_prose,
     references_series,
 )
-from pendcli.papers.tisserand.references_differentials import (
-    ledger_symbols,
-    reference_definition_3,
-)
+from pendcli.papers.tisserand.references_differentials import ledger_symbols, reference_definition_3
 from pendcli.papers.tisserand.references_series import (
     in_kpt_reference,
     motion_reference,
