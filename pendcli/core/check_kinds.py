@@ -1,9 +1,12 @@
 """The named kinds of check that decide a ledger row, and the one rule that says which applies.
 
 A checked ledger row (``holds``, ``fails``, ``misprint``) declares its ``kind`` in the TOML
-beside the ``reference`` it is judged against. The kind is what the engine proves about the
-printed form; the reference supplies the model (its exact expressions) and the kind's
-parameters (a series' scale and order, a domain, cases). The rule, first match wins:
+beside the ``reference`` it is judged against and the kind's parameters (``scale``,
+``order``, ``orders``, ``domain``, ``bounded``, ``rounded``, ``cases``, ``each_case``: keys of
+the row, :data:`KIND_KEYS`, validated when the ledger loads by :func:`parse_parameters`). The
+kind is what the engine proves about the printed form; the reference supplies only the model
+(its exact expressions), the row's keys are put in place of its own (:func:`with_parameters`).
+The rule, first match wins:
 
 1. ``digits``: the reference gives the value of each printed number (``Numbers``);
 2. ``cases``: the reference judges the formula in several cases (``cases``, ``each_case``,
