@@ -18,7 +18,7 @@ from mutations import altered_ledger
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.ledger import Ledger, LedgerRow, verify_printed
-from pendcli.core.ledger_references import cited_reference
+from pendcli.core.ledger_references import builders, cited_reference
 from pendcli.core.printed import Formula, parse_formula
 from pendcli.core.printed_check import judged
 from pendcli.core.printed_verdict import computed_status
@@ -41,11 +41,11 @@ def _early_rows() -> list[LedgerRow]:
 
 
 def test_each_section_table_gives_its_builders_to_the_paper_and_each_is_cited() -> None:
-    """Every builder of every section table is the paper's, under its own name, and cited by
-    a row of the ledger (no dead reference); that no name is in two tables is test_layout's."""
+    """Every builder of every section module is the paper's, under its own name, and cited by
+    a row of the ledger (no dead reference); that no name is in two modules is test_layout's."""
     cited = {r.reference for r in committed_ledger("lecornu").rows if r.reference}
     for module in references.SECTIONS:
-        for name, builder in module.REFERENCES.items():
+        for name, builder in builders(module).items():
             assert REFERENCES[name] is builder is getattr(module, name), name
             assert name in cited, name
 

@@ -164,7 +164,6 @@ def reference_principal_motion() -> Reference:
 def reference_principal_turn() -> Reference:
     """n° 3: the principal motion at the end of the simple oscillation, t = T (θ0' = 0 again),
     T found as in reference_principal_motion."""
-
     (t,) = ledger_symbols("t")
     base = reference_principal_motion()
     at_end = {t: base.exact["T"]}

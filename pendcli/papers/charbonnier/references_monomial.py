@@ -95,7 +95,6 @@ def _in_definition() -> Any:
 # I_(-1), 463-469; I_0(π) = 2, I_(-1)(π) = π and −cos π sinⁿπ = 0, 480-482
 def reference_in() -> Reference:
     """n° 15: I_n = ∫₀^x sin^{n+1} x dx, its definition (quadrature)."""
-
     exact = {"I": _in_definition()}
     return Reference(exact, what="I_n's definition")
 

@@ -113,7 +113,6 @@ def reference_resistance_sense() -> Reference:
     acceleration θ'' of the equation of line 307 along the principal motion, θ'' = −k²θ0 −
     (c/l0)F(v), F = q0 + q1v + q2v² with positive q's; the resistance's acceleration along the
     arc is −cF(v) in the sense of θ increasing (the term enters that equation as gravity's)."""
-
     k, l0, c = ledger_symbols("k", "l0", "c")
     theta0, speed0 = principal_motion()
     force = _air_force()

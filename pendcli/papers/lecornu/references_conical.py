@@ -73,7 +73,6 @@ def reference_conical_polar() -> Any:
 def reference_eq43() -> Any:
     """(43) from lines 984-992: r z'' − z r'' − g r + c² z/r³ = 0 with r = l sin θ,
     z = l cos θ, solved for θ'' (l = a + bt, l'' = 0); the printed d/dt by the chain rule."""
-
     a, b, t, dth = real_symbols("a", "b", "t", "dtheta_dt")
     second = _eq43_second_derivative(a + b * t)
     rates = {"t": {"l": b, "theta": dth, "dtheta_dt": second}}
@@ -112,7 +111,6 @@ def _eq43_second_derivative(length: Any) -> Any:
 def reference_conical_l_form() -> Any:
     """Lines 1002-1008: θ'' from (43) with l' = b (l kept), and the derivatives in l,
     dθ/dl = θ'/b, d²θ/dl² = θ''/b²."""
-
     length, b, dth = real_symbols("l", "b", "dtheta_dt")
     second = _eq43_second_derivative(length)
     exact = {"d2theta_dt2": second, "dtheta_dl": dth / b, "d2theta_dl2": second / b**2}

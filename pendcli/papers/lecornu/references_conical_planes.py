@@ -113,7 +113,6 @@ def first_order_solution(rho: Any, psi: Any, u: Any) -> Any:
 @cache
 def reference_slow_pair() -> Any:
     """(50): θi the O(p) solution of (48) about ρi sin(γt − ψi) (γ = √(g/a))."""
-
     t, gamma = real_symbols("t", "gamma")
     exact = {}
     for i in ("1", "2"):
@@ -125,7 +124,6 @@ def reference_slow_pair() -> Any:
 @cache
 def reference_slow_length() -> Any:
     """l = a + bt with b = pγa (p = b/√(ga), γ = √(g/a)): a series in p."""
-
     a, t, gamma, p = real_symbols("a", "t", "gamma", "p")
     exact = {"l": a + p * gamma * a * t, "b": p * gamma * a}
     return make_reference(exact, "l = a + bt, b = pγa")

@@ -114,7 +114,6 @@ def _series_31() -> Any:
 @cache
 def reference_31() -> Any:
     """(31): θ through s² for β = 0, solved from (30) (lines 708-714)."""
-
     theta, _ = _series_31()
     return make_reference({"theta": theta}, "(30) through s², β = 0")
 

@@ -153,7 +153,6 @@ def reference_one_vertical() -> Any:
 def reference_bessel_past_beta() -> Any:
     """(17'), A', lines 314-320: x0 in (3/2, 18/5) (between the roots 1.446 of φ' and 3.670 of φ),
     x1 and x past β = 3.670 and below the next root 7.618 of φ'; A' = u(x1)/φ(x1)."""
-
     exact = _bessel_exact({"Ap": _u_over_phi_at("x1")})
     return reference(exact, "u of (9); A' = u/φ at x1 (line 316)")
 
@@ -161,7 +160,6 @@ def reference_bessel_past_beta() -> Any:
 def reference_bessel_past_alpha_prime() -> Any:
     """(21'), C', lines 324-328: as above, and x2, x past α' = 7.618, below the root 12.31 of φ;
     C' = (u + B/φ')/φ at x2 (the form (21') at x = x2)."""
-
     x, x2, big_b = symbols("x", "x2", "B")
     exact = _bessel_exact()
     c_prime = ((exact["u"] + big_b / exact["dvarphi_dx"]) / exact["varphi"]).subs(x, x2)
@@ -174,7 +172,6 @@ def reference_bessel_switches() -> Any:
     """The general rule (lines 330–342): x0 in (1/10, 1/2), before every root; x, x_k in
     (37/10, 15/2), past φ' = 0 at 1.446 and φ = 0 at 3.670; x_h and the switch point x1 in
     (3/2, 18/5), between them."""
-
     return reference(_bessel_exact(), "u of (9) across the roots of φ' and φ")
 
 

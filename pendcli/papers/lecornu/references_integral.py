@@ -72,7 +72,6 @@ def reference_c_equals_4_over_pi() -> Any:
 def reference_quadrature() -> Any:
     """Lines 416-434: identities between definite integrals, judged by quadrature alone;
     a (here aa) a fixed number above 1, h (here hh) above 2a√x and below 3 (line 442)."""
-
     return reference({}, "quadrature")
 
 

@@ -126,7 +126,6 @@ def reference_eq6() -> Any:
     """(6), line 80, against (3): θ'' of (3) (written with l = a + bt) for a d²/dt², θ_ll of (3) in
     l (the chain rule) for a d²/dl²; l' = b. The printed d²/dt² gives lθ'' + 2bθ' = −g sin θ, not
     −(g/b²) sin θ."""
-
     a, b, t, length = symbols("a", "b", "t", "l")
     dtheta, d2theta, dtheta_dl, d2theta_dl2 = symbols(
         "dtheta_dt", "d2theta_dt2", "dtheta_dl", "d2theta_dl2"
@@ -217,7 +216,6 @@ def reference_u_of_x_shortened() -> Any:
 
 def reference_speed_of_lengthening() -> Any:
     """Line 64: the rate of l = a + bt (line 62), for b > 0 (« sauf avis contraire »)."""
-
     a, b, t = symbols("a", "b", "t")
     return reference({"dl_dt": (a + b * t).diff(t)}, "l = a + bt")
 

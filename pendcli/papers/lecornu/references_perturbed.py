@@ -244,6 +244,5 @@ def reference_t_equals_t_prime() -> Any:
 def reference_speed_at_quarter() -> Any:
     """Line 902, « avec la vitesse négative »: dθ/dt at u = π/2 of reference_eq41, over k up to
     sin 45°, p small and rg = √(g/a) about 1/s (an inequality needs every symbol's range)."""
-
     exact = dict(reference_eq41().exact)
     return make_reference(exact, "θ = ω + p(kβ + k³δ) at u = π/2")

@@ -36,7 +36,6 @@ def _trajectory(zl: Any, cl: Any) -> Any:
 def reference_graphical() -> Any:
     """Lines 124-130: x = z/c in (9), u(z) exact; h the ordinate at z = 0 of the tangent at (z,
     u)."""
-
     zl, cl, at = symbols("zl", "cl", "Z_")
     u = _trajectory(zl, cl)
     slope = u.diff(zl)
@@ -322,7 +321,6 @@ def reference_series_of_nine() -> Any:
 def reference_speed_at_one_metre() -> Any:
     """Line 214: ξ = gl/b² (line 194) for the pendulum « ayant un mètre de longueur », l one
     metre (a length, kept a symbol); b, g positive."""
-
     b, g, metre = symbols("b", "g", "metre")
     return reference({"xi": g * metre / b**2}, "ξ = gl/b² at l = 1 m")
 

@@ -14,8 +14,6 @@ sentence rests on, never from the words it checks.
 
 from __future__ import annotations
 
-from typing import Any
-
 import sympy as sp
 
 from pendcli.core.printed_check import Reference
@@ -25,10 +23,6 @@ from pendcli.papers.tisserand.references_differentials import (
     scale,
 )
 from pendcli.papers.tisserand.references_series import motion_reference, motion_series
-
-
-def _rational(p: int, q: int) -> Any:
-    return sp.Rational(p, q)
 
 
 # Lines 30 and 180: the projection on the ellipse (17) and φ' against a uniform rotation.
