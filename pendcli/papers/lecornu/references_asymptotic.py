@@ -201,14 +201,6 @@ def reference_elongation_arc() -> Any:
 
 
 @cache
-def reference_vertical_to_elongation() -> Any:
-    """Lines 559-563: (l'' − l)/b, the time from the vertical at l to the next elongation
-    l'' ((23), (24) solved for l'', as for line 555), through b; the printed decimal 0,13
-    a rounding."""
-    quarter = cited("reference_quarter_oscillation")
-    return make_reference(dict(quarter.exact), "(23), (24) solved for l'', decimals rounded")
-
-
 def _zero_start_forced(rhs: Any, tau: Any, degree: int) -> Any:
     """The solution of y'' + y = rhs(τ) with y(0) = y'(0) = 0, rhs a polynomial in τ times
     cos τ and sin τ: undetermined coefficients (polynomials of ``degree``), solved by

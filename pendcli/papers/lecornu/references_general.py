@@ -168,13 +168,6 @@ def reference_bessel_past_alpha_prime() -> Any:
     return reference(exact, "u of (9); C' = (u + B/φ')/φ at x2 (line 326)")
 
 
-def reference_bessel_switches() -> Any:
-    """The general rule (lines 330–342): x0 in (1/10, 1/2), before every root; x, x_k in
-    (37/10, 15/2), past φ' = 0 at 1.446 and φ = 0 at 3.670; x_h and the switch point x1 in
-    (3/2, 18/5), between them."""
-    return reference(_bessel_exact(), "u of (9) across the roots of φ' and φ")
-
-
 def reference_initial_data() -> Any:
     """Lines 346-360: u = θl, x = gl/b² at t = 0 (l = a): u0 = aθ0, u'0 = (b²/g)(θ0 + a ω0/b) by the
     chain rule; A, B solved from u0 = Aφ0, u'0 = Aφ'0 + B/φ0 ((17), (18) at x0); C = A +

@@ -239,10 +239,3 @@ def reference_t_equals_t_prime() -> Any:
     duration = _half_oscillation().subs(k, 0).subs(b, scale * b)
     exact = {"b": scale * b, "T": duration, "Tp": duration, "l": a + scale * b * duration}
     return make_reference(exact, "(42) at k = 0, to first order in b")
-
-
-def reference_speed_at_quarter() -> Any:
-    """Line 902, « avec la vitesse négative »: dθ/dt at u = π/2 of reference_eq41, over k up to
-    sin 45°, p small and rg = √(g/a) about 1/s (an inequality needs every symbol's range)."""
-    exact = dict(reference_eq41().exact)
-    return make_reference(exact, "θ = ω + p(kβ + k³δ) at u = π/2")

@@ -55,9 +55,9 @@ def reference_shortening_swap() -> Any:
     (26) for l = a − bt (tasc_s, tdesc_s), and for l = a' + bt (tasc_l, tdesc_l), a' = a − b·tv2
     the length at the shortening pendulum's second vertical passage; b scaled by ε, through ε
     (the table's first order)."""
-    from pendcli.papers.lecornu.references_slow import reference_half_durations
+    from pendcli.papers.lecornu.references_slow import reference_table_26
 
-    table = reference_half_durations()
+    table = reference_table_26()
     a, b = symbols("a", "b")
     eps = sp.Symbol("eps_", positive=True)
 

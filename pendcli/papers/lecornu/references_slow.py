@@ -128,12 +128,6 @@ def reference_slow_exact() -> Any:
     return reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, R")
 
 
-def reference_slow_pendulum() -> Any:
-    """(22) in t, to first order in p (lines 581–595)."""
-    (psi,) = symbols("psi")
-    return reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, ρ")
-
-
 def reference_psi() -> Any:
     """Lines 593-595: ψ as the phase of (22)'s sine at t = 0 once written sin(γt − ψ): −(2/p −
     φ)."""
@@ -260,19 +254,6 @@ def reference_large_x() -> Any:
     big_x = x / eps
     exact = {"x": big_x, "d2u_dx2": -(1 + 3 / (16 * big_x)) * u / big_x}
     return reference(exact, "line 499's equation at large x")
-
-
-def reference_half_durations() -> Any:
-    """Line 565, against the smallest length a: the halves of the first oscillation from the
-    table after (26) (ascending te1 − tv1, descending tv2 − te1), first order in b."""
-    return Reference(_table_26(), what="the table after (26)")
-
-
-def reference_largest_length_sign() -> Any:
-    """Line 565, against the largest length: the changes of duration of reference_largest_length
-    over a range of a, b, g (an inequality needs every symbol's range)."""
-    exact = dict(reference_largest_length().exact)
-    return Reference(exact, what="quarter period at the largest length")
 
 
 def reference_elongation_difference() -> Any:

@@ -74,13 +74,6 @@ def reference_summary() -> Reference:
     return motion_reference(7, "(4), (5), (3): k' to order 6, k'' to order 4")
 
 
-# Lines 172-178, « dans une première approximation »: ψ = k't, φ' = (3/8)u0u1k''t.
-def reference_first_approximation() -> Reference:
-    """« dans une première approximation »: ψ through the first order (its sin 2k't term is
-    of the second), φ' through the third (its periodic term is of the fourth)."""
-    return in_kpt_reference(5, "(4), (5), (3): ψ to order 1, φ' to order 3")
-
-
 # Line 180, « k'' diffère peu de l'unité »: the axis's angular velocity (Resal's solution).
 def reference_resal() -> Reference:
     """Line 180: k'' and the mean angular velocity of the major axis, dφ'/dt = k'·P (P the

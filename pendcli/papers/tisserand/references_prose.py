@@ -47,13 +47,6 @@ def reference_uniform_rotation() -> Reference:
     return Reference(exact, what=base.what)
 
 
-# Line 44, « Pour t = 0, on aura ψ = 0 »: at t = 0, θ = θ0 (line 32), so u = u0.
-def reference_start_of_psi() -> Reference:
-    """(3) at ψ = 0: u there is u0, the value of u at t = 0 (θ = θ0)."""
-    base = reference_definition_3()
-    return Reference(base.exact, what="(3), ψ = 0")
-
-
 # Line 152: the ellipse (17) has centre O, major axis Ox', axes 2ρ0 and 2ρ1.
 def reference_ellipse_axes() -> Reference:
     """ρ = lu with u of (3), ρ0 = lu0, ρ1 = lu1 (line 142), over a whole turn of ψ and the
