@@ -33,8 +33,6 @@ from pendcli.papers.charbonnier import (
 if TYPE_CHECKING:
     pass
 
-__all__ = ["REFERENCES"]
-
 # Every builder the ledger cites, by its name there (core/ledger_references.builders).
 REFERENCES = builders(
     references_general, references_points, references_resisting, references_monomial

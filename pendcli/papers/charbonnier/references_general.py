@@ -8,8 +8,7 @@ prints: Newton's law in Cartesian coordinates for (1); the linearised (1) and it
 of a family with free parameters (the random points choose them) and θ1 from its differential
 equation of first order, solved by undetermined coefficients, never by the paper's integrals.
 :func:`ledger_symbols`, :func:`free_parameters`, :func:`principal_motion`,
-:func:`exponential_family` and :func:`integrand_along` are shared with n° 9-17. sympy is
-imported lazily.
+:func:`exponential_family` and :func:`integrand_along` are shared with n° 9-17.
 """
 
 from __future__ import annotations
@@ -23,14 +22,6 @@ import sympy as sp
 from pendcli.core.printed import ledger_symbols
 from pendcli.core.printed_check import Reference
 from pendcli.papers.taylor import taylor
-
-__all__ = [
-    "exponential_family",
-    "free_parameters",
-    "integrand_along",
-    "ledger_symbols",
-    "principal_motion",
-]
 
 
 def free_parameters(count: int, stem: str = "p") -> list[Any]:

@@ -7,7 +7,7 @@ F(v) = B_n vⁿ.
 quadrature, never from the recurrence or the products the paper prints. The printed I_n(π) in
 closed form (lines 486-489) use double factorials, ``factorial2(n)`` for 2·4…n or 1·3·5…n,
 under the names of their columns (``Ipi_even``, ``Ipi_odd``), each judged against an mpmath
-quadrature of I_n(π) at the integers of its parity. sympy is imported lazily.
+quadrature of I_n(π) at the integers of its parity.
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@ of θ = θ0 + εθ1 and the formulas (6)-(9).
 
 The remarkable points are found from θ = θ0 + εθ1 by one Newton step in ε (never from the
 paper's E integrals), θ1 that of the family of :func:`.references_general.exponential_family`
-or, for n° 13, of a resistance (:func:`first_order_points`). sympy is imported lazily.
+or, for n° 13, of a resistance (:func:`first_order_points`).
 """
 
 from __future__ import annotations
@@ -20,8 +20,6 @@ from pendcli.papers.charbonnier.references_general import (
     ledger_symbols,
     principal_motion,
 )
-
-__all__ = ["first_order_points"]
 
 
 def first_order_points(theta1: Any, speed1: Any) -> dict[str, Any]:

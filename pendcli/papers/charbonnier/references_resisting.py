@@ -3,7 +3,7 @@ n° 11-13: the references of the rows of lines 311-413, for a resistance of the 
 
 θ1 is Duhamel's integral of φ(t) = F(l0 θ0'(t)) (left to quadrature), ε = c/l0 (n° 12), and
 the remarkable points come from it as in n° 9 (:func:`.references_points.first_order_points`),
-never from the paper's E integrals. sympy is imported lazily.
+never from the paper's E integrals.
 """
 
 from __future__ import annotations
@@ -21,8 +21,6 @@ from pendcli.papers.charbonnier.references_general import (
     principal_motion,
 )
 from pendcli.papers.charbonnier.references_points import first_order_points
-
-__all__ = ["resisted"]
 
 
 def resisted(force: Any, phase: bool) -> dict[str, Any]:

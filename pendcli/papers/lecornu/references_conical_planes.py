@@ -18,8 +18,6 @@ import sympy as sp
 
 from pendcli.papers.lecornu.references_tools import derivative_along, make_reference, real_symbols
 
-__all__ = ["first_order_solution"]
-
 
 @cache
 def reference_primitive_angles() -> Any:

@@ -24,8 +24,6 @@ import sympy as sp
 
 from pendcli.papers.lecornu.references_base import float40, reference, symbols
 
-__all__ = ["EXTREMELY", "amplification_to_zero_length"]
-
 # the scale the ledger states for « extrêmement faible »: at most this fraction of θs, the
 # largest deviation the small-oscillation hypothesis admits (an order of magnitude below it)
 EXTREMELY = (1, 10)

@@ -35,9 +35,6 @@ from pendcli.papers.tisserand.references_series import (
     motion_series,
 )
 
-__all__ = ["REFERENCES"]
-
-
 # --- the ellipse: (9), (10), (16), (17), p. 452 ------------------------------------------
 
 

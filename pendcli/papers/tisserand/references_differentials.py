@@ -19,8 +19,6 @@ import sympy as sp
 from pendcli.core.printed import ledger_symbols
 from pendcli.core.printed_check import Reference
 
-__all__ = ["ledger_symbols", "scale"]
-
 
 def scale() -> Any:
     """s, the scale of the angles' order: the series references multiply u, u0, u1 by it."""

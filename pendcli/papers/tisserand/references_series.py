@@ -20,8 +20,6 @@ from pendcli.core.printed_check import Reference
 from pendcli.papers.taylor import degree_in, taylor
 from pendcli.papers.tisserand.references_differentials import ledger_symbols, scale
 
-__all__ = ["motion_in_kpt", "motion_series", "series_symbols"]
-
 
 @cache
 def series_symbols() -> Any:
