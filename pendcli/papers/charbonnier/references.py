@@ -20,20 +20,11 @@ Each maps ledger symbols to exact expressions obtained without the formula the r
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from pendcli.core.ledger_references import builders
-from pendcli.papers.charbonnier import (
-    references_general,
-    references_monomial,
-    references_points,
-    references_resisting,
-)
-
-if TYPE_CHECKING:
-    pass
+from pendcli.papers.charbonnier import references_general as general
+from pendcli.papers.charbonnier import references_monomial as monomial
+from pendcli.papers.charbonnier import references_points as points
+from pendcli.papers.charbonnier import references_resisting as resisting
 
 # Every builder the ledger cites, by its name there (core/ledger_references.builders).
-REFERENCES = builders(
-    references_general, references_points, references_resisting, references_monomial
-)
+REFERENCES = builders(general, points, resisting, monomial)

@@ -22,12 +22,10 @@ import sympy as sp
 
 from pendcli.core.ledger_references import builders
 from pendcli.core.printed_check import Reference
-from pendcli.papers.tisserand import (
-    references_differentials,
-    references_numeric,
-    references_prose,
-    references_series,
-)
+from pendcli.papers.tisserand import references_differentials as differentials
+from pendcli.papers.tisserand import references_numeric as numeric
+from pendcli.papers.tisserand import references_prose as prose
+from pendcli.papers.tisserand import references_series as series
 from pendcli.papers.tisserand.references_differentials import ledger_symbols, reference_definition_3
 from pendcli.papers.tisserand.references_series import (
     in_kpt_reference,
@@ -89,10 +87,4 @@ def reference_second_approximation() -> Reference:
 # --- the table the ledger's rows cite, in the order of the paper -------------------------
 
 # Every builder the ledger cites, by its name there (core/ledger_references.builders).
-REFERENCES = builders(
-    sys.modules[__name__],
-    references_differentials,
-    references_series,
-    references_prose,
-    references_numeric,
-)
+REFERENCES = builders(sys.modules[__name__], differentials, series, prose, numeric)
