@@ -22,6 +22,7 @@ import sympy as sp
 
 from pendcli.core.printed_check import Reference
 from pendcli.core.printed_numeric import Numbers
+from pendcli.papers.lecornu.model import constant, printed_number
 
 _DPS = 30
 J2 = [f"lecornu.j2_zeros.{k}" for k in range(1, 6)]  # (15), ascending
@@ -34,15 +35,11 @@ COEFFICIENT = "lecornu.coefficient_b2_4g"
 
 def _published(claim_id: str) -> Any:
     """The printed number of a claim as an exact mpmath decimal (its printed digits)."""
-    from pendcli.papers.lecornu.model import printed_number
-
     number = printed_number(claim_id)
     return mpmath.mpf(f"{number.value:.{number.decimals or 0}f}")
 
 
 def _numbers(values: list[Any], what: str, claims: Sequence[str | None], **kw: Any) -> Any:
-    from pendcli.papers.lecornu.model import printed_number
-
     published = tuple(None if c is None else (c, printed_number(c)) for c in claims)
     return Numbers(tuple(values), what=what, published=published, **kw)
 
@@ -67,8 +64,6 @@ def numbers_j2_roots_chopped() -> Any:
 
 def numbers_table_speeds() -> Any:
     """Line 216: √(g l/ξ) = 2√(g l)/z for l = 1 m at the roots z of (15) as printed."""
-    from pendcli.papers.lecornu.model import constant
-
     with mpmath.workdps(_DPS):
         gl = mpmath.mpf(constant("g")) * mpmath.mpf(constant("length"))
         speeds = [2 * mpmath.sqrt(gl) / _published(c) for c in J2]
@@ -80,8 +75,6 @@ def numbers_eq16() -> Any:
     """(16), line 220: its printed 0,00313 against b²/(4g) in metres (b = 0,35 m/s printed,
     g = 9,81 assumed); its equalities as identities from x = gl/b² (line 170) at the root
     x = ξ = z²/4 (z = 2√x, line 200)."""
-    from pendcli.papers.lecornu.model import constant
-
     b, g, z = (sp.Symbol(n, real=True) for n in ("b", "g", "z"))
     xi = z**2 / 4
     identity = Reference({"xi": xi, "l": b**2 / g * xi}, what="x = gl/b² at x = ξ = z²/4")
@@ -101,8 +94,6 @@ def numbers_table_lengths() -> Any:
 
 def numbers_table_times() -> Any:
     """Line 228: the instants (1 − l)/0,35 of the elongations at the lengths of line 224."""
-    from pendcli.papers.lecornu.model import constant
-
     with mpmath.workdps(_DPS):
         start, speed = mpmath.mpf(constant("length")), mpmath.mpf(constant("speed"))
         times = [(start - _published(c)) / speed for c in LENGTHS]

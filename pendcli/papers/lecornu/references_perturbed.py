@@ -96,15 +96,14 @@ def reference_eq40() -> Any:
     u, _k, _ = _u_symbols()
     (eps,) = real_symbols("eps")
     chain = _slow_finite()
-    exact = {
-        "d2eps_du2": chain["F"] - eps * sp.cos(chain["omega"]),
-        "A40": chain["A"],
-        "B40": chain["B"],
-        "fu": chain["f"],
-        "dfu": chain["f"].diff(u),
-        "d2fu": chain["f"].diff(u, 2),
-    }
+    exact = {"d2eps_du2": chain["F"] - eps * sp.cos(chain["omega"]), **_coefficients(chain, u)}
     return make_reference(exact, "(39) with ω of (38)")
+
+
+def _coefficients(chain: dict[str, Any], u: Any) -> dict[str, Any]:
+    """A and B of (40) and f, f', f'' of (38), by the ledger's names."""
+    f = chain["f"]
+    return {"A40": chain["A"], "B40": chain["B"], "fu": f, "dfu": f.diff(u), "d2fu": f.diff(u, 2)}
 
 
 @cache
@@ -149,11 +148,7 @@ def reference_beta_delta() -> Any:
     exact = {
         "beta_e": chain["beta"],
         "delta_e": chain["delta"],
-        "A40": chain["A"],
-        "B40": chain["B"],
-        "fu": chain["f"],
-        "dfu": chain["f"].diff(u),
-        "d2fu": chain["f"].diff(u, 2),
+        **_coefficients(chain, u),
         "d2delta_du2": chain["delta"].diff(u, 2),
         "d2beta_du2": chain["beta"].diff(u, 2),
     }

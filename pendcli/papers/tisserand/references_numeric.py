@@ -18,6 +18,7 @@ from typing import Any
 import mpmath
 
 from pendcli.core.printed_numeric import Numbers
+from pendcli.papers.tisserand.model import series_conical
 
 COEFFICIENTS = (
     "tisserand.example.psi_sin2",
@@ -35,8 +36,6 @@ def _claim(claim_id: str) -> Any:
 def _coefficients(given: Mapping[str, float]) -> tuple[float, ...]:
     """The printed magnitudes of ψ's sin 2k't, sin 4k't and φ''s sin 2k't coefficients, in
     degrees, by (II) and (V) at θ0, θ1 given in degrees (30' is 0,5°)."""
-    from pendcli.papers.tisserand.model import series_conical
-
     theta0, theta1 = (math.radians(given[name]) for name in ("theta0", "theta1"))
     motion = series_conical(theta0, theta1, order=6)
     # ψ = k't − b1 sin 2k't + b2 sin 4k't as printed: the minus sign is the formula's
