@@ -153,13 +153,14 @@ class Case:
         return (status == self.row.status) == self.committed
 
 
-_REFERENCES: dict[tuple[str, str], Any] = {}
+_REFERENCES: dict[tuple[str, str, Any], Any] = {}
 
 
 def reference_of(row: LedgerRow) -> Any:
-    """The row's reference, built once per name (as the ledger's own check shares it)."""
+    """The row's reference with its keys, built once per name and keys (as the ledger's own
+    check shares it)."""
     assert row.reference is not None
-    key = (row.paper, row.reference)
+    key = (row.paper, row.reference, row.parameters)
     if key not in _REFERENCES:
         _REFERENCES[key] = cited_reference(paper_named(row.paper), row.reference, row.id)
     return _REFERENCES[key]
