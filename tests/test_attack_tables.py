@@ -200,3 +200,58 @@ def test_every_paper_loads_from_the_committed_tables() -> None:
     for key in PAPERS:
         table = load_paper_table(key, REPO_TABLES)
         assert all(c.range[0] <= c.value <= c.range[1] for c in table.constants)
+
+
+def edit_row(tables: Path, key: str, row_id: str, old: str, new: str) -> None:
+    """Replace ``old`` by ``new`` in the row ``row_id`` of the paper's ledger (its first
+    occurrence after the row's id)."""
+    path = tables / "equations" / f"{key}.toml"
+    text = path.read_text(encoding="utf-8")
+    start = text.index(f'id = "{row_id}"')
+    end = text.find("[[", start)
+    block = text[start:end]
+    assert old in block, (row_id, old)
+    path.write_text(text[:start] + block.replace(old, new, 1) + text[end:], encoding="utf-8")
+
+
+LIMIT_ROW = "lecornu.result.small_x_asymptotics"  # kind limit: scale eps_, bounded
+SERIES_ROW = "lecornu.eq.25"  # kind series: scale p, order 2
+# a row's kind parameters made wrong: (row, old, new, what the one line must say)
+BAD_PARAMETERS = {
+    "unknown key for the kind": (
+        SERIES_ROW,
+        "order = 2",
+        "order = 2\nbounded = true",
+        "kind 'series' takes no 'bounded'",
+    ),
+    "bounded without scale": (LIMIT_ROW, 'scale = "eps_"\n', "", "'bounded' needs a 'scale'"),
+    "order without scale": (SERIES_ROW, 'scale = "p"\n', "", "'order' needs a 'scale'"),
+    "domain reversed": (
+        LIMIT_ROW,
+        "alpha = [0.3, 1.2]",
+        "alpha = [1.2, 0.3]",
+        "bounds reversed",
+    ),
+    "domain not a number": (
+        LIMIT_ROW,
+        "alpha = [0.3, 1.2]",
+        'alpha = ["x", 1.2]',
+        "of 'alpha': is not a number",
+    ),
+    "order not an integer": (
+        SERIES_ROW,
+        "order = 2",
+        "order = 2.5",
+        "'order' must be",
+    ),
+    "a scale without order": (SERIES_ROW, "order = 2\n", "", "'scale' needs an 'order'"),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD_PARAMETERS))
+def test_a_row_with_meaningless_kind_parameters_is_one_line_exit_2(tables: Path, case: str) -> None:
+    row_id, old, new, says = BAD_PARAMETERS[case]
+    edit_row(tables, "lecornu", row_id, old, new)
+    code, out, err = invoke("equations", "-p", "lecornu")
+    assert_clean_error(code, err)
+    assert f"{row_id}: " in err and says in err and out == "", err

@@ -69,10 +69,10 @@ def test_a_declared_kind_other_than_the_references_is_refused_naming_the_row() -
     row_id = "lecornu.eq.25"  # a series in p
     assert committed_row(row_id).kind == "series"
     computed, problem = judged_after_edit(
-        reference_table(paper("lecornu")), row_id, 'kind = "series"', 'kind = "identity"', row_id
+        reference_table(paper("lecornu")), row_id, 'kind = "series"', 'kind = "inequality"', row_id
     )
     assert computed == (
-        "no status the ledger may record: kind 'identity' is declared, but its reference and "
+        "no status the ledger may record: kind 'inequality' is declared, but its reference and "
         "printed form make it 'series'"
     )
     assert problem is not None and problem.startswith("recorded holds, but the printed form")
@@ -131,3 +131,61 @@ def test_an_inequality_false_on_a_small_part_of_its_domain_is_refused(share) -> 
     assert not ok and "the margin is" in why, why
     wide = sp.StrictGreaterThan(x, low - share)
     assert formula_passes(Formula("x > c", ((None, wide),)), reference)[0]
+
+
+# --- the kind's parameters as ledger keys ------------------------------------------------
+
+
+def test_a_rows_keys_are_parsed_exactly_and_put_in_place_of_the_references() -> None:
+    from pendcli.core.check_kinds import parse_parameters, with_parameters
+
+    entry = {"scale": "eps", "order": 3, "domain": {"x": ["1/3", 0.5], "y": [-1, 2]}}
+    parameters = parse_parameters("row", "series", entry)
+    eps = sp.Symbol("eps", positive=True)  # the reference's own scale, not a second unknown
+    own = Reference(exact={"x": eps * x}, domain={"x": (0, 1), "z": (1, 2)})
+    given = with_parameters(own, parameters)
+    assert given.scale is eps and given.order == 3 and given.exact == own.exact
+    third, half = sp.Rational(1, 3), sp.Rational(1, 2)
+    assert given.domain == {"x": (third, half), "y": (-1, 2), "z": (1, 2)}
+    assert all(isinstance(v, sp.Rational) for n in "xy" for v in given.domain[n])
+    # a reading and the cases are judged for the same row: they take its keys too
+    nested = with_parameters(Reference(exact={}, reading=own, cases=(own,)), parameters)
+    assert nested.reading.order == 3 and nested.cases[0].scale is eps
+
+
+def test_a_series_judged_through_the_rows_order_not_the_references() -> None:
+    """x = 1 + eps against x = 1 + eps + eps**2: holds through order 2, not through 3; the
+    order comes from the row (a model and two rows citing it with their own)."""
+    from pendcli.core.check_kinds import parse_parameters, with_parameters
+
+    eps = sp.Symbol("eps", real=True)
+    model = Reference(exact={"x": 1 + eps + eps**2})
+    printed = Formula("x = 1 + eps", ((x, 1 + eps),))
+    for order, holds in ((2, True), (3, False)):
+        keys = parse_parameters("row", "series", {"scale": "eps", "order": order})
+        assert formula_passes(printed, with_parameters(model, keys))[0] is holds
+
+
+@pytest.mark.parametrize(
+    ("kind", "entry", "says"),
+    [
+        ("identity", {"order": 2}, "kind 'identity' takes no 'order'"),
+        ("digits", {"domain": {"x": [0, 1]}}, "kind 'digits' takes no 'domain'"),
+        ("series", {"scale": "1eps", "order": 1}, "'scale' must be a symbol name"),
+        ("series", {"scale": "e", "order": True}, "'order' must be a non-negative integer"),
+        ("series", {"scale": "e", "order": 1, "orders": {"x": -1}}, "'orders' must be"),
+        ("limit", {"bounded": True}, "'bounded' needs a 'scale'"),
+        ("limit", {"scale": "e", "bounded": False}, "true or absent"),
+        ("cases", {"cases": ["a"], "each_case": [{"x": 1}]}, "exclude each other"),
+        ("cases", {"each_case": [{"x": "pi"}]}, "is not a number"),
+        ("identity", {"domain": {"x": [1, 1]}}, "bounds reversed or empty"),
+        ("identity", {"domain": {"x": [0, 1, 2]}}, "bounds must be [low, high]"),
+    ],
+)
+def test_meaningless_keys_are_one_line_naming_the_row(kind: str, entry: dict, says: str) -> None:
+    from pendcli.core.check_kinds import parse_parameters
+
+    with pytest.raises(PendcliError) as error:
+        parse_parameters("ledger.toml: a.eq.1", kind, entry)
+    assert str(error.value).startswith("ledger.toml: a.eq.1: ") and says in str(error.value)
+    assert "\n" not in str(error.value)

@@ -86,6 +86,7 @@ from pendcli.core import (
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, reference_table
 from pendcli.core.ledger_formulas import printed_status
+from pendcli.core.ledger_references import cited_reference
 from pendcli.core.printed_check import Reference
 from pendcli.core.printed_numeric import Numbers
 from pendcli.core.vocabulary import Verdict
@@ -152,16 +153,16 @@ class Case:
         return (status == self.row.status) == self.committed
 
 
-_REFERENCES: dict[tuple[str, str], Any] = {}
+_REFERENCES: dict[tuple[str, str, Any], Any] = {}
 
 
 def reference_of(row: LedgerRow) -> Any:
-    """The row's reference, built once per name (as the ledger's own check shares it)."""
+    """The row's reference with its keys, built once per name and keys (as the ledger's own
+    check shares it)."""
     assert row.reference is not None
-    key = (row.paper, row.reference)
+    key = (row.paper, row.reference, row.parameters)
     if key not in _REFERENCES:
-        table = reference_table(paper_named(row.paper))
-        _REFERENCES[key] = table[row.reference]()
+        _REFERENCES[key] = cited_reference(paper_named(row.paper), row.reference, row.id)
     return _REFERENCES[key]
 
 

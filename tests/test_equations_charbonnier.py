@@ -12,6 +12,7 @@ from ledgers import committed_ledger, committed_row
 
 from pendcli.core.ledger import verify_printed
 from pendcli.core.ledger_formulas import row_formula
+from pendcli.core.ledger_references import cited_reference
 from pendcli.core.printed_check import judged
 from pendcli.papers.charbonnier.references import REFERENCES
 from pendcli.papers.registry import paper
@@ -47,7 +48,7 @@ def test_the_derivative_of_4_has_the_minus_sign_of_5() -> None:
     read = row.read("printed")  # the OCR's x read as α (the reading table)
     assert read is not None and "k*alpha*sin" in read and read.count("- epsilon*(") == 1
     symbols = committed_ledger("charbonnier").symbols_for(row)
-    reference = REFERENCES[row.reference or ""]()
+    reference = cited_reference(paper("charbonnier"), row.reference or "", row.id)
     assert judged(row_formula(row.id, read, symbols), reference)[0]
     plus = read.replace("- epsilon*(", "+ epsilon*(")
     assert not judged(row_formula(row.id, plus, symbols), reference)[0]

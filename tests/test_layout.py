@@ -5,6 +5,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parent.parent
 
 
@@ -43,18 +45,26 @@ def test_every_paper_has_its_own_folder() -> None:
 
 
 def test_the_reference_tables_name_nothing_twice() -> None:
-    """Lecornu's references are gathered from its section tables (``REFERENCES`` of each
-    references_*.py): a name two of them define would silently take the later one's meaning
-    (two builders named reference_elongation_condition once did, and (12) was judged against
-    (23)'s condition). The gathered table is every section's, whole."""
-    from pendcli.papers.lecornu.references import REFERENCES, SECTIONS
+    """Lecornu's references are gathered from its section modules (their public reference_*
+    and numbers_* functions, core/ledger_references.builders): a name two of them define would
+    silently take the later one's meaning (two builders named reference_elongation_condition
+    once did, and (12) was judged against (23)'s condition), so it is refused; and every
+    references_*.py module that defines a builder is a section."""
+    import types
 
-    seen: dict[str, str] = {}
-    for module in SECTIONS:
-        for name in module.REFERENCES:
-            assert name not in seen, f"{name} is given by {module.__name__} and {seen[name]}"
-            seen[name] = module.__name__
-    assert list(REFERENCES) == list(seen)
+    from pendcli.core.ledger_references import builders
+    from pendcli.papers.lecornu.references import SECTIONS
+
+    modules = [types.ModuleType(name) for name in ("first", "second")]
+    for module in modules:
+        exec("def reference_twice():\n    return None", module.__dict__)
+    with pytest.raises(ValueError, match="two references named 'reference_twice'"):
+        builders(*modules)
+    assert list(builders(modules[0])) == ["reference_twice"]
     folder = ROOT / "pendcli" / "papers" / "lecornu"
-    with_tables = {p.stem for p in folder.glob("references_*.py") if "REFERENCES" in p.read_text()}
-    assert with_tables == {m.__name__.rsplit(".", 1)[1] for m in SECTIONS}
+    defining = {
+        p.stem
+        for p in folder.glob("references_*.py")
+        if re.search(r"^def (reference|numbers)_", p.read_text(), re.M)
+    }
+    assert defining == {m.__name__.rsplit(".", 1)[1] for m in SECTIONS}

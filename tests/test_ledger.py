@@ -121,6 +121,13 @@ SMALL = (
 )
 
 
+def _toml(value: object) -> str:
+    """A value as TOML writes it (a table inline: a row's domain)."""
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{k} = {_toml(v)}" for k, v in value.items()) + " }"
+    return json.dumps(value, ensure_ascii=False)
+
+
 def _small_ledger(root: Path, change: dict[str, dict[str, object]] | None = None) -> None:
     """The SMALL rows of the real Charbonnier ledger (and its reading table), as
     tables/equations/charbonnier.toml; ``change`` alters a row's fields (None removes one)."""
@@ -135,7 +142,7 @@ def _small_ledger(root: Path, change: dict[str, dict[str, object]] | None = None
         if entry["id"] in SMALL:
             altered = {**entry, **(change or {}).get(entry["id"], {})}
             entry = {k: v for k, v in altered.items() if v is not None}
-            body = "\n".join(f"{k} = {json.dumps(v, ensure_ascii=False)}" for k, v in entry.items())
+            body = "\n".join(f"{k} = {_toml(v)}" for k, v in entry.items())
             parts.append(f"[[equation]]\n{body}")
     (root / "equations").mkdir()
     (root / "equations" / "charbonnier.toml").write_text("\n\n".join(parts) + "\n", "utf-8")

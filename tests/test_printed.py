@@ -15,6 +15,7 @@ from pendcli.core.dimensions import check_dimensions
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger import LedgerRow, parse_ledger, verify_printed
 from pendcli.core.ledger_formulas import row_dimensions
+from pendcli.core.ledger_references import cited_reference
 from pendcli.core.printed import parse_dimension, parse_formula
 from pendcli.papers.registry import paper as registered_paper
 
@@ -397,7 +398,7 @@ def test_a_random_number_of_a_random_holds_row_changed_stops_it_holding(seed: in
     if beyond is not None and number.start() in range(*_span_of(row.printed, beyond)):
         return  # a term the row's kind does not compare (its note says so)
     mutant = dataclasses.replace(row, printed=printed)
-    references = registered_paper(paper).references()
+    reference = cited_reference(registered_paper(paper), row.reference, row.id)  # its keys
     symbols = committed_ledger(paper).symbols_for(mutant)
-    status, why = printed_status(mutant, symbols, references[row.reference]())
+    status, why = printed_status(mutant, symbols, reference)
     assert status != "holds", f"{row.id}: {text} -> {changed} at {number.start()}: {why}"

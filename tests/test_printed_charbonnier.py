@@ -16,6 +16,7 @@ from mutations import altered_row
 from pendcli.core.ledger import LedgerRow, verify_printed
 from pendcli.core.ledger_coverage import ledger_text_coverage
 from pendcli.core.ledger_formulas import row_formula
+from pendcli.core.ledger_references import cited_reference
 from pendcli.papers.registry import paper
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -296,7 +297,7 @@ def test_the_closed_forms_are_judged_per_parity() -> None:
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.delta-alpha-closed")
     assert row.printed is not None and "x*g*T" in row.printed  # the OCR's x, read as α
     read = row_formula(row.id, row.read("printed") or "", dict(ledger.symbols))
-    both = REFERENCES["reference_monomial_parity"]()
+    both = cited_reference(paper("charbonnier"), "reference_monomial_parity")
     assert formula_passes(read, both)[0]
     swapped = dataclasses.replace(both, cases=both.cases[::-1])
     assert not formula_passes(read, swapped)[0]
@@ -311,8 +312,11 @@ def test_friction_has_a_finite_count_by_the_same_formula() -> None:
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.infinite-count")
     assert row.printed is not None
     printed = row_formula(row.id, row.printed, dict(ledger.symbols))
-    assert formula_passes(printed, REFERENCES["reference_monomial_decay"]())[0]
-    assert not formula_passes(printed, REFERENCES["reference_friction"]())[0]
+    charbonnier = paper("charbonnier")
+    assert formula_passes(
+        printed, cited_reference(charbonnier, "reference_monomial_points", row.id)
+    )[0]
+    assert not formula_passes(printed, cited_reference(charbonnier, "reference_friction"))[0]
 
 
 def test_the_closed_forms_against_an_ode() -> None:

@@ -18,12 +18,12 @@ from mutations import altered_ledger
 
 from pendcli.core.claims import FormulaRow
 from pendcli.core.ledger import Ledger, LedgerRow, verify_printed
+from pendcli.core.ledger_references import builders, cited_reference
 from pendcli.core.printed import Formula, parse_formula
 from pendcli.core.printed_check import judged
 from pendcli.core.printed_verdict import computed_status
 from pendcli.papers.lecornu import (
     references,
-    references_general,
     references_slow,
     references_small,
 )
@@ -41,11 +41,11 @@ def _early_rows() -> list[LedgerRow]:
 
 
 def test_each_section_table_gives_its_builders_to_the_paper_and_each_is_cited() -> None:
-    """Every builder of every section table is the paper's, under its own name, and cited by
-    a row of the ledger (no dead reference); that no name is in two tables is test_layout's."""
+    """Every builder of every section module is the paper's, under its own name, and cited by
+    a row of the ledger (no dead reference); that no name is in two modules is test_layout's."""
     cited = {r.reference for r in committed_ledger("lecornu").rows if r.reference}
     for module in references.SECTIONS:
-        for name, builder in module.REFERENCES.items():
+        for name, builder in builders(module).items():
             assert REFERENCES[name] is builder is getattr(module, name), name
             assert name in cited, name
 
@@ -216,7 +216,7 @@ def test_the_quarter_time_study_is_the_rows_reference_solved_in_closed_form() ->
     import mpmath
 
     row = _committed_formula_rows()["lecornu.quarter_time"]
-    lpp = references_slow.reference_quarter_time().exact["lpp"]
+    lpp = references_slow.reference_quarter_oscillation().exact["lpp"]
     ((left, right),) = _printed("lecornu.result.quarter_time")
     with mpmath.workdps(30):
         for q, residual in row.residuals:
@@ -420,7 +420,7 @@ def test_the_cross_reference_of_line_276_is_judged_against_both_equations() -> N
     citing (20) for the printed form too (no reading reference) makes the row hold."""
     from dataclasses import replace
 
-    reference = references_general.reference_monotone_as_cited()
+    reference = cited_reference(paper("lecornu"), "reference_monotone_as_cited")
     claim = _formula("B*Derivative(u/varphi, x) > 0")
     ok, why = judged(claim, reference)
     assert not ok and "undetermined" in why and "du_dx" in why
@@ -463,7 +463,7 @@ def test_a_condition_is_judged_as_the_models_equation() -> None:
     the same printed equation as an identity (no condition) does not."""
     from dataclasses import replace
 
-    reference = references_small.reference_eq13()
+    reference = cited_reference(paper("lecornu"), "reference_eq13")
     line_182 = _formula(
         "1 - 2*x/(1*2)**2 + 3*x**2/(1*2*3)**2 - ... = 1 - x/1**2 + x**2/(1*2)**2 - ..."
     )

@@ -15,6 +15,7 @@ from mutations import altered_tables, field_line, judged_after_edit, printed_lin
 
 from pendcli.core.dimensions import check_dimensions
 from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, verify_printed
+from pendcli.core.ledger_references import cited_reference
 from pendcli.core.printed import parse_dimension, parse_formula
 from pendcli.core.printed_check import formula_passes
 from pendcli.papers.registry import paper
@@ -161,7 +162,7 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
     """Line 1008: l θ_tt + 2θ_t + (g/b²) sin θ − … is not (43) in l; with d²θ/dl², dθ/dl
     (and l³) it is. Symbolic (the engine, each slip alone) and dimensional here; numeric:
     (43) integrated by mpmath, the two forms evaluated along the solution."""
-    reference = REFERENCES["reference_conical_l_form"]()
+    reference = cited_reference(paper("lecornu"), "reference_conical_l_form")
     l3 = "c**2*cos(theta)/(b**2*l**3*sin(theta)**3) = 0"
     in_t = f"l*d2theta_dt2 + 2*dtheta_dt + g/b**2*sin(theta) - {l3}"
     in_l = f"l*d2theta_dl2 + 2*dtheta_dl + g/b**2*sin(theta) - {l3}"
@@ -267,7 +268,7 @@ def test_the_trajectory_after_52_has_its_arctangent_argument_inverted() -> None:
     printed one's as p)."""
     import numpy as np
 
-    reference = REFERENCES["reference_rotated_phases"]()
+    reference = cited_reference(paper("lecornu"), "reference_rotated_phases")
     left = "(x/rho1)**2 + (y/rho2)**2 - 1 = -3*p/2*atan"
     assert not formula_passes(_formula(f"{left}(rho2*y/(rho1*x))"), reference)[0]  # type: ignore[arg-type]
     assert formula_passes(_formula(f"{left}(rho1*y/(rho2*x))"), reference)[0]  # type: ignore[arg-type]
@@ -515,7 +516,7 @@ def test_the_homothety_axes_carry_the_inverted_arctangent() -> None:
     import numpy as np
     import sympy as sp
 
-    reference = REFERENCES["reference_homothety"]()
+    reference = cited_reference(paper("lecornu"), "reference_homothety")
     axis = "axis1 = rho1*(1 - 3*p/4*atan"
     assert not formula_passes(_formula(f"{axis}(rho2*y/(rho1*x)))"), reference)[0]  # type: ignore[arg-type]
     assert formula_passes(_formula(f"{axis}(rho1*y/(rho2*x)))"), reference)[0]  # type: ignore[arg-type]

@@ -112,9 +112,9 @@ def test_against_the_largest_length_the_descending_half_is_lengthened_not_shorte
 
 def test_the_reference_of_the_largest_length_agrees_with_the_integration() -> None:
     from pendcli.core.printed import ledger_symbols
-    from pendcli.papers.lecornu.references_slow import reference_largest_length_sign
+    from pendcli.papers.lecornu.references_slow import reference_largest_length
 
-    ref = reference_largest_length_sign()
+    ref = reference_largest_length()
     a, b, g = ledger_symbols("a", "b", "g")
     ddesc = float(ref.exact["ddesc"].subs({a: A, b: B, g: G}).evalf(30))
     events, passages = _events(A, B, G, 0.01)

@@ -20,6 +20,7 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from pendcli.core.check_kinds import PARAMETER_KEYS, parse_parameters
 from pendcli.core.errors import PendcliError
 from pendcli.core.ledger_blame import (
     BLAME_KEYS,
@@ -106,8 +107,9 @@ CHECK_KEYS = ("kind", "measured")
 # assumption its verdict turns on (core/ledger_conditions), its own slip beside a carried one
 # (core/ledger_step).
 BLAME_STEP_KEYS = (*BLAME_KEYS, "condition", *STEP_KEYS)
-ROW_KEYS = (*REQUIRED_KEYS, *CHECK_KEYS, "reading", "corrected", "wrong_term", "note", *TEXT_KEYS,
-            *BLAME_STEP_KEYS)  # fmt: skip
+# (and the kind's parameters beside its reference: core/check_kinds)
+ROW_KEYS = (*REQUIRED_KEYS, *CHECK_KEYS, *PARAMETER_KEYS, "reading", "corrected", "wrong_term",
+            "note", *TEXT_KEYS, *BLAME_STEP_KEYS)  # fmt: skip
 # Keys whose value is not a plain string, each read by its own parser.
 _SHAPED_KEYS = ("lines", "used_at", "restates", "step_symbols")
 # Keys that take a string or a list of strings, each printed verbatim within the row's lines
@@ -159,6 +161,8 @@ class LedgerRow:
     step_at: str | None = None
     step_symbols: tuple[tuple[str, str], ...] | None = None
     step_formula: str | None = None
+    # the kind's parameters the row gives (core/check_kinds), validated on load
+    parameters: tuple[tuple[str, Any], ...] = ()
     # the reading table's entries that apply to the row (core/ledger_readings), set on load
     readings: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
 
@@ -345,7 +349,9 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
         printed["measured"] = _as_strings(printed["measured"])  # type: ignore[arg-type]
     printed.update(parse_blame(where, entry))
     printed.update(parse_step(where, entry))
-    for key in (k for k in ROW_KEYS if k not in _SHAPED_KEYS and k not in LIST_KEYS):
+    printed["parameters"] = parse_parameters(where, entry.get("kind"), entry)
+    entry = {k: v for k, v in entry.items() if k not in PARAMETER_KEYS}
+    for key in (k for k in ROW_KEYS if k not in _SHAPED_KEYS + LIST_KEYS + PARAMETER_KEYS):
         value = entry.get(key)
         if key in REQUIRED_KEYS and value is None:
             raise PendcliError(f"{where}: missing {key!r}")

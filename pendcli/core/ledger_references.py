@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from functools import cache
 from pathlib import Path
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 from pendcli.core.errors import PendcliError
@@ -28,6 +29,8 @@ if TYPE_CHECKING:
 __all__ = [
     "Computed",
     "References",
+    "builders",
+    "cited_reference",
     "cited_references",
     "conditional",
     "derivation_drift",
@@ -46,6 +49,26 @@ __all__ = [
 
 # reference name -> the function that builds it (``Paper.references``)
 References = Mapping[str, Callable[[], Any]]
+
+
+# the names of the builders a ledger row may cite (``reference = "…"``)
+BUILDER_PREFIXES = ("reference_", "numbers_")
+
+
+def builders(*modules: ModuleType) -> dict[str, Callable[[], Any]]:
+    """A paper's table of references: every public function a module defines whose name
+    starts with ``reference_`` or ``numbers_``, by that name, in the modules' order; a name
+    two modules define is refused (a later builder would silently replace the first)."""
+    table: dict[str, Callable[[], Any]] = {}
+    for module in modules:
+        for name, value in vars(module).items():
+            mine = getattr(value, "__module__", None) == module.__name__
+            if not (name.startswith(BUILDER_PREFIXES) and callable(value) and mine):
+                continue
+            if name in table:
+                raise ValueError(f"two references named {name!r}: {module.__name__} and another")
+            table[name] = value
+    return table
 
 
 def reference_table(paper: Paper) -> References:
@@ -69,7 +92,9 @@ def conditional(
     symbols = ledger.symbols_for(row)
 
     def compute() -> tuple[str | None, str]:
-        return printed_status(row, symbols, _built(fresh, paper.key, row.reference or ""))
+        built = _built(fresh, paper.key, row.reference or "")
+        cases = _case_builders(row, references)
+        return printed_status(row, symbols, _with_row_parameters(row, built, cases))
 
     return row_conditional(paper.key, row, ledger.assumptions, compute)
 
@@ -112,12 +137,48 @@ def row_printed_status(
     if builder is None:
         raise PendcliError(f"{row.id}: the {row.paper} references have no {row.reference!r}")
     # keyed on what a reference may read: the published numbers and the ledgers
-    return _printed_status(row, tuple(sorted(symbols.items())), builder, _read_by_references())
+    key = _read_by_references()
+    cases = _case_builders(row, references)
+    return _printed_status(row, tuple(sorted(symbols.items())), builder, key, cases)
+
+
+def _case_builders(row: LedgerRow, references: References) -> tuple[Callable[[], Any], ...]:
+    """The builders of the references the row's ``cases`` key names, in order."""
+    names = dict(row.parameters).get("cases", ())
+    missing = [n for n in names if n not in references]
+    if missing:
+        raise PendcliError(f"{row.id}: the {row.paper} references have no {missing[0]!r}")
+    return tuple(references[n] for n in names)
+
+
+def _with_row_parameters(
+    row: LedgerRow, reference: Any, case_builders: tuple[Callable[[], Any], ...]
+) -> Any:
+    """The reference with the row's kind parameters (core/check_kinds) in place of its own,
+    its ``cases`` built (each once per tables folder)."""
+    from pendcli.core.check_kinds import with_parameters
+
+    if not row.parameters:
+        return reference
+    names = dict(row.parameters).get("cases", ())
+    key = _read_by_references()
+    cases = tuple(
+        _reference(b, row.paper, n, key) for b, n in zip(case_builders, names, strict=True)
+    )
+    try:
+        return with_parameters(reference, row.parameters, cases)
+    except ValueError as exc:  # a combination of parameters that makes no kind of check
+        why = f"{row.id}: reference {row.reference!r} with the row's keys: {exc}"
+        raise PendcliError(why) from None
 
 
 @cache
 def _printed_status(
-    row: LedgerRow, symbols: tuple[tuple[str, str], ...], builder: Callable[[], Any], tables: str
+    row: LedgerRow,
+    symbols: tuple[tuple[str, str], ...],
+    builder: Callable[[], Any],
+    tables: str,
+    case_builders: tuple[Callable[[], Any], ...],
 ) -> tuple[str | None, str]:
     from pendcli.core.check_kinds import kind_mismatch, kind_problem
     from pendcli.core.printed_verdict import stored_status
@@ -127,7 +188,8 @@ def _printed_status(
     if stored is not None:  # derived by `make regen` from these very tables
         kind, forms = stored
         return (None, kind_mismatch(row.kind, kind)) if kind != row.kind else stored_status(forms)
-    reference = _reference(builder, row.paper, row.reference, tables)
+    built = _reference(builder, row.paper, row.reference, tables)
+    reference = _with_row_parameters(row, built, case_builders)
     formula = row_formula(f"{row.id}: printed", row.printed or "", dict(symbols))
     wrong_kind = kind_problem(row.kind, formula, reference)
     if wrong_kind:
@@ -149,7 +211,8 @@ def row_derivation(
     if row.reference is None or row.reference not in references:
         return None
     name = row.reference
-    reference = _reference(references[name], row.paper, name, _read_by_references())
+    built = _reference(references[name], row.paper, name, _read_by_references())
+    reference = _with_row_parameters(row, built, _case_builders(row, references))
     inputs = row_inputs(row, symbols)
     if isinstance(reference, Numbers):
         return {"inputs": inputs, "reference": name, "live": "printed numbers"}
@@ -281,6 +344,20 @@ def cited_references(paper: Paper, root: Path | None = None) -> dict[str, Refere
         raise PendcliError(f"the {paper.key} references have no {', '.join(map(repr, missing))}")
     key = _read_by_references()
     return {n: _reference(table[n], paper.key, n, key) for n in names}
+
+
+def cited_reference(paper: Paper, name: str, row_id: str | None = None) -> Any:
+    """The reference ``name`` as the ledger judges a row against it: built, with the kind
+    parameters of the row ``row_id`` (by default the first row citing it) in place."""
+    from pendcli.core.ledger import load_ledger
+
+    table = reference_table(paper)
+    rows = [r for r in load_ledger(paper.key).rows if r.reference == name]
+    row = next((r for r in rows if row_id in (None, r.id)), None)
+    if name not in table or row is None:
+        raise PendcliError(f"the {paper.key} ledger cites no reference {name!r} in {row_id}")
+    built = _reference(table[name], paper.key, name, _read_by_references())
+    return _with_row_parameters(row, built, _case_builders(row, table))
 
 
 # tables folder -> the digest of what a reference may read in it

@@ -49,8 +49,12 @@ __all__ = ["Reference", "derive", "derive_formula", "formula_passes", "is_relati
 @dataclass(frozen=True)
 class Reference:
     """Symbol name -> exact sympy expression (a declared function's name -> a callable of its
-    arguments, e.g. a ``sympy.Lambda``); ``scale``/``order``: compare a truncated series
-    (the residual's series in ``scale`` must vanish through ``scale**(order - 1)``);
+    arguments, e.g. a ``sympy.Lambda``). A paper's builder gives the model (``exact``,
+    ``rates``, ``transform``, ``reading``, computed ``each_case`` or ``conditions``); the
+    kind's parameters below are the ledger row's keys, put in by
+    :func:`pendcli.core.check_kinds.with_parameters`. ``scale``/``order``: compare a
+    truncated series (the residual's series in ``scale`` must vanish through
+    ``scale**(order - 1)``);
     ``domain``: symbol name -> (low, high) for the random points (default (1/10, 1/2));
     ``orders``: left-side symbol name -> the order its equation is compared through;
     ``reading``: the reference the reading is judged against, when the slip is the text's

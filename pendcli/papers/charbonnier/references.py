@@ -20,98 +20,11 @@ Each maps ledger symbols to exact expressions obtained without the formula the r
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from pendcli.core.ledger_references import builders
+from pendcli.papers.charbonnier import references_general as general
+from pendcli.papers.charbonnier import references_monomial as monomial
+from pendcli.papers.charbonnier import references_points as points
+from pendcli.papers.charbonnier import references_resisting as resisting
 
-from pendcli.papers.charbonnier.references_general import (
-    reference_angle_integrals,
-    reference_arc_acceleration,
-    reference_differentiated,
-    reference_expansion,
-    reference_first_order,
-    reference_linear_perturbation,
-    reference_linearised,
-    reference_moments,
-    reference_newton,
-    reference_principal_motion,
-    reference_principal_turn,
-    reference_taylor,
-    reference_theta1_equation,
-    reference_variation,
-)
-from pendcli.papers.charbonnier.references_monomial import (
-    reference_constant_resistance,
-    reference_corrections_add,
-    reference_friction,
-    reference_friction_in_g_and_t,
-    reference_in,
-    reference_in_pi,
-    reference_monomial,
-    reference_monomial_acceleration,
-    reference_monomial_decay,
-    reference_monomial_parity,
-    reference_monomial_points,
-)
-from pendcli.papers.charbonnier.references_points import (
-    reference_amplitude_unchanged,
-    reference_lowest_point,
-    reference_period_unchanged,
-    reference_remarkable_points,
-    reference_sine_inverted,
-    reference_turning_point,
-)
-from pendcli.papers.charbonnier.references_resisting import (
-    reference_air,
-    reference_air_first_oscillation,
-    reference_air_points,
-    reference_resistance_sense,
-)
-
-if TYPE_CHECKING:
-    from collections.abc import Callable
-
-__all__ = ["REFERENCES"]
-
-# Every reference the ledger cites, by its name there, in the order of the paper's lines.
-REFERENCES: dict[str, Callable[[], Any]] = {
-    # part I, n° 2-3: the pendulum and its principal motion
-    "reference_moments": reference_moments,
-    "reference_newton": reference_newton,
-    "reference_linearised": reference_linearised,
-    "reference_principal_motion": reference_principal_motion,
-    "reference_principal_turn": reference_principal_turn,
-    # n° 4-7: the expansion in ε and the equation of θ1
-    "reference_arc_acceleration": reference_arc_acceleration,
-    "reference_expansion": reference_expansion,
-    "reference_taylor": reference_taylor,
-    "reference_theta1_equation": reference_theta1_equation,
-    "reference_differentiated": reference_differentiated,
-    "reference_variation": reference_variation,
-    # n° 7-8: θ1 and the general formulas (4), (5)
-    "reference_first_order": reference_first_order,
-    "reference_linear_perturbation": reference_linear_perturbation,
-    "reference_angle_integrals": reference_angle_integrals,
-    # n° 9: the remarkable points, (6)-(9)
-    "reference_turning_point": reference_turning_point,
-    "reference_sine_inverted": reference_sine_inverted,
-    "reference_remarkable_points": reference_remarkable_points,
-    "reference_period_unchanged": reference_period_unchanged,
-    "reference_amplitude_unchanged": reference_amplitude_unchanged,
-    "reference_lowest_point": reference_lowest_point,
-    # part II, n° 11-13: the resistance of the air
-    "reference_resistance_sense": reference_resistance_sense,
-    "reference_air": reference_air,
-    "reference_air_first_oscillation": reference_air_first_oscillation,
-    "reference_air_points": reference_air_points,
-    "reference_constant_resistance": reference_constant_resistance,
-    # part III, n° 14-17: the monomial resistance and I_n
-    "reference_monomial_acceleration": reference_monomial_acceleration,
-    "reference_corrections_add": reference_corrections_add,
-    "reference_monomial": reference_monomial,
-    "reference_monomial_points": reference_monomial_points,
-    "reference_in": reference_in,
-    "reference_in_pi": reference_in_pi,
-    "reference_friction_in_g_and_t": reference_friction_in_g_and_t,
-    "reference_friction": reference_friction,
-    "reference_monomial_decay": reference_monomial_decay,
-    "reference_monomial_parity": reference_monomial_parity,
-}
+# Every builder the ledger cites, by its name there (core/ledger_references.builders).
+REFERENCES = builders(general, points, resisting, monomial)

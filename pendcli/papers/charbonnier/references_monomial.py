@@ -7,30 +7,19 @@ F(v) = B_n vⁿ.
 quadrature, never from the recurrence or the products the paper prints. The printed I_n(π) in
 closed form (lines 486-489) use double factorials, ``factorial2(n)`` for 2·4…n or 1·3·5…n,
 under the names of their columns (``Ipi_even``, ``Ipi_odd``), each judged against an mpmath
-quadrature of I_n(π) at the integers of its parity. sympy is imported lazily.
+quadrature of I_n(π) at the integers of its parity.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+import mpmath
+import sympy as sp
+
 from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import ledger_symbols
 from pendcli.papers.charbonnier.references_resisting import resisted
-
-__all__ = [
-    "reference_constant_resistance",
-    "reference_corrections_add",
-    "reference_friction",
-    "reference_friction_in_g_and_t",
-    "reference_in",
-    "reference_in_pi",
-    "reference_monomial",
-    "reference_monomial_acceleration",
-    "reference_monomial_decay",
-    "reference_monomial_parity",
-    "reference_monomial_points",
-]
 
 # the integers at which each closed form of I_n(π) (lines 486-489) is judged
 EVEN = (0, 2, 4, 6, 8)
@@ -40,8 +29,6 @@ ODD = (1, 3, 5, 7, 9)
 def _monomial(phase: bool, power: Any = None) -> dict[str, Any]:
     """F(v) = B_n vⁿ, b_n = cB_n (n° 14), I_n its definition; n on the grid of halves
     floor(2n)/2, so that the powers of the random rationals stay short numbers."""
-    import sympy as sp
-
     c, n, big, k, l0 = ledger_symbols("c", "n", "B_n", "k", "l0")
     grid = sp.floor(2 * n) / 2
     v = sp.Symbol("v_", real=True)
@@ -54,27 +41,11 @@ def _monomial(phase: bool, power: Any = None) -> dict[str, Any]:
     return exact
 
 
-def _monomial_domain() -> dict[str, tuple[Any, Any]]:
-    """Values of order 1 (kαl0 near 1), so that B_n(kαl0)ⁿ is far above the tolerance."""
-    import sympy as sp
-
-    half, one, two = sp.Rational(1, 2), sp.Integer(1), sp.Integer(2)
-    return {
-        "n": (one, sp.Integer(4)),
-        "alpha": (half, one),
-        "l0": (one, two),
-        "k": (half, one),
-        "B_n": (half, one),
-        "c": (half, one),
-    }
-
-
 # n° 13, 1°, line 376: E_c(π) = 0 and ΔT = 0 for a constant resistance (n = 0 of n° 14)
 def reference_constant_resistance() -> Reference:
     """n° 13, 1°: ΔT and E_c(π) for a constant resistance F = B_0 (E of kt), through c."""
-    (c,) = ledger_symbols("c")
     exact = _monomial(phase=True, power=0)
-    return Reference(exact, scale=c, order=2, domain=_monomial_domain(), what="F = B_0")
+    return Reference(exact, what="F = B_0")
 
 
 # n° 14, line 421: b_n vⁿ named the acceleration of the resistance
@@ -90,40 +61,31 @@ def reference_monomial_acceleration() -> Reference:
 def reference_corrections_add() -> Reference:
     """n° 14: Δα of F = B_0 + B_1v + B_2v² and the Δα of each monomial apart (Delta_x_0,
     Delta_x_1, Delta_x_2), each from Duhamel's integral (E of kt), through c."""
-    import sympy as sp
-
-    c, b0, b1, b2 = ledger_symbols("c", "B_0", "B_1", "B_2")
+    b0, b1, b2 = ledger_symbols("B_0", "B_1", "B_2")
     v = sp.Symbol("v_", real=True)
     terms = (b0, b1 * sp.Abs(v), b2 * v**2)
     whole = resisted(sp.Lambda(v, sp.Add(*terms)), phase=True)["Delta_alpha"]
     exact = {"Delta_x": whole}
     for index, term in enumerate(terms):
         exact[f"Delta_x_{index}"] = resisted(sp.Lambda(v, term), phase=True)["Delta_alpha"]
-    half, one = sp.Rational(1, 2), sp.Integer(1)
-    domain = {**_monomial_domain(), "B_0": (half, one), "B_1": (half, one), "B_2": (half, one)}
-    return Reference(exact, scale=c, order=2, domain=domain, what="F = B_0 + B_1v + B_2v²")
+    return Reference(exact, what="F = B_0 + B_1v + B_2v²")
 
 
 # n° 15, 1°, lines 429-433 and 435 (E_c), 2°, lines 439-444 (E_s)
 def reference_monomial() -> Reference:
     """n° 15: E_s, E_c (of the time) for F(v) = B_n vⁿ."""
-    return Reference(_monomial(phase=False), domain=_monomial_domain(), what="F = B_n vⁿ")
+    return Reference(_monomial(phase=False), what="F = B_n vⁿ")
 
 
 # n° 15, 1°, line 437 (E_c(π) = 0); n° 16, lines 502-510 (Δα); n° 17, lines 530-534
 # (ΔT_½, Δv_m)
 def reference_monomial_points() -> Reference:
     """n° 16-17: Δα, ΔT_½, Δv_m for F(v) = B_n vⁿ (E of kt), through c."""
-
-    (c,) = ledger_symbols("c")
-    exact, domain = _monomial(phase=True), _monomial_domain()
-    return Reference(exact, scale=c, order=2, domain=domain, what="F = B_n vⁿ")
+    return Reference(_monomial(phase=True), what="F = B_n vⁿ")
 
 
 def _in_definition() -> Any:
     """I_n(x) = ∫₀^x sin^{n+1} y dy, x in [0, π] (|sin|: the nodes may round past π)."""
-    import sympy as sp
-
     y = sp.Symbol("y_", real=True)
     m, x = sp.symbols("m_ x_", real=True)
     return sp.Lambda((m, x), sp.Integral(sp.Abs(sp.sin(y)) ** (m + 1), (y, 0, x)))
@@ -133,19 +95,14 @@ def _in_definition() -> Any:
 # I_(-1), 463-469; I_0(π) = 2, I_(-1)(π) = π and −cos π sinⁿπ = 0, 480-482
 def reference_in() -> Reference:
     """n° 15: I_n = ∫₀^x sin^{n+1} x dx, its definition (quadrature)."""
-    import sympy as sp
-
     exact = {"I": _in_definition()}
-    return Reference(exact, domain={"n": (sp.Integer(2), sp.Integer(5))}, what="I_n's definition")
+    return Reference(exact, what="I_n's definition")
 
 
 # n° 15, 2°, lines 486-489: I_n(π) in closed form, n even and n odd
 def reference_in_pi() -> Reference:
     """I_n(π) at the even and odd n, for the two columns of lines 486-489: the residual's
     squares summed over the integers of the column's parity (0 only if each one is)."""
-    import mpmath
-    import sympy as sp
-
     n = sp.Symbol("n", real=True)
     columns = {sp.Symbol("Ipi_even", real=True): EVEN, sp.Symbol("Ipi_odd", real=True): ODD}
 
@@ -170,19 +127,11 @@ def reference_in_pi() -> Reference:
 def reference_friction_in_g_and_t() -> Reference:
     """n° 16, 1°: Δα for n = 0 (F = B_0) written in g and T (k = π/T, l0 = gT²/π²), so that
     its derivatives in α and in T say whether it depends on them; through c."""
-    import sympy as sp
-
-    c, k, l0, g, big_t = ledger_symbols("c", "k", "l0", "g", "T")
+    k, l0, g, big_t = ledger_symbols("k", "l0", "g", "T")
     exact = _monomial(phase=True, power=0)
     in_g_t = {k: sp.pi / big_t, l0: g * big_t**2 / sp.pi**2}
     shift = exact["Delta_alpha"].subs(in_g_t, simultaneous=True)
-    return Reference(
-        {"Delta_x": shift},
-        scale=c,
-        order=2,
-        domain={"c": (sp.Rational(1, 2), sp.Integer(1))},
-        what="Δα of F = B_0 in g and T",
-    )
+    return Reference({"Delta_x": shift}, what="Δα of F = B_0 in g and T")
 
 
 # n° 16, 1°, lines 512-518: the count P of simple oscillations until rest (n = 0)
@@ -190,30 +139,14 @@ def reference_friction() -> Reference:
     """n° 16: n = 0, F = B_0: the count P = α/|Δα| of simple oscillations until rest."""
     exact = _monomial(phase=True, power=0)
     exact["P"] = ledger_symbols("alpha")[0] / (-exact["Delta_alpha"])
-    return Reference(
-        exact,
-        domain=_monomial_domain(),
-        what="α over the loss of amplitude per oscillation, F = B_0",
-    )
-
-
-# n° 16, 1°, line 520: for n ≥ 1 no amplitude reaches 0
-def reference_monomial_decay() -> Reference:
-    """n° 16, 1°: Δα of F = B_n vⁿ for n in [1, 4) with c small (c < 1/10), so that one simple
-    oscillation keeps a positive fraction of the amplitude; through c."""
-    import sympy as sp
-
-    base = reference_monomial_points()
-    domain = {**base.domain, "c": (sp.Rational(1, 100), sp.Rational(1, 20))}
-    return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
+    return Reference(exact, what="α over the loss of amplitude per oscillation, F = B_0")
 
 
 def _monomial_case(power: Any) -> Reference:
     """Δα of F(v) = B_n vⁿ for the exponent ``power`` (n itself set to it), through c."""
-    (c,) = ledger_symbols("c")
     exact = _monomial(phase=True, power=power)
     exact["n"] = power
-    return Reference(exact, scale=c, order=2, domain=_monomial_domain(), what="F = B_n vⁿ")
+    return Reference(exact, what="F = B_n vⁿ")
 
 
 # n° 16, 2°, lines 522-526: Δα with I_n(π) in closed form, n even and n odd
@@ -221,15 +154,6 @@ def reference_monomial_parity() -> Reference:
     """n° 16, 2°: the first formula (« pour n pair ») against Δα of F = B_n vⁿ for n = 0, 2, 4,
     the second (« pour n impair ») for n = 1, 3, 5 (2·floor(n) − 2 and 2·floor(n) − 1 at the
     random n in [1, 4)); Δα from Duhamel's integral, never from I_n(π)."""
-    import sympy as sp
-
     (n,) = ledger_symbols("n")
     even, odd = _monomial_case(2 * sp.floor(n) - 2), _monomial_case(2 * sp.floor(n) - 1)
-    return Reference(
-        odd.exact,
-        scale=odd.scale,
-        order=odd.order,
-        domain=odd.domain,
-        what="F = B_n vⁿ, n even then n odd",
-        cases=(even, odd),
-    )
+    return Reference(odd.exact, what="F = B_n vⁿ, n even then n odd", cases=(even, odd))

@@ -4,12 +4,14 @@ of θ = θ0 + εθ1 and the formulas (6)-(9).
 
 The remarkable points are found from θ = θ0 + εθ1 by one Newton step in ε (never from the
 paper's E integrals), θ1 that of the family of :func:`.references_general.exponential_family`
-or, for n° 13, of a resistance (:func:`first_order_points`). sympy is imported lazily.
+or, for n° 13, of a resistance (:func:`first_order_points`).
 """
 
 from __future__ import annotations
 
 from typing import Any
+
+import sympy as sp
 
 from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import (
@@ -19,22 +21,10 @@ from pendcli.papers.charbonnier.references_general import (
     principal_motion,
 )
 
-__all__ = [
-    "first_order_points",
-    "reference_amplitude_unchanged",
-    "reference_lowest_point",
-    "reference_period_unchanged",
-    "reference_remarkable_points",
-    "reference_sine_inverted",
-    "reference_turning_point",
-]
-
 
 def first_order_points(theta1: Any, speed1: Any) -> dict[str, Any]:
     """The turning time t* = π/k + ετ1 (θ' = 0), the lowest point t0 = π/(2k) + εσ1 (θ = 0),
     the amplitude θ(t*) and the speed θ'(t0), to first order in ε, for a given θ1, θ1'."""
-    import sympy as sp
-
     t, k, alpha, eps = ledger_symbols("t", "k", "alpha", "epsilon")
     theta0, speed0 = principal_motion()
     turn, low = sp.pi / k, sp.pi / (2 * k)
@@ -56,8 +46,6 @@ def first_order_points(theta1: Any, speed1: Any) -> dict[str, Any]:
 
 def _phase(function: Any) -> Any:
     """E of the time -> E of kt, as (6)-(9) write E_c(π), E_c(π/2)."""
-    import sympy as sp
-
     (k,) = ledger_symbols("k")
     u = sp.Symbol("u", real=True)
     return sp.Lambda(u, function(u / k))
@@ -74,35 +62,29 @@ def _family_points() -> dict[str, Any]:
 # amplitude θ_m)
 def reference_turning_point() -> Reference:
     """n° 9, 1°-2°: t is the turning time t* (θ' = 0 near kt = π), through ε."""
-    (eps,) = ledger_symbols("epsilon")
     exact = _family_points()
     exact["t"] = exact["turning"]
-    return Reference(exact, scale=eps, order=2, what="the turning time of θ0 + εθ1")
+    return Reference(exact, what="the turning time of θ0 + εθ1")
 
 
 # n° 9, 1°, lines 237-241: kt from sin kt = −εE_c(π)/(kα), inverted
 def reference_sine_inverted() -> Reference:
     """n° 9, 1°: kt from sin kt = −εE_c(π)/(kα) inverted exactly (kt near π), through ε²."""
-    import sympy as sp
-
     k, alpha, eps = ledger_symbols("k", "alpha", "epsilon")
     exact = _family_points()
     exact["t"] = (sp.pi + sp.asin(eps / (k * alpha) * exact["E_c"](sp.pi))) / k
-    return Reference(exact, scale=eps, order=3, what="the sine relation inverted, through ε²")
+    return Reference(exact, what="the sine relation inverted, through ε²")
 
 
 # (6) line 247, (7) line 265, (8) line 283, (9) line 287: ΔT, Δα, ΔT_½, Δθ'_m
 def reference_remarkable_points() -> Reference:
     """n° 9: ΔT, θ_m, Δα, ΔT_½, Δθ'_m from θ = θ0 + εθ1, compared through ε."""
-    (eps,) = ledger_symbols("epsilon")
     exact = {k: v for k, v in _family_points().items() if k not in ("turning", "lowest")}
-    return Reference(exact, scale=eps, order=2, what="θ0 + εθ1 at its turning and lowest points")
+    return Reference(exact, what="θ0 + εθ1 at its turning and lowest points")
 
 
 def _family_constrained(key: str) -> dict[str, Any]:
     """The φ of the family for which the first-order ``key`` (ΔT or Δα) vanishes: p3 solved."""
-    import sympy as sp
-
     (eps,) = ledger_symbols("epsilon")
     p3 = free_parameters(4)[3]
     exact = _family_points()
@@ -132,7 +114,6 @@ def reference_amplitude_unchanged() -> Reference:
 # n° 9, 3°, lines 271-279: the time of the lowest point
 def reference_lowest_point() -> Reference:
     """n° 9, 3°: t is the time of the lowest point (θ = 0 near kt = π/2), through ε."""
-    (eps,) = ledger_symbols("epsilon")
     exact = _family_points()
     exact["t"] = exact["lowest"]
-    return Reference(exact, scale=eps, order=2, what="the lowest point of θ0 + εθ1")
+    return Reference(exact, what="the lowest point of θ0 + εθ1")

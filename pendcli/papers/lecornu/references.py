@@ -1,7 +1,7 @@
 """Lecornu's references by name: what each ledger row's printed form is judged against.
 
-One module per section of the memoir builds them and keeps its own table; this one gathers
-the tables in the order of the text. No name is given by two sections
+One module per section of the memoir builds them; this one gathers their public
+reference_* and numbers_* functions in the order of the text. No name is given by two sections
 (tests/test_layout.py): a later table would silently replace an earlier builder.
 
 * § I, the equation of motion (and the shortening pendulum, lines 690-698): references_motion
@@ -20,39 +20,16 @@ the tables in the order of the text. No name is given by two sections
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
+from importlib import import_module
 
-from pendcli.papers.lecornu import (
-    references_asymptotic,
-    references_conical,
-    references_conical_planes,
-    references_finite,
-    references_general,
-    references_integral,
-    references_motion,
-    references_numeric,
-    references_perturbed,
-    references_prose,
-    references_slow,
-    references_small,
+from pendcli.core.ledger_references import builders
+
+# the sections' modules (references_<name>.py), in the order of the text
+_NAMES = "motion small numeric general integral asymptotic slow finite perturbed conical"
+SECTIONS = tuple(
+    import_module(f"pendcli.papers.lecornu.references_{name}")
+    for name in (*_NAMES.split(), "conical_planes", "prose")
 )
 
-SECTIONS = (
-    references_motion,
-    references_small,
-    references_numeric,
-    references_general,
-    references_integral,
-    references_asymptotic,
-    references_slow,
-    references_finite,
-    references_perturbed,
-    references_conical,
-    references_conical_planes,
-    references_prose,
-)
-
-REFERENCES: dict[str, Callable[[], Any]] = {
-    name: builder for section in SECTIONS for name, builder in section.REFERENCES.items()
-}
+# every builder the sections define, by its name (core/ledger_references.builders)
+REFERENCES = builders(*SECTIONS)

@@ -11,13 +11,12 @@ integrals judged by its derivative in a limit; never a copy of the formula the r
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from pendcli.papers.lecornu.references_tools import cited, make_reference, real_symbols
+import sympy as sp
 
-__all__ = ["REFERENCES"]
+from pendcli.papers.lecornu.references_tools import cited, make_reference, real_symbols
 
 
 def _upper_limit_derivative(name: str, lower: Any) -> Any:
@@ -25,8 +24,6 @@ def _upper_limit_derivative(name: str, lower: Any) -> Any:
     upper limit h = ``name``): its h-derivative plus κ times its value at h = lower (κ a
     fresh symbol the random points sample): both vanish if and only if the identity holds,
     and neither needs an integral done."""
-    import sympy as sp
-
     h = sp.Symbol(name, real=True)
     kappa = sp.Symbol("kappa_aux", real=True)
 
@@ -46,16 +43,12 @@ def reference_tail_expansion() -> Any:
     aa here), judged by their a-derivative (the integrands at λ = a; both sides vanish as
     a → ∞); the root's series in 1/a with a√x, the weight's argument, held fixed:
     a = 1/ε, x -> ε²x, through ε⁶."""
-    import sympy as sp
-
     aa, x = real_symbols("aa", "x")
     eps = sp.Symbol("eps_", positive=True)
     return make_reference(
         {"aa": 1 / eps, "x": eps**2 * x},
         "the a-derivative, a = 1/ε, a√x fixed",
         transform=lambda residual: residual.diff(aa),
-        scale=eps,
-        order=7,
     )
 
 
@@ -64,16 +57,12 @@ def reference_small_p_series() -> Any:
     """Line 440: an identity between integrals ∫_(2a√x)^h, judged by its h-derivative (the
     integrands at p = h) and its value at h = 2a√x; the exponential's series is truncated
     as printed, so h is scaled by ε (through ε: the terms 1/p, 1, p of the integrands)."""
-    import sympy as sp
-
     aa, hh, x = real_symbols("aa", "hh", "x")
     eps = sp.Symbol("eps_", positive=True)
     return make_reference(
         {"hh": eps * hh},
         "the h-derivative and the value at h = 2a√x, h -> εh",
         transform=_upper_limit_derivative("hh", 2 * aa * sp.sqrt(x)),
-        scale=eps,
-        order=2,
     )
 
 
@@ -84,8 +73,6 @@ def reference_small_x() -> Any:
     vanish with x), θ = u/l with C = (b²/g)k (line 406); x and l scaled by ε. Each residual
     must stay finite as ε -> 0+: the parts that grow as x -> 0 (1/x, log x) must agree, a
     finite remainder (the text's « nombre fini », F) is free."""
-    import sympy as sp
-
     x, length, alpha, big_c, k, b, g = real_symbols("x", "l", "alpha", "C", "k", "b", "g")
     eps = sp.Symbol("eps_", positive=True)
 
@@ -101,10 +88,7 @@ def reference_small_x() -> Any:
     small = eps * x
     exact = {"x": small, "u": big_c * small * ratio(small), "l": eps * length}
     exact["theta"] = k * ratio(g * eps * length / b**2)
-    domain = {"alpha": (sp.Rational(3, 10), sp.Rational(12, 10))}
-    return make_reference(
-        exact, "the second (18) in closed form, x -> εx", scale=eps, domain=domain, bounded=True
-    )
+    return make_reference(exact, "the second (18) in closed form, x -> εx")
 
 
 @cache
@@ -112,8 +96,6 @@ def reference_quarter_power() -> Any:
     """Lines 466-499: v = x^p cos 2√x, w = x^p sin 2√x (lines 470, 490), u = Av + Bw ((20),
     « la fonction u, définie par l'équation (20) »), their derivatives by sympy, and p = 1/4,
     the exponent the text fixes at line 468 before it differentiates."""
-    import sympy as sp
-
     x, big_a, big_b = real_symbols("x", "A", "B")
     quarter = sp.Rational(1, 4)
     v = x**quarter * sp.cos(2 * sp.sqrt(x))
@@ -126,8 +108,6 @@ def reference_quarter_power() -> Any:
 
 def _twenty(x: Any) -> Any:
     """(20): u = A x^(1/4) cos 2√x + B x^(1/4) sin 2√x (p = 1/4, line 468)."""
-    import sympy as sp
-
     big_a, big_b = real_symbols("A", "B")
     root = 2 * sp.sqrt(x)
     return x ** sp.Rational(1, 4) * (big_a * sp.cos(root) + big_b * sp.sin(root))
@@ -145,8 +125,6 @@ def reference_eq21_from_20() -> Any:
 def _twenty_two_constants() -> dict[str, Any]:
     """A, B of (20)-(21) through the « deux nouvelles constantes » R, φ of (22):
     A cos X + B sin X = (b²/g)^(1/4) R sin(X − φ) for every X."""
-    import sympy as sp
-
     b, g, big_r, phi = real_symbols("b", "g", "R", "phi")
     big_a, big_b = real_symbols("A", "B")
     scale = (b**2 / g) ** sp.Rational(1, 4) * big_r
@@ -165,8 +143,6 @@ def reference_eq22_from_21() -> Any:
 
 def _phase_at(length: Any, zero: Any) -> Any:
     """φ for which (22)'s sine argument (2/b)√(gl) − φ equals ``zero`` at ``length``."""
-    import sympy as sp
-
     b, g = real_symbols("b", "g")
     return 2 / b * sp.sqrt(g * length) - zero
 
@@ -174,8 +150,6 @@ def _phase_at(length: Any, zero: Any) -> Any:
 @cache
 def reference_vertical_passages() -> Any:
     """(23): θ of (22) vanishes where its sine's argument is a multiple λπ of π."""
-    import sympy as sp
-
     length, lam = real_symbols("l", "lam")
     return make_reference({"phi": _phase_at(length, lam * sp.pi)}, "(22) = 0 at l: argument λπ")
 
@@ -185,27 +159,18 @@ def reference_next_passage() -> Any:
     """Lines 519-527: the first passage at l, its argument λπ (λ = m, line 519), l' the
     length of the next ((22) = 0 with argument (λ + 1)π); b scaled by ε (π²b²/(4gl)
     neglected), through ε."""
-    import sympy as sp
-
     length, b, g, lam = real_symbols("l", "b", "g", "lam")
     eps = sp.Symbol("eps_", positive=True)
     phi = _phase_at(length, lam * sp.pi)
     following = b**2 / (4 * g) * (phi + (lam + 1) * sp.pi) ** 2  # (22)'s argument (λ + 1)π
     exact = {"lp": following.subs(b, eps * b), "b": eps * b, "mm": lam}
     exact["phi"] = phi.subs(b, eps * b)
-    return make_reference(
-        exact,
-        "(22) = 0 at l and l', b -> εb",
-        scale=eps,
-        order=2,
-    )
+    return make_reference(exact, "(22) = 0 at l and l', b -> εb")
 
 
 def _elongation_tangent(length: Any) -> Any:
     """tg of (22)'s argument X at an elongation: dθ/dl = R l^(-3/4)(X' cos X − 3 sin X/(4l))
     vanishes (sympy's derivative of (22), its cos X and sin X coefficients)."""
-    import sympy as sp
-
     big_r, phi = real_symbols("R", "phi")
     arc = sp.Symbol("X_aux", real=True)
     ell = sp.Symbol("l_aux", positive=True)
@@ -219,8 +184,6 @@ def _elongation_tangent(length: Any) -> Any:
 @cache
 def reference_elongation_condition() -> Any:
     """Line 535: the φ for which l is an elongation of (22): X = arctg of the tangent found."""
-    import sympy as sp
-
     (length,) = real_symbols("l")
     phi = _phase_at(length, sp.atan(_elongation_tangent(length)))
     return make_reference({"phi": phi}, "dθ/dl = 0 for θ of (22)")
@@ -230,36 +193,18 @@ def reference_elongation_condition() -> Any:
 def reference_elongation_arc() -> Any:
     """(24): the same arc written (2λ + 1)π/2 − arctg(1/tangent) (λ an integer), b scaled
     by ε (b/√(gl) small), through ε²."""
-    import sympy as sp
-
     length, lam, b = real_symbols("l", "lam", "b")
     eps = sp.Symbol("eps_", positive=True)
     arc = (2 * lam + 1) * sp.pi / 2 - sp.atan(1 / _elongation_tangent(length))
     phi = _phase_at(length, arc).subs(b, eps * b)
-    return make_reference({"phi": phi, "b": eps * b}, "dθ/dl = 0, b -> εb", scale=eps, order=3)
+    return make_reference({"phi": phi, "b": eps * b}, "dθ/dl = 0, b -> εb")
 
 
 @cache
-def reference_vertical_to_elongation() -> Any:
-    """Lines 559-563: (l'' − l)/b, the time from the vertical at l to the next elongation
-    l'' ((23), (24) solved for l'', as for line 555), through b; the printed decimal 0,13
-    a rounding."""
-    quarter = cited("reference_quarter_time")
-    return make_reference(
-        dict(quarter.exact),
-        "(23), (24) solved for l'', decimals rounded",
-        scale=quarter.scale,
-        order=quarter.order,
-        rounded=True,
-    )
-
-
 def _zero_start_forced(rhs: Any, tau: Any, degree: int) -> Any:
     """The solution of y'' + y = rhs(τ) with y(0) = y'(0) = 0, rhs a polynomial in τ times
     cos τ and sin τ: undetermined coefficients (polynomials of ``degree``), solved by
     sympy's linear solver."""
-    import sympy as sp
-
     a = sp.symbols(f"a0:{degree + 1}")
     c = sp.symbols(f"c0:{degree + 1}")
     trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau)
@@ -277,8 +222,6 @@ def reference_variation_of_constants() -> Any:
     """Lines 624-634: u0 the general solution A sin γt + B cos γt of u0'' + γ²u0 = 0, and
     u1, u2 the solutions of u_n'' + γ²u_n = −γt u_(n−1)'' that start at 0 with zero slope
     (line 628), by undetermined coefficients."""
-    import sympy as sp
-
     t, gamma, big_a, big_b = real_symbols("t", "gamma", "A", "B")
     tau = sp.Symbol("tau_aux", real=True)  # γt: the hierarchy is then free of γ
     parts = [big_a * sp.sin(tau) + big_b * sp.cos(tau)]
@@ -298,28 +241,4 @@ def reference_mean_pendulum() -> Any:
     (a,) = real_symbols("a")
     exact = dict(root.exact)
     exact["l"] = a + exact["b"] * exact["t"] / 2
-    return make_reference(
-        exact,
-        "the root of (27)'s solution, l = a + bt/2",
-        scale=root.scale,
-        order=root.order,
-        rounded=True,
-    )
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_tail_expansion": reference_tail_expansion,  # lines 426-428
-    "reference_small_p_series": reference_small_p_series,  # line 440
-    "reference_small_x": reference_small_x,  # lines 448-460
-    "reference_quarter_power": reference_quarter_power,  # lines 466-499
-    "reference_eq21_from_20": reference_eq21_from_20,  # (21)
-    "reference_eq22_from_21": reference_eq22_from_21,  # (22)
-    "reference_vertical_passages": reference_vertical_passages,  # (23)
-    "reference_next_passage": reference_next_passage,  # lines 519-527
-    "reference_elongation_condition": reference_elongation_condition,  # line 535
-    "reference_elongation_arc": reference_elongation_arc,  # (24)
-    "reference_vertical_to_elongation": reference_vertical_to_elongation,  # lines 559-563
-    "reference_variation_of_constants": reference_variation_of_constants,  # lines 624-634
-    "reference_mean_pendulum": reference_mean_pendulum,  # lines 666-676
-}
+    return make_reference(exact, "the root of (27)'s solution, l = a + bt/2")

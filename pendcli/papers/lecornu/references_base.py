@@ -5,14 +5,18 @@ references_integral, references_slow); here: sympy symbols named as the ledger's
 and the second solution of (9), √x Z₁(2√x) (Z₁ = J₁ or Y₁), and the roots of the bob's path
 and of φ (a scan, refined by mpmath at 40 digits).
 
-sympy, mpmath and scipy are imported inside the functions (start-up stays fast).
+scipy is imported inside the functions; sympy at the top (the table is read only to judge).
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+import mpmath
+import sympy as sp
+
 from pendcli.core.printed import ledger_symbols as symbols
+from pendcli.core.printed_check import Reference
 
 __all__ = [
     "cylinder",
@@ -28,30 +32,22 @@ __all__ = [
 
 def reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:
     """The engine's Reference: ``exact`` values of ledger symbols, ``what`` they come from."""
-    from pendcli.core.printed_check import Reference
-
     return Reference(exact, what=what, **kw)
 
 
 def phi_of(x: Any, kind: str = "j") -> Any:
     """√x Z₁(2√x): Z₁ = J₁ (φ, (10)) or Y₁ (the second solution of (9))."""
-    import sympy as sp
-
     bessel = sp.besselj if kind == "j" else sp.bessely
     return sp.sqrt(x) * bessel(1, 2 * sp.sqrt(x))
 
 
 def mpmath_str(value: Any) -> str:
     """An mpmath number written with 40 significant digits."""
-    import mpmath
-
     return mpmath.nstr(value, 40)
 
 
 def float40(value: Any) -> Any:
     """An mpmath number as a sympy Float of 40 digits (a root the references substitute)."""
-    import sympy as sp
-
     return sp.Float(mpmath_str(value), 40)
 
 
@@ -59,7 +55,6 @@ def scan_roots(f: Any, coarse: Any, low: float, high: float, steps: int) -> list
     """The roots of ``f`` (mpmath) in (low, high): a sign change of ``coarse`` (the same
     function in floats, numpy) on a grid of ``steps``, refined by a bracketing solver on
     ``f`` (mpmath, 40 digits)."""
-    import mpmath
     import numpy as np
 
     grid = np.linspace(low, high, steps + 1)
@@ -73,7 +68,6 @@ def scan_roots(f: Any, coarse: Any, low: float, high: float, steps: int) -> list
 def cylinder(kind: str) -> tuple[Any, Any]:
     """x -> √x Z₁(2√x) and its derivative Z₀(2√x) (Z = J, or J + Y: the path), in mpmath,
     and the pair in floats (scipy)."""
-    import mpmath
     from scipy.special import jv, yv
 
     def z(order: int, s: Any) -> Any:

@@ -10,18 +10,13 @@ of the formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from pendcli.papers.lecornu.references_tools import (
-    derivative_along,
-    make_reference,
-    real_symbols,
-)
+import mpmath
+import sympy as sp
 
-__all__ = ["REFERENCES"]
-
+from pendcli.papers.lecornu.references_tools import derivative_along, make_reference, real_symbols
 
 # --- § IV, the motion in rectangular and polar coordinates, (43)-(45) (lines 940-1016) ---
 
@@ -30,8 +25,6 @@ def _conical_state() -> dict[str, Any]:
     """The motion of lines 942-946 (x'' = −Tx/l, y'' = −Ty/l, z'' = −Tz/l + g) at a state
     (x, y, z, x', y', z'); r = √(x² + y²), its derivatives by the chain rule along the motion,
     c = x y' − y x' (the constant the area theorem names)."""
-    import sympy as sp
-
     x, y, z, dx, dy, _dz, tn, length, g = real_symbols(
         "X", "Y", "Z", "dX_dt", "dY_dt", "dZ_dt", "Tn", "l", "g"
     )
@@ -64,8 +57,6 @@ def reference_conical_cartesian() -> Any:
 def reference_conical_polar() -> Any:
     """r = l sin θ, z = l cos θ (lines 988-990) and their derivatives along t (l, θ varying);
     the printed d/dt(l² dθ/dt) by the chain rule."""
-    import sympy as sp
-
     length, theta, dl, dth, d2th = real_symbols("l", "theta", "dl_dt", "dtheta_dt", "d2theta_dt2")
     d2l = sp.Symbol("d2l_dt2", real=True)  # any l(t): the identity of line 992 needs no l'' = 0
     rates = {length: dl, theta: dth, dl: d2l, dth: d2th}
@@ -82,21 +73,16 @@ def reference_conical_polar() -> Any:
 def reference_eq43() -> Any:
     """(43) from lines 984-992: r z'' − z r'' − g r + c² z/r³ = 0 with r = l sin θ,
     z = l cos θ, solved for θ'' (l = a + bt, l'' = 0); the printed d/dt by the chain rule."""
-    import sympy as sp
-
     a, b, t, dth = real_symbols("a", "b", "t", "dtheta_dt")
     second = _eq43_second_derivative(a + b * t)
     rates = {"t": {"l": b, "theta": dth, "dtheta_dt": second}}
-    domain = {"theta": (sp.Rational(3, 10), sp.Rational(12, 10))}
-    return make_reference({"l": a + b * t}, "lines 984-992, l = a + bt", rates=rates, domain=domain)
+    return make_reference({"l": a + b * t}, "lines 984-992, l = a + bt", rates=rates)
 
 
 @cache
 def reference_area_theorem() -> Any:
     """(44) from the area theorem of line 954: c = x y' − y x' with x = r cos φ,
     y = r sin φ, r = l sin θ (l, θ, φ varying)."""
-    import sympy as sp
-
     length, theta, phi, dl, dth, dphi = real_symbols(
         "l", "theta", "phi", "dl_dt", "dtheta_dt", "dphi_dt"
     )
@@ -109,8 +95,6 @@ def reference_area_theorem() -> Any:
 def _eq43_second_derivative(length: Any) -> Any:
     """θ'' from (43) (the eliminated equation of line 984 in θ, reference_eq43) at a length
     ``length`` with l' = b, l'' = 0."""
-    import sympy as sp
-
     g, c, b = real_symbols("g", "c", "b")
     d2th = sp.Symbol("q", real=True)
     polar = reference_conical_polar().exact
@@ -127,20 +111,15 @@ def _eq43_second_derivative(length: Any) -> Any:
 def reference_conical_l_form() -> Any:
     """Lines 1002-1008: θ'' from (43) with l' = b (l kept), and the derivatives in l,
     dθ/dl = θ'/b, d²θ/dl² = θ''/b²."""
-    import sympy as sp
-
     length, b, dth = real_symbols("l", "b", "dtheta_dt")
     second = _eq43_second_derivative(length)
     exact = {"d2theta_dt2": second, "dtheta_dl": dth / b, "d2theta_dl2": second / b**2}
-    domain = {"theta": (sp.Rational(3, 10), sp.Rational(12, 10))}
-    return make_reference(exact, "(43), l = a + bt", domain=domain)
+    return make_reference(exact, "(43), l = a + bt")
 
 
 def _small_conical_u() -> Any:
     """(43) for small θ (sin θ -> θ, cos θ -> 1) with θ = u/l, d/dt = b d/dl, solved for
     d²u/dl²: a function of (u, l)."""
-    import sympy as sp
-
     length, b, g, c = real_symbols("l", "b", "g", "c")
     u = sp.Function("u")(length)
     theta = u / length
@@ -153,8 +132,6 @@ def _small_conical_u() -> Any:
 @cache
 def reference_conical_small() -> Any:
     """Lines 1010-1016: (43) for small angles with θ = u/l, x = gl/b², u = v√(bc/g)."""
-    import sympy as sp
-
     length, b, g, c, x, v = real_symbols("l", "b", "g", "c", "x", "v")
     scale = sp.sqrt(b * c / g)
     d2u_dx2 = (b**2 / g) ** 2 * _small_conical_u().subs(length, b**2 * x / g)
@@ -172,8 +149,6 @@ def reference_conical_small() -> Any:
 def reference_lambda_substitution() -> Any:
     """Lines 1018-1042: v = λω with ω a solution of (9) (ω'' = −ω/x) and v of (45):
     v', v'' by the product rule (sympy), λ'' from (45), A the value of the first integral."""
-    import sympy as sp
-
     x, lam, omega, dlam, domega = real_symbols("x", "lam", "omega", "dlam_dx", "domega_dx")
     q = sp.Symbol("q", real=True)  # λ''
     along = derivative_along({lam: dlam, omega: domega, dlam: q, domega: -omega / x})
@@ -194,8 +169,6 @@ def _conical_solution() -> dict[str, Any]:
     v' = 0.3), ω = √x J1(2√x) a solution of (9), λ = v/ω (line 1018), ∫dx/ω² from x = 2
     (quadrature), A the first integral (ω²λ')² + 1/λ² at x = 2 (line 1038) and B its second
     constant: √(Aλ² − 1)/A at x = 2 (line 1042 integrated from there)."""
-    import mpmath
-
     with mpmath.workdps(30):
         solution = mpmath.odefun(
             lambda x, s: [s[1], -s[0] / x + 1 / s[0] ** 3],
@@ -232,8 +205,6 @@ def reference_conical_solution() -> Any:
     digits): v, ω, λ, ∫dx/ω² as functions of x (sympy functions evaluated by mpmath), A and
     B from the state at x = 2; x drawn in (2, 3) (λ grows with ∫dx/ω² there: the branch of
     line 1042's square root)."""
-    import mpmath
-    import sympy as sp
     from sympy.utilities.lambdify import implemented_function
 
     (x,) = real_symbols("x")
@@ -252,16 +223,13 @@ def reference_conical_solution() -> Any:
     }
     exact["A45"] = sp.Float(mpmath.nstr(numeric["A"], 32), 30)
     exact["B45"] = sp.Float(mpmath.nstr(numeric["B"], 32), 30)
-    domain = {"x": (sp.Integer(2), sp.Integer(3))}
-    return make_reference(exact, "a solution of (45) by mpmath's ODE solver", domain=domain)
+    return make_reference(exact, "a solution of (45) by mpmath's ODE solver")
 
 
 @cache
 def reference_omega_pair() -> Any:
     """Lines 1054-1062: ω1 = ω/√A, ω2 = √A ω(∫dx/ω² + B) (written Iw for ∫dx/ω²), their
     x-derivatives by the chain rule with dIw/dx = 1/ω², and v of line 1050."""
-    import sympy as sp
-
     omega, domega, big_a, big_b, iw = real_symbols("omega", "domega_dx", "A45", "B45", "Iw")
     along = derivative_along({omega: domega, iw: 1 / omega**2})
     w1 = omega / sp.sqrt(big_a)
@@ -269,17 +237,3 @@ def reference_omega_pair() -> Any:
     v = sp.sqrt(omega**2 / big_a + big_a * omega**2 * (iw + big_b) ** 2)
     exact = {"omega1": w1, "omega2": w2, "domega1_dx": along(w1), "domega2_dx": along(w2)}
     return make_reference({**exact, "v": v}, "ω1, ω2 of line 1054")
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_conical_cartesian": reference_conical_cartesian,  # lines 948-984
-    "reference_conical_polar": reference_conical_polar,  # lines 986-992
-    "reference_eq43": reference_eq43,  # (43), lines 994-996
-    "reference_area_theorem": reference_area_theorem,  # (44), lines 998-1000
-    "reference_conical_l_form": reference_conical_l_form,  # lines 1002-1008
-    "reference_conical_small": reference_conical_small,  # lines 1010-1016, (45)
-    "reference_lambda_substitution": reference_lambda_substitution,  # lines 1018-1042
-    "reference_conical_solution": reference_conical_solution,  # lines 1044-1052
-    "reference_omega_pair": reference_omega_pair,  # (46), lines 1058-1062
-}

@@ -11,25 +11,18 @@ prints. :func:`first_order_solution` is also § III's (line 890).
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from pendcli.papers.lecornu.references_tools import (
-    derivative_along,
-    make_reference,
-    real_symbols,
-)
+import sympy as sp
 
-__all__ = ["REFERENCES", "first_order_solution"]
+from pendcli.papers.lecornu.references_tools import derivative_along, make_reference, real_symbols
 
 
 @cache
 def reference_primitive_angles() -> Any:
     """(47): θ = (v/l)√(bc/g), θi = (ωi/l)√(bc/g) (lines 1066-1070) with v = √(ω1² + ω2²)
     (line 1062)."""
-    import sympy as sp
-
     w1, w2, length, b, c, g = real_symbols("omega1", "omega2", "l", "b", "c", "g")
     big_k = sp.sqrt(b * c / g) / length
     exact = {"theta": sp.sqrt(w1**2 + w2**2) * big_k, "theta1": w1 * big_k, "theta2": w2 * big_k}
@@ -39,8 +32,6 @@ def reference_primitive_angles() -> Any:
 def _plane_angles() -> dict[str, Any]:
     """θi = K ωi(x)/l (line 1070), K = √(bc/g), x = gl/b², l = a + bt, ωi solutions of (9)
     (xω'' + ω = 0) tied by (46); θi' and θi'' by the chain rule in t (dx/dt = g/b)."""
-    import sympy as sp
-
     a, b, g, c, t = real_symbols("a", "b", "g", "c", "t")
     w1, w2, dw1 = real_symbols("omega1", "omega2", "domega1_dx")
     length = a + b * t
@@ -68,8 +59,6 @@ def reference_plane_angles() -> Any:
 def reference_polar_angle() -> Any:
     """Lines 1084-1086: θ1 = θ cos φ, θ2 = θ sin φ (φ the polar angle of (θ1, θ2)), and c
     from (49): c = l²(θ1θ2' − θ2θ1'), θ and φ varying."""
-    import sympy as sp
-
     theta, phi, dth, dphi, length = real_symbols("theta", "phi", "dtheta_dt", "dphi_dt", "l")
     along = derivative_along({theta: dth, phi: dphi})
     one, two = theta * sp.cos(phi), theta * sp.sin(phi)
@@ -83,11 +72,9 @@ def reference_polar_angle() -> Any:
 def reference_small_theta() -> Any:
     """θ scaled by ε (a series in the angle): line 1088's « pour le degré d'approximation
     adopté », θ² neglected beside 1."""
-    import sympy as sp
-
     theta = sp.Symbol("theta", real=True)
     scale = sp.Symbol("epsilon", positive=True)
-    return make_reference({"theta": scale * theta}, "θ -> εθ", scale=scale, order=4)
+    return make_reference({"theta": scale * theta}, "θ -> εθ")
 
 
 @cache
@@ -95,8 +82,6 @@ def _first_order_correction() -> Any:
     """The O(p) part of the solution of (48) in u = γt, (1 + pu)θ'' + 2pθ' + θ = 0, about
     ρ sin(u − ψ): θ1'' + θ1 = ρ(u sin(u − ψ) − 2 cos(u − ψ)), solved by the ansatz
     (a1u² + a2u) cos(u − ψ) + (b1u² + b2u) sin(u − ψ) (no free oscillation added)."""
-    import sympy as sp
-
     u, rho, psi = real_symbols("u", "rho", "psi")
     a1, a2, b1, b2 = sp.symbols("a1 a2 b1 b2")
     w = sp.Symbol("w", real=True)  # the phase u − ψ, d/du acting on u and w alike
@@ -116,8 +101,6 @@ def _first_order_correction() -> Any:
 def first_order_solution(rho: Any, psi: Any, u: Any) -> Any:
     """θ through O(p) of (48) in u = γt about ρ sin(u − ψ): ρ sin(u − ψ) + p θ1 with θ1
     solved here (_first_order_correction), at the given ρ, ψ, u."""
-    import sympy as sp
-
     zero, first = _first_order_correction()
     names = dict(zip(("u", "rho", "psi"), real_symbols("u", "rho", "psi"), strict=True))
     p = sp.Symbol("p", real=True)
@@ -128,29 +111,25 @@ def first_order_solution(rho: Any, psi: Any, u: Any) -> Any:
 @cache
 def reference_slow_pair() -> Any:
     """(50): θi the O(p) solution of (48) about ρi sin(γt − ψi) (γ = √(g/a))."""
-
-    t, gamma, p = real_symbols("t", "gamma", "p")
+    t, gamma = real_symbols("t", "gamma")
     exact = {}
     for i in ("1", "2"):
         rho, psi = real_symbols(f"rho{i}", f"psi{i}")
         exact[f"theta{i}"] = first_order_solution(rho, psi, gamma * t)
-    return make_reference(exact, "(48) to O(p)", scale=p, order=2)
+    return make_reference(exact, "(48) to O(p)")
 
 
 @cache
 def reference_slow_length() -> Any:
     """l = a + bt with b = pγa (p = b/√(ga), γ = √(g/a)): a series in p."""
-
     a, t, gamma, p = real_symbols("a", "t", "gamma", "p")
     exact = {"l": a + p * gamma * a * t, "b": p * gamma * a}
-    return make_reference(exact, "l = a + bt, b = pγa", scale=p, order=2)
+    return make_reference(exact, "l = a + bt, b = pγa")
 
 
 @cache
 def reference_conical_phases() -> Any:
     """(51): c = l²(θ1θ2' − θ2θ1') from (49) with θi of (50) at t = 0 (l = a), γ = √(g/a)."""
-    import sympy as sp
-
     t, gamma, a, g = real_symbols("t", "gamma", "a", "g")
     pair = reference_slow_pair().exact
     one, two = pair["theta1"], pair["theta2"]
@@ -164,23 +143,19 @@ def reference_conical_phases() -> Any:
 def reference_rotated_phases() -> Any:
     """(52): the O(p) solutions about ρ1 cos u and ρ2 sin u (ψ1 = −π/2, ψ2 = 0, u = γt,
     the phases chosen at line 1110), and c from (49) at t = 0 as for (51)."""
-    import sympy as sp
-
-    u, p, rho1, rho2, a, g = real_symbols("u", "p", "rho1", "rho2", "a", "g")
+    u, rho1, rho2, a, g = real_symbols("u", "rho1", "rho2", "a", "g")
     one = first_order_solution(rho1, -sp.pi / 2, u)
     two = first_order_solution(rho2, sp.Integer(0), u)
     wronskian = (one * two.diff(u) - two * one.diff(u)).subs(u, 0)  # per unit of γ
     exact = {"theta1": one, "theta2": two, "x": one, "y": two}
     exact["c"] = sp.expand(a**2 * sp.sqrt(g / a) * wronskian)
-    return make_reference(exact, "(48) to O(p), ψ1 = −π/2, ψ2 = 0", scale=p, order=2)
+    return make_reference(exact, "(48) to O(p), ψ1 = −π/2, ψ2 = 0")
 
 
 @cache
 def reference_rotated_planes() -> Any:
     """Line 1108: the planes turned by ω; each θi = ρi sin(u − ψi) written Im(Zi e^{iu}),
     Zi = ρi e^{−iψi}: Z1' = Z1 cos ω + Z2 sin ω, Z2' = −Z1 sin ω + Z2 cos ω."""
-    import sympy as sp
-
     rho1, rho2, psi1, psi2, omega = real_symbols("rho1", "rho2", "psi1", "psi2", "omega")
     z1 = rho1 * (sp.cos(psi1) - sp.I * sp.sin(psi1))
     z2 = rho2 * (sp.cos(psi2) - sp.I * sp.sin(psi2))
@@ -198,17 +173,13 @@ def reference_homothety() -> Any:
     (48) about ρ1 cos u, ρ2 sin u) lies on the ellipse of axes sρ1, sρ2 homothetic to the
     one of axes ρ1, ρ2, s = √((x/ρ1)² + (y/ρ2)²); after half a turn (u -> u + π) the ratio
     is s(u + π)/s(u). Through p."""
-    import sympy as sp
-
     u, rho1, rho2 = real_symbols("u", "rho1", "rho2")
     phases = reference_rotated_phases()
     one, two = phases.exact["theta1"], phases.exact["theta2"]
     size = sp.sqrt((one / rho1) ** 2 + (two / rho2) ** 2)
     exact = {"x": one, "y": two, "axis1": rho1 * size, "axis2": rho2 * size}
     exact["hom_ratio"] = size.subs(u, u + sp.pi) / size
-    return make_reference(
-        exact, "(48) to O(p), the ellipse through the trace", scale=phases.scale, order=phases.order
-    )
+    return make_reference(exact, "(48) to O(p), the ellipse through the trace")
 
 
 @cache
@@ -218,8 +189,6 @@ def reference_composed_planes() -> Any:
     θ2 = atan(y/z) of the rod's projections on the fixed vertical planes xz and yz, their
     rates along the motion (z and z' from the constraint, T from it differentiated twice:
     T l = g z + v² − b²), the horizontal state scaled by ε (small oscillations)."""
-    import sympy as sp
-
     a, b, g, t = real_symbols("a", "b", "g", "t")
     x, y, dx, dy = real_symbols("X", "Y", "dX_dt", "dY_dt")
     eps = sp.Symbol("eps_", positive=True)
@@ -237,20 +206,18 @@ def reference_composed_planes() -> Any:
         for key, value in ((name, angle), (f"d{name}_dt", rate), (f"d2{name}_dt2", along(rate))):
             exact[key] = value.subs(small, simultaneous=True)
     what = "the bob's motion in space, the projections' angles, the horizontal state ~ ε"
-    return make_reference(exact, what, scale=eps, order=3)
+    return make_reference(exact, what)
 
 
 def reference_projection_length() -> Any:
     """Line 1096: the rod's projection on a vertical plane at the azimuth φ from it,
     l√(1 − sin²θ sin²φ), with θ small (θ -> εθ), through ε: « confondre la longueur du
     pendule avec sa projection »."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     length, theta, phi = real_symbols("l", "theta", "phi")
     projection = length * sp.sqrt(1 - sp.sin(eps * theta) ** 2 * sp.sin(phi) ** 2)
     exact = {"lproj": projection, "theta": eps * theta}
-    return make_reference(exact, "the projection of the rod, θ small", scale=eps, order=2)
+    return make_reference(exact, "the projection of the rod, θ small")
 
 
 def reference_rotation_angle() -> Any:
@@ -258,8 +225,6 @@ def reference_rotation_angle() -> Any:
     2ρ'1ρ'2 cos(ψ'2 − ψ'1) = 2 Re(Z'1 conj Z'2) of the planes turned by ω (the model of
     reference_rotated_planes); the printed tangent of 2ω is judged as the condition
     (tan 2ω − X) = −2 Re(Z'1 conj Z'2)/((ρ1² − ρ2²) cos 2ω), the model's product normalised."""
-    import sympy as sp
-
     rho1, rho2, psi1, psi2, omega = real_symbols("rho1", "rho2", "psi1", "psi2", "omega")
     z1 = rho1 * (sp.cos(psi1) - sp.I * sp.sin(psi1))
     z2 = rho2 * (sp.cos(psi2) - sp.I * sp.sin(psi2))
@@ -269,21 +234,3 @@ def reference_rotation_angle() -> Any:
     condition = -product / ((rho1**2 - rho2**2) * sp.cos(2 * omega))
     return make_reference({}, "the planes turned by ω, the new phases in quadrature",
                           conditions=(condition,))  # fmt: skip
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_primitive_angles": reference_primitive_angles,  # (47), lines 1064-1074
-    "reference_plane_angles": reference_plane_angles,  # (48), (49), lines 1076-1080
-    "reference_polar_angle": reference_polar_angle,  # lines 1082-1086, 1116-1118
-    "reference_small_theta": reference_small_theta,  # lines 1086-1090
-    "reference_slow_pair": reference_slow_pair,  # (50), lines 1098-1100
-    "reference_slow_length": reference_slow_length,  # line 1102
-    "reference_conical_phases": reference_conical_phases,  # (51), line 1104
-    "reference_rotated_planes": reference_rotated_planes,  # lines 1106-1108
-    "reference_rotated_phases": reference_rotated_phases,  # (52), lines 1112-1126
-    "reference_homothety": reference_homothety,  # lines 1128-1134
-    "reference_projection_length": reference_projection_length,  # line 1096
-    "reference_rotation_angle": reference_rotation_angle,  # line 1110
-    "reference_composed_planes": reference_composed_planes,  # line 1094
-}

@@ -10,15 +10,13 @@ computed here; never a copy of the formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
 
+import sympy as sp
+
 from pendcli.papers.lecornu.references_tools import make_reference, real_symbols
 from pendcli.papers.taylor import taylor
-
-__all__ = ["REFERENCES"]
-
 
 # --- § III from (30): the fast shortening, in powers of s = g/b (lines 699-732) ----------
 
@@ -26,8 +24,6 @@ __all__ = ["REFERENCES"]
 def _s_coefficients() -> tuple[Any, list[Any]]:
     """(30), z θ'' + 2θ' + s sin θ = 0, with θ = U + Vs + Ws² (line 702): the coefficients
     of s⁰, s¹, s² of its left side (a series in s), in the ledger's symbols."""
-    import sympy as sp
-
     s, z = real_symbols("s", "z")
     names = ("U", "dU_dz", "d2U_dz2", "V", "dV_dz", "d2V_dz2", "W", "dW_dz", "d2W_dz2")
     u, du, d2u, v, dv, d2v, w, dw, d2w = real_symbols(*names)
@@ -45,19 +41,17 @@ def _s_coefficients() -> tuple[Any, list[Any]]:
 def reference_s_coefficients() -> Any:
     """Lines 704-714: u'', v'', w'' solved from the s⁰, s¹, s² coefficients of (30) with
     θ = u + vs + ws² (each coefficient is linear in its second derivative)."""
-    s, coefficients = _s_coefficients()
+    coefficients = _s_coefficients()[1]
     exact = {}
     for name, coefficient in zip(("U", "V", "W"), coefficients, strict=True):
         (second,) = real_symbols(f"d2{name}_dz2")
         exact[second.name] = -coefficient.subs(second, 0) / coefficient.coeff(second)
-    return make_reference(exact, "(30) with θ = u + vs + ws²", scale=s, order=3)
+    return make_reference(exact, "(30) with θ = u + vs + ws²")
 
 
 def _zero_start_double_quadrature(forcing: Any, z: Any, z0: Any) -> Any:
     """The solution of z y'' + 2y' = f (that is (z²y')' = z f) with y(z0) = y'(z0) = 0:
     y = ∫_z0^z dz/z² ∫_z0^z z f dz (sympy integrals, left unevaluated)."""
-    import sympy as sp
-
     return sp.Integral(sp.Integral(z * forcing, (z, z0, z)) / z**2, (z, z0, z))
 
 
@@ -67,8 +61,6 @@ def _coefficient_transform(residual: Any) -> Any:
     D = z d²/dz² + 2 d/dz, with D(y) and the values at z0 from lines 710-716: D(u) = 0,
     D(v) = −sin u, D(w) = −v cos u, v = w = v' = w' = 0 at z0 (u's values there are its
     free constants α, β). Both vanish if and only if Y solves y's problem."""
-    import sympy as sp
-
     z, z0, alpha, beta = real_symbols("z", "z0", "alpha", "beta")
     big_u, big_v, big_w = real_symbols("U", "V", "W")
     kappa1, kappa2 = real_symbols("kappa1_aux", "kappa2_aux")
@@ -106,8 +98,6 @@ def _series_31() -> Any:
     """θ = α + vs + ws² for β = 0 (u = α): v, w solved from the coefficient equations
     (z²v')' = −z sin α, (z²w')' = −z v cos α with v = v' = w = w' = 0 at z0, by sympy
     integration of rational functions of z."""
-    import sympy as sp
-
     s, z, z0, alpha = real_symbols("s", "z", "z0", "alpha")
     zeta = sp.Symbol("zeta", positive=True)
 
@@ -124,19 +114,14 @@ def _series_31() -> Any:
 @cache
 def reference_31() -> Any:
     """(31): θ through s² for β = 0, solved from (30) (lines 708-714)."""
-    import sympy as sp
-
     theta, _ = _series_31()
-    domain = {"z": (sp.Rational(1, 10), sp.Rational(9, 10)), "z0": (1, 2)}
-    return make_reference({"theta": theta}, "(30) through s², β = 0", domain=domain)
+    return make_reference({"theta": theta}, "(30) through s², β = 0")
 
 
 @cache
 def reference_polar_trajectory() -> Any:
     """Line 730: (31) without its s² term at z = l/b, and A, B, C its coefficients of l⁰,
     l¹, l⁻¹ (computed; θ then holds only if no other power of l occurs)."""
-    import sympy as sp
-
     s, z, alpha, length, b = real_symbols("s", "z", "alpha", "l", "b")
     _, v = _series_31()
     theta = sp.expand(alpha + s * v.subs(z, length / b))
@@ -152,8 +137,6 @@ def reference_polar_trajectory() -> Any:
 def _eq3_in_u(b: Any) -> dict[str, Any]:
     """(3), (a + bt)θ'' + 2bθ' + g sin θ = 0, solved for θ'' and written in u = √(g/a)t:
     dθ/du = θ'√(a/g), d²θ/du² = θ''a/g; u and p = b/√(ga) from line 736."""
-    import sympy as sp
-
     a, g, t, theta, dth = real_symbols("a", "g", "t", "theta", "dtheta_dt")
     second = -(2 * b * dth + g * sp.sin(theta)) / (a + b * t)
     return {
@@ -174,8 +157,6 @@ def reference_eq3_in_u() -> Any:
 @cache
 def reference_ordinary_pendulum() -> Any:
     """(33): (3) with b = 0 (p = 0), in u."""
-    import sympy as sp
-
     return make_reference(_eq3_in_u(sp.Integer(0)), "(3) with b = 0, in u")
 
 
@@ -184,8 +165,6 @@ def reference_cn_solution() -> Any:
     """(34)-(35), lines 754-764: the textbook solution of (33) with amplitude θ0,
     sin(θ/2) = k cd v = k cn v/dn v (k = sin(θ0/2), v = u + C), written with φ = am v:
     cn v = cos φ, sn v = sin φ, dn v = √(1 − k² sin²φ); d/du = dn v · d/dφ."""
-    import sympy as sp
-
     k, phi = real_symbols("k", "phi")
     dn = sp.sqrt(1 - k**2 * sp.sin(phi) ** 2)
     theta = 2 * sp.asin(k * sp.cos(phi) / dn)
@@ -206,8 +185,6 @@ def reference_cn_solution() -> Any:
 def _partial_chain() -> Any:
     """The total u-derivative of a function of (u, k(u), C(u)), from its partial
     derivatives (th_u, th_k, th_C, th_uu, th_uk, th_uC), with dC/du from (36)."""
-    import sympy as sp
-
     names = ("theta", "th_u", "th_k", "th_C", "th_uu", "th_uk", "th_uC", "dk_du", "dC_du")
     theta, th_u, th_k, th_c, th_uu, th_uk, th_uc, dk, dc = real_symbols(*names)
     partial = {theta: (th_u, th_k, th_c), th_u: (th_uu, th_uk, th_uc)}
@@ -235,8 +212,6 @@ def reference_osculating() -> Any:
 def reference_eq37() -> Any:
     """(37): dk/du, dC/du solved from (32), written with lines 770-774, and (36); the
     printed remark θ_uu + sin θ = 0 (the partial θ solves (33))."""
-    import sympy as sp
-
     total, _, (theta, th_u, dc) = _partial_chain()
     p, u, th_k, th_c, th_uu = real_symbols("p", "u", "th_k", "th_C", "th_uu")
     (dk,) = real_symbols("dk_du")
@@ -250,8 +225,6 @@ def reference_eq37() -> Any:
 @cache
 def reference_phase_derivatives() -> Any:
     """Line 782: θ of (35) is a function G(u + C, k): its partial derivatives."""
-    import sympy as sp
-
     u, c, k = real_symbols("u", "C", "k")
     big_g = sp.Function("G")(u + c, k)
     exact = {
@@ -267,8 +240,6 @@ def reference_phase_derivatives() -> Any:
 def _amplitude_series() -> Any:
     """am u through k³: u = F(φ, k) = ∫₀^φ dφ/√(1 − k² sin²φ), its integrand's series in
     k integrated, then inverted as φ = u + k² c(u) (c solved from the k² coefficient)."""
-    import sympy as sp
-
     k, phi, u = real_symbols("k", "phi", "u")
     integrand = taylor(1 / sp.sqrt(1 - k**2 * sp.sin(phi) ** 2), k, 4)
     elliptic_f = sp.integrate(sp.expand(integrand), (phi, 0, phi))
@@ -282,8 +253,6 @@ def _amplitude_series() -> Any:
 def reference_amplitude_series() -> Any:
     """Lines 786-816: φ = am u through k³, cn u = cos am u, k' = √(1 − k²), θ = (35) at
     C = 0, f(u) its definition (line 814); a series in k through k³."""
-    import sympy as sp
-
     k, u = real_symbols("k", "u")
     am = _amplitude_series()
     kp = sp.sqrt(1 - k**2)
@@ -294,7 +263,7 @@ def reference_amplitude_series() -> Any:
         "theta": 2 * sp.atan(k / kp * sp.cos(am)),
         "fu": 9 * sp.cos(u) - sp.cos(3 * u) + 12 * u * sp.sin(u),
     }
-    return make_reference(exact, "am u through k³, (35) at C = 0", scale=k, order=4)
+    return make_reference(exact, "am u through k³, (35) at C = 0")
 
 
 @cache
@@ -302,20 +271,3 @@ def reference_identity() -> Any:
     """No substitution: the formula is an identity in its own symbols (checked at random
     rational points)."""
     return make_reference({}, "an identity")
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_s_coefficients": reference_s_coefficients,  # lines 704-714
-    "reference_coefficient_solutions": reference_coefficient_solutions,  # lines 716-722
-    "reference_31": reference_31,  # (31), lines 724-726
-    "reference_polar_trajectory": reference_polar_trajectory,  # lines 728-732
-    "reference_eq3_in_u": reference_eq3_in_u,  # (32), lines 738-740
-    "reference_ordinary_pendulum": reference_ordinary_pendulum,  # (33), lines 742-744
-    "reference_cn_solution": reference_cn_solution,  # (34), (35), lines 746-764, 816
-    "reference_osculating": reference_osculating,  # lines 770-774
-    "reference_eq37": reference_eq37,  # (37), lines 776-780
-    "reference_phase_derivatives": reference_phase_derivatives,  # line 782
-    "reference_amplitude_series": reference_amplitude_series,  # lines 786-816, (38)
-    "reference_identity": reference_identity,  # line 806 (cos³u)
-}

@@ -9,9 +9,11 @@ formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
+
+import mpmath
+import sympy as sp
 
 from pendcli.papers.lecornu.references_base import float40, phi_of, reference, roots_of, symbols
 
@@ -25,8 +27,6 @@ def _general_u(x: Any, x0: Any, big_a: Any, big_b: Any) -> Any:
 
 def _basis_coefficients(x0: Any, big_a: Any, big_b: Any) -> tuple[Any, Any]:
     """_general_u's coefficients of √x J₁(2√x) and √x Y₁(2√x) (the Wronskian at x0)."""
-    import sympy as sp
-
     s = sp.Dummy("s", positive=True)
     j, y = phi_of(s, "j"), phi_of(s, "y")
     dj, dy = j.diff(s), y.diff(s)
@@ -70,8 +70,6 @@ def _bessel_items() -> tuple[tuple[str, Any], ...]:
 
 def _u_over_phi_at(point: str) -> Any:
     """A new constant of (17)-type at ``point``: u/φ there (the form u = A'φ + … at x = x_j)."""
-    import sympy as sp
-
     x, where = symbols("x", point)
     exact = _bessel_exact()
     return sp.Mul(exact["u"], 1 / exact["varphi"]).subs(x, where)
@@ -86,27 +84,20 @@ def reference_monotone_as_cited() -> Any:
     """Line 276, « L'équation (10) montre »: what (10) gives, φ = √x J₁(2√x) and φ', between the
     roots 3.670 and 12.31 of φ; it says nothing of u or u', so the sign of d(u/φ)/dx is not fixed by
     it. The reading is judged against (20) (u' solved from it)."""
-    import sympy as sp
-
     x, u, du, big_b, phi_s, dphi_s = symbols("x", "u", "du_dx", "B", "varphi", "dvarphi_dx")
     phi = phi_of(x)
     exact = {"varphi": phi, "dvarphi_dx": phi.diff(x)}
     rates = {"x": {"u": du, "varphi": dphi_s}}
-    domain = {"x": (sp.Rational(37, 10), sp.Rational(61, 5)), "B": (sp.Rational(1, 10), 1)}
     q = sp.Symbol("q_")
     eq20 = (q * phi_s - u * dphi_s) / phi_s**2 - big_b / phi_s**2  # (20), d/dx by the rates
     solved = sp.solve(eq20, q)[0].subs({phi_s: phi, dphi_s: phi.diff(x)}, simultaneous=True)
-    reading = reference(
-        {**exact, "du_dx": solved}, "(20)", rates=rates, domain={**domain, "u": (-1, 1)}
-    )
-    return reference(exact, "(10)", rates=rates, domain=domain, reading=reading)
+    # u' solved from (20) takes any sign: u over (-1, 1) beside the row's domain
+    reading = reference({**exact, "du_dx": solved}, "(20)", rates=rates, domain={"u": (-1, 1)})
+    return reference(exact, "(10)", rates=rates, reading=reading)
 
 
 def reference_at_beta() -> Any:
     """Lines 276-284: u of (9) at β, the first root of φ (β = j₁,₁²/4: φ = √x J₁(2√x))."""
-    import mpmath
-    import sympy as sp
-
     with mpmath.workdps(30):
         beta = sp.Float(str(mpmath.besseljzero(1, 1) ** 2 / 4), 30)
     (x,) = symbols("x")
@@ -139,9 +130,6 @@ def reference_one_vertical() -> Any:
     pairs of consecutive roots α < β of φ (a scan of √x J₁(2√x), mpmath): l = (b²/g)x at
     α, β (line 112), z1, z2 the roots of J₁ (mpmath.besseljzero), nvert the sign changes of u
     between α and β."""
-    import mpmath
-    import sympy as sp
-
     b, g = symbols("b", "g")
     roots = roots_of("bessel", "zero", 1, 80)
     with mpmath.workdps(40):
@@ -165,58 +153,25 @@ def reference_one_vertical() -> Any:
 def reference_bessel_past_beta() -> Any:
     """(17'), A', lines 314-320: x0 in (3/2, 18/5) (between the roots 1.446 of φ' and 3.670 of φ),
     x1 and x past β = 3.670 and below the next root 7.618 of φ'; A' = u(x1)/φ(x1)."""
-    import sympy as sp
-
     exact = _bessel_exact({"Ap": _u_over_phi_at("x1")})
-    domain = {
-        "x0": (sp.Rational(3, 2), sp.Rational(18, 5)),
-        "x1": (sp.Rational(37, 10), sp.Rational(15, 2)),
-        "x": (sp.Rational(37, 10), sp.Rational(15, 2)),
-    }
-    return reference(exact, "u of (9); A' = u/φ at x1 (line 316)", domain=domain)
+    return reference(exact, "u of (9); A' = u/φ at x1 (line 316)")
 
 
 def reference_bessel_past_alpha_prime() -> Any:
     """(21'), C', lines 324-328: as above, and x2, x past α' = 7.618, below the root 12.31 of φ;
     C' = (u + B/φ')/φ at x2 (the form (21') at x = x2)."""
-    import sympy as sp
-
     x, x2, big_b = symbols("x", "x2", "B")
     exact = _bessel_exact()
     c_prime = ((exact["u"] + big_b / exact["dvarphi_dx"]) / exact["varphi"]).subs(x, x2)
     exact["Cp"] = c_prime
     exact["Ap"] = _u_over_phi_at("x1")
-    domain = {
-        "x0": (sp.Rational(3, 2), sp.Rational(18, 5)),
-        "x1": (sp.Rational(37, 10), sp.Rational(15, 2)),
-        "x2": (sp.Rational(77, 10), sp.Rational(122, 10)),
-        "x": (sp.Rational(77, 10), sp.Rational(122, 10)),
-    }
-    return reference(exact, "u of (9); C' = (u + B/φ')/φ at x2 (line 326)", domain=domain)
-
-
-def reference_bessel_switches() -> Any:
-    """The general rule (lines 330–342): x0 in (1/10, 1/2), before every root; x, x_k in
-    (37/10, 15/2), past φ' = 0 at 1.446 and φ = 0 at 3.670; x_h and the switch point x1 in
-    (3/2, 18/5), between them."""
-    import sympy as sp
-
-    domain = {
-        "x0": (sp.Rational(1, 10), sp.Rational(1, 2)),
-        "x": (sp.Rational(37, 10), sp.Rational(15, 2)),
-        "xk": (sp.Rational(37, 10), sp.Rational(15, 2)),
-        "xh": (sp.Rational(3, 2), sp.Rational(18, 5)),
-        "x1": (sp.Rational(3, 2), sp.Rational(18, 5)),
-    }
-    return reference(_bessel_exact(), "u of (9) across the roots of φ' and φ", domain=domain)
+    return reference(exact, "u of (9); C' = (u + B/φ')/φ at x2 (line 326)")
 
 
 def reference_initial_data() -> Any:
     """Lines 346-360: u = θl, x = gl/b² at t = 0 (l = a): u0 = aθ0, u'0 = (b²/g)(θ0 + a ω0/b) by the
     chain rule; A, B solved from u0 = Aφ0, u'0 = Aφ'0 + B/φ0 ((17), (18) at x0); C = A +
     B/(φ0φ'0)."""
-    import sympy as sp
-
     a, b, g, theta0, omega0, phi0, dphi0, big_a, big_b = symbols(
         "a", "b", "g", "theta0", "omega0", "varphi0", "varphip0", "A", "B"
     )
@@ -239,8 +194,6 @@ def reference_limit_at_zero() -> Any:
     concentrates at 0); the limits of φ∫dx/φ² (the solution of (9) with value 0, slope 1/φ0
     at x0) and of u (_general_u) as x → 0, from the basis: √x J₁(2√x) → 0 and √x Y₁(2√x) →
     its sympy limit; θ = u/l, l = (b²/g)x."""
-    import sympy as sp
-
     x, x0, big_a, big_b, b, g, u = symbols("x", "x0", "A", "B", "b", "g", "u")
     s = sp.Dummy("s", positive=True)
     phi = phi_of(x)
@@ -262,8 +215,6 @@ def reference_hopital_at_beta() -> Any:
     """Line 280: the « vraie valeur » of ∫_(x0)^x dx/φ² over 1/φ as x → β, by L'Hôpital: the
     ratio of the two derivatives, taken by sympy for an unknown function φ(x) and written in
     the ledger's φ, φ' (lhop)."""
-    import sympy as sp
-
     x, x0, varphi, dvarphi = symbols("x", "x0", "varphi", "dvarphi_dx")
     f = sp.Function("f_")(x)
     top = sp.Integral(1 / f**2, (x, x0, x)).diff(x)
@@ -275,8 +226,6 @@ def reference_hopital_at_beta() -> Any:
 def reference_rolle() -> Any:
     """Line 282: φ' = J₀(2√x) at consecutive roots α, β of φ = √x J₁(2√x): x = j₁,ₖ²/4
     (mpmath.besseljzero), the first four pairs; φ' taken by sympy from φ."""
-    import mpmath
-
     (x,) = symbols("x")
     slope = phi_of(x).diff(x)
     with mpmath.workdps(40):
@@ -290,8 +239,6 @@ def reference_kick_at_vertical() -> Any:
     """Line 258: the motion started by a lateral kick at the vertical, at the length of a root
     x1 of φ (u = 0, u' = 1 there): u = αφ + β√x Y₁(2√x) with α, β solved from those data
     (mpmath, 40 digits; d/dx √x Z₁(2√x) = Z₀(2√x)), at the next four roots of φ (j₁,ₖ²/4)."""
-    import mpmath
-
     with mpmath.workdps(40):
         roots = [mpmath.besseljzero(1, k) ** 2 / 4 for k in range(1, 6)]
         s = 2 * mpmath.sqrt(roots[0])
@@ -316,21 +263,3 @@ def reference_x_of_l() -> Any:
     """Lines 284, 344: x = gl/b², line 112's definition of x, solved for x."""
     length, g, b = symbols("l", "g", "b")
     return reference({"x": g * length / b**2}, "x = gl/b² (line 112)")
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_bessel_general": reference_bessel_general,
-    "reference_monotone_as_cited": reference_monotone_as_cited,
-    "reference_at_beta": reference_at_beta,
-    "reference_one_vertical": reference_one_vertical,
-    "reference_bessel_past_beta": reference_bessel_past_beta,
-    "reference_bessel_past_alpha_prime": reference_bessel_past_alpha_prime,
-    "reference_bessel_switches": reference_bessel_switches,
-    "reference_initial_data": reference_initial_data,
-    "reference_limit_at_zero": reference_limit_at_zero,
-    "reference_hopital_at_beta": reference_hopital_at_beta,
-    "reference_rolle": reference_rolle,
-    "reference_x_of_l": reference_x_of_l,
-    "reference_kick_at_vertical": reference_kick_at_vertical,
-}

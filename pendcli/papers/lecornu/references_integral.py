@@ -9,9 +9,11 @@ references_late.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
+import sympy as sp
+
+from pendcli.core.printed_check import Reference
 from pendcli.papers.lecornu.references_base import reference, symbols
 
 
@@ -40,8 +42,6 @@ def reference_integral_18() -> Any:
 def reference_integral_solution() -> Any:
     """Lines 386-402: v, w as the integrals they are set to (line 388, 392), u = C(v + w sin α);
     their second derivatives in x taken under the integral sign (sympy)."""
-    import sympy as sp
-
     x, alpha, omega, big_c = symbols("x", "alpha", "omega", "C")
     half = (omega, 0, sp.pi / 2)
     v = x * sp.Integral(sp.cos(2 * sp.sqrt(x) * sp.cos(omega) + alpha) * sp.sin(omega) ** 2, half)
@@ -62,10 +62,6 @@ def reference_integral_19() -> Any:
 def reference_c_equals_4_over_pi() -> Any:
     """Lines 408-412: φ = √x J₁(2√x), the series (10); C the ratio of the two limits the text
     takes at x = 0, lim φ/x over lim ∫₀^(π/2) cos(2√x cos ω) sin²ω dω (sympy)."""
-    import sympy as sp
-
-    from pendcli.core.printed_check import Reference
-
     x, omega = symbols("x", "omega")
     varphi = sp.sqrt(x) * sp.besselj(1, 2 * sp.sqrt(x))
     integral = sp.integrate(sp.sin(omega) ** 2, (omega, 0, sp.pi / 2))  # the integrand at x = 0
@@ -76,32 +72,10 @@ def reference_c_equals_4_over_pi() -> Any:
 def reference_quadrature() -> Any:
     """Lines 416-434: identities between definite integrals, judged by quadrature alone;
     a (here aa) a fixed number above 1, h (here hh) above 2a√x and below 3 (line 442)."""
-    import sympy as sp
-
-    domain = {
-        "aa": (sp.Rational(11, 10), sp.Rational(3, 2)),
-        "hh": (sp.Rational(22, 10), sp.Rational(29, 10)),
-        # x stated, not left to the default: an inequality holds only over a stated range
-        # (line 442's: 2a√x < h, here at most 2·1,5·√0,5 = 2,12 < 2,2)
-        "x": (sp.Rational(1, 10), sp.Rational(1, 2)),
-    }
-    return reference({}, "quadrature", domain=domain)
+    return reference({}, "quadrature")
 
 
 def reference_large_lambda() -> Any:
     """Line 422: (1 + λ²)^(1/2) for large λ: λ = 1/ε, through ε³."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
-    return reference({"lam": 1 / eps}, "λ = 1/ε", scale=eps, order=5)
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_integral_18": reference_integral_18,
-    "reference_integral_solution": reference_integral_solution,
-    "reference_integral_19": reference_integral_19,
-    "reference_c_equals_4_over_pi": reference_c_equals_4_over_pi,
-    "reference_quadrature": reference_quadrature,
-    "reference_large_lambda": reference_large_lambda,
-}
+    return reference({"lam": 1 / eps}, "λ = 1/ε")

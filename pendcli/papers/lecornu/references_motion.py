@@ -9,9 +9,10 @@ compound pendulum itself; never a second copy of the formula the row prints.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
+
+import sympy as sp
 
 from pendcli.papers.lecornu.references_base import reference, symbols
 
@@ -20,8 +21,6 @@ from pendcli.papers.lecornu.references_base import reference, symbols
 def _bob_accelerations() -> tuple[Any, Any, dict[str, Any]]:
     """ẍ, ÿ of x = l sin θ, y = l cos θ (line 34) for any l(t), θ(t), in the ledger's
     derivative symbols; and the symbols themselves."""
-    import sympy as sp
-
     t, length, dl, d2l, theta, dtheta, d2theta = symbols(
         "t", "l", "dl_dt", "d2l_dt2", "theta", "dtheta_dt", "d2theta_dt2"
     )
@@ -51,8 +50,6 @@ def _cartesian_exact(uniform: bool) -> dict[str, Any]:
 
 @cache
 def _cartesian_items(uniform: bool) -> tuple[tuple[str, Any], ...]:
-    import sympy as sp
-
     a, b, t, g, ten = symbols("a", "b", "t", "g", "Ten")
     ax, ay, s = _bob_accelerations()
     length, theta = s["l"], s["theta"]
@@ -94,8 +91,6 @@ def reference_cartesian_uniform() -> Any:
 
 def _chain_rule() -> dict[str, Any]:
     """l = a + bt: dθ/dt, d²θ/dt² of θ(t) = Θ(a + bt) by the chain rule (sympy)."""
-    import sympy as sp
-
     a, b, t, dtheta_dl, d2theta_dl2 = symbols("a", "b", "t", "dtheta_dl", "d2theta_dl2")
     of_t = sp.Function("Theta")(a + b * t)
     jet = {1: dtheta_dl, 2: d2theta_dl2}  # Θ's derivatives at l = a + bt
@@ -115,8 +110,6 @@ def reference_chain_rule() -> Any:
 
 def reference_motion_in_l() -> Any:
     """(5), line 76: (3) in the variable l, θ'' of (3) by the chain rule, t = (l − a)/b."""
-    import sympy as sp
-
     a, b, length, dtheta_dl = symbols("a", "b", "l", "dtheta_dl")
     d2theta_dt2 = _cartesian_exact(True)["d2theta_dt2"].subs(
         a + sp.Symbol("b", real=True) * sp.Symbol("t", real=True), length
@@ -133,7 +126,6 @@ def reference_eq6() -> Any:
     """(6), line 80, against (3): θ'' of (3) (written with l = a + bt) for a d²/dt², θ_ll of (3) in
     l (the chain rule) for a d²/dl²; l' = b. The printed d²/dt² gives lθ'' + 2bθ' = −g sin θ, not
     −(g/b²) sin θ."""
-
     a, b, t, length = symbols("a", "b", "t", "l")
     dtheta, d2theta, dtheta_dl, d2theta_dl2 = symbols(
         "dtheta_dt", "d2theta_dt2", "dtheta_dl", "d2theta_dl2"
@@ -150,14 +142,10 @@ def reference_eq6() -> Any:
 
 def reference_compound() -> Any:
     """Line 84, l' = l + R²/l, with l = a + bt; bt/a small: b scaled by ε, through ε¹."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     a, b, t, rg = symbols("a", "b", "t", "Rg")
     length = a + eps * b * t
-    return reference(
-        {"lp": length + rg**2 / length, "b": eps * b}, "l' = l + R²/l", scale=eps, order=2
-    )
+    return reference({"lp": length + rg**2 / length, "b": eps * b}, "l' = l + R²/l")
 
 
 def reference_equivalent_length() -> Any:
@@ -165,8 +153,6 @@ def reference_equivalent_length() -> Any:
     its moment of inertia per unit mass is l² + R² (the parallel axes), so
     (l² + R²)θ'' + g l sin θ = 0; the simple pendulum with the same θ'' has the length
     l' = −g sin θ/θ''."""
-    import sympy as sp
-
     length, rg, g, theta = symbols("l", "Rg", "g", "theta")
     d2theta = -g * length * sp.sin(theta) / (length**2 + rg**2)
     return reference({"lp": -g * sp.sin(theta) / d2theta}, "(l² + R²)θ'' + g l sin θ = 0")
@@ -177,33 +163,27 @@ def reference_compound_motion() -> Any:
     (moment of inertia l² + R² per unit mass, l = a + bt the distance of the centre of
     gravity), θ'' solved from it; bt/a small: b scaled by ε, through ε¹ (the order of the
     printed l' = a + R²/a + b(1 − R²/a²)t)."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     a, b, t, rg, g, theta, dtheta, q = symbols("a", "b", "t", "Rg", "g", "theta", "dtheta_dt", "q_")
     length, rate = a + eps * b * t, eps * b
     motion = (length**2 + rg**2) * q + 2 * length * rate * dtheta + g * length * sp.sin(theta)
     d2theta = sp.solve(motion, q)[0]
     exact = {"b": rate, "d2theta_dt2": d2theta}
-    return reference(exact, "d/dt[(l² + R²)θ'] + g l sin θ = 0", scale=eps, order=2)
+    return reference(exact, "d/dt[(l² + R²)θ'] + g l sin θ = 0")
 
 
 def reference_small_angle() -> Any:
     """(7), line 98: (5) (from (3) and the chain rule) with sin θ ≈ θ: θ scaled by ε, through ε¹."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     theta, dtheta_dl = symbols("theta", "dtheta_dl")
     base = reference_motion_in_l().exact
     d2 = base["d2theta_dl2"].subs({theta: eps * theta, dtheta_dl: eps * dtheta_dl})
     exact = {"theta": eps * theta, "dtheta_dl": eps * dtheta_dl, "d2theta_dl2": d2}
-    return reference(exact, "(5) to first order in θ", scale=eps, order=2)
+    return reference(exact, "(5) to first order in θ")
 
 
 def reference_riccati() -> Any:
     """Lines 100-106, (8): (7) with θ = e^∫z dl (θ' = zθ, θ'' = (z' + z²)θ), then z = v − 1/l."""
-    import sympy as sp
-
     length, g, b, theta, zr, vr, dzr = symbols("l", "g", "b", "theta", "zr", "vr", "dzr_dl")
     # (7), l θ'' + 2θ' + (g/b²)θ = 0, with θ' = zθ and θ'' = (z' + z²)θ
     eq7 = length * (dzr + zr**2) * theta + 2 * zr * theta + g / b**2 * theta
@@ -215,8 +195,6 @@ def reference_riccati() -> Any:
 def reference_u_of_x() -> Any:
     """(9), line 116, from (7): u = θl, x = gl/b², d²u/dx² = (b²/g)²(lθ'' + 2θ') with θ'' from
     (7)."""
-    import sympy as sp
-
     length, g, b, theta, dtheta = symbols("l", "g", "b", "theta", "dtheta_dl")
     d2theta = sp.solve(length * sp.Symbol("q_") + 2 * dtheta + g / b**2 * theta, sp.Symbol("q_"))[0]
     exact = {
@@ -238,18 +216,14 @@ def reference_u_of_x_shortened() -> Any:
 
 def reference_speed_of_lengthening() -> Any:
     """Line 64: the rate of l = a + bt (line 62), for b > 0 (« sauf avis contraire »)."""
-    import sympy as sp
-
     a, b, t = symbols("a", "b", "t")
-    domain = {"b": (sp.Rational(1, 10), sp.Integer(2))}
-    return reference({"dl_dt": (a + b * t).diff(t)}, "l = a + bt", domain=domain)
+    return reference({"dl_dt": (a + b * t).diff(t)}, "l = a + bt")
 
 
 def reference_shortening() -> Any:
     """Lines 690-698, (30): (3) with b → −b (line 694: « nous mettons en évidence le signe de b »),
     then z = a/b − t, s = g/b (line 696): dθ/dt = −dθ/dz, d²θ/dt² = d²θ/dz²."""
     a, b, t, g, zt, dtheta_dzt = symbols("a", "b", "t", "g", "zt", "dtheta_dzt")
-    import sympy as sp
 
     exact = _cartesian_exact(True)
     d2 = exact["d2theta_dt2"].subs(b, -b)  # θ'' of (3) for l = a − bt
@@ -258,23 +232,3 @@ def reference_shortening() -> Any:
     return reference(
         {"d2theta_dt2": d2, "d2theta_dzt2": in_z, "s": g / b}, "(3) for l = a − bt, z = a/b − t"
     )
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_cartesian": reference_cartesian,
-    "reference_areal": reference_areal,
-    "reference_cartesian_uniform": reference_cartesian_uniform,
-    "reference_chain_rule": reference_chain_rule,
-    "reference_motion_in_l": reference_motion_in_l,
-    "reference_eq6": reference_eq6,
-    "reference_equivalent_length": reference_equivalent_length,
-    "reference_compound": reference_compound,
-    "reference_compound_motion": reference_compound_motion,
-    "reference_small_angle": reference_small_angle,
-    "reference_riccati": reference_riccati,
-    "reference_u_of_x": reference_u_of_x,
-    "reference_shortening": reference_shortening,
-    "reference_u_of_x_shortened": reference_u_of_x_shortened,
-    "reference_speed_of_lengthening": reference_speed_of_lengthening,
-}

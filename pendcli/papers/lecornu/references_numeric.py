@@ -13,23 +13,16 @@ number, the claim that prints the same number, so that the ledger and the table 
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from itertools import pairwise
 from typing import Any
 
-__all__ = [
-    "numbers_eq16",
-    "numbers_j1_roots",
-    "numbers_j2_roots",
-    "numbers_j2_roots_chopped",
-    "numbers_table_amplitudes",
-    "numbers_table_intervals",
-    "numbers_table_j0",
-    "numbers_table_lengths",
-    "numbers_table_speeds",
-    "numbers_table_times",
-    "numbers_vertical_lengths",
-]
+import mpmath
+import sympy as sp
+
+from pendcli.core.printed_check import Reference
+from pendcli.core.printed_numeric import Numbers
+from pendcli.papers.lecornu.model import constant, printed_number
 
 _DPS = 30
 J2 = [f"lecornu.j2_zeros.{k}" for k in range(1, 6)]  # (15), ascending
@@ -42,26 +35,17 @@ COEFFICIENT = "lecornu.coefficient_b2_4g"
 
 def _published(claim_id: str) -> Any:
     """The printed number of a claim as an exact mpmath decimal (its printed digits)."""
-    import mpmath
-
-    from pendcli.papers.lecornu.model import printed_number
-
     number = printed_number(claim_id)
     return mpmath.mpf(f"{number.value:.{number.decimals or 0}f}")
 
 
 def _numbers(values: list[Any], what: str, claims: Sequence[str | None], **kw: Any) -> Any:
-    from pendcli.core.printed_numeric import Numbers
-    from pendcli.papers.lecornu.model import printed_number
-
     published = tuple(None if c is None else (c, printed_number(c)) for c in claims)
     return Numbers(tuple(values), what=what, published=published, **kw)
 
 
 def numbers_j2_roots() -> Any:
     """(15), line 208: the first five zeros of J₂ (2J₁(z) = zJ₀(z), line 202), mpmath."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         roots = [mpmath.besseljzero(2, k) for k in range(1, 6)]
     return _numbers(roots, "the zeros of J₂ (mpmath.besseljzero)", list(J2))
@@ -71,8 +55,6 @@ def numbers_j2_roots_chopped() -> Any:
     """Line 210, « Je néglige les décimales qui suivent la seconde », applied to (15): each
     zero of J₂ (mpmath) with its decimals after the second dropped (toward zero), the value
     the sentence says each printed root is."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         hundred = mpmath.mpf(100)
         roots = [mpmath.floor(mpmath.besseljzero(2, k) * hundred) / hundred for k in range(1, 6)]
@@ -82,10 +64,6 @@ def numbers_j2_roots_chopped() -> Any:
 
 def numbers_table_speeds() -> Any:
     """Line 216: √(g l/ξ) = 2√(g l)/z for l = 1 m at the roots z of (15) as printed."""
-    import mpmath
-
-    from pendcli.papers.lecornu.model import constant
-
     with mpmath.workdps(_DPS):
         gl = mpmath.mpf(constant("g")) * mpmath.mpf(constant("length"))
         speeds = [2 * mpmath.sqrt(gl) / _published(c) for c in J2]
@@ -97,12 +75,6 @@ def numbers_eq16() -> Any:
     """(16), line 220: its printed 0,00313 against b²/(4g) in metres (b = 0,35 m/s printed,
     g = 9,81 assumed); its equalities as identities from x = gl/b² (line 170) at the root
     x = ξ = z²/4 (z = 2√x, line 200)."""
-    import mpmath
-    import sympy as sp
-
-    from pendcli.core.printed_check import Reference
-    from pendcli.papers.lecornu.model import constant
-
     b, g, z = (sp.Symbol(n, real=True) for n in ("b", "g", "z"))
     xi = z**2 / 4
     identity = Reference({"xi": xi, "l": b**2 / g * xi}, what="x = gl/b² at x = ξ = z²/4")
@@ -115,8 +87,6 @@ def numbers_eq16() -> Any:
 
 def numbers_table_lengths() -> Any:
     """Line 224: the lengths 0,00313 z² of (16) at the roots (15) as printed, largest first."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         lengths = [_published(COEFFICIENT) * _published(c) ** 2 for c in J2[::-1]]
     return _numbers(lengths, "0,00313 z² (16) at the printed (15)", list(LENGTHS))
@@ -124,10 +94,6 @@ def numbers_table_lengths() -> Any:
 
 def numbers_table_times() -> Any:
     """Line 228: the instants (1 − l)/0,35 of the elongations at the lengths of line 224."""
-    import mpmath
-
-    from pendcli.papers.lecornu.model import constant
-
     with mpmath.workdps(_DPS):
         start, speed = mpmath.mpf(constant("length")), mpmath.mpf(constant("speed"))
         times = [(start - _published(c)) / speed for c in LENGTHS]
@@ -137,8 +103,6 @@ def numbers_table_times() -> Any:
 def numbers_table_intervals() -> Any:
     """Line 232: the intervals between the successive limit positions, the differences of
     the instants of line 228 and of the zero length, 2,86 s (line 230)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         instants = [_published(c) for c in [*TIMES, "lecornu.example.time_zero_length"]]
         gaps = [later - sooner for sooner, later in pairwise(instants)]
@@ -149,8 +113,6 @@ def numbers_table_intervals() -> Any:
 def numbers_table_j0() -> Any:
     """Line 240: J₀ at the roots (15) as printed (« les valeurs de J₀(z) correspondant aux
     valeurs de z comprises dans le tableau (15) », line 238)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         values = [mpmath.besselj(0, _published(c)) for c in J2]
     return _numbers(values, "J₀ at the printed (15) (mpmath.besselj)", list(J0))
@@ -159,8 +121,6 @@ def numbers_table_j0() -> Any:
 def numbers_table_amplitudes() -> Any:
     """Line 246: θ/θ0 = J₀(z)/J₀(17,96) (line 236) from the J₀ values of line 240, from
     z = 17,96 down, then the zero length, whose limit is 1 (line 242) over J₀(17,96)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         printed = [_published(c) for c in J0[::-1]]
         limit = _published("lecornu.limit_2j1_over_z")
@@ -171,8 +131,6 @@ def numbers_table_amplitudes() -> Any:
 
 def numbers_j1_roots() -> Any:
     """Line 252: the zeros of J₁ below 20, from the largest (mpmath.besseljzero)."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         roots = [mpmath.besseljzero(1, k) for k in range(6, 0, -1)]
     return _numbers(roots, "the zeros of J₁ (mpmath.besseljzero)", list(J1))
@@ -180,25 +138,7 @@ def numbers_j1_roots() -> Any:
 
 def numbers_vertical_lengths() -> Any:
     """Line 256: the lengths « en vertu de (16) », 0,00313 z², at the zeros of line 252."""
-    import mpmath
-
     with mpmath.workdps(_DPS):
         lengths = [_published(COEFFICIENT) * _published(c) ** 2 for c in J1]
     ids = [f"lecornu.j1_lengths.{k}" for k in range(1, 7)]
     return _numbers(lengths, "0,00313 z² (16) at the printed zeros of J₁", ids)
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "numbers_j2_roots": numbers_j2_roots,
-    "numbers_j2_roots_chopped": numbers_j2_roots_chopped,  # line 210
-    "numbers_table_speeds": numbers_table_speeds,
-    "numbers_eq16": numbers_eq16,
-    "numbers_table_lengths": numbers_table_lengths,
-    "numbers_table_times": numbers_table_times,
-    "numbers_table_intervals": numbers_table_intervals,
-    "numbers_table_j0": numbers_table_j0,
-    "numbers_table_amplitudes": numbers_table_amplitudes,
-    "numbers_j1_roots": numbers_j1_roots,
-    "numbers_vertical_lengths": numbers_vertical_lengths,
-}

@@ -10,16 +10,14 @@ remark is judged on (41) as the ledger transcribes it: that is what it says of (
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cache
 from typing import Any
+
+import sympy as sp
 
 from pendcli.papers.lecornu.references_conical_planes import first_order_solution
 from pendcli.papers.lecornu.references_tools import make_reference, real_symbols
 from pendcli.papers.taylor import taylor
-
-__all__ = ["REFERENCES"]
-
 
 # --- § III, (39)-(42'): the perturbation of (38) by the lengthening (lines 818-934) -------
 
@@ -31,7 +29,6 @@ def _u_symbols() -> list[Any]:
 def _forced_solution(source: Any) -> Any:
     """The solution of y'' + y = source with y(0) = y'(0) = 0, source a sum of uⁿ cos mu,
     uⁿ sin mu (m = 1, 3): undetermined coefficients (n <= 4), solved by sympy."""
-    import sympy as sp
     from sympy.simplify.fu import TR8
 
     (u,) = real_symbols("u")
@@ -57,8 +54,6 @@ def _forced_solution(source: Any) -> Any:
 def _slow_finite() -> dict[str, Any]:
     """ω of (38), F of (39) and its k, k³ coefficients A, B, β and δ solved with zero
     initial values ((40) split in powers of k), θ = ω + p(kβ + k³δ)."""
-    import sympy as sp
-
     u, k, p = _u_symbols()
     f = 9 * sp.cos(u) + 12 * u * sp.sin(u) - sp.cos(3 * u)
     omega = 2 * k * sp.cos(u) + k**3 / 24 * f
@@ -83,8 +78,6 @@ def _slow_finite() -> dict[str, Any]:
 def reference_eq39() -> Any:
     """(39): (32) with θ = ω + pε, ω a solution of (33) (ω'' = −sin ω): ε'' solved from
     (32) exactly, compared at order p⁰; F its definition (line 824)."""
-    import sympy as sp
-
     u, _, p = _u_symbols()
     omega, domega, eps, deps = real_symbols("omega", "domega_du", "eps", "deps_du")
     q = sp.Symbol("q", real=True)
@@ -93,27 +86,24 @@ def reference_eq39() -> Any:
     motion = sp.expand(second + sp.sin(theta) + p * (u * second + 2 * first))
     solved = -motion.subs(q, 0) / motion.coeff(q)
     exact = {"d2eps_du2": solved, "d2omega_du2": d2omega, "F": -(u * d2omega + 2 * domega)}
-    return make_reference(exact, "(32) with θ = ω + pε", scale=p, order=1)
+    return make_reference(exact, "(32) with θ = ω + pε")
 
 
 @cache
 def reference_eq40() -> Any:
     """(40): (39) with ω of (38) (F computed from it), A and B its k and k³ coefficients,
     f and its derivatives from (38); a series in k through k³."""
-    import sympy as sp
-
-    u, k, _ = _u_symbols()
+    u, _k, _ = _u_symbols()
     (eps,) = real_symbols("eps")
     chain = _slow_finite()
-    exact = {
-        "d2eps_du2": chain["F"] - eps * sp.cos(chain["omega"]),
-        "A40": chain["A"],
-        "B40": chain["B"],
-        "fu": chain["f"],
-        "dfu": chain["f"].diff(u),
-        "d2fu": chain["f"].diff(u, 2),
-    }
-    return make_reference(exact, "(39) with ω of (38)", scale=k, order=4)
+    exact = {"d2eps_du2": chain["F"] - eps * sp.cos(chain["omega"]), **_coefficients(chain, u)}
+    return make_reference(exact, "(39) with ω of (38)")
+
+
+def _coefficients(chain: dict[str, Any], u: Any) -> dict[str, Any]:
+    """A and B of (40) and f, f', f'' of (38), by the ledger's names."""
+    f = chain["f"]
+    return {"A40": chain["A"], "B40": chain["B"], "fu": f, "dfu": f.diff(u), "d2fu": f.diff(u, 2)}
 
 
 @cache
@@ -121,8 +111,6 @@ def reference_eps_split() -> Any:
     """Lines 836-856: ε = α + kβ + k²γ + k³δ (line 838) in (40); the second derivatives
     solved from its k⁰ … k³ coefficients (A, B kept as names); α = γ = 0, the solutions
     with zero initial values of α'' + α = 0 and γ'' + γ = 2α cos²u."""
-    import sympy as sp
-
     u, k, _ = _u_symbols()
     names = ("alpha_e", "beta_e", "gamma_e", "delta_e")
     parts = real_symbols(*names)
@@ -143,7 +131,6 @@ def reference_eps_reduced() -> Any:
     """Lines 850-856: as reference_eps_split, with α = γ = 0."""
     split = reference_eps_split()
     zero = {sp_name: 0 for sp_name in ("alpha_e", "gamma_e")}
-    import sympy as sp
 
     exact = {
         n: sp.sympify(v, strict=True).subs({sp.Symbol(m, real=True): 0 for m in zero})
@@ -161,11 +148,7 @@ def reference_beta_delta() -> Any:
     exact = {
         "beta_e": chain["beta"],
         "delta_e": chain["delta"],
-        "A40": chain["A"],
-        "B40": chain["B"],
-        "fu": chain["f"],
-        "dfu": chain["f"].diff(u),
-        "d2fu": chain["f"].diff(u, 2),
+        **_coefficients(chain, u),
         "d2delta_du2": chain["delta"].diff(u, 2),
         "d2beta_du2": chain["beta"].diff(u, 2),
     }
@@ -176,8 +159,6 @@ def reference_beta_delta() -> Any:
 def reference_eq41() -> Any:
     """(41) and lines 888-900: θ = ω + p(kβ + k³δ) solved here; its value and slope at
     u = π/2; rg = √(g/a) (the text's r)."""
-    import sympy as sp
-
     u, _, _ = _u_symbols()
     theta = _slow_finite()["theta"]
     slope = theta.diff(u)
@@ -195,8 +176,6 @@ def reference_eq41() -> Any:
 def reference_printed_41() -> Any:
     """Line 886's « Cette formule donne dθ/dt = 0 pour t = 0 »: (41) as the ledger
     transcribes it (row lecornu.eq.41), its u-derivative at u = 0 (dθ/dt = γ dθ/du)."""
-    import sympy as sp
-
     from pendcli.core.ledger import load_ledger
     from pendcli.core.printed import parse_formula
 
@@ -211,11 +190,9 @@ def reference_printed_41() -> Any:
 @cache
 def reference_k3_neglected() -> Any:
     """Lines 888-892: the O(p) solution of (48) in u (as for (50)) at ψ = 3p/4 − π/2."""
-    import sympy as sp
-
     u, p, rho = real_symbols("u", "p", "rho")
     theta = first_order_solution(rho, 3 * p / 4 - sp.pi / 2, u)
-    return make_reference({"theta": theta}, "(48) to O(p), ψ = 3p/4 − π/2", scale=p, order=2)
+    return make_reference({"theta": theta}, "(48) to O(p), ψ = 3p/4 − π/2")
 
 
 @cache
@@ -223,8 +200,6 @@ def _half_oscillation() -> Any:
     """γT = π/2 − θ/θ_u at u = π/2 (line 904) for θ of reference_eq41: the series in p to
     first order, each part in k through k² (the orders (42) keeps), as a function of a, g,
     b, k (γ = √(g/a), p = b/√(ga))."""
-    import sympy as sp
-
     _, k, p = _u_symbols()
     a, g, b = real_symbols("a", "g", "b")
     exact = reference_eq41().exact
@@ -244,8 +219,6 @@ def reference_eq42() -> Any:
 @cache
 def reference_eq42_prime() -> Any:
     """(42'): (42) with k = sin(θ0/2), through θ0²."""
-    import sympy as sp
-
     k, theta0 = real_symbols("k", "theta0")
     half = _half_oscillation().subs(k, sp.sin(theta0 / 2))
     kept = taylor(half, theta0, 3)
@@ -256,41 +229,8 @@ def reference_eq42_prime() -> Any:
 def reference_t_equals_t_prime() -> Any:
     """Lines 918-932: T (and each T' of the same half-oscillation, reversed) the duration
     of (42) at k = 0, l = a + bT; b scaled by ε (first order in b)."""
-    import sympy as sp
-
     k, a, b = real_symbols("k", "a", "b")
     scale = sp.Symbol("epsilon", positive=True)
     duration = _half_oscillation().subs(k, 0).subs(b, scale * b)
     exact = {"b": scale * b, "T": duration, "Tp": duration, "l": a + scale * b * duration}
-    return make_reference(exact, "(42) at k = 0, to first order in b", scale=scale, order=2)
-
-
-def reference_speed_at_quarter() -> Any:
-    """Line 902, « avec la vitesse négative »: dθ/dt at u = π/2 of reference_eq41, over k up to
-    sin 45°, p small and rg = √(g/a) about 1/s (an inequality needs every symbol's range)."""
-    import sympy as sp
-
-    exact = dict(reference_eq41().exact)
-    domain = {
-        "k": (sp.Rational(1, 20), sp.Rational(7, 10)),
-        "p": (sp.Rational(1, 1000), sp.Rational(1, 20)),
-        "rg": (sp.Rational(1, 2), 4),
-    }
-    return make_reference(exact, "θ = ω + p(kβ + k³δ) at u = π/2", domain=domain)
-
-
-# Each builder by the name the ledger's rows cite (``reference = "…"``).
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_eq39": reference_eq39,  # (39), lines 818-824
-    "reference_eq40": reference_eq40,  # (40), lines 826-834
-    "reference_eps_split": reference_eps_split,  # lines 836-848
-    "reference_eps_reduced": reference_eps_reduced,  # lines 850-856
-    "reference_beta_delta": reference_beta_delta,  # lines 858-880
-    "reference_eq41": reference_eq41,  # (41), lines 882-884, 894-900
-    "reference_printed_41": reference_printed_41,  # line 886
-    "reference_k3_neglected": reference_k3_neglected,  # lines 888-892
-    "reference_eq42": reference_eq42,  # (42), lines 906-908
-    "reference_eq42_prime": reference_eq42_prime,  # (42'), lines 910-912
-    "reference_t_equals_t_prime": reference_t_equals_t_prime,  # lines 918-934
-    "reference_speed_at_quarter": reference_speed_at_quarter,  # line 902
-}
+    return make_reference(exact, "(42) at k = 0, to first order in b")

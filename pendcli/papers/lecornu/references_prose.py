@@ -17,17 +17,12 @@ the length the first reaches at its next vertical passage, swapped (the table af
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
-from pendcli.papers.lecornu.references_base import float40, reference, symbols
+import mpmath
+import sympy as sp
 
-__all__ = [
-    "EXTREMELY",
-    "amplification_to_zero_length",
-    "reference_shortening_swap",
-    "reference_small_start",
-]
+from pendcli.papers.lecornu.references_base import float40, reference, symbols
 
 # the scale the ledger states for « extrêmement faible »: at most this fraction of θs, the
 # largest deviation the small-oscillation hypothesis admits (an order of magnitude below it)
@@ -36,8 +31,6 @@ EXTREMELY = (1, 10)
 
 def amplification_to_zero_length() -> Any:
     """|θ at zero length / θ0| = 1/|J₀(z₅)|, z₅ the fifth zero of J₂ (mpmath, 40 digits)."""
-    import mpmath
-
     with mpmath.workdps(40):
         return 1 / abs(mpmath.besselj(0, mpmath.besseljzero(2, 5)))
 
@@ -46,21 +39,13 @@ def reference_small_start() -> Any:
     """Line 248: every start θ0 admissible at zero length, θ0 = a·θs/(1/|J₀(z₅)|), over
     a in (0, 1) and θs from 1/100 to 1/2 radian, against « extrêmement faible », θxf =
     θs/10 (:data:`EXTREMELY`)."""
-    import sympy as sp
-
     (theta_s,) = symbols("theta_s")
     share = sp.Symbol("a_share", real=True)
     exact = {
         "theta0": share * theta_s / float40(amplification_to_zero_length()),
         "theta_xf": sp.Rational(*EXTREMELY) * theta_s,
     }
-    domain = {
-        "a_share": (sp.Integer(0), sp.Integer(1)),
-        "theta_s": (sp.Rational(1, 100), sp.Rational(1, 2)),
-    }
-    return reference(
-        exact, "θ at zero length = θ0/|J₀(z₅)|, z₅ the fifth zero of J₂", domain=domain
-    )
+    return reference(exact, "θ at zero length = θ0/|J₀(z₅)|, z₅ the fifth zero of J₂")
 
 
 def reference_shortening_swap() -> Any:
@@ -68,11 +53,9 @@ def reference_shortening_swap() -> Any:
     (26) for l = a − bt (tasc_s, tdesc_s), and for l = a' + bt (tasc_l, tdesc_l), a' = a − b·tv2
     the length at the shortening pendulum's second vertical passage; b scaled by ε, through ε
     (the table's first order)."""
-    import sympy as sp
+    from pendcli.papers.lecornu.references_slow import reference_table_26
 
-    from pendcli.papers.lecornu.references_slow import reference_half_durations
-
-    table = reference_half_durations()
+    table = reference_table_26()
     a, b = symbols("a", "b")
     eps = sp.Symbol("eps_", positive=True)
 
@@ -88,11 +71,4 @@ def reference_shortening_swap() -> Any:
         "tdesc_l": long["tv2"] - long["te1"],
     }
     what = "the table after (26) at −b from a, and at +b from the length of its next vertical"
-    return reference(exact, what, scale=eps, order=2, domain=table.domain)
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_small_start": reference_small_start,
-    "reference_shortening_swap": reference_shortening_swap,
-}
+    return reference(exact, what)

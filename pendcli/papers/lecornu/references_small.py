@@ -9,8 +9,10 @@ roots found numerically (mpmath, 40 digits); never a second copy of the formula 
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
 from typing import Any
+
+import mpmath
+import sympy as sp
 
 from pendcli.papers.lecornu.references_base import (
     cylinder,
@@ -34,7 +36,6 @@ def _trajectory(zl: Any, cl: Any) -> Any:
 def reference_graphical() -> Any:
     """Lines 124-130: x = z/c in (9), u(z) exact; h the ordinate at z = 0 of the tangent at (z,
     u)."""
-
     zl, cl, at = symbols("zl", "cl", "Z_")
     u = _trajectory(zl, cl)
     slope = u.diff(zl)
@@ -70,22 +71,18 @@ def reference_curvature() -> Any:
 def reference_step_of_h() -> Any:
     """Line 130: the variation Δh of h = u − z du/dz (line 128) over a step Δz of the exact
     path u(z) (x = z/c, φ of (10)), Δz scaled by ε: « sensiblement » is through ε¹."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     zl, cl, step = symbols("zl", "cl", "Deltaz")
     u = phi_of(zl / cl)
     h = u - zl * u.diff(zl)
     exact = {"u": u, "Deltaz": eps * step, "Deltah": h.subs(zl, zl + eps * step) - h}
-    return reference(exact, "h of the path at z and z + Δz", scale=eps, order=2)
+    return reference(exact, "h of the path at z and z + Δz")
 
 
 def reference_construction() -> Any:
     """Line 132, the construction drawn in coordinates (z abscissa, u ordinate): P = (0, h) on
     the u-axis, M = (z, u), A = (z, 0), B = (z, −c), Q = P moved by Δz towards B's side,
     S = AP ∩ BQ, P' = SM ∩ (u-axis); Δh is the ordinate of P' less h (sympy geometry)."""
-    import sympy as sp
-
     zl, u, h, cl, step = symbols("zl", "u", "h", "cl", "Deltaz")
     pa, pb = sp.Point(zl, 0), sp.Point(zl, -cl)
     pp, pq, pm = sp.Point(0, h), sp.Point(0, h - step), sp.Point(zl, u)
@@ -97,8 +94,6 @@ def reference_construction() -> Any:
 def reference_projections() -> Any:
     """Line 134: the rod's projections y = l cos θ, x = l sin θ (line 34) for a small angle
     (θ scaled by ε, through ε¹), c = b²/g and z = cx (line 124), u = θl (line 112)."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     length, theta, b, g = symbols("l", "theta", "b", "g")
     small = eps * theta
@@ -110,7 +105,7 @@ def reference_projections() -> Any:
         "zl": length,  # z = cx with c = b²/g, x = gl/b²
         "u": small * length,
     }
-    return reference(exact, "the rod's projections at small θ", scale=eps, order=2)
+    return reference(exact, "the rod's projections at small θ")
 
 
 def reference_at_elongations() -> Any:
@@ -118,9 +113,6 @@ def reference_at_elongations() -> Any:
     d(J₁(2√x)/√x)/dx = −J₂(2√x)/x, so x = j₂,ₖ²/4 (mpmath.besseljzero, the first five),
     z = 2√x = j₂,ₖ, ξ = x; h = φ − xφ' (line 128 with x = z/c: the ordinate of the tangent
     over c); l = (b²/g)ξ, b and g from 1/10 to 2 (units left free)."""
-    import mpmath
-    import sympy as sp
-
     x, xi, b, g = symbols("x", "xi", "b", "g")
     phi = phi_of(x)
     with mpmath.workdps(40):
@@ -129,8 +121,7 @@ def reference_at_elongations() -> Any:
             {"x": float40(j**2 / 4), "xi": float40(j**2 / 4), "z": float40(j)} for j in zeros
         )
     exact = {"h": phi - x * phi.diff(x), "l": b**2 * xi / g}
-    domain = {name: (sp.Rational(1, 10), sp.Integer(2)) for name in ("b", "g")}
-    return reference(exact, "the elongations of θl = φ (J₂ = 0)", each_case=cases, domain=domain)
+    return reference(exact, "the elongations of θl = φ (J₂ = 0)", each_case=cases)
 
 
 def _between(exact: dict[str, Any], low: Any, high: Any) -> Any:
@@ -138,7 +129,6 @@ def _between(exact: dict[str, Any], low: Any, high: Any) -> Any:
     judged between two points, r(high) − r(low), each ∫f dz read as ∫_low^high f dz; the
     reference's ``exact`` is substituted first (an integral's coefficient must not depend on
     z, or a term F(low) is left and the residual is not a number)."""
-    import sympy as sp
 
     def transform(expr: Any) -> Any:
         names = {s.name: s for s in expr.free_symbols}
@@ -161,8 +151,6 @@ def reference_area() -> Any:
     at z = 0 (line 126); h = (1/c)∫u dz judged between z1 and any z (_between); the cases: two
     pairs of consecutive elongations (h = 0 at both) and a pair with the same h ≠ 0 (the
     second point found by a scan for h(z2) = h(z1))."""
-    import mpmath
-
     zl, cl, zl1 = symbols("zl", "cl", "zl1")
     u = phi_of(zl / cl)  # J₁ only: the quadratures of Y₁ cost seconds
     exact = {"u": u, "h": u - zl * u.diff(zl)}
@@ -191,8 +179,6 @@ def reference_area() -> Any:
 
 
 def _phi_series(order: int) -> Any:
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     (x,) = symbols("x")
     exact = {
@@ -200,18 +186,13 @@ def _phi_series(order: int) -> Any:
         "varphi": phi_of(eps * x),
         "dvarphi_dx": phi_of(x).diff(x).subs(x, eps * x),
     }
-    return reference(exact, "φ = √x J₁(2√x)", scale=eps, order=order)
+    return reference(exact, "φ = √x J₁(2√x)")
 
 
 def reference_phi_series() -> Any:
     """(10), line 158: φ = √x J₁(2√x) (the text's own identification, line 160), x scaled by ε,
     through ε⁴."""
     return _phi_series(5)
-
-
-def reference_phi_prime_series() -> Any:
-    """(11), lines 164-166: the same through ε³, the last term (11) prints."""
-    return _phi_series(4)
 
 
 def _elongation_roots(count: int) -> list[Any]:
@@ -223,8 +204,6 @@ def _elongation_roots(count: int) -> list[Any]:
 def reference_elongations_of_12() -> Any:
     """(12) and lines 170-178 at the first three elongations of θl = φ (θ = gφ/(b²x)
     stationary, _elongation_roots): dθ = θ'(x)dx, dl/dx = b²/g."""
-    import sympy as sp
-
     x, b, g = symbols("x", "b", "g")
     phi = phi_of(x)
     theta = g * phi / (b**2 * x)
@@ -243,15 +222,11 @@ def reference_elongations_of_12() -> Any:
 def reference_eq13() -> Any:
     """Lines 182-188: (12)'s condition φ/x − φ' = 0 with φ = √x J₁(2√x), then divided by x
     (« en divisant par x »), x scaled by ε through ε² (the terms printed)."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     (x,) = symbols("x")
     condition = phi_of(x) / x - phi_of(x).diff(x)
     exact = {"x": eps * x}
-    return reference(
-        exact, "(12) with φ = √x J₁(2√x)", scale=eps, order=3, conditions=(condition, condition / x)
-    )
+    return reference(exact, "(12) with φ = √x J₁(2√x)", conditions=(condition, condition / x))
 
 
 def reference_x_is_xi() -> Any:
@@ -263,20 +238,16 @@ def reference_x_is_xi() -> Any:
 def reference_first_member_13() -> Any:
     """Line 196: the first member of (13) as (13) is derived, (φ/x − φ')/x with
     φ = √x J₁(2√x); x scaled by ε, through ε²."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     (x,) = symbols("x")
     member = ((phi_of(x) / x - phi_of(x).diff(x)) / x).subs(x, eps * x)
     exact = {"x": eps * x, "m13": member}
-    return reference(exact, "(12) divided by x", scale=eps, order=3)
+    return reference(exact, "(12) divided by x")
 
 
 def _elongation_root() -> Any:
     """The first x > 0 where θ ∝ φ/x = J₁(2√x)/√x is stationary (mpmath, 40 digits, the
     derivative taken analytically: d/dx J₁(2√x)/√x = J₁'(2√x)/x − J₁(2√x)/(2x√x))."""
-    import mpmath
-
     with mpmath.workdps(40):
 
         def slope(x: Any) -> Any:
@@ -291,8 +262,6 @@ def _elongation_root() -> Any:
 def reference_elongation_root() -> Any:
     """(14), lines 196-202: x = ξ, the first elongation (where d(φ/x)/dx = 0, found numerically), z
     = 2√ξ."""
-    import sympy as sp
-
     xi = sp.Float(mpmath_str(_elongation_root()), 40)
     return reference({"x": xi, "z": 2 * sp.sqrt(xi)}, "the first root of d(φ/x)/dx = 0")
 
@@ -300,8 +269,6 @@ def reference_elongation_root() -> Any:
 def reference_roots_interlace() -> Any:
     """Lines 204-206 at the five elongations below z = 20 (_elongation_roots, z = 2√ξ) and
     the roots of J₁ around each (mpmath.besseljzero)."""
-    import mpmath
-
     roots = _elongation_roots(5)
     with mpmath.workdps(40):
         j1 = [mpmath.besseljzero(1, k) for k in range(1, 7)]
@@ -316,8 +283,6 @@ def reference_amplitude_j0() -> Any:
     """Lines 234-236: θ = φ/l at the maxima, the same elongations (φ − xφ' = 0, i.e. J₂(z) = 0
     with z = 2√x, where 2J₁(z)/z = J₀(z)); l = (b²/g)x; lengths in metres (the memoir's φ is
     a pure number « multipliée par une constante arbitraire », line 160, here one metre)."""
-    import sympy as sp
-
     x, b, g = symbols("x", "b", "g")
     phi = phi_of(x)
     exact = {
@@ -333,24 +298,15 @@ def reference_amplitude_j0() -> Any:
 
 def reference_zero_length() -> Any:
     """Line 242: z = 2√x → 0 (x scaled by ε², z by ε): the limit is the ε⁰ term."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     x, z = symbols("x", "z")
-    return reference(
-        {"x": eps**2 * x, "z": eps * z, "varphi": phi_of(eps**2 * x)},
-        "J₁ near 0",
-        scale=eps,
-        order=1,
-    )
+    return reference({"x": eps**2 * x, "z": eps * z, "varphi": phi_of(eps**2 * x)}, "J₁ near 0")
 
 
 def reference_series_of_nine() -> Any:
     """Line 160: the solution of (9) analytic at 0 with u(0) = 0, u'(0) = 1 (the first term of
     (10)), by its own recursion n(n − 1)aₙ = −aₙ₋₁ (sympy rationals), x scaled by ε, through
     ε⁵; not Bessel's function, which the row's printed form names."""
-    import sympy as sp
-
     eps = sp.Symbol("eps_", positive=True)
     (x,) = symbols("x")
     terms, coefficient = [], sp.Integer(1)
@@ -359,52 +315,20 @@ def reference_series_of_nine() -> Any:
             coefficient = -coefficient / (n * (n - 1))
         terms.append(coefficient * (eps * x) ** n)
     exact = {"x": eps * x, "varphi": sp.Add(*terms)}
-    return reference(exact, "(9)'s solution by its recursion", scale=eps, order=6)
+    return reference(exact, "(9)'s solution by its recursion")
 
 
 def reference_speed_at_one_metre() -> Any:
     """Line 214: ξ = gl/b² (line 194) for the pendulum « ayant un mètre de longueur », l one
     metre (a length, kept a symbol); b, g positive."""
-    import sympy as sp
-
     b, g, metre = symbols("b", "g", "metre")
-    domain = {name: (sp.Rational(1, 10), sp.Integer(2)) for name in ("b", "g", "metre")}
-    return reference({"xi": g * metre / b**2}, "ξ = gl/b² at l = 1 m", domain=domain)
+    return reference({"xi": g * metre / b**2}, "ξ = gl/b² at l = 1 m")
 
 
 def reference_angular_speed_at_zero_length() -> Any:
     """Line 230: dθ/dt of (10)'s motion, θ = (g/b²)·φ/x times one metre (the memoir's φ carries
     a length, line 160), dθ/dt = b dθ/dl = (g/b) dθ/dx, at x → 0 (sympy's limit)."""
-    import sympy as sp
-
     x, b, g, metre = symbols("x", "b", "g", "metre")
     theta = metre * g * phi_of(x) / (b**2 * x)
     rate = sp.limit((g / b) * theta.diff(x), x, 0, "+")
-    domain = {name: (sp.Rational(1, 10), sp.Integer(2)) for name in ("b", "g", "metre")}
-    return reference({"dtheta_dt": rate}, "dθ/dt of (10)'s motion at l = 0", domain=domain)
-
-
-# the builders of this section, by the name the ledger cites
-REFERENCES: dict[str, Callable[[], Any]] = {
-    "reference_graphical": reference_graphical,
-    "reference_inflection": reference_inflection,
-    "reference_curvature": reference_curvature,
-    "reference_step_of_h": reference_step_of_h,
-    "reference_construction": reference_construction,
-    "reference_projections": reference_projections,
-    "reference_at_elongations": reference_at_elongations,
-    "reference_series_of_nine": reference_series_of_nine,
-    "reference_speed_at_one_metre": reference_speed_at_one_metre,
-    "reference_angular_speed_at_zero_length": reference_angular_speed_at_zero_length,
-    "reference_area": reference_area,
-    "reference_phi_series": reference_phi_series,
-    "reference_phi_prime_series": reference_phi_prime_series,
-    "reference_elongations_of_12": reference_elongations_of_12,
-    "reference_eq13": reference_eq13,
-    "reference_x_is_xi": reference_x_is_xi,
-    "reference_first_member_13": reference_first_member_13,
-    "reference_elongation_root": reference_elongation_root,
-    "reference_roots_interlace": reference_roots_interlace,
-    "reference_amplitude_j0": reference_amplitude_j0,
-    "reference_zero_length": reference_zero_length,
-}
+    return reference({"dtheta_dt": rate}, "dθ/dt of (10)'s motion at l = 0")

@@ -8,21 +8,21 @@ from __future__ import annotations
 
 from typing import Any
 
+import sympy as sp
+
 from pendcli.core.printed import ledger_symbols as real_symbols
+from pendcli.core.printed_check import Reference
 
 __all__ = ["cited", "derivative_along", "make_reference", "real_symbols"]
 
 
 def make_reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:
     """A :class:`~pendcli.core.printed_check.Reference` (its options passed through)."""
-    from pendcli.core.printed_check import Reference
-
     return Reference(exact, what=what, **kw)
 
 
 def derivative_along(rates: dict[Any, Any]) -> Any:
     """The derivative along a motion: f -> Σ ∂f/∂s · rate(s), over the symbols of ``rates``."""
-    import sympy as sp
 
     def derivative(f: Any) -> Any:
         return sp.Add(*(sp.diff(f, s) * v for s, v in rates.items()))

@@ -12,49 +12,26 @@ core/printed_numeric), by the sections of the paper, and their table :data:`REFE
 
 Each builder maps ledger symbols to exact expressions (or, for the numbers, computes them)
 from what the printed formula rests on, never from a copy of the formula the row prints.
-sympy is imported inside the functions (start-up stays fast).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
+import sys
 
+import sympy as sp
+
+from pendcli.core.ledger_references import builders
 from pendcli.core.printed_check import Reference
-from pendcli.papers.tisserand.references_differentials import (
-    ledger_symbols,
-    reference_definition_3,
-    reference_differential_4,
-    reference_first_integrals,
-    reference_first_integrals_in_psi,
-    reference_formula_5,
-    reference_formula_5_as_cited,
-    reference_formula_5_near_u_zero,
-    reference_small_angles,
-)
-from pendcli.papers.tisserand.references_numeric import (
-    numbers_displacement,
-    numbers_numerical_application,
-)
-from pendcli.papers.tisserand.references_prose import (
-    reference_angles_second_order,
-    reference_ellipse_axes,
-    reference_projection_radius,
-    reference_start_of_psi,
-    reference_uniform_rotation,
-)
+from pendcli.papers.tisserand import references_differentials as differentials
+from pendcli.papers.tisserand import references_numeric as numeric
+from pendcli.papers.tisserand import references_prose as prose
+from pendcli.papers.tisserand import references_series as series
+from pendcli.papers.tisserand.references_differentials import ledger_symbols, reference_definition_3
 from pendcli.papers.tisserand.references_series import (
+    in_kpt_reference,
+    motion_reference,
     motion_series,
-    reference_cited_in_kpt,
-    reference_in_kpt,
-    reference_in_kpt_order_4,
-    reference_motion,
-    reference_motion_order_2,
-    reference_motion_order_4,
 )
-
-__all__ = ["REFERENCES"]
-
 
 # --- the ellipse: (9), (10), (16), (17), p. 452 ------------------------------------------
 
@@ -62,8 +39,6 @@ __all__ = ["REFERENCES"]
 # (10), line 100, « d'où »: the tangent of (9)'s φ1.
 def reference_definition_9() -> Reference:
     """(9): φ1 = arctan((u1/u0) tan ψ)."""
-    import sympy as sp
-
     u0, u1, psi = ledger_symbols("u0", "u1", "psi")
     return Reference({"phi1": sp.atan(u1 / u0 * sp.tan(psi))}, what="(9)")
 
@@ -72,8 +47,6 @@ def reference_definition_9() -> Reference:
 # line 156: (3), (9) and (16) together.
 def reference_ellipse() -> Reference:
     """(3), (9) and (16): u as in (3), φ1 = arctan((u1/u0) tan ψ), ρ = lu, ρ0 = lu0, ρ1 = lu1."""
-    import sympy as sp
-
     u0, u1, psi, length = ledger_symbols("u0", "u1", "psi", "l")
     base = reference_definition_3()
     u = base.exact["u"]
@@ -84,7 +57,7 @@ def reference_ellipse() -> Reference:
         "rho0": length * u0,
         "rho1": length * u1,
     }
-    return Reference(exact, domain=base.domain, what="(3), (9), (16)")
+    return Reference(exact, what="(3), (9), (16)")
 
 
 # --- the summary (I)-(VI) and its approximations, p. 453-454 -----------------------------
@@ -93,80 +66,25 @@ def reference_ellipse() -> Reference:
 # (I), line 160: k' and k'' with k = √(g/l), to the orders line 158 announces.
 def reference_summary() -> Reference:
     """(I): k' through the sixth order, k'' through the fourth, as line 158 announces."""
-    return reference_motion(7, "(4), (5), (3): k' to order 6, k'' to order 4", {"kpp": 5})
-
-
-# Lines 172-178, « dans une première approximation »: ψ = k't, φ' = (3/8)u0u1k''t.
-def reference_first_approximation() -> Reference:
-    """« dans une première approximation »: ψ through the first order (its sin 2k't term is
-    of the second), φ' through the third (its periodic term is of the fourth)."""
-    return reference_in_kpt(5, "(4), (5), (3): ψ to order 1, φ' to order 3", {"psi": 2, "phip": 4})
+    return motion_reference(7, "(4), (5), (3): k' to order 6, k'' to order 4")
 
 
 # Line 180, « k'' diffère peu de l'unité »: the axis's angular velocity (Resal's solution).
 def reference_resal() -> Reference:
     """Line 180: k'' and the mean angular velocity of the major axis, dφ'/dt = k'·P (P the
     secular coefficient of φ' in ψ), k'' through the first order, the rate through the second."""
-    base = reference_motion(3, "(4), (5), (3): k'' to order 1, dφ'/dt to order 2", {"kpp": 2})
+    base = motion_reference(3, "(4), (5), (3): k'' to order 1, dφ'/dt to order 2")
     exact = {**base.exact, "dphip_dt": base.exact["kp"] * motion_series(3)["P"]}
-    return Reference(exact, scale=base.scale, order=3, what=base.what, orders=base.orders)
+    return Reference(exact, what=base.what)
 
 
 # Lines 182-188, « Deuxième approximation », and line 206, the periodic term cited again.
 def reference_second_approximation() -> Reference:
     """« Deuxième approximation »: ψ and φ' through the third order."""
-    return reference_in_kpt(4, "(4), (5), (3) in k't, to order 3")
-
-
-# Line 190, « La troisième approximation »: the sign of φ''s periodic term.
-def reference_third_approximation() -> Reference:
-    """Line 190: the exact motion in τ = k't through the fourth order, θ0 > θ1 (u0 > u1, the
-    apsides' order), for the sign of φ''s periodic term."""
-    import sympy as sp
-
-    base = reference_in_kpt_order_4()
-    r = sp.Rational
-    # an inequality holds only over the range stated: small amplitudes (the scale s of the
-    # series) and τ over (0, π) but its zero π/2, where the quotient is continued
-    domain = {"u0": (r(1, 2), r(7, 10)), "u1": (r(1, 10), r(3, 10))}
-    domain.update(s=(r(1, 100), r(1, 10)), tau=(r(1, 10), r(3)))
-    return Reference(base.exact, scale=base.scale, order=base.order, domain=domain, what=base.what)
+    return in_kpt_reference(4, "(4), (5), (3) in k't, to order 3")
 
 
 # --- the table the ledger's rows cite, in the order of the paper -------------------------
 
-REFERENCES: dict[str, Callable[[], Any]] = {
-    # p. 448-450: the first integrals, (3), the differentials and their developments
-    "reference_first_integrals": reference_first_integrals,
-    "reference_first_integrals_in_psi": reference_first_integrals_in_psi,
-    "reference_small_angles": reference_small_angles,
-    "reference_formula_5_as_cited": reference_formula_5_as_cited,
-    "reference_differential_4": reference_differential_4,
-    "reference_formula_5": reference_formula_5,
-    "reference_formula_5_near_u_zero": reference_formula_5_near_u_zero,
-    "reference_definition_3": reference_definition_3,
-    # p. 450-452: the series in ψ and in k't, (8)-(15), and the sentences citing them
-    "reference_motion_order_4": reference_motion_order_4,
-    "reference_in_kpt_order_4": reference_in_kpt_order_4,
-    "reference_motion_order_2": reference_motion_order_2,
-    "reference_cited_in_kpt": reference_cited_in_kpt,
-    # p. 452: the ellipse
-    "reference_definition_9": reference_definition_9,
-    "reference_ellipse": reference_ellipse,
-    # p. 453-454: the summary and its approximations
-    "reference_summary": reference_summary,
-    "reference_first_approximation": reference_first_approximation,
-    "reference_resal": reference_resal,
-    "reference_second_approximation": reference_second_approximation,
-    "reference_third_approximation": reference_third_approximation,
-    # the sentences' own claims (the reading record): Resal's ellipse, ψ = 0 at t = 0, the
-    # axes of (17), the angles' order
-    "reference_uniform_rotation": reference_uniform_rotation,
-    "reference_start_of_psi": reference_start_of_psi,
-    "reference_ellipse_axes": reference_ellipse_axes,
-    "reference_projection_radius": reference_projection_radius,  # (16), line 128
-    "reference_angles_second_order": reference_angles_second_order,
-    # p. 454: the numerical application
-    "numbers_numerical_application": numbers_numerical_application,
-    "numbers_displacement": numbers_displacement,
-}
+# Every builder the ledger cites, by its name there (core/ledger_references.builders).
+REFERENCES = builders(sys.modules[__name__], differentials, series, prose, numeric)

@@ -15,7 +15,10 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["numbers_displacement", "numbers_numerical_application"]
+import mpmath
+
+from pendcli.core.printed_numeric import Numbers
+from pendcli.papers.tisserand.model import series_conical
 
 COEFFICIENTS = (
     "tisserand.example.psi_sin2",
@@ -33,8 +36,6 @@ def _claim(claim_id: str) -> Any:
 def _coefficients(given: Mapping[str, float]) -> tuple[float, ...]:
     """The printed magnitudes of ψ's sin 2k't, sin 4k't and φ''s sin 2k't coefficients, in
     degrees, by (II) and (V) at θ0, θ1 given in degrees (30' is 0,5°)."""
-    from pendcli.papers.tisserand.model import series_conical
-
     theta0, theta1 = (math.radians(given[name]) for name in ("theta0", "theta1"))
     motion = series_conical(theta0, theta1, order=6)
     # ψ = k't − b1 sin 2k't + b2 sin 4k't as printed: the minus sign is the formula's
@@ -46,8 +47,6 @@ def _coefficients(given: Mapping[str, float]) -> tuple[float, ...]:
 # Lines 192-200: ψ and φ' for « θ0 = 30', θ1 = 15' », by (II) and (V).
 def numbers_numerical_application() -> Any:
     """Lines 192-200: the three coefficients for the printed amplitudes (inputs, not judged)."""
-    from pendcli.core.printed_numeric import Numbers
-
     published = (None, None, *((c, _claim(c)) for c in COEFFICIENTS))
     return Numbers(
         _coefficients,
@@ -59,8 +58,6 @@ def numbers_numerical_application() -> Any:
 
 def _shift(given: Mapping[str, float]) -> tuple[float]:
     """l sin θ0 |c| in millimetres, l as printed (metres), c = 2'42'' (line 200)."""
-    import mpmath
-
     from pendcli.core.tables import load_paper_table
 
     with mpmath.workdps(30):
@@ -74,8 +71,6 @@ def _shift(given: Mapping[str, float]) -> tuple[float]:
 def numbers_displacement() -> Any:
     """Line 202: « un petit déplacement égal au plus à un cinquième de millimètre », an upper
     bound, for the printed l = 0^m,5."""
-    from pendcli.core.printed_numeric import Numbers
-
     claim = "tisserand.example.displacement"
     return Numbers(
         _shift,

@@ -14,28 +14,16 @@ from __future__ import annotations
 from functools import cache
 from typing import Any
 
+import sympy as sp
+
 from pendcli.core.printed_check import Reference
 from pendcli.papers.taylor import degree_in, taylor
 from pendcli.papers.tisserand.references_differentials import ledger_symbols, scale
-
-__all__ = [
-    "motion_in_kpt",
-    "motion_series",
-    "reference_cited_in_kpt",
-    "reference_in_kpt",
-    "reference_in_kpt_order_4",
-    "reference_motion",
-    "reference_motion_order_2",
-    "reference_motion_order_4",
-    "series_symbols",
-]
 
 
 @cache
 def series_symbols() -> Any:
     """s (the scale), W (u²/s²), C (cos 2ψ), ψ, u0, u1, g, l: the ledger's real symbols."""
-    import sympy as sp
-
     return (
         scale(),
         sp.Symbol("W", real=True),
@@ -47,8 +35,6 @@ def series_symbols() -> Any:
 @cache
 def _ring() -> Any:
     """Sparse polynomials over ℚ in s, W, u0, u1 (sympy's ``ring``: fast products)."""
-    import sympy as sp
-
     return sp.ring("s W u0 u1", sp.QQ)
 
 
@@ -60,8 +46,6 @@ def _truncated(poly: Any, n: int) -> Any:
 
 def _binomial(p: Any, alpha: Any, n: int) -> Any:
     """(1 + p)**alpha through s**(n − 1), p of the ring without constant term."""
-    import sympy as sp
-
     ring = _ring()[0]
     total, term, j = ring.one, ring.one, 1
     while True:
@@ -75,8 +59,6 @@ def _binomial(p: Any, alpha: Any, n: int) -> Any:
 @cache
 def _differentials(n: int) -> tuple[Any, Any]:
     """k dt/dψ from (4) and u²·(1/(u0u1)) dφ/dψ from (5), through s**(n − 1), in s, W, u0, u1."""
-    import sympy as sp
-
     _, s, big_w, u0, u1 = _ring()
     half = sp.Rational(1, 2)
     c, c0, c1 = (_binomial(-(s**2) * v, half, n) for v in (big_w, u0**2, u1**2))
@@ -92,8 +74,6 @@ def _differentials(n: int) -> tuple[Any, Any]:
 
 def _integral_in_psi(expr: Any) -> Any:
     """∫₀^ψ expr dψ for expr a polynomial in C = cos 2ψ: each Cᵐ by its Fourier sum."""
-    import sympy as sp
-
     _, _, big_c, psi, *_ = series_symbols()
     total = sp.Integer(0)
     for (m,), coefficient in sp.Poly(sp.expand(expr), big_c).terms():
@@ -108,8 +88,6 @@ def _integral_in_psi(expr: Any) -> Any:
 def motion_series(n: int) -> dict[str, Any]:
     """kt(ψ), φ'(ψ) = φ − φ1 and their secular coefficients A (kt = Aψ + …) and P, from (4),
     (5) and (3), through s**(n − 1)."""
-    import sympy as sp
-
     s, big_w, big_c, psi, u0, u1, *_ = series_symbols()
     names = (s, big_w, u0, u1)
     k_dt_dpsi = _differentials(n)[0].as_expr(*names)
@@ -124,11 +102,9 @@ def motion_series(n: int) -> dict[str, Any]:
     return {"kt": kt, "phip": phip, "A": kt.coeff(psi, 1), "P": phip.coeff(psi, 1)}
 
 
-def reference_motion(n: int, what: str, orders: dict[str, int] | None = None) -> Reference:
+def motion_reference(n: int, what: str) -> Reference:
     """The exact motion (4), (5), (3) through s**(n − 1): t, φ, φ1, φ', k' (12), k'' (the rate
     of φ' over (3/8)u0u1), k = √(g/l), θ0, θ1 and u0, u1 scaled by s."""
-    import sympy as sp
-
     s, _, _, psi, u0, u1, g, length = series_symbols()
     series = motion_series(n)
     k = sp.sqrt(g / length)
@@ -147,13 +123,11 @@ def reference_motion(n: int, what: str, orders: dict[str, int] | None = None) ->
         "u0": s * u0,
         "u1": s * u1,
     }
-    return Reference(exact, scale=s, order=n, what=what, orders=orders or {})
+    return Reference(exact, what=what)
 
 
 def _below(expr: Any, n: int) -> Any:
     """``expr`` expanded, the terms of degree n and above in the scale s dropped."""
-    import sympy as sp
-
     s = series_symbols()[0]
     keep = [t for t in sp.Add.make_args(sp.expand(expr)) if degree_in(t, s) < n]
     return sp.Add(*keep)
@@ -162,8 +136,6 @@ def _below(expr: Any, n: int) -> Any:
 def _shifted(periodic: Any, delta: Any, n: int) -> Any:
     """``periodic``(ψ) = Σ c_m sin(2mψ) at ψ = τ + δ (δ = O(s²)): its Taylor series in δ,
     through s**(n − 1)."""
-    import sympy as sp
-
     psi, tau = series_symbols()[3], sp.Symbol("tau", real=True)
     total, power = sp.Integer(0), sp.Integer(1)
     for j in range((n + 1) // 2):
@@ -177,8 +149,6 @@ def _shifted(periodic: Any, delta: Any, n: int) -> Any:
 def motion_in_kpt(n: int) -> dict[str, Any]:
     """ψ and φ' as series in τ = k't, through s**(n − 1): kt(ψ)/A = ψ + Q(ψ) (12) inverted by
     the fixed point ψ = τ − Q(ψ), each pass exact one order (s²) further."""
-    import sympy as sp
-
     s, _, _, psi, *_ = series_symbols()
     tau = sp.Symbol("tau", real=True)
     series = motion_series(n)
@@ -192,14 +162,14 @@ def motion_in_kpt(n: int) -> dict[str, Any]:
     return {"psi": tau + delta, "phip": phip, "tau": tau}
 
 
-def reference_in_kpt(n: int, what: str, orders: dict[str, int] | None = None) -> Reference:
+def in_kpt_reference(n: int, what: str) -> Reference:
     """The exact motion as functions of τ = k't (t = τ/k'), through s**(n − 1)."""
-    base = reference_motion(n, what, orders)
+    base = motion_reference(n, what)
     in_tau = motion_in_kpt(n)
     exact = dict(base.exact)
     exact.update(psi=in_tau["psi"], phip=in_tau["phip"], t=in_tau["tau"] / base.exact["kp"])
     del exact["phi"], exact["phi1"]  # functions of ψ: not needed in τ
-    return Reference(exact, scale=base.scale, order=n, what=what, orders=orders or {})
+    return Reference(exact, what=what)
 
 
 # --- the builders the ledger cites ------------------------------------------------------------
@@ -209,19 +179,19 @@ def reference_in_kpt(n: int, what: str, orders: dict[str, int] | None = None) ->
 def reference_motion_order_4() -> Reference:
     """The exact motion through the fourth order in the angles: (8), (11), the line before
     (13), (13), (II), (15) are compared with it."""
-    return reference_motion(5, "(4), (5), (3) to order 4")
+    return motion_reference(5, "(4), (5), (3) to order 4")
 
 
 # (14), line 120: k'' printed to the second order.
 def reference_motion_order_2() -> Reference:
     """The exact motion through the second order: (14), printed to the second order."""
-    return reference_motion(3, "(4), (5), (3) to order 2")
+    return motion_reference(3, "(4), (5), (3) to order 2")
 
 
 # (13) lines 114-116, (15) line 124, and the summary's (II) line 162: series in k't.
 def reference_in_kpt_order_4() -> Reference:
     """The exact motion in τ = k't through the fourth order: (13), (II), (15)."""
-    return reference_in_kpt(5, "(4), (5), (3) in k't, to order 4")
+    return in_kpt_reference(5, "(4), (5), (3) in k't, to order 4")
 
 
 # Lines 126 and 154: the sentences citing (13), (15) and (10) together.
@@ -229,10 +199,8 @@ def reference_cited_in_kpt() -> Reference:
     """Lines 126 and 154: the exact motion in τ = k't through the fourth order, with φ1 and
     φ = φ1 + φ' as functions of τ (φ1 = arctan((u1/u0) tan ψ) of (9), at the exact ψ(τ)), so
     that the formulas a sentence cites, ψ (13), φ' (15), tan φ1 (10), are judged at one time."""
-    import sympy as sp
-
     base = reference_in_kpt_order_4()
     _, _, _, _, u0, u1, *_ = series_symbols()
     phi1 = sp.atan(u1 / u0 * sp.tan(base.exact["psi"]))
     exact = {**base.exact, "phi1": phi1, "phi": phi1 + base.exact["phip"]}
-    return Reference(exact, scale=base.scale, order=base.order, what="(4), (5), (3) in k't")
+    return Reference(exact, what="(4), (5), (3) in k't")
