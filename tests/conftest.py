@@ -48,6 +48,8 @@ SLOW_FAMILIES = {
     "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
     "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
+    "tests/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
+    "derived twice",
     "tests/test_prose_lecornu_later.py::test_the_reference_of_*": "the table after (26), sympy",
     "tests/test_prose_scales.py::test_the_engine_judges_*": "four inequalities judged, sympy",
     "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",

@@ -72,8 +72,17 @@ SHAPE = ("kind", "reference", "printed", "reading_formula", "corrected_formula")
 def _toml_table(header: str, table: dict[str, object]) -> str:
     # a JSON string, integer or list of integers is the same TOML value; keys bare where they
     # may be (as the committed ledger writes them), else quoted ("E()")
-    lines = [f"{_key(k)} = {json.dumps(v, ensure_ascii=False)}" for k, v in table.items()]
+    lines = [f"{_key(k)} = {_value(v)}" for k, v in table.items()]
     return "\n".join([header, *lines])
+
+
+def _value(value: object) -> str:
+    # a mapping (a row's domain, each_case) is an inline TOML table; the rest as JSON
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{_key(k)} = {_value(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, list) and any(isinstance(v, dict) for v in value):
+        return "[" + ", ".join(_value(v) for v in value) + "]"
+    return json.dumps(value, ensure_ascii=False)
 
 
 def _key(name: str) -> str:

@@ -301,3 +301,35 @@ def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift(
         ("p.b", "dimensions", "consistent", "inconsistent"),
         ("p.c", "(row)", "present", "gone"),
     }  # fmt: skip
+
+
+def test_check_fails_naming_the_row_whose_stored_derivation_the_code_no_longer_derives(
+    tmp_path, monkeypatch, capsys
+):
+    """`pendcli check` derives the ledger again (Tisserand's here) and compares it with
+    tables/derivations: one stored residual changed makes it fail before any table is
+    recomputed, naming the row and its reference; the untouched store passes this step."""
+    import json
+
+    from pendcli.core import derivation_store
+    from pendcli.papers import registry
+    from pendcli.run import regression
+
+    monkeypatch.setattr(registry, "ledger_papers", lambda: ["tisserand"])
+    assert regression._derivations(False, None) == []
+    stored = json.loads(derivation_store.store_path("tisserand").read_text(encoding="utf-8"))
+    row_id, record = next(
+        (k, v) for k, v in sorted(stored["rows"].items()) if "live" not in v and "forms" in v
+    )
+    item = record["forms"]["printed"]["items"][0]
+    item["expr"] = f"Add({item['expr']}, Integer(1))"
+    tampered = tmp_path / "tisserand.json"
+    monkeypatch.setattr(derivation_store, "store_path", lambda paper: tampered)
+    derivation_store.write_store("tisserand", stored["tables"], stored["rows"])
+    try:
+        assert regression.run_check() == 1
+    finally:  # written once more where it was, which empties the store's memo before the
+        # package's own store is read again
+        derivation_store.write_store("tisserand", stored["tables"], stored["rows"])
+    err = capsys.readouterr().err
+    assert f"{row_id}: the stored derivation differs from the code's {record['reference']}" in err

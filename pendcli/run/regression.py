@@ -21,6 +21,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from pendcli.core.derivation_store import stores_here
 from pendcli.core.errors import PendcliError
 from pendcli.core.files import lock_file, locked, replace_owned_folder, write_through
 from pendcli.core.tables import tables_dir
@@ -117,6 +118,11 @@ def run_check(
     _load_ledgers(root)
     if not update:  # a damaged committed table is named at once, not after the computation
         _read_committed_tables(folder)
+    stale = _derivations(update, root)
+    if stale:  # the statuses below are judged from these: stale ones would mislead
+        for line in stale:
+            console(stderr=True).print(line, markup=False, highlight=False)
+        return 1
     result = reproduce_all(keys(), formulas=True, equations=True, quiet=quiet or fmt != "table")
     tables = regenerated_tables(result)
     out = console()
@@ -146,11 +152,31 @@ def run_check(
     n = sum(len(v) for v in result.claims.values())
     f = sum(len(v) for v in result.formulas.values())
     e = sum(len(v) for v in result.equations.values())
+    again = "; the stored derivations derived again and equal"
+    derived = again if stores_here(root or tables_dir()) else ""
     out.print(
         f"check passed: {len(tables)} tables, {n} claims, {f} formulas, {e} ledger rows match "
-        f"tables/regenerated within tolerance"
+        f"tables/regenerated within tolerance{derived}"
     )
     return 0
+
+
+def _derivations(update: bool, root: Path | None) -> list[str]:
+    """Each ledger paper's stored derivations derived again (``tables/derivations/``): with
+    ``update``, written; else how they differ from what the code derives, a line per row
+    naming its reference (empty when every one agrees). Only the package's own tables have a
+    store; a tables folder of one's own is derived afresh when judged."""
+    from pendcli.core.ledger_references import derivation_drift, store_derivations
+    from pendcli.papers.registry import PAPERS, ledger_papers, paper
+
+    if not stores_here(root or tables_dir()):
+        return []
+    built_in = [k for k in ledger_papers() if k in PAPERS]  # an added paper has no store
+    if update:
+        for key in built_in:
+            store_derivations(paper(key))
+        return []
+    return [line for key in built_in for line in derivation_drift(paper(key))]
 
 
 def _read_committed_tables(folder: Path) -> None:
