@@ -18,6 +18,7 @@ PDF. Locating and marking the rows is :mod:`pendcli.output.html.marks`; the pape
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -320,7 +321,17 @@ def reference_words(texts: list[str]) -> dict[str, str]:
     from pendcli.core.reader_text import reference_descriptions
     from pendcli.papers import registry
 
-    tables = {p.key: reference_table(p) for p in registry.all_papers()}
+    # one pass over the texts for their words, rather than a search per builder name over
+    # megabytes of pages: only a name found among the words is searched for and built
+    words = {w for text in texts for w in re.findall(r"\w+", text)}
+    tables = {
+        p.key: {
+            name: builder
+            for name, builder in reference_table(p).items()
+            if name in words or not re.fullmatch(r"\w+", name)
+        }
+        for p in registry.all_papers()
+    }
     return reference_descriptions(texts, tables)
 
 
