@@ -7,7 +7,7 @@ work-precision plot; :class:`Drawing` shares the calls among ``jobs`` processes
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -99,6 +99,11 @@ class Drawing:
             by_key.setdefault(key, [])
             by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
         return by_key
+
+    def share(self, items: Sequence[Any], run: Callable[[Any], Any]) -> list[Any]:
+        """``run`` over ``items``, shared by the processes that drew (results in their
+        order): the report's pages, once the figures they embed are drawn."""
+        return self.workers.share(items, run, name=lambda item: f"the page of {item or 'report'}")
 
     def __exit__(self, *exc: Any) -> None:
         self.workers.__exit__(*exc)
