@@ -42,9 +42,10 @@ def figure_tasks(result: ReproduceResult, folder: Path, tradeoff: list[Point] | 
     from pendcli.papers.registry import paper
 
     tasks: list[Task] = []
-    for key in result.papers:
+    # the residual grids, the one of most panels first (their cost goes with their panels)
+    for key in sorted(result.formulas, key=lambda k: -len(result.formulas[k])):
         formula_figures = paper(key).formula_figures
-        if key in result.formulas and formula_figures is not None:
+        if key in result.papers and formula_figures is not None:
             args = (folder / "figures" / key / "formulas", result.formulas[key])
             tasks.append((key, "formulas", formula_figures, args))
     if tradeoff is not None:
