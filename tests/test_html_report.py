@@ -736,3 +736,36 @@ def test_a_running_head_is_shown_as_the_editions_page_break_not_as_text() -> Non
     for paper in ("tisserand", "lecornu"):  # no running head left in their OCR
         other = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
         assert 'class="pagebreak"' not in paper_page(paper, "", other, [], (), [])
+
+
+def test_reference_words_builds_only_the_names_the_texts_name(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Builders named as a whole word, not after a dot, are built; the others never are
+    (the texts are searched once for their words, then each found name as a word)."""
+    import pendcli.core.ledger_references as ledger_references
+    from pendcli.output.html.report import reference_words
+    from pendcli.papers import registry
+
+    built: list[str] = []
+
+    class Built:
+        def __init__(self, what: str) -> None:
+            self.what = what
+
+    def builder(name: str) -> object:
+        return lambda: built.append(name) or Built(f"what {name} models")
+
+    names = ["ref_a", "ref_b", "ref_c", "ref_d", "ref_é", "ref-e"]
+    table = {n: builder(n) for n in names}
+    monkeypatch.setattr(ledger_references, "reference_table", lambda p: table)
+    texts = ["against ref_a, and module.ref_b", "ref_cd and (ref_é) and ref-e."]
+    found = reference_words(texts)
+    joined = "\n".join(texts)
+    expected = {  # an independent search: each name as a word not after a dot
+        n for n in names if re.search(rf"(?<![\w.]){re.escape(n)}(?![\w])", joined)
+    }
+    assert set(found) == expected == {"ref_a", "ref_é", "ref-e"}
+    assert found["ref_a"] == "what ref_a models"
+    assert set(built) == expected  # ref_b, ref_c, ref_d never built
+    assert len(built) == len(expected) * len(registry.all_papers())

@@ -253,3 +253,41 @@ def test_report_html_pages_are_written_with_the_report(charbonnier_report):
     assert 'id="row-charbonnier.eq.9"' in page and 'class="hl s-misprint"' in page
     assert "data:image/png;base64," in page  # figures embedded: the page stands alone
     assert 'href="papers/charbonnier.html' in (out / "report.html").read_text("utf-8")
+
+
+def test_a_report_shared_by_two_processes_is_the_one_written_in_one(charbonnier_report, tmp_path):
+    """Figures and pages rendered by two processes: every file byte for byte as one writes
+    it (a page given to the wrong paper, or a figure missing from a page, differs)."""
+    result, alone = charbonnier_report
+    shared = tmp_path / "out"
+    write_report(result, shared, jobs=2)
+
+    def files(folder):
+        return sorted(p.relative_to(folder) for p in folder.rglob("*") if p.is_file())
+
+    assert files(shared) == files(alone)
+    for name in files(alone):
+        assert (shared / name).read_bytes() == (alone / name).read_bytes(), name
+
+
+def test_a_saved_figure_is_drawn_once_after_its_layout(tmp_path, monkeypatch):
+    """tight_layout measures the figure without drawing it; savefig then draws it once (an
+    engine left behind by tight_layout would make savefig draw everything twice)."""
+    from matplotlib.figure import Figure
+
+    from pendcli.core.plotting import new_figure
+
+    draws: list[float] = []
+    draw = Figure.draw
+
+    def counted(self, renderer):
+        draws.append(self.dpi)
+        return draw(self, renderer)
+
+    monkeypatch.setattr(Figure, "draw", counted)
+    with new_figure(tmp_path / "f.png", nrows=2) as (_fig, axes):
+        for ax in axes.flat:
+            ax.plot([1, 2, 3], [3, 1, 2])
+            ax.set_title("a title tight_layout makes room for")
+    assert draws == [120]  # once, at the saved resolution
+    assert (tmp_path / "f.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

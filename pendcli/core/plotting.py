@@ -60,6 +60,9 @@ def save_figure(fig: Figure, path: str | Path) -> Path:
     except OSError as exc:
         raise PendcliError(f"cannot create folder for plot {str(path)!r}: {exc.strerror}") from None
     fig.tight_layout()
+    # tight_layout leaves a placeholder layout engine behind, and savefig draws the whole
+    # figure once more (without rendering) for any engine: none, so it draws once
+    fig.set_layout_engine(None)
     metadata: dict[str, str | None] = {"Software": None} if suffix == ".png" else {"Creator": None}
     if suffix == ".pdf":
         metadata = {"Creator": None, "Producer": None, "CreationDate": None}

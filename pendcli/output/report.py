@@ -182,9 +182,11 @@ def _fill(
         for name, table in regenerated_tables(result).items():
             writer.text(f"tables/{name}", table)
         figures = drawing.results()
-    writer.status(f"drew {sum(p.suffix == '.png' for ps in figures.values() for p in ps)} figures")
-    writer.text("report.md", markdown_for_a_reader(_markdown(result, writer, figures, tradeoff)))
-    pages = _html_pages(result, folder, figures)
+        drew = sum(p.suffix == ".png" for ps in figures.values() for p in ps)
+        writer.status(f"drew {drew} figures")
+        markdown = _markdown(result, writer, figures, tradeoff)
+        writer.text("report.md", markdown_for_a_reader(markdown))
+        pages = _html_pages(result, folder, figures, drawing)  # the pages shared as the figures
     writer.add(pages)
     if pdf:  # inside the folder being built, so the manifest lists the PDFs too
         from pendcli.output.html.report import print_pdfs
@@ -217,9 +219,10 @@ def _markdown(
 
 
 def _html_pages(
-    result: ReproduceResult, folder: Path, figures: dict[str, list[Path]]
+    result: ReproduceResult, folder: Path, figures: dict[str, list[Path]], drawing: Drawing
 ) -> list[Path]:
-    """report.html and one annotated page per paper, figures embedded with their captions."""
+    """report.html and one annotated page per paper, figures embedded with their captions,
+    rendered by the processes that drew the figures."""
     from pendcli.output.html.report import Figure, write_for_result
 
     captioned = {
@@ -228,7 +231,7 @@ def _html_pages(
         ]
         for key, paths in figures.items()
     }
-    return write_for_result(result, folder, captioned, result.equations)
+    return write_for_result(result, folder, captioned, result.equations, drawing.share)
 
 
 @dataclass

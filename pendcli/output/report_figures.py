@@ -7,7 +7,7 @@ work-precision plot; :class:`Drawing` shares the calls among ``jobs`` processes
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -42,9 +42,10 @@ def figure_tasks(result: ReproduceResult, folder: Path, tradeoff: list[Point] | 
     from pendcli.papers.registry import paper
 
     tasks: list[Task] = []
-    for key in result.papers:
+    # the residual grids, the one of most panels first (their cost goes with their panels)
+    for key in sorted(result.formulas, key=lambda k: -len(result.formulas[k])):
         formula_figures = paper(key).formula_figures
-        if key in result.formulas and formula_figures is not None:
+        if key in result.papers and formula_figures is not None:
             args = (folder / "figures" / key / "formulas", result.formulas[key])
             tasks.append((key, "formulas", formula_figures, args))
     if tradeoff is not None:
@@ -99,6 +100,11 @@ class Drawing:
             by_key.setdefault(key, [])
             by_key[key] = [*paths, *by_key[key]] if claims_first else [*by_key[key], *paths]
         return by_key
+
+    def share(self, items: Sequence[Any], run: Callable[[Any], Any]) -> list[Any]:
+        """``run`` over ``items``, shared by the processes that drew (results in their
+        order): the report's pages, once the figures they embed are drawn."""
+        return self.workers.share(items, run, name=lambda item: f"the page of {item or 'report'}")
 
     def __exit__(self, *exc: Any) -> None:
         self.workers.__exit__(*exc)

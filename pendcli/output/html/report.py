@@ -18,7 +18,10 @@ PDF. Locating and marking the rows is :mod:`pendcli.output.html.marks`; the pape
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+import functools
+import re
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -170,6 +173,45 @@ def report_page(
     )  # fmt: skip
 
 
+# How a caller shares work among its processes (core/workers ForkedWorkers.share): ``run``
+# over the items, the results in their order.
+Share = Callable[[Sequence[Any], Callable[[Any], Any]], list[Any]]
+
+
+def _in_order(items: Sequence[Any], run: Callable[[Any], Any]) -> list[Any]:
+    return [run(item) for item in items]
+
+
+@dataclass(frozen=True)
+class _Pages:
+    """What the pages are made of (sent once to each process that renders some)."""
+
+    papers: Sequence[str]
+    citations: Mapping[str, str]
+    texts: Mapping[str, str]
+    claims: Mapping[str, Sequence[Row]]
+    formulas: Mapping[str, Sequence[Row]]
+    equations: Mapping[str, Sequence[Row]]
+    figures: Mapping[str, Sequence[Figure]]
+
+
+def _rendered(pages: _Pages, paper: str | None) -> str:
+    """The page of ``paper``, or (None) the overview."""
+    if paper is None:
+        return report_page(
+            pages.papers, pages.claims, pages.formulas, pages.equations, pages.figures.get("", [])
+        )
+    return paper_page(
+        paper,
+        pages.citations.get(paper, ""),
+        pages.texts.get(paper, ""),
+        pages.claims.get(paper, []),
+        pages.formulas.get(paper, []),
+        pages.equations.get(paper, []),
+        pages.figures.get(paper, []),
+    )
+
+
 def write_html_report(
     out: Path,
     papers: Sequence[str],
@@ -179,26 +221,21 @@ def write_html_report(
     formulas: Mapping[str, Sequence[Row]],
     equations: Mapping[str, Sequence[Row]],
     figures: Mapping[str, Sequence[Figure]],
+    share: Share | None = None,
 ) -> list[Path]:
-    """Write ``out/report.html`` and ``out/papers/<paper>.html`` (atomically); return them."""
+    """Write ``out/report.html`` and ``out/papers/<paper>.html`` (atomically); return them.
+    ``share``: how the pages are shared among processes (default: all rendered here), the
+    longest text first."""
     from pendcli.core.files import atomic_write
     from pendcli.core.reader_text import html_for_reader
 
     (out / "papers").mkdir(parents=True, exist_ok=True)
-    pages: dict[Path, str] = {}
-    for p in papers:
-        pages[out / "papers" / f"{p}.html"] = paper_page(
-            p,
-            citations.get(p, ""),
-            texts.get(p, ""),
-            claims.get(p, []),
-            formulas.get(p, []),
-            equations.get(p, []),
-            figures.get(p, []),
-        )
-    pages[out / "report.html"] = report_page(
-        papers, claims, formulas, equations, figures.get("", [])
-    )
+    made = _Pages(papers, citations, texts, claims, formulas, equations, figures)
+    order: list[str | None] = [*sorted(papers, key=lambda p: -len(texts.get(p, ""))), None]
+    rendered = (share or _in_order)(order, functools.partial(_rendered, made))
+    by_page = dict(zip(order, rendered, strict=True))
+    pages = {out / "papers" / f"{p}.html": by_page[p] for p in papers}
+    pages[out / "report.html"] = by_page[None]
     # what a historian reads: no module path, no builder name, no raw TeX (core/reader_text)
     references = reference_words(list(pages.values()))
     return [atomic_write(path, html_for_reader(page, references)) for path, page in pages.items()]
@@ -226,8 +263,10 @@ def write_for_result(
     out: Path,
     figures: Mapping[str, Sequence[Figure]],
     equations: Mapping[str, Sequence[EquationRow]] | None = None,
+    share: Share | None = None,
 ) -> list[Path]:
-    """The HTML pages of a reproduction: rows from ``result``, texts from tables/papers/."""
+    """The HTML pages of a reproduction: rows from ``result``, texts from tables/papers/
+    (``share``: as :func:`write_html_report`'s)."""
     from pendcli.core.tables import load_paper_table, tables_dir
     from pendcli.papers.registry import paper
 
@@ -252,6 +291,7 @@ def write_for_result(
             for key, rows in (equations or {}).items()
         },
         figures,
+        share,
     )
 
 
@@ -320,7 +360,17 @@ def reference_words(texts: list[str]) -> dict[str, str]:
     from pendcli.core.reader_text import reference_descriptions
     from pendcli.papers import registry
 
-    tables = {p.key: reference_table(p) for p in registry.all_papers()}
+    # one pass over the texts for their words, rather than a search per builder name over
+    # megabytes of pages: only a name found among the words is searched for and built
+    words = {w for text in texts for w in re.findall(r"\w+", text)}
+    tables = {
+        p.key: {
+            name: builder
+            for name, builder in reference_table(p).items()
+            if name in words or not re.fullmatch(r"\w+", name)
+        }
+        for p in registry.all_papers()
+    }
     return reference_descriptions(texts, tables)
 
 
