@@ -195,6 +195,26 @@ def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(registry, "evaluate", lambda key: list(committed_claims(key)))
 
 
+@pytest.fixture
+def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """For the tests of a command's output form that run it several times (at several widths,
+    in several formats): ``reproduce_all`` computes each set of arguments once in the test and
+    serves it again, so `check`, which never reads the result cache, does not compute every
+    table again for each form. No test of a computation uses it."""
+    from pendcli.run import reproduce
+
+    computed = reproduce.reproduce_all
+    done: dict[str, object] = {}
+
+    def once(*args: object, **kwargs: object) -> object:
+        key = repr((args, sorted(kwargs.items())))
+        if key not in done:
+            done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
+        return done[key]
+
+    monkeypatch.setattr(reproduce, "reproduce_all", once)
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     members: dict[str, list[pytest.Item]] = defaultdict(list)
