@@ -197,21 +197,40 @@ def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(registry, "evaluate", lambda key: list(committed_claims(key)))
 
 
+@pytest.fixture
+def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """For the tests of a command's output form that run it several times (at several widths,
+    in several formats): ``reproduce_all`` computes each set of arguments once in the test and
+    serves it again, so `check`, which never reads the result cache, does not compute every
+    table again for each form. No test of a computation uses it."""
+    from pendcli.run import reproduce
+
+    computed = reproduce.reproduce_all
+    done: dict[str, object] = {}
+
+    def once(*args: object, **kwargs: object) -> object:
+        key = repr((args, sorted(kwargs.items())))
+        if key not in done:
+            done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
+        return done[key]
+
+    monkeypatch.setattr(reproduce, "reproduce_all", once)
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     members: dict[str, list[pytest.Item]] = defaultdict(list)
     for item in items:
         family, _, params = item.nodeid.partition("[")
-        reasons = [why for pattern, why in SLOW_FAMILIES.items() if _matches(family, pattern)]
-        reasons += [why for (test, part), why in SLOW_CASES.items()
-                    if family == test and part in params]  # fmt: skip
+        slow_family, cases, representative = _family(family)
+        reasons = list(slow_family)
+        reasons += [why for part, why in cases if part in params]
         names = getattr(item, "fixturenames", ())
         reasons += [why for name, why in SLOW_FIXTURES.items() if name in names]
         if reasons:
             _mark_slow(item, reasons[0])
-        for pattern in REPRESENTATIVES:
-            if _matches(family, pattern):
-                members[pattern].append(item)
+        for pattern in representative:
+            members[pattern].append(item)
     split = dict.fromkeys(REPRESENTATIVES, (0, 0))
     for pattern, family_items in members.items():
         # the rank among the family's cases that are not slow already, in parameter order
@@ -227,9 +246,16 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     config.stash[suite_split.COLLECTED] = [item.nodeid for item in items]
 
 
-@cache  # a family id is asked about once per pattern: 3,800 items, 60 patterns
-def _matches(family: str, pattern: str) -> bool:
-    return fnmatchcase(family, pattern)
+@cache  # asked once per family (file::function), not once per case: 5,000 items, 1,100 families
+def _family(
+    family: str,
+) -> tuple[tuple[str, ...], tuple[tuple[str, str], ...], tuple[str, ...]]:
+    """The family's reasons to be slow by its id, its slow cases (a part of the parameters'
+    id, why) and the REPRESENTATIVES patterns it matches."""
+    reasons = tuple(why for pattern, why in SLOW_FAMILIES.items() if fnmatchcase(family, pattern))
+    cases = tuple((part, why) for (test, part), why in SLOW_CASES.items() if test == family)
+    representative = tuple(p for p in REPRESENTATIVES if fnmatchcase(family, p))
+    return reasons, cases, representative
 
 
 def _param_indices(item: pytest.Item) -> tuple[int, ...]:

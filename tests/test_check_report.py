@@ -92,7 +92,7 @@ def test_update_of_an_unreadable_committed_table_says_so(tmp_path):
 
 
 @pytest.mark.slow
-def test_check_json_and_junit_from_the_command_line():
+def test_check_json_and_junit_from_the_command_line(reproduce_computed_once):
     code, out, _ = invoke("check", "--format", "json")
     assert code == 0
     assert json.loads(out)["passed"] is True

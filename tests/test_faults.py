@@ -61,10 +61,26 @@ def leftovers(tables: Path) -> list[str]:
 
 
 def write_signature(tables: Path) -> list[tuple[str, int, int]]:
-    """What a writer of the set changes first: a temporary folder beside, or a table's stat."""
-    files = sorted((tables / "regenerated").glob("*")) if (tables / "regenerated").is_dir() else []
-    stats = [(p.name, p.stat().st_mtime_ns, p.stat().st_size) for p in files if p.exists()]
-    return [(name, 0, 0) for name in leftovers(tables)] + stats
+    """What a writer of the set changes first: a temporary folder beside, or a table's stat.
+    Polled every half millisecond while a whole `check --update` runs: one listing of each
+    folder and one stat per file (a quarter of the CPU of globbing and stating each twice)."""
+    stats = []
+    for entry in _entries(tables / "regenerated"):
+        try:
+            stat = entry.stat()
+        except FileNotFoundError:  # removed since the listing
+            continue
+        stats.append((entry.name, stat.st_mtime_ns, stat.st_size))
+    beside = [e.name for e in _entries(tables) if e.name.startswith(".regenerated.") and e.is_dir()]
+    return [(name, 0, 0) for name in sorted(beside)] + sorted(stats)
+
+
+def _entries(folder: Path) -> list[os.DirEntry[str]]:
+    try:
+        with os.scandir(folder) as found:
+            return list(found)
+    except FileNotFoundError:
+        return []
 
 
 def cli_command(*args: str) -> list[str]:

@@ -141,17 +141,27 @@ def test_a_number_that_appears_or_vanishes_is_drift():
 
 
 def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
-    """Untouched, the check passes; one run with a printed value edited, a committed verdict
-    and a committed ledger status tampered names each of the three drifts by its row."""
+    """Untouched, `pendcli check` passes and never reads the result cache (it is the CI's
+    drift detector: the cache's key cannot see an environment that changes a BLAS kernel, so
+    it always computes); one run with a printed value edited, a committed verdict and a
+    committed ledger status tampered names each of the three drifts by its row."""
+    from cli_helpers import invoke
+
     from pendcli.api import check
+    from pendcli.core.cache import ResultCache
     from pendcli.core.tables import clear_table_cache, tables_dir
-    from pendcli.run.regression import run_check
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
     clear_table_cache()
     try:
-        assert run_check(quiet=True) == 0
+        reads: list[object] = []
+        with monkeypatch.context() as spied:
+            spied.setattr(ResultCache, "get", lambda self, *args: reads.append(args))
+            spied.setenv("PENDCLI_CACHE", str(tmp_path / "cache"))
+            result = invoke("check", "--format", "json")
+        assert result.code == 0, result.err
+        assert reads == [] and not any((tmp_path / "cache").rglob("*"))
         path = tmp_path / "tables" / "published" / "charbonnier.toml"
         text = path.read_text(encoding="utf-8")
         path.write_text(text.replace('published = "2·2/(1·3)"', 'published = "2·2/(1·5)"'), "utf-8")

@@ -45,7 +45,9 @@ def _render(args, width, monkeypatch, cache):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("args", COMMANDS, ids=" ".join)
-def test_no_token_is_cut_at_80_or_120_columns(args, monkeypatch, shared_result_cache):
+def test_no_token_is_cut_at_80_or_120_columns(
+    args, monkeypatch, shared_result_cache, reproduce_computed_once
+):
     whole = set(_render(args, 1000, monkeypatch, shared_result_cache).split())
     for width in (80, 120):
         out = _render(args, width, monkeypatch, shared_result_cache)

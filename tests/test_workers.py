@@ -15,6 +15,7 @@ import time
 from pathlib import Path
 
 import pytest
+from cli_helpers import invoke
 
 from pendcli.core.workers import ForkedWorkers, WorkerDied, job_count
 
@@ -281,16 +282,22 @@ def test_job_count(monkeypatch: pytest.MonkeyPatch) -> None:
 def test_a_bad_process_count_is_one_line_naming_the_variable_and_the_range(
     value: str, tmp_path: Path
 ) -> None:
-    """Through the real CLI: one line, exit 2, no traceback (it used to run with the default)."""
-    env = {**os.environ, "PENDCLI_JOBS": value, "PENDCLI_CACHE": str(tmp_path)}
-    done = subprocess.run(
-        [sys.executable, "-m", "pendcli", "equations", "-p", "tisserand", "-f", "json"],
-        env=env,
-        capture_output=True,
-        text=True,
-    )
-    assert done.returncode == 2 and done.stdout == ""
-    assert done.stderr.strip().splitlines() == [
+    """One line, exit 2, no traceback (it used to run with the default): the first value
+    through the real CLI in a fresh process, the others through the same entry point here."""
+    env = {"PENDCLI_JOBS": value, "PENDCLI_CACHE": str(tmp_path)}
+    args = ("equations", "-p", "tisserand", "-f", "json")
+    if value == "abc":
+        done = subprocess.run(
+            [sys.executable, "-m", "pendcli", *args],
+            env={**os.environ, **env},
+            capture_output=True,
+            text=True,
+        )
+        code, out, err = done.returncode, done.stdout, done.stderr
+    else:
+        code, out, err = invoke(*args, env=env)
+    assert code == 2 and out == ""
+    assert err.strip().splitlines() == [
         "pendcli: error: PENDCLI_JOBS must be a whole number of processes, 1 or more, "
         f"got {value!r}"
     ]
