@@ -92,7 +92,7 @@ check: $(RUNTIME)
 	$(BIN)/python -m tools.docs --check
 
 # One process, one run: the regenerated tables and the README's sections written as one set
-# (pendcli.core.files.write_set), so an interrupt leaves all old or all new.
+# (pendcli.base.files.write_set), so an interrupt leaves all old or all new.
 regen: $(RUNTIME)
 	$(BIN)/python -m tools.docs --tables
 

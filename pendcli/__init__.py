@@ -27,10 +27,10 @@ The functions (``help(pendcli.api)`` documents each):
 Names load on first use (PEP 562): ``import pendcli`` imports none of scipy, mpmath, sympy
 or matplotlib, and ``pendcli --help`` stays instant.
 
-Layout: :mod:`pendcli.core` (printed numbers, verdicts, published tables, the claim and
-formula engines, errors), :mod:`pendcli.output` (one renderer per output format, knowing
-nothing of pendulums), :mod:`pendcli.numerics` (Bessel zeros, planar and spherical
-pendulum done exactly), :mod:`pendcli.papers` (one package per paper: its model, claims,
+Layout: :mod:`pendcli.base`, :mod:`pendcli.data`, :mod:`pendcli.verify` (printed numbers, verdicts,
+published tables, the claim and formula engines, errors), :mod:`pendcli.output` (one renderer per
+output format, knowing nothing of pendulums), :mod:`pendcli.numerics` (Bessel zeros, planar and
+spherical pendulum done exactly), :mod:`pendcli.papers` (one package per paper: its model, claims,
 formulas, figures and speed/accuracy families) and :mod:`pendcli.cli`, a thin adapter.
 """
 
@@ -50,7 +50,7 @@ if TYPE_CHECKING:
         period_ratio,
         reproduce,
     )
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
     from pendcli.papers.registry import PAPERS
     from pendcli.run.regression import Drift
     from pendcli.run.reproduce import ReproduceResult
@@ -66,7 +66,7 @@ _LAZY = {
     "period_ratio": "pendcli.api",
     "reproduce": "pendcli.api",
     "PAPERS": "pendcli.papers.registry",
-    "PendcliError": "pendcli.core.errors",
+    "PendcliError": "pendcli.base.errors",
     "Drift": "pendcli.run.regression",
     "ReproduceResult": "pendcli.run.reproduce",
 }

@@ -125,7 +125,7 @@ def check(tables: str | Path | None = None) -> list[Drift]:
     """Regenerate every table and compare it with the committed ones in
     ``tables/regenerated`` (or ``<tables>/regenerated``): the list of drifts beyond the
     tolerances (:data:`pendcli.run.regression.TOLERANCES`), empty when everything holds."""
-    from pendcli.core.tables import tables_dir
+    from pendcli.data.tables import tables_dir
     from pendcli.papers.registry import PAPERS
     from pendcli.run.regression import find_drifts, regenerated_tables
     from pendcli.run.reproduce import reproduce_all

@@ -13,7 +13,7 @@ settings.register_profile("pendcli", deadline=None)
 settings.load_profile("pendcli")
 
 
-# The result cache (pendcli/core/cache.py) is off in every test and every process a test
+# The result cache (pendcli/base/cache.py) is off in every test and every process a test
 # starts: no test is served a result stored outside it (the user's ~/.cache/pendcli), nor one
 # an earlier test stored, which would make a test of determinism, of the forked workers or of
 # an interrupt compare a computation with a copy of itself. tests/test_cache.py gives each of
@@ -164,7 +164,7 @@ def tables(tmp_path, monkeypatch):  # type: ignore[no-untyped-def]
     import shutil
     from pathlib import Path
 
-    from pendcli.core.tables import clear_table_cache
+    from pendcli.data.tables import clear_table_cache
 
     copy = tmp_path / "tables"
     committed = Path(__file__).resolve().parent.parent / "tables"

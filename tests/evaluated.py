@@ -9,7 +9,7 @@ from __future__ import annotations
 import os
 from functools import cache
 
-from pendcli.core.rows import ClaimRow, FormulaRow
+from pendcli.data.rows import ClaimRow, FormulaRow
 from pendcli.papers.registry import evaluate, formula_checks
 
 

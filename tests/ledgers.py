@@ -9,7 +9,7 @@ from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
-from pendcli.core.ledger import Ledger, LedgerRow, load_ledger
+from pendcli.data.ledger import Ledger, LedgerRow, load_ledger
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 
@@ -50,7 +50,7 @@ def committed_row(row_id: str) -> LedgerRow:
 
 def paragraphs_by_hand(text: str) -> list[tuple[int, int]]:
     """The text's paragraphs of prose counted by hand, independently of
-    pendcli.core.reading.prose_paragraphs: a line is prose unless it lies in a $$ block (the
+    pendcli.data.reading.prose_paragraphs: a line is prose unless it lies in a $$ block (the
     blocks of the committed texts begin and end on lines of their own)."""
     spans: list[tuple[int, int]] = []
     inside, first = False, None

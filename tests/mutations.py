@@ -4,7 +4,7 @@ refused).
 
 The edit is made to the committed ledger's text in memory and validated by the loader's own
 ``parse_ledger`` under the committed path. A formula's parse is cached on its text and symbol
-table (``pendcli.core.printed.parse_formula``), so the rows the edit leaves alone are served
+table (``pendcli.data.printed.parse_formula``), so the rows the edit leaves alone are served
 from the cache and only the edited one is parsed again; a reference is cached on its name and
 the tables folder, so one row's reference is built once per process, not once per case. A
 copy of tables/ (``altered_tables``) is made only where the judgement reads the edited file
@@ -17,7 +17,7 @@ import shutil
 import tomllib
 from pathlib import Path
 
-from pendcli.core.ledger import (
+from pendcli.data.ledger import (
     Ledger,
     LedgerRow,
     References,

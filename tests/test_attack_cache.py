@@ -29,16 +29,16 @@ from typing import Any
 import pytest
 from cli_helpers import invoke
 
-from pendcli.core import cache as cache_module
-from pendcli.core.cache import (
+from pendcli.base import cache as cache_module
+from pendcli.base.cache import (
     MARKER,
     MAX_HASHED_BYTES,
     ResultCache,
     cached_json,
     content_digest,
 )
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import tables_dir
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import tables_dir
 
 PENDCLI = (sys.executable, "-m", "pendcli")
 HANG_GUARD = 300  # seconds: only so that a hang fails the test run instead of stopping it

@@ -28,8 +28,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from markdown_it import MarkdownIt
 
-from pendcli.core.rows import ClaimRow
-from pendcli.core.vocabulary import Verdict
+from pendcli.data.rows import ClaimRow
+from pendcli.data.vocabulary import Verdict
 from pendcli.output.columns import Column
 from pendcli.output.html.math import MATHML_ATTRIBUTES, MATHML_ELEMENTS, sanitise_mathml, to_mathml
 from pendcli.output.html.paper import paper_page

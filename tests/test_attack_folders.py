@@ -18,8 +18,8 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.files import (
+from pendcli.base.errors import PendcliError
+from pendcli.base.files import (
     MANIFEST,
     atomic_write,
     lock_file,
@@ -140,7 +140,7 @@ def test_kill_9_during_atomic_write_leaves_a_leftover_the_next_write_removes(
     target = tmp_path / "p.png"
     writer = textwrap.dedent(
         f"""
-        from pendcli.core.files import atomic_write
+        from pendcli.base.files import atomic_write
         print("go", flush=True)
         while True:
             atomic_write({str(target)!r}, b"x" * 4_000_000)

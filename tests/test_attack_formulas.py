@@ -22,11 +22,11 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 from sympy.parsing.sympy_parser import parse_expr
 
-from pendcli.core import formula_grammar as grammar
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import parse_ledger
-from pendcli.core.printed import parse_dimension, parse_formula
-from pendcli.core.tables import clear_table_cache
+from pendcli.base.errors import PendcliError
+from pendcli.data import formula_grammar as grammar
+from pendcli.data.ledger import parse_ledger
+from pendcli.data.printed import parse_dimension, parse_formula
+from pendcli.data.tables import clear_table_cache
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 LEDGER = Path("tables/equations/tisserand.toml")
@@ -243,7 +243,7 @@ def test_each_bound_is_one_line_naming_the_row_and_the_limit(
 
 def test_within_the_bounds_a_formula_still_parses() -> None:
     """The largest of each kind the bounds allow (what the committed ledgers need is far
-    below: see the constants of core/formula_grammar)."""
+    below: see the constants of data/formula_grammar)."""
     load("rho = l*u**" + str(grammar.MAX_EXPONENT))
     load("u = factorial2(" + str(grammar.MAX_FACTORIAL2) + ")")
     load("u = " + "9" * grammar.MAX_NUMBER_DIGITS)

@@ -110,8 +110,8 @@ FILL_UNTIL_EMFILE = textwrap.dedent(
     """
     import os, resource, sys
     from pathlib import Path
-    from pendcli.core.errors import PendcliError
-    from pendcli.core.files import replace_owned_folder
+    from pendcli.base.errors import PendcliError
+    from pendcli.base.files import replace_owned_folder
 
     font = Path(sys.argv[1])  # a file only read, as matplotlib reads its fonts
 
@@ -169,7 +169,7 @@ def test_a_newline_in_a_path_is_shown_escaped_in_one_whole_line(tmp_path):
 
 
 def test_every_control_character_of_a_message_is_escaped():
-    from pendcli.core.errors import one_line as whole
+    from pendcli.base.errors import one_line as whole
 
     assert whole("a\nb\r\x1b[31mc\u2028d θ ≤ é\t") == "a\\nb\\r\\x1b[31mc\\u2028d θ ≤ é\\t"
 

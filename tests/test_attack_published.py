@@ -24,10 +24,10 @@ from cli_helpers import assert_clean_error, invoke
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from pendcli.core import numbers
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import load_ledger
-from pendcli.core.numbers import (
+from pendcli.base.errors import PendcliError
+from pendcli.data import numbers
+from pendcli.data.ledger import load_ledger
+from pendcli.data.numbers import (
     MAX_PRINTED_CHARS,
     MAX_PRINTED_DIGITS,
     MAX_PRINTED_FACTORS,
@@ -36,10 +36,10 @@ from pendcli.core.numbers import (
     PrintedNumber,
     parse_printed,
 )
-from pendcli.core.tables import clear_table_cache, load_paper_table
-from pendcli.core.verdict import judge
-from pendcli.core.vocabulary import Verdict
+from pendcli.data.tables import clear_table_cache, load_paper_table
+from pendcli.data.vocabulary import Verdict
 from pendcli.papers.registry import PAPERS
+from pendcli.verify.verdict import judge
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
 PENDCLI = Path(sys.executable).with_name("pendcli")

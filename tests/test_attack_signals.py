@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.files import MANIFEST, manifest_text, remove_stale
+from pendcli.base.files import MANIFEST, manifest_text, remove_stale
 
 PENDCLI = Path(sys.executable).with_name("pendcli")
 CHEAP = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")
@@ -144,7 +144,7 @@ def test_a_signal_lost_where_python_ignores_exceptions_is_delivered_again() -> N
     script = textwrap.dedent(
         """
         import os, signal, sys
-        from pendcli.core.interrupts import run_entry
+        from pendcli.base.interrupts import run_entry
 
         class Trap:
             def __del__(self):
@@ -169,8 +169,8 @@ _SET_WRITER = textwrap.dedent(
     """
     import sys
     from pathlib import Path
-    from pendcli.core.files import write_set
-    from pendcli.core.interrupts import run_entry
+    from pendcli.base.files import write_set
+    from pendcli.base.interrupts import run_entry
 
     def main():
         root = Path(sys.argv[1])
@@ -231,7 +231,7 @@ def test_a_signal_while_a_plot_is_written_leaves_no_cut_file_and_no_lasting_left
 ) -> None:
     """Stopped while its temporary exists: no ``p.png`` or a whole one; TERM removes the
     temporary on the way out, and a SIGKILL's is removed by the next write of that file."""
-    from pendcli.core.files import atomic_write
+    from pendcli.base.files import atomic_write
 
     proc = subprocess.Popen(
         [str(PENDCLI), "tisserand", "example", "--plot", "p.png", "-q"],

@@ -22,8 +22,8 @@ from pathlib import Path
 import pytest
 from cli_helpers import assert_clean_error, invoke
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import clear_table_cache, load_paper_table
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import clear_table_cache, load_paper_table
 from pendcli.papers.registry import PAPERS
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"

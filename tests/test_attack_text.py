@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 from cli_helpers import assert_clean_error, invoke, run_cli
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import MAX_TABLE_BYTES, clear_table_cache, load_paper_table
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import MAX_TABLE_BYTES, clear_table_cache, load_paper_table
 
 REPO_TABLES = Path(__file__).resolve().parent.parent / "tables"
 # every character the rule refuses, by class: C0 controls, DEL and C1, the bidi controls

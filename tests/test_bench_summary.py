@@ -141,9 +141,9 @@ def test_the_derivations_floor_is_a_row_of_the_table_and_a_headline_as_its_share
 def test_the_derivations_floor_command_reads_every_stored_row_of_every_ledger(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    from pendcli.core import derivation_store
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
     from pendcli.papers.registry import ledger_papers
+    from pendcli.verify import derivation_store
 
     read: list[str] = []
     real = derivation_store.row_record
@@ -157,7 +157,7 @@ def test_the_derivations_floor_command_reads_every_stored_row_of_every_ledger(
 
 
 def test_the_ledgers_floor_command_reads_every_ledger(monkeypatch: pytest.MonkeyPatch) -> None:
-    from pendcli.core import ledger
+    from pendcli.data import ledger
     from pendcli.papers.registry import ledger_papers
 
     read: list[str] = []

@@ -9,7 +9,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     METHODS,

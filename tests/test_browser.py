@@ -21,8 +21,8 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.ledger import load_ledger
-from pendcli.core.tables import load_paper_table
+from pendcli.data.ledger import load_ledger
+from pendcli.data.tables import load_paper_table
 from pendcli.output.html.report import chromium, write_for_result
 from pendcli.papers.registry import PAPERS
 from pendcli.run.reproduce import reproduce_all

@@ -1,4 +1,4 @@
-"""The result cache (pendcli/core/cache.py): a warm run prints the cold run's bytes, any byte
+"""The result cache (pendcli/base/cache.py): a warm run prints the cold run's bytes, any byte
 changed in the code or the tables is a miss, and a damaged, disabled or unwritable cache
 never changes an output or fails a run."""
 
@@ -17,8 +17,8 @@ import pytest
 from cli_helpers import invoke
 
 import pendcli.papers.registry as registry
-from pendcli.core import cache as cache_module
-from pendcli.core.cache import (
+from pendcli.base import cache as cache_module
+from pendcli.base.cache import (
     FORMAT,
     ResultCache,
     cache_folder,
@@ -26,8 +26,8 @@ from pendcli.core.cache import (
     rows_from_json,
     rows_to_json,
 )
-from pendcli.core.rows import ClaimRow, EquationRow, FormulaRow
-from pendcli.core.tables import clear_table_cache, tables_dir
+from pendcli.data.rows import ClaimRow, EquationRow, FormulaRow
+from pendcli.data.tables import clear_table_cache, tables_dir
 
 FORMATS = ("table", "json", "csv", "markdown")
 # tisserand, with its ledger cut to one row of each kind (_small_tables): every cached unit
@@ -167,7 +167,7 @@ def test_one_byte_changed_in_a_source_file_is_a_miss(tmp_path):
     package = tmp_path / "pendcli"
     shutil.copytree(Path(cache_module.__file__).parent.parent, package, symlinks=True)
     before = content_digest([("pendcli", package)])
-    source = package / "core" / "verdict.py"
+    source = package / "verify" / "verdict.py"
     data = bytearray(source.read_bytes())
     data[len(data) // 2] ^= 0x01
     source.write_bytes(bytes(data))
@@ -372,7 +372,7 @@ def test_another_version_of_a_library_is_another_key(tmp_path, monkeypatch):
     installed beside them (`make test` adds pytest, ruff, mypy) keeps the key."""
     import sys
 
-    from pendcli.core import cache, versions
+    from pendcli.base import cache, versions
 
     site = tmp_path / "site"
     (site / "fakelib").mkdir(parents=True)
@@ -402,7 +402,7 @@ def _distribution(site: Path, name: str, *requires: str) -> None:
 
 
 def test_the_key_follows_what_the_libraries_require_and_no_extra(tmp_path):
-    from pendcli.core.cache import required_distributions
+    from pendcli.base.cache import required_distributions
 
     _distribution(tmp_path, "scipy-1.0", "numpy>=1.25", "Foo.Bar (>=2)", 'pytest; extra == "test"')
     _distribution(tmp_path, "numpy-2.0", 'colorama; platform_system == "Windows"')
@@ -424,8 +424,8 @@ def test_the_installed_closure_is_what_importlib_metadata_says() -> None:
     import re
     from importlib.metadata import PackageNotFoundError, requires
 
-    from pendcli.core.cache import _installed
-    from pendcli.core.versions import DEPENDENCIES
+    from pendcli.base.cache import _installed
+    from pendcli.base.versions import DEPENDENCIES
 
     def project(name: str) -> str:
         return re.sub(r"[-_.]+", "-", name).lower()

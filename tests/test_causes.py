@@ -23,7 +23,10 @@ from fractions import Fraction
 import pytest
 from evaluated import committed_claims, committed_formulas
 
-from pendcli.core.causes import (
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import load_paper_table
+from pendcli.papers.registry import PAPERS, paper
+from pendcli.verify.causes import (
     CAUSES,
     ROOT_CAUSES,
     SLIP_CAUSES,
@@ -32,15 +35,12 @@ from pendcli.core.causes import (
     rounds_to,
     split_error,
 )
-from pendcli.core.claims import (
+from pendcli.verify.claims import (
     ClaimRow,
     FormulaRow,
     cause_tally,
     with_causes,
 )
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import load_paper_table
-from pendcli.papers.registry import PAPERS, paper
 
 
 @pytest.fixture(scope="module")
@@ -199,7 +199,7 @@ def test_arithmetic_slip_is_not_what_his_own_inputs_give(claims):
 def test_a_slip_hidden_behind_a_right_input_is_not_called_propagated():
     """A made-up value 0,94 computed as (1 - l)/0,35 from l = 0,68 (which gives 0,914):
     the procedure splits its error into a small inherited part and a large own part."""
-    from pendcli.core.numbers import parse_printed
+    from pendcli.data.numbers import parse_printed
 
     procedure = Procedure(("l",), lambda length: (1 - length) / 0.35)
     split = split_error(parse_printed("0,94"), procedure, {"l": 0.68}, 0.9045)

@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 from evaluated import committed_claims, committed_formulas
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import load_paper_table
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import load_paper_table
 from pendcli.papers.charbonnier import claims, explore, figures, model
 
 CLAIMS = load_paper_table("charbonnier").claims

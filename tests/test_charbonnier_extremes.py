@@ -13,7 +13,7 @@ import math
 import mpmath
 import pytest
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.papers.charbonnier import model as ch
 from pendcli.papers.charbonnier import resistance as cr
 
@@ -248,8 +248,8 @@ def test_perturbed_pendulum_matches_the_closed_form_for_any_g(g):
     (the table's g is an assumption the residuals do not depend on)."""
     import numpy as np
 
-    from pendcli.core.formula_engine import DEFAULT_INTEGRATOR
     from pendcli.papers.charbonnier.perturbation import CheckPendulum, measure, monomial
+    from pendcli.verify.formula_engine import DEFAULT_INTEGRATOR
 
     p = CheckPendulum(g, 1.5, 0.2)
     phi, scale = monomial(p, 2)

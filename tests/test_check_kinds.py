@@ -13,13 +13,13 @@ from evaluated import committed_formulas
 from ledgers import committed_ledger, committed_row
 from mutations import judged_after_edit
 
-from pendcli.core.check_kinds import KINDS, kind_called_for, kind_problem
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import measured, reference_table
-from pendcli.core.printed import Formula
-from pendcli.core.printed_check import Reference, formula_passes
-from pendcli.core.printed_numeric import Numbers
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import measured, reference_table
+from pendcli.data.printed import Formula
 from pendcli.papers.registry import paper
+from pendcli.verify.check_kinds import KINDS, kind_called_for, kind_problem
+from pendcli.verify.printed_check import Reference, formula_passes
+from pendcli.verify.printed_numeric import Numbers
 
 x, s = sp.symbols("x s", real=True)
 EQUATION = Formula("x = 1", ((x, sp.Integer(1)),))
@@ -137,7 +137,7 @@ def test_an_inequality_false_on_a_small_part_of_its_domain_is_refused(share) -> 
 
 
 def test_a_rows_keys_are_parsed_exactly_and_put_in_place_of_the_references() -> None:
-    from pendcli.core.check_kinds import parse_parameters, with_parameters
+    from pendcli.verify.check_kinds import parse_parameters, with_parameters
 
     entry = {"scale": "eps", "order": 3, "domain": {"x": ["1/3", 0.5], "y": [-1, 2]}}
     parameters = parse_parameters("row", "series", entry)
@@ -156,7 +156,7 @@ def test_a_rows_keys_are_parsed_exactly_and_put_in_place_of_the_references() -> 
 def test_a_series_judged_through_the_rows_order_not_the_references() -> None:
     """x = 1 + eps against x = 1 + eps + eps**2: holds through order 2, not through 3; the
     order comes from the row (a model and two rows citing it with their own)."""
-    from pendcli.core.check_kinds import parse_parameters, with_parameters
+    from pendcli.verify.check_kinds import parse_parameters, with_parameters
 
     eps = sp.Symbol("eps", real=True)
     model = Reference(exact={"x": 1 + eps + eps**2})
@@ -183,7 +183,7 @@ def test_a_series_judged_through_the_rows_order_not_the_references() -> None:
     ],
 )
 def test_meaningless_keys_are_one_line_naming_the_row(kind: str, entry: dict, says: str) -> None:
-    from pendcli.core.check_kinds import parse_parameters
+    from pendcli.verify.check_kinds import parse_parameters
 
     with pytest.raises(PendcliError) as error:
         parse_parameters("ledger.toml: a.eq.1", kind, entry)

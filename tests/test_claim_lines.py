@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import clear_table_cache, load_paper_table, tables_dir
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import clear_table_cache, load_paper_table, tables_dir
 from pendcli.papers.registry import PAPERS
 
 TABLE = """

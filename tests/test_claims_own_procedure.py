@@ -21,13 +21,13 @@ import mpmath
 import pytest
 from evaluated import committed_claims, committed_formulas
 
-from pendcli.core.causes import Judged, Procedure, own_verdicts, rule_cause
-from pendcli.core.claims import ClaimRow, cause_tally, with_own_verdicts
-from pendcli.core.errors import PendcliError
-from pendcli.core.numbers import parse_printed
-from pendcli.core.tables import load_paper_table
-from pendcli.core.vocabulary import SLIP_CAUSES
+from pendcli.base.errors import PendcliError
+from pendcli.data.numbers import parse_printed
+from pendcli.data.tables import load_paper_table
+from pendcli.data.vocabulary import SLIP_CAUSES
 from pendcli.papers.registry import PAPERS, paper
+from pendcli.verify.causes import Judged, Procedure, own_verdicts, rule_cause
+from pendcli.verify.claims import ClaimRow, cause_tally, with_own_verdicts
 
 README = Path(__file__).resolve().parent.parent / "docs" / "findings.md"
 

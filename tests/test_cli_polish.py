@@ -183,7 +183,7 @@ def _site(tmp_path: Path) -> Path:
 def test_the_key_ignores_test_tools_and_other_systems_needs(tmp_path: Path) -> None:
     """make test installs pytest, ruff, mypy, hypothesis and, with them, libraries that the
     runtime requires only elsewhere (colorama on Windows): none of them changes a result."""
-    from pendcli.core.cache import runtime_signature
+    from pendcli.base.cache import runtime_signature
 
     site = _site(tmp_path)
 
@@ -205,7 +205,7 @@ def test_the_key_ignores_test_tools_and_other_systems_needs(tmp_path: Path) -> N
 
 def _judge(count: int) -> int:
     """``count`` rows judged (a worker receives this function by pickle: module level)."""
-    from pendcli.core.workers import row_done
+    from pendcli.base.workers import row_done
 
     for _ in range(count):
         row_done()
@@ -215,7 +215,7 @@ def _judge(count: int) -> int:
 def test_rows_done_are_counted_across_forked_workers() -> None:
     """A progress bar reads rows judged in this process and in its forked workers (a cold
     `equations` bar sat at "tisserand: equations 0/2" for 45 s)."""
-    from pendcli.core.workers import ForkedWorkers, counting_rows, row_done
+    from pendcli.base.workers import ForkedWorkers, counting_rows, row_done
 
     with counting_rows() as done, ForkedWorkers(1) as pool:
         results = pool.share([5, 7, 11, 13], _judge)
@@ -224,7 +224,7 @@ def test_rows_done_are_counted_across_forked_workers() -> None:
 
 
 def test_status_lines_stay_off_a_pipe(capsys: pytest.CaptureFixture[str]) -> None:
-    from pendcli.core.console import status_line
+    from pendcli.base.console import status_line
 
     status_line("loading the libraries")
     assert capsys.readouterr().err == ""

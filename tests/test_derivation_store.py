@@ -1,4 +1,4 @@
-"""The ledger's derivations as data (pendcli/core/derivation_store.py, float_verdict.py).
+"""The ledger's derivations as data (pendcli/verify/derivation_store.py, float_verdict.py).
 
 The store is read by a closed grammar (code in it is refused, sizes bounded); it is used only
 for the tables it was derived from, and never read from a tables folder given by
@@ -15,15 +15,15 @@ import mpmath
 import pytest
 import sympy as sp
 
-from pendcli.core import float_verdict, ledger_references
-from pendcli.core.derivation_store import row_record, store_path, stored_rows
-from pendcli.core.derived import Item, item_passes, relation_points
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import load_ledger
-from pendcli.core.ledger_references import row_printed_status
-from pendcli.core.printed import ledger_symbols
-from pendcli.core.stored_expr import read_expr
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import load_ledger
+from pendcli.data.printed import ledger_symbols
+from pendcli.data.stored_expr import read_expr
 from pendcli.papers.registry import ledger_papers, paper
+from pendcli.verify import float_verdict, ledger_references
+from pendcli.verify.derivation_store import row_record, store_path, stored_rows
+from pendcli.verify.derived import Item, item_passes, relation_points
+from pendcli.verify.ledger_references import row_printed_status
 
 # --- the closed grammar ---------------------------------------------------------------------
 
@@ -59,7 +59,7 @@ def test_the_grammar_reads_back_what_srepr_writes() -> None:
 def test_a_store_is_bounded_and_must_be_json(
     monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
-    from pendcli.core import derivation_store
+    from pendcli.verify import derivation_store
 
     bad = tmp_path / "x-derivations.json"
     monkeypatch.setattr(derivation_store, "store_path", lambda key: bad)
@@ -250,7 +250,7 @@ def test_a_series_cauchy_cannot_follow_is_judged_by_its_terms_derived_once(
     same with s² added do not, and the exact engine words that failure."""
     from dataclasses import replace
 
-    from pendcli.core.derived import derived_once
+    from pendcli.verify.derived import derived_once
 
     s = sp.Symbol("s", positive=True)
     residual = sp.sqrt(1 + s**-2) - sp.sqrt(1 + s**2) / s
@@ -270,7 +270,7 @@ def test_a_bounded_residual_is_judged_by_its_limit_derived_once() -> None:
     diverges: its stored limit is infinite and the exact engine judges."""
     from dataclasses import replace
 
-    from pendcli.core.derived import derived_once
+    from pendcli.verify.derived import derived_once
 
     near = mpmath.mpf("1e-8")
     assert abs(1 / near - mpmath.cot(near)) < 1e-7

@@ -1,4 +1,4 @@
-"""Mutation testing of the printed-form engine itself (pendcli/core/printed_verdict.py,
+"""Mutation testing of the printed-form engine itself (pendcli/verify/printed_verdict.py,
 printed_check.py, point_values.py, series_proof.py and printed_numeric.py): each plausible
 bug of the engine, put in by monkeypatching one of its seams (a constant or a function of
 those modules, named here: a rewritten engine keeps them or maps each mutation onto its own),
@@ -74,7 +74,11 @@ import pytest
 from ledgers import committed_ledger
 from mutations import altered_field, judged_after_edit
 
-from pendcli.core import (
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import LedgerRow, reference_table
+from pendcli.data.vocabulary import Verdict
+from pendcli.papers.registry import paper as paper_named
+from pendcli.verify import (
     derived,
     float_verdict,
     point_values,
@@ -83,14 +87,10 @@ from pendcli.core import (
     printed_verdict,
     series_proof,
 )
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, reference_table
-from pendcli.core.ledger_formulas import printed_status
-from pendcli.core.ledger_references import cited_reference
-from pendcli.core.printed_check import Reference
-from pendcli.core.printed_numeric import Numbers
-from pendcli.core.vocabulary import Verdict
-from pendcli.papers.registry import paper as paper_named
+from pendcli.verify.ledger_formulas import printed_status
+from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.printed_check import Reference
+from pendcli.verify.printed_numeric import Numbers
 
 PAPERS = ("charbonnier", "lecornu", "tisserand")
 SEED = 19

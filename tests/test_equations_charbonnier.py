@@ -10,12 +10,12 @@ import mpmath
 import pytest
 from ledgers import committed_ledger, committed_row
 
-from pendcli.core.ledger import verify_printed
-from pendcli.core.ledger_formulas import row_formula
-from pendcli.core.ledger_references import cited_reference
-from pendcli.core.printed_check import judged
+from pendcli.data.ledger import verify_printed
 from pendcli.papers.charbonnier.references import REFERENCES
 from pendcli.papers.registry import paper
+from pendcli.verify.ledger_formulas import row_formula
+from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.printed_check import judged
 
 
 def test_the_table_holds_every_reference_the_ledger_cites_and_no_other() -> None:

@@ -7,7 +7,7 @@ from collections import Counter
 
 from ledgers import committed_ledger
 
-from pendcli.core.ledger import CHECKED_STATUSES, labels_in_text
+from pendcli.data.ledger import CHECKED_STATUSES, labels_in_text
 
 
 def test_every_printed_label_has_a_row() -> None:

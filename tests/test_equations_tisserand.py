@@ -11,10 +11,10 @@ import pytest
 import sympy as sp
 from ledgers import committed_ledger
 
-from pendcli.core.ledger_formulas import row_formula
 from pendcli.papers.registry import paper
 from pendcli.papers.tisserand.references import REFERENCES
 from pendcli.papers.tisserand.references_series import motion_in_kpt, motion_series, series_symbols
+from pendcli.verify.ledger_formulas import row_formula
 
 
 def test_every_cited_reference_is_in_the_table_and_every_entry_is_cited() -> None:

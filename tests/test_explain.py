@@ -18,9 +18,9 @@ import pytest
 from cli_helpers import assert_clean_error, invoke
 from evaluated import committed_claims
 
-from pendcli.core import explain as ex
-from pendcli.core.tables import load_paper_table
+from pendcli.data.tables import load_paper_table
 from pendcli.papers.registry import PAPERS, explanations
+from pendcli.verify import explain as ex
 
 F = Fraction
 
@@ -364,8 +364,8 @@ PLAIN = [
 def test_plain_procedure_rows_match_the_claims_procedures(rows, claim_id):
     """'his plain procedure' must be what pendcli.papers.lecornu.claims says he did, on his
     printed values (a second implementation, in floating point), rounded at his precision."""
-    from pendcli.core.causes import rounds_to
     from pendcli.papers.lecornu.claims import author_procedures
+    from pendcli.verify.causes import rounds_to
 
     table = load_paper_table("lecornu")
     printed = {c.id: c.number.value for c in table.claims}

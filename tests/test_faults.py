@@ -28,8 +28,8 @@ from pathlib import Path
 import pytest
 from cli_helpers import NO_BYTECODE, assert_clean_error, invoke
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import clear_table_cache
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import clear_table_cache
 from pendcli.papers.registry import PAPERS, evaluate
 from pendcli.run.drift import CLAIM_COLUMNS
 

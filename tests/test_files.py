@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 from cli_helpers import NO_BYTECODE
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.files import atomic_write, locked, remove_stale, replace_directory
+from pendcli.base.errors import PendcliError
+from pendcli.base.files import atomic_write, locked, remove_stale, replace_directory
 
 
 def _snapshot(folder: Path) -> dict[str, bytes]:
@@ -69,7 +69,7 @@ _WRITER = textwrap.dedent(
     """
     import sys, time
     from pathlib import Path
-    from pendcli.core.files import replace_directory
+    from pendcli.base.files import replace_directory
 
     def fill(tmp):
         for i in range(6):
@@ -114,8 +114,8 @@ def test_file_size_limit_leaves_old_content(tmp_path: Path) -> None:
         f"""
         import resource
         from pathlib import Path
-        from pendcli.core.errors import PendcliError
-        from pendcli.core.files import replace_directory
+        from pendcli.base.errors import PendcliError
+        from pendcli.base.files import replace_directory
         resource.setrlimit(resource.RLIMIT_FSIZE, (4096, {resource.RLIM_INFINITY}))
         def fill(tmp):
             (tmp / "big.csv").write_bytes(b"x" * 20000)
@@ -139,7 +139,7 @@ def test_exclusive_lock_blocks_a_second_writer(tmp_path: Path) -> None:
         [
             sys.executable,
             "-c",
-            "import sys, time; from pendcli.core.files import locked\n"
+            "import sys, time; from pendcli.base.files import locked\n"
             f"with locked({str(lock)!r}):\n    print('held', flush=True); time.sleep(0.6)",
         ],
         stdout=subprocess.PIPE,
@@ -168,8 +168,8 @@ def test_read_only_folder_is_a_named_error(tmp_path: Path) -> None:
     folder.chmod(0o555)
     script = textwrap.dedent(
         f"""
-        from pendcli.core.errors import PendcliError
-        from pendcli.core.files import atomic_write
+        from pendcli.base.errors import PendcliError
+        from pendcli.base.files import atomic_write
         try:
             atomic_write({str(folder / "x.csv")!r}, "a")
         except PendcliError as exc:
@@ -229,7 +229,7 @@ def test_a_waiter_on_a_removed_lock_file_locks_the_current_one(tmp_path: Path) -
     script = textwrap.dedent(
         f"""
         import sys
-        from pendcli.core.files import locked
+        from pendcli.base.files import locked
         with locked({str(lock)!r}):
             print("held", flush=True)
             sys.stdin.readline()
@@ -251,7 +251,7 @@ def test_a_waiter_on_a_removed_lock_file_locks_the_current_one(tmp_path: Path) -
 
 
 def test_write_set_failing_before_its_renames_changes_nothing(tmp_path: Path) -> None:
-    from pendcli.core.files import write_set
+    from pendcli.base.files import write_set
 
     (tmp_path / "a.csv").write_text("old a")
     (tmp_path / "b.csv").write_text("old b")
@@ -269,7 +269,7 @@ def test_write_set_failing_before_its_renames_changes_nothing(tmp_path: Path) ->
 
 
 def test_write_set_refuses_a_file_changed_since_it_was_read(tmp_path: Path) -> None:
-    from pendcli.core.files import content_digest, file_digest, write_set
+    from pendcli.base.files import content_digest, file_digest, write_set
 
     readme, table = tmp_path / "README.md", tmp_path / "t.csv"
     readme.write_text("old readme\n")
@@ -286,7 +286,7 @@ def test_write_set_refuses_a_file_changed_since_it_was_read(tmp_path: Path) -> N
 
 
 def test_write_set_refuses_a_file_created_or_removed_since_it_was_read(tmp_path: Path) -> None:
-    from pendcli.core.files import file_digest, write_set
+    from pendcli.base.files import file_digest, write_set
 
     absent, present = tmp_path / "new.csv", tmp_path / "old.csv"
     present.write_text("x\n")

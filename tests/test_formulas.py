@@ -15,14 +15,14 @@ import numpy as np
 import pytest
 from evaluated import committed_formulas
 
-from pendcli.core import formula_engine as engine
-from pendcli.core import formula_plots as plots
 from pendcli.papers.charbonnier import formulas as fch
 from pendcli.papers.charbonnier import perturbation as cpt
 from pendcli.papers.lecornu import formula_figures as fle_figures
 from pendcli.papers.lecornu import formulas as fle
 from pendcli.papers.lecornu import formulas_chapter3 as fle3
 from pendcli.papers.tisserand import formulas as fti
+from pendcli.verify import formula_engine as engine
+from pendcli.verify import formula_plots as plots
 
 PI = math.pi
 TIGHT = engine.Integrator(rtol=1e-13, atol=1e-15)
@@ -231,7 +231,7 @@ def test_extrapolate_to_zero_of_a_polynomial_in_p_squared():
 
 
 def _row(verdict: str, residuals, claimed=2.0, observed=2.0):
-    from pendcli.core.claims import FormulaRow
+    from pendcli.verify.claims import FormulaRow
 
     return FormulaRow(
         "demo.eq1", "demo", "(1)", "f", "f", verdict, claimed, observed, "", tuple(residuals)
@@ -295,7 +295,7 @@ def _grid_figure(monkeypatch, rows, labels):
     matplotlib.use("Agg", force=True)
     import matplotlib.pyplot as plt
 
-    from pendcli.core import plotting
+    from pendcli.base import plotting
 
     kept = []
     monkeypatch.setattr(plotting, "save_figure", lambda fig, path: kept.append(fig))

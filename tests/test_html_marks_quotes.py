@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import load_ledger
-from pendcli.core.tables import tables_dir
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import load_ledger
+from pendcli.data.tables import tables_dir
 from pendcli.output.html.marks import ALSO_WRONG, place_marks
 
 sys.path.insert(0, str(Path(__file__).parent))

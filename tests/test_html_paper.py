@@ -10,8 +10,8 @@ from html import unescape
 
 import pytest
 
-from pendcli.core.numbers import edition_number
-from pendcli.core.tables import tables_dir
+from pendcli.data.numbers import edition_number
+from pendcli.data.tables import tables_dir
 from pendcli.output.html.math import math_segments, to_mathml
 from pendcli.output.html.paper import paper_page
 from pendcli.papers.registry import PAPERS
@@ -85,7 +85,7 @@ def test_no_decimal_comma_of_the_papers_formulas_is_set_as_a_separator(paper: st
 
 
 def test_an_angle_is_shown_sexagesimal_as_the_paper_prints_it() -> None:
-    from pendcli.core.numbers import edition_angle, edition_quantity, parse_printed
+    from pendcli.data.numbers import edition_angle, edition_quantity, parse_printed
 
     assert edition_angle(-1.125872042) == "\u22121°7′33,14″"
     assert edition_quantity(0.0004685167801, "angle") == "1,69″"
@@ -155,7 +155,7 @@ def test_a_printed_negative_value_is_shown_with_the_typeset_minus() -> None:
 def test_a_notes_detail_numbers_have_a_decimal_comma_but_not_its_names() -> None:
     """Numbers a detail string embeds take the decimal comma in the note; identifiers,
     versions, code words and products printed with points do not."""
-    from pendcli.core.numbers import edition_text
+    from pendcli.data.numbers import edition_text
 
     assert edition_text("holds (order 1.99); max residual 6.08e-02") == (
         "holds (order 1,99); max residual 6,08·10⁻²"

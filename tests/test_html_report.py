@@ -16,8 +16,8 @@ import pytest
 from ledgers import committed_ledger
 from markupsafe import escape
 
-from pendcli.core.numbers import edition_text
-from pendcli.core.tables import load_paper_table, tables_dir
+from pendcli.data.numbers import edition_text
+from pendcli.data.tables import load_paper_table, tables_dir
 from pendcli.output.html.graph import layered_graph
 from pendcli.output.html.locate import locate
 from pendcli.output.html.marks import Placement, place_marks
@@ -609,7 +609,7 @@ def test_the_cover_page_of_the_digitisation_is_shown_apart() -> None:
 def test_pdf_printing_refuses_without_out_or_without_chromium(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
     from pendcli.output.html import report as html_report
     from tests.cli_helpers import invoke
 
@@ -743,7 +743,7 @@ def test_reference_words_builds_only_the_names_the_texts_name(
 ) -> None:
     """Builders named as a whole word, not after a dot, are built; the others never are
     (the texts are searched once for their words, then each found name as a word)."""
-    import pendcli.core.ledger_references as ledger_references
+    import pendcli.verify.ledger_references as ledger_references
     from pendcli.output.html.report import reference_words
     from pendcli.papers import registry
 

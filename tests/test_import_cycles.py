@@ -3,8 +3,8 @@
 Read from the source, never by running it: every ``import`` and ``from ... import`` of a
 pendcli module anywhere in a file counts (inside functions and ``if TYPE_CHECKING:`` blocks
 too), relative imports resolved. ``from pendcli.run import tradeoff`` is an import of the
-module ``pendcli.run.tradeoff``; ``from pendcli.core.claims import ClaimRow`` of
-``pendcli.core.claims``. A package's ``__init__`` is a module of its own, reached only when
+module ``pendcli.run.tradeoff``; ``from pendcli.verify.claims import ClaimRow`` of
+``pendcli.verify.claims``. A package's ``__init__`` is a module of its own, reached only when
 named. Places named as text (a paper's ``hook("pendcli.papers.x.claims:recompute")``,
 ``importlib.import_module``) are not imports and are not followed.
 
@@ -29,16 +29,16 @@ PACKAGE = Path(__file__).resolve().parents[1] / "pendcli"
 ALLOWED: tuple[frozenset[str], ...] = (
     frozenset(
         {
-            "pendcli.core.claims",
-            "pendcli.core.ledger",
-            "pendcli.core.ledger_blame",
-            "pendcli.core.ledger_companions",
-            "pendcli.core.ledger_conditions",
-            "pendcli.core.ledger_formulas",
-            "pendcli.core.ledger_references",
-            "pendcli.core.ledger_step",
-            "pendcli.core.paper",
-            "pendcli.core.reading",
+            "pendcli.verify.claims",
+            "pendcli.data.ledger",
+            "pendcli.verify.ledger_blame",
+            "pendcli.verify.ledger_companions",
+            "pendcli.data.ledger_conditions",
+            "pendcli.verify.ledger_formulas",
+            "pendcli.verify.ledger_references",
+            "pendcli.verify.ledger_step",
+            "pendcli.papers.paper",
+            "pendcli.data.reading",
         }
     ),
 )

@@ -1,4 +1,4 @@
-"""Real JSON output against the one schema (pendcli.core.schema) behind docs/schema.md."""
+"""Real JSON output against the one schema (pendcli.output.schema) behind docs/schema.md."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ import pytest
 from cli_helpers import invoke
 from evaluated import committed_claims, committed_formulas
 
-from pendcli.core import schema
-from pendcli.core.claims import ClaimRow, FormulaRow
+from pendcli.output import schema
 from pendcli.papers.registry import PAPERS
+from pendcli.verify.claims import ClaimRow, FormulaRow
 
 SCHEMA_DOC = Path(__file__).resolve().parent.parent / "docs" / "schema.md"
 

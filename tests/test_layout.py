@@ -52,8 +52,8 @@ def test_the_reference_tables_name_nothing_twice() -> None:
     references_*.py module that defines a builder is a section."""
     import types
 
-    from pendcli.core.ledger_references import builders
     from pendcli.papers.lecornu.references import SECTIONS
+    from pendcli.verify.ledger_references import builders
 
     modules = [types.ModuleType(name) for name in ("first", "second")]
     for module in modules:

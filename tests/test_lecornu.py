@@ -22,10 +22,10 @@ import pytest
 from cli_helpers import assert_clean_error, invoke
 from evaluated import committed_claims
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import load_paper_table, tables_dir
-from pendcli.core.verdict import judge
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import load_paper_table, tables_dir
 from pendcli.papers.lecornu import claims, explore, figures, model
+from pendcli.verify.verdict import judge
 
 TABLE = load_paper_table("lecornu")
 CLAIMS = {c.id: c for c in TABLE.claims}

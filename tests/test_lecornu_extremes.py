@@ -13,8 +13,8 @@ import mpmath
 import numpy as np
 import pytest
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import paper_constant
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import paper_constant
 from pendcli.numerics.besselzeros import (
     MAX_COUNT,
     SERIES_MAX_ERROR,

@@ -13,8 +13,8 @@ from pathlib import Path
 import pytest
 from ledgers import committed_ledger, committed_row, row_ids
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import (
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import (
     CHECKED_STATUSES,
     OUTPUT_KEYS,
     Ledger,
@@ -26,7 +26,7 @@ from pendcli.core.ledger import (
     reference_table,
     row_printed_status,
 )
-from pendcli.core.rows import equation_notes
+from pendcli.data.rows import equation_notes
 from pendcli.papers.registry import equation_rows, ledger_papers, paper
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -312,8 +312,8 @@ def test_checked_statuses_are_the_three() -> None:
 def test_the_cited_references_are_the_ledger_s_reference_names_each_built_once() -> None:
     """The names read from the TOML with tomllib; a second call returns the same objects
     (shared, not built again)."""
-    from pendcli.core.ledger import cited_references
-    from pendcli.core.printed_check import Reference
+    from pendcli.data.ledger import cited_references
+    from pendcli.verify.printed_check import Reference
 
     raw = tomllib.loads((TABLES / "equations" / "charbonnier.toml").read_text("utf-8"))
     names = {e["reference"] for e in raw["equation"] if "reference" in e}

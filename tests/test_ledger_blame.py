@@ -15,11 +15,11 @@ import pytest
 from ledgers import committed_ledger, committed_row
 from mutations import altered_ledger, altered_row, edit_once
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import Evaluated, coverage, load_ledger, verify_printed
-from pendcli.core.ledger_references import conditional
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import Evaluated, coverage, load_ledger, verify_printed
 from pendcli.papers.registry import paper
 from pendcli.run.reproduce import ReproduceResult
+from pendcli.verify.ledger_references import conditional
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 PAPERS = ("tisserand", "lecornu", "charbonnier")
@@ -63,7 +63,7 @@ def test_every_slip_records_the_later_use_that_decides_it(name: str) -> None:
 
 def _edited(name: str, within: str, *edits: tuple[str, str]) -> object:
     """The committed ledger ``name`` with ``edits`` made in row ``within``, validated."""
-    from pendcli.core.ledger import ledger_path, parse_ledger
+    from pendcli.data.ledger import ledger_path, parse_ledger
 
     text = (TABLES / "equations" / f"{name}.toml").read_text("utf-8")
     for old, new in edits:
@@ -131,7 +131,7 @@ def _independent_counts(name: str) -> dict[str, int]:
 
 def _output_rows(name: str) -> list[object]:
     """The output rows of the committed ledger, as the engine builds them (no check run)."""
-    from pendcli.core.ledger_blame import row_context
+    from pendcli.verify.ledger_blame import row_context
 
     ledger = committed_ledger(name)
     references = paper(name).references()
@@ -316,7 +316,7 @@ def test_the_quarter_values_carry_41_and_add_a_slip_of_their_own() -> None:
     assert sp.simplify(slope - (sp.pi**3 / 2 + 8 * sp.pi) / 32) == 0
     row = committed_row("lecornu.result.quarter_values")
     assert len(row.wrong_terms) == 2 and "pi**3/2 + 8*pi" in (row.step_formula or "")
-    from pendcli.core.ledger_step import step_evidence
+    from pendcli.verify.ledger_step import step_evidence
 
     said, problem = step_evidence(row, committed_ledger("lecornu"))
     assert problem is None and said is not None and "the printed form fails" in said

@@ -1,4 +1,4 @@
-"""The companions of a corrected or read row (pendcli/core/ledger_companions.py): every later
+"""The companions of a corrected or read row (pendcli/verify/ledger_companions.py): every later
 row and sentence that depends on a misprinted, failing or OCR-read formula is judged against
 the changed form (its own record, its computed status, or a ``[[companion]]`` entry saying why
 it is independent); one left as printed fails here."""
@@ -12,10 +12,10 @@ from pathlib import Path
 import pytest
 from ledgers import committed_ledger
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import load_ledger
-from pendcli.core.ledger_blame import row_context
-from pendcli.core.ledger_companions import (
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import load_ledger
+from pendcli.verify.ledger_blame import row_context
+from pendcli.verify.ledger_companions import (
     LEFT,
     companions_of,
     ledger_companions,

@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 from ledgers import committed_ledger
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, labels_in_text, parse_ledger
-from pendcli.core.text_blocks import blocks_covered, display_blocks
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import LedgerRow, labels_in_text, parse_ledger
+from pendcli.data.text_blocks import blocks_covered, display_blocks
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"

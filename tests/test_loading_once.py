@@ -9,11 +9,11 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core import printed
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import ledger_path, load_ledger
-from pendcli.core.printed import parse_formula
-from pendcli.core.tables import read_toml
+from pendcli.base.errors import PendcliError
+from pendcli.data import printed
+from pendcli.data.ledger import ledger_path, load_ledger
+from pendcli.data.printed import parse_formula
+from pendcli.data.tables import read_toml
 
 QUOTE = "La formule (5) donnera ensuite"  # a quote of tisserand's ledger, in its text
 

@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from pendcli.core.ledger import load_ledger
+from pendcli.data.ledger import load_ledger
 
 PAPERS = ("tisserand", "lecornu", "charbonnier")
 ADMITS = re.compile(

@@ -13,7 +13,7 @@ from decimal import ROUND_HALF_EVEN, Decimal
 
 import pytest
 
-from pendcli.core.numbers import edition_angle, edition_number, paper_decimals, parse_printed
+from pendcli.data.numbers import edition_angle, edition_number, paper_decimals, parse_printed
 from pendcli.output.columns import Column, fmt_float
 from pendcli.output.style import EDITION, MACHINE, MARKDOWN, TERMINAL, current, using
 from pendcli.output.views import format_like_printed

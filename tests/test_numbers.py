@@ -11,8 +11,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.numbers import exact_number, parse_printed
+from pendcli.base.errors import PendcliError
+from pendcli.data.numbers import exact_number, parse_printed
 
 
 @pytest.mark.parametrize(

@@ -12,8 +12,8 @@ ROOT = Path(__file__).resolve().parents[1] / "pendcli"
 
 # package -> the pendcli modules it must never import (prefixes)
 FORBIDDEN = {
-    "numerics": ("pendcli.papers", "pendcli.cli", "pendcli.core.tables", "pendcli.run"),
-    "core": (
+    "numerics": ("pendcli.papers", "pendcli.cli", "pendcli.data.tables", "pendcli.run"),
+    "verify": (
         "pendcli.cli",
         "pendcli.run",
         "pendcli.output.report",
@@ -114,7 +114,19 @@ def test_nothing_installed_imports_the_developer_tools() -> None:
 
 
 @pytest.mark.parametrize(
-    "package", ["core", "numerics", "papers", "output", "output/html", "cli", "run", "../tools"]
+    "package",
+    [
+        "base",
+        "data",
+        "verify",
+        "numerics",
+        "papers",
+        "output",
+        "output/html",
+        "cli",
+        "run",
+        "../tools",
+    ],
 )
 def test_every_package_opens_with_a_docstring(package: str) -> None:
     doc = ast.get_docstring(ast.parse((ROOT / package / "__init__.py").read_text("utf-8")))

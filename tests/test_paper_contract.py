@@ -1,4 +1,4 @@
-"""The paper contract (pendcli/core/paper.py): hooks named by place, resolved by one loader.
+"""The paper contract (pendcli/papers/paper.py): hooks named by place, resolved by one loader.
 
 A paper's ``__init__.py`` is its citation and its list of hooks: every place must resolve
 (a missing module or name is a load error naming the paper and the place), and the paper
@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.paper import check_hooks, hook, merged, modules
+from pendcli.base.errors import PendcliError
+from pendcli.papers.paper import check_hooks, hook, merged, modules
 from pendcli.papers.registry import PAPERS, paper
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -41,7 +41,7 @@ def test_a_missing_module_is_a_load_error() -> None:
 
 def test_a_table_is_returned_a_function_called_mappings_merged() -> None:
     assert hook("pendcli.papers.registry:PAPERS")() == PAPERS
-    assert hook("pendcli.core.numbers:parse_printed")("0,5").value == 0.5
+    assert hook("pendcli.data.numbers:parse_printed")("0,5").value == 0.5
     left, right = "pendcli.papers.lecornu.formula_figures", "pendcli.papers.lecornu.figures"
     both = merged(f"{left}:CAPTIONS", f"{right}:CAPTIONS")()
     from pendcli.papers.lecornu import figures, formula_figures

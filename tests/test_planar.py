@@ -13,7 +13,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.numerics import planar
 from pendcli.papers.lecornu.model import lecornu_k4
 

@@ -11,13 +11,13 @@ import pytest
 from ledgers import committed_ledger, committed_row
 from mutations import altered_row
 
-from pendcli.core.dimensions import check_dimensions
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, parse_ledger, verify_printed
-from pendcli.core.ledger_formulas import row_dimensions
-from pendcli.core.ledger_references import cited_reference
-from pendcli.core.printed import parse_dimension, parse_formula
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import LedgerRow, parse_ledger, verify_printed
+from pendcli.data.printed import parse_dimension, parse_formula
 from pendcli.papers.registry import paper as registered_paper
+from pendcli.verify.dimensions import check_dimensions
+from pendcli.verify.ledger_formulas import row_dimensions
+from pendcli.verify.ledger_references import cited_reference
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -263,7 +263,7 @@ def test_formulas_parse_with_declared_names_only() -> None:
         _ledger("rho = l*u", symbols={"rho": "L", "l": "L", "u": "1", "sin": "1"})
 
 
-# --- statuses computed from the printed form (core/printed_check) ------------------------
+# --- statuses computed from the printed form (verify/printed_check) ------------------------
 
 
 @pytest.mark.parametrize(
@@ -298,13 +298,13 @@ def test_a_misprint_whose_printed_form_is_its_reading_is_refused() -> None:
     assert problem.startswith("recorded misprint, but the printed form gives holds")
 
 
-# --- inequalities and per-equation cases (core/printed_check) ------------------------
+# --- inequalities and per-equation cases (verify/printed_check) ------------------------
 
 
 def test_an_inequality_is_judged_at_the_random_points() -> None:
     import sympy as sp
 
-    from pendcli.core.printed_check import Reference, formula_passes
+    from pendcli.verify.printed_check import Reference, formula_passes
 
     symbols = {"l": "1", "t": "1"}
     # an inequality holds only over the range its reference states (t in [1/10, 1/2])
@@ -327,7 +327,7 @@ def test_cases_judge_each_equation_against_its_own_reference() -> None:
 
     import sympy as sp
 
-    from pendcli.core.printed_check import Reference, formula_passes
+    from pendcli.verify.printed_check import Reference, formula_passes
 
     n = sp.Symbol("n", real=True)
     even, odd = Reference({"n": 2 * sp.floor(n)}), Reference({"n": 2 * sp.floor(n) + 1})
@@ -383,7 +383,7 @@ def test_a_random_number_of_a_random_holds_row_changed_stops_it_holding(seed: in
     import dataclasses
     import random
 
-    from pendcli.core.ledger_formulas import printed_status
+    from pendcli.verify.ledger_formulas import printed_status
 
     generator = random.Random(seed)
     rows = _holds_rows_with_a_number()

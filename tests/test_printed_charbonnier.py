@@ -13,11 +13,11 @@ import pytest
 from ledgers import committed_ledger, committed_row, row_ids
 from mutations import altered_row
 
-from pendcli.core.ledger import LedgerRow, verify_printed
-from pendcli.core.ledger_coverage import ledger_text_coverage
-from pendcli.core.ledger_formulas import row_formula
-from pendcli.core.ledger_references import cited_reference
+from pendcli.data.ledger import LedgerRow, verify_printed
+from pendcli.data.ledger_coverage import ledger_text_coverage
 from pendcli.papers.registry import paper
+from pendcli.verify.ledger_formulas import row_formula
+from pendcli.verify.ledger_references import cited_reference
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -291,7 +291,7 @@ def test_a_changed_coefficient_of_a_reading_is_refused(row_id: str, old: str, ne
 def test_the_closed_forms_are_judged_per_parity() -> None:
     """n° 16, 2°: the even formula is wrong for odd n and the odd one for even n (I_1(π) =
     π/2 against the even rule's 2·1/2 = 1), so a parity-blind reference would refuse them."""
-    from pendcli.core.printed_check import formula_passes
+    from pendcli.verify.printed_check import formula_passes
 
     ledger = committed_ledger("charbonnier")
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.delta-alpha-closed")
@@ -306,7 +306,7 @@ def test_the_closed_forms_are_judged_per_parity() -> None:
 def test_friction_has_a_finite_count_by_the_same_formula() -> None:
     """n° 16, 1°: the formula that says P is infinite for n ≥ 1 fails for n = 0 (F = B_0),
     where Δα/α = −2b0/(gα) grows as α falls and P = αg/(2b0) is finite."""
-    from pendcli.core.printed_check import formula_passes
+    from pendcli.verify.printed_check import formula_passes
 
     ledger = committed_ledger("charbonnier")
     row = next(r for r in ledger.rows if r.id == "charbonnier.result.infinite-count")

@@ -7,8 +7,8 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-from pendcli.core.printed import Formula
-from pendcli.core.printed_check import Reference, formula_passes
+from pendcli.data.printed import Formula
+from pendcli.verify.printed_check import Reference, formula_passes
 
 s = sp.Symbol("s", positive=True)
 a = sp.Symbol("a", real=True)

@@ -1,4 +1,4 @@
-"""The engine's bounded memo (pendcli.core.recent.Recent) forgets as
+"""The engine's bounded memo (pendcli.base.recent.Recent) forgets as
 functools.lru_cache does: the same keys computed anew, for a random sequence of uses, and
 never more kept than its size."""
 
@@ -9,7 +9,7 @@ import random
 
 import pytest
 
-from pendcli.core.recent import Recent
+from pendcli.base.recent import Recent
 
 
 @pytest.mark.parametrize("size", [1, 3, 17])

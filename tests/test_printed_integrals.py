@@ -7,8 +7,8 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-from pendcli.core.printed import Formula
-from pendcli.core.printed_check import Reference, formula_passes
+from pendcli.data.printed import Formula
+from pendcli.verify.printed_check import Reference, formula_passes
 
 x, a, b = sp.symbols("x a b", positive=True)
 GAUSS = sp.Integral(sp.exp(-a * x**2), (x, 0, 1))  # = sqrt(pi/a)/2 erf(sqrt(a))

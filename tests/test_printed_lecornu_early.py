@@ -16,12 +16,8 @@ import pytest
 from ledgers import committed_ledger, committed_row
 from mutations import altered_ledger
 
-from pendcli.core.claims import FormulaRow
-from pendcli.core.ledger import Ledger, LedgerRow, verify_printed
-from pendcli.core.ledger_references import builders, cited_reference
-from pendcli.core.printed import Formula, parse_formula
-from pendcli.core.printed_check import judged
-from pendcli.core.printed_verdict import computed_status
+from pendcli.data.ledger import Ledger, LedgerRow, verify_printed
+from pendcli.data.printed import Formula, parse_formula
 from pendcli.papers.lecornu import (
     references,
     references_slow,
@@ -29,6 +25,10 @@ from pendcli.papers.lecornu import (
 )
 from pendcli.papers.lecornu.formulas_slow import slow_rows
 from pendcli.papers.registry import paper
+from pendcli.verify.claims import FormulaRow
+from pendcli.verify.ledger_references import builders, cited_reference
+from pendcli.verify.printed_check import judged
+from pendcli.verify.printed_verdict import computed_status
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -433,7 +433,7 @@ def test_the_cross_reference_of_line_276_is_judged_against_both_equations() -> N
 def test_an_inequality_needs_a_margin_and_a_range() -> None:
     import sympy as sp
 
-    from pendcli.core.printed_check import Reference
+    from pendcli.verify.printed_check import Reference
 
     at_two = Reference({"z": sp.Integer(2)})
     assert judged(_formula("z < 3"), at_two)[0]
@@ -448,7 +448,7 @@ def test_an_inequality_needs_a_margin_and_a_range() -> None:
 def test_cases_substitute_into_the_exact_values_and_each_must_pass() -> None:
     import sympy as sp
 
-    from pendcli.core.printed_check import Reference
+    from pendcli.verify.printed_check import Reference
 
     z = sp.Symbol("z", real=True)
     roots = ({"z": sp.Integer(1)}, {"z": sp.Integer(2)})

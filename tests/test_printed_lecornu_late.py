@@ -13,12 +13,12 @@ import pytest
 from ledgers import committed_ledger, committed_row, first_line, row_ids
 from mutations import altered_tables, field_line, judged_after_edit, printed_line
 
-from pendcli.core.dimensions import check_dimensions
-from pendcli.core.ledger import CHECKED_STATUSES, LedgerRow, verify_printed
-from pendcli.core.ledger_references import cited_reference
-from pendcli.core.printed import parse_dimension, parse_formula
-from pendcli.core.printed_check import formula_passes
+from pendcli.data.ledger import CHECKED_STATUSES, LedgerRow, verify_printed
+from pendcli.data.printed import parse_dimension, parse_formula
 from pendcli.papers.registry import paper
+from pendcli.verify.dimensions import check_dimensions
+from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.printed_check import formula_passes
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -292,7 +292,7 @@ def test_a_formula_check_evaluates_the_ledgers_form(
     """lecornu.eq52_as_read measures (52) as the ledger reads it, not a copy: with the
     reading's −u sin u of θ1 set back to the printed u cos u (in a copy of tables/), the
     residual falls as p only and the check fails."""
-    from pendcli.core.tables import clear_table_cache
+    from pendcli.data.tables import clear_table_cache
     from pendcli.papers.lecornu.formulas_conical import conical_rows
 
     rows = {r.id: r for r in conical_rows()}

@@ -1,4 +1,4 @@
-"""The numeric mode of the printed-form engine (pendcli/core/printed_numeric.py):
+"""The numeric mode of the printed-form engine (pendcli/verify/printed_numeric.py):
 printed numbers judged by their printed digits against computed values, on hand-checked cases
 (rounding against truncation, one unit off in the last place, a list with one wrong entry, a
 correction that is or is not the computed one), the ledger rows whose printed form is numbers
@@ -17,12 +17,12 @@ import pytest
 from ledgers import committed_ledger
 from mutations import altered_tables
 
-from pendcli.core.ledger import LedgerRow, load_ledger, verify_printed
-from pendcli.core.printed import parse_formula
-from pendcli.core.printed_check import Reference
-from pendcli.core.printed_numeric import Numbers, numeric_status, printed_numbers
-from pendcli.core.tables import clear_table_cache, load_paper_table
+from pendcli.data.ledger import LedgerRow, load_ledger, verify_printed
+from pendcli.data.printed import parse_formula
+from pendcli.data.tables import clear_table_cache, load_paper_table
 from pendcli.papers.registry import paper as paper_named
+from pendcli.verify.printed_check import Reference
+from pendcli.verify.printed_numeric import Numbers, numeric_status, printed_numbers
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"

@@ -14,10 +14,10 @@ from pathlib import Path
 import pytest
 from ledgers import committed_ledger
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.ledger import LedgerRow, equation_rows, verify_printed
-from pendcli.core.ledger_formulas import row_formula
+from pendcli.base.errors import PendcliError
+from pendcli.data.ledger import LedgerRow, equation_rows, verify_printed
 from pendcli.papers.registry import paper as registered_paper
+from pendcli.verify.ledger_formulas import row_formula
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -209,7 +209,7 @@ def test_a_repeat_with_a_changed_coefficient_is_not_a_repeat() -> None:
 
 
 def test_every_checked_row_has_a_reference() -> None:
-    # the numerical asides too: their printed numbers are judged by core/printed_numeric
+    # the numerical asides too: their printed numbers are judged by verify/printed_numeric
     rows, _ = _ledger()
     checked = [r for r in rows.values() if r.status in ("holds", "fails", "misprint")]
     assert [r.id for r in checked if not r.reference] == []

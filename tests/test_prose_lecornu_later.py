@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from pendcli.core.reading import prose_paragraphs
+from pendcli.data.reading import prose_paragraphs
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 FIRST = 462  # the first line of the part of the text read here
@@ -111,7 +111,7 @@ def test_against_the_largest_length_the_descending_half_is_lengthened_not_shorte
 
 
 def test_the_reference_of_the_largest_length_agrees_with_the_integration() -> None:
-    from pendcli.core.printed import ledger_symbols
+    from pendcli.data.printed import ledger_symbols
     from pendcli.papers.lecornu.references_slow import reference_largest_length
 
     ref = reference_largest_length()

@@ -10,7 +10,7 @@ import numpy as np
 from ledgers import committed_ledger, committed_row
 from scipy.integrate import solve_ivp
 
-from pendcli.core.ledger import reference_table, row_printed_status
+from pendcli.data.ledger import reference_table, row_printed_status
 from pendcli.papers.lecornu.references_prose import amplification_to_zero_length
 from pendcli.papers.registry import paper
 

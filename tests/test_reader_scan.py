@@ -16,8 +16,8 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from pendcli.core.reader_text import figure_text, for_reader, markdown_for_reader, wrapped
-from pendcli.core.reading import prose_paragraphs
+from pendcli.data.reader_text import figure_text, for_reader, markdown_for_reader, wrapped
+from pendcli.data.reading import prose_paragraphs
 from pendcli.output.html.prose import continues, prose_html
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -63,10 +63,10 @@ def visible_text(page: str) -> str:
         ("exactly j_(1,1)²/4", "exactly j₁,₁²/4"),
         ("« I_{-1} à π »", "« I₋₁ à π »"),
         (
-            "Judged by its printed digits (core/printed_numeric), the",
+            "Judged by its printed digits (verify/printed_numeric), the",
             "Judged by its printed digits, the",
         ),
-        ("an inequality (core/printed_check), on", "an inequality, on"),
+        ("an inequality (verify/printed_check), on", "an inequality, on"),
         (
             "the ids psi_sin2, eq_8 and lecornu.x_bound",
             "the ids psi_sin2, eq_8 and lecornu.x_bound",
@@ -145,7 +145,7 @@ def test_a_word_cut_at_its_hyphen_is_joined() -> None:
 def edition_pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
     """The three papers' pages and the report page, from the tables' rows (no computation),
     as write_html_report writes them."""
-    from pendcli.core.tables import load_paper_table, paper_text
+    from pendcli.data.tables import load_paper_table, paper_text
     from pendcli.output.html.report import write_html_report
     from tests.test_html_report import edition_rows
 

@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 from ledgers import committed_ledger, paragraphs_by_hand
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.reading import (
+from pendcli.base.errors import PendcliError
+from pendcli.data.reading import (
     label_lines,
     load_reading,
     parse_reading,

@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.reading import label_lines, load_reading
-from pendcli.core.reading_citations import parse_citations, unsaid_citations
+from pendcli.base.errors import PendcliError
+from pendcli.data.reading import label_lines, load_reading
+from pendcli.data.reading_citations import parse_citations, unsaid_citations
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 

@@ -6,7 +6,7 @@ import shutil
 
 import pytest
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.run.drift import TOLERANCES, compare_tables
 
 HEADER = (
@@ -148,8 +148,8 @@ def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
     from cli_helpers import invoke
 
     from pendcli.api import check
-    from pendcli.core.cache import ResultCache
-    from pendcli.core.tables import clear_table_cache, tables_dir
+    from pendcli.base.cache import ResultCache
+    from pendcli.data.tables import clear_table_cache, tables_dir
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
@@ -202,7 +202,7 @@ def test_check_update_keeps_what_moved_only_within_the_tolerance(tmp_path) -> No
     """Another CPU's kernels move an observed order by ~1e-9: a committed row whose every cell
     is within its tolerance stays byte for byte; a row moved beyond it is rewritten, the rest
     of the table kept (check --update on a fresh clone changes no byte)."""
-    from pendcli.core.tables import tables_dir
+    from pendcli.data.tables import tables_dir
     from pendcli.run.regression import kept_within_tolerance
 
     name = "lecornu-formulas.csv"
@@ -225,7 +225,7 @@ def test_check_update_leaves_a_set_that_holds_its_bytes_as_it_is(tmp_path, monke
     """Untouched, `check --update` swaps nothing: the folder and each file keep their inode and
     time, and it says so; with one committed cell moved beyond its tolerance it rewrites the
     set, and that cell is the regenerated one again."""
-    from pendcli.core.tables import clear_table_cache, tables_dir
+    from pendcli.data.tables import clear_table_cache, tables_dir
     from pendcli.run.regression import run_check
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
@@ -259,8 +259,8 @@ def test_the_ledger_table_carries_each_rows_status_and_a_changed_one_is_a_drift(
     """A reproduce result with ledger rows gives ``<paper>-equations.csv`` (id, label, lines,
     status, dimensions, observed order); a status, a dimension verdict or a row that changes
     is a drift naming the row, an observed order within 0.05 is not."""
-    from pendcli.core.rows import EquationRow
-    from pendcli.core.vocabulary import EquationStatus
+    from pendcli.data.rows import EquationRow
+    from pendcli.data.vocabulary import EquationStatus
     from pendcli.run.regression import regenerated_tables
     from pendcli.run.reproduce import ReproduceResult
 
@@ -321,9 +321,9 @@ def test_check_fails_naming_the_row_whose_stored_derivation_the_code_no_longer_d
     recomputed, naming the row and its reference; the untouched store passes this step."""
     import json
 
-    from pendcli.core import derivation_store
     from pendcli.papers import registry
     from pendcli.run import regression
+    from pendcli.verify import derivation_store
 
     monkeypatch.setattr(registry, "ledger_papers", lambda: ["tisserand"])
     assert regression._derivations(False, None) == []

@@ -7,12 +7,12 @@ from dataclasses import replace
 import pytest
 from cli_helpers import invoke
 
-from pendcli.core.claims import ClaimRow, FormulaRow
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.output import report_figures
 from pendcli.output.report import check_out_folder, write_report
 from pendcli.output.report_sections import disagreement_digest
 from pendcli.run.reproduce import ReproduceResult
+from pendcli.verify.claims import ClaimRow, FormulaRow
 
 
 def _claim(cid: str, verdict: str, note: str = "") -> ClaimRow:
@@ -147,7 +147,7 @@ def _stub_figures(monkeypatch):
 
 def _earlier_manifest(out, *names):
     """The manifest an earlier run wrote (its files listed): the folder is pendcli's."""
-    from pendcli.core import files
+    from pendcli.base import files
 
     (out / files.MANIFEST).write_text(files.manifest_text(list(names)), "utf-8")
 
@@ -227,7 +227,7 @@ def test_report_has_the_ledger_coverage_and_every_failing_equation(charbonnier_r
     assert "### Equation ledger" in text
     wrong = [r for r in result.equations["charbonnier"] if r.status in ("fails", "misprint")]
     assert wrong  # Charbonnier (9) fails
-    from pendcli.core.reader_text import for_reader  # ∫_(−α)^θ shown set, as a reader reads
+    from pendcli.data.reader_text import for_reader  # ∫_(−α)^θ shown set, as a reader reads
 
     for row in wrong:
         assert for_reader(row.statement) in text
@@ -275,7 +275,7 @@ def test_a_saved_figure_is_drawn_once_after_its_layout(tmp_path, monkeypatch):
     engine left behind by tight_layout would make savefig draw everything twice)."""
     from matplotlib.figure import Figure
 
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
 
     draws: list[float] = []
     draw = Figure.draw

@@ -17,7 +17,7 @@ import pytest
 import sample_paper
 from cli_helpers import invoke
 
-from pendcli.core.tables import clear_table_cache
+from pendcli.data.tables import clear_table_cache
 from pendcli.papers.registry import keys, registered
 
 SAMPLE = Path(sample_paper.__file__).parent
@@ -109,7 +109,7 @@ def test_the_sample_sub_app(sample):
 
 
 def test_a_paper_cannot_be_registered_twice(sample):
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
 
     with pytest.raises(PendcliError, match="already registered"), registered(sample_paper.PAPER):
         pass

@@ -11,7 +11,7 @@ import re
 
 import pytest
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.papers import registry
 from pendcli.papers.charbonnier import stability as charbonnier_stability
 from pendcli.papers.lecornu import stability as lecornu_stability

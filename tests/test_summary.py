@@ -106,8 +106,8 @@ def test_ledger_parts_in_two_processes_give_the_ledger_in_order():
 
 
 def test_formula_rows_are_shared_only_inside_the_block():
-    from pendcli.core.claims import sharing_formula_rows
     from pendcli.papers.registry import formula_checks
+    from pendcli.verify.claims import sharing_formula_rows
 
     with sharing_formula_rows("tisserand", []):
         assert formula_checks("tisserand") == []

@@ -5,10 +5,10 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.core.claims import Recomputed, join_claims
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import load_paper_table, tables_dir
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import load_paper_table, tables_dir
 from pendcli.papers.registry import PAPERS
+from pendcli.verify.claims import Recomputed, join_claims
 
 GOOD = """
 [paper]

@@ -16,12 +16,12 @@ import pytest
 from cli_helpers import assert_clean_error, invoke, run_cli
 from evaluated import committed_claims
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.numbers import parse_printed
-from pendcli.core.tables import load_paper_table
-from pendcli.core.verdict import judge
+from pendcli.base.errors import PendcliError
+from pendcli.data.numbers import parse_printed
+from pendcli.data.tables import load_paper_table
 from pendcli.numerics.spherical import exact_conical
 from pendcli.papers.tisserand import claims, explore, figures, model, units
+from pendcli.verify.verdict import judge
 
 CLAIMS = load_paper_table("tisserand").claims
 EXAMPLE = (math.radians(30), math.radians(15))

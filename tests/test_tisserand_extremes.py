@@ -15,7 +15,7 @@ import mpmath
 import pytest
 from test_tisserand import mp_fourier, mp_mean_motions
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.numerics.spherical import conical_limit, exact_conical, planar_limit_k1
 from pendcli.papers.tisserand.model import series_conical
 

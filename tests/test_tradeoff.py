@@ -18,7 +18,7 @@ import mpmath
 import pytest
 from cli_helpers import invoke
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.papers.charbonnier import speed as charbonnier_speed
 from pendcli.papers.lecornu import speed as lecornu_speed
 from pendcli.papers.tisserand import speed as tisserand_speed
@@ -341,7 +341,7 @@ def test_plot_tradeoff_draws_one_panel_per_family(tmp_path, monkeypatch):
     """Two families side by side, each panel with its family's lines."""
     import matplotlib.pyplot as plt
 
-    from pendcli.core import plotting
+    from pendcli.base import plotting
 
     kept = []
     monkeypatch.setattr(plotting, "save_figure", lambda fig, path: kept.append(fig))

@@ -1,4 +1,5 @@
-"""Verdict boundaries: agrees, truncated, last-digit, discrepant (rules in pendcli.core.verdict)."""
+"""Verdict boundaries: agrees, truncated, last-digit, discrepant (rules in
+pendcli.verify.verdict)."""
 
 import math
 
@@ -6,8 +7,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from pendcli.core.numbers import parse_printed
-from pendcli.core.verdict import Verdict, judge
+from pendcli.data.numbers import parse_printed
+from pendcli.verify.verdict import Verdict, judge
 
 
 @pytest.mark.parametrize(

@@ -12,7 +12,7 @@ import pytest
 from ledgers import committed_row
 from mutations import altered_ledger
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 PAPERS = ("tisserand", "lecornu", "charbonnier")

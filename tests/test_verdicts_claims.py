@@ -7,9 +7,9 @@ import mpmath
 import pytest
 from evaluated import committed_claims
 
-from pendcli.core.causes import Judged, Procedure, own_verdicts
-from pendcli.core.errors import PendcliError
-from pendcli.core.numbers import parse_printed
+from pendcli.base.errors import PendcliError
+from pendcli.data.numbers import parse_printed
+from pendcli.verify.causes import Judged, Procedure, own_verdicts
 
 B, LENGTH = "0.35", "1"
 
@@ -148,7 +148,7 @@ def test_every_conditional_row_and_its_claims_turn_at_one_bound(lecornu_across_g
 
 def _printed(claim_id: str) -> tuple[mpmath.mpf, mpmath.mpf]:
     """A printed number of Lecornu's table and half a unit of its last printed place."""
-    from pendcli.core.tables import load_paper_table
+    from pendcli.data.tables import load_paper_table
 
     number = load_paper_table("lecornu").claim(claim_id).number
     return mpmath.mpf(number.value), mpmath.mpf(number.resolution) / 2

@@ -7,7 +7,7 @@ from importlib.metadata import version
 import pytest
 from cli_helpers import invoke
 
-from pendcli.core.versions import LIBRARIES
+from pendcli.base.versions import LIBRARIES
 
 
 def test_version_alone_is_one_line() -> None:

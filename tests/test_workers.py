@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 from cli_helpers import invoke
 
-from pendcli.core.workers import ForkedWorkers, WorkerDied, job_count
+from pendcli.base.workers import ForkedWorkers, WorkerDied, job_count
 
 pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/proc and prctl")
 
@@ -26,7 +26,7 @@ pytestmark = pytest.mark.skipif(not sys.platform.startswith("linux"), reason="/p
 PARENT = """
 import os, sys, time
 from pathlib import Path
-from pendcli.core.workers import ForkedWorkers
+from pendcli.base.workers import ForkedWorkers
 
 folder = Path(sys.argv[1])
 
@@ -133,8 +133,8 @@ def reaped(pid: int) -> bool:
 DYING = """
 import os, signal, sys, time
 from pathlib import Path
-from pendcli.core.errors import PendcliError
-from pendcli.core.workers import ForkedWorkers, WorkerDied
+from pendcli.base.errors import PendcliError
+from pendcli.base.workers import ForkedWorkers, WorkerDied
 
 how, sign, started = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[2] + "-parent")
 parent, looks = os.getpid(), []
@@ -236,7 +236,7 @@ def test_leaving_the_block_kills_and_reaps_the_worker(tmp_path: Path) -> None:
 
 
 def test_more_items_than_a_pipe_surely_holds_are_refused_not_left_to_block() -> None:
-    from pendcli.core.workers import MOST_ITEMS
+    from pendcli.base.workers import MOST_ITEMS
 
     with ForkedWorkers(1) as pool:
         assert pool.share(list(range(MOST_ITEMS)), square)[-1] == (MOST_ITEMS - 1) ** 2
@@ -247,7 +247,7 @@ def test_more_items_than_a_pipe_surely_holds_are_refused_not_left_to_block() -> 
 def test_a_worker_s_death_waits_for_the_end_of_a_section_that_defers_stops() -> None:
     """Noticed inside stops_deferred (an atomic write), it stops the run on leaving it; a
     signal to this process noted there takes its place."""
-    from pendcli.core.interrupts import Interrupted, stop, stops_deferred
+    from pendcli.base.interrupts import Interrupted, stop, stops_deferred
 
     finished: list[int] = []
 

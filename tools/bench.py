@@ -59,7 +59,7 @@ START, END = "<!-- bench:start -->", "<!-- bench:end -->"
 def regenerate_tables(quick: bool = False, root: Path | None = None) -> dict[str, list[Point]]:
     """Measure every family, write ``<root>/tradeoff/<family>.csv`` and the date measured
     (all at once, :func:`table_files`)."""
-    from pendcli.core.files import write_set
+    from pendcli.base.files import write_set
 
     measured = measure_tables(quick)
     write_set(table_files(measured, root))
@@ -96,7 +96,7 @@ def table_files(
 
 
 def _choice_cell(name: str, tol: float, points: list[Point]) -> str:
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
     from pendcli.run.tradeoff_engine import choose
 
     try:
@@ -190,7 +190,7 @@ def write_section(readme: Path, text: str) -> bool:
     new = with_section(readme, text)
     if new is None:
         return False
-    from pendcli.core.files import atomic_write
+    from pendcli.base.files import atomic_write
 
     atomic_write(readme, new)
     return True
@@ -212,7 +212,7 @@ def run(
 
     The measured tables, their date, (``readme``, when it has the markers) docs/benchmarks.md
     and (``summary``) the README's timings block are written together at the end
-    (:func:`pendcli.core.files.write_set`): a run stopped before leaves all of them as they
+    (:func:`pendcli.base.files.write_set`): a run stopped before leaves all of them as they
     were. The cost-growth table (minutes) is left out of a ``quick`` run unless ``growth``
     asks, and so are the floor table (minutes: every equation checked ``floor_runs`` + 1
     times) unless ``floor`` asks, and the suite and install timings unless ``checkout`` asks.
@@ -255,12 +255,12 @@ Splice = tuple[Path | None, Callable[[str], str | None]]
 
 def write_results(files: dict[Path, str | bytes | None], splices: list[Splice]) -> None:
     """Write ``files`` (the measured tables) and each README of ``splices`` ((path, its new
-    text from the old or None to leave it)) as one set (:func:`pendcli.core.files.write_set`).
+    text from the old or None to leave it)) as one set (:func:`pendcli.base.files.write_set`).
 
     Each README is read here, at the end of the run, and must still hold what was read when
     the set is renamed: an edit made in between is refused in one line, nothing written.
     """
-    from pendcli.core.files import content_digest, write_set
+    from pendcli.base.files import content_digest, write_set
 
     read: dict[Path, str | None] = {}
     for path, splice in splices:
@@ -376,6 +376,6 @@ def main(argv: list[str] | None = None) -> int:
 
 
 if __name__ == "__main__":
-    from pendcli.core.interrupts import run_entry
+    from pendcli.base.interrupts import run_entry
 
     sys.exit(run_entry(main, "python -m tools.bench"))

@@ -92,7 +92,7 @@ FLOOR_TARGETS: dict[str, tuple[str, str, float]] = {
 
 READ_LEDGERS = (
     "import sympy, scipy.special, scipy.integrate, matplotlib.pyplot, mpmath\n"
-    "from pendcli.core.ledger import load_ledger\n"
+    "from pendcli.data.ledger import load_ledger\n"
     "from pendcli.papers.registry import ledger_papers\n"
     "for key in ledger_papers(): load_ledger(key)"
 )
@@ -100,9 +100,9 @@ READ_LEDGERS = (
 
 READ_DERIVATIONS = (
     "import sympy, scipy.special, scipy.integrate, matplotlib.pyplot, mpmath\n"
-    "from pendcli.core.ledger import load_ledger\n"
-    "from pendcli.core.derivation_store import row_record, stored_rows\n"
-    "from pendcli.core.ledger_references import paper_digest\n"
+    "from pendcli.data.ledger import load_ledger\n"
+    "from pendcli.verify.derivation_store import row_record, stored_rows\n"
+    "from pendcli.verify.ledger_references import paper_digest\n"
     "from pendcli.papers.registry import ledger_papers\n"
     "for key in ledger_papers():\n"
     "    load_ledger(key)\n"

@@ -6,7 +6,7 @@ there is typed in. ``python -m tools.docs`` rewrites the text between each pair 
 (``<!-- sample:start -->`` ... ``<!-- sample:end -->`` for the sample output,
 ``<!-- causes:start -->`` ... for the counts of the numbers that do not agree, by cause,
 ``<!-- schema:start -->`` ... ``<!-- schema:end -->`` for the JSON schema from
-:mod:`pendcli.core.schema`, ``<!-- ledger:start -->`` ... for the equation ledgers'
+:mod:`pendcli.output.schema`, ``<!-- ledger:start -->`` ... for the equation ledgers'
 coverage, ``<!-- findings:start -->`` ... for their findings by paper); ``--check`` exits 1
 if one is stale.
 """
@@ -23,9 +23,9 @@ from pendcli.output.columns import Column, Row
 from pendcli.output.markdown import to_markdown
 
 if TYPE_CHECKING:
-    from pendcli.core.claims import ClaimRow
-    from pendcli.core.rows import EquationRow
+    from pendcli.data.rows import EquationRow
     from pendcli.run.reproduce import ReproduceResult
+    from pendcli.verify.claims import ClaimRow
 
 __all__ = [
     "SECTIONS",
@@ -79,7 +79,7 @@ def _one_row_of_each_verdict(rows: list[dict[str, object]]) -> list[Row]:
 
 
 def schema_section() -> str:
-    from pendcli.core import schema
+    from pendcli.output import schema
 
     return "\n".join(
         [
@@ -130,7 +130,7 @@ def _paper_causes(key: str, rows: list[ClaimRow]) -> list[str]:
     by_cause: dict[str, list[str]] = {}
     for r in rows:
         by_cause.setdefault(str(r.cause), []).append(r.id.split(".", 1)[1])
-    from pendcli.core.vocabulary import PROCEDURE_VERDICTS
+    from pendcli.data.vocabulary import PROCEDURE_VERDICTS
 
     own = {str(v): sum(r.procedure_verdict == v for r in rows) for v in PROCEDURE_VERDICTS}
     unknown = sum(r.procedure_verdict is None for r in rows)
@@ -163,11 +163,11 @@ def ledger_section() -> str:
     """Coverage of the equation ledgers: the labels each text prints, rows by status, the
     display formulas and the paragraphs of prose accounted for, and the findings (failing or
     misprinted rows that restate no other)."""
-    from pendcli.core.ledger import FINDING_KEYS, coverage, labels_in_text
-    from pendcli.core.ledger_coverage import ledger_text_coverage
-    from pendcli.core.reading import reading_coverage
-    from pendcli.core.tables import paper_text
-    from pendcli.core.vocabulary import STATUSES
+    from pendcli.data.ledger import FINDING_KEYS, coverage, labels_in_text
+    from pendcli.data.ledger_coverage import ledger_text_coverage
+    from pendcli.data.reading import reading_coverage
+    from pendcli.data.tables import paper_text
+    from pendcli.data.vocabulary import STATUSES
     from pendcli.papers.registry import PAPERS
 
     counts = coverage(_ledger_rows())
@@ -196,9 +196,9 @@ def kinds_section() -> str:
     """The ledgers' rows by the kind of check that decides them, per paper (docs/ENGINE.md)."""
     from collections import Counter
 
-    from pendcli.core.check_kinds import KINDS
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
     from pendcli.papers.registry import PAPERS, ledger_papers
+    from pendcli.verify.check_kinds import KINDS
 
     papers = [key for key in PAPERS if key in ledger_papers()]
     counts = {key: Counter(r.kind for r in load_ledger(key).rows) for key in papers}
@@ -215,7 +215,7 @@ def findings_section() -> str:
     """The ledgers' findings by paper, from the rows themselves (never typed): each failing
     row (its slip carried by the author's later work) with its label or line, the count of
     misprints (not carried), the rows that only restate another's slip, the OCR readings."""
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
     from pendcli.papers.registry import PAPERS
 
     rows = _ledger_rows()
@@ -288,12 +288,12 @@ def splice(readme: str, section: str, name: str = "sample") -> str:
 
 
 def _store_derivations() -> None:
-    """Each ledger's derivations stored (core/derivation_store), for the package's own tables
+    """Each ledger's derivations stored (verify/derivation_store), for the package's own tables
     only: a tables folder of one's own is derived afresh when judged, never stored."""
-    from pendcli.core.derivation_store import stores_here
-    from pendcli.core.ledger_references import store_derivations
-    from pendcli.core.tables import tables_dir
+    from pendcli.data.tables import tables_dir
     from pendcli.papers.registry import PAPERS, ledger_papers, paper
+    from pendcli.verify.derivation_store import stores_here
+    from pendcli.verify.ledger_references import store_derivations
 
     if not stores_here(tables_dir()):
         return
@@ -309,8 +309,8 @@ def main(argv: list[str]) -> int:
     readme = Path(argv[argv.index("--readme") + 1]) if "--readme" in argv else Path("README.md")
     from dataclasses import replace
 
-    from pendcli.core.files import content_digest
-    from pendcli.core.tables import read_table_text
+    from pendcli.base.files import content_digest
+    from pendcli.data.tables import read_table_text
 
     if "--tables" in argv:  # the ledger's derivations first: its statuses are judged from them
         _store_derivations()
@@ -346,7 +346,7 @@ def main(argv: list[str]) -> int:
         names = ", ".join(str(p) for p in new)
         print(f"rewrote {len(tables)} tables and {names}{gone}", file=sys.stderr)
         return 0
-    from pendcli.core.files import write_set
+    from pendcli.base.files import write_set
 
     changes: dict[Path, str | bytes | None] = {p: t for p, t in new.items() if t != old[p]}
     write_set(changes, read)  # committed: never half written, never over an edit
@@ -354,6 +354,6 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
-    from pendcli.core.interrupts import run_entry
+    from pendcli.base.interrupts import run_entry
 
     sys.exit(run_entry(lambda: main(sys.argv[1:]), "python -m tools.docs"))

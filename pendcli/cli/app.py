@@ -24,7 +24,7 @@ from pendcli.cli.values import word
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
-    from pendcli.core.cache import ResultCache
+    from pendcli.base.cache import ResultCache
     from pendcli.run.reproduce import ReproduceResult
 
 __all__ = ["app"]
@@ -69,7 +69,7 @@ def _show_version(ctx: typer.Context) -> None:
     if "pendcli.version" not in ctx.meta or "pendcli.verbose" not in ctx.meta:
         return
     if ctx.meta["pendcli.version"]:
-        from pendcli.core.versions import library_versions
+        from pendcli.base.versions import library_versions
 
         versions = library_versions()
         shown = versions if ctx.meta["pendcli.verbose"] else versions[2:3]
@@ -100,10 +100,10 @@ def list_claims(
     paper: PaperOption = None, fmt: FormatOption = OutputFormat.table, quiet: QuietFlag = False
 ) -> None:
     """Every claim with its id, paper and source (reads the tables only; computes nothing)."""
-    from pendcli.core.claims import list_rows
-    from pendcli.core.reader_text import for_reader
+    from pendcli.data.reader_text import for_reader
     from pendcli.output import Column
     from pendcli.papers.registry import resolve_papers
+    from pendcli.verify.claims import list_rows
 
     rows = list_rows(resolve_papers(paper))
 
@@ -185,8 +185,8 @@ def reproduce(
     cache: CacheOption = True,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 unless --fail-on)."""
+    from pendcli.base.errors import PendcliError
     from pendcli.cli.common import result_cache
-    from pendcli.core.errors import PendcliError
     from pendcli.papers.registry import resolve_papers
     from pendcli.run.reproduce import EQUATION_ONLY, reproduce_all
 
@@ -289,13 +289,13 @@ def check(
     text (published, verdict, cause, a ledger row's status) must be identical. The drift table and
     --format json show each tolerance.
     """
-    from pendcli.core.console import status_line
+    from pendcli.base.console import status_line
     from pendcli.run.regression import run_check
 
     if not quiet and fmt is CheckFormat.table:  # seconds before the progress bar can start
         status_line("check: reading the committed tables and the equation ledgers")
     if update and fmt is not CheckFormat.table:
-        from pendcli.core.errors import PendcliError
+        from pendcli.base.errors import PendcliError
 
         raise PendcliError(f"--format: {fmt.value!r} with --update; expected table")
     code = run_check(update=update, quiet=quiet, fmt=fmt.value)

@@ -12,8 +12,8 @@ app = group("The result cache: where it is, how big, and emptying it.", "cache")
 def info(quiet: QuietFlag = False) -> None:
     """Where the result cache is ($PENDCLI_CACHE, off, or the default), its entries and size
     (and, when its folder is not used, why)."""
+    from pendcli.base.cache import ENV, entries
     from pendcli.cli.common import say
-    from pendcli.core.cache import ENV, entries
     from pendcli.run.reproduce import result_cache
 
     cache = result_cache()

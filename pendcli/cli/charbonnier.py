@@ -32,13 +32,13 @@ def table(
     quiet: QuietFlag = False,
 ) -> None:
     """The printed table of I_n(π), n = 0..5, and its closed forms, against recomputation."""
-    from pendcli.core.claims import evaluate_paper
-    from pendcli.core.plotting import validate_plot_path
+    from pendcli.base.plotting import validate_plot_path
     from pendcli.output.views import FORMULA_COLUMNS, claim_columns
     from pendcli.papers.charbonnier.claims import recompute
     from pendcli.papers.charbonnier.explore import table_rows
     from pendcli.papers.charbonnier.figures import plot_table
     from pendcli.papers.charbonnier.formulas import closed_form_rows
+    from pendcli.verify.claims import evaluate_paper
 
     plot = validate_plot_path(plot)
     rows = table_rows(n_max)

@@ -11,12 +11,12 @@ from typing import TYPE_CHECKING, Annotated
 
 import typer
 
+from pendcli.base.console import console
 from pendcli.cli.values import word
-from pendcli.core.console import console
 from pendcli.output import OutputFormat, Section
 
 if TYPE_CHECKING:
-    from pendcli.core.cache import ResultCache
+    from pendcli.base.cache import ResultCache
 
 
 class CheckFormat(StrEnum):
@@ -30,7 +30,7 @@ class CheckFormat(StrEnum):
 
 def bad_value(option: str, value: object, expected: str) -> Exception:
     """The one wording of a refused value: ``--option: 'value' ...; expected ...``."""
-    from pendcli.core.errors import invalid_value
+    from pendcli.base.errors import invalid_value
 
     return invalid_value(option, value, expected)
 
@@ -40,7 +40,7 @@ def _paper_value(value: str | None) -> str | None:
     from pendcli.papers.registry import PAPERS
 
     if value is not None and value.strip().casefold() not in PAPERS:
-        from pendcli.core.errors import either
+        from pendcli.base.errors import either
 
         raise bad_value("--paper", value, f"one of {either(PAPERS)}")
     return value
@@ -64,7 +64,7 @@ def complete_verdicts(incomplete: str) -> list[str]:
 
 def complete_statuses(incomplete: str) -> list[str]:
     """Shell completion of ``--status`` (the equation ledger's statuses)."""
-    from pendcli.core.vocabulary import STATUSES
+    from pendcli.data.vocabulary import STATUSES
 
     return [s for s in STATUSES if s.startswith(incomplete.casefold())]
 
@@ -102,7 +102,7 @@ CacheOption = Annotated[
 
 
 def _quiet_flag(value: bool) -> bool:
-    from pendcli.core.console import set_quiet
+    from pendcli.base.console import set_quiet
 
     set_quiet(bool(value))
     return value
@@ -125,7 +125,7 @@ QuietFlag = Annotated[
 def refuse_both(first: str, first_value: object, second: str, second_value: object) -> None:
     """Options that exclude each other (``--tol`` and ``--method``): both given is an error."""
     if first_value is not None and second_value is not None:
-        from pendcli.core.errors import PendcliError
+        from pendcli.base.errors import PendcliError
 
         raise PendcliError(
             f"--{first} and --{second} exclude each other: --{first} picks the cheapest "
@@ -147,7 +147,7 @@ def result_cache(use: bool, quiet: bool = False) -> Iterator[ResultCache]:
 
 def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, object]) -> None:
     """Print titled sections of rows (tables) or the whole document (JSON, CSV, Markdown)."""
-    from pendcli.core.console import for_display
+    from pendcli.base.console import for_display
     from pendcli.output import render
 
     # rich (~0.02 s to import) only for the table: the data formats never use the console.
@@ -158,7 +158,7 @@ def emit(fmt: OutputFormat, sections: Sequence[Section], document: Mapping[str, 
 
 def say(message: str) -> None:
     """A status line on stderr (so stdout stays machine-readable); nothing under --quiet."""
-    from pendcli.core.console import is_quiet
+    from pendcli.base.console import is_quiet
 
     if not is_quiet():
         console(stderr=True).print(message)
@@ -169,7 +169,7 @@ def busy(description: str) -> Iterator[None]:
     """A spinner with ``description`` on stderr while a slow step runs (a second or more:
     the equation ledger, drawing figures); only on a terminal, never under --quiet, and
     gone when the step ends, so nothing of it reaches a pipe or a log."""
-    from pendcli.core.console import is_quiet
+    from pendcli.base.console import is_quiet
 
     if is_quiet() or not sys.stderr.isatty():
         yield

@@ -21,7 +21,7 @@ from pendcli.cli.values import word
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
-    from pendcli.core.cache import ResultCache
+    from pendcli.base.cache import ResultCache
 
 StatusOption = Annotated[
     str | None,
@@ -50,9 +50,9 @@ def equations(
     quiet: QuietFlag = False,
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
-    from pendcli.core.console import is_quiet
-    from pendcli.core.ledger import coverage
-    from pendcli.core.vocabulary import STATUSES
+    from pendcli.base.console import is_quiet
+    from pendcli.data.ledger import coverage
+    from pendcli.data.vocabulary import STATUSES
     from pendcli.output import Column
     from pendcli.output.summary import compact_equation_columns
     from pendcli.output.views import EQUATION_COLUMNS
@@ -60,7 +60,7 @@ def equations(
     from pendcli.run.reproduce import ledger_rows
 
     if status is not None and status not in STATUSES:
-        from pendcli.core.errors import either
+        from pendcli.base.errors import either
 
         raise bad_value("--status", status, f"one of {either(STATUSES)}")
     with result_cache(cache) as stored:
@@ -100,9 +100,9 @@ def _text_coverage(cache: ResultCache, paper: str) -> dict[str, object]:
     """The ``$$`` blocks of the paper's text its ledger covers and the paragraphs of prose its
     reading record accounts for (cached with the ledger: the ledger's validation imports
     sympy)."""
-    from pendcli.core.cache import cached_json
-    from pendcli.core.ledger_coverage import ledger_text_coverage
-    from pendcli.core.reading import reading_coverage
+    from pendcli.base.cache import cached_json
+    from pendcli.data.ledger_coverage import ledger_text_coverage
+    from pendcli.data.reading import reading_coverage
 
     def compute() -> dict[str, object]:
         return {**ledger_text_coverage(paper).as_dict(), **reading_coverage(paper).as_dict()}

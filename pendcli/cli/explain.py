@@ -12,8 +12,8 @@ from pendcli.cli.common import FormatOption, PaperOption, QuietFlag, emit
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
-    from pendcli.core.explain import ExplainedRow
     from pendcli.output import Section
+    from pendcli.verify.explain import ExplainedRow
 
 ClaimArgument = Annotated[
     str | None,
@@ -48,7 +48,7 @@ def _as_listed(claim: str | None) -> str | None:
     ``charbonnier.I_pi.n3``); an unknown id as typed (refused with the list's pointer)."""
     if claim is None:
         return None
-    from pendcli.core.tables import load_paper_table
+    from pendcli.data.tables import load_paper_table
     from pendcli.papers.registry import PAPERS
 
     key = claim.split(".", 1)[0].strip().casefold()
@@ -61,8 +61,8 @@ def _as_listed(claim: str | None) -> str | None:
 
 def _papers_for(claim: str, paper: str | None) -> tuple[str, ...]:
     """The paper holding ``claim`` (its id's first part), checked against --paper."""
-    from pendcli.core.errors import PendcliError
-    from pendcli.core.tables import load_paper_table
+    from pendcli.base.errors import PendcliError
+    from pendcli.data.tables import load_paper_table
     from pendcli.papers.registry import PAPERS, resolve_papers
 
     key = claim.split(".", 1)[0].strip().casefold()
@@ -78,7 +78,7 @@ def _papers_for(claim: str, paper: str | None) -> tuple[str, ...]:
 
 
 def _nothing_to_explain(claim: str) -> Exception:
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
 
     return PendcliError(
         f"claim {claim!r} agrees with its recomputation and declares no hand computation: "
@@ -87,9 +87,9 @@ def _nothing_to_explain(claim: str) -> Exception:
 
 
 def _explained(key: str, claim: str | None) -> list[ExplainedRow]:
-    from pendcli.core.explain import explain_rows
     from pendcli.papers.registry import evaluate as evaluate_paper
     from pendcli.papers.registry import explanations
+    from pendcli.verify.explain import explain_rows
 
     verdicts = {r.id: (r.verdict, r.cause, r.published) for r in evaluate_paper(key)}
     return explain_rows(key, explanations(key), verdicts, claim, progress=_progress(key))
@@ -97,7 +97,7 @@ def _explained(key: str, claim: str | None) -> list[ExplainedRow]:
 
 def _progress(key: str) -> Callable[[str], None] | None:
     """A one-line status on a terminal's stderr (nothing in a pipe or under --quiet)."""
-    from pendcli.core.console import is_quiet
+    from pendcli.base.console import is_quiet
 
     if is_quiet() or not sys.stderr.isatty():
         return None
@@ -111,7 +111,7 @@ def _progress(key: str) -> Callable[[str], None] | None:
 
 def _show_start(keys: tuple[str, ...]) -> None:
     """A first status line at once (the recomputation before the first search takes seconds)."""
-    from pendcli.core.console import is_quiet
+    from pendcli.base.console import is_quiet
 
     if not is_quiet() and sys.stderr.isatty():
         sys.stderr.write(f"\r\033[Kexplain {keys[0]}: recomputing the claims")
@@ -119,7 +119,7 @@ def _show_start(keys: tuple[str, ...]) -> None:
 
 
 def _clear_progress() -> None:
-    from pendcli.core.console import is_quiet
+    from pendcli.base.console import is_quiet
 
     if not is_quiet() and sys.stderr.isatty():
         sys.stderr.write("\r\033[K")

@@ -11,8 +11,8 @@ from pendcli.cli.common import FormatOption, PaperOption, QuietFlag, busy, emit
 from pendcli.output import OutputFormat
 
 if TYPE_CHECKING:
-    from pendcli.core.claims import FormulaRow
     from pendcli.output import Section
+    from pendcli.verify.claims import FormulaRow
 
 FigureFolderOption = Annotated[
     Path | None,
@@ -46,7 +46,7 @@ def formulas(
 
 
 def _check_figure_folder(plot: Path | None) -> None:
-    from pendcli.core.plotting import validate_plot_folder
+    from pendcli.base.plotting import validate_plot_folder
 
     validate_plot_folder(plot)
 

@@ -64,11 +64,11 @@ def claims(
     quiet: QuietFlag = False,
 ) -> None:
     """Every printed number of the memoir against its recomputation, with a verdict."""
-    from pendcli.core.checks import real_in_range
-    from pendcli.core.claims import evaluate_paper
+    from pendcli.base.checks import real_in_range
     from pendcli.output.views import claim_columns
     from pendcli.papers.lecornu.claims import author_procedures, recompute
     from pendcli.papers.lecornu.model import G_RANGE, constant
+    from pendcli.verify.claims import evaluate_paper
 
     g = real_in_range("g", constant("g") if g is None else g, *G_RANGE, "m/s²")
     claims = evaluate_paper("lecornu", lambda: recompute(g), author_procedures())
@@ -224,7 +224,7 @@ def example(
     quiet: QuietFlag = False,
 ) -> None:
     """The shortening pendulum of the example: elongations, amplitudes, vertical passages."""
-    from pendcli.core.plotting import validate_plot_path
+    from pendcli.base.plotting import validate_plot_path
 
     plot = validate_plot_path(plot)
     with busy("solving the example: elongations and vertical passages"):

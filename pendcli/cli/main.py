@@ -12,9 +12,9 @@ import sys
 
 import typer
 
+from pendcli.base.errors import PendcliError
 from pendcli.cli.app import app
 from pendcli.cli.messages import named_as_typed, usage_message
-from pendcli.core.errors import PendcliError
 
 __all__ = ["refuse_blank", "run"]
 
@@ -24,14 +24,14 @@ def run() -> None:
     if sys.stdout is None:  # started with `>&-`: Python leaves no stdout at all
         _write_error("cannot write standard output: it is closed")
         sys.exit(2)
-    from pendcli.core.console import protect_streams, set_quiet
+    from pendcli.base.console import protect_streams, set_quiet
 
     # At exit, skip the collector's last pass over every object scipy made (~0.06 s of CPU
     # measured): the OS frees them anyway. Other atexit handlers and the flushes still run.
     atexit.unregister(gc.freeze)
     atexit.register(gc.freeze)
     set_quiet(False)
-    from pendcli.core.interrupts import stop_on_signals
+    from pendcli.base.interrupts import stop_on_signals
 
     stop_on_signals()  # Ctrl-C, TERM, HUP: one line, status 128 + the signal (_invoke)
     original = protect_streams()
@@ -58,7 +58,7 @@ def refuse_blank(args: list[str]) -> None:
 
 def _invoke(args: list[str]) -> int:
     """Run the app; turn every way it can end into an exit code and at most one stderr line."""
-    from pendcli.core.interrupts import Interrupted
+    from pendcli.base.interrupts import Interrupted
 
     try:
         refuse_blank(args)
@@ -79,11 +79,11 @@ def _invoke(args: list[str]) -> int:
     except typer.Exit as exc:
         return exc.exit_code
     except OSError as exc:
-        from pendcli.core.files import describe_os_error  # not on the start-up path
+        from pendcli.base.files import describe_os_error  # not on the start-up path
 
         return _fail(describe_os_error(exc), 2)
     except Exception as exc:  # a bug: still one line, unless PENDCLI_DEBUG asks for the trace
-        from pendcli.core.errors import out_of_memory
+        from pendcli.base.errors import out_of_memory
 
         if (memory := out_of_memory(exc)) is not None:  # a limit reached, no bug: exit 2
             return _fail(memory, 2)
@@ -105,11 +105,11 @@ def _is_bare_group_help(exc: typer.TyperException) -> bool:
 
 def _flush_standard_output(code: int) -> int:
     """Flush stdout now, so a full disk or a closed pipe is reported here, not at shutdown."""
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
 
     try:
         sys.stdout.flush()
-    except PendcliError as exc:  # core.console names the stream (standard output)
+    except PendcliError as exc:  # base.console names the stream (standard output)
         # Python flushes stdout again at exit and would print "Exception ignored ...".
         with contextlib.suppress(OSError, ValueError):
             devnull = os.open(os.devnull, os.O_WRONLY)
@@ -129,7 +129,7 @@ def _write_error(message: str, prefix: str = "pendcli: error: ") -> None:
 
 def _fail(message: str, code: int) -> int:
     """One line on stderr, whole: a newline in it (a path's) is shown escaped."""
-    from pendcli.core.errors import one_line
+    from pendcli.base.errors import one_line
 
     _write_error(one_line(message.strip()) or "error")
     return code

@@ -8,8 +8,8 @@ from typing import Any
 
 import typer
 
+from pendcli.base.errors import PendcliError
 from pendcli.cli.help_format import ARGUMENTS
-from pendcli.core.errors import PendcliError
 
 __all__ = ["named_as_typed", "options_as_typed", "usage_message"]
 
@@ -54,7 +54,7 @@ def usage_message(exc: Exception, args: list[str]) -> str:
     descriptor = getattr(param, "type_descriptor", None)
     choice = re.match(r"(?P<value>'.*') is not one of ", message)
     if choice and descriptor is not None and descriptor.is_choice:
-        from pendcli.core.errors import either
+        from pendcli.base.errors import either
 
         names = either(str(getattr(c, "value", c)) for c in descriptor.choices or ())
         return f"{name} must be one of {names}, got {choice['value']}"

@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 
 __all__ = ["check_folder_target", "check_replaced_folder"]
 

@@ -55,11 +55,11 @@ def _angle_or_number(key: str) -> Callable[[Row], str]:
 @command(app, "tisserand claims")
 def claims(fmt: FormatOption = OutputFormat.table, quiet: QuietFlag = False) -> None:
     """The printed numbers of the example and Resal's rate, with verdicts and the unit reading."""
-    from pendcli.core.claims import evaluate_paper
     from pendcli.output.views import FORMULA_COLUMNS, claim_columns
     from pendcli.papers.tisserand import explore, model
     from pendcli.papers.tisserand.claims import recompute
     from pendcli.papers.tisserand.formulas import formula_checks
+    from pendcli.verify.claims import evaluate_paper
 
     rows = [r.as_dict() for r in evaluate_paper("tisserand", recompute)]
     formulas = [f.as_dict() for f in formula_checks()]
@@ -116,7 +116,7 @@ def example(
     quiet: QuietFlag = False,
 ) -> None:
     """Published / series / exact (by quadrature, ODE and elliptic integrals) side by side."""
-    from pendcli.core.plotting import validate_plot_path
+    from pendcli.base.plotting import validate_plot_path
     from pendcli.papers.tisserand import explore, figures, model, units
 
     plot = validate_plot_path(plot)
@@ -193,7 +193,7 @@ def series(
     quiet: QuietFlag = False,
 ) -> None:
     """k', k'' and the precession from the series against the exact values over θ0."""
-    from pendcli.core.plotting import validate_plot_path
+    from pendcli.base.plotting import validate_plot_path
     from pendcli.papers.tisserand import explore, figures, model
 
     plot = validate_plot_path(plot)

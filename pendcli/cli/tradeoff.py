@@ -44,8 +44,8 @@ def tradeoff(
     quiet: QuietFlag = False,
 ) -> None:
     """Measure each method's worst error (against an independent reference) and its cost."""
+    from pendcli.base.plotting import validate_plot_path
     from pendcli.cli.targets import check_folder_target
-    from pendcli.core.plotting import validate_plot_path
     from pendcli.run import tradeoff as wp
     from pendcli.run.tradeoff_engine import write_table
 
@@ -74,7 +74,7 @@ def _measure(names: list[str], quick: bool) -> list[Point]:
 
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from pendcli.core.console import console
+    from pendcli.base.console import console
     from pendcli.run import tradeoff as wp
 
     points: list[Point] = []

@@ -43,7 +43,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
-from pendcli.core.errors import PendcliError, either, invalid_value, out_of_range
+from pendcli.base.errors import PendcliError, either, invalid_value, out_of_range
 
 __all__ = [
     "AUTO_SWITCH",

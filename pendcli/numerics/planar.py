@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any, overload
 
-from pendcli.core.errors import PendcliError, invalid_value, out_of_range
+from pendcli.base.errors import PendcliError, invalid_value, out_of_range
 
 if TYPE_CHECKING:
     import numpy as np

@@ -52,7 +52,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from pendcli.core.errors import PendcliError, invalid_value, out_of_range
+from pendcli.base.errors import PendcliError, invalid_value, out_of_range
 
 __all__ = [
     "METHODS",

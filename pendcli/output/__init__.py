@@ -13,10 +13,11 @@ The documents made of those rows: the terminal summary (:mod:`~pendcli.output.su
 ``out/report.md`` (:mod:`~pendcli.output.report`), what ``pendcli check`` prints
 (:mod:`~pendcli.output.check_formats`) and the HTML edition (:mod:`pendcli.output.html`).
 
-May import: ``pendcli.core``, ``pendcli.numerics``, the registry (``pendcli.papers.registry``,
-inside functions) and the committed tables' columns (``pendcli.run.drift``). Never the CLI, a
-paper's own modules, or the run (``reproduce``, ``regression``), except the report: it takes a
-``ReproduceResult`` and the regenerated tables' names, the one place an output knows the run.
+May import: ``pendcli.base``, ``pendcli.data``, ``pendcli.verify``, ``pendcli.numerics``, the
+registry (``pendcli.papers.registry``, inside functions) and the committed tables' columns
+(``pendcli.run.drift``). Never the CLI, a paper's own modules, or the run (``reproduce``,
+``regression``), except the report: it takes a ``ReproduceResult`` and the regenerated tables'
+names, the one place an output knows the run.
 """
 
 from __future__ import annotations

@@ -16,7 +16,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.run.drift import TOLERANCES, Drift, cell_drift, expected_columns, read_table
 
 __all__ = [

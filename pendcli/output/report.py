@@ -5,7 +5,7 @@ fixed plot metadata): the work-precision tables under ``out/tradeoff/`` are copi
 committed ``tables/tradeoff/*.csv`` (measured by ``make bench``, on the date the report names)
 unless ``--measure`` times them now, which the report then says.
 
-The folder is built beside ``out`` and swapped in whole (:func:`pendcli.core.files.
+The folder is built beside ``out`` and swapped in whole (:func:`pendcli.base.files.
 replace_directory`); the figures are drawn in two forked processes where two cores exist
 (``PENDCLI_JOBS=1`` draws them here), the costliest first.
 
@@ -21,7 +21,7 @@ from pathlib import Path
 from types import ModuleType
 from typing import TYPE_CHECKING
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.output.json import to_json
 from pendcli.output.report_figures import Drawing, figure_caption, figure_tasks
 from pendcli.output.report_sections import (
@@ -34,7 +34,7 @@ from pendcli.output.report_sections import (
 from pendcli.output.report_store import pack, result_digest, unpack
 
 if TYPE_CHECKING:
-    from pendcli.core.cache import ResultCache
+    from pendcli.base.cache import ResultCache
     from pendcli.run.reproduce import ReproduceResult
     from pendcli.run.tradeoff_engine import Point
 
@@ -45,7 +45,7 @@ def check_out_folder(out: Path | str) -> Path:
     """Refuse an unusable output folder before any computation (one line, exit 2).
 
     The folder is replaced as a whole, so it must not be the current folder (or hold it), nor a
-    file, nor a folder pendcli did not make (:func:`pendcli.core.files.check_owned`: its
+    file, nor a folder pendcli did not make (:func:`pendcli.base.files.check_owned`: its
     manifest lists every file in it), nor one another run is writing; its nearest existing
     parent must be a writable folder. A symlink is followed: the folder it names is written.
     """
@@ -60,14 +60,14 @@ def check_out_folder(out: Path | str) -> Path:
     here = Path.cwd().resolve()
     if path.resolve() in (here, *here.parents):
         raise PendcliError(f"--out {text!r} holds the current folder; give a folder of its own")
-    from pendcli.core.files import check_owned, probe_lock, write_through
+    from pendcli.base.files import check_owned, probe_lock, write_through
 
     check_owned(write_through(path, "--out"), "--out")
     probe_lock(path, "--out")
     parent = path.resolve().parent
     while not parent.exists():
         parent = parent.parent
-    from pendcli.core.plotting import cannot_create_in
+    from pendcli.base.plotting import cannot_create_in
 
     problem = "is not a folder" if not parent.is_dir() else cannot_create_in(parent)
     if problem is not None:
@@ -99,7 +99,7 @@ class _Writer:
 
     def status(self, message: str) -> None:
         if not self.quiet:
-            from pendcli.core.console import console
+            from pendcli.base.console import console
 
             console(stderr=True).print(f"report: {message}")
 
@@ -136,8 +136,8 @@ def write_report(
     ``measure`` times the speed/accuracy families now instead of reading the committed
     work-precision tables; ``jobs`` processes draw the figures (default: up to 2).
     """
-    from pendcli.core.files import MANIFEST, replace_owned_folder
-    from pendcli.core.tables import paper_text
+    from pendcli.base.files import MANIFEST, replace_owned_folder
+    from pendcli.data.tables import paper_text
 
     target = check_out_folder(out)
     if pdf:  # refused before anything is written, not after

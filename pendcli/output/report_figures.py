@@ -2,7 +2,7 @@
 
 Each figure set is one call of a paper's ``figures`` / ``formula_figures`` hook or of the
 work-precision plot; :class:`Drawing` shares the calls among ``jobs`` processes
-(:mod:`pendcli.core.workers`) and gives the files per paper.
+(:mod:`pendcli.base.workers`) and gives the files per paper.
 """
 
 from __future__ import annotations
@@ -77,10 +77,10 @@ def _task_name(task: Task) -> str:
 
 
 class Drawing:
-    """Draws the tasks in ``jobs`` processes: this one and forked workers (core/workers.py)."""
+    """Draws the tasks in ``jobs`` processes: this one and forked workers (base/workers.py)."""
 
     def __init__(self, tasks: list[Task], jobs: int | None) -> None:
-        from pendcli.core.workers import ForkedWorkers, job_count
+        from pendcli.base.workers import ForkedWorkers, job_count
 
         self.tasks = tasks
         self.workers = ForkedWorkers(job_count(jobs, len(tasks)) - 1)

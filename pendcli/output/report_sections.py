@@ -10,17 +10,17 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING
 
-from pendcli.core.rows import equation_notes, equation_status
-from pendcli.core.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
+from pendcli.data.rows import equation_notes, equation_status
+from pendcli.data.vocabulary import CLAIM_VERDICTS, EquationStatus, FormulaVerdict, Verdict
 from pendcli.output.columns import Column, Row
 from pendcli.output.markdown import code_span, fence, markdown_text, to_markdown
 from pendcli.output.views import FORMULA_COLUMNS, claim_columns
 
 if TYPE_CHECKING:
-    from pendcli.core.claims import ClaimRow
-    from pendcli.core.explain import ExplainedRow
-    from pendcli.core.rows import EquationRow
+    from pendcli.data.rows import EquationRow
     from pendcli.run.reproduce import ReproduceResult
+    from pendcli.verify.claims import ClaimRow
+    from pendcli.verify.explain import ExplainedRow
 
 _VERDICT_RULES = """\
 A printed number fixes its own precision: `5,14` is known to 0.01, `1°7'33''` to one
@@ -50,7 +50,7 @@ that is itself a slip), `arithmetic-slip`, or, faithful, `truncation` or `input-
 
 
 def _environment() -> list[dict[str, str]]:
-    from pendcli.core.versions import library_versions
+    from pendcli.base.versions import library_versions
 
     return [{"item": name, "version": found} for name, found in library_versions()]
 
@@ -105,9 +105,9 @@ def disagreement_digest(result: ReproduceResult) -> list[str]:
 
 def explanation_section(result: ReproduceResult) -> list[str]:
     """ "Explanations": how the author got each printed number that does not agree (the
-    search of :mod:`pendcli.core.explain`), with its coincidence rate, or the space searched."""
-    from pendcli.core.explain import COINCIDENCE_THRESHOLD, explain_rows
+    search of :mod:`pendcli.verify.explain`), with its coincidence rate, or the space searched."""
     from pendcli.papers.registry import explanations
+    from pendcli.verify.explain import COINCIDENCE_THRESHOLD, explain_rows
 
     lines = [
         "## Explanations",
@@ -203,7 +203,7 @@ def introduction(result: ReproduceResult) -> list[str]:
 def paper_section(result: ReproduceResult, key: str, figure_lines: list[str]) -> list[str]:
     """Citation, assumptions, verdicts, the claim, formula and equation tables, the figures
     (``figure_lines``: each written figure's image and caption)."""
-    from pendcli.core.tables import load_paper_table
+    from pendcli.data.tables import load_paper_table
 
     table = load_paper_table(key)
     rows = [r.as_dict() for r in result.claims.get(key, [])]
@@ -234,8 +234,8 @@ def _equation_section(rows: list[EquationRow]) -> list[str]:
     """Coverage of the ledger by status, then every equation that fails or is misprinted."""
     if not rows:
         return []
-    from pendcli.core.ledger import FINDING_KEYS, coverage
-    from pendcli.core.vocabulary import STATUSES
+    from pendcli.data.ledger import FINDING_KEYS, coverage
+    from pendcli.data.vocabulary import STATUSES
 
     counts = [{"paper": p, **c} for p, c in coverage(rows).items()]
     keys = ("paper", *STATUSES, "total", "checked", *FINDING_KEYS)

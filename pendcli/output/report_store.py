@@ -20,7 +20,7 @@ def result_digest(result: ReproduceResult) -> str:
     import hashlib
     import json
 
-    from pendcli.core.cache import rows_to_json
+    from pendcli.base.cache import rows_to_json
 
     rows = {
         name: {key: rows_to_json(table[key]) for key in sorted(table)}
@@ -69,7 +69,7 @@ def _stored_files(entry: Any) -> dict[Path, bytes] | None:
     import base64
     import binascii
 
-    from pendcli.core.files import MANIFEST
+    from pendcli.base.files import MANIFEST
 
     files = entry.get("files") if isinstance(entry, dict) and set(entry) == {"files"} else None
     if not isinstance(files, dict) or not 0 < len(files) <= _STORED_FILES:

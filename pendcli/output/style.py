@@ -24,7 +24,7 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass
 
-from pendcli.core.numbers import fixed, fixed_decimals, sexagesimal_text, significant
+from pendcli.data.numbers import fixed, fixed_decimals, sexagesimal_text, significant
 
 __all__ = [
     "EDITION",

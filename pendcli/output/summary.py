@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 
-from pendcli.core.rows import equation_status
-from pendcli.core.vocabulary import Cause, disagrees_word
+from pendcli.data.rows import equation_status
+from pendcli.data.vocabulary import Cause, disagrees_word
 from pendcli.output.columns import Column, Row
 from pendcli.output.views import VERDICT_STYLES, format_like_printed
 

@@ -217,7 +217,7 @@ class TableRenderer:
 
     def __call__(self, sections: Sequence[Section], document: Mapping[str, object]) -> str:
         if self.console is None:
-            from pendcli.core.console import console
+            from pendcli.base.console import console
 
             self.console = console()
         with self.console.capture() as captured:

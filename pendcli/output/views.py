@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from pendcli.core.numbers import fixed, parse_printed
-from pendcli.core.rows import equation_notes, equation_status
-from pendcli.core.vocabulary import FormulaVerdict, ProcedureVerdict, Verdict
+from pendcli.data.numbers import fixed, parse_printed
+from pendcli.data.rows import equation_notes, equation_status
+from pendcli.data.vocabulary import FormulaVerdict, ProcedureVerdict, Verdict
 from pendcli.output.columns import Column, Row
 from pendcli.output.style import current, trimmed
 

@@ -1,13 +1,14 @@
 """Every paper pendcli reproduces, listed once, in report order.
 
-Each entry is the :class:`~pendcli.core.paper.Paper` its package declares; nothing is found by
+Each entry is the :class:`~pendcli.papers.paper.Paper` its package declares; nothing is found by
 a module name at run time. Adding a paper is one folder under ``pendcli/papers/`` and one
 line in :data:`_BUILT_IN`. A test adds a paper of its own for the length of a block with
 :func:`registered`.
 
 Only the layers above the papers (the CLI, the reproduction, the report) look a paper up by
-its key, here; the engines in :mod:`pendcli.core` are given what they need (a paper's
-recomputation, its :class:`Paper`), and a paper's own modules call their own functions.
+its key, here; the engines in :mod:`pendcli.base`, :mod:`pendcli.data`, :mod:`pendcli.verify` are
+given what they need (a paper's recomputation, its :class:`Paper`), and a paper's own modules call
+their own functions.
 """
 
 from __future__ import annotations
@@ -17,14 +18,14 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.papers import charbonnier, lecornu, tisserand
 
 if TYPE_CHECKING:
-    from pendcli.core.explain import Declared
-    from pendcli.core.ledger import Part
-    from pendcli.core.paper import Paper
-    from pendcli.core.rows import ClaimRow, EquationRow, FormulaRow
+    from pendcli.data.ledger import Part
+    from pendcli.data.rows import ClaimRow, EquationRow, FormulaRow
+    from pendcli.papers.paper import Paper
+    from pendcli.verify.explain import Declared
 
 # The engines load when a function here first needs them: `pendcli --help` lists the papers'
 # sub-commands through this module and must stay instant.
@@ -98,7 +99,7 @@ def resolve_papers(name: str | None) -> tuple[str, ...]:
 def evaluate(key: str) -> list[ClaimRow]:
     """Every published claim of paper ``key`` judged against its recomputation and, where the
     paper knows the author's procedure, against that procedure on his printed inputs."""
-    from pendcli.core.claims import evaluate_paper
+    from pendcli.verify.claims import evaluate_paper
 
     found = paper(key)
     procedures = found.author_procedures
@@ -107,9 +108,9 @@ def evaluate(key: str) -> list[ClaimRow]:
 
 def formula_checks(key: str) -> list[FormulaRow]:
     """The formula checks of one paper (empty if it has none): the rows a running
-    reproduction shares (:func:`~pendcli.core.claims.sharing_formula_rows`), else computed
+    reproduction shares (:func:`~pendcli.verify.claims.sharing_formula_rows`), else computed
     now."""
-    from pendcli.core.claims import shared_formula_rows
+    from pendcli.verify.claims import shared_formula_rows
 
     checks = paper(key).formula_checks
     return shared_formula_rows(key, checks if checks is not None else _no_rows)
@@ -132,7 +133,7 @@ def stability_rows(keys_: Iterable[str] | None = None) -> list[dict[str, str]]:
 
 def explanations(key: str) -> Declared:
     """The hand computations paper ``key`` declares for ``pendcli explain`` (none: empty)."""
-    from pendcli.core.explain import Declared
+    from pendcli.verify.explain import Declared
 
     found = paper(key).explanations
     return found() if found is not None else Declared({}, {})
@@ -147,8 +148,8 @@ def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
 def equation_rows(
     keys_: Iterable[str], root: Path | None = None, part: Part = (0, 1)
 ) -> list[EquationRow]:
-    """The equation ledger rows of the papers ``keys_`` (see :func:`pendcli.core.ledger.
+    """The equation ledger rows of the papers ``keys_`` (see :func:`pendcli.data.ledger.
     equation_rows`)."""
-    from pendcli.core.ledger import equation_rows as ledger_equation_rows
+    from pendcli.data.ledger import equation_rows as ledger_equation_rows
 
     return ledger_equation_rows([paper(k) for k in keys_], root, part)

@@ -6,9 +6,10 @@ papers (forked workers, the result cache); ``regression`` is `pendcli check` ove
 paper's work-precision families, over ``tradeoff_engine`` (measuring, the tables, the choice
 of a method); ``stability`` the helpers of the stability rows.
 
-May import: ``pendcli.core``, ``pendcli.numerics``, ``pendcli.output``, the registry
-(``pendcli.papers.registry``, through it every paper) and the output modules. Never the CLI
-or the public API (``pendcli.api``). The papers may import the two generic engines,
-``tradeoff_engine`` and ``stability``, which import only ``pendcli.core``: no module of a
-paper imports a module that imports the registry.
+May import: ``pendcli.base``, ``pendcli.data``, ``pendcli.verify``, ``pendcli.numerics``,
+``pendcli.output``, the registry (``pendcli.papers.registry``, through it every paper) and the
+output modules. Never the CLI or the public API (``pendcli.api``). The papers may import the two
+generic engines, ``tradeoff_engine`` and ``stability``, which import only ``pendcli.base``,
+``pendcli.data``, ``pendcli.verify``: no module of a paper imports a module that imports the
+registry.
 """

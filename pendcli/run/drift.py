@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 
 __all__ = [
     "CLAIM_COLUMNS",

@@ -21,10 +21,9 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.derivation_store import stores_here
-from pendcli.core.errors import PendcliError
-from pendcli.core.files import lock_file, locked, replace_owned_folder, write_through
-from pendcli.core.tables import tables_dir
+from pendcli.base.errors import PendcliError
+from pendcli.base.files import lock_file, locked, replace_owned_folder, write_through
+from pendcli.data.tables import tables_dir
 from pendcli.output.columns import Column
 from pendcli.output.csv import to_csv
 from pendcli.papers.registry import keys
@@ -41,6 +40,7 @@ from pendcli.run.drift import (
     read_committed,
     read_table,
 )
+from pendcli.verify.derivation_store import stores_here
 
 if TYPE_CHECKING:
     from rich.console import Console
@@ -111,7 +111,7 @@ def run_check(
     ``fmt``: ``table`` (the drift table), ``json`` or ``junit`` (a testcase per claim,
     formula and table), on standard output; see :mod:`pendcli.output.check_formats`.
     """
-    from pendcli.core.console import console
+    from pendcli.base.console import console
     from pendcli.run.reproduce import reproduce_all
 
     folder = (root or tables_dir()).resolve() / "regenerated"
@@ -166,8 +166,8 @@ def _derivations(update: bool, root: Path | None) -> list[str]:
     ``update``, written; else how they differ from what the code derives, a line per row
     naming its reference (empty when every one agrees). Only the package's own tables have a
     store; a tables folder of one's own is derived afresh when judged."""
-    from pendcli.core.ledger_references import derivation_drift, store_derivations
     from pendcli.papers.registry import PAPERS, ledger_papers, paper
+    from pendcli.verify.ledger_references import derivation_drift, store_derivations
 
     if not stores_here(root or tables_dir()):
         return []
@@ -191,7 +191,7 @@ def _read_committed_tables(folder: Path) -> None:
 def _load_ledgers(root: Path | None) -> None:
     """Every paper's equation ledger and text, read and validated (not checked: that is
     ``pendcli equations``): a missing or empty one fails ``check`` instead of passing unseen."""
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
     from pendcli.papers.registry import ledger_papers
 
     for key in ledger_papers():
@@ -277,11 +277,11 @@ def rewrite_with(
     unchanged: dict[Path, str | None] | None = None,
 ) -> list[str]:
     """``make regen``: the committed tables and ``others`` (the README) rewritten as one set
-    (:func:`pendcli.core.files.write_set`: all written first, then renamed in one short loop
+    (:func:`pendcli.base.files.write_set`: all written first, then renamed in one short loop
     that Ctrl-C or TERM cannot split), under the tables' lock. Returns the tables removed.
     Nothing is written if a table changed after it was read here, or a file of ``unchanged``
     (path -> digest of what the caller read) since the caller read it."""
-    from pendcli.core.files import check_owned, file_digest, write_set
+    from pendcli.base.files import check_owned, file_digest, write_set
 
     folder = write_through((root or tables_dir()).resolve() / "regenerated", "tables/regenerated")
     folder.mkdir(parents=True, exist_ok=True)

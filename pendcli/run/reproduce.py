@@ -11,9 +11,8 @@ from contextlib import nullcontext
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.claims import ClaimRow, FormulaRow
-from pendcli.core.rows import EquationRow
-from pendcli.core.vocabulary import (
+from pendcli.data.rows import EquationRow
+from pendcli.data.vocabulary import (
     CHECKED_STATUSES,
     CLAIM_VERDICTS,
     FORMULA_VERDICTS,
@@ -24,12 +23,13 @@ from pendcli.core.vocabulary import (
 from pendcli.output.columns import Column, Row, Section
 from pendcli.output.summary import disagrees
 from pendcli.papers.registry import evaluate, formula_checks
+from pendcli.verify.claims import ClaimRow, FormulaRow
 
 if TYPE_CHECKING:
     from pathlib import Path
 
-    from pendcli.core.cache import ResultCache
-    from pendcli.core.paper import Paper
+    from pendcli.base.cache import ResultCache
+    from pendcli.papers.paper import Paper
 
 __all__ = [
     "VERDICT_NAMES",
@@ -62,7 +62,7 @@ class ReproduceResult:
         return [r for r in rows if disagrees(r)] if only_failing else rows
 
     def document(self, only_failing: bool = False) -> dict[str, object]:
-        """What `--format json` prints (keys described in :mod:`pendcli.core.schema`)."""
+        """What `--format json` prints (keys described in :mod:`pendcli.output.schema`)."""
         doc: dict[str, object] = {
             "claims": self.claim_dicts(only_failing),
             "formulas": self.formula_dicts(only_failing),
@@ -147,7 +147,7 @@ class ReproduceResult:
     def summary_rows(self) -> list[Row]:
         """One row per paper: claims by verdict, root causes apart from propagated rows,
         formulas holding/failing, and equations checked (when the ledger was run)."""
-        from pendcli.core.claims import cause_tally, procedure_tally
+        from pendcli.verify.claims import cause_tally, procedure_tally
 
         counts = self.verdict_counts()
         out: list[Row] = []
@@ -248,10 +248,10 @@ def _computed(
 ) -> dict[Wanted, Any]:
     """The steps run, shared by this process and the forked workers (reproduce_all), and
     gathered into one value per cached unit: a ledger's parts back in its order."""
-    from pendcli.core.console import progress_bar, status_line
-    from pendcli.core.ledger_references import say_derived_afresh, stale_ledgers
-    from pendcli.core.workers import ForkedWorkers, counting_rows, job_count
+    from pendcli.base.console import progress_bar, status_line
+    from pendcli.base.workers import ForkedWorkers, counting_rows, job_count
     from pendcli.papers.registry import paper
+    from pendcli.verify.ledger_references import say_derived_afresh, stale_ledgers
 
     # found before the workers fork (they inherit that it is said), said once at the end
     stale = stale_ledgers([paper(k) for k in sorted({k for k, w in steps if "equations" in w})])
@@ -298,11 +298,11 @@ def _wanted(
 
 
 def result_cache(use: bool = True) -> ResultCache:
-    """This run's result cache (:mod:`pendcli.core.cache`): its folder from
+    """This run's result cache (:mod:`pendcli.base.cache`): its folder from
     ``$PENDCLI_CACHE`` (off: ``use`` False or ``PENDCLI_CACHE=off``), its key over pendcli's
     code, every registered paper's own package, the tables folder in use and the versions."""
-    from pendcli.core.cache import ResultCache, cache_folder
-    from pendcli.core.tables import tables_dir
+    from pendcli.base.cache import ResultCache, cache_folder
+    from pendcli.data.tables import tables_dir
     from pendcli.papers.registry import all_papers
 
     return ResultCache(cache_folder() if use else None, tables_dir(), _paper_sources(all_papers()))
@@ -354,7 +354,7 @@ def _cached(
 
 
 def _decoded(what: str, value: Any) -> Any:
-    from pendcli.core.cache import rows_from_json
+    from pendcli.base.cache import rows_from_json
 
     if what in _ROW_CLASSES:
         return rows_from_json(_ROW_CLASSES[what], value)
@@ -375,7 +375,7 @@ def _store_all(
 
 
 def _store_in_cache(cache: ResultCache, item: Wanted, value: Any, keys: tuple[str, ...]) -> None:
-    from pendcli.core.cache import rows_to_json
+    from pendcli.base.cache import rows_to_json
 
     try:
         encoded = rows_to_json(value) if item[1] in _ROW_CLASSES else value
@@ -454,7 +454,7 @@ def _steps(
 
 def _ledger_rows_in(steps: list[Step]) -> int:
     """How many ledger rows the steps judge (their parts of each ledger)."""
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
 
     total = 0
     for key, what in steps:
@@ -520,8 +520,8 @@ def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
 def _ledger_step(key: str, what: str) -> Any:
     """``equations i/n``: (i, that part of the ledger); ``formulas+equations i/n``: the
     formula checks too, lent to the ledger's checks."""
-    from pendcli.core.claims import sharing_formula_rows
     from pendcli.papers.registry import equation_rows
+    from pendcli.verify.claims import sharing_formula_rows
 
     index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
     rows = formula_checks(key) if what.startswith("formulas") else None
@@ -555,7 +555,7 @@ def _lend_formula_rows(
 ) -> None:
     """Lend stored formula rows to the ledger's checks that re-read them (before the fork,
     so a worker inherits them too), rather than integrate them again."""
-    from pendcli.core.claims import sharing_formula_rows
+    from pendcli.verify.claims import sharing_formula_rows
 
     for key in dict.fromkeys(k for k, what in steps if what.startswith("equations")):
         if (key, "formulas") in stored:
@@ -563,7 +563,7 @@ def _lend_formula_rows(
 
 
 def _verdict_names() -> tuple[str, ...]:
-    from pendcli.core.vocabulary import STATUSES
+    from pendcli.data.vocabulary import STATUSES
 
     names = [*CLAIM_VERDICTS, *FORMULA_VERDICTS, *STATUSES]
     return tuple(dict.fromkeys(str(n) for n in names))
@@ -577,7 +577,7 @@ EQUATION_ONLY = frozenset(VERDICT_NAMES) - {*CLAIM_VERDICTS, *FORMULA_VERDICTS}
 
 def parse_verdicts(text: str, option: str = "--fail-on") -> frozenset[str]:
     """``"discrepant,fails"`` -> the set of names; an unknown one is a one-line error."""
-    from pendcli.core.errors import invalid_value
+    from pendcli.base.errors import invalid_value
 
     names = [n.strip().casefold() for n in text.split(",") if n.strip()]
     for name in names or [text]:

@@ -17,7 +17,7 @@ import math
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 
 __all__ = ["KEYS", "rel", "row", "short", "ulps", "worst"]
 

@@ -15,7 +15,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.errors import PendcliError, invalid_value
+from pendcli.base.errors import PendcliError, invalid_value
 from pendcli.run.tradeoff_engine import Family, Point, measure
 
 if TYPE_CHECKING:
@@ -117,7 +117,7 @@ CAPTION = (
 
 def family_title(name: str) -> str:
     """The panel title of a family: its declared title, wrapped (the name if undeclared)."""
-    from pendcli.core.reader_text import figure_text, wrapped
+    from pendcli.data.reader_text import figure_text, wrapped
 
     title = families()[name].title if name in families() else name
     return wrapped(figure_text(title), 56)  # « (n, β) » whole; j_(ν,s) set as j with ν,s below
@@ -252,7 +252,7 @@ def _family_axes(ax: Axes, name: str, edges: dict[str, set[str]]) -> None:
 
 def plot_tradeoff(points: list[Point], path: str | Path) -> Path:
     """The work-precision diagram: one panel per family (:func:`draw_family`), saved."""
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
 
     names = list(dict.fromkeys(p.family for p in points))
     ncols = 2 if len(names) > 1 else 1

@@ -18,7 +18,8 @@ machine-independent.
 
 Each paper declares its families with the classes here (``pendcli.papers.<paper>.speed``);
 the catalogue of every paper's families by name is :mod:`pendcli.run.tradeoff`. This module
-imports only :mod:`pendcli.core`, so a paper importing it imports no registry.
+imports only :mod:`pendcli.base`, :mod:`pendcli.data`, :mod:`pendcli.verify`, so a paper importing
+it imports no registry.
 """
 
 from __future__ import annotations
@@ -32,7 +33,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from pendcli.core.errors import PendcliError, out_of_range
+from pendcli.base.errors import PendcliError, out_of_range
 
 __all__ = [
     "CSV_KEYS",
@@ -186,7 +187,7 @@ def measure(
 
 
 def table_path(name: str, root: Path | None = None) -> Path:
-    from pendcli.core.tables import tables_dir
+    from pendcli.data.tables import tables_dir
 
     return (root or tables_dir()) / "tradeoff" / f"{name}.csv"
 
@@ -214,7 +215,7 @@ def table_text(points: list[Point]) -> str:
 
 def write_table(points: list[Point], path: Path) -> Path:
     """The family's table, written atomically (``tables/tradeoff/*.csv`` are committed)."""
-    from pendcli.core.files import atomic_write
+    from pendcli.base.files import atomic_write
 
     path.parent.mkdir(parents=True, exist_ok=True)
     return atomic_write(path, table_text(points))
@@ -290,7 +291,7 @@ def _table_number(
 def measured_on(root: Path | None = None) -> str | None:
     """When ``make bench`` measured the committed tables (``tradeoff/measured.toml``), or None
     without that file; a file that is not valid UTF-8 TOML with a string date is an error."""
-    from pendcli.core.tables import read_toml
+    from pendcli.data.tables import read_toml
 
     path = table_path("measured", root).with_suffix(".toml")
     if not path.exists():

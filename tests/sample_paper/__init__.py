@@ -10,7 +10,7 @@ folder knows it exists.
 
 from __future__ import annotations
 
-from pendcli.core.paper import CliApp, Paper, hook
+from pendcli.papers.paper import CliApp, Paper, hook
 
 __all__ = ["PAPER"]
 

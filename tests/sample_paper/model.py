@@ -5,8 +5,8 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from pendcli.core.claims import Recomputed
-from pendcli.core.tables import paper_constant
+from pendcli.data.tables import paper_constant
+from pendcli.verify.claims import Recomputed
 
 
 def period(length: float | None = None) -> float:
@@ -17,7 +17,7 @@ def period(length: float | None = None) -> float:
 
 def plot_period(path: Path) -> Path:
     """T against l from 0,1 to 2 m."""
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
 
     lengths = [0.1 * k for k in range(1, 21)]
     with new_figure(path) as (_fig, ax):

@@ -11,8 +11,8 @@ def reference_small_period() -> Any:
     expansion in θ0 must agree with T = 2π√(l/g) through θ0⁰."""
     import sympy as sp
 
-    from pendcli.core.printed import ledger_symbols
-    from pendcli.core.printed_check import Reference
+    from pendcli.data.printed import ledger_symbols
+    from pendcli.verify.printed_check import Reference
 
     l, g = ledger_symbols("l", "g")  # the ledger's symbols: same names, same assumptions
     theta0 = sp.Symbol("theta0", positive=True)

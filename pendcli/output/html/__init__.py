@@ -10,7 +10,7 @@ TeX into MathML, :mod:`~pendcli.output.html.match` tells which formula of a row'
 printed form is, :mod:`~pendcli.output.html.prose` joins the paragraphs the OCR cut, and
 :mod:`~pendcli.output.html.graph` lays out the propagation graph.
 
-May import: ``pendcli.core``, the rest of ``pendcli.output``, the registry inside functions;
-the run only for its result's type (``ReproduceResult``, under ``TYPE_CHECKING``). Never the
-CLI or a paper's own modules.
+May import: ``pendcli.base``, ``pendcli.data``, ``pendcli.verify``, the rest of ``pendcli.output``,
+the registry inside functions; the run only for its result's type (``ReproduceResult``, under
+``TYPE_CHECKING``). Never the CLI or a paper's own modules.
 """

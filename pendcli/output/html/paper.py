@@ -16,7 +16,7 @@ from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.numbers import edition_quantity, edition_text
+from pendcli.data.numbers import edition_quantity, edition_text
 from pendcli.output.html.locate import paragraph_spans
 from pendcli.output.html.marks import Placement, place_marks
 from pendcli.output.html.math import (

@@ -4,7 +4,7 @@ The OCR text breaks a paragraph where the printed page ended a line or a page: a
 at its hyphen (« résis- », a blank line, « tance »), a sentence cut in two paragraphs (« un
 mètre de », a blank line, « longueur »), or the two halves of a word on either side of a
 running head (« quan- », the journal's foot, « tités »). A paragraph of the text is a run of
-non-blank lines (:func:`pendcli.core.reading.prose_paragraphs`); here the edition joins a
+non-blank lines (:func:`pendcli.data.reading.prose_paragraphs`); here the edition joins a
 paragraph to the one before when it continues it (the one before ends without a full stop,
 the next begins in lower case), removing the hyphen of a cut word, and sets the page break
 that fell inside after the joined paragraph. Within a paragraph, lines are joined by a space

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.vocabulary import PROCEDURE_VERDICTS
+from pendcli.data.vocabulary import PROCEDURE_VERDICTS
 from pendcli.output.html.paper import (
     Figure,
     cited_formulas,
@@ -52,7 +52,7 @@ from pendcli.output.html.rows import (
 )
 
 if TYPE_CHECKING:
-    from pendcli.core.rows import EquationRow
+    from pendcli.data.rows import EquationRow
     from pendcli.run.reproduce import ReproduceResult
 
 __all__ = [
@@ -173,7 +173,7 @@ def report_page(
     )  # fmt: skip
 
 
-# How a caller shares work among its processes (core/workers ForkedWorkers.share): ``run``
+# How a caller shares work among its processes (base/workers ForkedWorkers.share): ``run``
 # over the items, the results in their order.
 Share = Callable[[Sequence[Any], Callable[[Any], Any]], list[Any]]
 
@@ -226,8 +226,8 @@ def write_html_report(
     """Write ``out/report.html`` and ``out/papers/<paper>.html`` (atomically); return them.
     ``share``: how the pages are shared among processes (default: all rendered here), the
     longest text first."""
-    from pendcli.core.files import atomic_write
-    from pendcli.core.reader_text import html_for_reader
+    from pendcli.base.files import atomic_write
+    from pendcli.data.reader_text import html_for_reader
 
     (out / "papers").mkdir(parents=True, exist_ok=True)
     made = _Pages(papers, citations, texts, claims, formulas, equations, figures)
@@ -236,7 +236,7 @@ def write_html_report(
     by_page = dict(zip(order, rendered, strict=True))
     pages = {out / "papers" / f"{p}.html": by_page[p] for p in papers}
     pages[out / "report.html"] = by_page[None]
-    # what a historian reads: no module path, no builder name, no raw TeX (core/reader_text)
+    # what a historian reads: no module path, no builder name, no raw TeX (data/reader_text)
     references = reference_words(list(pages.values()))
     return [atomic_write(path, html_for_reader(page, references)) for path, page in pages.items()]
 
@@ -244,7 +244,7 @@ def write_html_report(
 def _ledger_fields(paper: str, rows: Sequence[Row]) -> list[Row]:
     """The equation rows with the ledger's own words for the reading and the correction (the
     row's ``reading`` and ``corrected`` are formulas) and its printed terms and quotes."""
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
     from pendcli.papers.registry import ledger_papers
 
     if paper not in ledger_papers():
@@ -267,7 +267,7 @@ def write_for_result(
 ) -> list[Path]:
     """The HTML pages of a reproduction: rows from ``result``, texts from tables/papers/
     (``share``: as :func:`write_html_report`'s)."""
-    from pendcli.core.tables import load_paper_table, tables_dir
+    from pendcli.data.tables import load_paper_table, tables_dir
     from pendcli.papers.registry import paper
 
     claims: dict[str, list[Row]] = {}
@@ -309,7 +309,7 @@ def chromium() -> str | None:
 
 def require_chromium() -> str:
     """The headless browser that prints the pages; one line naming the package where absent."""
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
 
     browser = chromium()
     if browser is None:
@@ -331,7 +331,7 @@ def _print_pdf(browser: str, page: Path) -> Path:
     import subprocess
     import tempfile
 
-    from pendcli.core.errors import PendcliError
+    from pendcli.base.errors import PendcliError
 
     target = page.with_suffix(".pdf")
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".pdf", dir=page.parent)
@@ -355,10 +355,10 @@ def _print_pdf(browser: str, page: Path) -> Path:
 def reference_words(texts: list[str]) -> dict[str, str]:
     """Reference builder name -> what it models, for each reference of a registered paper
     that one of ``texts`` names (only those are built): a note names a reference by what it
-    models, never by its builder (:func:`pendcli.core.reader_text.reference_descriptions`)."""
-    from pendcli.core.ledger_references import reference_table
-    from pendcli.core.reader_text import reference_descriptions
+    models, never by its builder (:func:`pendcli.data.reader_text.reference_descriptions`)."""
+    from pendcli.data.reader_text import reference_descriptions
     from pendcli.papers import registry
+    from pendcli.verify.ledger_references import reference_table
 
     # one pass over the texts for their words, rather than a search per builder name over
     # megabytes of pages: only a name found among the words is searched for and built
@@ -376,7 +376,7 @@ def reference_words(texts: list[str]) -> dict[str, str]:
 
 def markdown_for_a_reader(text: str) -> str:
     """``report.md`` as a historian reads it: no module path, no reference builder's name, no
-    raw TeX (:func:`pendcli.core.reader_text.markdown_for_reader`)."""
-    from pendcli.core.reader_text import markdown_for_reader
+    raw TeX (:func:`pendcli.data.reader_text.markdown_for_reader`)."""
+    from pendcli.data.reader_text import markdown_for_reader
 
     return markdown_for_reader(text, reference_words([text]))

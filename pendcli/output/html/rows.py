@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping
 
-from pendcli.core.vocabulary import (
+from pendcli.data.vocabulary import (
     CLAIM_VERDICTS,
     STATUSES,
 )
@@ -20,7 +20,7 @@ Row = Mapping[str, object]
 
 VERDICT_CLASSES = CLAIM_VERDICTS
 STATUS_CLASSES = STATUSES
-# The cause of an equation row follows from its status (pendcli.core.causes' vocabulary).
+# The cause of an equation row follows from its status (pendcli.verify.causes' vocabulary).
 EQUATION_CAUSE = {"fails": "derivation-error", "misprint": "misprint"}
 
 
@@ -54,7 +54,7 @@ def sources_of(row: Row) -> list[str]:
 
 def own_of(row: Row) -> str:
     """A claim against the author's procedure on his printed inputs, and his value."""
-    from pendcli.core.numbers import edition_number
+    from pendcli.data.numbers import edition_number
 
     verdict, his = word_of(row.get("procedure_verdict")), row.get("procedure_value")
     if not verdict or not isinstance(his, float | int):
@@ -64,7 +64,7 @@ def own_of(row: Row) -> str:
 
 def number_text(value: object) -> str:
     """A recomputed number as the papers write theirs (decimal comma): the edition is French."""
-    from pendcli.core.numbers import edition_number
+    from pendcli.data.numbers import edition_number
 
     return edition_number(value)
 
@@ -128,8 +128,8 @@ def printed_terms(row: Row) -> list[str]:
 def printed_form(published: str) -> str:
     """A printed number as the paper sets it, not as TeX: ``0^{sec},94`` is 0ˢᵉᶜ,94, and
     ``-1,27`` is −1,27 (the typeset minus of the page)."""
-    from pendcli.core.numbers import edition_minus
-    from pendcli.core.reader_text import UNIT_FORMS, UNIT_TEX
+    from pendcli.data.numbers import edition_minus
+    from pendcli.data.reader_text import UNIT_FORMS, UNIT_TEX
 
     return edition_minus(UNIT_TEX.sub(lambda m: UNIT_FORMS[m.group(1)], published))
 

@@ -6,8 +6,8 @@ passage (here there is one: the table, with I_(-1)(π) = π and I_0(π) = 2 from
 
 from __future__ import annotations
 
-from pendcli.core.claims import Recomputed
 from pendcli.papers.charbonnier.model import exact_text, integral_pi, integral_pi_exact
+from pendcli.verify.claims import Recomputed
 
 __all__ = ["PRINTED_N", "recompute", "table_claims"]
 

@@ -1,4 +1,4 @@
-"""Charbonnier's table of I_n(π) (no. 15), declared for :mod:`pendcli.core.explain`.
+"""Charbonnier's table of I_n(π) (no. 15), declared for :mod:`pendcli.verify.explain`.
 
 Every printed I_n(π) agrees exactly; the search shows by which of his routes and how often
 the same routes would give a random fraction. His routes, both printed in no. 15: the
@@ -17,9 +17,9 @@ from fractions import Fraction
 from functools import partial
 from typing import Any
 
-from pendcli.core.explain import Axis, Computation, Declared, Option, Target
-from pendcli.core.numbers import exact_number
-from pendcli.core.tables import load_paper_table
+from pendcli.data.numbers import exact_number
+from pendcli.data.tables import load_paper_table
+from pendcli.verify.explain import Axis, Computation, Declared, Option, Target
 
 __all__ = ["computations", "declared", "targets"]
 

@@ -6,8 +6,8 @@ import math
 from fractions import Fraction
 from typing import Any
 
-from pendcli.core.errors import out_of_range
-from pendcli.core.tables import load_paper_table
+from pendcli.base.errors import out_of_range
+from pendcli.data.tables import load_paper_table
 from pendcli.papers.charbonnier.model import (
     exact_text,
     integral,

@@ -10,7 +10,7 @@ import math
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from pendcli.core.tables import load_paper_table
+from pendcli.data.tables import load_paper_table
 from pendcli.papers.charbonnier.model import integral_pi
 
 if TYPE_CHECKING:
@@ -58,7 +58,7 @@ def printed_points() -> list[tuple[int, float]]:
 
 def plot_table(path: str | Path, n_max: int = 5) -> None:
     """Write :func:`draw_table` over :func:`draw_printed_minus_recomputed` to ``path``."""
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
 
     with new_figure(path, nrows=2, size=(7.0, 6.0)) as (_fig, axes):
         top, bottom = axes[:, 0]  # an nrows × 1 array
@@ -118,7 +118,7 @@ def _plain_ticks(ax: Axes) -> None:
     not 2×10⁻¹."""
     from matplotlib.ticker import FuncFormatter, NullFormatter
 
-    from pendcli.core.numbers import edition_number
+    from pendcli.data.numbers import edition_number
 
     plain = FuncFormatter(lambda v, _pos: edition_number(float(f"{v:.3g}"), 3))
     ax.xaxis.set_major_formatter(plain)

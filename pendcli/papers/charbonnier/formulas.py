@@ -22,17 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
-from pendcli.core.formula_engine import (
-    DEFAULT_INTEGRATOR,
-    Integrator,
-    Study,
-    leading_coefficient,
-    make_row,
-    study_verdict,
-)
-from pendcli.core.formula_plots import PanelLabels, grid_caption, plot_studies
-from pendcli.core.vocabulary import FormulaVerdict
+from pendcli.data.vocabulary import FormulaVerdict
 from pendcli.papers.charbonnier.model import integral_pi, integral_pi_exact, printed_closed_form
 from pendcli.papers.charbonnier.perturbation import (
     CheckPendulum,
@@ -43,6 +33,16 @@ from pendcli.papers.charbonnier.perturbation import (
     monomial,
     perturbations,
 )
+from pendcli.verify.claims import FormulaCause, FormulaRow, with_causes
+from pendcli.verify.formula_engine import (
+    DEFAULT_INTEGRATOR,
+    Integrator,
+    Study,
+    leading_coefficient,
+    make_row,
+    study_verdict,
+)
+from pendcli.verify.formula_plots import PanelLabels, grid_caption, plot_studies
 
 __all__ = [
     "CAPTIONS",

@@ -30,7 +30,7 @@ from collections.abc import Iterator
 from fractions import Fraction
 from functools import cache
 
-from pendcli.core.errors import PendcliError, out_of_range
+from pendcli.base.errors import PendcliError, out_of_range
 from pendcli.papers.charbonnier.wallis import (
     MAX_N,
     SERIES_FROM,

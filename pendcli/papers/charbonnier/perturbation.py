@@ -3,7 +3,7 @@
 The equation is θ'' + k²θ + ε φ(θ, θ', t) = 0, θ(0) = −α, θ'(0) = 0 (no. 4), the principal
 motion being linear (sin θ → θ, no. 3).  The integrals E_s, E_c of no. 7 are computed by
 Gauss-Legendre quadrature of φ(−α cos kt, kα sin kt, t), independent of the ODE, which
-:func:`measure` integrates with a :class:`~pendcli.core.formula_engine.Integrator` to find the
+:func:`measure` integrates with a :class:`~pendcli.verify.formula_engine.Integrator` to find the
 events the first-order formulas (6)-(9) predict.
 
 The pendulum of these checks (g, l0, α) is read from ``[paper.constants]`` of
@@ -20,11 +20,11 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
-from pendcli.core.formula_engine import crossings
-from pendcli.core.tables import load_paper_table
+from pendcli.data.tables import load_paper_table
+from pendcli.verify.formula_engine import crossings
 
 if TYPE_CHECKING:
-    from pendcli.core.formula_engine import Integrator
+    from pendcli.verify.formula_engine import Integrator
 
 __all__ = [
     "GL_NODES",

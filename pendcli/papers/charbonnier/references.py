@@ -1,5 +1,5 @@
 """Charbonnier (1908): the references the ledger's printed forms are checked against
-(``reference = "<name>"`` in tables/equations/charbonnier.toml; core/printed_check), one
+(``reference = "<name>"`` in tables/equations/charbonnier.toml; verify/printed_check), one
 module per part of the paper, and :data:`REFERENCES`, the table of them the ledger reads
 (``Paper.references``).
 
@@ -20,11 +20,11 @@ Each maps ledger symbols to exact expressions obtained without the formula the r
 
 from __future__ import annotations
 
-from pendcli.core.ledger_references import builders
 from pendcli.papers.charbonnier import references_general as general
 from pendcli.papers.charbonnier import references_monomial as monomial
 from pendcli.papers.charbonnier import references_points as points
 from pendcli.papers.charbonnier import references_resisting as resisting
+from pendcli.verify.ledger_references import builders
 
 # Every builder the ledger cites, by its name there (core/ledger_references.builders).
 REFERENCES = builders(general, points, resisting, monomial)

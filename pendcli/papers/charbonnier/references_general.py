@@ -19,9 +19,9 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed import ledger_symbols
-from pendcli.core.printed_check import Reference
+from pendcli.data.printed import ledger_symbols
 from pendcli.papers.taylor import taylor
+from pendcli.verify.printed_check import Reference
 
 
 def free_parameters(count: int, stem: str = "p") -> list[Any]:

@@ -17,9 +17,9 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import ledger_symbols
 from pendcli.papers.charbonnier.references_resisting import resisted
+from pendcli.verify.printed_check import Reference
 
 # the integers at which each closed form of I_n(π) (lines 486-489) is judged
 EVEN = (0, 2, 4, 6, 8)

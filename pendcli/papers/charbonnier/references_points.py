@@ -13,13 +13,13 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import (
     exponential_family,
     free_parameters,
     ledger_symbols,
     principal_motion,
 )
+from pendcli.verify.printed_check import Reference
 
 
 def first_order_points(theta1: Any, speed1: Any) -> dict[str, Any]:

@@ -13,7 +13,6 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
 from pendcli.papers.charbonnier.references_general import (
     free_parameters,
     integrand_along,
@@ -21,6 +20,7 @@ from pendcli.papers.charbonnier.references_general import (
     principal_motion,
 )
 from pendcli.papers.charbonnier.references_points import first_order_points
+from pendcli.verify.printed_check import Reference
 
 
 def resisted(force: Any, phase: bool) -> dict[str, Any]:

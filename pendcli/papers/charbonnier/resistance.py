@@ -25,7 +25,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from pendcli.core.errors import PendcliError, invalid_value, out_of_range
+from pendcli.base.errors import PendcliError, invalid_value, out_of_range
 from pendcli.papers.charbonnier.model import integral_pi
 
 __all__ = [

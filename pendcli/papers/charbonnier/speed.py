@@ -22,7 +22,7 @@ from collections.abc import Callable
 from functools import cache, partial
 from typing import Any
 
-from pendcli.core.errors import PendcliError, invalid_value, out_of_range
+from pendcli.base.errors import PendcliError, invalid_value, out_of_range
 from pendcli.run.tradeoff_engine import Candidate, Family, choose, measured_points
 
 __all__ = [

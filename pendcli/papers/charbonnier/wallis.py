@@ -23,7 +23,7 @@ from fractions import Fraction
 from functools import cache
 from typing import TYPE_CHECKING, Any
 
-from pendcli.core.errors import PendcliError, out_of_range
+from pendcli.base.errors import PendcliError, out_of_range
 
 if TYPE_CHECKING:
     import numpy as np

@@ -43,7 +43,7 @@ Nothing heavy is imported here (each hook of :data:`PAPER` loads its module when
 
 from __future__ import annotations
 
-from pendcli.core.paper import CliApp, Paper, hook, merged, modules
+from pendcli.papers.paper import CliApp, Paper, hook, merged, modules
 
 __all__ = ["PAPER"]
 

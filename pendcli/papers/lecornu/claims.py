@@ -16,10 +16,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from pendcli.core.causes import Procedure
-from pendcli.core.claims import Recomputed
-from pendcli.core.errors import PendcliError
-from pendcli.core.numbers import paper_decimals
+from pendcli.base.errors import PendcliError
+from pendcli.data.numbers import paper_decimals
 from pendcli.numerics.besselzeros import bessel_zeros
 from pendcli.papers.lecornu.model import (
     Array,
@@ -36,6 +34,8 @@ from pendcli.papers.lecornu.model import (
     printed,
     printed_number,
 )
+from pendcli.verify.causes import Procedure
+from pendcli.verify.claims import Recomputed
 
 __all__ = ["ExampleInputs", "author_procedures", "check_claims_g", "example_inputs", "recompute"]
 
@@ -485,7 +485,7 @@ def author_procedures() -> dict[str, Procedure]:
 
     The inputs are claim ids: evaluated on the printed values these give his own figures
     (the "Author's procedure" of the notes); on the recomputed values, the recomputation.
-    :mod:`pendcli.core.causes` judges each number against them and derives its cause.
+    :mod:`pendcli.verify.causes` judges each number against them and derives its cause.
     """
     descending = [f"lecornu.j2_zeros.{k}" for k in range(PRINTED_ELONGATIONS, 0, -1)]
     j1 = [f"lecornu.j1_zeros.{k}" for k in range(1, 7)]

@@ -1,4 +1,4 @@
-"""Lecornu's hand computations, declared for the search of :mod:`pendcli.core.explain`.
+"""Lecornu's hand computations, declared for the search of :mod:`pendcli.verify.explain`.
 
 For each of the 22 printed numbers that do not agree, :func:`computations` gives the author's
 computation as a function of his choices. The formulas are his (the procedures of
@@ -25,7 +25,8 @@ from fractions import Fraction
 from functools import cache, partial
 from typing import Any
 
-from pendcli.core.explain import (
+from pendcli.data.tables import load_paper_table
+from pendcli.verify.explain import (
     G_READINGS,
     PI_READINGS,
     TABLE_DECIMALS,
@@ -45,7 +46,6 @@ from pendcli.core.explain import (
     table_zero,
     target_of,
 )
-from pendcli.core.tables import load_paper_table
 
 __all__ = ["computations", "declared", "targets"]
 

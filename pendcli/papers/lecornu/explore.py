@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.checks import real_in_range
+from pendcli.base.checks import real_in_range
 from pendcli.numerics.besselzeros import bessel_zeros
 from pendcli.papers.lecornu.model import (
     MAX_Z0_ODE,
@@ -293,8 +293,8 @@ def g_values(g: float) -> dict[str, float]:
 def g_sensitivity(gs: tuple[float, ...] | None = None) -> list[Row]:
     """Each g-dependent claim recomputed at several g (default :func:`g_grid`), with its
     verdict and d(value)/dg at the table's g."""
-    from pendcli.core.tables import load_paper_table
-    from pendcli.core.verdict import judge
+    from pendcli.data.tables import load_paper_table
+    from pendcli.verify.verdict import judge
 
     gs = g_grid() if gs is None else gs
     table = load_paper_table("lecornu").claims_by_id(g_dependent_ids(), "lecornu g-sensitivity")
@@ -319,7 +319,7 @@ def g_sensitivity(gs: tuple[float, ...] | None = None) -> list[Row]:
 
 def _score_and_agreeing(g: float, table: dict[str, Any], ids: list[str]) -> tuple[float, int]:
     """Σ ((recomputed - printed)/u)² and the number of agreeing claims at g."""
-    from pendcli.core.verdict import Verdict, judge
+    from pendcli.verify.verdict import Verdict, judge
 
     vals = g_values(g)
     score = sum(((vals[i] - table[i].number.value) / table[i].number.resolution) ** 2 for i in ids)
@@ -334,7 +334,7 @@ def best_g(lo: float = 9.70, hi: float = 9.90, step: float = 0.0005) -> dict[str
     unit; also the g range where the most claims agree, and both at the table's g (the keys
     ``score_at_<g>``, ``agreeing_at_<g>``).
     """
-    from pendcli.core.tables import load_paper_table
+    from pendcli.data.tables import load_paper_table
 
     ids = g_dependent_ids()
     table = load_paper_table("lecornu").claims_by_id(ids, "the best-fitting g")

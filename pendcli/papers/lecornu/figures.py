@@ -11,13 +11,13 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import ClaimRow
 from pendcli.papers.lecornu.model import (
     ExampleModel,
     constant,
     example_model,
     theta_curves,
 )
+from pendcli.verify.claims import ClaimRow
 
 __all__ = [
     "GROUPS",
@@ -63,7 +63,7 @@ def _power(v: float) -> str:
 def _comma(v: float) -> str:
     """A number as the paper prints one: the decimal comma (0,35; g = 9,81), one style in
     every label of a figure."""
-    from pendcli.core.numbers import edition_number
+    from pendcli.data.numbers import edition_number
 
     return edition_number(float(v), 6)
 
@@ -140,7 +140,7 @@ def plot_example(
     g: float | None = None,
 ) -> Path:
     """θ/θ0 against time for solution (10) and for the release from rest, events marked."""
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
 
     m = example_model(speed, length, g)
     with new_figure(path, size=(8.0, 4.8)) as (_fig, ax):
@@ -211,7 +211,7 @@ Bar = tuple[int, float, str, str]  # x, (printed - recomputed)/unit, verdict, ti
 def difference_bars(rows: dict[str, ClaimRow]) -> tuple[list[Bar], list[tuple[str, int, int]]]:
     """(printed - recomputed) in units of the printed last digit, per claim of GROUPS; and
     each group's (name, first x, last x). Groups are one empty slot apart."""
-    from pendcli.core.numbers import parse_printed
+    from pendcli.data.numbers import parse_printed
 
     bars: list[Bar] = []
     spans = []
@@ -316,9 +316,9 @@ CAPTIONS = {
 def figures(outdir: str | Path) -> list[Path]:
     """(1) θ/θ0 of the example against time, published and recomputed elongations and vertical
     passages marked; (2) printed minus recomputed, in units of the printed last digit."""
-    from pendcli.core.claims import evaluate_paper
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
     from pendcli.papers.lecornu.claims import author_procedures, recompute
+    from pendcli.verify.claims import evaluate_paper
 
     outdir = Path(outdir)
     m = example_model()

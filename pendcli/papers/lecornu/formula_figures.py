@@ -6,11 +6,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_plots import PanelLabels, grid_caption, plot_studies
 from pendcli.papers.lecornu.formulas import formula_checks
 from pendcli.papers.lecornu.formulas_base import PAPER
 from pendcli.papers.lecornu.formulas_slow import SLOW_PANELS
+from pendcli.verify.claims import FormulaRow
+from pendcli.verify.formula_plots import PanelLabels, grid_caption, plot_studies
 
 __all__ = ["CAPTIONS", "PANELS", "figures"]
 

@@ -29,16 +29,6 @@ from functools import cache
 
 import numpy as np
 
-from pendcli.core.claims import FormulaCause, FormulaRow, with_causes
-from pendcli.core.formula_engine import (
-    DEFAULT_INTEGRATOR,
-    Integrator,
-    Study,
-    crossings,
-    identify_combination,
-    leading_coefficient,
-    study_verdict,
-)
 from pendcli.papers.lecornu.formulas_base import (
     GRID_2PI,
     P_PARAM,
@@ -52,6 +42,16 @@ from pendcli.papers.lecornu.formulas_base import (
 from pendcli.papers.lecornu.formulas_chapter3 import fast_shortening_rows, finite_rows
 from pendcli.papers.lecornu.formulas_conical import conical_rows
 from pendcli.papers.lecornu.formulas_slow import slow_rows
+from pendcli.verify.claims import FormulaCause, FormulaRow, with_causes
+from pendcli.verify.formula_engine import (
+    DEFAULT_INTEGRATOR,
+    Integrator,
+    Study,
+    crossings,
+    identify_combination,
+    leading_coefficient,
+    study_verdict,
+)
 
 __all__ = [
     "P_SWEEP",

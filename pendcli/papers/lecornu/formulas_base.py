@@ -13,8 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_engine import Integrator, Study, make_row
+from pendcli.verify.claims import FormulaRow
+from pendcli.verify.formula_engine import Integrator, Study, make_row
 
 __all__ = [
     "GRID_2PI",

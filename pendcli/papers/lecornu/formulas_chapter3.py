@@ -26,8 +26,16 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_engine import (
+from pendcli.papers.lecornu.formulas_base import (
+    GRID_2PI,
+    P_SWEEP,
+    PI,
+    Array,
+    Solution,
+    formula_row,
+)
+from pendcli.verify.claims import FormulaRow
+from pendcli.verify.formula_engine import (
     DEFAULT_INTEGRATOR,
     Integrator,
     Study,
@@ -36,14 +44,6 @@ from pendcli.core.formula_engine import (
     leading_coefficient,
     make_row,
     study_verdict,
-)
-from pendcli.papers.lecornu.formulas_base import (
-    GRID_2PI,
-    P_SWEEP,
-    PI,
-    Array,
-    Solution,
-    formula_row,
 )
 
 __all__ = [
@@ -72,8 +72,8 @@ def _k_study(residuals: Sequence[float] | Array, order: float, ref: Integrator) 
 # --------------------------------------------------------- the ledger's printed forms
 @cache
 def _ledger_raw(tables: str) -> dict[str, Any]:
-    from pendcli.core.ledger import ledger_path
-    from pendcli.core.tables import read_toml
+    from pendcli.data.ledger import ledger_path
+    from pendcli.data.tables import read_toml
 
     return read_toml(ledger_path("lecornu", Path(tables)), "equation ledger")
 
@@ -82,7 +82,7 @@ def _ledger_raw(tables: str) -> dict[str, Any]:
 def _ledger_row_in(row_id: str, tables: str) -> tuple[Any, dict[str, str]]:
     """Row ``lecornu.<row_id>`` validated as the ledger's loader does (its formulas parsed),
     alone: the other rows' formulas are not parsed again; and the symbols of its place."""
-    from pendcli.core.ledger import ledger_path, parse_ledger
+    from pendcli.data.ledger import ledger_path, parse_ledger
 
     raw = _ledger_raw(tables)
     entries = [e for e in raw["equation"] if e.get("id") == f"lecornu.{row_id}"]
@@ -93,7 +93,7 @@ def _ledger_row_in(row_id: str, tables: str) -> tuple[Any, dict[str, str]]:
 
 
 def _ledger_row(row_id: str) -> tuple[Any, dict[str, str]]:
-    from pendcli.core.tables import tables_dir
+    from pendcli.data.tables import tables_dir
 
     return _ledger_row_in(row_id, str(tables_dir()))
 
@@ -111,7 +111,7 @@ def ledger_text(row_id: str, field: str = "printed") -> str:
 def ledger_sides(row_id: str, field: str = "printed") -> tuple[tuple[Any, Any], ...]:
     """The (lhs, rhs) pairs of :func:`ledger_text`, parsed in the symbols of the row's place
     in the text: what a check of a printed formula evaluates, never a copy of it."""
-    from pendcli.core.printed import parse_formula
+    from pendcli.data.printed import parse_formula
 
     row, symbols = _ledger_row(row_id)
     return parse_formula(row.id, ledger_text(row_id, field), symbols).equations
@@ -123,7 +123,7 @@ def _named(expr: Any, names: Sequence[str]) -> tuple[Any, list[Any]]:
     ``expr`` is an error."""
     import sympy as sp
 
-    from pendcli.core.printed import ELLIPSIS
+    from pendcli.data.printed import ELLIPSIS
 
     found = {s.name: s for s in expr.free_symbols}
     extra = set(found) - set(names) - {ELLIPSIS}

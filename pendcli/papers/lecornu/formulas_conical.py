@@ -22,8 +22,6 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_engine import DEFAULT_INTEGRATOR, Integrator, Study
 from pendcli.papers.lecornu.formulas_base import P_SWEEP, PI, Array, Solution, formula_row
 from pendcli.papers.lecornu.formulas_chapter3 import (
     evaluator,
@@ -31,6 +29,8 @@ from pendcli.papers.lecornu.formulas_chapter3 import (
     ledger_text,
     through_printed_state,
 )
+from pendcli.verify.claims import FormulaRow
+from pendcli.verify.formula_engine import DEFAULT_INTEGRATOR, Integrator, Study
 
 __all__ = ["conical_rows"]
 

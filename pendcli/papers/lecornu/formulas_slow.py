@@ -21,8 +21,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_engine import (
+from pendcli.verify.claims import FormulaRow
+from pendcli.verify.formula_engine import (
     DEFAULT_INTEGRATOR,
     Integrator,
     Study,
@@ -30,10 +30,10 @@ from pendcli.core.formula_engine import (
     leading_coefficient,
     make_row,
 )
-from pendcli.core.formula_plots import PanelLabels
+from pendcli.verify.formula_plots import PanelLabels
 
 if TYPE_CHECKING:
-    from pendcli.core.ledger import Ledger, LedgerRow
+    from pendcli.data.ledger import Ledger, LedgerRow
 
 __all__ = ["SLOW_PANELS", "eq25_residuals", "slow_rows"]
 
@@ -59,7 +59,7 @@ SLOW_PANELS = {
 
 def _printed(ledger: Ledger, row_id: str) -> tuple[LedgerRow, tuple[tuple[Any, Any], ...]]:
     """A ledger row and the equations (lhs, rhs) of its printed form, as sympy parses them."""
-    from pendcli.core.printed import parse_formula
+    from pendcli.data.printed import parse_formula
 
     row = next(r for r in ledger.rows if r.id == row_id)
     assert row.printed is not None, row_id
@@ -172,7 +172,7 @@ def eq25_residuals(psi: float, ref: Integrator = DEFAULT_INTEGRATOR) -> list[flo
     """Max over 0 ≤ γt ≤ 2π of |θ − (25)| per p of P_SWEEP (ρ = γ = 1, phase ψ), θ of (3)
     linearised in the reduced variables, (1 + pτ)θ'' + 2pθ' + θ = 0, started from (25)'s
     value and slope at τ = 0; (25) is the ledger's printed form."""
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
 
     return _eq25_residuals(load_ledger(PAPER), psi, ref)
 
@@ -220,7 +220,7 @@ def slow_rows(
 ) -> list[FormulaRow]:
     """The quarter oscillation (line 555), the amplitude factor (line 573) and (25), their
     printed forms read from ``ledger`` (by default the committed one)."""
-    from pendcli.core.ledger import load_ledger
+    from pendcli.data.ledger import load_ledger
 
     ledger = ledger if ledger is not None else load_ledger(PAPER)
     return [_quarter_row(ledger), _amplitude_row(ledger), _eq25_row(ledger, ref)]

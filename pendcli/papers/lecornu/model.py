@@ -23,13 +23,13 @@ from functools import cache
 import numpy as np
 from numpy.typing import NDArray
 
-from pendcli.core.checks import real_in_range
-from pendcli.core.errors import PendcliError, invalid_value
-from pendcli.core.formula_engine import richardson
-from pendcli.core.numbers import PrintedNumber
-from pendcli.core.tables import load_paper_table, paper_constant
+from pendcli.base.checks import real_in_range
+from pendcli.base.errors import PendcliError, invalid_value
+from pendcli.data.numbers import PrintedNumber
+from pendcli.data.tables import load_paper_table, paper_constant
 from pendcli.numerics.besselzeros import ascending_series, bessel_zeros
 from pendcli.numerics.planar import modulus_squared
+from pendcli.verify.formula_engine import richardson
 
 __all__ = [
     "FLOOR_RANGE",

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from importlib import import_module
 
-from pendcli.core.ledger_references import builders
+from pendcli.verify.ledger_references import builders
 
 # the sections' modules (references_<name>.py), in the order of the text
 _NAMES = "motion small numeric general integral asymptotic slow finite perturbed conical"

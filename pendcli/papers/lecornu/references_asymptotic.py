@@ -1,7 +1,7 @@
 """Lecornu, § II, lines 420-676: the references the printed forms of the integral's tail
 (lines 420-460), the asymptotic solution (20)-(24) and its passages and elongations (lines
 466-563) and the slowly varying pendulum's hierarchy and mean pendulum (lines 624-676) are
-judged against (core/printed_check); the other references of lines 1-698 are kept by
+judged against (verify/printed_check); the other references of lines 1-698 are kept by
 the other section modules (see references.py).
 
 Each ``reference_*`` maps ledger symbols (tables/equations/lecornu.toml [symbols]) to exact

@@ -15,8 +15,8 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from pendcli.core.printed import ledger_symbols as symbols
-from pendcli.core.printed_check import Reference
+from pendcli.data.printed import ledger_symbols as symbols
+from pendcli.verify.printed_check import Reference
 
 __all__ = [
     "cylinder",

@@ -1,6 +1,6 @@
 """Lecornu, § IV « Pendule conique de longueur variable », lines 940-1062: the references
 the printed forms of the conical pendulum's motion, (43)-(46) and the general integral of
-(45) are judged against (core/printed_check).
+(45) are judged against (verify/printed_check).
 
 Each ``reference_*`` maps ledger symbols (tables/equations/lecornu.toml [symbols]) to exact
 expressions: the equation of motion, the preceding equation, a definition, a solution

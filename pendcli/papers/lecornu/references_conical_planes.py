@@ -1,7 +1,7 @@
 """Lecornu, § IV « Pendule conique de longueur variable », lines 1064-1135: the references
 the printed forms of (47)-(52), the theorem of line 1094 (two plane pendulums, against the bob's
 motion in space), the trace of the pendulum and its homothety after half a turn are judged
-against (core/printed_check).
+against (verify/printed_check).
 
 Each ``reference_*`` maps ledger symbols (tables/equations/lecornu.toml [symbols]) to exact
 expressions: the angles in the two planes from (9) and (46), the O(p) solution of (48)

@@ -1,5 +1,5 @@
 """Lecornu, § III « Étude des oscillations finies », lines 699-816: the references the
-printed forms of (30)-(38) are judged against (core/printed_check): the fast shortening in
+printed forms of (30)-(38) are judged against (verify/printed_check): the fast shortening in
 powers of s = g/b ((30), (31), lines 699-732), then the slow lengthening in u = γt, p =
 b/√(ga) ((32)-(38), lines 734-816).
 

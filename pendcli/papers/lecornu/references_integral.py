@@ -13,8 +13,8 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
 from pendcli.papers.lecornu.references_base import reference, symbols
+from pendcli.verify.printed_check import Reference
 
 
 def _solves_nine(variable: str, to_x: Any = None) -> Any:

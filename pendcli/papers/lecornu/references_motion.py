@@ -1,6 +1,6 @@
 """Lecornu (1894), § I, Équation du mouvement (lines 1-116), and the opening of § III (lines
 690-698, the shortening pendulum): the references the printed forms are judged against
-(:mod:`pendcli.core.printed_check`).
+(:mod:`pendcli.verify.printed_check`).
 
 Each builder maps ledger symbols to exact expressions taken from what the printed formula
 rests on: the bob's equations in x, y (lines 34-40), the chain rule of l = a + bt, the

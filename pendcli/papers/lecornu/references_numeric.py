@@ -1,8 +1,8 @@
 """Lecornu (1894), § II, lines 206-256: the numbers of the 0,35 m/s example (after (14) to
 after (16)), computed for the numeric mode of the printed-form engine
-(:mod:`pendcli.core.printed_numeric`).
+(:mod:`pendcli.verify.printed_numeric`).
 
-Each ``numbers_*`` returns a :class:`~pendcli.core.printed_numeric.Numbers`: the value of
+Each ``numbers_*`` returns a :class:`~pendcli.verify.printed_numeric.Numbers`: the value of
 every printed number of its ledger row, in printed order, by the author's own step (mpmath at
 30 digits): the function the text evaluates (the zeros of J₂ and J₁, J₀), at the inputs the
 text gives, which are his printed numbers of the preceding lines, read from the published
@@ -20,9 +20,9 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
-from pendcli.core.printed_numeric import Numbers
 from pendcli.papers.lecornu.model import constant, printed_number
+from pendcli.verify.printed_check import Reference
+from pendcli.verify.printed_numeric import Numbers
 
 _DPS = 30
 J2 = [f"lecornu.j2_zeros.{k}" for k in range(1, 6)]  # (15), ascending

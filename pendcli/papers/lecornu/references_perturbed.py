@@ -1,5 +1,5 @@
 """Lecornu, § III « Étude des oscillations finies », lines 818-934: the references the
-printed forms of (39)-(42') are judged against (core/printed_check): (38) perturbed by the
+printed forms of (39)-(42') are judged against (verify/printed_check): (38) perturbed by the
 slow lengthening, θ = ω + pε, ε split in powers of k and solved (β, δ), the
 half-oscillation (42), (42') and T = T'.
 
@@ -176,8 +176,8 @@ def reference_eq41() -> Any:
 def reference_printed_41() -> Any:
     """Line 886's « Cette formule donne dθ/dt = 0 pour t = 0 »: (41) as the ledger
     transcribes it (row lecornu.eq.41), its u-derivative at u = 0 (dθ/dt = γ dθ/du)."""
-    from pendcli.core.ledger import load_ledger
-    from pendcli.core.printed import parse_formula
+    from pendcli.data.ledger import load_ledger
+    from pendcli.data.printed import parse_formula
 
     ledger = load_ledger("lecornu")
     row = next(r for r in ledger.rows if r.id == "lecornu.eq.41")

@@ -14,9 +14,9 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
 from pendcli.papers.lecornu.references_base import phi_of, reference, symbols
 from pendcli.papers.taylor import taylor
+from pendcli.verify.printed_check import Reference
 
 
 def reference_elongation_lengths() -> Any:

@@ -10,14 +10,14 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed import ledger_symbols as real_symbols
-from pendcli.core.printed_check import Reference
+from pendcli.data.printed import ledger_symbols as real_symbols
+from pendcli.verify.printed_check import Reference
 
 __all__ = ["cited", "derivative_along", "make_reference", "real_symbols"]
 
 
 def make_reference(exact: dict[str, Any], what: str, **kw: Any) -> Any:
-    """A :class:`~pendcli.core.printed_check.Reference` (its options passed through)."""
+    """A :class:`~pendcli.verify.printed_check.Reference` (its options passed through)."""
     return Reference(exact, what=what, **kw)
 
 

@@ -13,7 +13,7 @@ import math
 from functools import partial
 from typing import Any
 
-from pendcli.core.tables import load_paper_table
+from pendcli.data.tables import load_paper_table
 from pendcli.run.tradeoff_engine import Candidate, Family
 
 __all__ = [

@@ -7,8 +7,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import load_paper_table
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import load_paper_table
 from pendcli.papers.lecornu.speed import reference_period_ratio
 from pendcli.run.stability import rel, row, short
 

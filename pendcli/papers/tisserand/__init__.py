@@ -51,7 +51,7 @@ its hooks by place and imports nothing heavy: each hook loads its module when ca
 
 from __future__ import annotations
 
-from pendcli.core.paper import CliApp, Paper, hook, merged, modules
+from pendcli.papers.paper import CliApp, Paper, hook, merged, modules
 
 __all__ = ["PAPER"]
 

@@ -1,6 +1,6 @@
 """Tisserand's printed numbers recomputed: the example's coefficients, the 1/5 mm, Resal's rate.
 
-:func:`recompute` returns one :class:`~pendcli.core.claims.Recomputed` per row of
+:func:`recompute` returns one :class:`~pendcli.verify.claims.Recomputed` per row of
 ``tables/published/tisserand.toml``; each small builder below produces a few of them from
 the example's motion (series and exact, computed once). ``value`` is what Tisserand's own
 formulas give, ``exact`` the same quantity for the exact motion.
@@ -12,8 +12,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from pendcli.core.claims import Recomputed
-from pendcli.core.tables import load_paper_table
+from pendcli.data.tables import load_paper_table
 from pendcli.papers.tisserand.model import (
     DEGREES,
     PAPER,
@@ -29,6 +28,7 @@ from pendcli.papers.tisserand.model import (
     series_conical,
 )
 from pendcli.papers.tisserand.units import angle_text
+from pendcli.verify.claims import Recomputed
 
 __all__ = ["ReadingRow", "reading_evidence", "recompute"]
 

@@ -1,4 +1,4 @@
-"""Tisserand's hand computation of the example, declared for :mod:`pendcli.core.explain`.
+"""Tisserand's hand computation of the example, declared for :mod:`pendcli.verify.explain`.
 
 His example (θ0 = 30°, θ1 = 15°) prints three coefficients in seconds of arc and a bound of
 1/5 mm. All four agree with his own series (II), (V); the search asks how robust the agreement
@@ -23,7 +23,8 @@ from fractions import Fraction
 from functools import cache, partial
 from typing import Any
 
-from pendcli.core.explain import (
+from pendcli.data.tables import load_paper_table
+from pendcli.verify.explain import (
     PI_READINGS,
     Axis,
     Computation,
@@ -35,7 +36,6 @@ from pendcli.core.explain import (
     rounding_axis,
     significant_round,
 )
-from pendcli.core.tables import load_paper_table
 
 __all__ = ["computations", "declared", "targets"]
 

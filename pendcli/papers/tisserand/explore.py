@@ -12,8 +12,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from pendcli.core.errors import PendcliError, out_of_range
-from pendcli.core.tables import load_paper_table
+from pendcli.base.errors import PendcliError, out_of_range
+from pendcli.data.tables import load_paper_table
 from pendcli.numerics.spherical import check_amplitudes
 from pendcli.papers.tisserand.claims import reading_evidence
 from pendcli.papers.tisserand.model import (

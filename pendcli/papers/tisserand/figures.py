@@ -146,7 +146,7 @@ def plot_path(
     path: str | Path, theta0: float | None = None, theta1: float | None = None, turns: int = 6
 ) -> Path:
     """:func:`draw_path` written to ``path``."""
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
 
     with new_figure(path, nrows=2, size=(6.5, 8.2)) as (fig, axes):
         path_ax, gap_ax = axes.flat
@@ -214,7 +214,7 @@ def draw_series_error(ax: Axes, ratio: float | None = None) -> None:
 
 def plot_series_error(path: str | Path, ratio: float | None = None) -> Path:
     """:func:`draw_series_error` written to ``path``."""
-    from pendcli.core.plotting import new_figure
+    from pendcli.base.plotting import new_figure
 
     with new_figure(path, size=(7.0, 4.8)) as (_fig, ax):
         draw_series_error(ax, ratio)

@@ -26,15 +26,15 @@ from typing import Any
 
 import numpy as np
 
-from pendcli.core.claims import FormulaRow
-from pendcli.core.formula_engine import (
+from pendcli.verify.claims import FormulaRow
+from pendcli.verify.formula_engine import (
     Study,
     extrapolate_to_zero,
     identify,
     make_row,
     study_verdict,
 )
-from pendcli.core.formula_plots import PanelLabels, grid_caption, plot_studies
+from pendcli.verify.formula_plots import PanelLabels, grid_caption, plot_studies
 
 __all__ = [
     "BUILDERS",

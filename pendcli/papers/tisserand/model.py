@@ -12,8 +12,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from pendcli.core.errors import PendcliError
-from pendcli.core.tables import load_paper_table
+from pendcli.base.errors import PendcliError
+from pendcli.data.tables import load_paper_table
 from pendcli.numerics.spherical import (
     ConicalMotion,
     check_amplitudes,

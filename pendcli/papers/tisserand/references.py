@@ -1,6 +1,6 @@
 """Tisserand (1881): the references the ledger's printed forms are judged against
-(``reference = "<name>"`` in tables/equations/tisserand.toml; core/printed_check and
-core/printed_numeric), by the sections of the paper, and their table :data:`REFERENCES`.
+(``reference = "<name>"`` in tables/equations/tisserand.toml; verify/printed_check and
+verify/printed_numeric), by the sections of the paper, and their table :data:`REFERENCES`.
 
     p. 448-450, lines 32-88     the first integrals, (1)-(7): :mod:`.references_differentials`
     p. 450-452, lines 92-154    the series (8)-(15) in ψ and in k't: :mod:`.references_series`
@@ -20,8 +20,6 @@ import sys
 
 import sympy as sp
 
-from pendcli.core.ledger_references import builders
-from pendcli.core.printed_check import Reference
 from pendcli.papers.tisserand import references_differentials as differentials
 from pendcli.papers.tisserand import references_numeric as numeric
 from pendcli.papers.tisserand import references_prose as prose
@@ -32,6 +30,8 @@ from pendcli.papers.tisserand.references_series import (
     motion_reference,
     motion_series,
 )
+from pendcli.verify.ledger_references import builders
+from pendcli.verify.printed_check import Reference
 
 # --- the ellipse: (9), (10), (16), (17), p. 452 ------------------------------------------
 

@@ -16,8 +16,8 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed import ledger_symbols
-from pendcli.core.printed_check import Reference
+from pendcli.data.printed import ledger_symbols
+from pendcli.verify.printed_check import Reference
 
 
 def scale() -> Any:

@@ -1,5 +1,5 @@
 """Tisserand (1881), lines 192-202: the numbers of the numerical application, computed for the
-numeric mode of the printed-form engine (:mod:`pendcli.core.printed_numeric`).
+numeric mode of the printed-form engine (:mod:`pendcli.verify.printed_numeric`).
 
 The coefficients of ψ (II) and φ' (V) are Tisserand's own series (``model.series_conical``,
 every printed term) at the amplitudes the row prints, so that the printed « 30', 15' » and
@@ -17,8 +17,8 @@ from typing import Any
 
 import mpmath
 
-from pendcli.core.printed_numeric import Numbers
 from pendcli.papers.tisserand.model import series_conical
+from pendcli.verify.printed_numeric import Numbers
 
 COEFFICIENTS = (
     "tisserand.example.psi_sin2",
@@ -28,7 +28,7 @@ COEFFICIENTS = (
 
 
 def _claim(claim_id: str) -> Any:
-    from pendcli.core.tables import load_paper_table
+    from pendcli.data.tables import load_paper_table
 
     return load_paper_table("tisserand").claim(claim_id).number
 
@@ -58,7 +58,7 @@ def numbers_numerical_application() -> Any:
 
 def _shift(given: Mapping[str, float]) -> tuple[float]:
     """l sin θ0 |c| in millimetres, l as printed (metres), c = 2'42'' (line 200)."""
-    from pendcli.core.tables import load_paper_table
+    from pendcli.data.tables import load_paper_table
 
     with mpmath.workdps(30):
         theta0 = mpmath.radians(load_paper_table("tisserand").constant("theta0"))

@@ -16,13 +16,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
 from pendcli.papers.tisserand.references_differentials import (
     ledger_symbols,
     reference_definition_3,
     scale,
 )
 from pendcli.papers.tisserand.references_series import motion_reference, motion_series
+from pendcli.verify.printed_check import Reference
 
 
 # Lines 30 and 180: the projection on the ellipse (17) and φ' against a uniform rotation.

@@ -16,9 +16,9 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.core.printed_check import Reference
 from pendcli.papers.taylor import degree_in, taylor
 from pendcli.papers.tisserand.references_differentials import ledger_symbols, scale
+from pendcli.verify.printed_check import Reference
 
 
 @cache

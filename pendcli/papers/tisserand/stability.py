@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from pendcli.core.errors import PendcliError
+from pendcli.base.errors import PendcliError
 from pendcli.papers.tisserand.speed import reference_conical
 from pendcli.run.stability import rel, row, short
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import re
 
-from pendcli.core.errors import PendcliError, out_of_range
+from pendcli.base.errors import PendcliError, out_of_range
 from pendcli.numerics.spherical import check_amplitudes
 
 __all__ = ["ARCSEC", "amplitudes", "angle_text", "parse_angle", "parse_length"]
@@ -35,7 +35,7 @@ def parse_angle(text: str, name: str = "angle") -> float:
         raise PendcliError(f"{name} is empty; write an angle with its unit, e.g. {_ANGLE_FORMS}")
     s = text.strip().replace("’", "'")
     if _SEXAGESIMAL.match(s):
-        from pendcli.core.numbers import parse_printed
+        from pendcli.data.numbers import parse_printed
 
         return math.radians(parse_printed(s).value)
     m = _NUMBER_UNIT.match(s)

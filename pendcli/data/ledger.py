@@ -1,0 +1,606 @@
+"""The equation ledger: every numbered equation and stated result of a paper, accounted for.
+
+A ledger is ``tables/equations/<paper>.toml``: one ``[[equation]]`` row per equation label
+printed in the paper's text (``tables/papers/<paper>.txt``) and per stated result, with a
+status (``holds``, ``fails``, ``misprint``, ``definition``, ``not-checkable``) and, for the
+first three, the ``kind`` of check that decides it (:mod:`pendcli.verify.check_kinds`) and the
+``reference`` it is judged against (its builder in the paper's table, ``Paper.references``).
+This module knows nothing about pendulums: it reads and validates ledgers, extracts the
+labels a text prints, judges each row's printed form by its kind and verifies that the
+status computed is the one the row records. A disagreement is an error in the
+ledger, reported, never re-labelled.
+"""
+
+from __future__ import annotations
+
+import re
+from collections import Counter
+from collections.abc import Iterable
+from dataclasses import asdict, dataclass, field, fields
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from pendcli.base.errors import PendcliError
+from pendcli.base.recent import Recent
+from pendcli.base.workers import row_done
+from pendcli.data.ledger_conditions import (
+    Assumption,
+    check_listed,
+    parse_assumptions,
+    parse_condition,
+)
+from pendcli.data.ledger_labels import LABEL_FORMAT, label_offsets, labels_in_text
+from pendcli.data.ledger_readings import Reading, parse_readings, readings_of
+from pendcli.data.rows import EquationRow
+from pendcli.data.text_blocks import Span, validate_span
+from pendcli.data.vocabulary import CHECKED_STATUSES, STATUSES
+from pendcli.data.vocabulary import EquationStatus as Status
+from pendcli.verify.check_kinds import PARAMETER_KEYS, parse_parameters
+from pendcli.verify.ledger_blame import (
+    BLAME_KEYS,
+    FLAWED,
+    Context,
+    is_finding,
+    parse_blame,
+    row_context,
+    validate_blame,
+)
+from pendcli.verify.ledger_companions import parse_companions
+from pendcli.verify.ledger_formulas import (
+    FORMULA_FIELDS,
+    row_dimensions,
+    validate_formulas,
+    validate_scopes,
+    validate_symbols,
+)
+from pendcli.verify.ledger_references import (
+    Computed,
+    References,
+    cited_references,
+    conditional,
+    printed_problem,
+    reference_table,
+    row_printed_status,
+    verify_printed,
+)
+from pendcli.verify.ledger_step import STEP_KEYS, parse_step, step_evidence, validate_step
+
+if TYPE_CHECKING:
+    from pendcli.papers.paper import Paper
+    from pendcli.verify.claims import FormulaRow
+    from pendcli.verify.dimensions import DimensionCheck
+
+__all__ = [
+    "CHECKED_STATUSES",
+    "FINDING_KEYS",
+    "ROW_KEYS",
+    "Evaluated",
+    "Ledger",
+    "LedgerRow",
+    "Measured",
+    "References",
+    "cited_references",
+    "coverage",
+    "equation_rows",
+    "evaluate",
+    "label_offsets",
+    "labels_in_text",
+    "load_ledger",
+    "measured",
+    "parse_ledger",
+    "printed_problem",
+    "reference_table",
+    "row_printed_status",
+    "verify_printed",
+]
+
+LEDGER_KEYS = ("paper", "text")
+REQUIRED_KEYS = ("id", "equation", "section", "statement", "status")
+# Where the row is printed (its lines, and the words of them it rests on), what it restates,
+# and the printed form as a formula.
+TEXT_KEYS = ("lines", "quote", "restates", "printed", "reading_formula", "corrected_formula",
+             "reference")  # fmt: skip
+# A checked row's kind of check (verify/check_kinds) and the formula checks (formulas.py) that
+# measure the order of its approximation against a fuller model.
+CHECK_KEYS = ("kind", "measured")
+# The later use that decides a slip's blame and what a row carries (verify/ledger_blame), the
+# assumption its verdict turns on (data/ledger_conditions), its own slip beside a carried one
+# (verify/ledger_step).
+BLAME_STEP_KEYS = (*BLAME_KEYS, "condition", *STEP_KEYS)
+# (and the kind's parameters beside its reference: verify/check_kinds)
+ROW_KEYS = (*REQUIRED_KEYS, *CHECK_KEYS, *PARAMETER_KEYS, "reading", "corrected", "wrong_term",
+            "note", *TEXT_KEYS, *BLAME_STEP_KEYS)  # fmt: skip
+# Keys whose value is not a plain string, each read by its own parser.
+_SHAPED_KEYS = ("lines", "used_at", "restates", "step_symbols")
+# Keys that take a string or a list of strings, each printed verbatim within the row's lines
+# (``used``: within the lines of ``used_at``).
+PRINTED_KEYS = ("wrong_term", "quote", "used")
+LIST_KEYS = (*PRINTED_KEYS, "measured")
+# The fields of an output row (`reproduce --format json` under "equations").
+OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
+
+_ID = re.compile(r"^[a-z]+\.(?:eq|result)\.[A-Za-z0-9_'-]+(?:\.[a-z0-9-]+)?$")
+
+
+@dataclass(frozen=True)
+class LedgerRow:
+    """One equation or stated result, as the ledger records it."""
+
+    id: str
+    paper: str
+    equation: str
+    section: str
+    statement: str
+    status: Status
+    kind: str | None = None
+    # ids of the paper's formula checks whose observed order the row shows
+    measured: tuple[str, ...] | None = None
+    reading: str | None = None
+    corrected: str | None = None
+    # the wrong term(s) as the OCR text prints them (marked in the HTML)
+    wrong_term: str | tuple[str, ...] | None = None
+    note: str | None = None
+    lines: Span | None = None
+    # the words of the text the row rests on (a sentence, a phrase), verbatim from its lines
+    quote: str | tuple[str, ...] | None = None
+    # the row(s) whose formula it repeats (a definition), or whose slip it only cites or
+    # carries (a failing or misprinted row, then no finding of its own)
+    restates: str | tuple[str, ...] | None = None
+    printed: str | None = None
+    reading_formula: str | None = None
+    corrected_formula: str | None = None
+    reference: str | None = None
+    # the later use that decides the blame of a slip (verify/ledger_blame)
+    used_at: tuple[int, ...] | None = None
+    used: str | tuple[str, ...] | None = None
+    unused: str | None = None
+    carries: str | None = None
+    condition: str | None = None  # "g <= 9.80": the verdict turns there (data/ledger_conditions)
+    # the row's own slip judged against the printed input it carries (verify/ledger_step)
+    step_from: str | None = None
+    step_at: str | None = None
+    step_symbols: tuple[tuple[str, str], ...] | None = None
+    step_formula: str | None = None
+    # the kind's parameters the row gives (verify/check_kinds), validated on load
+    parameters: tuple[tuple[str, Any], ...] = ()
+    # the reading table's entries that apply to the row (data/ledger_readings), set on load
+    readings: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
+
+    @property
+    def wrong_terms(self) -> tuple[str, ...]:
+        return _as_strings(self.wrong_term)
+
+    @property
+    def used_words(self) -> tuple[str, ...]:
+        return _as_strings(self.used)
+
+    @property
+    def restated(self) -> tuple[str, ...]:
+        return _as_strings(self.restates)
+
+    def read(self, name: str) -> str | None:
+        """Formula ``name`` as the engine judges it: the reading table's replacements made."""
+        from pendcli.data.ledger_readings import apply_readings
+
+        text: str | None = getattr(self, name)
+        return None if text is None else apply_readings(text, self.readings)
+
+    @property
+    def quotes(self) -> tuple[str, ...]:
+        return _as_strings(self.quote)
+
+
+def _as_strings(value: str | tuple[str, ...] | None) -> tuple[str, ...]:
+    return (value,) if isinstance(value, str) else value or ()
+
+
+@dataclass(frozen=True)
+class Ledger:
+    paper: str
+    text: Path
+    path: Path
+    rows: tuple[LedgerRow, ...]
+    # [symbols]: (name, dimension) pairs the formulas of the rows are written in.
+    symbols: tuple[tuple[str, str], ...] = ()
+    # [[scope]]: a stretch of the text where some letters mean something else (Lecornu's u is
+    # a length in § I and a pure number from (32) on): (first, last line), its (name, dim).
+    scopes: tuple[tuple[tuple[int, int], tuple[tuple[str, str], ...]], ...] = ()
+    # [[reading]]: the OCR's substitutions; [[assumption]]: what the paper leaves unstated
+    readings: tuple[Reading, ...] = ()
+    assumptions: tuple[Assumption, ...] = ()
+
+    def symbols_for(self, row: LedgerRow) -> dict[str, str]:
+        """The symbols ``row``'s formulas are written in: [symbols], then the names of the
+        scope whose lines hold the row's first line, which take precedence."""
+        table = dict(self.symbols)
+        first = row.lines[0] if row.lines is not None else 0
+        for (low, high), names in self.scopes:
+            if low <= first <= high:
+                table.update(names)
+        return table
+
+    def labels(self) -> Counter[str]:
+        """How many rows each printed label has (stated results, with no label, excluded)."""
+        return Counter(r.equation for r in self.rows if r.equation)
+
+
+def _tables_dir() -> Path:
+    from pendcli.data.tables import tables_dir
+
+    return tables_dir()
+
+
+def ledger_path(paper: str, root: Path | None = None) -> Path:
+    return (root or _tables_dir()) / "equations" / f"{paper}.toml"
+
+
+# Each ledger parsed and validated once per content (its TOML and paper text), whichever step
+# asks (20 loads of 3 ledgers in a cold `equations`); a load that fails is not kept.
+_LOADED = Recent(16)
+
+
+def load_ledger(paper: str, root: Path | None = None) -> Ledger:
+    """Read and strictly validate ``tables/equations/<paper>.toml`` and the text it names
+    (missing, empty, not a file or not UTF-8: an error, never an empty ledger)."""
+    from pendcli.data.tables import parse_toml, read_table_text
+
+    path = ledger_path(paper, root)
+    folder = root or _tables_dir()
+    source = read_table_text(path, "equation ledger")
+    key = (paper, path, folder, source)
+    kept: tuple[Ledger, str] | None = _LOADED.get(key)
+    if kept is not None and _same_text(kept[0], folder, kept[1]):
+        return kept[0]
+    ledger = parse_ledger(parse_toml(source, path, "equation ledger"), paper, path, folder)
+    _LOADED.put(key, (ledger, read_table_text(ledger.text, "paper text")))
+    return ledger
+
+
+def _same_text(ledger: Ledger, root: Path, text: str) -> bool:
+    """The ledger's paper text is still inside the tables folder and reads ``text``."""
+    from pendcli.data.tables import inside_tables, read_table_text
+
+    try:
+        inside_tables(ledger.text, root, f"{ledger.path}: [ledger] text")
+        return ledger.text.is_file() and read_table_text(ledger.text, "paper text") == text
+    except PendcliError:
+        return False  # loaded again, to give the error the first load gives
+
+
+def parse_ledger(
+    raw: dict[str, Any], paper: str, path: Path, root: Path, partial: bool = False
+) -> Ledger:
+    """Validate a parsed ledger: unknown keys, missing fields and bad values are errors.
+    ``partial``: the rows are a selection of the ledger (one row's formulas read alone), so
+    a row they name but do not hold (restated, carried, an assumption's) is not missing."""
+    top = ("ledger", "equation", "symbols", "scope", "reading", "assumption", "companion")
+    _refuse_unknown(f"{path}", "top-level key(s)", raw, top)
+    header = raw.get("ledger")
+    if not isinstance(header, dict) or header.get("paper") != paper:
+        raise PendcliError(f"{path}: [ledger] must be a table with paper = {paper!r}")
+    _refuse_unknown(f"{path}: [ledger]", "key(s)", header, LEDGER_KEYS)
+    text = header.get("text")
+    if not isinstance(text, str) or not text.startswith("tables/"):
+        raise PendcliError(f"{path}: [ledger] text must name a file under tables/, got {text!r}")
+    entries = raw.get("equation")
+    if not isinstance(entries, list) or not entries:
+        raise PendcliError(f"{path}: no [[equation]] rows")
+    rows: list[LedgerRow] = []
+    seen: set[str] = set()
+    for index, entry in enumerate(entries):
+        row = _row(path, index, entry, paper)
+        if row.id in seen:
+            raise PendcliError(f"{path}: {row.id}: duplicate id")
+        seen.add(row.id)
+        rows.append(row)
+    text_path = _text_inside(path, text, root)
+    lines = _check_text_fields(path, rows, text_path, partial)
+    symbols = validate_symbols(path, raw.get("symbols"))
+    scopes = validate_scopes(path, raw.get("scope"), dict(symbols))
+    readings = parse_readings(path, raw.get("reading"), lines)
+    rows = [_with_readings(row, readings, lines) for row in rows]
+    assumptions = parse_assumptions(path, raw.get("assumption"), None if partial else seen)
+    named = {a.id: a for a in assumptions}
+    for row in rows:
+        parse_condition(f"{path}: {row.id}", row, named)
+    check_listed(path, rows, assumptions)
+    parse_companions(f"{path}", raw.get("companion"))  # its shape; its match: when judged
+    ledger = Ledger(paper, text_path, path, tuple(rows), symbols, scopes, readings, assumptions)
+    validate_formulas(path, rows, ledger.symbols_for)
+    if not partial:
+        validate_step(path, ledger)
+    return ledger
+
+
+def _with_readings(
+    row: LedgerRow, readings: tuple[Reading, ...], lines: list[str] | None
+) -> LedgerRow:
+    from dataclasses import replace
+
+    formulas = (getattr(row, f) for f in (*FORMULA_FIELDS, "step_formula"))
+    applied = readings_of(readings, row.lines, formulas, lines)
+    return replace(row, readings=applied) if applied else row
+
+
+def _text_inside(path: Path, text: str, root: Path) -> Path:
+    """``[ledger] text`` under the tables folder ``root``; one that leads out is refused."""
+    from pendcli.data.tables import inside_tables
+
+    return inside_tables(
+        root / text.removeprefix("tables/"), root, f"{path}: [ledger] text = {text!r}"
+    )
+
+
+def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: Iterable[str]) -> None:
+    unknown = sorted(set(entry) - set(valid))
+    if unknown:
+        raise PendcliError(
+            f"{where}: unknown {what} {', '.join(map(repr, unknown))}; valid: {', '.join(valid)}"
+        )
+
+
+def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
+    if not isinstance(entry, dict):
+        raise PendcliError(f"{path}: [[equation]] #{index + 1} is not a table")
+    where = f"{path}: {entry.get('id', f'[[equation]] #{index + 1}')}"
+    _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
+    printed: dict[str, object] = {k: _strings(where, k, entry[k]) for k in LIST_KEYS if k in entry}
+    if "measured" in printed:
+        printed["measured"] = _as_strings(printed["measured"])  # type: ignore[arg-type]
+    printed.update(parse_blame(where, entry))
+    printed.update(parse_step(where, entry))
+    printed["parameters"] = parse_parameters(where, entry.get("kind"), entry)
+    entry = {k: v for k, v in entry.items() if k not in PARAMETER_KEYS}
+    for key in (k for k in ROW_KEYS if k not in _SHAPED_KEYS + LIST_KEYS + PARAMETER_KEYS):
+        value = entry.get(key)
+        if key in REQUIRED_KEYS and value is None:
+            raise PendcliError(f"{where}: missing {key!r}")
+        blank = not isinstance(value, str) or not value.strip()
+        if value is not None and blank and not (key == "equation" and value == ""):
+            raise PendcliError(f"{where}: {key!r} must be a non-empty string")
+    if entry["status"] not in STATUSES:
+        raise PendcliError(
+            f"{where}: unknown status {entry['status']!r}; valid: {', '.join(STATUSES)}"
+        )
+    lines = entry.get("lines")
+    span = None if lines is None else validate_span(where, lines)
+    status = Status(entry["status"])
+    row = LedgerRow(paper=paper, **{**entry, **printed, "lines": span, "status": status})
+    _check_identity(where, row)
+    _check_status_fields(where, row)
+    return row
+
+
+def _strings(where: str, key: str, value: object) -> str | tuple[str, ...]:
+    """A ``wrong_term`` or ``quote``: a non-empty string, or a non-empty list of them."""
+    items = value if isinstance(value, list) else [value]
+    if not items or not all(isinstance(v, str) and v.strip() for v in items):
+        raise PendcliError(f"{where}: {key!r} must be a non-empty string or list of strings")
+    return value if isinstance(value, str) else tuple(str(v) for v in items)
+
+
+def _check_text_fields(
+    path: Path, rows: list[LedgerRow], text: Path, partial: bool = False
+) -> list[str] | None:
+    """``lines`` within the paper's text (when the text is there to count), each wrong term
+    and quote printed verbatim within them, ``restates`` naming another row and the later
+    use of a slip (verify/ledger_blame); the text's lines (None when it is not there)."""
+    from pendcli.data.tables import read_table_text
+
+    # not UTF-8 or empty: the text's own one-line error; missing: load_ledger says so
+    lines = read_table_text(text, "paper text").splitlines() if text.exists() else None
+    for row in rows:
+        if row.lines is not None and lines is not None:
+            validate_span(f"{path}: {row.id}", list(row.lines), len(lines))
+        if lines is not None:
+            _check_printed_within_lines(f"{path}: {row.id}", row, lines, text.name)
+    validate_blame(path, rows, lines, partial)
+    return lines
+
+
+def _check_printed_within_lines(where: str, row: LedgerRow, lines: list[str], text: str) -> None:
+    """Each wrong term and quote occurs, exactly as transcribed, within the row's lines."""
+    for key, items in (("wrong_term", row.wrong_terms), ("quote", row.quotes)):
+        if items and row.lines is None:
+            raise PendcliError(f"{where}: {key!r} needs 'lines' (where it is printed)")
+        if row.lines is None:
+            continue
+        first, last = row.lines
+        span = "\n".join(lines[first - 1 : last])
+        for item in items:
+            if item not in span:
+                raise PendcliError(
+                    f"{where}: {key} {item!r} is not in its lines [{first}, {last}] of {text}"
+                )
+
+
+def _check_identity(where: str, row: LedgerRow) -> None:
+    if not _ID.match(row.id) or not row.id.startswith(f"{row.paper}."):
+        raise PendcliError(
+            f"{where}: id must read '{row.paper}.eq.<label>[.<section>]' or "
+            f"'{row.paper}.result.<slug>'"
+        )
+    is_result = row.id.startswith(f"{row.paper}.result.")
+    if is_result and row.equation:
+        raise PendcliError(f'{where}: a stated result has equation = ""')
+    if not is_result:
+        if not LABEL_FORMAT.match(row.equation):
+            raise PendcliError(f'{where}: equation must be a label as printed, e.g. "(4)"')
+        stem = row.id.split(".")[2]
+        if stem != row.equation[1:-1]:
+            raise PendcliError(f"{where}: id does not match the label {row.equation}")
+
+
+def _check_status_fields(where: str, row: LedgerRow) -> None:
+    from pendcli.verify.check_kinds import KINDS
+
+    checked = row.status in CHECKED_STATUSES
+    for key in ("kind", "reference"):
+        if checked and getattr(row, key) is None:
+            raise PendcliError(f"{where}: status {row.status.value!r} needs a {key}")
+    for key in (*CHECK_KEYS, "reference"):
+        if not checked and getattr(row, key) is not None:
+            raise PendcliError(f"{where}: status {row.status.value!r} takes no {key}")
+    if row.kind is not None and row.kind not in KINDS:
+        raise PendcliError(f"{where}: unknown kind {row.kind!r}; valid: {', '.join(KINDS)}")
+    if not checked and row.note is None:
+        raise PendcliError(f"{where}: status {row.status.value!r} needs a note (what or why)")
+    if (row.reading is not None) != (row.status is Status.MISPRINT):
+        raise PendcliError(f"{where}: 'reading' is required for, and only for, misprint")
+    if (row.corrected is not None) != (row.status is Status.FAILS):
+        raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
+
+
+@dataclass(frozen=True)
+class Measured:
+    """What the formula checks a row names (``measured``) found: each ``id verdict (order)``,
+    and the lowest observed order among them (None: none is measured)."""
+
+    detail: str
+    observed_order: float | None
+
+
+@dataclass(frozen=True)
+class Evaluated:
+    row: LedgerRow
+    problem: str | None
+    dimensions: DimensionCheck | None = None  # the printed form's, when it has one
+    computed: Computed | None = None  # computed from the printed form; None without a reference
+    measured: Measured | None = None
+    # blame, what it carries, condition, step, readings
+    context: Context = field(default_factory=Context)
+
+    def output_row(self) -> EquationRow:
+        """The row every output shows: each piece in a field of its own."""
+        row, dims, measured, more = self.row, self.dimensions, self.measured, self.context
+        status, why = self.computed if self.computed is not None else (None, None)
+        return EquationRow(
+            id=row.id,
+            paper=row.paper,
+            equation=row.equation,
+            section=row.section,
+            statement=row.statement,
+            status=row.status,
+            kind=row.kind,
+            observed_order=measured.observed_order if measured is not None else None,
+            note=row.note or "",
+            lines=row.lines,
+            printed=row.printed,
+            reading=row.reading_formula,
+            corrected=row.corrected_formula,
+            dimensions=dims.verdict if dims is not None else None,
+            dimensions_detail=dims.detail if dims is not None else None,
+            reading_note=row.reading,
+            corrected_note=row.corrected,
+            measured=measured.detail if measured is not None else None,
+            against=row.reference,
+            computed=Status(status) if status is not None else None,
+            evidence=why,
+            inconsistency=self.problem,
+            finding=is_finding(row),
+            restates=row.restated,
+            used_at=row.used_at,
+            **asdict(more),
+        )
+
+
+def measured(row: LedgerRow, formulas: Iterable[FormulaRow]) -> Measured | None:
+    """What the formula checks ``row`` names found (None: it names none); a name that is no
+    formula check of the paper is an error naming the row."""
+    if not row.measured:
+        return None
+    by_id = {r.id: r for r in formulas}
+    wanted = [f"{row.paper}.{name}" for name in row.measured]
+    missing = [i for i in wanted if i not in by_id]
+    if missing:
+        raise PendcliError(f"{row.id}: measured names no formula check {', '.join(missing)}")
+    chosen = [by_id[i] for i in wanted]
+    orders = [r.observed_order for r in chosen if r.observed_order is not None]
+    detail = "; ".join(f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen)
+    return Measured(detail, min(orders) if orders else None)
+
+
+def _formula_rows(paper: Paper, ledger: Ledger) -> list[FormulaRow]:
+    """The paper's formula checks when a row of its ledger names one (else none: not run)."""
+    from pendcli.verify.claims import shared_formula_rows
+
+    if paper.formula_checks is None or not any(r.measured for r in ledger.rows):
+        return []
+    return shared_formula_rows(paper.key, paper.formula_checks)
+
+
+# (i, n): the i-th of n contiguous slices of a ledger's rows, so that two processes can
+# share a long ledger; (0, 1) is the whole ledger.
+Part = tuple[int, int]
+
+
+def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
+    """Every row of the paper's ledger (or of ``part`` of it) judged from its printed form,
+    with its consistency verified."""
+    ledger = load_ledger(paper.key, root)
+    rows = ledger.rows
+    index, count = part
+    start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
+    references = reference_table(paper)
+    formulas = _formula_rows(paper, ledger)
+    out = []
+    for row in rows[start:stop]:
+        symbols = ledger.symbols_for(row)
+        dims = row_dimensions(row, symbols).get("printed")
+        computed = row_printed_status(row, symbols, references) if row.reference else None
+        condition = conditional(paper, ledger, row, references)
+        step, step_problem = step_evidence(row, ledger)
+        problem = printed_problem(row, computed) or step_problem
+        problem = problem or (condition.problem if condition is not None else None)
+        context = row_context(row, ledger, condition, step)
+        out.append(Evaluated(row, problem, dims, computed, measured(row, formulas), context))
+        row_done()  # a progress bar counts rows (base.workers)
+    return out
+
+
+def equation_rows(
+    papers: Iterable[Paper], root: Path | None = None, part: Part = (0, 1)
+) -> list[EquationRow]:
+    """The rows of ``reproduce --format json`` under "equations" for ``papers`` (``part`` of
+    each ledger); raises PendcliError if a paper's ledger is missing, empty or not a file, or
+    a check contradicts its row's status."""
+    rows = []
+    problems = []
+    for paper in papers:
+        if paper.references is None:  # a paper without a ledger (its file is then not read)
+            continue
+        for item in evaluate(paper, root, part):
+            rows.append(item.output_row())
+            if item.problem:
+                problems.append(f"{item.row.id}: {item.problem}")
+    if problems:
+        raise PendcliError(f"equation ledger inconsistent: {problems[0]} ({len(problems)} rows)")
+    return rows
+
+
+def coverage(rows: Iterable[EquationRow]) -> dict[str, dict[str, int]]:
+    """Per paper: the count of rows by status, the total and how many are checked; then the
+    findings (failing or misprinted rows that restate no other: one per slip, by status) and
+    the rows that only restate another's slip (verify/ledger_blame)."""
+    table: dict[str, dict[str, int]] = {}
+    for row in rows:
+        counts = table.setdefault(row.paper, {s.value: 0 for s in STATUSES} | _NO_FINDINGS)
+        counts[row.status.value] += 1
+        if row.finding:
+            counts[f"{row.status.value} findings"] += 1
+        elif row.status in FLAWED:
+            counts["restating"] += 1
+    for counts in table.values():
+        counts["total"] = sum(counts[s] for s in STATUSES)
+        counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
+        counts["findings"] = sum(counts[f"{s.value} findings"] for s in FLAWED)
+    return table
+
+
+# the counts of findings coverage() adds to the counts by status
+_NO_FINDINGS = {f"{s.value} findings": 0 for s in FLAWED} | {"restating": 0}
+FINDING_KEYS = ("findings", *_NO_FINDINGS)
+
+
+def _order(value: float | None) -> str:
+    return "n/a" if value is None else f"{value:.2f}"
