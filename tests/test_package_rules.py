@@ -33,6 +33,76 @@ FORBIDDEN = {
     "run": ("pendcli.cli", "pendcli.api"),
 }
 
+# The layers, bottom up: a module of the first four imports only its own layer or one below
+# (imports inside functions and under TYPE_CHECKING included). The papers, the run, the outputs
+# and the CLI above have their own rules (FORBIDDEN, tests/test_paper_contract.py).
+LAYERS = ("base", "data", "verify", "numerics", "papers", "run", "output", "cli")
+CHECKED_LAYERS = ("base", "data", "verify", "numerics")
+# module -> the modules of a higher layer it still imports, each named (the ledger's loader
+# validates rows with the engine's rules and takes a paper's type)
+GOING_UP: dict[str, set[str]] = {
+    "pendcli.data.ledger": {
+        "pendcli.papers.paper",
+        "pendcli.verify.check_kinds",
+        "pendcli.verify.claims",
+        "pendcli.verify.dimensions",
+        "pendcli.verify.ledger_blame",
+        "pendcli.verify.ledger_companions",
+        "pendcli.verify.ledger_formulas",
+        "pendcli.verify.ledger_references",
+        "pendcli.verify.ledger_step",
+    },
+    "pendcli.verify.ledger_references": {"pendcli.papers.paper"},
+}
+
+
+def layer(module: str) -> int:
+    """The rank of a pendcli module's layer; ``pendcli.api`` and ``pendcli`` itself are above
+    every layer."""
+    parts = module.split(".")
+    return LAYERS.index(parts[1]) if len(parts) > 1 and parts[1] in LAYERS else len(LAYERS)
+
+
+def imports_going_up(root: Path, layers: tuple[str, ...]) -> dict[str, set[str]]:
+    """module -> the pendcli modules of a higher layer it imports."""
+    found: dict[str, set[str]] = {}
+    for name in layers:
+        for path in sorted((root / name).rglob("*.py")):
+            parts = path.relative_to(root.parent).with_suffix("").parts
+            module = ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+            up = {
+                target
+                for target in imported(path)
+                if (target == "pendcli" or target.startswith("pendcli."))
+                and layer(target) > layer(module)
+            }
+            if up:
+                found[module] = up
+    return found
+
+
+def test_an_import_only_goes_down_the_layers_but_the_named_ones() -> None:
+    assert imports_going_up(ROOT, CHECKED_LAYERS) == GOING_UP
+
+
+def test_an_import_going_up_is_found(tmp_path: Path) -> None:
+    package = tmp_path / "pendcli"
+    for name, text in {
+        "base/__init__.py": "",
+        "base/files.py": "from pendcli.data.tables import read\n",
+        "data/__init__.py": "",
+        "data/tables.py": "def f():\n    from pendcli.verify import verdict\n",
+        "verify/__init__.py": "",
+        "verify/verdict.py": "from pendcli.data import tables\nfrom pendcli.base import files\n",
+    }.items():
+        (package / name).parent.mkdir(parents=True, exist_ok=True)
+        (package / name).write_text(text, encoding="utf-8")
+    assert imports_going_up(package, CHECKED_LAYERS) == {
+        "pendcli.base.files": {"pendcli.data.tables"},
+        "pendcli.data.tables": {"pendcli.verify"},
+    }
+
+
 # The run's modules, and what of them an output may import when it runs: the report lists the
 # regenerated tables (regression.regenerated_tables). Its result's type (ReproduceResult) is
 # named under TYPE_CHECKING only, which never imports it.

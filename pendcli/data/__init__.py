@@ -1,3 +1,13 @@
-"""The tables as typed data: printed numbers, the words, the rows, the ledgers and
-the reading records, loaded and validated (docs/ARCHITECTURE.md).
+"""The tables as typed data: what the papers print, read and validated, judged by nothing.
+
+Printed numbers and their precision (``numbers``), the words of verdicts, statuses and causes
+(``vocabulary``), the typed rows every output renders (``rows``), the published tables
+(``tables``), the texts' ``$$`` blocks and line spans (``text_blocks``), a text as a reader
+reads it (``reader_text``), the ledger's notation as a closed grammar (``formula_grammar``,
+``printed``) and a stored expression read back (``stored_expr``), the equation ledgers loaded
+and validated (``ledger``, ``ledger_labels``, ``ledger_readings``, ``ledger_conditions``,
+``ledger_coverage``) and the reading records (``reading``, ``reading_citations``).
+
+May import: ``pendcli.base`` and other ``data`` modules; never ``verify``, a paper, the run,
+the outputs or the CLI (``tests/test_package_rules.py`` names the exceptions that remain).
 """
