@@ -19,15 +19,8 @@ from pathlib import Path
 import pytest
 
 from pendcli.base.errors import PendcliError
-from pendcli.base.files import (
-    MANIFEST,
-    atomic_write,
-    lock_file,
-    locked,
-    manifest_text,
-    remove_stale,
-    replace_owned_folder,
-)
+from pendcli.base.files import atomic_write, lock_file, locked, remove_stale
+from pendcli.base.owned_folders import MANIFEST, manifest_text, replace_owned_folder
 
 PENDCLI = Path(sys.executable).with_name("pendcli")
 CHEAP = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")

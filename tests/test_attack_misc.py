@@ -111,7 +111,7 @@ FILL_UNTIL_EMFILE = textwrap.dedent(
     import os, resource, sys
     from pathlib import Path
     from pendcli.base.errors import PendcliError
-    from pendcli.base.files import replace_owned_folder
+    from pendcli.base.owned_folders import replace_owned_folder
 
     font = Path(sys.argv[1])  # a file only read, as matplotlib reads its fonts
 

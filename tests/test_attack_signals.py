@@ -22,7 +22,8 @@ from pathlib import Path
 
 import pytest
 
-from pendcli.base.files import MANIFEST, manifest_text, remove_stale
+from pendcli.base.files import remove_stale
+from pendcli.base.owned_folders import MANIFEST, manifest_text
 
 PENDCLI = Path(sys.executable).with_name("pendcli")
 CHEAP = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")

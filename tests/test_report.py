@@ -147,9 +147,9 @@ def _stub_figures(monkeypatch):
 
 def _earlier_manifest(out, *names):
     """The manifest an earlier run wrote (its files listed): the folder is pendcli's."""
-    from pendcli.base import files
+    from pendcli.base import owned_folders
 
-    (out / files.MANIFEST).write_text(files.manifest_text(list(names)), "utf-8")
+    (out / owned_folders.MANIFEST).write_text(owned_folders.manifest_text(list(names)), "utf-8")
 
 
 def test_report_replaces_the_folder_as_a_whole(tmp_path, monkeypatch):

@@ -45,7 +45,7 @@ def check_out_folder(out: Path | str) -> Path:
     """Refuse an unusable output folder before any computation (one line, exit 2).
 
     The folder is replaced as a whole, so it must not be the current folder (or hold it), nor a
-    file, nor a folder pendcli did not make (:func:`pendcli.base.files.check_owned`: its
+    file, nor a folder pendcli did not make (:func:`pendcli.base.owned_folders.check_owned`: its
     manifest lists every file in it), nor one another run is writing; its nearest existing
     parent must be a writable folder. A symlink is followed: the folder it names is written.
     """
@@ -60,7 +60,7 @@ def check_out_folder(out: Path | str) -> Path:
     here = Path.cwd().resolve()
     if path.resolve() in (here, *here.parents):
         raise PendcliError(f"--out {text!r} holds the current folder; give a folder of its own")
-    from pendcli.base.files import check_owned, probe_lock, write_through
+    from pendcli.base.owned_folders import check_owned, probe_lock, write_through
 
     check_owned(write_through(path, "--out"), "--out")
     probe_lock(path, "--out")
@@ -136,7 +136,7 @@ def write_report(
     ``measure`` times the speed/accuracy families now instead of reading the committed
     work-precision tables; ``jobs`` processes draw the figures (default: up to 2).
     """
-    from pendcli.base.files import MANIFEST, replace_owned_folder
+    from pendcli.base.owned_folders import MANIFEST, replace_owned_folder
     from pendcli.data.tables import paper_text
 
     target = check_out_folder(out)

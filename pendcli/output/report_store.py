@@ -69,7 +69,7 @@ def _stored_files(entry: Any) -> dict[Path, bytes] | None:
     import base64
     import binascii
 
-    from pendcli.base.files import MANIFEST
+    from pendcli.base.owned_folders import MANIFEST
 
     files = entry.get("files") if isinstance(entry, dict) and set(entry) == {"files"} else None
     if not isinstance(files, dict) or not 0 < len(files) <= _STORED_FILES:

@@ -22,7 +22,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from pendcli.base.errors import PendcliError
-from pendcli.base.files import lock_file, locked, replace_owned_folder, write_through
+from pendcli.base.files import lock_file, locked
+from pendcli.base.owned_folders import replace_owned_folder, write_through
 from pendcli.data.tables import tables_dir
 from pendcli.output.columns import Column
 from pendcli.output.csv import to_csv
@@ -281,7 +282,8 @@ def rewrite_with(
     that Ctrl-C or TERM cannot split), under the tables' lock. Returns the tables removed.
     Nothing is written if a table changed after it was read here, or a file of ``unchanged``
     (path -> digest of what the caller read) since the caller read it."""
-    from pendcli.base.files import check_owned, file_digest, write_set
+    from pendcli.base.files import file_digest, write_set
+    from pendcli.base.owned_folders import check_owned
 
     folder = write_through((root or tables_dir()).resolve() / "regenerated", "tables/regenerated")
     folder.mkdir(parents=True, exist_ok=True)
