@@ -30,13 +30,8 @@ import pytest
 from cli_helpers import invoke
 
 from pendcli.base import cache as cache_module
-from pendcli.base.cache import (
-    MARKER,
-    MAX_HASHED_BYTES,
-    ResultCache,
-    cached_json,
-    content_digest,
-)
+from pendcli.base.cache import MARKER, ResultCache, cached_json
+from pendcli.base.cache_key import MAX_HASHED_BYTES, content_digest
 from pendcli.base.errors import PendcliError
 from pendcli.data.tables import tables_dir
 

@@ -18,14 +18,8 @@ from cli_helpers import invoke
 
 import pendcli.papers.registry as registry
 from pendcli.base import cache as cache_module
-from pendcli.base.cache import (
-    FORMAT,
-    ResultCache,
-    cache_folder,
-    content_digest,
-    rows_from_json,
-    rows_to_json,
-)
+from pendcli.base.cache import FORMAT, ResultCache, cache_folder, rows_from_json, rows_to_json
+from pendcli.base.cache_key import content_digest
 from pendcli.data.rows import ClaimRow, EquationRow, FormulaRow
 from pendcli.data.tables import clear_table_cache, tables_dir
 
@@ -402,7 +396,7 @@ def _distribution(site: Path, name: str, *requires: str) -> None:
 
 
 def test_the_key_follows_what_the_libraries_require_and_no_extra(tmp_path):
-    from pendcli.base.cache import required_distributions
+    from pendcli.base.cache_key import required_distributions
 
     _distribution(tmp_path, "scipy-1.0", "numpy>=1.25", "Foo.Bar (>=2)", 'pytest; extra == "test"')
     _distribution(tmp_path, "numpy-2.0", 'colorama; platform_system == "Windows"')
@@ -424,7 +418,7 @@ def test_the_installed_closure_is_what_importlib_metadata_says() -> None:
     import re
     from importlib.metadata import PackageNotFoundError, requires
 
-    from pendcli.base.cache import _installed
+    from pendcli.base.cache_key import installed_signature
     from pendcli.base.versions import DEPENDENCIES
 
     def project(name: str) -> str:
@@ -444,7 +438,7 @@ def test_the_installed_closure_is_what_importlib_metadata_says() -> None:
                   for r in found if "extra ==" not in r]  # fmt: skip
     listed = {
         project(line.rsplit("/", 1)[1].rsplit(".", 1)[0].split("-", 1)[0])
-        for line in _installed().splitlines()
+        for line in installed_signature().splitlines()
         if line.endswith((".dist-info", ".egg-info"))
     }
     assert listed == closure

@@ -183,7 +183,7 @@ def _site(tmp_path: Path) -> Path:
 def test_the_key_ignores_test_tools_and_other_systems_needs(tmp_path: Path) -> None:
     """make test installs pytest, ruff, mypy, hypothesis and, with them, libraries that the
     runtime requires only elsewhere (colorama on Windows): none of them changes a result."""
-    from pendcli.base.cache import runtime_signature
+    from pendcli.base.cache_key import runtime_signature
 
     site = _site(tmp_path)
 

@@ -368,7 +368,7 @@ def _read_by_references() -> str:
     """The content of the tables a reference may read (the published numbers, the ledgers),
     as one digest: a copy of the tables folder shares the references built for the original,
     an edited one builds its own."""
-    from pendcli.base.cache import content_digest
+    from pendcli.base.cache_key import content_digest
     from pendcli.data.tables import tables_dir
 
     root = tables_dir()
