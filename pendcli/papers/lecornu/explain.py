@@ -26,24 +26,26 @@ from functools import cache, partial
 from typing import Any
 
 from pendcli.data.tables import load_paper_table
-from pendcli.verify.explain import (
-    G_READINGS,
-    PI_READINGS,
+from pendcli.verify.bessel_tables import (
     TABLE_DECIMALS,
     TABLE_STEPS,
     TABLE_SUMMARY,
+    bessel_axis,
+    table_zero,
+)
+from pendcli.verify.explain import (
+    G_READINGS,
+    PI_READINGS,
     Axis,
     Computation,
     Declared,
     Option,
     Target,
     axis,
-    bessel_axis,
     constant_axis,
     fraction_text,
     printed_fraction,
     rounding_axis,
-    table_zero,
     target_of,
 )
 
