@@ -9,7 +9,8 @@ from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
-from pendcli.data.ledger import Ledger, LedgerRow, load_ledger
+from pendcli.data.ledger import load_ledger
+from pendcli.data.ledger_rows import Ledger, LedgerRow
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 

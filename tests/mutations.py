@@ -17,14 +17,9 @@ import shutil
 import tomllib
 from pathlib import Path
 
-from pendcli.data.ledger import (
-    Ledger,
-    LedgerRow,
-    References,
-    ledger_path,
-    parse_ledger,
-    verify_printed,
-)
+from pendcli.data.ledger import ledger_path, parse_ledger
+from pendcli.data.ledger_rows import Ledger, LedgerRow
+from pendcli.verify.ledger_references import References, verify_printed
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 

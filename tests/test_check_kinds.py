@@ -14,10 +14,11 @@ from ledgers import committed_ledger, committed_row
 from mutations import judged_after_edit
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.ledger import measured, reference_table
 from pendcli.data.printed import Formula
 from pendcli.papers.registry import paper
 from pendcli.verify.check_kinds import KINDS, kind_called_for, kind_problem
+from pendcli.verify.ledger_evaluation import measured
+from pendcli.verify.ledger_references import reference_table
 from pendcli.verify.printed_check import Reference, formula_passes
 from pendcli.verify.printed_numeric import Numbers
 

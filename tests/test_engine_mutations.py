@@ -75,7 +75,7 @@ from ledgers import committed_ledger
 from mutations import altered_field, judged_after_edit
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.ledger import LedgerRow, reference_table
+from pendcli.data.ledger_rows import LedgerRow
 from pendcli.data.vocabulary import Verdict
 from pendcli.papers.registry import paper as paper_named
 from pendcli.verify import (
@@ -88,7 +88,7 @@ from pendcli.verify import (
     series_proof,
 )
 from pendcli.verify.ledger_formulas import printed_status
-from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.ledger_references import cited_reference, reference_table
 from pendcli.verify.printed_check import Reference
 from pendcli.verify.printed_numeric import Numbers
 

@@ -15,12 +15,12 @@ from evaluated import committed_formulas
 from ledgers import committed_ledger
 
 from pendcli.base.cache import rows_from_json, rows_to_json
-from pendcli.data.ledger import Evaluated, evaluate
 from pendcli.data.rows import EquationRow, equation_notes
 from pendcli.output import schema
 from pendcli.output.json import to_json
 from pendcli.papers.registry import ledger_papers, paper
 from pendcli.verify.claims import sharing_formula_rows
+from pendcli.verify.ledger_evaluation import Evaluated, evaluate
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 ENGINE = ("against", "computed", "evidence")

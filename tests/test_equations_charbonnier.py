@@ -10,11 +10,10 @@ import mpmath
 import pytest
 from ledgers import committed_ledger, committed_row
 
-from pendcli.data.ledger import verify_printed
 from pendcli.papers.charbonnier.references import REFERENCES
 from pendcli.papers.registry import paper
 from pendcli.verify.ledger_formulas import row_formula
-from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.ledger_references import cited_reference, verify_printed
 from pendcli.verify.printed_check import judged
 
 

@@ -14,20 +14,12 @@ import pytest
 from ledgers import committed_ledger, committed_row, row_ids
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.ledger import (
-    CHECKED_STATUSES,
-    OUTPUT_KEYS,
-    Ledger,
-    coverage,
-    evaluate,
-    labels_in_text,
-    parse_ledger,
-    printed_problem,
-    reference_table,
-    row_printed_status,
-)
+from pendcli.data.ledger import CHECKED_STATUSES, OUTPUT_KEYS, labels_in_text, parse_ledger
+from pendcli.data.ledger_rows import Ledger
 from pendcli.data.rows import equation_notes
 from pendcli.papers.registry import equation_rows, ledger_papers, paper
+from pendcli.verify.ledger_evaluation import coverage, evaluate
+from pendcli.verify.ledger_references import printed_problem, reference_table, row_printed_status
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"
@@ -312,7 +304,7 @@ def test_checked_statuses_are_the_three() -> None:
 def test_the_cited_references_are_the_ledger_s_reference_names_each_built_once() -> None:
     """The names read from the TOML with tomllib; a second call returns the same objects
     (shared, not built again)."""
-    from pendcli.data.ledger import cited_references
+    from pendcli.verify.ledger_references import cited_references
     from pendcli.verify.printed_check import Reference
 
     raw = tomllib.loads((TABLES / "equations" / "charbonnier.toml").read_text("utf-8"))

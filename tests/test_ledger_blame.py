@@ -16,10 +16,11 @@ from ledgers import committed_ledger, committed_row
 from mutations import altered_ledger, altered_row, edit_once
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.ledger import Evaluated, coverage, load_ledger, verify_printed
+from pendcli.data.ledger import load_ledger
 from pendcli.papers.registry import paper
 from pendcli.run.reproduce import ReproduceResult
-from pendcli.verify.ledger_references import conditional
+from pendcli.verify.ledger_evaluation import Evaluated, coverage
+from pendcli.verify.ledger_references import conditional, verify_printed
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 PAPERS = ("tisserand", "lecornu", "charbonnier")

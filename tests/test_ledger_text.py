@@ -10,7 +10,8 @@ import pytest
 from ledgers import committed_ledger
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.ledger import LedgerRow, labels_in_text, parse_ledger
+from pendcli.data.ledger import labels_in_text, parse_ledger
+from pendcli.data.ledger_rows import LedgerRow
 from pendcli.data.text_blocks import blocks_covered, display_blocks
 
 ROOT = Path(__file__).resolve().parent.parent

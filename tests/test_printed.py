@@ -12,12 +12,13 @@ from ledgers import committed_ledger, committed_row
 from mutations import altered_row
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.ledger import LedgerRow, parse_ledger, verify_printed
+from pendcli.data.ledger import parse_ledger
+from pendcli.data.ledger_rows import LedgerRow
 from pendcli.data.printed import parse_dimension, parse_formula
 from pendcli.papers.registry import paper as registered_paper
 from pendcli.verify.dimensions import check_dimensions
 from pendcli.verify.ledger_formulas import row_dimensions
-from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.ledger_references import cited_reference, verify_printed
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"

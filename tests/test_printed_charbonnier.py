@@ -13,11 +13,11 @@ import pytest
 from ledgers import committed_ledger, committed_row, row_ids
 from mutations import altered_row
 
-from pendcli.data.ledger import LedgerRow, verify_printed
 from pendcli.data.ledger_coverage import ledger_text_coverage
+from pendcli.data.ledger_rows import LedgerRow
 from pendcli.papers.registry import paper
 from pendcli.verify.ledger_formulas import row_formula
-from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.ledger_references import cited_reference, verify_printed
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"

@@ -16,7 +16,7 @@ import pytest
 from ledgers import committed_ledger, committed_row
 from mutations import altered_ledger
 
-from pendcli.data.ledger import Ledger, LedgerRow, verify_printed
+from pendcli.data.ledger_rows import Ledger, LedgerRow
 from pendcli.data.printed import Formula, parse_formula
 from pendcli.papers.lecornu import (
     references,
@@ -26,7 +26,7 @@ from pendcli.papers.lecornu import (
 from pendcli.papers.lecornu.formulas_slow import slow_rows
 from pendcli.papers.registry import paper
 from pendcli.verify.claims import FormulaRow
-from pendcli.verify.ledger_references import builders, cited_reference
+from pendcli.verify.ledger_references import builders, cited_reference, verify_printed
 from pendcli.verify.printed_check import judged
 from pendcli.verify.printed_verdict import computed_status
 

@@ -13,11 +13,12 @@ import pytest
 from ledgers import committed_ledger, committed_row, first_line, row_ids
 from mutations import altered_tables, field_line, judged_after_edit, printed_line
 
-from pendcli.data.ledger import CHECKED_STATUSES, LedgerRow, verify_printed
+from pendcli.data.ledger import CHECKED_STATUSES
+from pendcli.data.ledger_rows import LedgerRow
 from pendcli.data.printed import parse_dimension, parse_formula
 from pendcli.papers.registry import paper
 from pendcli.verify.dimensions import check_dimensions
-from pendcli.verify.ledger_references import cited_reference
+from pendcli.verify.ledger_references import cited_reference, verify_printed
 from pendcli.verify.printed_check import formula_passes
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -17,10 +17,12 @@ import pytest
 from ledgers import committed_ledger
 from mutations import altered_tables
 
-from pendcli.data.ledger import LedgerRow, load_ledger, verify_printed
+from pendcli.data.ledger import load_ledger
+from pendcli.data.ledger_rows import LedgerRow
 from pendcli.data.printed import parse_formula
 from pendcli.data.tables import clear_table_cache, load_paper_table
 from pendcli.papers.registry import paper as paper_named
+from pendcli.verify.ledger_references import verify_printed
 from pendcli.verify.printed_check import Reference
 from pendcli.verify.printed_numeric import Numbers, numeric_status, printed_numbers
 

@@ -15,9 +15,11 @@ import pytest
 from ledgers import committed_ledger
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.ledger import LedgerRow, equation_rows, verify_printed
+from pendcli.data.ledger_rows import LedgerRow
 from pendcli.papers.registry import paper as registered_paper
+from pendcli.verify.ledger_evaluation import equation_rows
 from pendcli.verify.ledger_formulas import row_formula
+from pendcli.verify.ledger_references import verify_printed
 
 ROOT = Path(__file__).resolve().parent.parent
 TABLES = ROOT / "tables"

@@ -11,9 +11,9 @@ import pytest
 from ledgers import committed_ledger, committed_row
 from mutations import altered_row
 
-from pendcli.data.ledger import verify_printed
 from pendcli.papers.registry import paper
 from pendcli.verify.ledger_formulas import row_dimensions
+from pendcli.verify.ledger_references import verify_printed
 
 REFERENCES = paper("charbonnier").references()
 

@@ -10,9 +10,9 @@ import numpy as np
 from ledgers import committed_ledger, committed_row
 from scipy.integrate import solve_ivp
 
-from pendcli.data.ledger import reference_table, row_printed_status
 from pendcli.papers.lecornu.references_prose import amplification_to_zero_length
 from pendcli.papers.registry import paper
+from pendcli.verify.ledger_references import reference_table, row_printed_status
 
 ROW = "lecornu.result.small_start_needed"
 

@@ -15,13 +15,8 @@ import pytest
 from ledgers import committed_ledger, paragraphs_by_hand
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.reading import (
-    label_lines,
-    load_reading,
-    parse_reading,
-    prose_paragraphs,
-    reading_coverage,
-)
+from pendcli.data.ledger_labels import label_lines
+from pendcli.data.reading import load_reading, parse_reading, prose_paragraphs, reading_coverage
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"
 # the papers whose every paragraph is read: one left unread fails

@@ -11,7 +11,8 @@ from pathlib import Path
 import pytest
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.reading import label_lines, load_reading
+from pendcli.data.ledger_labels import label_lines
+from pendcli.data.reading import load_reading
 from pendcli.data.reading_citations import parse_citations, unsaid_citations
 
 TABLES = Path(__file__).resolve().parent.parent / "tables"

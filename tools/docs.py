@@ -163,12 +163,13 @@ def ledger_section() -> str:
     """Coverage of the equation ledgers: the labels each text prints, rows by status, the
     display formulas and the paragraphs of prose accounted for, and the findings (failing or
     misprinted rows that restate no other)."""
-    from pendcli.data.ledger import FINDING_KEYS, coverage, labels_in_text
+    from pendcli.data.ledger import labels_in_text
     from pendcli.data.ledger_coverage import ledger_text_coverage
     from pendcli.data.reading import reading_coverage
     from pendcli.data.tables import paper_text
     from pendcli.data.vocabulary import STATUSES
     from pendcli.papers.registry import PAPERS
+    from pendcli.verify.ledger_evaluation import FINDING_KEYS, coverage
 
     counts = coverage(_ledger_rows())
     rows: list[Row] = []

@@ -51,13 +51,13 @@ def equations(
 ) -> None:
     """The equation ledger: each equation's status, checked (exit 0 whatever the statuses)."""
     from pendcli.base.console import is_quiet
-    from pendcli.data.ledger import coverage
     from pendcli.data.vocabulary import STATUSES
     from pendcli.output import Column
     from pendcli.output.summary import compact_equation_columns
     from pendcli.output.views import EQUATION_COLUMNS
     from pendcli.papers.registry import resolve_papers
     from pendcli.run.reproduce import ledger_rows
+    from pendcli.verify.ledger_evaluation import coverage
 
     if status is not None and status not in STATUSES:
         from pendcli.base.errors import either

@@ -5,9 +5,11 @@ Printed numbers and their precision (``numbers``), the words of verdicts, status
 (``tables``), the texts' ``$$`` blocks and line spans (``text_blocks``), a text as a reader
 reads it (``reader_text``), the ledger's notation as a closed grammar (``formula_grammar``,
 ``printed``) and a stored expression read back (``stored_expr``), the equation ledgers loaded
-and validated (``ledger``, ``ledger_labels``, ``ledger_readings``, ``ledger_conditions``,
-``ledger_coverage``) and the reading records (``reading``, ``reading_citations``).
+and validated (``ledger``, their types ``ledger_rows``, ``ledger_labels``,
+``ledger_readings``, ``ledger_conditions``, ``ledger_coverage``) and the reading records
+(``reading``, ``reading_citations``).
 
-May import: ``pendcli.base`` and other ``data`` modules; never ``verify``, a paper, the run,
-the outputs or the CLI (``tests/test_package_rules.py`` names the exceptions that remain).
+May import: ``pendcli.base`` and other ``data`` modules; never a paper, the run, the outputs
+or the CLI. One exception, named in ``tests/test_package_rules.py``: the ledger's loader
+refuses a row by the engine's rules (``verify``: the kinds, blame, companions, formulas, step).
 """

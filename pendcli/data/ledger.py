@@ -5,93 +5,57 @@ printed in the paper's text (``tables/papers/<paper>.txt``) and per stated resul
 status (``holds``, ``fails``, ``misprint``, ``definition``, ``not-checkable``) and, for the
 first three, the ``kind`` of check that decides it (:mod:`pendcli.verify.check_kinds`) and the
 ``reference`` it is judged against (its builder in the paper's table, ``Paper.references``).
-This module knows nothing about pendulums: it reads and validates ledgers, extracts the
-labels a text prints, judges each row's printed form by its kind and verifies that the
-status computed is the one the row records. A disagreement is an error in the
-ledger, reported, never re-labelled.
+This module knows nothing about pendulums: it reads and validates ledgers and extracts the
+labels a text prints; :mod:`pendcli.verify.ledger_evaluation` judges each row's printed form
+by its kind and verifies that the status computed is the one the row records.
 """
 
 from __future__ import annotations
 
 import re
-from collections import Counter
 from collections.abc import Iterable
-from dataclasses import asdict, dataclass, field, fields
+from dataclasses import fields
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from pendcli.base.errors import PendcliError
 from pendcli.base.recent import Recent
-from pendcli.base.workers import row_done
 from pendcli.data.ledger_conditions import (
-    Assumption,
     check_listed,
     parse_assumptions,
     parse_condition,
 )
 from pendcli.data.ledger_labels import LABEL_FORMAT, label_offsets, labels_in_text
 from pendcli.data.ledger_readings import Reading, parse_readings, readings_of
+from pendcli.data.ledger_rows import Ledger, LedgerRow, as_strings
 from pendcli.data.rows import EquationRow
-from pendcli.data.text_blocks import Span, validate_span
+from pendcli.data.text_blocks import validate_span
 from pendcli.data.vocabulary import CHECKED_STATUSES, STATUSES
 from pendcli.data.vocabulary import EquationStatus as Status
 from pendcli.verify.check_kinds import PARAMETER_KEYS, parse_parameters
 from pendcli.verify.ledger_blame import (
     BLAME_KEYS,
-    FLAWED,
-    Context,
-    is_finding,
     parse_blame,
-    row_context,
     validate_blame,
 )
 from pendcli.verify.ledger_companions import parse_companions
 from pendcli.verify.ledger_formulas import (
     FORMULA_FIELDS,
-    row_dimensions,
     validate_formulas,
     validate_scopes,
     validate_symbols,
 )
-from pendcli.verify.ledger_references import (
-    Computed,
-    References,
-    cited_references,
-    conditional,
-    printed_problem,
-    reference_table,
-    row_printed_status,
-    verify_printed,
-)
-from pendcli.verify.ledger_step import STEP_KEYS, parse_step, step_evidence, validate_step
-
-if TYPE_CHECKING:
-    from pendcli.papers.paper import Paper
-    from pendcli.verify.claims import FormulaRow
-    from pendcli.verify.dimensions import DimensionCheck
+from pendcli.verify.ledger_step import STEP_KEYS, parse_step, validate_step
 
 __all__ = [
     "CHECKED_STATUSES",
-    "FINDING_KEYS",
     "ROW_KEYS",
-    "Evaluated",
     "Ledger",
     "LedgerRow",
-    "Measured",
-    "References",
-    "cited_references",
-    "coverage",
-    "equation_rows",
-    "evaluate",
     "label_offsets",
     "labels_in_text",
     "load_ledger",
-    "measured",
     "parse_ledger",
-    "printed_problem",
-    "reference_table",
-    "row_printed_status",
-    "verify_printed",
 ]
 
 LEDGER_KEYS = ("paper", "text")
@@ -120,108 +84,6 @@ LIST_KEYS = (*PRINTED_KEYS, "measured")
 OUTPUT_KEYS = tuple(f.name for f in fields(EquationRow))
 
 _ID = re.compile(r"^[a-z]+\.(?:eq|result)\.[A-Za-z0-9_'-]+(?:\.[a-z0-9-]+)?$")
-
-
-@dataclass(frozen=True)
-class LedgerRow:
-    """One equation or stated result, as the ledger records it."""
-
-    id: str
-    paper: str
-    equation: str
-    section: str
-    statement: str
-    status: Status
-    kind: str | None = None
-    # ids of the paper's formula checks whose observed order the row shows
-    measured: tuple[str, ...] | None = None
-    reading: str | None = None
-    corrected: str | None = None
-    # the wrong term(s) as the OCR text prints them (marked in the HTML)
-    wrong_term: str | tuple[str, ...] | None = None
-    note: str | None = None
-    lines: Span | None = None
-    # the words of the text the row rests on (a sentence, a phrase), verbatim from its lines
-    quote: str | tuple[str, ...] | None = None
-    # the row(s) whose formula it repeats (a definition), or whose slip it only cites or
-    # carries (a failing or misprinted row, then no finding of its own)
-    restates: str | tuple[str, ...] | None = None
-    printed: str | None = None
-    reading_formula: str | None = None
-    corrected_formula: str | None = None
-    reference: str | None = None
-    # the later use that decides the blame of a slip (verify/ledger_blame)
-    used_at: tuple[int, ...] | None = None
-    used: str | tuple[str, ...] | None = None
-    unused: str | None = None
-    carries: str | None = None
-    condition: str | None = None  # "g <= 9.80": the verdict turns there (data/ledger_conditions)
-    # the row's own slip judged against the printed input it carries (verify/ledger_step)
-    step_from: str | None = None
-    step_at: str | None = None
-    step_symbols: tuple[tuple[str, str], ...] | None = None
-    step_formula: str | None = None
-    # the kind's parameters the row gives (verify/check_kinds), validated on load
-    parameters: tuple[tuple[str, Any], ...] = ()
-    # the reading table's entries that apply to the row (data/ledger_readings), set on load
-    readings: tuple[tuple[str, tuple[tuple[str, str], ...]], ...] = ()
-
-    @property
-    def wrong_terms(self) -> tuple[str, ...]:
-        return _as_strings(self.wrong_term)
-
-    @property
-    def used_words(self) -> tuple[str, ...]:
-        return _as_strings(self.used)
-
-    @property
-    def restated(self) -> tuple[str, ...]:
-        return _as_strings(self.restates)
-
-    def read(self, name: str) -> str | None:
-        """Formula ``name`` as the engine judges it: the reading table's replacements made."""
-        from pendcli.data.ledger_readings import apply_readings
-
-        text: str | None = getattr(self, name)
-        return None if text is None else apply_readings(text, self.readings)
-
-    @property
-    def quotes(self) -> tuple[str, ...]:
-        return _as_strings(self.quote)
-
-
-def _as_strings(value: str | tuple[str, ...] | None) -> tuple[str, ...]:
-    return (value,) if isinstance(value, str) else value or ()
-
-
-@dataclass(frozen=True)
-class Ledger:
-    paper: str
-    text: Path
-    path: Path
-    rows: tuple[LedgerRow, ...]
-    # [symbols]: (name, dimension) pairs the formulas of the rows are written in.
-    symbols: tuple[tuple[str, str], ...] = ()
-    # [[scope]]: a stretch of the text where some letters mean something else (Lecornu's u is
-    # a length in § I and a pure number from (32) on): (first, last line), its (name, dim).
-    scopes: tuple[tuple[tuple[int, int], tuple[tuple[str, str], ...]], ...] = ()
-    # [[reading]]: the OCR's substitutions; [[assumption]]: what the paper leaves unstated
-    readings: tuple[Reading, ...] = ()
-    assumptions: tuple[Assumption, ...] = ()
-
-    def symbols_for(self, row: LedgerRow) -> dict[str, str]:
-        """The symbols ``row``'s formulas are written in: [symbols], then the names of the
-        scope whose lines hold the row's first line, which take precedence."""
-        table = dict(self.symbols)
-        first = row.lines[0] if row.lines is not None else 0
-        for (low, high), names in self.scopes:
-            if low <= first <= high:
-                table.update(names)
-        return table
-
-    def labels(self) -> Counter[str]:
-        """How many rows each printed label has (stated results, with no label, excluded)."""
-        return Counter(r.equation for r in self.rows if r.equation)
 
 
 def _tables_dir() -> Path:
@@ -346,7 +208,7 @@ def _row(path: Path, index: int, entry: object, paper: str) -> LedgerRow:
     _refuse_unknown(where, "key(s)", entry, ROW_KEYS)
     printed: dict[str, object] = {k: _strings(where, k, entry[k]) for k in LIST_KEYS if k in entry}
     if "measured" in printed:
-        printed["measured"] = _as_strings(printed["measured"])  # type: ignore[arg-type]
+        printed["measured"] = as_strings(printed["measured"])  # type: ignore[arg-type]
     printed.update(parse_blame(where, entry))
     printed.update(parse_step(where, entry))
     printed["parameters"] = parse_parameters(where, entry.get("kind"), entry)
@@ -449,158 +311,3 @@ def _check_status_fields(where: str, row: LedgerRow) -> None:
         raise PendcliError(f"{where}: 'reading' is required for, and only for, misprint")
     if (row.corrected is not None) != (row.status is Status.FAILS):
         raise PendcliError(f"{where}: 'corrected' is required for, and only for, fails")
-
-
-@dataclass(frozen=True)
-class Measured:
-    """What the formula checks a row names (``measured``) found: each ``id verdict (order)``,
-    and the lowest observed order among them (None: none is measured)."""
-
-    detail: str
-    observed_order: float | None
-
-
-@dataclass(frozen=True)
-class Evaluated:
-    row: LedgerRow
-    problem: str | None
-    dimensions: DimensionCheck | None = None  # the printed form's, when it has one
-    computed: Computed | None = None  # computed from the printed form; None without a reference
-    measured: Measured | None = None
-    # blame, what it carries, condition, step, readings
-    context: Context = field(default_factory=Context)
-
-    def output_row(self) -> EquationRow:
-        """The row every output shows: each piece in a field of its own."""
-        row, dims, measured, more = self.row, self.dimensions, self.measured, self.context
-        status, why = self.computed if self.computed is not None else (None, None)
-        return EquationRow(
-            id=row.id,
-            paper=row.paper,
-            equation=row.equation,
-            section=row.section,
-            statement=row.statement,
-            status=row.status,
-            kind=row.kind,
-            observed_order=measured.observed_order if measured is not None else None,
-            note=row.note or "",
-            lines=row.lines,
-            printed=row.printed,
-            reading=row.reading_formula,
-            corrected=row.corrected_formula,
-            dimensions=dims.verdict if dims is not None else None,
-            dimensions_detail=dims.detail if dims is not None else None,
-            reading_note=row.reading,
-            corrected_note=row.corrected,
-            measured=measured.detail if measured is not None else None,
-            against=row.reference,
-            computed=Status(status) if status is not None else None,
-            evidence=why,
-            inconsistency=self.problem,
-            finding=is_finding(row),
-            restates=row.restated,
-            used_at=row.used_at,
-            **asdict(more),
-        )
-
-
-def measured(row: LedgerRow, formulas: Iterable[FormulaRow]) -> Measured | None:
-    """What the formula checks ``row`` names found (None: it names none); a name that is no
-    formula check of the paper is an error naming the row."""
-    if not row.measured:
-        return None
-    by_id = {r.id: r for r in formulas}
-    wanted = [f"{row.paper}.{name}" for name in row.measured]
-    missing = [i for i in wanted if i not in by_id]
-    if missing:
-        raise PendcliError(f"{row.id}: measured names no formula check {', '.join(missing)}")
-    chosen = [by_id[i] for i in wanted]
-    orders = [r.observed_order for r in chosen if r.observed_order is not None]
-    detail = "; ".join(f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen)
-    return Measured(detail, min(orders) if orders else None)
-
-
-def _formula_rows(paper: Paper, ledger: Ledger) -> list[FormulaRow]:
-    """The paper's formula checks when a row of its ledger names one (else none: not run)."""
-    from pendcli.verify.claims import shared_formula_rows
-
-    if paper.formula_checks is None or not any(r.measured for r in ledger.rows):
-        return []
-    return shared_formula_rows(paper.key, paper.formula_checks)
-
-
-# (i, n): the i-th of n contiguous slices of a ledger's rows, so that two processes can
-# share a long ledger; (0, 1) is the whole ledger.
-Part = tuple[int, int]
-
-
-def evaluate(paper: Paper, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
-    """Every row of the paper's ledger (or of ``part`` of it) judged from its printed form,
-    with its consistency verified."""
-    ledger = load_ledger(paper.key, root)
-    rows = ledger.rows
-    index, count = part
-    start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
-    references = reference_table(paper)
-    formulas = _formula_rows(paper, ledger)
-    out = []
-    for row in rows[start:stop]:
-        symbols = ledger.symbols_for(row)
-        dims = row_dimensions(row, symbols).get("printed")
-        computed = row_printed_status(row, symbols, references) if row.reference else None
-        condition = conditional(paper, ledger, row, references)
-        step, step_problem = step_evidence(row, ledger)
-        problem = printed_problem(row, computed) or step_problem
-        problem = problem or (condition.problem if condition is not None else None)
-        context = row_context(row, ledger, condition, step)
-        out.append(Evaluated(row, problem, dims, computed, measured(row, formulas), context))
-        row_done()  # a progress bar counts rows (base.workers)
-    return out
-
-
-def equation_rows(
-    papers: Iterable[Paper], root: Path | None = None, part: Part = (0, 1)
-) -> list[EquationRow]:
-    """The rows of ``reproduce --format json`` under "equations" for ``papers`` (``part`` of
-    each ledger); raises PendcliError if a paper's ledger is missing, empty or not a file, or
-    a check contradicts its row's status."""
-    rows = []
-    problems = []
-    for paper in papers:
-        if paper.references is None:  # a paper without a ledger (its file is then not read)
-            continue
-        for item in evaluate(paper, root, part):
-            rows.append(item.output_row())
-            if item.problem:
-                problems.append(f"{item.row.id}: {item.problem}")
-    if problems:
-        raise PendcliError(f"equation ledger inconsistent: {problems[0]} ({len(problems)} rows)")
-    return rows
-
-
-def coverage(rows: Iterable[EquationRow]) -> dict[str, dict[str, int]]:
-    """Per paper: the count of rows by status, the total and how many are checked; then the
-    findings (failing or misprinted rows that restate no other: one per slip, by status) and
-    the rows that only restate another's slip (verify/ledger_blame)."""
-    table: dict[str, dict[str, int]] = {}
-    for row in rows:
-        counts = table.setdefault(row.paper, {s.value: 0 for s in STATUSES} | _NO_FINDINGS)
-        counts[row.status.value] += 1
-        if row.finding:
-            counts[f"{row.status.value} findings"] += 1
-        elif row.status in FLAWED:
-            counts["restating"] += 1
-    for counts in table.values():
-        counts["total"] = sum(counts[s] for s in STATUSES)
-        counts["checked"] = sum(counts[s] for s in CHECKED_STATUSES)
-        counts["findings"] = sum(counts[f"{s.value} findings"] for s in FLAWED)
-    return table
-
-
-# the counts of findings coverage() adds to the counts by status
-_NO_FINDINGS = {f"{s.value} findings": 0 for s in FLAWED} | {"restating": 0}
-FINDING_KEYS = ("findings", *_NO_FINDINGS)
-
-
-def _order(value: float | None) -> str:
-    return "n/a" if value is None else f"{value:.2f}"

@@ -19,23 +19,39 @@ import re
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.vocabulary import CHECKED_STATUSES
-
-if TYPE_CHECKING:
-    from pendcli.data.ledger import LedgerRow
+from pendcli.data.vocabulary import CHECKED_STATUSES, EquationStatus
 
 __all__ = [
     "Assumption",
     "Conditional",
+    "ConditionedRow",
     "check_listed",
     "conditional_status",
     "parse_assumptions",
     "parse_condition",
     "row_conditional",
 ]
+
+
+class ConditionedRow(Protocol):
+    """What this module reads of a ledger row (:class:`pendcli.data.ledger_rows.LedgerRow`):
+    its id, status, reference and the condition its verdict turns on."""
+
+    @property
+    def id(self) -> str: ...
+
+    @property
+    def status(self) -> EquationStatus: ...
+
+    @property
+    def reference(self) -> str | None: ...
+
+    @property
+    def condition(self) -> str | None: ...
+
 
 _KEYS = ("id", "what", "rows", "constant", "range")
 _ID = re.compile(r"^[A-Za-z][A-Za-z0-9_-]*$")
@@ -114,7 +130,7 @@ def _assumption(where: str, entry: object, known: set[str] | None) -> Assumption
     return Assumption(entry["id"], entry["what"], tuple(rows), constant, bounds)
 
 
-def parse_condition(where: str, row: LedgerRow, assumptions: Mapping[str, Assumption]) -> None:
+def parse_condition(where: str, row: ConditionedRow, assumptions: Mapping[str, Assumption]) -> None:
     """A row's ``condition`` names a numeric assumption that lists the row, with a bound
     strictly inside its range; and every row a numeric assumption lists has one."""
     if row.condition is None:
@@ -134,7 +150,9 @@ def parse_condition(where: str, row: LedgerRow, assumptions: Mapping[str, Assump
         raise PendcliError(f"{where}: a condition splits a checked row's computed status")
 
 
-def check_listed(path: Path, rows: Iterable[LedgerRow], assumptions: Iterable[Assumption]) -> None:
+def check_listed(
+    path: Path, rows: Iterable[ConditionedRow], assumptions: Iterable[Assumption]
+) -> None:
     """Each row a numeric assumption lists carries a condition on it."""
     by_id = {r.id: r for r in rows}
     for found in assumptions:
@@ -164,7 +182,7 @@ def _points(op: str, bound: float, low: float, high: float) -> tuple[list[float]
 
 
 def conditional_status(
-    row: LedgerRow,
+    row: ConditionedRow,
     found: Assumption,
     table_value: float,
     status_at: Callable[[float], tuple[str | None, str]],
@@ -203,7 +221,7 @@ def _on(op: str, bound: float, value: float) -> bool:
 
 def row_conditional(
     paper: str,
-    row: LedgerRow,
+    row: ConditionedRow,
     assumptions: Iterable[Assumption],
     compute: Callable[[], tuple[str | None, str]],
 ) -> Conditional | None:

@@ -6,7 +6,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from pendcli.data.ledger import Ledger, load_ledger
+from pendcli.data.ledger import load_ledger
+from pendcli.data.ledger_rows import Ledger
 from pendcli.data.tables import read_table_text
 from pendcli.data.text_blocks import DisplayBlock, blocks_covered, display_blocks
 

@@ -1,12 +1,13 @@
 """The equation labels a paper's text prints: in display mathematics, at the start of a formula
 line, in a ``\\tag`` or in the margin at its end (:func:`labels_in_text`); and the format a
-ledger row's ``equation`` must have (:data:`LABEL_FORMAT`)."""
+ledger row's ``equation`` must have (:data:`LABEL_FORMAT`); the lines of each printing of a
+label (:func:`label_lines`)."""
 
 from __future__ import annotations
 
 import re
 
-__all__ = ["LABEL_FORMAT", "label_offsets", "labels_in_text"]
+__all__ = ["LABEL_FORMAT", "label_lines", "label_offsets", "labels_in_text"]
 
 # An equation label: an arabic number (with an optional letter and primes: (42'), (17a)),
 # a roman numeral (I)-(XXXIX), or a single lower-case letter ((p), (q)); an OCR prime may be
@@ -47,3 +48,12 @@ def label_offsets(text: str) -> list[tuple[int, str]]:
             for match in pattern.finditer(body):
                 found.append((offset + match.start(1), f"({_normalise(match.group(1))})"))
     return sorted(set(found))
+
+
+def label_lines(text: str) -> dict[str, tuple[int, ...]]:
+    """Each equation label the text prints (``labels_in_text``), with the line of each
+    printing, in the order of first printing."""
+    found: dict[str, list[int]] = {}
+    for offset, label in label_offsets(text):
+        found.setdefault(label, []).append(text.count("\n", 0, offset) + 1)
+    return {label: tuple(lines) for label, lines in found.items()}

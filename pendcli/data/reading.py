@@ -8,8 +8,8 @@ those lines, the exact words of each checkable claim the paragraph makes, or ``n
 one-line reason why it makes none (a title, narration, a definition already a row, a
 citation of a work). The claims are judged by the ledger's engine like the formulas; this
 module only checks that the record and the text agree. It also lists where each equation
-label is printed (:func:`label_lines`): a label printed twice is one the reader must tell
-apart.
+label is printed (:func:`~pendcli.data.ledger_labels.label_lines`): a label printed twice is
+one the reader must tell apart.
 """
 
 from __future__ import annotations
@@ -21,19 +21,23 @@ from pathlib import Path
 from typing import Any
 
 from pendcli.base.errors import PendcliError
-from pendcli.data.reading_citations import Citation, parse_citations, unsaid_citations
+from pendcli.data.ledger_labels import label_lines
+from pendcli.data.reading_citations import (
+    Citation,
+    parse_citations,
+    reading_path,
+    unsaid_citations,
+)
 from pendcli.data.text_blocks import Span
 
 __all__ = [
     "Paragraph",
     "Reading",
     "ReadingCoverage",
-    "label_lines",
     "load_reading",
     "parse_reading",
     "prose_paragraphs",
     "reading_coverage",
-    "reading_path",
 ]
 
 READING_KEYS = ("paper", "text")
@@ -62,17 +66,6 @@ def prose_paragraphs(text: str) -> tuple[Span, ...]:
     return tuple(spans)
 
 
-def label_lines(text: str) -> dict[str, tuple[int, ...]]:
-    """Each equation label the text prints (``labels_in_text``), with the line of each
-    printing, in the order of first printing."""
-    from pendcli.data.ledger_labels import label_offsets
-
-    found: dict[str, list[int]] = {}
-    for offset, label in label_offsets(text):
-        found.setdefault(label, []).append(text.count("\n", 0, offset) + 1)
-    return {label: tuple(lines) for label, lines in found.items()}
-
-
 @dataclass(frozen=True)
 class Paragraph:
     """One paragraph of prose: its lines, and the rows holding its claims or why it has none."""
@@ -99,12 +92,6 @@ class Reading:
         """The text's paragraphs the record does not account for."""
         read = {p.lines for p in self.paragraphs}
         return tuple(span for span in self.text_paragraphs if span not in read)
-
-
-def reading_path(paper: str, root: Path | None = None) -> Path:
-    from pendcli.data.tables import tables_dir
-
-    return (root or tables_dir()) / "papers" / f"{paper}.reading.toml"
 
 
 def load_reading(paper: str, root: Path | None = None) -> Reading | None:

@@ -7,7 +7,8 @@ says it in ``[[citation]]`` entries: ``label`` (as printed, ``"(18)"``), ``line`
 of the prose that cites it: every citation of the label on that line) and ``printing`` (the
 line where the meant formula is printed, one of the label's printings), with ``why``, one
 line saying what in the sentence decides it. :func:`parse_citations` validates them against
-the text; :func:`unsaid_citations` lists the citations of a doubled label no entry covers.
+the text; :func:`unsaid_citations` lists the citations of a doubled label no entry covers;
+:func:`reading_path` is the record's file.
 """
 
 from __future__ import annotations
@@ -15,11 +16,19 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from pendcli.base.errors import PendcliError
 
-__all__ = ["CITATION_KEYS", "Citation", "parse_citations", "prose_citations", "unsaid_citations"]
+__all__ = [
+    "CITATION_KEYS",
+    "Citation",
+    "parse_citations",
+    "prose_citations",
+    "reading_path",
+    "unsaid_citations",
+]
 
 CITATION_KEYS = ("label", "line", "printing", "why")
 MAX_WHY = 300
@@ -103,3 +112,9 @@ def unsaid_citations(
     """The (label, line) citations of a doubled label that no ``[[citation]]`` says."""
     said = {(c.label, c.line) for c in citations}
     return tuple(c for c in prose_citations(text, twice) if c not in said)
+
+
+def reading_path(paper: str, root: Path | None = None) -> Path:
+    from pendcli.data.tables import tables_dir
+
+    return (root or tables_dir()) / "papers" / f"{paper}.reading.toml"

@@ -234,8 +234,8 @@ def _equation_section(rows: list[EquationRow]) -> list[str]:
     """Coverage of the ledger by status, then every equation that fails or is misprinted."""
     if not rows:
         return []
-    from pendcli.data.ledger import FINDING_KEYS, coverage
     from pendcli.data.vocabulary import STATUSES
+    from pendcli.verify.ledger_evaluation import FINDING_KEYS, coverage
 
     counts = [{"paper": p, **c} for p, c in coverage(rows).items()]
     keys = ("paper", *STATUSES, "total", "checked", *FINDING_KEYS)

@@ -22,10 +22,10 @@ from pendcli.base.errors import PendcliError
 from pendcli.papers import charbonnier, lecornu, tisserand
 
 if TYPE_CHECKING:
-    from pendcli.data.ledger import Part
     from pendcli.data.rows import ClaimRow, EquationRow, FormulaRow
     from pendcli.papers.paper import Paper
     from pendcli.verify.explain import Declared
+    from pendcli.verify.ledger_evaluation import Part
 
 # The engines load when a function here first needs them: `pendcli --help` lists the papers'
 # sub-commands through this module and must stay instant.
@@ -150,6 +150,6 @@ def equation_rows(
 ) -> list[EquationRow]:
     """The equation ledger rows of the papers ``keys_`` (see :func:`pendcli.data.ledger.
     equation_rows`)."""
-    from pendcli.data.ledger import equation_rows as ledger_equation_rows
+    from pendcli.verify.ledger_evaluation import equation_rows as ledger_equation_rows
 
     return ledger_equation_rows([paper(k) for k in keys_], root, part)

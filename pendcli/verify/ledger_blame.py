@@ -28,8 +28,8 @@ from pendcli.data.vocabulary import CHECKED_STATUSES
 from pendcli.data.vocabulary import EquationStatus as Status
 
 if TYPE_CHECKING:
-    from pendcli.data.ledger import Ledger, LedgerRow
     from pendcli.data.ledger_conditions import Conditional
+    from pendcli.data.ledger_rows import Ledger, LedgerRow
 
 __all__ = [
     "BLAME_KEYS",

@@ -40,7 +40,7 @@ from pendcli.base.errors import PendcliError
 from pendcli.data.vocabulary import CHECKED_STATUSES, EquationStatus
 
 if TYPE_CHECKING:
-    from pendcli.data.ledger import Ledger, LedgerRow
+    from pendcli.data.ledger_rows import Ledger, LedgerRow
 
 __all__ = [
     "COMPANION_KEYS",
@@ -300,8 +300,8 @@ def _spans(ledger: Ledger) -> list[tuple[int, int]]:
 def _citations(ledger: Ledger, text: str) -> list[tuple[str, int, int | None]]:
     """(label, line, printing meant or None) of every citation of a label in the prose, the
     printing meant read from the reading record's ``[[citation]]`` entries."""
-    from pendcli.data.reading import label_lines, reading_path
-    from pendcli.data.reading_citations import parse_citations, prose_citations
+    from pendcli.data.ledger_labels import label_lines
+    from pendcli.data.reading_citations import parse_citations, prose_citations, reading_path
     from pendcli.data.tables import read_toml
 
     labels = label_lines(text)

@@ -17,7 +17,7 @@ from pendcli.data.formula_grammar import plain_name
 from pendcli.data.printed import ELLIPSIS, FUNCTIONS, Formula, parse_dimension, parse_formula
 
 if TYPE_CHECKING:
-    from pendcli.data.ledger import LedgerRow
+    from pendcli.data.ledger_rows import LedgerRow
     from pendcli.verify.dimensions import DimensionCheck
     from pendcli.verify.printed_check import Reference
 

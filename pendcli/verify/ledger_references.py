@@ -21,9 +21,9 @@ from pendcli.data.rows import NO_STATUS
 from pendcli.verify.ledger_formulas import printed_status, row_formula
 
 if TYPE_CHECKING:
-    from pendcli.data.ledger import Ledger, LedgerRow
+    from pendcli.data.ledger_rows import Ledger, LedgerRow
     from pendcli.data.printed import Formula
-    from pendcli.papers.paper import Paper
+    from pendcli.verify.ledger_paper import LedgerPaper as Paper
     from pendcli.verify.printed_check import Reference
 
 __all__ = [

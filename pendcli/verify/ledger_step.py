@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 from pendcli.base.errors import PendcliError
 
 if TYPE_CHECKING:
-    from pendcli.data.ledger import Ledger, LedgerRow
+    from pendcli.data.ledger_rows import Ledger, LedgerRow
     from pendcli.verify.printed_check import Reference
 
 __all__ = ["STEP_KEYS", "parse_step", "step_evidence", "validate_step"]

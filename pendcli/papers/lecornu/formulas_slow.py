@@ -33,7 +33,7 @@ from pendcli.verify.formula_engine import (
 from pendcli.verify.formula_plots import PanelLabels
 
 if TYPE_CHECKING:
-    from pendcli.data.ledger import Ledger, LedgerRow
+    from pendcli.data.ledger_rows import Ledger, LedgerRow
 
 __all__ = ["SLOW_PANELS", "eq25_residuals", "slow_rows"]
 
