@@ -44,7 +44,7 @@ reproduce: $(RUNTIME)
 
 # Two workers (this project's machines have 2 cores); tests use tmp_path, never shared paths.
 # PENDCLI_JOBS=1: with both cores busy running tests, reproduce's own forks only add work
-# (tests/test_report.py runs the forked paths explicitly). Bytecode is kept in .venv/pycache:
+# (tests/output/test_report.py runs the forked paths explicitly). Bytecode is kept in .venv/pycache:
 # where PYTHONDONTWRITEBYTECODE is set, each worker and each CLI subprocess a test starts would
 # otherwise compile sympy, scipy, matplotlib and the tests from source again (3x the CPU).
 PYTEST := env -u PYTHONDONTWRITEBYTECODE PYTHONPYCACHEPREFIX=$(abspath $(VENV))/pycache \
@@ -63,13 +63,13 @@ test: $(STAMP)
 # seconds grow on a crowded machine (1.5-3x at a load of 10 on 2 cores), and under xdist the
 # first test to use a shared cache pays for it: so each test over the limit is rerun alone,
 # RECHECK times, after its file's cheapest other test, and is over only if over every time
-# (tests/durations.py --recheck).
+# (tests/helpers/durations.py --recheck).
 DURATION_LIMIT ?= 2
 RECHECK ?= 2
 test-durations: $(STAMP)
 	@test -f $(TIMINGS) || $(MAKE) test
 	env -u PYTHONDONTWRITEBYTECODE PYTHONPYCACHEPREFIX=$(abspath $(VENV))/pycache \
-	  $(BIN)/python tests/durations.py $(TIMINGS) --limit $(DURATION_LIMIT) --recheck $(RECHECK)
+	  $(BIN)/python tests/helpers/durations.py $(TIMINGS) --limit $(DURATION_LIMIT) --recheck $(RECHECK)
 
 # Only the slow tests: whole regenerations, real processes stopped by signals, mpmath references.
 test-slow: $(STAMP)

@@ -16,7 +16,7 @@ settings.load_profile("pendcli")
 # The result cache (pendcli/base/cache.py) is off in every test and every process a test
 # starts: no test is served a result stored outside it (the user's ~/.cache/pendcli), nor one
 # an earlier test stored, which would make a test of determinism, of the forked workers or of
-# an interrupt compare a computation with a copy of itself. tests/test_cache.py gives each of
+# an interrupt compare a computation with a copy of itself. tests/base/test_cache.py gives each of
 # its tests a folder of its own; the tests of an output's form share one (shared_result_cache).
 os.environ["PENDCLI_CACHE"] = "off"
 
@@ -25,10 +25,10 @@ from fnmatch import fnmatchcase  # noqa: E402
 from functools import cache  # noqa: E402
 
 import pytest  # noqa: E402
-import suite_split  # noqa: E402
+from helpers import suite_split  # noqa: E402
 
-# Per-test wall and CPU seconds (--timings-file), read by tests/durations.py (the 2 s rule).
-from timing import (  # noqa: E402, F401
+# Per-test wall and CPU seconds (--timings-file), read by tests/helpers/durations.py (the 2 s rule).
+from helpers.timing import (  # noqa: E402, F401
     pytest_addoption,
     pytest_collection_finish,
     pytest_runtest_call,
@@ -41,84 +41,102 @@ from timing import (  # noqa: E402, F401
 # when it asks for a fixture named below; each says why it cannot be fast. Whatever the
 # families miss, `make test-durations` lists (a test not marked slow over 2 s).
 SLOW_FAMILIES = {
-    "tests/test_derivation_store.py::test_float64_decides_only_as_*": "every stored item "
+    "tests/verify/test_derivation_store.py::test_float64_decides_only_as_*": "every stored item "
     "judged by the exact engine too",
-    "tests/test_derivation_store.py::test_a_run_says_once_*": "Tisserand's ledger derived "
+    "tests/verify/test_derivation_store.py::test_a_run_says_once_*": "Tisserand's ledger derived "
     "afresh, in a process",
     "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
-    "tests/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
-    "tests/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
-    "tests/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
+    "tests/attacks/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
+    "tests/run/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
+    "tests/run/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
     "derived twice",
-    "tests/test_prose_lecornu_later.py::test_the_reference_of_*": "the table after (26), sympy",
-    "tests/test_prose_scales.py::test_the_engine_judges_*": "four inequalities judged, sympy",
-    "tests/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
-    "tests/test_reader_scan.py::test_the_pages_of_a_whole_report_*": "a whole report",
-    "tests/test_terminal_fit.py::*": "each command's whole output at two widths",
-    "tests/test_terminal_render.py::test_render_*": "each command's whole output at three widths",
-    "tests/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
-    "tests/test_summary.py::test_only_failing_*": "a whole reproduce of a paper, in a process",
-    "tests/test_cli.py::test_ascii_only_locale": "each command in a fresh process",
-    "tests/test_cli.py::test_file_size_limit_names_the_plot_*": "a figure drawn in a process",
-    "tests/test_report.py::test_report_of_one_paper_*": "a report's figures in forked workers",
-    "tests/test_charbonnier.py::test_formulas_figure_*": "every formula row's figure",
-    "tests/test_fuzz.py::test_formulas_plot_folder": "each example draws and writes a figure",
-    "tests/test_fuzz.py::test_plot_paths": "each example draws and writes a figure",
-    "tests/test_tisserand.py::test_figures_written": "draws and writes the paper's figures",
-    "tests/test_json_schema.py::test_reproduce_*json_*": "a whole reproduce -f json",
-    "tests/test_summary.py::test_equations_command_*": "every Charbonnier check, via the CLI",
-    "tests/test_html_report.py::test_pdf_printing_*": "whole reports, before Chromium is sought",
-    "tests/test_tisserand.py::test_quadrature_against_mpmath_elsewhere": "mpmath at 25 digits",
-    "tests/test_tisserand.py::test_series_error_figure_against_mpmath": "mpmath at 25 digits",
-    "tests/test_tisserand_extremes.py::test_near_planar_fourier_*": "mpmath at 25 digits",
-    "tests/test_lecornu_extremes.py::test_largest_count_correctly_rounded": "mpmath zeros",
-    "tests/test_charbonnier_extremes.py::test_quad_domain_is_measured": "a grid of quadratures",
-    "tests/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
-    "tests/test_summary.py::test_ledger_parts_*": "the whole ledger, in two processes",
-    "tests/test_regression.py::test_check_update_leaves_*": "two whole `check --update` "
+    "tests/papers/lecornu/test_prose_lecornu_from_line_462.py::test_the_reference_of_*": "the "
+    "table after (26), sympy",
+    "tests/papers/lecornu/test_prose_scales.py::test_the_engine_judges_*": "four inequalities "
+    "judged, sympy",
+    "tests/run/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
+    "tests/output/test_reader_scan.py::test_the_pages_of_a_whole_report_*": "a whole report",
+    "tests/output/test_terminal_fit.py::*": "each command's whole output at two widths",
+    "tests/output/test_terminal_render.py::test_render_*": "each command's whole output at three "
+    "widths",
+    "tests/output/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
+    "tests/output/test_summary.py::test_only_failing_*": "a whole reproduce of a paper, in a "
+    "process",
+    "tests/cli/test_cli.py::test_ascii_only_locale": "each command in a fresh process",
+    "tests/cli/test_cli.py::test_file_size_limit_names_the_plot_*": "a figure drawn in a process",
+    "tests/output/test_report.py::test_report_of_one_paper_*": "a report's figures in forked "
+    "workers",
+    "tests/papers/charbonnier/test_charbonnier.py::test_formulas_figure_*": "every formula row's "
+    "figure",
+    "tests/attacks/test_fuzz.py::test_formulas_plot_folder": "each example draws and writes a "
+    "figure",
+    "tests/attacks/test_fuzz.py::test_plot_paths": "each example draws and writes a figure",
+    "tests/papers/tisserand/test_tisserand.py::test_figures_written": "draws and writes the "
+    "paper's figures",
+    "tests/output/test_json_schema.py::test_reproduce_*json_*": "a whole reproduce -f json",
+    "tests/output/test_summary.py::test_equations_command_*": "every Charbonnier check, via the "
+    "CLI",
+    "tests/output/html/test_html_report.py::test_pdf_printing_*": "whole reports, before Chromium "
+    "is sought",
+    "tests/papers/tisserand/test_tisserand.py::test_quadrature_against_mpmath_elsewhere": "mpmath "
+    "at 25 digits",
+    "tests/papers/tisserand/test_tisserand.py::test_series_error_figure_against_mpmath": "mpmath "
+    "at 25 digits",
+    "tests/papers/tisserand/test_tisserand_extremes.py::test_near_planar_fourier_*": "mpmath at 25 "
+    "digits",
+    "tests/papers/lecornu/test_lecornu_extremes.py::test_largest_count_correctly_rounded": "mpmath "
+    "zeros",
+    "tests/papers/charbonnier/test_charbonnier_extremes.py::test_quad_domain_is_measured": "a grid "
+    "of quadratures",
+    "tests/verify/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
+    "tests/output/test_summary.py::test_ledger_parts_*": "the whole ledger, in two processes",
+    "tests/run/test_regression.py::test_check_update_leaves_*": "two whole `check --update` "
     "regenerations (3 s of CPU alone)",
-    "tests/test_equations_tisserand.py::test_resals_rate_*": "two ODE integrations of the "
-    "apsidal motion and the series of the motion to fifth order",
-    "tests/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
+    "tests/papers/tisserand/test_equations_tisserand.py::test_resals_rate_*": "two ODE "
+    "integrations of the apsidal motion and the series of the motion to fifth order",
+    "tests/base/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
     "`equations` runs of a ledger in one test (2.1-2.3 s)",
-    "tests/test_attack_edition.py::test_reproduce_out_of_tables_full_of_markup": "a whole "
+    "tests/attacks/test_attack_edition.py::test_reproduce_out_of_tables_full_of_markup": "a whole "
     "`reproduce --out` of one paper, its ledger checked, in a process (10 s of CPU)",
-    "tests/test_attack_misc.py::test_reproduce_out_at_the_limit_of_open_files": "a report "
+    "tests/attacks/test_attack_misc.py::test_reproduce_out_at_the_limit_of_open_files": "a report "
     "with its figures, in a process (4 s of CPU)",
-    "tests/test_attack_misc.py::test_scipy_zeros_are_written_a_chunk_at_a_time": "400,000 "
+    "tests/attacks/test_attack_misc.py::test_scipy_zeros_are_written_a_chunk_at_a_time": "400,000 "
     "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
-    "tests/test_equation_fields.py::test_every_json_row_carries_the_engines_verdict": "every "
-    "paper's whole ledger (40 s of CPU cold)",
-    "tests/test_faults.py::test_non_finite_committed_values_fail_the_check": "a whole `check` "
-    "(every table and the three ledgers) to compare with the damaged cells (20-30 s)",
-    "tests/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this process, "
-    "each regenerating every table and the three ledgers (20 s of CPU)",
-    "tests/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
+    "tests/output/test_equation_fields.py::"
+    "test_every_json_row_carries_the_engines_verdict": "every paper's whole ledger (40 s of CPU "
+    "cold)",
+    "tests/attacks/test_faults.py::test_non_finite_committed_values_fail_the_check": "a whole "
+    "`check` (every table and the three ledgers) to compare with the damaged cells (20-30 s)",
+    "tests/attacks/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this "
+    "process, each regenerating every table and the three ledgers (20 s of CPU)",
+    "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
     "judged as committed and with 165 data mutations (20 s of CPU with their references)",
-    "tests/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
+    "tests/verify/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
     "engine mutation judged over the sampled rows it applies to (up to 5 s of CPU each)",
-    "tests/test_attack_signals.py::test_a_worker_killed_stops_the_run_*": "a cold `equations` "
-    "in two processes, until its worker computes",
-    "tests/test_attack_signals.py::test_a_stop_while_a_worker_computes_*": "a cold `equations` "
-    "in two processes, until its worker computes",
+    "tests/attacks/test_attack_signals.py::test_a_worker_killed_stops_the_run_*": "a cold "
+    "`equations` in two processes, until its worker computes",
+    "tests/attacks/test_attack_signals.py::test_a_stop_while_a_worker_computes_*": "a cold "
+    "`equations` in two processes, until its worker computes",
 }
 # Single cases of a parametrized test (its id without parameters, then a part of the
 # parameters' id): the heavy rows of a family whose other rows are fast.
-LEDGER_STATUS = "tests/test_ledger.py::test_the_engine_computes_the_recorded_status"
+LEDGER_STATUS = "tests/data/test_ledger.py::test_the_engine_computes_the_recorded_status"
 SLOW_CASES = {
     # a renamed claim id through `check`: found when the claims are evaluated, after the
     # ledgers (the costliest steps go first); the `reproduce` and `g-sensitivity` cases stay
-    ("tests/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
+    ("tests/attacks/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
      "tisserand.resal.rate-command0"): "a whole `check` before the renamed id is found (18 s)",
-    ("tests/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
+    ("tests/attacks/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
      "charbonnier.I_pi.n2-command2"): "a whole `check` before the renamed id is found (21 s)",
     # of the two edits of lines 448-460, the logarithm's coefficient costs 2.6 s alone; the
     # other, 0.8 s alone, is the family's fast case
-    ("tests/test_printed_lecornu_late.py::test_a_changed_growing_part_is_refused",
+    ("tests/papers/lecornu/test_printed_lecornu_finite_and_conical.py::"
+     "test_a_changed_growing_part_is_refused",
      "1/4*log(x)"): "the small-x residual's growing parts with a changed logarithm (2.6 s)",
     (LEDGER_STATUS, "lecornu.result.am_series]"): "the amplitude series' reference, its "
      "integrals with the scale in their limits judged by sympy's series (2.5 s)",
-    ("tests/test_html_report.py::test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
+    ("tests/output/html/test_html_report.py::"
+     "test_each_mark_is_what_its_row_prints_and_lies_within_its_lines",
      "lecornu"): "every Lecornu row and claim matched to its place in 1,135 lines of text",
 }  # fmt: skip
 SLOW_FIXTURES = {
@@ -131,29 +149,40 @@ SLOW_FIXTURES = {
 # the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps
 # the cases of rank 0, n, 2n, ... (n below) in the order of the parameters, among those not slow
 # already: the first case always, and the rest spread over the list (a ledger's rows run in
-# the order of the paper's lines, so its fast cases span the paper). tests/test_suite_split.py
+# the order of the paper's lines, so its fast cases span the paper). tests/suite/test_suite_split.py
 # checks that each family keeps a fast case and leaves the rest to the slow run.
 REPRESENTATIVES = {
     LEDGER_STATUS: 6,
-    "tests/test_printed.py::test_a_changed_coefficient_stops_a_row_holding": 3,
-    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_a_row_holding": 4,
-    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_stops_a_prose_row_*": 4,
-    "tests/test_printed_charbonnier.py::test_a_misprint_whose_printed_form_is_its_reading_*": 2,
-    "tests/test_printed_charbonnier.py::test_every_misprint_printed_as_its_reading_is_refused": 3,
-    "tests/test_printed_charbonnier.py::test_a_changed_coefficient_of_a_reading_is_refused": 3,
-    "tests/test_printed_lecornu_early.py::test_a_changed_coefficient_is_refused": 3,
-    "tests/test_printed_lecornu_early.py::test_a_misprint_printed_as_its_reading_is_refused": 2,
-    "tests/test_printed_lecornu_early.py::test_to_line_420_*": 2,
-    "tests/test_printed_lecornu_late.py::test_a_changed_coefficient_*": 4,
-    "tests/test_printed_lecornu_late.py::test_a_misprint_whose_printed_form_is_its_reading_*": 3,
-    "tests/test_printed_numeric.py::test_an_edit_of_the_printed_form_is_refused_naming_the_row": 3,
-    "tests/test_printed_numeric.py::test_one_printed_digit_changed_in_a_holds_row_*": 2,
-    "tests/test_printed_tisserand.py::test_one_changed_coefficient_is_refused": 4,
-    "tests/test_printed_tisserand.py::test_a_changed_coefficient_of_a_citing_sentence_*": 3,
+    "tests/data/test_printed.py::test_a_changed_coefficient_stops_a_row_holding": 3,
+    "tests/papers/charbonnier/test_printed_charbonnier.py::"
+    "test_a_changed_coefficient_stops_a_row_holding": 4,
+    "tests/papers/charbonnier/test_printed_charbonnier.py::"
+    "test_a_changed_coefficient_stops_a_prose_row_*": 4,
+    "tests/papers/charbonnier/test_printed_charbonnier.py::"
+    "test_a_misprint_whose_printed_form_is_its_reading_*": 2,
+    "tests/papers/charbonnier/test_printed_charbonnier.py::"
+    "test_every_misprint_printed_as_its_reading_is_refused": 3,
+    "tests/papers/charbonnier/test_printed_charbonnier.py::"
+    "test_a_changed_coefficient_of_a_reading_is_refused": 3,
+    "tests/papers/lecornu/test_printed_lecornu_small_oscillations.py::"
+    "test_a_changed_coefficient_is_refused": 3,
+    "tests/papers/lecornu/test_printed_lecornu_small_oscillations.py::"
+    "test_a_misprint_printed_as_its_reading_is_refused": 2,
+    "tests/papers/lecornu/test_printed_lecornu_small_oscillations.py::test_to_line_420_*": 2,
+    "tests/papers/lecornu/test_printed_lecornu_finite_and_conical.py::"
+    "test_a_changed_coefficient_*": 4,
+    "tests/papers/lecornu/test_printed_lecornu_finite_and_conical.py::"
+    "test_a_misprint_whose_printed_form_is_its_reading_*": 3,
+    "tests/verify/test_printed_numeric.py::"
+    "test_an_edit_of_the_printed_form_is_refused_naming_the_row": 3,
+    "tests/verify/test_printed_numeric.py::test_one_printed_digit_changed_in_a_holds_row_*": 2,
+    "tests/papers/tisserand/test_printed_tisserand.py::test_one_changed_coefficient_is_refused": 4,
+    "tests/papers/tisserand/test_printed_tisserand.py::"
+    "test_a_changed_coefficient_of_a_citing_sentence_*": 3,
     # the fault families: each case edits or damages a copy of tables/ and runs a command
-    "tests/test_faults.py::test_a_cut_or_damaged_committed_table_is_a_named_error": 2,
-    "tests/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2": 2,
-    "tests/test_attack_signals.py::test_a_set_interrupted_is_all_old_or_all_new": 2,
+    "tests/attacks/test_faults.py::test_a_cut_or_damaged_committed_table_is_a_named_error": 2,
+    "tests/attacks/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2": 2,
+    "tests/attacks/test_attack_signals.py::test_a_set_interrupted_is_all_old_or_all_new": 2,
 }
 
 
@@ -180,7 +209,7 @@ def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
     """A result cache folder shared by the tests of an output's form (its schema, filters,
     layout), which set PENDCLI_CACHE to it: a paper's ledger is then computed once per
     worker, not once per such test. A warm run prints the cold run's bytes in every format
-    (tests/test_cache.py); no test of a computation uses it."""
+    (tests/base/test_cache.py); no test of a computation uses it."""
     return str(tmp_path_factory.mktemp("shared-result-cache"))
 
 
@@ -188,9 +217,9 @@ def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
 def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
     """For the tests of a command's output form (its shape, formats, one-line errors): the
     registry's ``evaluate`` serves the committed tables' claims computed once per process
-    (tests/evaluated.py), so the command runs whole but does not compute its paper's claims
+    (tests/helpers/evaluated.py), so the command runs whole but does not compute its paper's claims
     again for each such test. No test of a computation uses it."""
-    from evaluated import committed_claims
+    from helpers.evaluated import committed_claims
 
     from pendcli.papers import registry
 

@@ -20,7 +20,7 @@ one way pendcli runs work in parallel (reproduce's steps, the report's figures).
   zombie, and no wait on a worker that cannot end.
 * :meth:`ForkedWorkers.share` splits work without timings: this process and each worker take
   the next item whenever they are free, so a costly item never waits behind a guess of costs.
-  Results are the same whoever computed them (tests/test_determinism.py compares the bytes).
+  Results are the same whoever computed them (tests/run/test_determinism.py compares the bytes).
 """
 
 from __future__ import annotations

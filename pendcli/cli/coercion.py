@@ -8,7 +8,7 @@ adapters made `pendcli list -f json` cost 0.36 s of CPU against 0.17 s with this
 number, a value read by the option's own ``parser=`` (:mod:`pendcli.cli.values`) and a
 choice spelled exactly are converted directly; anything else (every other spelling, every
 error but the parser's own) goes to typer's coercion, so values and messages stay typer's.
-tests/test_startup.py holds the direct conversion against typer's for many spellings.
+tests/cli/test_startup.py holds the direct conversion against typer's for many spellings.
 
 How: :class:`pendcli.cli.help_format.Command` and ``Group`` pass the parameters of a context
 (``get_params``, before click parses them) through :func:`plain_coercion`, which gives each

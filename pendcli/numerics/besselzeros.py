@@ -32,8 +32,8 @@ the zeros for any index up to :data:`MAX_COUNT`, with the method named:
 :func:`bessel_zeros_at` gives the zeros of any array of indices, and :func:`iter_bessel_zeros`
 the first ``count`` in chunks of bounded size (what the CLI streams).
 
-Accuracy and timing are measured in ``tests/test_besselzeros.py`` and
-``tests/test_lecornu_extremes.py`` against mpmath at 30 digits.
+Accuracy and timing are measured in ``tests/numerics/test_besselzeros.py`` and
+``tests/papers/lecornu/test_lecornu_extremes.py`` against mpmath at 30 digits.
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@
 below; every paper subcommand prints ``claims`` and ``formulas`` rows the same way (and adds
 its own keys beside them); ``pendcli tradeoff --format json`` prints ``rows``. The README's
 "JSON schema" section is generated from here (``python -m tools.docs``) and
-``tests/test_json_schema.py`` checks real output against it.
+``tests/output/test_json_schema.py`` checks real output against it.
 """
 
 from __future__ import annotations

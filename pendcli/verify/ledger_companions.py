@@ -21,7 +21,7 @@ model, so a companion that took the wrong form would not hold; but a flawed comp
 own wrong term is the source's has written the wrong form again, which the blame rule calls
 carried, so its computed status alone does not judge it), ``independent`` (the ledger's
 ``[[companion]]`` table says why it does not depend on the slip) or else ``left as printed``:
-an unexamined companion, which ``tests/test_ledger_companions.py`` refuses.
+an unexamined companion, which ``tests/verify/test_ledger_companions.py`` refuses.
 
 ``[[companion]]`` entries of ``tables/equations/<paper>.toml``: ``of`` (the source row's id),
 ``row`` (the companion's id) or ``line`` (the line of a sentence citing the source), and

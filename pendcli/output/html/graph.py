@@ -4,7 +4,7 @@ Each row is a label in a column by its depth (a root slip in the first column, w
 inherits it to the right); grandalf's Sugiyama layout orders each column to reduce crossings
 and gives every edge that skips a column a slot of its own there. An edge runs horizontally
 through each column band, at its endpoint's or its slot's height, and bends only in the gaps
-between columns, so no edge crosses a label (tests/test_html_report.py checks it).
+between columns, so no edge crosses a label (tests/output/html/test_html_report.py checks it).
 """
 
 from __future__ import annotations

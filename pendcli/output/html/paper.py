@@ -336,7 +336,7 @@ def _text_blocks(text: str, marks: Sequence[Placement], passages: Sequence[tuple
 # A paragraph with this many findings (or notes in all) sets its notes below it, not in the
 # margin: beside Lecornu's tables of numbers a margin column of eleven three-line findings ran
 # 700 px below its table, and every later note after it; once every paragraph's claims were
-# rows, Lecornu's margin drifted 376 px at 4 and 8 (tests/test_browser.py).
+# rows, Lecornu's margin drifted 376 px at 4 and 8 (tests/output/html/test_browser.py).
 DENSE_FINDINGS, DENSE_NOTES = 3, 6
 
 

@@ -209,11 +209,11 @@ def _unknown_method(method: str) -> PendcliError:
     return invalid_value("method", method, f"one of {', '.join(INTEGRAL_METHODS)}")
 
 
-# Domains measured against mpmath at 50 digits (tests/test_charbonnier_extremes.py re-measures
-# them): adaptive quadrature (epsrel 1e-10) keeps a relative error <= 2e-10 up to n = 7e4 on
-# 4000 x in (π/2, π]; from n = 1e5 it misses the peak of width ~1/√n at some x (1.87, 2.39,
-# 2.77) and returns 0, at x = π from n = 1e7.  The limit keeps a factor 3 below the first
-# failure.
+# Domains measured against mpmath at 50 digits
+# (tests/papers/charbonnier/test_charbonnier_extremes.py re-measures them): adaptive quadrature
+# (epsrel 1e-10) keeps a relative error <= 2e-10 up to n = 7e4 on 4000 x in (π/2, π]; from n = 1e5
+# it misses the peak of width ~1/√n at some x (1.87, 2.39, 2.77) and returns 0, at x = π from n =
+# 1e7.  The limit keeps a factor 3 below the first failure.
 QUAD_MAX_N = 3 * 10**4
 WARN_ABOVE = 1e-10  # an estimated relative error above this is reported on stderr
 

@@ -1,0 +1,57 @@
+"""The 2 s rule's guard (tests/helpers/durations.py): a fast test over the limit fails it,
+a slow one does not, and ``--recheck`` keeps a test only if a rerun alone is over the limit
+too (a real pytest process here, on a folder of two tiny tests: one that burns CPU, one that
+costs nothing but was recorded as heavy, as a crowded machine would record it)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from helpers import durations
+
+TESTS = Path(__file__).resolve().parents[1]
+
+
+def _timings(path: Path, seconds: dict[str, tuple[float, bool]]) -> Path:
+    lines = [
+        {"test": test, "phase": "call", "slow": slow, "wall": cpu, "cpu": cpu, "load": 0.1}
+        for test, (cpu, slow) in seconds.items()
+    ]
+    path.write_text("".join(json.dumps(line) + "\n" for line in lines), encoding="utf-8")
+    return path
+
+
+def test_a_fast_test_over_the_limit_fails_the_guard_and_a_slow_one_does_not(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = _timings(tmp_path / "t.jsonl", {"a.py::fast": (2.5, False), "a.py::slow": (9.0, True)})
+    assert durations.main([str(path), "--limit", "2"]) == 1
+    assert "over 2 s and not marked slow: a.py::fast (2.50 s cpu)" in capsys.readouterr().out
+    path = _timings(tmp_path / "t.jsonl", {"a.py::fast": (1.5, False), "a.py::slow": (9.0, True)})
+    assert durations.main([str(path), "--limit", "2"]) == 0
+
+
+def test_a_recheck_keeps_a_heavy_test_and_clears_one_recorded_heavy_by_a_crowded_run(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "conftest.py").write_text(
+        f"import sys\nsys.path.insert(0, {str(TESTS)!r})\n"
+        "from helpers.timing import pytest_addoption, pytest_runtest_call  # noqa: F401\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "test_burn.py").write_text(
+        "import time\n\n\ndef test_heavy():\n    end = time.process_time() + 0.25\n"
+        "    while time.process_time() < end:\n        pass\n\n\n"
+        "def test_light():\n    pass\n",
+        encoding="utf-8",
+    )
+    monkeypatch.chdir(tmp_path)
+    recorded = {"test_burn.py::test_heavy": (0.5, False), "test_burn.py::test_light": (3.0, False)}
+    path = _timings(tmp_path / "t.jsonl", recorded)
+    assert durations.main([str(path), "--limit", "0.15", "--recheck", "1"]) == 1
+    out = capsys.readouterr().out
+    assert "over 0.15 s and not marked slow: test_burn.py::test_heavy" in out
+    assert "not marked slow: test_burn.py::test_light" not in out
+    assert "rechecked test_burn.py::test_light: 3.00 s in the run, least 0.0" in out
