@@ -1,4 +1,4 @@
-"""mpmath precision only through context managers (issues 20, 23).
+"""mpmath precision only through context managers.
 
 A global ``mp.dps = …`` makes a result depend on what ran before it in the process (a check
 that ran first leaves its 30 digits to every later mpmath call), so the committed tables would

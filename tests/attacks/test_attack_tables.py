@@ -4,8 +4,9 @@ error (exit 3), no empty result, and the committed tables untouched.
 
 The constants of every paper are set to non-finite, negative, zero, tiny, huge and overflowing
 values; every kind of table file is replaced by binary junk, non-UTF-8 text, an empty file, a
-folder, deep nesting. Most cases run the CLI in-process on a copy of ``tables/``; the hang
-of the issue (``value = nan`` under Charbonnier's g) runs the installed CLI for real.
+folder, deep nesting. Most cases run the CLI in-process on a copy of ``tables/``; a
+non-finite constant (``value = nan`` under Charbonnier's g), which once hung, runs the
+installed CLI for real.
 """
 
 from __future__ import annotations

@@ -267,7 +267,7 @@ def rename_claim(tables: Path, key: str, claim_id: str) -> Path:
 
 @pytest.mark.parametrize("key", PAPERS)
 def test_every_renamed_claim_id_is_a_named_error(tables_copy: Path, key: str) -> None:
-    """The issue found 24 of 69 renamed ids crashing (KeyError, exit 3)."""
+    """Every renamed claim id is one named error (24 of 69 once crashed: KeyError, exit 3)."""
     pristine = (tables_copy / "published" / f"{key}.toml").read_text(encoding="utf-8")
     for claim_id in claim_ids(key):
         path = rename_claim(tables_copy, key, claim_id)

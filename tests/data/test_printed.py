@@ -378,8 +378,8 @@ def test_a_term_beyond_the_order_is_named_in_its_rows_note() -> None:
 @pytest.mark.slow
 @pytest.mark.parametrize("seed", range(24))
 def test_a_random_number_of_a_random_holds_row_changed_stops_it_holding(seed: int) -> None:
-    """The issue's test, on rows nobody picked: a seeded random holds row, one of its printed
-    numbers changed by one in its last digit, no longer holds (60 such changes tried by hand
+    """A changed printed number, on rows nobody picked: a seeded random holds row, one of its
+    printed numbers changed by one in its last digit, no longer holds (60 such changes tried by hand
     on 2026-12-02: every one refused)."""
     import dataclasses
     import random

@@ -1,8 +1,9 @@
 """What a historian reads carries no internal name and no raw TeX.
 
 The report (Markdown and HTML), the edition of the three texts and `pendcli list` are scanned
-for module paths (core/…), reference builders' names (reference_in_…), editors' tags (n19),
-TeX groups (^{…}, _{…}), TeX commands (\\frac) and the ledger's linear subscripts (_(…)).
+for module paths (core/…), reference builders' names (reference_in_…), editors' tags (a letter
+and two digits), TeX groups (^{…}, _{…}), TeX commands (\\frac) and the ledger's linear
+subscripts (_(…)).
 The edition's joins of the paragraphs the OCR cut are checked against the text file itself.
 """
 

@@ -87,7 +87,7 @@ def test_a_carry_that_changes_the_digit_count_is_a_slip_too():
     assert {v for _, v in ex.digit_slips(-130)} >= {-131, -129, -230, -30, 130, -103}
 
 
-# --- constants and the hypothesis for 6,47 ----------------------------------------
+# --- constants and the hypothesis of π = 3,14 for 6,47 ------------------------------------
 
 
 def test_six_forty_seven_is_pi_314_chopped(rows):

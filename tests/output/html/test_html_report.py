@@ -377,8 +377,9 @@ def _same(printed: str, form: str) -> bool:
 
 
 EXPECTED_PLACES = [
-    # the issue's examples: (paper, mark key, the mark's text, words of the same line); the
-    # table entry "2" is found as the number standing alone in its line, not the factor 2
+    # marks once put on a neighbouring term: (paper, mark key, the mark's text, words of the
+    # same line); the table entry "2" is found as the number standing alone in its line, not
+    # the factor 2
     ("charbonnier", "charbonnier.I_pi.n0", "2", "$I_n \\dots \\dots$"),
     ("tisserand", "tisserand.resal.rate", "\\frac{3}{8} u_0 u_1", "la solution de M. Resal"),
     ("tisserand", "tisserand.eq.13~term0", "\\sin^2 4k' t", "(13) \\quad"),
@@ -390,7 +391,7 @@ EXPECTED_PLACES = [
 
 
 @pytest.mark.parametrize(("paper", "key", "printed", "beside"), EXPECTED_PLACES)
-def test_the_issues_marks_sit_on_the_wrong_term(
+def test_each_mark_sits_on_the_term_it_marks(
     paper: str, key: str, printed: str, beside: str
 ) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
