@@ -146,9 +146,10 @@ def test_a_word_cut_at_its_hyphen_is_joined() -> None:
 def edition_pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
     """The three papers' pages and the report page, from the tables' rows (no computation),
     as write_html_report writes them."""
+    from helpers.edition import edition_rows
+
     from pendcli.data.tables import load_paper_table, paper_text
     from pendcli.output.html.report import write_html_report
-    from tests.output.html.test_html_report import edition_rows
 
     out = tmp_path_factory.mktemp("edition")
     rows = {p: edition_rows(p) for p in PAPERS}

@@ -5,18 +5,15 @@ from __future__ import annotations
 
 import dataclasses
 import shutil
-import sys
 from pathlib import Path
 
 import pytest
+from helpers.edition import edition_rows, misplaced, quote_is_printed
 
 from pendcli.base.errors import PendcliError
 from pendcli.data.ledger import load_ledger
 from pendcli.data.tables import tables_dir
 from pendcli.output.html.marks import ALSO_WRONG, place_marks
-
-sys.path.insert(0, str(Path(__file__).parents[2]))
-from test_html_report import edition_rows, misplaced, quote_is_printed
 
 
 def _altered(tmp_path: Path, paper: str, old: str, new: str) -> Path:

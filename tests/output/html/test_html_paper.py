@@ -181,7 +181,7 @@ def test_a_quote_over_prose_and_a_formula_has_one_note_call() -> None:
     the later piece links to the first's note (broken on purpose: with a call per piece the
     page has two calls and a 'continued' note)."""
     text = (tables_dir() / "papers" / "charbonnier.txt").read_text("utf-8")
-    from test_html_report import edition_rows
+    from helpers.edition import edition_rows
 
     claims, equations = edition_rows("charbonnier")
     page = paper_page("charbonnier", "c", text, claims, (), equations)
@@ -210,7 +210,7 @@ def test_a_subscript_in_a_notes_words_is_set_as_one_and_a_name_is_not() -> None:
     assert "Δθ&#39;<sub>m</sub> = −ε E<sub>s</sub>(π/2) and I<sub>n\u22122</sub>" in note, note
     assert "psi_sin2 and p.x_bound" in note and "<script" not in note
     tisserand = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    from test_html_report import edition_rows
+    from helpers.edition import edition_rows
 
     shown = paper_page("tisserand", "c", tisserand, *edition_rows("tisserand")[:1])
     assert "« θ<sub>0</sub> = 30&#39;, θ<sub>1</sub> = 15&#39; »" in shown

@@ -7,17 +7,16 @@ import itertools
 import re
 import shutil
 from collections import Counter
-from collections.abc import Sequence
 from functools import cache
 from html import unescape
 from pathlib import Path
 
 import pytest
-from helpers.ledgers import committed_ledger
+from helpers.edition import edition_rows, formula_is_printed, line_of, misplaced, same_form
 from markupsafe import escape
 
 from pendcli.data.numbers import edition_text
-from pendcli.data.tables import load_paper_table, tables_dir
+from pendcli.data.tables import tables_dir
 from pendcli.output.html.graph import layered_graph
 from pendcli.output.html.locate import locate
 from pendcli.output.html.marks import Placement, place_marks
@@ -182,128 +181,6 @@ def test_no_edge_of_the_propagation_graph_crosses_a_label(paper: str) -> None:
 # --- placement over the three papers' own rows ----------------------------------------------
 
 
-def edition_rows(paper: str) -> tuple[list[dict[str, object]], list[dict[str, object]]]:
-    """The rows as the tables print them (no computation: placement needs only the strings)."""
-    claims: list[dict[str, object]] = [
-        {"id": c.id, "published": c.published, "as_printed": c.as_printed, "ocr": c.ocr,
-         "source": c.source, "note": c.note, "verdict": "agrees", "lines": c.lines}
-        for c in load_paper_table(paper).claims
-    ]  # fmt: skip
-    equations: list[dict[str, object]] = [
-        {"id": r.id, "equation": r.equation, "section": r.section, "statement": r.statement,
-         "status": r.status, "wrong_term": r.wrong_term, "note": r.note or "",
-         "lines": r.lines, "quote": r.quote, "reading": r.reading, "corrected": r.corrected,
-         "printed": r.printed}
-        for r in committed_ledger(paper).rows
-    ]  # fmt: skip
-    return claims, equations
-
-
-_QUOTED = re.compile(r"«\s*(.+?)\s*»")
-
-
-def _own_strings(row: dict[str, object]) -> set[str]:
-    """What a row may be marked by, read from the row here (not by the code under test): a
-    claim's printed forms and the words its OCR note quotes, a ledger row's wrong term,
-    label and quoted words."""
-    fields = ("source", "section", "ocr", "statement", "note")
-    quoted = {q for k in fields for q in _QUOTED.findall(str(row.get(k) or ""))}
-    term = row.get("wrong_term")
-    terms = {term} if isinstance(term, str) else set(term or ())  # type: ignore[arg-type]
-    own = {str(row.get(k) or "") for k in ("published", "as_printed", "equation")}
-    return {s for s in own | terms | quoted if s}
-
-
-def _quotes_of(row: dict[str, object]) -> list[str]:
-    """The row's ``quote`` field (a string or a list), read here."""
-    value = row.get("quote")
-    return [value] if isinstance(value, str) else [str(q) for q in value or ()]  # type: ignore[attr-defined]
-
-
-def quote_is_printed(text: str, row: dict[str, object], mark: Placement,
-                      marks: Sequence[Placement]) -> bool:  # fmt: skip
-    """The pieces of a quote's mark lie within one verbatim occurrence of the quote inside
-    the row's lines (counted here) and cover every word of it: what they leave uncovered
-    is no more than the $ of a formula, blanks and punctuation."""
-    quote, (first, last) = mark.forms[0], row["lines"]  # type: ignore[misc]
-    pieces = [(o.start, o.end) for o in marks
-              if (o.row_id, o.how, o.forms) == (mark.row_id, "quote", mark.forms)]  # fmt: skip
-    lines = text.split("\n")
-    lo = sum(len(line) + 1 for line in lines[: first - 1])
-    hi = lo + len("\n".join(lines[first - 1 : last]))
-    at = text.find(quote, lo, hi)
-    while at >= 0:
-        if all(at <= a and b <= at + len(quote) for a, b in pieces):
-            left = list(text[at : at + len(quote)])
-            for a, b in pieces:
-                left[a - at : b - at] = " " * (b - a)
-            return not re.search(r"\w", "".join(left))
-        at = text.find(quote, at + 1, hi)
-    return False
-
-
-def _digits(s: str) -> Counter[str]:
-    return Counter(re.findall(r"\d+", s))
-
-
-# A number of the ledger's sympy syntax: not the digits of a name (A31, d2U_dz2, theta0), which
-# tell letters apart or spell a derivative the TeX prints with primes or subscripts.
-_NUMBER_TOKEN = re.compile(r"(?<![A-Za-z_0-9])\d+")
-_SUBSCRIPTED = re.compile(r"\b(?:[a-z]|theta|phi|psi|rho|omega|varphi|alpha|beta)(\d)\b")
-
-
-def _digit_share(marked: str, part: str) -> float:
-    """The share of the printed formula's numbers (its digits, exponents and subscripts)
-    that the marked TeX prints too."""
-    part = re.sub(r"\bIntegral\(\s*1\s*,", "Integral(", part)  # ∫dx: no integrand 1 printed
-    wanted = Counter(_NUMBER_TOKEN.findall(part))  # its numbers, and a name's subscript digit
-    wanted += Counter(m.group(1) for m in _SUBSCRIPTED.finditer(part))
-    return sum((wanted & _digits(marked)).values()) / sum(wanted.values()) if wanted else 1.0
-
-
-def _formula_is_printed(marked: str, part: str, others: Sequence[str] = ()) -> bool:
-    """The marked TeX prints most of the formula's numbers, and no other formula of the
-    row's lines more of them: a neighbouring formula misses some."""
-    share = _digit_share(marked, part)
-    return share >= 0.75 and all(_digit_share(o, part) <= share for o in others)
-
-
-def misplaced(paper: str, text: str, claims: list[dict[str, object]],
-               equations: list[dict[str, object]]) -> list[str]:  # fmt: skip
-    """The marks that are not their row's printed string, wrong term, label, quoted words or
-    printed formula, or that lie outside their row's lines (lines counted here)."""
-    rows = {str(r["id"]): r for r in [*claims, *equations]}
-    segments = [(s.tex_start, s.tex_end) for s in math_segments(text)]
-    bad = []
-    marks = place_marks(text, claims, equations)[0]
-    bad += [f"{r} not marked" for r in rows if r not in {m.row_id for m in marks}]
-    for m in marks:
-        row, marked = rows[m.row_id], text[m.start : m.end]
-        if m.how == "formula":  # a formula printed over several displays: all of them
-            marked = " ".join(text[o.start : o.end] for o in marks
-                              if (o.row_id, o.forms) == (m.row_id, m.forms))  # fmt: skip
-        first, last = row["lines"]  # type: ignore[misc]
-        if not first <= _line_of(text, m.start) <= _line_of(text, m.end - 1) <= last:
-            bad.append(f"{m.key}: lines {_line_of(text, m.start)} not in {row['lines']}")
-        elif m.how == "formula":
-            parts = [p.strip() for p in str(row.get("printed") or row["statement"]).split(";")]
-            inside = any(a <= m.start and m.end <= b for a, b in segments)
-            others = [text[a:b] for a, b in segments
-                      if _line_of(text, a) >= first and _line_of(text, b) <= last]  # fmt: skip
-            printed_ok = not row.get("printed") or _formula_is_printed(marked, m.forms[0], others)
-            if not (inside and m.forms[0] in parts and printed_ok):
-                bad.append(f"{m.key}: {marked!r} is not {m.forms[0]!r}")
-        elif m.how == "quote" and m.forms[0] in _quotes_of(row):
-            if not quote_is_printed(text, row, m, marks):
-                bad.append(f"{m.key}: {marked!r} is not {m.forms[0]!r} within its lines")
-        elif m.how == "first":
-            if row.get("printed"):  # a row with a printed form is placed by it
-                bad.append(f"{m.key}: at the first formula of its lines, not by its printed form")
-        elif not any(_same(marked, form) for form in _own_strings(row)):
-            bad.append(f"{m.key}: {marked!r} is none of {sorted(_own_strings(row))}")
-    return bad
-
-
 @pytest.mark.parametrize("paper", PAPERS)
 def test_each_mark_is_what_its_row_prints_and_lies_within_its_lines(paper: str) -> None:
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
@@ -337,8 +214,8 @@ def test_the_placement_check_sees_a_mark_moved_to_a_neighbour() -> None:
     cos_theta1 = str(series["printed"]).split(";")[2]
     own = r"\cos \theta_1 = 1 - \frac{1}{2} u_1^2 - \frac{1}{8} u_1^4"
     neighbour = r"\cos \theta = 1 - \frac{1}{2} u^2 - \frac{1}{8} u^4"
-    assert _formula_is_printed(own, cos_theta1, [neighbour])
-    assert not _formula_is_printed(neighbour, cos_theta1, [own])
+    assert formula_is_printed(own, cos_theta1, [neighbour])
+    assert not formula_is_printed(neighbour, cos_theta1, [own])
 
 
 def test_each_formula_of_a_printed_form_is_marked_at_its_own_formula() -> None:
@@ -362,18 +239,6 @@ def test_each_formula_of_a_printed_form_is_marked_at_its_own_formula() -> None:
     }
     assert numbers == {"tisserand.example.psi_sin2": 198, "tisserand.example.psi_sin4": 198,
                        "tisserand.example.phi_sin2": 200}  # fmt: skip
-
-
-def _same(printed: str, form: str) -> bool:
-    """The printed text is the form, up to the OCR's spacing and TeX spelling."""
-
-    def squash(s: str) -> str:
-        s = re.sub(r"\\q?quad|\\[,;!]|\s|\$", "", s)
-        for tex, char in (("\\theta", "θ"), ("\\pi", "π"), ("\\cdot", "·"), ("^{\\circ}", "°")):
-            s = s.replace(tex, char)
-        return s
-
-    return squash(printed) == squash(form)
 
 
 EXPECTED_PLACES = [
@@ -426,10 +291,6 @@ def _outside_lines(page: str, equations: list[dict[str, object]]) -> list[str]:
     return bad
 
 
-def _line_of(text: str, at: int) -> int:
-    return text[:at].count("\n") + 1
-
-
 @cache  # three tests read the same page and marks of a paper (0.4-0.6 s for Lecornu's)
 def _page_and_marks(paper: str) -> tuple[str, str, tuple[Placement, ...]]:
     """A paper's text, its page of the edition's rows, and the marks placed in its text."""
@@ -450,8 +311,8 @@ def test_every_ledger_row_is_marked_within_its_lines(paper: str) -> None:
     marks = [m for m in placed if m.row_id in lines]
     for m in marks:
         first, last = lines[m.row_id]  # type: ignore[misc]
-        assert first <= _line_of(text, m.start) and _line_of(text, m.end - 1) <= last, m.key
-        assert m.lines == (_line_of(text, m.start), _line_of(text, m.end - 1)), m.key
+        assert first <= line_of(text, m.start) and line_of(text, m.end - 1) <= last, m.key
+        assert m.lines == (line_of(text, m.start), line_of(text, m.end - 1)), m.key
         assert text[m.start : m.end].strip(), m.key
     assert {m.row_id for m in marks} == set(lines)
 
@@ -533,9 +394,9 @@ def _term_fault(text: str, row: dict[str, object], i: int, term: str,
     drawn = rf'class="hl [^"]*\bwrong\b[^"]*" id="at-{re.escape(str(escape(key)))}"'
     if mark is None:
         return f"{key}: no wrong term marked ({term!r})"
-    if not _same(text[mark.start : mark.end], term):
+    if not same_form(text[mark.start : mark.end], term):
         return f"{key}: marks {text[mark.start : mark.end]!r}"
-    if not first <= _line_of(text, mark.start) <= _line_of(text, mark.end - 1) <= last:
+    if not first <= line_of(text, mark.start) <= line_of(text, mark.end - 1) <= last:
         return f"{key}: outside its lines {row['lines']}"
     if not re.search(drawn, edition):
         return f"{key}: not drawn in the page"
@@ -587,8 +448,8 @@ def test_located_counts_only_rows_at_their_own_place(paper: str) -> None:
     for rows, name in ((claims, "printed numbers"), (equations, "equations and stated results")):
         lines = {str(r["id"]): r["lines"] for r in rows}
         inside = {m.row_id for m in marks if m.row_id in lines and m.how != "first"
-                  and lines[m.row_id][0] <= _line_of(text, m.start)  # type: ignore[index]
-                  and _line_of(text, m.end - 1) <= lines[m.row_id][1]}  # type: ignore[index]  # fmt: skip
+                  and lines[m.row_id][0] <= line_of(text, m.start)  # type: ignore[index]
+                  and line_of(text, m.end - 1) <= lines[m.row_id][1]}  # type: ignore[index]  # fmt: skip
         stated = re.search(rf"(\d+) of (\d+) {name} located within their printed lines", page)
         assert stated and int(stated.group(2)) == len(rows), name
         assert int(stated.group(1)) == len(inside), name

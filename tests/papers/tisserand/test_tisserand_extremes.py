@@ -13,7 +13,7 @@ import math
 
 import mpmath
 import pytest
-from test_tisserand import mp_fourier, mp_mean_motions
+from helpers.tisserand_motion import mp_fourier, mp_mean_motions
 
 from pendcli.base.errors import PendcliError
 from pendcli.numerics.spherical import conical_limit, exact_conical, planar_limit_k1
