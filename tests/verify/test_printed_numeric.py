@@ -172,16 +172,11 @@ def _rows() -> dict[str, LedgerRow]:
     return {r.id: r for r in committed_ledger("lecornu").rows}
 
 
+# Each row's status, computed by its printed numbers, is the recorded one: judged once, with
+# every ledger row, in tests/data/test_ledger.py (test_the_engine_computes_the_recorded_status).
 @pytest.mark.parametrize(("row_id", "reference"), NUMERIC_ROWS.items())
-def test_each_numeric_row_has_its_reference_and_its_status_computed(
-    row_id: str, reference: str
-) -> None:
-    row = _rows()[row_id]
-    assert row.reference == reference
-    symbols = committed_ledger("lecornu").symbols_for(row)
-    computed, problem = verify_printed(row, symbols, LECORNU)
-    assert problem is None, problem
-    assert computed is not None and computed.startswith(f"{row.status}: the printed numbers")
+def test_each_numeric_row_has_its_reference(row_id: str, reference: str) -> None:
+    assert _rows()[row_id].reference == reference
 
 
 @pytest.mark.parametrize("row_id", NUMERIC_ROWS)
@@ -325,10 +320,12 @@ def _verified_in(
         ("charbonnier", "charbonnier.result.in-pi", "holds"),
     ],
 )
-def test_the_rows_status_is_computed(paper: str, row_id: str, status: str) -> None:
-    computed, problem = _verified_in(paper, row_id)
-    assert problem is None, problem
-    assert computed is not None and computed.startswith(f"{status}:")
+def test_the_rows_record_the_status_worked_out_by_hand(
+    paper: str, row_id: str, status: str
+) -> None:
+    """The engine computes each recorded status (tests/data/test_ledger.py, every row once):
+    these rows' statuses, worked out by hand, are the recorded ones."""
+    assert next(r for r in committed_ledger(paper).rows if r.id == row_id).status == status
 
 
 def test_tisserands_amplitudes_in_minutes_give_none_of_his_coefficients() -> None:
