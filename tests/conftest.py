@@ -216,14 +216,14 @@ def shared_result_cache(tmp_path_factory: pytest.TempPathFactory) -> str:
 @pytest.fixture
 def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
     """For the tests of a command's output form (its shape, formats, one-line errors): the
-    registry's ``evaluate`` serves the committed tables' claims computed once per process
+    registry's ``claim_rows`` serves the committed tables' claims computed once per process
     (tests/helpers/evaluated.py), so the command runs whole but does not compute its paper's claims
     again for each such test. No test of a computation uses it."""
     from helpers.evaluated import committed_claims
 
     from pendcli.papers import registry
 
-    monkeypatch.setattr(registry, "evaluate", lambda key: list(committed_claims(key)))
+    monkeypatch.setattr(registry, "claim_rows", lambda key: list(committed_claims(key)))
 
 
 @pytest.fixture

@@ -87,11 +87,10 @@ def _nothing_to_explain(claim: str) -> Exception:
 
 
 def _explained(key: str, claim: str | None) -> list[ExplainedRow]:
-    from pendcli.papers.registry import evaluate as evaluate_paper
-    from pendcli.papers.registry import explanations
+    from pendcli.papers.registry import claim_rows, explanations
     from pendcli.verify.explain import explain_rows
 
-    verdicts = {r.id: (r.verdict, r.cause, r.published) for r in evaluate_paper(key)}
+    verdicts = {r.id: (r.verdict, r.cause, r.published) for r in claim_rows(key)}
     return explain_rows(key, explanations(key), verdicts, claim, progress=_progress(key))
 
 

@@ -48,7 +48,7 @@ _SUP = dict(
 # x_(…), x_{…}, x^{…}, x^(…): one level of nested parentheses inside
 _SCRIPT = re.compile(r"([_^])(?:\(((?:[^()]|\([^()]*\))*)\)|\{((?:[^{}]|\{[^{}]*\})*)\})")
 # a module named in a note, « (verify/printed_numeric) »: the reader needs what, not where
-_MODULE = re.compile(r"\s*\((?:pendcli/)?(?:core|base|data|verify|output|run|render|numerics|papers)/[\w/.]+\)")
+_MODULE = re.compile(r"\s*\((?:pendcli/)?(?:base|data|verify|output|run|numerics|papers)/[\w/.]+\)")
 
 
 def printed_units(text: str) -> str:

@@ -33,8 +33,8 @@ if TYPE_CHECKING:
 __all__ = [
     "PAPERS",
     "all_papers",
+    "claim_rows",
     "equation_rows",
-    "evaluate",
     "formula_checks",
     "keys",
     "ledger_papers",
@@ -96,7 +96,7 @@ def resolve_papers(name: str | None) -> tuple[str, ...]:
     return (key,)
 
 
-def evaluate(key: str) -> list[ClaimRow]:
+def claim_rows(key: str) -> list[ClaimRow]:
     """Every published claim of paper ``key`` judged against its recomputation and, where the
     paper knows the author's procedure, against that procedure on his printed inputs."""
     from pendcli.verify.claims import evaluate_paper

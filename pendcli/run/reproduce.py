@@ -22,7 +22,7 @@ from pendcli.data.vocabulary import (
 )
 from pendcli.output.columns import Column, Row, Section
 from pendcli.output.summary import disagrees
-from pendcli.papers.registry import evaluate, formula_checks
+from pendcli.papers.registry import claim_rows, formula_checks
 from pendcli.verify.claims import ClaimRow, FormulaRow
 
 if TYPE_CHECKING:
@@ -507,7 +507,7 @@ def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
 def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
     key, what = step
     if what == "claims":
-        return evaluate(key)
+        return claim_rows(key)
     if what == "formulas":
         return formula_checks(key)
     if what.startswith(("equations", "formulas+equations")):

@@ -3,7 +3,7 @@
 A paper's :class:`~pendcli.papers.paper.Paper` (listed in :mod:`pendcli.papers.registry`)
 gives ``recompute() -> dict[id, Recomputed]``. :func:`evaluate_paper` loads the paper's
 published table, calls it, and judges every claim. This module knows no paper: callers
-pass the recomputation (the registry's :func:`~pendcli.papers.registry.evaluate` looks it up).
+pass the recomputation (the registry's :func:`~pendcli.papers.registry.claim_rows` looks it up).
 Every published entry must have a recomputation and every recomputation a published entry:
 a claim without a computation is a defect, reported as an error, never silently skipped.
 """

@@ -30,7 +30,7 @@ from helpers.cli import NO_BYTECODE, assert_clean_error, invoke
 
 from pendcli.base.errors import PendcliError
 from pendcli.data.tables import clear_table_cache
-from pendcli.papers.registry import PAPERS, evaluate
+from pendcli.papers.registry import PAPERS, claim_rows
 from pendcli.run.drift import CLAIM_COLUMNS
 
 REPO_TABLES = Path(__file__).resolve().parents[2] / "tables"
@@ -273,7 +273,7 @@ def test_every_renamed_claim_id_is_a_named_error(tables_copy: Path, key: str) ->
         path = rename_claim(tables_copy, key, claim_id)
         clear_table_cache()
         with pytest.raises(PendcliError) as err:
-            evaluate(key)
+            claim_rows(key)
         message = str(err.value)
         assert str(path) in message and repr(claim_id) in message and "renamed" in message
         path.write_text(pristine, "utf-8")

@@ -105,9 +105,9 @@ def _refuse_to_compute(monkeypatch: pytest.MonkeyPatch) -> None:
     # restore them, failing every later test of this worker (seen under -n 2)
     import pendcli.run.reproduce  # noqa: F401
 
-    for name in ("evaluate", "formula_checks", "equation_rows", "stability_rows"):
+    for name in ("claim_rows", "formula_checks", "equation_rows", "stability_rows"):
         monkeypatch.setattr(registry, name, computed)
-    monkeypatch.setattr("pendcli.run.reproduce.evaluate", computed)
+    monkeypatch.setattr("pendcli.run.reproduce.claim_rows", computed)
     monkeypatch.setattr("pendcli.run.reproduce.formula_checks", computed)
 
 
@@ -275,9 +275,9 @@ def test_concurrent_writers_leave_a_whole_entry(tmp_path):
 
 
 def test_rows_round_trip_exactly():
-    from pendcli.papers.registry import evaluate, formula_checks
+    from pendcli.papers.registry import claim_rows, formula_checks
 
-    claims, formulas = evaluate("charbonnier"), formula_checks("charbonnier")
+    claims, formulas = claim_rows("charbonnier"), formula_checks("charbonnier")
     for cls, rows in ((ClaimRow, claims), (FormulaRow, formulas)):
         back = rows_from_json(cls, json.loads(json.dumps(rows_to_json(rows))))
         assert back == rows

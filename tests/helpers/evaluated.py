@@ -10,7 +10,7 @@ import os
 from functools import cache
 
 from pendcli.data.rows import ClaimRow, FormulaRow
-from pendcli.papers.registry import evaluate, formula_checks
+from pendcli.papers.registry import claim_rows, formula_checks
 
 
 def _committed_tables_only() -> None:
@@ -20,7 +20,7 @@ def _committed_tables_only() -> None:
 
 
 def committed_claims(key: str) -> tuple[ClaimRow, ...]:
-    """``evaluate(key)`` of the committed tables, computed once per process."""
+    """``claim_rows(key)`` of the committed tables, computed once per process."""
     _committed_tables_only()
     return _claims(key)
 
@@ -33,7 +33,7 @@ def committed_formulas(key: str) -> tuple[FormulaRow, ...]:
 
 @cache
 def _claims(key: str) -> tuple[ClaimRow, ...]:
-    return tuple(evaluate(key))
+    return tuple(claim_rows(key))
 
 
 @cache

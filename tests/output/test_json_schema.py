@@ -115,7 +115,7 @@ def test_docs_schema_section_is_generated_from_the_schema():
 
 def test_every_disagreement_is_explained():
     """A verdict other than `agrees` carries a note; a failing formula says what is right.
-    The rows `reproduce` computes (the registry's evaluate and formula_checks), computed once
+    The rows `reproduce` computes (the registry's claim_rows and formula_checks), computed once
     per process for the tests that read them (tests/helpers/evaluated.py)."""
     for row in (r.as_dict() for key in PAPERS for r in committed_claims(key)):
         if row["verdict"] != "agrees":
