@@ -36,7 +36,7 @@ FORBIDDEN = {
 # The layers, bottom up: a module of the first four imports only its own layer or one below
 # (imports inside functions and under TYPE_CHECKING included). The papers, the run, the outputs
 # and the CLI above have their own rules (FORBIDDEN, tests/papers/test_paper_contract.py).
-LAYERS = ("base", "data", "verify", "numerics", "papers", "run", "output", "cli")
+LAYERS = ("base", "data", "verify", "numerics", "papers", "output", "run", "cli")
 CHECKED_LAYERS = ("base", "data", "verify", "numerics")
 # module -> the modules of a higher layer it still imports, each named: the ledger's loader
 # refuses a row by the engine's rules (its kind, blame, companions' shape, formulas, step)
