@@ -16,7 +16,12 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.papers.lecornu.references_tools import cited, make_reference, real_symbols
+from pendcli.papers.lecornu.references_tools import (
+    cited,
+    make_reference,
+    real_symbols,
+    zero_start_forced,
+)
 
 
 def _upper_limit_derivative(name: str, lower: Any) -> Any:
@@ -201,23 +206,6 @@ def reference_elongation_arc() -> Any:
 
 
 @cache
-def _zero_start_forced(rhs: Any, tau: Any, degree: int) -> Any:
-    """The solution of y'' + y = rhs(τ) with y(0) = y'(0) = 0, rhs a polynomial in τ times
-    cos τ and sin τ: undetermined coefficients (polynomials of ``degree``), solved by
-    sympy's linear solver."""
-    a = sp.symbols(f"a0:{degree + 1}")
-    c = sp.symbols(f"c0:{degree + 1}")
-    trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau)
-    trial += sum(c[k] * tau**k for k in range(degree + 1)) * sp.sin(tau)
-    residual = sp.expand(trial.diff(tau, 2) + trial - rhs)
-    equations = [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
-    for trig in (sp.cos(tau), sp.sin(tau)):
-        equations.extend(sp.Poly(residual.coeff(trig), tau).all_coeffs())
-    (solution,) = sp.linsolve(equations, [*a, *c])
-    return sp.expand(trial.subs(dict(zip((*a, *c), solution, strict=True))))
-
-
-@cache
 def reference_variation_of_constants() -> Any:
     """Lines 624-634: u0 the general solution A sin γt + B cos γt of u0'' + γ²u0 = 0, and
     u1, u2 the solutions of u_n'' + γ²u_n = −γt u_(n−1)'' that start at 0 with zero slope
@@ -227,7 +215,7 @@ def reference_variation_of_constants() -> Any:
     parts = [big_a * sp.sin(tau) + big_b * sp.cos(tau)]
     for n in (1, 2):
         forcing = sp.expand(-tau * parts[-1].diff(tau, 2))
-        parts.append(_zero_start_forced(forcing, tau, 2 * n))
+        parts.append(zero_start_forced(forcing, tau, 2 * n))
     names = ("u0", "u1", "u2")
     exact = {name: part.subs(tau, gamma * t) for name, part in zip(names, parts, strict=True)}
     return make_reference(exact, "the hierarchy of (27) solved by undetermined coefficients")

@@ -16,7 +16,11 @@ from typing import Any
 import sympy as sp
 
 from pendcli.papers.lecornu.references_conical_planes import first_order_solution
-from pendcli.papers.lecornu.references_tools import make_reference, real_symbols
+from pendcli.papers.lecornu.references_tools import (
+    make_reference,
+    real_symbols,
+    zero_start_forced,
+)
 from pendcli.papers.taylor import taylor
 
 # --- § III, (39)-(42'): the perturbation of (38) by the lengthening (lines 818-934) -------
@@ -24,30 +28,6 @@ from pendcli.papers.taylor import taylor
 
 def _u_symbols() -> list[Any]:
     return real_symbols("u", "k", "p")
-
-
-def _forced_solution(source: Any) -> Any:
-    """The solution of y'' + y = source with y(0) = y'(0) = 0, source a sum of uⁿ cos mu,
-    uⁿ sin mu (m = 1, 3): undetermined coefficients (n <= 4), solved by sympy."""
-    from sympy.simplify.fu import TR8
-
-    (u,) = real_symbols("u")
-    unknowns, guess = [], sp.Integer(0)
-    for n in range(5):
-        for m in (1, 3):
-            a, b = sp.symbols(f"a{n}_{m} b{n}_{m}")
-            unknowns += [a, b]
-            guess += a * u**n * sp.cos(m * u) + b * u**n * sp.sin(m * u)
-    residual = sp.expand(TR8(sp.expand(guess.diff(u, 2) + guess - source)))
-    equations = [
-        residual.coeff(f(m * u)).coeff(u, n)
-        for n in range(6)
-        for m in (1, 3)
-        for f in (sp.cos, sp.sin)
-    ]
-    equations += [guess.subs(u, 0), guess.diff(u).subs(u, 0)]
-    solved = sp.solve(equations, unknowns, dict=True)[0]
-    return sp.expand(guess.subs(solved).subs({c: 0 for c in unknowns}))
 
 
 @cache
@@ -59,8 +39,8 @@ def _slow_finite() -> dict[str, Any]:
     omega = 2 * k * sp.cos(u) + k**3 / 24 * f
     forcing = sp.expand(-(u * omega.diff(u, 2) + 2 * omega.diff(u)))
     big_a, big_b = forcing.coeff(k, 1), forcing.coeff(k, 3)
-    beta = _forced_solution(big_a)
-    delta = _forced_solution(big_b + 2 * beta * sp.cos(u) ** 2)
+    beta = zero_start_forced(big_a, u, 4, (1, 3))
+    delta = zero_start_forced(big_b + 2 * beta * sp.cos(u) ** 2, u, 4, (1, 3))
     theta = omega + p * (k * beta + k**3 * delta)
     return {
         "f": f,

@@ -15,6 +15,7 @@ from typing import Any
 import sympy as sp
 
 from pendcli.papers.lecornu.references_base import phi_of, reference, symbols
+from pendcli.papers.lecornu.references_tools import zero_start_forced
 from pendcli.papers.taylor import taylor
 from pendcli.verify.printed_check import Reference
 
@@ -164,25 +165,6 @@ def reference_eq27_from_9() -> Any:
     return reference({"d2u_dt2": (gamma / p) ** 2 * (-u / x), "r": gamma}, "(9) in t")
 
 
-def _forced_oscillator(rhs: Any, tau: Any, degree: int) -> Any:
-    """The solution of U'' + U = rhs(τ) with U(0) = U'(0) = 0, rhs a polynomial in τ times
-    cos τ, sin τ: undetermined coefficients (a polynomial of ``degree`` on each), solved
-    linearly."""
-    a = sp.symbols(f"a0:{degree + 1}")
-    c = sp.symbols(f"c0:{degree + 1}")
-    trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau) + sum(
-        c[k] * tau**k for k in range(degree + 1)
-    ) * sp.sin(tau)
-    residual = sp.expand(trial.diff(tau, 2) + trial - rhs)
-    equations = []
-    for trig in (sp.cos(tau), sp.sin(tau)):
-        part = sp.Poly(residual.coeff(trig), tau)
-        equations.extend(part.all_coeffs())
-    equations += [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
-    solution = sp.solve(equations, [*a, *c], dict=True)[0]
-    return sp.expand(trial.subs(solution).subs({k: 0 for k in (*a, *c)}))
-
-
 @cache
 def _eq27_solution() -> tuple[Any, Any, Any]:
     """(27) with u(0) = 0, u'(0) = γ to p² (line 638): u0 = sin γt and, in τ = γt (line 626),
@@ -191,7 +173,7 @@ def _eq27_solution() -> tuple[Any, Any, Any]:
     tau = sp.Dummy("tau")
     parts = [sp.sin(tau)]
     for n in (1, 2):
-        parts.append(_forced_oscillator(-tau * parts[-1].diff(tau, 2), tau, 2 * n))
+        parts.append(zero_start_forced(-tau * parts[-1].diff(tau, 2), tau, 2 * n))
     u = sum(part * p**k for k, part in enumerate(parts)).subs(tau, gamma * t)
     return u, t, p
 
