@@ -264,10 +264,3 @@ def reference_amplitude_series() -> Any:
         "fu": 9 * sp.cos(u) - sp.cos(3 * u) + 12 * u * sp.sin(u),
     }
     return make_reference(exact, "am u through k³, (35) at C = 0")
-
-
-@cache
-def reference_identity() -> Any:
-    """No substitution: the formula is an identity in its own symbols (checked at random
-    rational points)."""
-    return make_reference({}, "an identity")
