@@ -14,8 +14,7 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.papers.lecornu.references_base import phi_of, reference, symbols
-from pendcli.papers.lecornu.references_tools import zero_start_forced
+from pendcli.papers.lecornu.references_base import phi_of, reference, symbols, zero_start_forced
 from pendcli.papers.taylor import taylor
 from pendcli.verify.printed_check import Reference
 
