@@ -123,13 +123,13 @@ def zero_start_forced(rhs: Any, tau: Any, degree: int, frequencies: tuple[int, .
     solver (the solution is unique: no free oscillation starts at rest)."""
     from sympy.simplify.fu import TR8
 
-    unknowns, trial, waves = [], sp.Integer(0), []
-    for m in frequencies:
-        for wave in (sp.cos(m * tau), sp.sin(m * tau)):
-            coefficients = sp.symbols(f"c{len(waves)}_0:{degree + 1}")
-            unknowns += coefficients
-            trial += sum(c * tau**k for k, c in enumerate(coefficients)) * wave
-            waves.append(wave)
+    waves = [wave(m * tau) for m in frequencies for wave in (sp.cos, sp.sin)]
+    unknowns: list[Any] = []
+    trial = sp.Integer(0)
+    for number, wave in enumerate(waves):
+        coefficients = sp.symbols(f"c{number}_0:{degree + 1}")
+        unknowns += coefficients
+        trial += sum(c * tau**k for k, c in enumerate(coefficients)) * wave
     residual = sp.expand(TR8(sp.expand(trial.diff(tau, 2) + trial - rhs)))
     equations = [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
     for wave in waves:
