@@ -213,17 +213,12 @@ def _orders() -> dict[str, Any]:
     return exact
 
 
-# n° 5, lines 129-131 (the expanded equation) and 137-139 (the system of the orders)
+# n° 5, lines 129-131 (the expanded equation), 133-135 (Taylor's formula for φ) and 137-139
+# (the system of the orders)
 def reference_expansion() -> Reference:
-    """n° 5: (119) with (125), the θj'' from ε⁰, ε¹, ε², compared through ε²."""
-    exact = {k: v for k, v in _orders().items() if k != "varphi"}
-    return Reference(exact, what="(119) with (125), through ε²")
-
-
-# n° 5, lines 133-135: Taylor's formula for φ
-def reference_taylor() -> Reference:
-    """n° 5, Taylor's formula: φ along θ = θ0 + εθ1 + ε²θ2, compared through ε."""
-    return Reference(_orders(), what="φ(θ0 + εθ1 + …), through ε")
+    """n° 5: (119) with (125), the θj'' from ε⁰, ε¹, ε², and φ along θ = θ0 + εθ1 + ε²θ2
+    (Taylor's formula), compared through ε² (φ's through ε, as its row says)."""
+    return Reference(_orders(), what="(119) with (125), through ε²")
 
 
 # n° 7, lines 163-165: θ1's equation with the principal motion put in φ

@@ -41,11 +41,14 @@ def _monomial(phase: bool, power: Any = None) -> dict[str, Any]:
     return exact
 
 
-# n° 13, 1°, line 376: E_c(π) = 0 and ΔT = 0 for a constant resistance (n = 0 of n° 14)
+# n° 13, 1°, line 376: E_c(π) = 0 and ΔT = 0 for a constant resistance (n = 0 of n° 14);
+# n° 16, 1°, lines 512-518: the count P of simple oscillations until rest (n = 0)
 def reference_constant_resistance() -> Reference:
-    """n° 13, 1°: ΔT and E_c(π) for a constant resistance F = B_0 (E of kt), through c."""
+    """n° 13, 1°: ΔT and E_c(π) for a constant resistance F = B_0 (E of kt), through c; n° 16:
+    the count P = α/|Δα| of simple oscillations until rest."""
     exact = _monomial(phase=True, power=0)
-    return Reference(exact, what="F = B_0")
+    exact["P"] = ledger_symbols("alpha")[0] / (-exact["Delta_alpha"])
+    return Reference(exact, what="F = B_0, P = α over the loss of amplitude per oscillation")
 
 
 # n° 14, line 421: b_n vⁿ named the acceleration of the resistance
@@ -132,14 +135,6 @@ def reference_friction_in_g_and_t() -> Reference:
     in_g_t = {k: sp.pi / big_t, l0: g * big_t**2 / sp.pi**2}
     shift = exact["Delta_alpha"].subs(in_g_t, simultaneous=True)
     return Reference({"Delta_x": shift}, what="Δα of F = B_0 in g and T")
-
-
-# n° 16, 1°, lines 512-518: the count P of simple oscillations until rest (n = 0)
-def reference_friction() -> Reference:
-    """n° 16: n = 0, F = B_0: the count P = α/|Δα| of simple oscillations until rest."""
-    exact = _monomial(phase=True, power=0)
-    exact["P"] = ledger_symbols("alpha")[0] / (-exact["Delta_alpha"])
-    return Reference(exact, what="α over the loss of amplitude per oscillation, F = B_0")
 
 
 def _monomial_case(power: Any) -> Reference:

@@ -16,7 +16,7 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.papers.lecornu.references_tools import cited, make_reference, real_symbols
+from pendcli.papers.lecornu.references_base import cited, reference, symbols, zero_start_forced
 
 
 def _upper_limit_derivative(name: str, lower: Any) -> Any:
@@ -43,9 +43,9 @@ def reference_tail_expansion() -> Any:
     aa here), judged by their a-derivative (the integrands at λ = a; both sides vanish as
     a → ∞); the root's series in 1/a with a√x, the weight's argument, held fixed:
     a = 1/ε, x -> ε²x, through ε⁶."""
-    aa, x = real_symbols("aa", "x")
+    aa, x = symbols("aa", "x")
     eps = sp.Symbol("eps_", positive=True)
-    return make_reference(
+    return reference(
         {"aa": 1 / eps, "x": eps**2 * x},
         "the a-derivative, a = 1/ε, a√x fixed",
         transform=lambda residual: residual.diff(aa),
@@ -57,9 +57,9 @@ def reference_small_p_series() -> Any:
     """Line 440: an identity between integrals ∫_(2a√x)^h, judged by its h-derivative (the
     integrands at p = h) and its value at h = 2a√x; the exponential's series is truncated
     as printed, so h is scaled by ε (through ε: the terms 1/p, 1, p of the integrands)."""
-    aa, hh, x = real_symbols("aa", "hh", "x")
+    aa, hh, x = symbols("aa", "hh", "x")
     eps = sp.Symbol("eps_", positive=True)
-    return make_reference(
+    return reference(
         {"hh": eps * hh},
         "the h-derivative and the value at h = 2a√x, h -> εh",
         transform=_upper_limit_derivative("hh", 2 * aa * sp.sqrt(x)),
@@ -73,7 +73,7 @@ def reference_small_x() -> Any:
     vanish with x), θ = u/l with C = (b²/g)k (line 406); x and l scaled by ε. Each residual
     must stay finite as ε -> 0+: the parts that grow as x -> 0 (1/x, log x) must agree, a
     finite remainder (the text's « nombre fini », F) is free."""
-    x, length, alpha, big_c, k, b, g = real_symbols("x", "l", "alpha", "C", "k", "b", "g")
+    x, length, alpha, big_c, k, b, g = symbols("x", "l", "alpha", "C", "k", "b", "g")
     eps = sp.Symbol("eps_", positive=True)
 
     def ratio(at: Any) -> Any:  # u/(Cx) of the second (18), through o(1) as x -> 0
@@ -88,7 +88,7 @@ def reference_small_x() -> Any:
     small = eps * x
     exact = {"x": small, "u": big_c * small * ratio(small), "l": eps * length}
     exact["theta"] = k * ratio(g * eps * length / b**2)
-    return make_reference(exact, "the second (18) in closed form, x -> εx")
+    return reference(exact, "the second (18) in closed form, x -> εx")
 
 
 @cache
@@ -96,19 +96,19 @@ def reference_quarter_power() -> Any:
     """Lines 466-499: v = x^p cos 2√x, w = x^p sin 2√x (lines 470, 490), u = Av + Bw ((20),
     « la fonction u, définie par l'équation (20) »), their derivatives by sympy, and p = 1/4,
     the exponent the text fixes at line 468 before it differentiates."""
-    x, big_a, big_b = real_symbols("x", "A", "B")
+    x, big_a, big_b = symbols("x", "A", "B")
     quarter = sp.Rational(1, 4)
     v = x**quarter * sp.cos(2 * sp.sqrt(x))
     w = x**quarter * sp.sin(2 * sp.sqrt(x))
     u = big_a * v + big_b * w
     exact = {"v": v, "w": w, "u": u, "p": quarter, "dv_dx": v.diff(x)}
     exact.update({"d2v_dx2": v.diff(x, 2), "d2w_dx2": w.diff(x, 2), "d2u_dx2": u.diff(x, 2)})
-    return make_reference(exact, "v, w, u = Av + Bw with p = 1/4, differentiated")
+    return reference(exact, "v, w, u = Av + Bw with p = 1/4, differentiated")
 
 
 def _twenty(x: Any) -> Any:
     """(20): u = A x^(1/4) cos 2√x + B x^(1/4) sin 2√x (p = 1/4, line 468)."""
-    big_a, big_b = real_symbols("A", "B")
+    big_a, big_b = symbols("A", "B")
     root = 2 * sp.sqrt(x)
     return x ** sp.Rational(1, 4) * (big_a * sp.cos(root) + big_b * sp.sin(root))
 
@@ -116,17 +116,15 @@ def _twenty(x: Any) -> Any:
 @cache
 def reference_eq21_from_20() -> Any:
     """(21): θ = u/l (line 110) with u of (20) at x = gl/b²."""
-    length, b, g = real_symbols("l", "b", "g")
-    return make_reference(
-        {"theta": _twenty(g * length / b**2) / length}, "(20), θ = u/l, x = gl/b²"
-    )
+    length, b, g = symbols("l", "b", "g")
+    return reference({"theta": _twenty(g * length / b**2) / length}, "(20), θ = u/l, x = gl/b²")
 
 
 def _twenty_two_constants() -> dict[str, Any]:
     """A, B of (20)-(21) through the « deux nouvelles constantes » R, φ of (22):
     A cos X + B sin X = (b²/g)^(1/4) R sin(X − φ) for every X."""
-    b, g, big_r, phi = real_symbols("b", "g", "R", "phi")
-    big_a, big_b = real_symbols("A", "B")
+    b, g, big_r, phi = symbols("b", "g", "R", "phi")
+    big_a, big_b = symbols("A", "B")
     scale = (b**2 / g) ** sp.Rational(1, 4) * big_r
     return {big_a: -scale * sp.sin(phi), big_b: scale * sp.cos(phi)}
 
@@ -134,24 +132,22 @@ def _twenty_two_constants() -> dict[str, Any]:
 @cache
 def reference_eq22_from_21() -> Any:
     """(22): (21) with A, B written through R, φ."""
-    length, b, g = real_symbols("l", "b", "g")
+    length, b, g = symbols("l", "b", "g")
     theta = _twenty(g * length / b**2) / length
-    return make_reference(
-        {"theta": theta.subs(_twenty_two_constants())}, "(21) with A, B from R, φ"
-    )
+    return reference({"theta": theta.subs(_twenty_two_constants())}, "(21) with A, B from R, φ")
 
 
 def _phase_at(length: Any, zero: Any) -> Any:
     """φ for which (22)'s sine argument (2/b)√(gl) − φ equals ``zero`` at ``length``."""
-    b, g = real_symbols("b", "g")
+    b, g = symbols("b", "g")
     return 2 / b * sp.sqrt(g * length) - zero
 
 
 @cache
 def reference_vertical_passages() -> Any:
     """(23): θ of (22) vanishes where its sine's argument is a multiple λπ of π."""
-    length, lam = real_symbols("l", "lam")
-    return make_reference({"phi": _phase_at(length, lam * sp.pi)}, "(22) = 0 at l: argument λπ")
+    length, lam = symbols("l", "lam")
+    return reference({"phi": _phase_at(length, lam * sp.pi)}, "(22) = 0 at l: argument λπ")
 
 
 @cache
@@ -159,19 +155,19 @@ def reference_next_passage() -> Any:
     """Lines 519-527: the first passage at l, its argument λπ (λ = m, line 519), l' the
     length of the next ((22) = 0 with argument (λ + 1)π); b scaled by ε (π²b²/(4gl)
     neglected), through ε."""
-    length, b, g, lam = real_symbols("l", "b", "g", "lam")
+    length, b, g, lam = symbols("l", "b", "g", "lam")
     eps = sp.Symbol("eps_", positive=True)
     phi = _phase_at(length, lam * sp.pi)
     following = b**2 / (4 * g) * (phi + (lam + 1) * sp.pi) ** 2  # (22)'s argument (λ + 1)π
     exact = {"lp": following.subs(b, eps * b), "b": eps * b, "mm": lam}
     exact["phi"] = phi.subs(b, eps * b)
-    return make_reference(exact, "(22) = 0 at l and l', b -> εb")
+    return reference(exact, "(22) = 0 at l and l', b -> εb")
 
 
 def _elongation_tangent(length: Any) -> Any:
     """tg of (22)'s argument X at an elongation: dθ/dl = R l^(-3/4)(X' cos X − 3 sin X/(4l))
     vanishes (sympy's derivative of (22), its cos X and sin X coefficients)."""
-    big_r, phi = real_symbols("R", "phi")
+    big_r, phi = symbols("R", "phi")
     arc = sp.Symbol("X_aux", real=True)
     ell = sp.Symbol("l_aux", positive=True)
     argument = _phase_at(ell, 0) - phi
@@ -184,37 +180,20 @@ def _elongation_tangent(length: Any) -> Any:
 @cache
 def reference_elongation_condition() -> Any:
     """Line 535: the φ for which l is an elongation of (22): X = arctg of the tangent found."""
-    (length,) = real_symbols("l")
+    (length,) = symbols("l")
     phi = _phase_at(length, sp.atan(_elongation_tangent(length)))
-    return make_reference({"phi": phi}, "dθ/dl = 0 for θ of (22)")
+    return reference({"phi": phi}, "dθ/dl = 0 for θ of (22)")
 
 
 @cache
 def reference_elongation_arc() -> Any:
     """(24): the same arc written (2λ + 1)π/2 − arctg(1/tangent) (λ an integer), b scaled
     by ε (b/√(gl) small), through ε²."""
-    length, lam, b = real_symbols("l", "lam", "b")
+    length, lam, b = symbols("l", "lam", "b")
     eps = sp.Symbol("eps_", positive=True)
     arc = (2 * lam + 1) * sp.pi / 2 - sp.atan(1 / _elongation_tangent(length))
     phi = _phase_at(length, arc).subs(b, eps * b)
-    return make_reference({"phi": phi, "b": eps * b}, "dθ/dl = 0, b -> εb")
-
-
-@cache
-def _zero_start_forced(rhs: Any, tau: Any, degree: int) -> Any:
-    """The solution of y'' + y = rhs(τ) with y(0) = y'(0) = 0, rhs a polynomial in τ times
-    cos τ and sin τ: undetermined coefficients (polynomials of ``degree``), solved by
-    sympy's linear solver."""
-    a = sp.symbols(f"a0:{degree + 1}")
-    c = sp.symbols(f"c0:{degree + 1}")
-    trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau)
-    trial += sum(c[k] * tau**k for k in range(degree + 1)) * sp.sin(tau)
-    residual = sp.expand(trial.diff(tau, 2) + trial - rhs)
-    equations = [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
-    for trig in (sp.cos(tau), sp.sin(tau)):
-        equations.extend(sp.Poly(residual.coeff(trig), tau).all_coeffs())
-    (solution,) = sp.linsolve(equations, [*a, *c])
-    return sp.expand(trial.subs(dict(zip((*a, *c), solution, strict=True))))
+    return reference({"phi": phi, "b": eps * b}, "dθ/dl = 0, b -> εb")
 
 
 @cache
@@ -222,15 +201,15 @@ def reference_variation_of_constants() -> Any:
     """Lines 624-634: u0 the general solution A sin γt + B cos γt of u0'' + γ²u0 = 0, and
     u1, u2 the solutions of u_n'' + γ²u_n = −γt u_(n−1)'' that start at 0 with zero slope
     (line 628), by undetermined coefficients."""
-    t, gamma, big_a, big_b = real_symbols("t", "gamma", "A", "B")
+    t, gamma, big_a, big_b = symbols("t", "gamma", "A", "B")
     tau = sp.Symbol("tau_aux", real=True)  # γt: the hierarchy is then free of γ
     parts = [big_a * sp.sin(tau) + big_b * sp.cos(tau)]
     for n in (1, 2):
         forcing = sp.expand(-tau * parts[-1].diff(tau, 2))
-        parts.append(_zero_start_forced(forcing, tau, 2 * n))
+        parts.append(zero_start_forced(forcing, tau, 2 * n))
     names = ("u0", "u1", "u2")
     exact = {name: part.subs(tau, gamma * t) for name, part in zip(names, parts, strict=True)}
-    return make_reference(exact, "the hierarchy of (27) solved by undetermined coefficients")
+    return reference(exact, "the hierarchy of (27) solved by undetermined coefficients")
 
 
 @cache
@@ -238,7 +217,7 @@ def reference_mean_pendulum() -> Any:
     """Lines 666-676: t the period of (27)'s solution to p² (reference_root_epsilon, through
     p²), l = a + bt/2 the length at t/2 (line 666); the printed decimals roundings."""
     root = cited("reference_root_epsilon")
-    (a,) = real_symbols("a")
+    (a,) = symbols("a")
     exact = dict(root.exact)
     exact["l"] = a + exact["b"] * exact["t"] / 2
-    return make_reference(exact, "the root of (27)'s solution, l = a + bt/2")
+    return reference(exact, "the root of (27)'s solution, l = a + bt/2")

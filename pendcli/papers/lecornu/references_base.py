@@ -1,15 +1,16 @@
-"""Lecornu (1894), §§ I-II: what the references of lines 1-698 share. The builders are in the
-section modules (references_motion, references_small, references_numeric, references_general,
-references_integral, references_slow); here: sympy symbols named as the ledger's
-(``tables/equations/lecornu.toml`` [symbols]), the printed-form engine's Reference, φ of (10)
-and the second solution of (9), √x Z₁(2√x) (Z₁ = J₁ or Y₁), and the roots of the bob's path
-and of φ (a scan, refined by mpmath at 40 digits).
+"""Lecornu (1894): what the references of its section modules share (references.py lists
+them). Here: sympy symbols named as the ledger's (``tables/equations/lecornu.toml``
+[symbols]), the printed-form engine's Reference, φ of (10) and the second solution of (9),
+√x Z₁(2√x) (Z₁ = J₁ or Y₁), the roots of the bob's path and of φ (a scan, refined by mpmath at
+40 digits), the chain rule along given rates, a forced oscillator started at rest, and a
+reference another module keeps, looked up in the paper's table.
 
 scipy is imported inside the functions; sympy at the top (the table is read only to judge).
 """
 
 from __future__ import annotations
 
+from functools import cache
 from typing import Any
 
 import mpmath
@@ -19,7 +20,9 @@ from pendcli.data.printed import ledger_symbols as symbols
 from pendcli.verify.printed_check import Reference
 
 __all__ = [
+    "cited",
     "cylinder",
+    "derivative_along",
     "float40",
     "mpmath_str",
     "phi_of",
@@ -27,6 +30,7 @@ __all__ = [
     "roots_of",
     "scan_roots",
     "symbols",
+    "zero_start_forced",
 ]
 
 
@@ -100,3 +104,44 @@ def roots_of(kind: str, which: str, low: float, high: float) -> list[Any]:
     return scan_roots(
         lambda x: pick(exact(x), x), lambda x: pick(coarse(x), x), low, high, int(20 * high)
     )
+
+
+def derivative_along(rates: dict[Any, Any]) -> Any:
+    """The derivative along a motion: f -> Σ ∂f/∂s · rate(s), over the symbols of ``rates``."""
+
+    def derivative(f: Any) -> Any:
+        return sp.Add(*(sp.diff(f, s) * v for s, v in rates.items()))
+
+    return derivative
+
+
+@cache
+def zero_start_forced(rhs: Any, tau: Any, degree: int, frequencies: tuple[int, ...] = (1,)) -> Any:
+    """The solution of y'' + y = rhs(τ) with y(0) = y'(0) = 0, rhs a sum of polynomials in τ
+    times cos mτ and sin mτ (m in ``frequencies``; products of them turned into sums, TR8):
+    undetermined coefficients (a polynomial of ``degree`` on each), solved by sympy's linear
+    solver (the solution is unique: no free oscillation starts at rest)."""
+    from sympy.simplify.fu import TR8
+
+    waves = [wave(m * tau) for m in frequencies for wave in (sp.cos, sp.sin)]
+    unknowns: list[Any] = []
+    trial = sp.Integer(0)
+    for number, wave in enumerate(waves):
+        coefficients = sp.symbols(f"c{number}_0:{degree + 1}")
+        unknowns += coefficients
+        trial += sum(c * tau**k for k, c in enumerate(coefficients)) * wave
+    residual = sp.expand(TR8(sp.expand(trial.diff(tau, 2) + trial - rhs)))
+    equations = [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
+    for wave in waves:
+        equations.extend(sp.Poly(residual.coeff(wave), tau).all_coeffs())
+    (solution,) = sp.linsolve(equations, unknowns)
+    return sp.expand(trial.subs(dict(zip(unknowns, solution, strict=True))))
+
+
+def cited(name: str) -> Any:
+    """The reference ``name`` of Lecornu's table (built when asked: a builder of another
+    module, found by the name the ledger cites rather than by its file)."""
+    from pendcli.papers.lecornu import PAPER
+
+    assert PAPER.references is not None
+    return PAPER.references()[name]()

@@ -16,7 +16,7 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from pendcli.papers.lecornu.references_tools import derivative_along, make_reference, real_symbols
+from pendcli.papers.lecornu.references_base import derivative_along, reference, symbols
 
 # --- § IV, the motion in rectangular and polar coordinates, (43)-(45) (lines 940-1016) ---
 
@@ -25,7 +25,7 @@ def _conical_state() -> dict[str, Any]:
     """The motion of lines 942-946 (x'' = −Tx/l, y'' = −Ty/l, z'' = −Tz/l + g) at a state
     (x, y, z, x', y', z'); r = √(x² + y²), its derivatives by the chain rule along the motion,
     c = x y' − y x' (the constant the area theorem names)."""
-    x, y, z, dx, dy, _dz, tn, length, g = real_symbols(
+    x, y, z, dx, dy, _dz, tn, length, g = symbols(
         "X", "Y", "Z", "dX_dt", "dY_dt", "dZ_dt", "Tn", "l", "g"
     )
     d2x, d2y, d2z = -tn * x / length, -tn * y / length, -tn * z / length + g
@@ -50,14 +50,14 @@ def _conical_state() -> dict[str, Any]:
 def reference_conical_cartesian() -> Any:
     """Lines 942-946, the motion in x, y, z, with r, r', r'' computed from it and c its
     constant of areas."""
-    return make_reference(_conical_state(), "x'' = −Tx/l, y'' = −Ty/l, z'' = −Tz/l + g")
+    return reference(_conical_state(), "x'' = −Tx/l, y'' = −Ty/l, z'' = −Tz/l + g")
 
 
 @cache
 def reference_conical_polar() -> Any:
     """r = l sin θ, z = l cos θ (lines 988-990) and their derivatives along t (l, θ varying);
     the printed d/dt(l² dθ/dt) by the chain rule."""
-    length, theta, dl, dth, d2th = real_symbols("l", "theta", "dl_dt", "dtheta_dt", "d2theta_dt2")
+    length, theta, dl, dth, d2th = symbols("l", "theta", "dl_dt", "dtheta_dt", "d2theta_dt2")
     d2l = sp.Symbol("d2l_dt2", real=True)  # any l(t): the identity of line 992 needs no l'' = 0
     rates = {length: dl, theta: dth, dl: d2l, dth: d2th}
 
@@ -66,36 +66,36 @@ def reference_conical_polar() -> Any:
     r, z = length * sp.sin(theta), length * sp.cos(theta)
     exact = {"r": r, "Z": z, "d2r_dt2": along(along(r)), "d2Z_dt2": along(along(z))}
     time = {"l": dl, "theta": dth, "dtheta_dt": d2th, "dl_dt": d2l}
-    return make_reference(exact, "r = l sin θ, z = l cos θ", rates={"t": time})
+    return reference(exact, "r = l sin θ, z = l cos θ", rates={"t": time})
 
 
 @cache
 def reference_eq43() -> Any:
     """(43) from lines 984-992: r z'' − z r'' − g r + c² z/r³ = 0 with r = l sin θ,
     z = l cos θ, solved for θ'' (l = a + bt, l'' = 0); the printed d/dt by the chain rule."""
-    a, b, t, dth = real_symbols("a", "b", "t", "dtheta_dt")
+    a, b, t, dth = symbols("a", "b", "t", "dtheta_dt")
     second = _eq43_second_derivative(a + b * t)
     rates = {"t": {"l": b, "theta": dth, "dtheta_dt": second}}
-    return make_reference({"l": a + b * t}, "lines 984-992, l = a + bt", rates=rates)
+    return reference({"l": a + b * t}, "lines 984-992, l = a + bt", rates=rates)
 
 
 @cache
 def reference_area_theorem() -> Any:
     """(44) from the area theorem of line 954: c = x y' − y x' with x = r cos φ,
     y = r sin φ, r = l sin θ (l, θ, φ varying)."""
-    length, theta, phi, dl, dth, dphi = real_symbols(
+    length, theta, phi, dl, dth, dphi = symbols(
         "l", "theta", "phi", "dl_dt", "dtheta_dt", "dphi_dt"
     )
     along = derivative_along({length: dl, theta: dth, phi: dphi})
     r = length * sp.sin(theta)
     x, y = r * sp.cos(phi), r * sp.sin(phi)
-    return make_reference({"c": x * along(y) - y * along(x)}, "c = x y' − y x', r = l sin θ")
+    return reference({"c": x * along(y) - y * along(x)}, "c = x y' − y x', r = l sin θ")
 
 
 def _eq43_second_derivative(length: Any) -> Any:
     """θ'' from (43) (the eliminated equation of line 984 in θ, reference_eq43) at a length
     ``length`` with l' = b, l'' = 0."""
-    g, c, b = real_symbols("g", "c", "b")
+    g, c, b = symbols("g", "c", "b")
     d2th = sp.Symbol("q", real=True)
     polar = reference_conical_polar().exact
     subs = {sp.Symbol("dl_dt", real=True): b, sp.Symbol("d2l_dt2", real=True): 0}
@@ -111,16 +111,16 @@ def _eq43_second_derivative(length: Any) -> Any:
 def reference_conical_l_form() -> Any:
     """Lines 1002-1008: θ'' from (43) with l' = b (l kept), and the derivatives in l,
     dθ/dl = θ'/b, d²θ/dl² = θ''/b²."""
-    length, b, dth = real_symbols("l", "b", "dtheta_dt")
+    length, b, dth = symbols("l", "b", "dtheta_dt")
     second = _eq43_second_derivative(length)
     exact = {"d2theta_dt2": second, "dtheta_dl": dth / b, "d2theta_dl2": second / b**2}
-    return make_reference(exact, "(43), l = a + bt")
+    return reference(exact, "(43), l = a + bt")
 
 
 def _small_conical_u() -> Any:
     """(43) for small θ (sin θ -> θ, cos θ -> 1) with θ = u/l, d/dt = b d/dl, solved for
     d²u/dl²: a function of (u, l)."""
-    length, b, g, c = real_symbols("l", "b", "g", "c")
+    length, b, g, c = symbols("l", "b", "g", "c")
     u = sp.Function("u")(length)
     theta = u / length
     motion = b**2 * sp.diff(length**2 * sp.diff(theta, length), length)
@@ -132,14 +132,14 @@ def _small_conical_u() -> Any:
 @cache
 def reference_conical_small() -> Any:
     """Lines 1010-1016: (43) for small angles with θ = u/l, x = gl/b², u = v√(bc/g)."""
-    length, b, g, c, x, v = real_symbols("l", "b", "g", "c", "x", "v")
+    length, b, g, c, x, v = symbols("l", "b", "g", "c", "x", "v")
     scale = sp.sqrt(b * c / g)
     d2u_dx2 = (b**2 / g) ** 2 * _small_conical_u().subs(length, b**2 * x / g)
     exact = {
         "d2uc_dx2": d2u_dx2,
         "d2v_dx2": d2u_dx2.subs(sp.Symbol("uc", real=True), v * scale) / scale,
     }
-    return make_reference(exact, "(43) for small θ, θ = u/l, x = gl/b²")
+    return reference(exact, "(43) for small θ, θ = u/l, x = gl/b²")
 
 
 # --- § IV, v = λω, the general integral of (45) and ω1, ω2 (lines 1018-1062) -----------
@@ -149,7 +149,7 @@ def reference_conical_small() -> Any:
 def reference_lambda_substitution() -> Any:
     """Lines 1018-1042: v = λω with ω a solution of (9) (ω'' = −ω/x) and v of (45):
     v', v'' by the product rule (sympy), λ'' from (45), A the value of the first integral."""
-    x, lam, omega, dlam, domega = real_symbols("x", "lam", "omega", "dlam_dx", "domega_dx")
+    x, lam, omega, dlam, domega = symbols("x", "lam", "omega", "dlam_dx", "domega_dx")
     q = sp.Symbol("q", real=True)  # λ''
     along = derivative_along({lam: dlam, omega: domega, dlam: q, domega: -omega / x})
     v = lam * omega
@@ -160,7 +160,7 @@ def reference_lambda_substitution() -> Any:
     exact["d2omega_dx2"] = -omega / x
     exact["A45"] = (omega**2 * dlam) ** 2 + 1 / lam**2
     rates = {"x": {"lam": dlam, "omega": domega, "dlam_dx": second, "domega_dx": -omega / x}}
-    return make_reference(exact, "(45), (9), v = λω", rates=rates)
+    return reference(exact, "(45), (9), v = λω", rates=rates)
 
 
 @cache
@@ -207,7 +207,7 @@ def reference_conical_solution() -> Any:
     line 1042's square root)."""
     from sympy.utilities.lambdify import implemented_function
 
-    (x,) = real_symbols("x")
+    (x,) = symbols("x")
     numeric = _conical_solution()
 
     def at_30_digits(f: Any) -> Any:
@@ -223,17 +223,17 @@ def reference_conical_solution() -> Any:
     }
     exact["A45"] = sp.Float(mpmath.nstr(numeric["A"], 32), 30)
     exact["B45"] = sp.Float(mpmath.nstr(numeric["B"], 32), 30)
-    return make_reference(exact, "a solution of (45) by mpmath's ODE solver")
+    return reference(exact, "a solution of (45) by mpmath's ODE solver")
 
 
 @cache
 def reference_omega_pair() -> Any:
     """Lines 1054-1062: ω1 = ω/√A, ω2 = √A ω(∫dx/ω² + B) (written Iw for ∫dx/ω²), their
     x-derivatives by the chain rule with dIw/dx = 1/ω², and v of line 1050."""
-    omega, domega, big_a, big_b, iw = real_symbols("omega", "domega_dx", "A45", "B45", "Iw")
+    omega, domega, big_a, big_b, iw = symbols("omega", "domega_dx", "A45", "B45", "Iw")
     along = derivative_along({omega: domega, iw: 1 / omega**2})
     w1 = omega / sp.sqrt(big_a)
     w2 = sp.sqrt(big_a) * omega * (iw + big_b)
     v = sp.sqrt(omega**2 / big_a + big_a * omega**2 * (iw + big_b) ** 2)
     exact = {"omega1": w1, "omega2": w2, "domega1_dx": along(w1), "domega2_dx": along(w2)}
-    return make_reference({**exact, "v": v}, "ω1, ω2 of line 1054")
+    return reference({**exact, "v": v}, "ω1, ω2 of line 1054")

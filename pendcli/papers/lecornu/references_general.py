@@ -260,6 +260,7 @@ def reference_kick_at_vertical() -> Any:
 
 
 def reference_x_of_l() -> Any:
-    """Lines 284, 344: x = gl/b², line 112's definition of x, solved for x."""
+    """Lines 284, 344: x = gl/b², line 112's definition of x, solved for x; lines 190-194: the
+    same at the elongation x = ξ."""
     length, g, b = symbols("l", "g", "b")
-    return reference({"x": g * length / b**2}, "x = gl/b² (line 112)")
+    return reference({"x": g * length / b**2, "xi": g * length / b**2}, "x = gl/b² (line 112)")

@@ -69,10 +69,12 @@ def reference_c_equals_4_over_pi() -> Any:
     return Reference({"varphi": varphi, "C": constant}, what="(10) and its limit at x = 0")
 
 
-def reference_quadrature() -> Any:
-    """Lines 416-434: identities between definite integrals, judged by quadrature alone;
-    a (here aa) a fixed number above 1, h (here hh) above 2a√x and below 3 (line 442)."""
-    return reference({}, "quadrature")
+def reference_identity() -> Any:
+    """No substitution: the formula is an identity in its own symbols, judged at random points;
+    lines 416-434, identities between definite integrals, by quadrature alone (a, here aa, a
+    fixed number above 1; h, here hh, above 2a√x and below 3, line 442); lines 804-806,
+    cos³u in cos 3u and cos u."""
+    return reference({}, "an identity in its own symbols (integrals by quadrature)")
 
 
 def reference_large_lambda() -> Any:

@@ -72,16 +72,13 @@ def _cartesian_items(uniform: bool) -> tuple[tuple[str, Any], ...]:
 
 
 def reference_cartesian() -> Any:
-    """Lines 34–44: x = l sin θ, y = l cos θ and the bob's equations (38), (40)."""
-    return reference(_cartesian_exact(False), "x = l sin θ, y = l cos θ and (38), (40)")
-
-
-def reference_areal() -> Any:
-    """Line 48 from line 44: θ'' solved from x ÿ − y ẍ − g x = 0 (lines 34–40); the printed
-    d/dt of l²θ' taken by the chain rule (l' = dl/dt, (θ')' = θ'')."""
+    """Lines 34–44: x = l sin θ, y = l cos θ and the bob's equations (38), (40); line 48 from
+    line 44, θ'' solved from x ÿ − y ẍ − g x = 0: the printed d/dt of l²θ' taken by the chain
+    rule (l' = dl/dt, (θ')' = θ'')."""
     dl, dtheta, d2theta = symbols("dl_dt", "dtheta_dt", "d2theta_dt2")
     rates = {"t": {"l": dl, "theta": dtheta, "dtheta_dt": d2theta}}
-    return reference(_cartesian_exact(False), "x ÿ − y ẍ − g x = 0 (line 44)", rates=rates)
+    what = "x = l sin θ, y = l cos θ and (38), (40)"
+    return reference(_cartesian_exact(False), what, rates=rates)
 
 
 def reference_cartesian_uniform() -> Any:

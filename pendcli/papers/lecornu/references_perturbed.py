@@ -15,39 +15,15 @@ from typing import Any
 
 import sympy as sp
 
+from pendcli.papers.lecornu.references_base import reference, symbols, zero_start_forced
 from pendcli.papers.lecornu.references_conical_planes import first_order_solution
-from pendcli.papers.lecornu.references_tools import make_reference, real_symbols
 from pendcli.papers.taylor import taylor
 
 # --- § III, (39)-(42'): the perturbation of (38) by the lengthening (lines 818-934) -------
 
 
 def _u_symbols() -> list[Any]:
-    return real_symbols("u", "k", "p")
-
-
-def _forced_solution(source: Any) -> Any:
-    """The solution of y'' + y = source with y(0) = y'(0) = 0, source a sum of uⁿ cos mu,
-    uⁿ sin mu (m = 1, 3): undetermined coefficients (n <= 4), solved by sympy."""
-    from sympy.simplify.fu import TR8
-
-    (u,) = real_symbols("u")
-    unknowns, guess = [], sp.Integer(0)
-    for n in range(5):
-        for m in (1, 3):
-            a, b = sp.symbols(f"a{n}_{m} b{n}_{m}")
-            unknowns += [a, b]
-            guess += a * u**n * sp.cos(m * u) + b * u**n * sp.sin(m * u)
-    residual = sp.expand(TR8(sp.expand(guess.diff(u, 2) + guess - source)))
-    equations = [
-        residual.coeff(f(m * u)).coeff(u, n)
-        for n in range(6)
-        for m in (1, 3)
-        for f in (sp.cos, sp.sin)
-    ]
-    equations += [guess.subs(u, 0), guess.diff(u).subs(u, 0)]
-    solved = sp.solve(equations, unknowns, dict=True)[0]
-    return sp.expand(guess.subs(solved).subs({c: 0 for c in unknowns}))
+    return symbols("u", "k", "p")
 
 
 @cache
@@ -59,8 +35,8 @@ def _slow_finite() -> dict[str, Any]:
     omega = 2 * k * sp.cos(u) + k**3 / 24 * f
     forcing = sp.expand(-(u * omega.diff(u, 2) + 2 * omega.diff(u)))
     big_a, big_b = forcing.coeff(k, 1), forcing.coeff(k, 3)
-    beta = _forced_solution(big_a)
-    delta = _forced_solution(big_b + 2 * beta * sp.cos(u) ** 2)
+    beta = zero_start_forced(big_a, u, 4, (1, 3))
+    delta = zero_start_forced(big_b + 2 * beta * sp.cos(u) ** 2, u, 4, (1, 3))
     theta = omega + p * (k * beta + k**3 * delta)
     return {
         "f": f,
@@ -79,14 +55,14 @@ def reference_eq39() -> Any:
     """(39): (32) with θ = ω + pε, ω a solution of (33) (ω'' = −sin ω): ε'' solved from
     (32) exactly, compared at order p⁰; F its definition (line 824)."""
     u, _, p = _u_symbols()
-    omega, domega, eps, deps = real_symbols("omega", "domega_du", "eps", "deps_du")
+    omega, domega, eps, deps = symbols("omega", "domega_du", "eps", "deps_du")
     q = sp.Symbol("q", real=True)
     d2omega = -sp.sin(omega)
     theta, first, second = omega + p * eps, domega + p * deps, d2omega + p * q
     motion = sp.expand(second + sp.sin(theta) + p * (u * second + 2 * first))
     solved = -motion.subs(q, 0) / motion.coeff(q)
     exact = {"d2eps_du2": solved, "d2omega_du2": d2omega, "F": -(u * d2omega + 2 * domega)}
-    return make_reference(exact, "(32) with θ = ω + pε")
+    return reference(exact, "(32) with θ = ω + pε")
 
 
 @cache
@@ -94,10 +70,10 @@ def reference_eq40() -> Any:
     """(40): (39) with ω of (38) (F computed from it), A and B its k and k³ coefficients,
     f and its derivatives from (38); a series in k through k³."""
     u, _k, _ = _u_symbols()
-    (eps,) = real_symbols("eps")
+    (eps,) = symbols("eps")
     chain = _slow_finite()
     exact = {"d2eps_du2": chain["F"] - eps * sp.cos(chain["omega"]), **_coefficients(chain, u)}
-    return make_reference(exact, "(39) with ω of (38)")
+    return reference(exact, "(39) with ω of (38)")
 
 
 def _coefficients(chain: dict[str, Any], u: Any) -> dict[str, Any]:
@@ -113,9 +89,9 @@ def reference_eps_split() -> Any:
     with zero initial values of α'' + α = 0 and γ'' + γ = 2α cos²u."""
     u, k, _ = _u_symbols()
     names = ("alpha_e", "beta_e", "gamma_e", "delta_e")
-    parts = real_symbols(*names)
-    seconds = real_symbols(*(f"d2{n[:-2]}_du2" for n in names))
-    big_a, big_b = real_symbols("A40", "B40")
+    parts = symbols(*names)
+    seconds = symbols(*(f"d2{n[:-2]}_du2" for n in names))
+    big_a, big_b = symbols("A40", "B40")
     eps = sum(k**n * x for n, x in enumerate(parts))
     d2eps = sum(k**n * x for n, x in enumerate(seconds))
     left = sp.expand(d2eps + (1 - 2 * k**2 * sp.cos(u) ** 2) * eps - big_a * k - big_b * k**3)
@@ -123,7 +99,7 @@ def reference_eps_split() -> Any:
     for n, second in enumerate(seconds):
         coefficient = left.coeff(k, n)
         exact[second.name] = -coefficient.subs(second, 0) / coefficient.coeff(second)
-    return make_reference(exact, "(40), ε split in powers of k")
+    return reference(exact, "(40), ε split in powers of k")
 
 
 @cache
@@ -136,7 +112,7 @@ def reference_eps_reduced() -> Any:
         n: sp.sympify(v, strict=True).subs({sp.Symbol(m, real=True): 0 for m in zero})
         for n, v in split.exact.items()
     }
-    return make_reference({**exact, **zero}, "(40) split, α = γ = 0")
+    return reference({**exact, **zero}, "(40) split, α = γ = 0")
 
 
 @cache
@@ -152,7 +128,7 @@ def reference_beta_delta() -> Any:
         "d2delta_du2": chain["delta"].diff(u, 2),
         "d2beta_du2": chain["beta"].diff(u, 2),
     }
-    return make_reference(exact, "β, δ solved from (40) with zero initial values")
+    return reference(exact, "β, δ solved from (40) with zero initial values")
 
 
 @cache
@@ -167,9 +143,9 @@ def reference_eq41() -> Any:
         "theta_pi2": theta.subs(u, sp.pi / 2),
         "dtheta_du_pi2": slope.subs(u, sp.pi / 2),
     }
-    (rg,) = real_symbols("rg")
+    (rg,) = symbols("rg")
     exact["dtheta_dt_pi2"] = rg * exact["dtheta_du_pi2"]
-    return make_reference(exact, "θ = ω + p(kβ + k³δ) solved from (38)-(40)")
+    return reference(exact, "θ = ω + p(kβ + k³δ) solved from (38)-(40)")
 
 
 @cache
@@ -183,16 +159,16 @@ def reference_printed_41() -> Any:
     row = next(r for r in ledger.rows if r.id == "lecornu.eq.41")
     assert row.printed is not None
     ((_, theta),) = parse_formula(row.id, row.printed, ledger.symbols_for(row)).equations
-    (u,) = real_symbols("u")
-    return make_reference({"dtheta_du0": sp.diff(theta, u).subs(u, 0)}, "(41) as printed")
+    (u,) = symbols("u")
+    return reference({"dtheta_du0": sp.diff(theta, u).subs(u, 0)}, "(41) as printed")
 
 
 @cache
 def reference_k3_neglected() -> Any:
     """Lines 888-892: the O(p) solution of (48) in u (as for (50)) at ψ = 3p/4 − π/2."""
-    u, p, rho = real_symbols("u", "p", "rho")
+    u, p, rho = symbols("u", "p", "rho")
     theta = first_order_solution(rho, 3 * p / 4 - sp.pi / 2, u)
-    return make_reference({"theta": theta}, "(48) to O(p), ψ = 3p/4 − π/2")
+    return reference({"theta": theta}, "(48) to O(p), ψ = 3p/4 − π/2")
 
 
 @cache
@@ -201,7 +177,7 @@ def _half_oscillation() -> Any:
     first order, each part in k through k² (the orders (42) keeps), as a function of a, g,
     b, k (γ = √(g/a), p = b/√(ga))."""
     _, k, p = _u_symbols()
-    a, g, b = real_symbols("a", "g", "b")
+    a, g, b = symbols("a", "g", "b")
     exact = reference_eq41().exact
     ratio = exact["theta_pi2"] / exact["dtheta_du_pi2"]
     in_p = taylor(ratio, p, 2)
@@ -213,24 +189,24 @@ def _half_oscillation() -> Any:
 @cache
 def reference_eq42() -> Any:
     """(42): the half-oscillation computed from θ of (41) as solved here (line 904)."""
-    return make_reference({"T": _half_oscillation()}, "π/2γ − θ/θ' at u = π/2, θ solved here")
+    return reference({"T": _half_oscillation()}, "π/2γ − θ/θ' at u = π/2, θ solved here")
 
 
 @cache
 def reference_eq42_prime() -> Any:
     """(42'): (42) with k = sin(θ0/2), through θ0²."""
-    k, theta0 = real_symbols("k", "theta0")
+    k, theta0 = symbols("k", "theta0")
     half = _half_oscillation().subs(k, sp.sin(theta0 / 2))
     kept = taylor(half, theta0, 3)
-    return make_reference({"T": kept}, "(42) with k = sin(θ0/2), through θ0²")
+    return reference({"T": kept}, "(42) with k = sin(θ0/2), through θ0²")
 
 
 @cache
 def reference_t_equals_t_prime() -> Any:
     """Lines 918-932: T (and each T' of the same half-oscillation, reversed) the duration
     of (42) at k = 0, l = a + bT; b scaled by ε (first order in b)."""
-    k, a, b = real_symbols("k", "a", "b")
+    k, a, b = symbols("k", "a", "b")
     scale = sp.Symbol("epsilon", positive=True)
     duration = _half_oscillation().subs(k, 0).subs(b, scale * b)
     exact = {"b": scale * b, "T": duration, "Tp": duration, "l": a + scale * b * duration}
-    return make_reference(exact, "(42) at k = 0, to first order in b")
+    return reference(exact, "(42) at k = 0, to first order in b")

@@ -14,7 +14,7 @@ from typing import Any
 
 import sympy as sp
 
-from pendcli.papers.lecornu.references_base import phi_of, reference, symbols
+from pendcli.papers.lecornu.references_base import phi_of, reference, symbols, zero_start_forced
 from pendcli.papers.taylor import taylor
 from pendcli.verify.printed_check import Reference
 
@@ -99,12 +99,14 @@ def reference_amplitude_factor() -> Any:
 
 
 def reference_successive_elongations() -> Any:
-    """Line 577: l' = l + bπ√(l/g), the length half a period later (line 523), b scaled by ε
-    (b/√(gl) small), through ε."""
+    """Line 577: l' = l + bπ√(l/g), the length half a period later (line 523); line 579:
+    θ' = θ (l/l')^(3/4), the amplitude of (22) at an elongation, ∝ l^(-3/4) (lines 569-577);
+    b scaled by ε (b/√(gl) small), through ε."""
     eps = sp.Symbol("eps_", positive=True)
-    b, g, length = symbols("b", "g", "l")
-    exact = {"lp": length + eps * b * sp.pi * sp.sqrt(length / g), "b": eps * b}
-    return reference(exact, "l' = l + bπ√(l/g)")
+    b, g, length, theta = symbols("b", "g", "l", "theta")
+    later = length + eps * b * sp.pi * sp.sqrt(length / g)
+    exact = {"lp": later, "thetap": theta * (length / later) ** sp.Rational(3, 4), "b": eps * b}
+    return reference(exact, "l' = l + bπ√(l/g), the amplitude ∝ l^(-3/4) at l and l'")
 
 
 def _slow_exact(psi_value: Any) -> dict[str, Any]:
@@ -123,9 +125,12 @@ def _slow_exact(psi_value: Any) -> dict[str, Any]:
 
 
 def reference_slow_exact() -> Any:
-    """(22) in t, exactly (lines 581-587)."""
-    (psi,) = symbols("psi")
-    return reference(_slow_exact(psi), "(22) with l = a + bt, γ, p, R")
+    """(22) in t, exactly (lines 581-587); line 597, the footnote to (25): the 1894 note's
+    formula against (22) (as for (25)), with k = p and ω = ψ + p/8."""
+    psi, p = symbols("psi", "p")
+    exact = _slow_exact(psi)
+    exact.update({"k": p, "omega": psi + p / 8})
+    return reference(exact, "(22) with l = a + bt, γ, p, R")
 
 
 def reference_psi() -> Any:
@@ -135,15 +140,6 @@ def reference_psi() -> Any:
     b = p * sp.sqrt(g * a)
     argument_at_0 = 2 / b * sp.sqrt(g * a) - phi  # (22)'s argument at l = a
     return reference({"psi": -argument_at_0}, "the phase of (22) at t = 0")
-
-
-def reference_cr_note() -> Any:
-    """Line 597, the footnote to (25): the 1894 note's formula against (22) (as for (25)), with k =
-    p and ω = ψ + p/8."""
-    (psi, p) = symbols("psi", "p")
-    exact = _slow_exact(psi)
-    exact.update({"k": p, "omega": psi + p / 8})
-    return reference(exact, "(22) with k = p, ω = ψ + p/8")
 
 
 def reference_slow_vertical() -> Any:
@@ -164,25 +160,6 @@ def reference_eq27_from_9() -> Any:
     return reference({"d2u_dt2": (gamma / p) ** 2 * (-u / x), "r": gamma}, "(9) in t")
 
 
-def _forced_oscillator(rhs: Any, tau: Any, degree: int) -> Any:
-    """The solution of U'' + U = rhs(τ) with U(0) = U'(0) = 0, rhs a polynomial in τ times
-    cos τ, sin τ: undetermined coefficients (a polynomial of ``degree`` on each), solved
-    linearly."""
-    a = sp.symbols(f"a0:{degree + 1}")
-    c = sp.symbols(f"c0:{degree + 1}")
-    trial = sum(a[k] * tau**k for k in range(degree + 1)) * sp.cos(tau) + sum(
-        c[k] * tau**k for k in range(degree + 1)
-    ) * sp.sin(tau)
-    residual = sp.expand(trial.diff(tau, 2) + trial - rhs)
-    equations = []
-    for trig in (sp.cos(tau), sp.sin(tau)):
-        part = sp.Poly(residual.coeff(trig), tau)
-        equations.extend(part.all_coeffs())
-    equations += [trial.subs(tau, 0), trial.diff(tau).subs(tau, 0)]
-    solution = sp.solve(equations, [*a, *c], dict=True)[0]
-    return sp.expand(trial.subs(solution).subs({k: 0 for k in (*a, *c)}))
-
-
 @cache
 def _eq27_solution() -> tuple[Any, Any, Any]:
     """(27) with u(0) = 0, u'(0) = γ to p² (line 638): u0 = sin γt and, in τ = γt (line 626),
@@ -191,7 +168,7 @@ def _eq27_solution() -> tuple[Any, Any, Any]:
     tau = sp.Dummy("tau")
     parts = [sp.sin(tau)]
     for n in (1, 2):
-        parts.append(_forced_oscillator(-tau * parts[-1].diff(tau, 2), tau, 2 * n))
+        parts.append(zero_start_forced(-tau * parts[-1].diff(tau, 2), tau, 2 * n))
     u = sum(part * p**k for k, part in enumerate(parts)).subs(tau, gamma * t)
     return u, t, p
 
@@ -256,19 +233,9 @@ def reference_large_x() -> Any:
     return reference(exact, "line 499's equation at large x")
 
 
-def reference_elongation_difference() -> Any:
-    """Line 579: θ' = θ (l/l')^(3/4) (the amplitude of (22) at an elongation, ∝ l^(-3/4),
-    lines 569-577), l' = l + bπ√(l/g) half a period later (line 523); b scaled by ε, through ε."""
-    eps = sp.Symbol("eps_", positive=True)
-    b, g, length, theta = symbols("b", "g", "l", "theta")
-    later = length + eps * b * sp.pi * sp.sqrt(length / g)
-    exact = {"thetap": theta * (length / later) ** sp.Rational(3, 4), "b": eps * b}
-    return reference(exact, "amplitude ∝ l^(-3/4) at l and l'")
-
-
 def reference_elongation_difference_far() -> Any:
     """Line 579, « tend vers zéro à mesure que la longueur augmente »: θ' as in
-    reference_elongation_difference, the length large (l -> l/ε²), through ε⁰."""
+    reference_successive_elongations, the length large (l -> l/ε²), through ε⁰."""
     eps = sp.Symbol("eps_", positive=True)
     b, g, length, theta = symbols("b", "g", "l", "theta")
     far = length / eps**2

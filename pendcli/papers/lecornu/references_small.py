@@ -229,12 +229,6 @@ def reference_eq13() -> Any:
     return reference(exact, "(12) with φ = √x J₁(2√x)", conditions=(condition, condition / x))
 
 
-def reference_x_is_xi() -> Any:
-    """Lines 190-194: line 112's x = gl/b² at the elongation x = ξ."""
-    g, length, b = symbols("g", "l", "b")
-    return reference({"xi": g * length / b**2}, "x = gl/b² at x = ξ")
-
-
 def reference_first_member_13() -> Any:
     """Line 196: the first member of (13) as (13) is derived, (φ/x − φ')/x with
     φ = √x J₁(2√x); x scaled by ε, through ε²."""

@@ -4,7 +4,7 @@ verify/printed_numeric), by the sections of the paper, and their table :data:`RE
 
     p. 448-450, lines 32-88     the first integrals, (1)-(7): :mod:`.references_differentials`
     p. 450-452, lines 92-154    the series (8)-(15) in ψ and in k't: :mod:`.references_series`
-    p. 452, lines 96-156        the ellipse (9), (10), (16), (17): here
+    p. 448-452, lines 42-156    the ellipse (3), (9), (10), (16), (17): here
     p. 453-454, lines 158-206   the summary (I)-(VI) and its approximations: here
     p. 454, lines 192-202       the numerical application: :mod:`.references_numeric`
     lines 30, 44, 128, 152,     the sentences' own claims (the reading record):
@@ -24,7 +24,7 @@ from pendcli.papers.tisserand import references_differentials as differentials
 from pendcli.papers.tisserand import references_numeric as numeric
 from pendcli.papers.tisserand import references_prose as prose
 from pendcli.papers.tisserand import references_series as series
-from pendcli.papers.tisserand.references_differentials import ledger_symbols, reference_definition_3
+from pendcli.papers.tisserand.references_differentials import ledger_symbols, substitution_3
 from pendcli.papers.tisserand.references_series import (
     in_kpt_reference,
     motion_reference,
@@ -33,23 +33,18 @@ from pendcli.papers.tisserand.references_series import (
 from pendcli.verify.ledger_references import builders
 from pendcli.verify.printed_check import Reference
 
-# --- the ellipse: (9), (10), (16), (17), p. 452 ------------------------------------------
+# --- the ellipse: (3), (9), (10), (16), (17), p. 452 --------------------------------------
 
 
-# (10), line 100, « d'où »: the tangent of (9)'s φ1.
-def reference_definition_9() -> Reference:
-    """(9): φ1 = arctan((u1/u0) tan ψ)."""
-    u0, u1, psi = ledger_symbols("u0", "u1", "psi")
-    return Reference({"phi1": sp.atan(u1 / u0 * sp.tan(psi))}, what="(9)")
-
-
-# tan²φ1 in u (lines 136-138) and in ρ (line 146), (17) line 150, the eccentric anomaly of
-# line 156: (3), (9) and (16) together.
+# (3) line 42 and what rests on it alone: the integrals in ψ of lines 82-88, tan²ψ of line
+# 134, ψ = 0 at t = 0 (line 44); (10), line 100, « d'où »: the tangent of (9)'s φ1; tan²φ1 in
+# u (lines 136-138) and in ρ (line 146), (17) line 150, the eccentric anomaly of line 156:
+# (3), (9) and (16) together; line 152, the ellipse (17)'s centre, major axis Ox' and axes
+# 2ρ0, 2ρ1 (ρ0 = lu0, ρ1 = lu1, line 142).
 def reference_ellipse() -> Reference:
     """(3), (9) and (16): u as in (3), φ1 = arctan((u1/u0) tan ψ), ρ = lu, ρ0 = lu0, ρ1 = lu1."""
     u0, u1, psi, length = ledger_symbols("u0", "u1", "psi", "l")
-    base = reference_definition_3()
-    u = base.exact["u"]
+    u = substitution_3()
     exact = {
         "u": u,
         "phi1": sp.atan(u1 / u0 * sp.tan(psi)),

@@ -75,7 +75,7 @@ def reference_first_integrals_in_psi() -> Reference:
     """dθ, dt, dφ of the first integrals with θ, θ0, θ1 from (3): u = sin θ as a function of
     ψ, dθ its exact derivative times dψ (for the line after (3), (4), (5))."""
     u0, u1, psi, dpsi = ledger_symbols("u0", "u1", "psi", "dpsi")
-    u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
+    u = substitution_3()
     theta = sp.asin(u)
     dtheta = sp.diff(theta, psi) * dpsi
     theta0, theta1 = ledger_symbols("theta0", "theta1")
@@ -85,12 +85,11 @@ def reference_first_integrals_in_psi() -> Reference:
     return Reference(exact, what="the first integrals with (3)")
 
 
-# (3), line 42: the integrals in ψ of lines 82-88 and tan²ψ of line 134 rest on it.
-def reference_definition_3() -> Reference:
+# (3), line 42: the integrals in ψ of lines 82-88, tan²ψ of line 134 and the ellipse rest on it.
+def substitution_3() -> Any:
     """(3): u = √(u0² cos²ψ + u1² sin²ψ)."""
     u0, u1, psi = ledger_symbols("u0", "u1", "psi")
-    u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
-    return Reference({"u": u}, what="(3)")
+    return sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
 
 
 # --- the developments in the small angles: lines 54-78, (6), (7) -------------------------

@@ -5,7 +5,6 @@ tables/papers/tisserand.reading.toml), where no reference of the formulas serves
                    the pendulum: the exact motion through the fourth order in ψ
     line 44        « Pour t = 0, on aura ψ = 0 »: (3) at ψ = 0
     line 128       (16), ρ = lu: the radius vector of the projection, from the bob's position
-    line 152       the ellipse (17): its centre, its major axis Ox', its axes 2ρ0 and 2ρ1
     line 178       « u0u1 est un terme du second ordre »
 
 Each builder maps ledger symbols to exact expressions from the model or the definitions the
@@ -16,11 +15,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from pendcli.papers.tisserand.references_differentials import (
-    ledger_symbols,
-    reference_definition_3,
-    scale,
-)
+from pendcli.papers.tisserand.references_differentials import ledger_symbols, scale, substitution_3
 from pendcli.papers.tisserand.references_series import motion_reference, motion_series
 from pendcli.verify.printed_check import Reference
 
@@ -35,8 +30,8 @@ def reference_uniform_rotation() -> Reference:
     first half-turn, small amplitudes (the scale s), g and l over the default range."""
     base = motion_reference(5, "(4), (5), (3) to order 4, the projection in polar coordinates")
     s, length = scale(), ledger_symbols("l")[0]
-    u0, u1, psi = ledger_symbols("u0", "u1", "psi")
-    u = sp.sqrt(u0**2 * sp.cos(psi) ** 2 + u1**2 * sp.sin(psi) ** 2)
+    u0, u1 = ledger_symbols("u0", "u1")
+    u = substitution_3()
     exact = {
         **base.exact,
         "rho": length * s * u,
@@ -45,17 +40,6 @@ def reference_uniform_rotation() -> Reference:
         "dphip_dt": base.exact["kp"] * motion_series(5)["P"],
     }
     return Reference(exact, what=base.what)
-
-
-# Line 152: the ellipse (17) has centre O, major axis Ox', axes 2ρ0 and 2ρ1.
-def reference_ellipse_axes() -> Reference:
-    """ρ = lu with u of (3), ρ0 = lu0, ρ1 = lu1 (line 142), over a whole turn of ψ and the
-    apsides' order θ0 > θ1 (line 32: θ0 the maximum, θ1 the minimum of θ)."""
-    base = reference_definition_3()
-    length = ledger_symbols("l")[0]
-    u0, u1 = ledger_symbols("u0", "u1")
-    exact = {"rho": length * base.exact["u"], "rho0": length * u0, "rho1": length * u1}
-    return Reference(exact, what="(3), (16), line 142")
 
 
 # Line 128, (16): the radius vector of the projection, from the bob's position.

@@ -318,7 +318,9 @@ def test_friction_has_a_finite_count_by_the_same_formula() -> None:
     assert formula_passes(
         printed, cited_reference(charbonnier, "reference_monomial_points", row.id)
     )[0]
-    assert not formula_passes(printed, cited_reference(charbonnier, "reference_friction"))[0]
+    friction = "charbonnier.result.friction-count"
+    constant = cited_reference(charbonnier, "reference_constant_resistance", friction)
+    assert not formula_passes(printed, constant)[0]
 
 
 def test_the_closed_forms_against_an_ode() -> None:
