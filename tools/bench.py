@@ -297,7 +297,7 @@ def committed_tables(root: Path | None = None) -> dict[str, list[Point]]:
     from pendcli.run import tradeoff, tradeoff_engine
 
     paths = {name: tradeoff_engine.table_path(name, root) for name in tradeoff.family_names()}
-    return {name: tradeoff_engine.read_table(p) for name, p in paths.items() if p.is_file()}
+    return {name: tradeoff_engine.read_points(p) for name, p in paths.items() if p.is_file()}
 
 
 def _has_timings_block(path: Path) -> bool:

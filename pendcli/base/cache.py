@@ -43,7 +43,7 @@ from functools import cached_property
 from pathlib import Path
 from typing import Any
 
-from pendcli.base.cache_key import READ_FLAGS, content_digest, installed_signature
+from pendcli.base.cache_key import READ_FLAGS, folders_digest, installed_signature
 from pendcli.base.files import pid_alive
 
 __all__ = [
@@ -256,7 +256,7 @@ class ResultCache:
         roots += [(f"source{i}", s) for i, s in enumerate(self.sources) if s != _PACKAGE]
         roots.append(("tables", self.tables))
         versions = installed_signature()
-        return hashlib.sha256(f"{FORMAT}\0{versions}\0{content_digest(roots)}".encode()).hexdigest()
+        return hashlib.sha256(f"{FORMAT}\0{versions}\0{folders_digest(roots)}".encode()).hexdigest()
 
     def key(self, kind: str, params: Mapping[str, Any]) -> str:
         call = json.dumps({"kind": kind, "params": params}, sort_keys=True)

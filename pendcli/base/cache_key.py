@@ -1,7 +1,7 @@
 """What a result cache key is made of: the bytes of the code and the tables, and the libraries
 installed here.
 
-:func:`content_digest` hashes every file under the folders given (names relative to their
+:func:`folders_digest` hashes every file under the folders given (names relative to their
 labelled root, sizes, bytes), reading regular files only, in chunks, each at most
 :data:`MAX_HASHED_BYTES`, and no link out of its folder: anything else (a FIFO, a device, a
 huge file) is one line, exit 2. :func:`installed_signature` is Python's version, the machine
@@ -25,7 +25,7 @@ from typing import Any
 __all__ = [
     "MAX_HASHED_BYTES",
     "READ_FLAGS",
-    "content_digest",
+    "folders_digest",
     "installed_signature",
     "required_distributions",
     "runtime_signature",
@@ -109,7 +109,7 @@ def _not_hashed(path: Path, problem: str) -> Exception:
     )
 
 
-def content_digest(roots: Iterable[tuple[str, Path]]) -> str:
+def folders_digest(roots: Iterable[tuple[str, Path]]) -> str:
     """SHA-256 over each file's name (relative to its labelled root), size and bytes."""
     digest = hashlib.sha256()
     for label, root in roots:

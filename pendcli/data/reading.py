@@ -32,8 +32,8 @@ from pendcli.data.text_blocks import Span
 
 __all__ = [
     "Paragraph",
-    "Reading",
     "ReadingCoverage",
+    "ReadingRecord",
     "load_reading",
     "parse_reading",
     "prose_paragraphs",
@@ -76,7 +76,7 @@ class Paragraph:
 
 
 @dataclass(frozen=True)
-class Reading:
+class ReadingRecord:
     paper: str
     path: Path
     paragraphs: tuple[Paragraph, ...]
@@ -94,7 +94,7 @@ class Reading:
         return tuple(span for span in self.text_paragraphs if span not in read)
 
 
-def load_reading(paper: str, root: Path | None = None) -> Reading | None:
+def load_reading(paper: str, root: Path | None = None) -> ReadingRecord | None:
     """The paper's reading record, validated against its text and ledger (None: it has none)."""
     from pendcli.data.ledger import load_ledger
     from pendcli.data.tables import read_table_text, read_toml
@@ -116,7 +116,7 @@ def parse_reading(
     text: str,
     quotes: Mapping[str, tuple[str, ...]],
     text_name: str,
-) -> Reading:
+) -> ReadingRecord:
     """Validate a parsed record against the text (its paragraphs) and the ledger's rows by id
     with their quotes; ``text_name`` is the ledger's ``[ledger] text``, which the record's
     ``[reading] text`` must repeat. Every problem is one line naming the file."""
@@ -146,7 +146,7 @@ def parse_reading(
     twice = {k: v for k, v in label_lines(text).items() if len(v) > 1}
     citations = parse_citations(f"{path}", raw.get("citation"), text, twice)
     unsaid = unsaid_citations(text, twice, citations)
-    return Reading(paper, path, tuple(paragraphs), spans, citations, unsaid)
+    return ReadingRecord(paper, path, tuple(paragraphs), spans, citations, unsaid)
 
 
 def _refuse_unknown(where: str, what: str, entry: dict[str, Any], valid: tuple[str, ...]) -> None:

@@ -262,7 +262,7 @@ def _tradeoff_data(keys: tuple[str, ...], measure: bool, writer: _Writer) -> _Tr
             points += measured
             fresh.append(name)
         else:  # validated (UTF-8, every cell) before it is copied
-            points += tradeoff_engine.read_table(committed)
+            points += tradeoff_engine.read_points(committed)
             writer.text(f"tradeoff/{name}.csv", committed.read_text(encoding="utf-8"))
     return _Tradeoff(points, _provenance(tradeoff_engine, names, fresh))
 

@@ -44,7 +44,7 @@ __all__ = [
     "measure",
     "measured_on",
     "measured_points",
-    "read_table",
+    "read_points",
     "relative_error",
     "table_path",
     "table_text",
@@ -221,7 +221,7 @@ def write_table(points: list[Point], path: Path) -> Path:
     return atomic_write(path, table_text(points))
 
 
-def read_table(path: Path) -> list[Point]:
+def read_points(path: Path) -> list[Point]:
     """The measured points of ``tradeoff/<family>.csv``, validated: the header is
     :data:`CSV_KEYS`, every row names this family and a method, times are positive, errors
     non-negative, both finite (both empty for a failed method), evaluations positive integers.
@@ -305,7 +305,7 @@ def measured_on(root: Path | None = None) -> str | None:
 def measured_points(fam: Family) -> list[Point]:
     """The points of ``fam``: its committed table, else measured now."""
     path = table_path(fam.name)
-    return read_table(path) if path.exists() else measure(fam)
+    return read_points(path) if path.exists() else measure(fam)
 
 
 def choose(family: str, tol: float, points: list[Point]) -> Point:

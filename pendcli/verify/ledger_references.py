@@ -368,13 +368,13 @@ def _read_by_references() -> str:
     """The content of the tables a reference may read (the published numbers, the ledgers),
     as one digest: a copy of the tables folder shares the references built for the original,
     an edited one builds its own."""
-    from pendcli.base.cache_key import content_digest
+    from pendcli.base.cache_key import folders_digest
     from pendcli.data.tables import tables_dir
 
     root = tables_dir()
     if str(root) not in _DIGESTS:
         parts = (("published", root / "published"), ("equations", root / "equations"))
-        _DIGESTS[str(root)] = content_digest(p for p in parts if p[1].is_dir())
+        _DIGESTS[str(root)] = folders_digest(p for p in parts if p[1].is_dir())
     return _DIGESTS[str(root)]
 
 

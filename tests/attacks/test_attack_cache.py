@@ -31,7 +31,7 @@ from helpers.cli import invoke
 
 from pendcli.base import cache as cache_module
 from pendcli.base.cache import MARKER, ResultCache, cached_json
-from pendcli.base.cache_key import MAX_HASHED_BYTES, content_digest
+from pendcli.base.cache_key import MAX_HASHED_BYTES, folders_digest
 from pendcli.base.errors import PendcliError
 from pendcli.data.tables import tables_dir
 
@@ -397,7 +397,7 @@ def test_a_file_above_the_bound_is_refused_without_reading_it(tmp_path: Path) ->
     (tmp_path / "huge.bin").touch()
     os.truncate(tmp_path / "huge.bin", MAX_HASHED_BYTES + 1)  # sparse: no disk used
     with pytest.raises(PendcliError, match=f"huge.bin is {MAX_HASHED_BYTES + 1} bytes"):
-        content_digest([("tables", tmp_path)])
+        folders_digest([("tables", tmp_path)])
 
 
 def test_a_file_is_hashed_in_chunks(tmp_path: Path) -> None:
@@ -407,13 +407,13 @@ def test_a_file_is_hashed_in_chunks(tmp_path: Path) -> None:
     os.truncate(tmp_path / "big.bin", size)
     tracemalloc.start()
     try:
-        content_digest([("tables", tmp_path)])
+        folders_digest([("tables", tmp_path)])
         peak = tracemalloc.get_traced_memory()[1]
     finally:
         tracemalloc.stop()
     assert peak < 4 * 2**20
     expected = hashlib.sha256(f"tables:big.bin:{size}\0".encode() + bytes(size))
-    assert content_digest([("tables", tmp_path)]) == expected.hexdigest()
+    assert folders_digest([("tables", tmp_path)]) == expected.hexdigest()
 
 
 def test_links_are_followed_only_inside_the_folder(tmp_path: Path) -> None:
@@ -421,18 +421,18 @@ def test_links_are_followed_only_inside_the_folder(tmp_path: Path) -> None:
     root.mkdir()
     (root / "a.txt").write_text("one", encoding="utf-8")
     (root / "link.txt").symlink_to("a.txt")
-    before = content_digest([("tables", root)])
+    before = folders_digest([("tables", root)])
     (root / "a.txt").write_text("two", encoding="utf-8")  # seen through the link too
-    assert content_digest([("tables", root)]) != before
+    assert folders_digest([("tables", root)]) != before
     (tmp_path / "secret").write_text("s", encoding="utf-8")
     for name, target in (("out.txt", tmp_path / "secret"), ("zero", Path("/dev/zero"))):
         (root / name).symlink_to(target)
         with pytest.raises(PendcliError, match="is a link out of"):
-            content_digest([("tables", root)])
+            folders_digest([("tables", root)])
         (root / name).unlink()
     (root / "folder").symlink_to(tmp_path, target_is_directory=True)
     with pytest.raises(PendcliError, match="is a link out of"):
-        content_digest([("tables", root)])
+        folders_digest([("tables", root)])
 
 
 def test_a_stored_json_value_is_checked_before_it_is_used(tmp_path: Path) -> None:

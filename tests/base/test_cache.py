@@ -19,7 +19,7 @@ from helpers.cli import invoke
 import pendcli.papers.registry as registry
 from pendcli.base import cache as cache_module
 from pendcli.base.cache import FORMAT, ResultCache, cache_folder, rows_from_json, rows_to_json
-from pendcli.base.cache_key import content_digest
+from pendcli.base.cache_key import folders_digest
 from pendcli.data.rows import ClaimRow, EquationRow, FormulaRow
 from pendcli.data.tables import clear_table_cache, tables_dir
 
@@ -160,12 +160,12 @@ def test_one_byte_changed_in_a_table_is_a_miss(tmp_path):
 def test_one_byte_changed_in_a_source_file_is_a_miss(tmp_path):
     package = tmp_path / "pendcli"
     shutil.copytree(Path(cache_module.__file__).parent.parent, package, symlinks=True)
-    before = content_digest([("pendcli", package)])
+    before = folders_digest([("pendcli", package)])
     source = package / "verify" / "verdict.py"
     data = bytearray(source.read_bytes())
     data[len(data) // 2] ^= 0x01
     source.write_bytes(bytes(data))
-    assert content_digest([("pendcli", package)]) != before
+    assert folders_digest([("pendcli", package)]) != before
     # a paper's own package (tests' sample paper) is part of the key the same way
     paper = tmp_path / "paper"
     paper.mkdir()

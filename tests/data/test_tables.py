@@ -222,7 +222,7 @@ TRADEOFF_ROWS = "demo,fast,n=1,1e-06,0.001,12,\ndemo,exact,,0.0001,0,,\ndemo,nai
 def test_shipped_tradeoff_tables_are_valid(name):
     from pendcli.run import tradeoff_engine
 
-    points = tradeoff_engine.read_table(tables_dir() / "tradeoff" / f"{name}.csv")
+    points = tradeoff_engine.read_points(tables_dir() / "tradeoff" / f"{name}.csv")
     assert points and all(p.family == name for p in points)
 
 
@@ -231,7 +231,7 @@ def test_a_valid_tradeoff_table_reads(tmp_path):
 
     path = tmp_path / "demo.csv"
     path.write_text(TRADEOFF_HEADER + TRADEOFF_ROWS, encoding="utf-8")
-    points = tradeoff_engine.read_table(path)
+    points = tradeoff_engine.read_points(path)
     assert [(p.method, p.error, p.evaluations) for p in points] == [
         ("fast", 0.001, 12),
         ("exact", 0.0, None),
@@ -268,7 +268,7 @@ def test_a_bad_tradeoff_table_names_file_and_line(tmp_path, text, message):
     path = tmp_path / "demo.csv"
     path.write_text(text, encoding="utf-8")
     with pytest.raises(PendcliError) as err:
-        tradeoff_engine.read_table(path)
+        tradeoff_engine.read_points(path)
     assert str(err.value).startswith(f"{path}: ")
     assert message in str(err.value)
     assert "\n" not in str(err.value)
@@ -280,6 +280,6 @@ def test_a_tradeoff_table_that_is_not_text_is_an_error(tmp_path):
     path = tmp_path / "demo.csv"
     path.write_bytes(b"\xff\xfe" + TRADEOFF_HEADER.encode())
     with pytest.raises(PendcliError, match="not UTF-8"):
-        tradeoff_engine.read_table(path)
+        tradeoff_engine.read_points(path)
     with pytest.raises(PendcliError, match="cannot read"):
-        tradeoff_engine.read_table(tmp_path)  # a folder where the file should be
+        tradeoff_engine.read_points(tmp_path)  # a folder where the file should be

@@ -248,7 +248,7 @@ def test_choose_on_hand_made_points():
 def test_choose_method_reads_published_table(tmp_path, monkeypatch, planar_points):
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path))
     tradeoff_engine.write_table(planar_points, tradeoff_engine.table_path("planar_period"))
-    back = tradeoff_engine.read_table(tradeoff_engine.table_path("planar_period"))
+    back = tradeoff_engine.read_points(tradeoff_engine.table_path("planar_period"))
     assert [(p.method, p.setting) for p in back] == [(p.method, p.setting) for p in planar_points]
     for a, b in zip(back, planar_points, strict=True):  # three significant digits kept
         assert (a.error is None) == (b.error is None)
@@ -382,7 +382,7 @@ def test_cli_write_tables(tmp_path):
         "tradeoff", "bessel_zeros", "--quick", "-f", "csv", "--write-tables", str(tmp_path)
     )
     assert result.code == 0, result.out
-    back = tradeoff_engine.read_table(tmp_path / "bessel_zeros.csv")
+    back = tradeoff_engine.read_points(tmp_path / "bessel_zeros.csv")
     assert {p.method for p in back} >= {"mpmath", "scipy", "mcmahon"}
 
 
