@@ -48,6 +48,7 @@ SLOW_FAMILIES = {
     "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
     "tests/attacks/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/run/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
+    "tests/run/test_reproduce_steps.py::*": "Tisserand's claims and ledger judged whole",
     "tests/run/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
     "derived twice",
     "tests/papers/lecornu/test_prose_lecornu_from_line_462.py::test_the_reference_of_*": "the "
