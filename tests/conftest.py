@@ -246,6 +246,16 @@ def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(reproduce, "reproduce_all", once)
 
 
+@pytest.fixture(scope="session")
+def computed_tables(tmp_path_factory: pytest.TempPathFactory, worker_id: str):  # type: ignore[no-untyped-def]
+    """The file holding every table's computation from the committed tables, done once per
+    run for all workers (tests/helpers/regenerated.py): for the tests of what `check` does
+    with it (write, compare), not of the computation."""
+    from helpers.regenerated import computed_once, shared_root
+
+    return computed_once(shared_root(tmp_path_factory, worker_id))
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     members: dict[str, list[pytest.Item]] = defaultdict(list)
