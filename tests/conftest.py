@@ -46,7 +46,6 @@ SLOW_FAMILIES = {
     "tests/verify/test_derivation_store.py::test_a_run_says_once_*": "Tisserand's ledger derived "
     "afresh, in a process",
     "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
-    "tests/attacks/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
     "tests/run/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/run/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
     "derived twice",
@@ -90,8 +89,6 @@ SLOW_FAMILIES = {
     "of quadratures",
     "tests/verify/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
     "tests/output/test_summary.py::test_ledger_parts_*": "the whole ledger, in two processes",
-    "tests/run/test_regression.py::test_check_update_leaves_*": "two whole `check --update` "
-    "regenerations (3 s of CPU alone)",
     "tests/papers/tisserand/test_equations_tisserand.py::test_resals_rate_*": "two ODE "
     "integrations of the apsidal motion and the series of the motion to fifth order",
     "tests/base/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
@@ -105,8 +102,6 @@ SLOW_FAMILIES = {
     "tests/output/test_equation_fields.py::"
     "test_every_json_row_carries_the_engines_verdict": "every paper's whole ledger (40 s of CPU "
     "cold)",
-    "tests/attacks/test_faults.py::test_non_finite_committed_values_fail_the_check": "a whole "
-    "`check` (every table and the three ledgers) to compare with the damaged cells (20-30 s)",
     "tests/attacks/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this "
     "process, each regenerating every table and the three ledgers (20 s of CPU)",
     "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
@@ -144,6 +139,7 @@ SLOW_FIXTURES = {
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
     "lecornu_across_g": "Lecornu's claims evaluated, each judged across the range of g",
     "edition_pages": "the three papers' pages built whole, every formula as MathML",
+    "computed_tables": "every table computed, once for the run (shared by the workers)",
 }
 # The long families of like cases: one case per committed ledger row, or one edit of
 # the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps
