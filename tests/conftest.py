@@ -53,7 +53,7 @@ SLOW_FAMILIES = {
     "table after (26), sympy",
     "tests/papers/lecornu/test_prose_scales.py::test_the_engine_judges_*": "four inequalities "
     "judged, sympy",
-    "tests/run/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
+    "tests/run/test_determinism.py::*": "regenerates everything in a fresh process",
     "tests/output/test_reader_scan.py::test_the_pages_of_a_whole_report_*": "a whole report",
     "tests/output/test_terminal_fit.py::*": "each command's whole output at two widths",
     "tests/output/test_terminal_render.py::test_render_*": "each command's whole output at three "

@@ -1,29 +1,38 @@
 """Every table's computation (what `pendcli check` regenerates: ``reproduce_all`` of every
-paper with its formulas and ledger), done once per test run and shared by the tests that need
-its result but test something else: the writer of `check --update` under a kill, a signal, a
-full disk or a read-only folder, and the comparison of damaged committed cells. xdist workers
-share one computation through a file lock in the run's common temporary folder.
+paper with its formulas and ledger), done once per test run in a fresh process with one job,
+and shared by the tests that need its result but test something else: the writer of `check
+--update` under a kill, a signal, a full disk or a read-only folder, the comparison of damaged
+committed cells, and the one-job side of the determinism tests. xdist workers share one
+computation through a file lock in the run's common temporary folder.
 
 :data:`SERVED_CLI` runs `pendcli ARGS` in a fresh process as ``python -m pendcli`` does, with
-``reproduce_all`` answering from that file: the process, its signal handlers, its lock and its
-writer are the real ones; only the computation before them is skipped. The tests of the
-computation itself (tests/run/test_determinism.py, tests/run/test_regression.py) compute it.
+``reproduce_all`` answering from that file: the process, its signal handlers, its lock, its
+writer and its output are the real ones; only the computation before them is served.
 """
 
 from __future__ import annotations
 
 import fcntl
 import os
-import pickle
+import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
-from pendcli.data.tables import clear_table_cache
+from helpers.served_cli import stand_in
 
 SERVED_CLI = (sys.executable, str(Path(__file__).with_name("served_cli.py")))
 NAME = "reproduce-all.pickle"
+COMPUTE = """
+import pickle, sys
+from pendcli.papers.registry import keys
+from pendcli.run.reproduce import reproduce_all
+asked = {"keys": tuple(keys()), "formulas": True, "equations": True, "stability": False}
+result = reproduce_all(keys(), formulas=True, equations=True, stability=False, quiet=True, jobs=1)
+sys.stdout.buffer.write(pickle.dumps((asked, result)))
+"""
 
 
 def shared_root(factory: pytest.TempPathFactory, worker: str) -> Path:
@@ -39,30 +48,20 @@ def computed_once(root: Path) -> Path:
     with open(root / f"{NAME}.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if not path.exists():
+            env = {k: v for k, v in os.environ.items() if k != "PENDCLI_TABLES"}
+            done = subprocess.run(
+                [sys.executable, "-c", COMPUTE],
+                env={**env, "PENDCLI_JOBS": "1"},
+                capture_output=True,
+                check=False,
+            )
+            assert done.returncode == 0, done.stderr.decode()
             tmp = path.with_name(f"{NAME}.tmp")
-            tmp.write_bytes(pickle.dumps(_compute()))
+            tmp.write_bytes(done.stdout)
             os.replace(tmp, path)
     return path
 
 
-def _compute() -> object:
-    from pendcli.papers.registry import keys
-    from pendcli.run.reproduce import reproduce_all
-
-    saved = os.environ.pop("PENDCLI_TABLES", None)  # the committed tables, not a test's copy
-    clear_table_cache()
-    try:
-        return reproduce_all(keys(), formulas=True, equations=True, quiet=True, jobs=1)
-    finally:
-        if saved is not None:
-            os.environ["PENDCLI_TABLES"] = saved
-        clear_table_cache()
-
-
-def served(path: Path) -> object:
-    """A stand-in for ``reproduce_all`` that answers with the stored computation."""
-
-    def reproduce_all(*args: object, **kwargs: object) -> object:
-        return pickle.loads(path.read_bytes())
-
-    return reproduce_all
+def served(path: Path) -> Callable[..., object]:
+    """A stand-in for ``reproduce_all`` in this process, answering from ``path``."""
+    return stand_in(path)
