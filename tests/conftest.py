@@ -226,12 +226,18 @@ def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
 def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
     """For the tests of a command's output form that run it several times (at several widths,
     in several formats): ``reproduce_all`` computes each set of arguments once in the test and
-    serves it again, so `check`, which never reads the result cache, does not compute every
-    table again for each form. No test of a computation uses it."""
+    serves it again, and so does ``derivation_drift`` (each paper's stored derivations derived
+    again) for each paper and tables folder, so `check`, which never reads the result cache,
+    does not compute every table and derivation again for each form. No test of a computation
+    uses it."""
+    from pendcli.data.tables import tables_dir
     from pendcli.run import reproduce
+    from pendcli.verify import ledger_references
 
     computed = reproduce.reproduce_all
+    derived = ledger_references.derivation_drift
     done: dict[str, object] = {}
+    drifts: dict[tuple[str, str], list[str]] = {}
 
     def once(*args: object, **kwargs: object) -> object:
         key = repr((args, sorted(kwargs.items())))
@@ -239,7 +245,14 @@ def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
             done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
         return done[key]
 
+    def drift_once(paper):  # type: ignore[no-untyped-def]
+        key = (paper.key, str(tables_dir()))
+        if key not in drifts:
+            drifts[key] = derived(paper)
+        return list(drifts[key])
+
     monkeypatch.setattr(reproduce, "reproduce_all", once)
+    monkeypatch.setattr(ledger_references, "derivation_drift", drift_once)
 
 
 @pytest.fixture(scope="session")

@@ -18,6 +18,7 @@ import subprocess
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -62,6 +63,6 @@ def computed_once(root: Path) -> Path:
     return path
 
 
-def served(path: Path) -> Callable[..., object]:
+def served(path: Path) -> Callable[..., Any]:
     """A stand-in for ``reproduce_all`` in this process, answering from ``path``."""
     return stand_in(path)

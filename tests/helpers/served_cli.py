@@ -8,9 +8,10 @@ import pickle
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 
-def stand_in(stored: Path) -> Callable[..., object]:
+def stand_in(stored: Path) -> Callable[..., Any]:
     """``reproduce_all`` answering from ``stored`` (what was asked, the result); a call that
     asks for another computation (other papers, no ledger...) is an error, not served."""
 
