@@ -45,7 +45,8 @@ SLOW_FAMILIES = {
     "judged by the exact engine too",
     "tests/verify/test_derivation_store.py::test_a_run_says_once_*": "Tisserand's ledger derived "
     "afresh, in a process",
-    "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
+    "*::test_*check_update*": "a `check --update` in a process, computing every table or "
+    "served the run's shared computation of them",
     "tests/run/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/run/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
     "derived twice",
