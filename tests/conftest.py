@@ -45,8 +45,8 @@ SLOW_FAMILIES = {
     "judged by the exact engine too",
     "tests/verify/test_derivation_store.py::test_a_run_says_once_*": "Tisserand's ledger derived "
     "afresh, in a process",
-    "*::test_*check_update*": "a whole `check --update`: every table recomputed, in a process",
-    "tests/attacks/test_faults.py::test_read_only_tables_folder_*": "a whole `check --update`",
+    "*::test_*check_update*": "a `check --update` in a process, computing every table or "
+    "served the run's shared computation of them",
     "tests/run/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/run/test_reproduce_steps.py::*": "Tisserand's claims and ledger judged whole",
     "tests/run/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
@@ -55,7 +55,7 @@ SLOW_FAMILIES = {
     "table after (26), sympy",
     "tests/papers/lecornu/test_prose_scales.py::test_the_engine_judges_*": "four inequalities "
     "judged, sympy",
-    "tests/run/test_determinism.py::*": "regenerates everything twice, in two fresh processes",
+    "tests/run/test_determinism.py::*": "regenerates everything in a fresh process",
     "tests/output/test_reader_scan.py::test_the_pages_of_a_whole_report_*": "a whole report",
     "tests/output/test_terminal_fit.py::*": "each command's whole output at two widths",
     "tests/output/test_terminal_render.py::test_render_*": "each command's whole output at three "
@@ -91,8 +91,6 @@ SLOW_FAMILIES = {
     "of quadratures",
     "tests/verify/test_formulas.py::test_lecornu_reference_second_method_radau": "an implicit ODE",
     "tests/output/test_summary.py::test_ledger_parts_*": "the whole ledger, in two processes",
-    "tests/run/test_regression.py::test_check_update_leaves_*": "two whole `check --update` "
-    "regenerations (3 s of CPU alone)",
     "tests/papers/tisserand/test_equations_tisserand.py::test_resals_rate_*": "two ODE "
     "integrations of the apsidal motion and the series of the motion to fifth order",
     "tests/base/test_cache.py::test_a_changed_ledger_is_recomputed_not_served_stale": "two cold "
@@ -106,8 +104,6 @@ SLOW_FAMILIES = {
     "tests/output/test_equation_fields.py::"
     "test_every_json_row_carries_the_engines_verdict": "every paper's whole ledger (40 s of CPU "
     "cold)",
-    "tests/attacks/test_faults.py::test_non_finite_committed_values_fail_the_check": "a whole "
-    "`check` (every table and the three ledgers) to compare with the damaged cells (20-30 s)",
     "tests/attacks/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this "
     "process, each regenerating every table and the three ledgers (20 s of CPU)",
     "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
@@ -145,6 +141,7 @@ SLOW_FIXTURES = {
     "example_exact": "Tisserand's example solved exactly twice, by quadrature and by ODE",
     "lecornu_across_g": "Lecornu's claims evaluated, each judged across the range of g",
     "edition_pages": "the three papers' pages built whole, every formula as MathML",
+    "computed_tables": "every table computed, once for the run (shared by the workers)",
 }
 # The long families of like cases: one case per committed ledger row, or one edit of
 # the ledger that must be refused. `make test-slow` (and CI) runs every case; `make test` keeps
@@ -231,12 +228,18 @@ def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
 def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
     """For the tests of a command's output form that run it several times (at several widths,
     in several formats): ``reproduce_all`` computes each set of arguments once in the test and
-    serves it again, so `check`, which never reads the result cache, does not compute every
-    table again for each form. No test of a computation uses it."""
+    serves it again, and so does ``derivation_drift`` (each paper's stored derivations derived
+    again) for each paper and tables folder, so `check`, which never reads the result cache,
+    does not compute every table and derivation again for each form. No test of a computation
+    uses it."""
+    from pendcli.data.tables import tables_dir
     from pendcli.run import reproduce
+    from pendcli.verify import ledger_references
 
     computed = reproduce.reproduce_all
+    derived = ledger_references.derivation_drift
     done: dict[str, object] = {}
+    drifts: dict[tuple[str, str], list[str]] = {}
 
     def once(*args: object, **kwargs: object) -> object:
         key = repr((args, sorted(kwargs.items())))
@@ -244,7 +247,24 @@ def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
             done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
         return done[key]
 
+    def drift_once(paper):  # type: ignore[no-untyped-def]
+        key = (paper.key, str(tables_dir()))
+        if key not in drifts:
+            drifts[key] = derived(paper)
+        return list(drifts[key])
+
     monkeypatch.setattr(reproduce, "reproduce_all", once)
+    monkeypatch.setattr(ledger_references, "derivation_drift", drift_once)
+
+
+@pytest.fixture(scope="session")
+def computed_tables(tmp_path_factory: pytest.TempPathFactory, worker_id: str):  # type: ignore[no-untyped-def]
+    """The file holding every table's computation from the committed tables, done once per
+    run for all workers (tests/helpers/regenerated.py): for the tests of what `check` does
+    with it (write, compare), not of the computation."""
+    from helpers.regenerated import computed_once, shared_root
+
+    return computed_once(shared_root(tmp_path_factory, worker_id))
 
 
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker

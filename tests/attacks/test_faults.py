@@ -3,7 +3,10 @@ set of tables, never a mix or a cut file, and in one named line with the right e
 
 Process-level faults (kill -9, a file-size limit, a read-only folder) run `pendcli check
 --update` in a child process on a copy of ``tables/``, made to differ from what the code
-regenerates so that "unchanged" and "rewritten" can be told apart byte for byte. Faults in
+regenerates so that "unchanged" and "rewritten" can be told apart byte for byte. The faults
+are in the writing, so the child is served the tables' computation, done once for the run
+(tests/helpers/regenerated.py), and reaches its lock and writer as the real command does
+with the same files (tests/run/test_determinism.py runs the whole command). Faults in
 the data (a renamed claim id, a non-finite or cut committed table, a bad tradeoff table) run
 the CLI in-process, where the recomputation is cached across tests.
 """
@@ -20,13 +23,13 @@ import resource
 import shutil
 import signal
 import subprocess
-import sys
 import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
 from helpers.cli import NO_BYTECODE, assert_clean_error, invoke
+from helpers.regenerated import SERVED_CLI, served
 
 from pendcli.base.errors import PendcliError
 from pendcli.data.tables import clear_table_cache
@@ -83,8 +86,9 @@ def _entries(folder: Path) -> list[os.DirEntry[str]]:
         return []
 
 
-def cli_command(*args: str) -> list[str]:
-    return [sys.executable, "-m", "pendcli", *args]
+def cli_command(computed: Path, *args: str) -> list[str]:
+    """`pendcli ARGS` in a fresh process, its tables' computation served from ``computed``."""
+    return [*SERVED_CLI, str(computed), *args]
 
 
 def child_env(tables: Path) -> dict[str, str]:
@@ -93,10 +97,10 @@ def child_env(tables: Path) -> dict[str, str]:
 
 
 def run_cli(
-    tables: Path, *args: str, preexec: Callable[[], None] | None = None
+    tables: Path, computed: Path, *args: str, preexec: Callable[[], None] | None = None
 ) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
-        cli_command(*args),
+        cli_command(computed, *args),
         env={**child_env(tables), **(NO_BYTECODE if preexec is _limit_file_size else {})},
         capture_output=True,
         text=True,
@@ -117,12 +121,14 @@ def assert_one_line_error(out: subprocess.CompletedProcess[str], path: Path) -> 
 # Process-level faults during `pendcli check --update`
 
 
-def test_kill_during_check_update_leaves_the_old_or_the_new_set(tmp_path: Path) -> None:
+def test_kill_during_check_update_leaves_the_old_or_the_new_set(
+    tmp_path: Path, computed_tables: Path
+) -> None:
     tables = copy_tables(tmp_path / "tables")
     make_stale(tables)
     old = snapshot(tables / "regenerated")
     proc = subprocess.Popen(
-        cli_command("check", "--update", "--quiet"),
+        cli_command(computed_tables, "check", "--update", "--quiet"),
         env=child_env(tables),
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
@@ -139,7 +145,9 @@ def test_kill_during_check_update_leaves_the_old_or_the_new_set(tmp_path: Path) 
     proc.kill()
     proc.wait()
     killed = snapshot(tables / "regenerated")
-    finished = run_cli(tables, "check", "--update")  # the next run recovers and completes
+    finished = run_cli(
+        tables, computed_tables, "check", "--update"
+    )  # the next run recovers and completes
     assert finished.returncode == 0, finished.stderr
     new = snapshot(tables / "regenerated")
     assert new is not None and new != old
@@ -150,7 +158,7 @@ def test_kill_during_check_update_leaves_the_old_or_the_new_set(tmp_path: Path) 
 @pytest.mark.slow
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
 def test_ctrl_c_or_term_during_check_update_is_one_line_and_old_or_new(
-    tmp_path: Path, signum: signal.Signals
+    tmp_path: Path, signum: signal.Signals, computed_tables: Path
 ) -> None:
     """Stopped once the write has begun (its lock taken): the old set or the new, status 130
     or 143, one line, no temporary folder, no lock file, no traceback."""
@@ -158,7 +166,7 @@ def test_ctrl_c_or_term_during_check_update_is_one_line_and_old_or_new(
     make_stale(tables)
     old = snapshot(tables / "regenerated")
     proc = subprocess.Popen(
-        cli_command("check", "--update", "--quiet"),
+        cli_command(computed_tables, "check", "--update", "--quiet"),
         env={**child_env(tables), "PENDCLI_JOBS": "1"},
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
@@ -183,7 +191,7 @@ def test_ctrl_c_or_term_during_check_update_is_one_line_and_old_or_new(
     assert proc.returncode == 128 + signum, err
     assert err == f"pendcli: error: interrupted by {signum.name}\n"
     if after != old:  # the swap came first: the whole new set
-        assert after is not None and run_cli(tables, "check").returncode == 0
+        assert after is not None and run_cli(tables, computed_tables, "check").returncode == 0
 
 
 def _limit_file_size() -> None:
@@ -192,12 +200,12 @@ def _limit_file_size() -> None:
 
 
 def test_full_disk_during_check_update_is_a_named_error_and_changes_nothing(
-    tmp_path: Path,
+    tmp_path: Path, computed_tables: Path
 ) -> None:
     tables = copy_tables(tmp_path / "tables")
     make_stale(tables)
     before = snapshot(tables / "regenerated")
-    out = run_cli(tables, "check", "--update", preexec=_limit_file_size)
+    out = run_cli(tables, computed_tables, "check", "--update", preexec=_limit_file_size)
     assert_one_line_error(out, tables)
     assert "File too large" in out.stderr
     assert snapshot(tables / "regenerated") == before
@@ -223,14 +231,16 @@ def read_only(*folders: Path) -> Iterator[None]:
             folder.chmod(0o755)
 
 
-def test_read_only_tables_folder_is_a_named_error_and_changes_nothing(tmp_path: Path) -> None:
+def test_read_only_tables_folder_is_a_named_error_and_changes_nothing(
+    tmp_path: Path, computed_tables: Path
+) -> None:
     tables = copy_tables(tmp_path / "tables")
     make_stale(tables)
     before = snapshot(tables / "regenerated")
     preexec = _without_root_privileges if os.geteuid() == 0 else None
     with read_only(tables, tables / "regenerated"):
         try:
-            out = run_cli(tables, "check", "--update", preexec=preexec)
+            out = run_cli(tables, computed_tables, "check", "--update", preexec=preexec)
         except subprocess.SubprocessError as exc:  # no user namespaces here: root ignores modes
             pytest.skip(f"cannot drop root's file permissions: {exc}")
     assert_one_line_error(out, tables)
@@ -308,7 +318,13 @@ def _set_cells(path: Path, column: str, values: dict[int, str]) -> None:
     path.write_text(buf.getvalue(), "utf-8")
 
 
-def test_non_finite_committed_values_fail_the_check(tables_copy: Path) -> None:
+def test_non_finite_committed_values_fail_the_check(
+    tables_copy: Path, computed_tables: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Damaged committed cells against the computation (served: the cells are the fault)."""
+    from pendcli.run import reproduce
+
+    monkeypatch.setattr(reproduce, "reproduce_all", served(computed_tables))
     tokens = {0: "inf", 1: "-1e400", 2: "nan", 3: "1e400"}
     _set_cells(tables_copy / "regenerated" / "lecornu-claims.csv", "recomputed", tokens)
     code, out, _ = invoke("check")

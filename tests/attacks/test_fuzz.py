@@ -253,10 +253,11 @@ def test_reproduce_out_refused(out: str) -> None:
     assert sorted(os.listdir(".")) == before, "--out wrote into the current folder"
 
 
-@settings(FEW, max_examples=3)
+@settings(FEW, max_examples=3, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(extra=st.sampled_from([(), ("-q",), ("--bogus",), ("-q", "stray")]))
-def test_check_never_tracebacks(extra: tuple[str, ...]) -> None:
-    """`check` only reads (never --update here): drift is exit 1, the rest 0 or 2."""
+def test_check_never_tracebacks(reproduce_computed_once: None, extra: tuple[str, ...]) -> None:
+    """`check` only reads (never --update here): drift is exit 1, the rest 0 or 2. Its
+    computation is done once for the examples (the same tables each time)."""
     well_behaved("check", *extra)
 
 

@@ -189,8 +189,12 @@ def test_read_only_folder_is_a_named_error(tmp_path: Path) -> None:
     assert list(folder.iterdir()) == []
 
 
-def test_check_update_swaps_the_whole_set(tmp_path: Path) -> None:
+def test_check_update_swaps_the_whole_set(tmp_path: Path, computed_tables: Path) -> None:
+    """A retired table removed, a cut one replaced, no temporary folder left: the real
+    command in a process, its computation served (tests/helpers/regenerated.py)."""
     import shutil
+
+    from helpers.regenerated import SERVED_CLI
 
     root = Path(__file__).resolve().parents[2] / "tables"
     copy = tmp_path / "tables"
@@ -198,7 +202,7 @@ def test_check_update_swaps_the_whole_set(tmp_path: Path) -> None:
     (copy / "regenerated" / "retired-claims.csv").write_text("id\n")
     (copy / "regenerated" / "lecornu-claims.csv").write_text("id\ncut mid-r")  # a cut table
     env = {**os.environ, "PENDCLI_TABLES": str(copy)}
-    cmd = [sys.executable, "-m", "pendcli", "check", "--update"]
+    cmd = [*SERVED_CLI, str(computed_tables), "check", "--update"]
     out = subprocess.run(cmd, capture_output=True, text=True, env=env)
     assert out.returncode == 0, out.stderr
     assert "removed 1 table(s) no longer produced: retired-claims.csv" in out.stdout

@@ -207,12 +207,17 @@ def test_list_shows_printed_units_raised() -> None:
 # --- the whole report (slow: every paper reproduced) ---------------------------------------
 
 
-def test_the_pages_of_a_whole_report_show_no_internal_name(tmp_path: Path) -> None:
+def test_the_pages_of_a_whole_report_show_no_internal_name(
+    tmp_path: Path, computed_tables: Path
+) -> None:
+    """Every paper's pages, written from the run's shared computation of every table
+    (tests/helpers/regenerated.py): what is scanned is the writing."""
+    from helpers.regenerated import served
+
     from pendcli.output.report import write_report
     from pendcli.papers import registry
-    from pendcli.run.reproduce import reproduce_all
 
-    result = reproduce_all(registry.keys(), equations=True, jobs=1)
+    result = served(computed_tables)(registry.keys(), equations=True, jobs=1)
     write_report(result, tmp_path / "out", quiet=True, jobs=1)
     out = tmp_path / "out"
     assert internal_names((out / "report.md").read_text("utf-8")) == []

@@ -2,10 +2,14 @@
 fresh copy of the committed tables is left as it is.
 
 Each run is a fresh process, so nothing one run leaves behind (a global mpmath precision, a
-cache, an import) can reach the other. Found: the committed formula tables had been written on
-a CPU whose BLAS and SIMD kernels round differently; the adaptive ODE steps carry those last
-bits to ~1e-9 in an observed order. Where the two runs here agree but the committed tables do
-not, that is the cause: `make regen` on the machine that checks them.
+cache, an import) can reach the other. The one-job side is the computation of every table the
+run shares (tests/helpers/regenerated.py: a fresh process, one job), written or printed by the
+real command in another fresh process; the two-job side is the whole command.
+
+Found: the committed formula tables had been written on a CPU whose BLAS and SIMD kernels
+round differently; the adaptive ODE steps carry those last bits to ~1e-9 in an observed order.
+Where the two runs here agree but the committed tables do not, that is the cause: `make regen`
+on the machine that checks them.
 """
 
 from __future__ import annotations
@@ -17,19 +21,25 @@ import sys
 from pathlib import Path
 
 import pytest
+from helpers.regenerated import SERVED_CLI
 
 import pendcli
 
 TABLES = Path(pendcli.__file__).parent / "_tables"
 
 
-def regenerate(tmp: Path, jobs: int) -> dict[str, bytes]:
+def pendcli(served: Path | None) -> list[str]:
+    """`pendcli` in a fresh process: computing, or served the one-job computation ``served``."""
+    return [*SERVED_CLI, str(served)] if served else [sys.executable, "-m", "pendcli"]
+
+
+def regenerate(tmp: Path, jobs: int, served: Path | None = None) -> dict[str, bytes]:
     """`pendcli check --update` on a fresh copy of the committed tables: the bytes it leaves."""
     copy = tmp / f"tables-{jobs}"
     shutil.copytree(TABLES, copy)
     env = {**os.environ, "PENDCLI_TABLES": str(copy), "PENDCLI_JOBS": str(jobs)}
     done = subprocess.run(
-        [sys.executable, "-m", "pendcli", "check", "--update", "-q"],
+        [*pendcli(served), "check", "--update", "-q"],
         env=env,
         capture_output=True,
         text=True,
@@ -50,9 +60,9 @@ def changed_lines(old: bytes, new: bytes) -> list[str]:
 
 @pytest.mark.slow
 def test_check_update_on_a_fresh_copy_changes_no_byte_with_one_or_two_processes(
-    tmp_path: Path,
+    tmp_path: Path, computed_tables: Path
 ) -> None:
-    one, two = regenerate(tmp_path, 1), regenerate(tmp_path, 2)
+    one, two = regenerate(tmp_path, 1, computed_tables), regenerate(tmp_path, 2)
     assert one.keys() == two.keys()
     for name in one:
         assert one[name] == two[name], (name, changed_lines(one[name], two[name]))
@@ -62,12 +72,11 @@ def test_check_update_on_a_fresh_copy_changes_no_byte_with_one_or_two_processes(
             assert tables.get(name) == new, (name, changed_lines(tables.get(name, b""), new))
 
 
-def reproduce_json(jobs: int, *order: str) -> bytes:
+def reproduce_json(jobs: int, served: Path | None = None) -> bytes:
     env = {**os.environ, "PENDCLI_JOBS": str(jobs)}
     env.pop("PENDCLI_TABLES", None)
-    papers = [a for key in order for a in ("-p", key)]
     done = subprocess.run(
-        [sys.executable, "-m", "pendcli", "reproduce", "-f", "json", "--equations", *papers],
+        [*pendcli(served), "reproduce", "-f", "json", "--equations"],
         env=env,
         capture_output=True,
     )
@@ -76,5 +85,7 @@ def reproduce_json(jobs: int, *order: str) -> bytes:
 
 
 @pytest.mark.slow
-def test_reproduce_json_with_equations_is_the_same_bytes_with_one_or_two_processes() -> None:
-    assert reproduce_json(1) == reproduce_json(2)
+def test_reproduce_json_with_equations_is_the_same_bytes_with_one_or_two_processes(
+    computed_tables: Path,
+) -> None:
+    assert reproduce_json(1, computed_tables) == reproduce_json(2)

@@ -221,12 +221,20 @@ def test_check_update_keeps_what_moved_only_within_the_tolerance(tmp_path) -> No
     assert kept[3:] == committed.splitlines()[3:]
 
 
-def test_check_update_leaves_a_set_that_holds_its_bytes_as_it_is(tmp_path, monkeypatch, capsys):
+def test_check_update_leaves_a_set_that_holds_its_bytes_as_it_is(
+    tmp_path, monkeypatch, capsys, computed_tables
+):
     """Untouched, `check --update` swaps nothing: the folder and each file keep their inode and
     time, and it says so; with one committed cell moved beyond its tolerance it rewrites the
-    set, and that cell is the regenerated one again."""
+    set, and that cell is the regenerated one again. What is tested is the writing: the
+    computation is served, done once for the run (tests/helpers/regenerated.py)."""
+    from helpers.regenerated import served
+
     from pendcli.data.tables import clear_table_cache, tables_dir
+    from pendcli.run import reproduce
     from pendcli.run.regression import run_check
+
+    monkeypatch.setattr(reproduce, "reproduce_all", served(computed_tables))
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
