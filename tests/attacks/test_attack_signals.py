@@ -12,6 +12,7 @@ from __future__ import annotations
 import contextlib
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -320,11 +321,24 @@ def computing_worker(proc: subprocess.Popen[bytes]) -> int:
 
 
 def start_equations_with_a_worker(tmp_path: Path) -> tuple[subprocess.Popen[bytes], int]:
-    """`pendcli equations` of one paper in two processes: each takes half of its ledger."""
+    """`pendcli equations` of one paper in two processes: each takes half of its ledger. The
+    ledger is edited (a comment added), so it is derived afresh (seconds of CPU for each half)
+    rather than judged from the stored derivations, which a worker can finish before it is
+    seen computing; no result cache."""
+    from pendcli.data.tables import tables_dir
+
+    shutil.copytree(tables_dir(), tmp_path / "tables")
+    ledger = tmp_path / "tables" / "equations" / "tisserand.toml"
+    ledger.write_text(ledger.read_text("utf-8") + "# edited\n", "utf-8")
     proc = subprocess.Popen(
         [str(PENDCLI), "equations", "-p", "tisserand", "-f", "json"],
         cwd=tmp_path,
-        env={**child_env(), "PENDCLI_JOBS": "2"},
+        env={
+            **child_env(),
+            "PENDCLI_JOBS": "2",
+            "PENDCLI_TABLES": str(tmp_path / "tables"),
+            "PENDCLI_CACHE": "off",
+        },
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
         start_new_session=True,
