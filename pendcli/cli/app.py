@@ -148,6 +148,32 @@ EquationsOption = Annotated[
 ]
 
 
+NotesOption = Annotated[
+    bool, typer.Option("--notes", help="Table format: every column, notes included.")
+]
+OnlyFailingOption = Annotated[
+    bool, typer.Option("--only-failing", help="Only the rows that do not agree, hold or check.")
+]
+MeasureOption = Annotated[
+    bool, typer.Option("--measure", help="With --out: time the speed families now.")
+]
+PdfOption = Annotated[
+    bool,
+    typer.Option("--pdf", help="With --out: print each HTML page to PDF (headless Chromium)."),
+]
+FailOnOption = Annotated[
+    str | None,
+    typer.Option(
+        "--fail-on",
+        metavar="VERDICT[,...]",
+        parser=word,
+        help="Exit 1 when any row has one of these verdicts or statuses (for CI), e.g. "
+        "discrepant,fails. An equation status (misprint...) runs the ledger.",
+        autocompletion=complete_verdicts,
+    ),
+]
+
+
 @command(app, "reproduce")
 def reproduce(
     paper: PaperOption = None,
@@ -156,36 +182,15 @@ def reproduce(
     formulas: FormulasOption = True,
     equations: EquationsOption = None,
     stability: StabilityOption = None,
-    notes: Annotated[
-        bool, typer.Option("--notes", help="Table format: every column, notes included.")
-    ] = False,
-    only_failing: Annotated[
-        bool,
-        typer.Option("--only-failing", help="Only the rows that do not agree, hold or check."),
-    ] = False,
+    notes: NotesOption = False,
+    only_failing: OnlyFailingOption = False,
     quiet: QuietOption = False,
-    measure: Annotated[
-        bool, typer.Option("--measure", help="With --out: time the speed families now.")
-    ] = False,
-    pdf: Annotated[
-        bool,
-        typer.Option("--pdf", help="With --out: print each HTML page to PDF (headless Chromium)."),
-    ] = False,
-    fail_on: Annotated[
-        str | None,
-        typer.Option(
-            "--fail-on",
-            metavar="VERDICT[,...]",
-            parser=word,
-            help="Exit 1 when any row has one of these verdicts or statuses (for CI), e.g. "
-            "discrepant,fails. An equation status (misprint...) runs the ledger.",
-            autocompletion=complete_verdicts,
-        ),
-    ] = None,
+    measure: MeasureOption = False,
+    pdf: PdfOption = False,
+    fail_on: FailOnOption = None,
     cache: CacheOption = True,
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 unless --fail-on)."""
-    from pendcli.base.errors import PendcliError
     from pendcli.cli.common import result_cache
     from pendcli.papers.registry import resolve_papers
     from pendcli.run.reproduce import EQUATION_ONLY, reproduce_all
@@ -193,16 +198,7 @@ def reproduce(
     fail_names = _fail_names(fail_on)
     if fail_names & EQUATION_ONLY and equations is None:
         equations = True
-    if measure and out is None:
-        raise PendcliError("--measure needs --out (it re-times the report's speed families)")
-    if pdf and out is None:
-        raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
-    if out is not None:  # refuse a bad folder before the run, not after
-        from pendcli.cli.targets import check_replaced_folder
-        from pendcli.output.report import check_out_folder
-
-        check_replaced_folder(out, "--out")
-        check_out_folder(out)
+    _check_report_options(out, measure, pdf)
     with result_cache(cache, quiet) as stored:
         if out is not None:  # a cache inside the report's folder would be replaced with it
             stored.keep_out_of(out)
@@ -224,6 +220,22 @@ def reproduce(
             _write_report(result, out, quiet, measure, pdf, stored)
     if fail_names:
         _fail_on(result, fail_names, quiet)
+
+
+def _check_report_options(out: Path | None, measure: bool, pdf: bool) -> None:
+    """--measure and --pdf need --out; a bad --out folder is refused before the run, not after."""
+    from pendcli.base.errors import PendcliError
+
+    if measure and out is None:
+        raise PendcliError("--measure needs --out (it re-times the report's speed families)")
+    if pdf and out is None:
+        raise PendcliError("--pdf needs --out (it prints the HTML pages written there)")
+    if out is not None:
+        from pendcli.cli.targets import check_replaced_folder
+        from pendcli.output.report import check_out_folder
+
+        check_replaced_folder(out, "--out")
+        check_out_folder(out)
 
 
 def _fail_names(text: str | None) -> frozenset[str]:
