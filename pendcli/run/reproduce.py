@@ -265,7 +265,6 @@ def _computed(
     status_line("")
     with contextlib.ExitStack() as lent:
         _lend_formula_rows(lent, stored, steps)
-        _lend_measured_formula_rows(lent, stored, steps)
         done = lent.enter_context(counting_rows())  # before the fork: workers count too
         bar = progress_bar(quiet, len(steps), title, (rows, done) if rows else None)
         with ForkedWorkers(workers) as pool, bar as advance:
@@ -554,30 +553,22 @@ def _gather(
 def _lend_formula_rows(
     stack: contextlib.ExitStack, stored: dict[Wanted, Any], steps: list[Step]
 ) -> None:
-    """Lend stored formula rows to the ledger's checks that re-read them (before the fork,
-    so a worker inherits them too), rather than integrate them again."""
-    from pendcli.verify.claims import sharing_formula_rows
-
-    for key in dict.fromkeys(k for k, what in steps if what.startswith("equations")):
-        if (key, "formulas") in stored:
-            stack.enter_context(sharing_formula_rows(key, stored[key, "formulas"]))
-
-
-def _lend_measured_formula_rows(
-    stack: contextlib.ExitStack, stored: dict[Wanted, Any], steps: list[Step]
-) -> None:
-    """A ledger judged without its paper's formula checks (``pendcli equations``) whose rows
-    name one (``measured``): the checks computed here, once, and lent before the fork, rather
-    than by each process that judges a part of the ledger."""
+    """Lend formula rows to the ledger's checks that re-read them (before the fork, so a
+    worker inherits them too), rather than integrate them again: the stored ones; else, for a
+    ledger judged without its paper's formula checks (``pendcli equations``) whose rows name
+    one (``measured``), the checks computed here, once, not by each part of the ledger."""
     from pendcli.data.ledger import load_ledger
     from pendcli.verify.claims import sharing_formula_rows
 
-    computing = {k for k, what in steps if what.startswith(("formulas", "formulas+"))}
+    computing = {k for k, what in steps if what.startswith("formulas")}
     for key in dict.fromkeys(k for k, what in steps if what.startswith("equations")):
-        if key in computing or (key, "formulas") in stored:
+        if (key, "formulas") in stored:
+            rows = stored[key, "formulas"]
+        elif key in computing or not any(row.measured for row in load_ledger(key).rows):
             continue
-        if any(row.measured for row in load_ledger(key).rows):
-            stack.enter_context(sharing_formula_rows(key, list(formula_checks(key))))
+        else:
+            rows = list(formula_checks(key))
+        stack.enter_context(sharing_formula_rows(key, rows))
 
 
 def _verdict_names() -> tuple[str, ...]:
