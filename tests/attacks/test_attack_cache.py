@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from helpers.cli import invoke
+from helpers.cli import child_env, invoke
 
 from pendcli.base import cache as cache_module
 from pendcli.base.cache import MARKER, ResultCache, cached_json
@@ -48,10 +48,9 @@ WIDE = {"COLUMNS": "1000"}
 
 
 def run_cli(*args: str, env: dict[str, str], **options: Any) -> subprocess.CompletedProcess[str]:
-    every = {k: v for k, v in os.environ.items() if k not in ("PENDCLI_DEBUG", "PENDCLI_TABLES")}
     return subprocess.run(
         [*PENDCLI, *args],
-        env={**every, **WIDE, "PENDCLI_JOBS": "1", **env},
+        env=child_env(**{**WIDE, **env}),
         capture_output=True,
         text=True,
         timeout=HANG_GUARD,

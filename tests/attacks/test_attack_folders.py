@@ -17,6 +17,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from helpers.cli import child_env
 
 from pendcli.base.errors import PendcliError
 from pendcli.base.files import atomic_write, lock_file, locked, remove_stale
@@ -29,11 +30,10 @@ DEAD_PID = 2**22 + 7  # above the default pid_max (4194304): never a live proces
 
 
 def run_cli(cwd: Path, *args: str) -> subprocess.CompletedProcess[str]:
-    env = {k: v for k, v in os.environ.items() if k not in ("PENDCLI_DEBUG", "PENDCLI_TABLES")}
     return subprocess.run(
         [str(PENDCLI), *args],
         cwd=cwd,
-        env={**env, "PENDCLI_JOBS": "1"},
+        env=child_env(),
         capture_output=True,
         text=True,
         timeout=600,
@@ -180,8 +180,7 @@ def test_two_concurrent_runs_on_out_star_keep_every_folder_beside_it_and_leave_a
         (tmp_path / name / "notes.txt").write_text("mine", encoding="utf-8")
     dead = tmp_path / f".*.new-{DEAD_PID}-abcdefgh"
     dead.mkdir()
-    env = {k: v for k, v in os.environ.items() if k not in ("PENDCLI_DEBUG", "PENDCLI_TABLES")}
-    env["PENDCLI_JOBS"] = "1"
+    env = child_env()
     runs = [
         subprocess.Popen(
             [str(PENDCLI), *CHEAP, "--out", "*"],

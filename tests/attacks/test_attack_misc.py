@@ -20,7 +20,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from helpers.cli import assert_clean_error, invoke
+from helpers.cli import assert_clean_error, child_env, invoke
 
 PENDCLI = (sys.executable, "-m", "pendcli")
 CHEAP = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")
@@ -28,11 +28,10 @@ README = Path(__file__).resolve().parents[2] / "docs" / "usage.md"
 MB = 1 << 20
 
 
-def child_env(**extra: str) -> dict[str, str]:
-    env = {k: v for k, v in os.environ.items() if k not in ("PENDCLI_DEBUG", "PENDCLI_TABLES")}
+def limited_env(**extra: str) -> dict[str, str]:
     # two BLAS threads, as on the 2-core machines this was measured on: the address space
     # OpenBLAS reserves grows with its threads (and below ~250 MB its start-up never returns)
-    return {**env, "PENDCLI_JOBS": "1", "OPENBLAS_NUM_THREADS": "2", **extra}
+    return child_env(OPENBLAS_NUM_THREADS="2", **extra)
 
 
 def limited(kind: int, value: int) -> Callable[[], None]:
@@ -44,7 +43,7 @@ def run(
 ) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         [*PENDCLI, *args],
-        env=child_env(**env),
+        env=limited_env(**env),
         capture_output=True,
         text=True,
         preexec_fn=limit,
@@ -85,7 +84,7 @@ def test_series_zeros_beyond_their_safe_range_are_refused_before_allocating():
 def peak_memory(*args: str) -> int:
     """Peak resident memory (bytes) of one run of `pendcli ARGS`, output discarded."""
     proc = subprocess.Popen(
-        [*PENDCLI, *args], env=child_env(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE
+        [*PENDCLI, *args], env=limited_env(), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE
     )
     _, status, usage = os.wait4(proc.pid, 0)
     assert os.waitstatus_to_exitcode(status) == 0
@@ -221,7 +220,7 @@ def test_a_reader_that_stops_early_ends_the_run_quietly_with_141():
     README says (it said one line and exit 2, which the code never did)."""
     proc = subprocess.Popen(
         [*PENDCLI, "lecornu", "zeros", "--count", "100000", "-f", "csv"],
-        env=child_env(),
+        env=limited_env(),
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
     )
@@ -244,7 +243,7 @@ def test_a_reader_of_standard_error_that_stops_early_costs_no_output():
     os.close(read)
     proc = subprocess.run(
         [*PENDCLI, "lecornu", "zeros", "--count", "5"],
-        env=child_env(),
+        env=limited_env(),
         stdout=subprocess.PIPE,
         stderr=write,
         timeout=120,

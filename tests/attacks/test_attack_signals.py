@@ -22,6 +22,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from helpers.cli import child_env
 
 from pendcli.base.files import remove_stale
 from pendcli.base.owned_folders import MANIFEST, manifest_text
@@ -40,11 +41,6 @@ def tree(folder: Path) -> dict[str, bytes] | None:
         for p in sorted(folder.rglob("*"))
         if p.is_file()
     }
-
-
-def child_env() -> dict[str, str]:
-    env = {k: v for k, v in os.environ.items() if k not in ("PENDCLI_DEBUG", "PENDCLI_TABLES")}
-    return {**env, "PENDCLI_JOBS": "1"}
 
 
 def wait_for(proc: subprocess.Popen[bytes], moment: Callable[[], bool]) -> bool:

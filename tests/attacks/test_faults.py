@@ -91,7 +91,7 @@ def cli_command(computed: Path, *args: str) -> list[str]:
     return [*SERVED_CLI, str(computed), *args]
 
 
-def child_env(tables: Path) -> dict[str, str]:
+def tables_env(tables: Path) -> dict[str, str]:
     env = {k: v for k, v in os.environ.items() if k != "PENDCLI_DEBUG"}
     return {**env, "PENDCLI_TABLES": str(tables), "COLUMNS": "200"}
 
@@ -101,7 +101,7 @@ def run_cli(
 ) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         cli_command(computed, *args),
-        env={**child_env(tables), **(NO_BYTECODE if preexec is _limit_file_size else {})},
+        env={**tables_env(tables), **(NO_BYTECODE if preexec is _limit_file_size else {})},
         capture_output=True,
         text=True,
         preexec_fn=preexec,
@@ -129,7 +129,7 @@ def test_kill_during_check_update_leaves_the_old_or_the_new_set(
     old = snapshot(tables / "regenerated")
     proc = subprocess.Popen(
         cli_command(computed_tables, "check", "--update", "--quiet"),
-        env=child_env(tables),
+        env=tables_env(tables),
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
         cwd=tmp_path,
@@ -167,7 +167,7 @@ def test_ctrl_c_or_term_during_check_update_is_one_line_and_old_or_new(
     old = snapshot(tables / "regenerated")
     proc = subprocess.Popen(
         cli_command(computed_tables, "check", "--update", "--quiet"),
-        env={**child_env(tables), "PENDCLI_JOBS": "1"},
+        env={**tables_env(tables), "PENDCLI_JOBS": "1"},
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
         text=True,

@@ -72,6 +72,14 @@ def invoke(*args: str, env: Mapping[str, str] | None = None, utf8: bool = False)
     return CliResult(code, out.getvalue(), err.getvalue())
 
 
+def child_env(**extra: str) -> dict[str, str]:
+    """This process's environment for a `pendcli` child, without what would change its run
+    (PENDCLI_DEBUG's tracebacks, a PENDCLI_TABLES folder), in one process (PENDCLI_JOBS=1)
+    unless ``extra`` says otherwise."""
+    env = {k: v for k, v in os.environ.items() if k not in ("PENDCLI_DEBUG", "PENDCLI_TABLES")}
+    return {**env, "PENDCLI_JOBS": "1", **extra}
+
+
 def run_cli(
     *args: str, env: Mapping[str, str] | None = None, **kwargs: Any
 ) -> subprocess.CompletedProcess[str]:
