@@ -24,6 +24,7 @@ which verdicts are proofs and which agreement at random points.
 
 from __future__ import annotations
 
+import re
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -164,6 +165,11 @@ def _orders(value: object) -> tuple[tuple[str, int], ...]:
     return tuple((n, _order(v)) for n, v in _table(value).items())
 
 
+# An integer, a decimal or a fraction as the ledger writes one, its digits and exponent
+# bounded: "1e99999999" would make a ten-million-digit integer (a crafted ledger's hang).
+_NUMBER = re.compile(r"-?\d{1,30}(?:\.\d{0,30})?(?:[eE][-+]?\d{1,3})?(?:/\d{1,30})?")
+
+
 def number(value: object) -> Any:
     """A domain bound or a case's value as the ledger writes it (an integer, a decimal, or a
     fraction "p/q" as a string), as an exact sympy number."""
@@ -171,6 +177,8 @@ def number(value: object) -> Any:
 
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ValueError(f"is not a number: {value!r}")
+    if not _NUMBER.fullmatch(str(value).strip()):
+        raise ValueError(f"is not a number of at most 30 digits: {str(value)[:40]!r}")
     try:
         exact = sp.Rational(str(value).strip())
     except (TypeError, ValueError, SyntaxError, sp.SympifyError):

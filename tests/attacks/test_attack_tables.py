@@ -239,6 +239,12 @@ BAD_PARAMETERS = {
         'alpha = ["x", 1.2]',
         "of 'alpha': is not a number",
     ),
+    "domain bound with a huge exponent": (
+        LIMIT_ROW,
+        "alpha = [0.3, 1.2]",
+        'alpha = ["1e99999999", 1.2]',
+        "of 'alpha': is not a number of at most 30 digits",
+    ),
     "order not an integer": (
         SERIES_ROW,
         "order = 2",
