@@ -56,7 +56,8 @@ def figure_tasks(result: ReproduceResult, folder: Path, tradeoff: list[Point] | 
     for key in result.papers:
         claim_figures = paper(key).figures
         if claim_figures is not None:
-            tasks.append((key, "claims", claim_figures, (folder / "figures" / key,)))
+            drawn_from = (folder / "figures" / key, result.claims.get(key))
+            tasks.append((key, "claims", claim_figures, drawn_from))
     return tasks
 
 

@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from pendcli.verify.causes import Procedure
-    from pendcli.verify.claims import FormulaRow, Recomputed
+    from pendcli.verify.claims import ClaimRow, FormulaRow, Recomputed
 
 __all__ = ["CliApp", "Hook", "Paper", "PaperTables", "check_hooks", "hook", "merged", "modules"]
 
@@ -125,9 +125,10 @@ class Paper:
     author obtained a printed value from his earlier ones, :mod:`pendcli.verify.causes`),
     ``tradeoff_families`` (work-precision families, :mod:`pendcli.run.tradeoff`),
     ``stability_rows`` (:mod:`pendcli.run.stability`), ``figures`` (the report's figures of the
-    claims, into a folder), ``formula_figures`` (residual figures of the formula rows),
-    ``captions`` (figure file stem -> caption), ``explanations`` (the author's hand computations
-    that ``pendcli explain`` searches, :mod:`pendcli.verify.explain`) and ``cli`` (the sub-app).
+    claims, into a folder, from the judged claim rows), ``formula_figures`` (residual figures of
+    the formula rows), ``captions`` (figure file stem -> caption), ``explanations`` (the
+    author's hand computations that ``pendcli explain`` searches, :mod:`pendcli.verify.explain`)
+    and ``cli`` (the sub-app).
     """
 
     key: str
@@ -140,7 +141,7 @@ class Paper:
     author_procedures: Callable[[], Mapping[str, Procedure]] | None = None
     tradeoff_families: Callable[[], Sequence[Any]] | None = None  # -> tradeoff.Family
     stability_rows: Callable[[], list[dict[str, str]]] | None = None
-    figures: Callable[[Path], Sequence[Path]] | None = None
+    figures: Callable[[Path, list[ClaimRow]], Sequence[Path]] | None = None
     formula_figures: Callable[[Path, list[FormulaRow]], Sequence[Path]] | None = None
     captions: Callable[[], Mapping[str, str]] | None = None
     explanations: Callable[[], Any] | None = None  # -> verify.explain.Declared (`explain`)

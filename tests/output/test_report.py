@@ -291,3 +291,25 @@ def test_a_saved_figure_is_drawn_once_after_its_layout(tmp_path, monkeypatch):
             ax.set_title("a title tight_layout makes room for")
     assert draws == [120]  # once, at the saved resolution
     assert (tmp_path / "f.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_saved_figure_is_measured_and_drawn_by_one_renderer(tmp_path, monkeypatch):
+    """tight_layout and savefig share one renderer (the figure's resolution is the file's), so
+    the text measured for the layout is not measured again to be drawn."""
+    from matplotlib.backends.backend_agg import RendererAgg
+
+    from pendcli.base.plotting import new_figure
+
+    made: list[float] = []
+    init = RendererAgg.__init__
+
+    def counted(self, width, height, dpi):
+        made.append(dpi)
+        init(self, width, height, dpi)
+
+    monkeypatch.setattr(RendererAgg, "__init__", counted)
+    with new_figure(tmp_path / "f.png", nrows=2) as (_fig, axes):
+        for ax in axes.flat:
+            ax.plot([1, 2, 3], [3, 1, 2])
+            ax.set_title("a title tight_layout makes room for")
+    assert made == [120]

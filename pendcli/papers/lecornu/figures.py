@@ -313,16 +313,20 @@ CAPTIONS = {
 }
 
 
-def figures(outdir: str | Path) -> list[Path]:
+def figures(outdir: str | Path, claims: list[ClaimRow] | None = None) -> list[Path]:
     """(1) θ/θ0 of the example against time, published and recomputed elongations and vertical
-    passages marked; (2) printed minus recomputed, in units of the printed last digit."""
+    passages marked; (2) printed minus recomputed, in units of the printed last digit.
+    ``claims``: the judged claim rows (the report's), else judged here."""
     from pendcli.base.plotting import new_figure
-    from pendcli.papers.lecornu.claims import author_procedures, recompute
-    from pendcli.verify.claims import evaluate_paper
 
+    if claims is None:
+        from pendcli.papers.lecornu.claims import author_procedures, recompute
+        from pendcli.verify.claims import evaluate_paper
+
+        claims = evaluate_paper("lecornu", recompute, author_procedures())
     outdir = Path(outdir)
     m = example_model()
-    rows = {r.id: r for r in evaluate_paper("lecornu", recompute, author_procedures())}
+    rows = {r.id: r for r in claims}
     path1 = outdir / "lecornu_example_theta.png"
     with new_figure(path1, size=(8.0, 4.8)) as (_fig, ax):
         draw_example_claims(ax, m, rows)

@@ -62,8 +62,9 @@ SERIES_ERROR_CURVES = (
 )
 
 
-def figures(outdir: str | Path) -> list[Path]:
-    """(1) the projected path over several turns with the series' ellipse; (2) series errors."""
+def figures(outdir: str | Path, claims: object = None) -> list[Path]:
+    """(1) the projected path over several turns with the series' ellipse; (2) series errors.
+    (``claims``, the judged claim rows, draw nothing here.)"""
     outdir = Path(outdir)
     return [
         plot_path(outdir / "tisserand_path.png"),

@@ -532,6 +532,20 @@ def test_figures_written(tmp_path):
     assert _share_of(bars, "C3") > 1e-3  # discrepant bars (red)
 
 
+def test_figures_draw_the_claim_rows_given(tmp_path):
+    """The report hands its judged rows to the figures, which draw them as given (not judged
+    again): every row made to agree, no bar is red."""
+    from dataclasses import replace
+
+    from pendcli.data.vocabulary import Verdict
+    from pendcli.papers.registry import claim_rows
+
+    rows = [replace(r, verdict=Verdict.AGREES) for r in claim_rows("lecornu")]
+    _theta, bars = (_png_pixels(p) for p in figures.figures(tmp_path, rows))
+    assert _share_of(bars, "C2") > 1e-2  # every bar green
+    assert _share_of(bars, "C3") < 1e-3  # only the legend's patch red (the judged rows: 0.027)
+
+
 def test_cli_example_csv_and_plot(tmp_path):
     plot = tmp_path / "ex.png"
     result = _lecornu(
