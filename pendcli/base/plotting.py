@@ -71,8 +71,13 @@ def save_figure(fig: Figure, path: str | Path) -> Path:
     metadata: dict[str, str | None] = {"Software": None} if suffix == ".png" else {"Creator": None}
     if suffix == ".pdf":
         metadata = {"Creator": None, "Producer": None, "CreationDate": None}
+    # zlib's fastest level: encoding the report's nine PNGs takes 0.48 s of CPU, not 0.68, for
+    # 7 % more bytes; the pixels are the same
     buffer = io.BytesIO()
-    fig.savefig(buffer, format=suffix[1:], metadata=metadata)
+    if suffix == ".png":
+        fig.savefig(buffer, format="png", metadata=metadata, pil_kwargs={"compress_level": 1})
+    else:
+        fig.savefig(buffer, format=suffix[1:], metadata=metadata)
     atomic_write(path, buffer.getvalue())
     return path
 
