@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 
 from pendcli.base.errors import PendcliError
 from pendcli.output.json import to_json
-from pendcli.output.report_figures import Drawing, figure_caption, figure_tasks
+from pendcli.output.report_figures import Drawing, figure_caption, figure_tasks, shared_order
 from pendcli.output.report_sections import (
     environment_section,
     introduction,
@@ -35,6 +35,7 @@ from pendcli.output.report_store import pack, result_digest, unpack
 
 if TYPE_CHECKING:
     from pendcli.base.cache import ResultCache
+    from pendcli.output.html.report import Pages
     from pendcli.run.reproduce import ReproduceResult
     from pendcli.run.tradeoff_engine import Point
 
@@ -169,25 +170,35 @@ def _fill(
     jobs: int | None,
     pdf: bool = False,
 ) -> list[Path]:
-    """Every file of the report, written into ``folder``; their paths relative to it."""
-    from pendcli.output.html.report import markdown_for_a_reader
+    """Every file of the report, written into ``folder``; their paths relative to it. The
+    figures are drawn while the pages are rendered without them (and the introduction
+    written), all shared by the processes (report_figures.Drawing); the pages are then
+    finished with their figures."""
+    from pendcli.output.html.report import (
+        markdown_for_a_reader,
+        page_without_figures,
+        pages_for_result,
+    )
     from pendcli.run.regression import regenerated_tables
 
     writer = _Writer(folder, quiet)
     tradeoff = _tradeoff_data(result.papers, measure, writer)  # timings first, alone
-    tasks = figure_tasks(result, folder, tradeoff.points if tradeoff else None)
-    writer.status(f"drawing {len(tasks)} sets of figures")
-    with Drawing(tasks, jobs) as drawing:
+    figure_sets = figure_tasks(result, folder, tradeoff.points if tradeoff else None)
+    made = pages_for_result(result, result.equations)
+    pages = [(p or "", "page", page_without_figures, (made, p)) for p in made.order()]
+    intro = ("", "introduction", introduction, (result,))
+    writer.status(f"drawing {len(figure_sets)} sets of figures")
+    with Drawing(shared_order(figure_sets, pages[:-1], [intro, pages[-1]]), jobs) as drawing:
         writer.text("claims.json", to_json(result.document()))
         for name, table in regenerated_tables(result).items():
             writer.text(f"tables/{name}", table)
-        figures = drawing.results()
-        drew = sum(p.suffix == ".png" for ps in figures.values() for p in ps)
-        writer.status(f"drew {drew} figures")
-        markdown = _markdown(result, writer, figures, tradeoff)
-        writer.text("report.md", markdown_for_a_reader(markdown))
-        pages = _html_pages(result, folder, figures, drawing)  # the pages shared as the figures
-    writer.add(pages)
+        figures, done = drawing.results()
+    drew = sum(p.suffix == ".png" for ps in figures.values() for p in ps)
+    writer.status(f"drew {drew} figures")
+    markdown = _markdown(result, writer, figures, tradeoff, done["", "introduction"])
+    writer.text("report.md", markdown_for_a_reader(markdown))
+    rendered = [done[p or "", "page"] for p in made.order()]
+    writer.add(_html_pages(made, rendered, folder, figures))
     if pdf:  # inside the folder being built, so the manifest lists the PDFs too
         from pendcli.output.html.report import print_pdfs
 
@@ -201,10 +212,11 @@ def _markdown(
     writer: _Writer,
     figures: dict[str, list[Path]],
     tradeoff: _Tradeoff | None,
+    intro: list[str],
 ) -> str:
-    """report.md: its sections, each paper's figures (and the speed figures) listed as
-    written."""
-    lines = introduction(result)
+    """report.md: its sections (``intro``: its introduction), each paper's figures (and the
+    speed figures) listed as written."""
+    lines = list(intro)
     for key in result.papers:
         drawn = figures.get(key, [])
         writer.add(drawn)
@@ -219,11 +231,11 @@ def _markdown(
 
 
 def _html_pages(
-    result: ReproduceResult, folder: Path, figures: dict[str, list[Path]], drawing: Drawing
+    made: Pages, rendered: list[str], folder: Path, figures: dict[str, list[Path]]
 ) -> list[Path]:
-    """report.html and one annotated page per paper, figures embedded with their captions,
-    rendered by the processes that drew the figures."""
-    from pendcli.output.html.report import Figure, write_for_result
+    """report.html and one annotated page per paper (``rendered`` without their figures, by
+    the processes that drew them), figures embedded with their captions."""
+    from pendcli.output.html.report import Figure, write_pages
 
     captioned = {
         ("" if key == "tradeoff" else key): [
@@ -231,7 +243,7 @@ def _html_pages(
         ]
         for key, paths in figures.items()
     }
-    return write_for_result(result, folder, captioned, result.equations, drawing.share)
+    return write_pages(folder, made, rendered, captioned)
 
 
 @dataclass

@@ -240,6 +240,7 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
 
 
 @cache
+@cache  # one per process: its templates compiled once, not at every page
 def _environment() -> Environment:
     from jinja2 import Environment, PackageLoader, StrictUndefined
 
@@ -272,6 +273,17 @@ def figure_entries(figures: Sequence[Figure]) -> list[dict[str, str]]:
          "data": base64.b64encode(f.path.read_bytes()).decode("ascii")}
         for f in figures
     ]  # fmt: skip
+
+
+def figure_section(figures: Sequence[Figure], anchor: str = "") -> Markup:
+    """A page's last section: its figures under a heading (``anchor``: the heading's id), or
+    nothing without figures."""
+    return markup(render_template("figures.html.j2", figs=figure_entries(figures), anchor=anchor))
+
+
+# Where a page rendered before its figures are drawn holds them (:func:`paper_page`'s
+# ``figures_later``): a comment, which the reader's text (data/reader_text) leaves as it is
+FIGURES_LATER = "<!-- the figures -->"
 
 
 def cited_formulas(equations: Sequence[Row], formulas: Sequence[Row]) -> dict[str, list[Row]]:
@@ -460,8 +472,10 @@ def paper_page(
     equations: Sequence[Row] = (),
     figures: Sequence[Figure] = (),
     stats: RenderStats | None = None,
+    figures_later: bool = False,
 ) -> str:
-    """One paper as an annotated edition, then its claims, equations, formulas and figures."""
+    """One paper as an annotated edition, then its claims, equations, formulas and figures
+    (``figures_later``: :data:`FIGURES_LATER` where they go, for figures still being drawn)."""
     stats = stats if stats is not None else RenderStats()
     marks, passages = place_marks(text, claims, equations)
     at: dict[str, str] = {}
@@ -473,6 +487,7 @@ def paper_page(
     findings = [id_of(r) for r in [*claims, *equations, *alone] if disagrees(r)]
     rows = {id_of(r): r for r in [*claims, *equations]}
     blocks = _text_blocks(text, marks, passages, stats, rows)
+    figures_html = markup(FIGURES_LATER) if figures_later else figure_section(figures, "figures")
     return render_template(
         "paper.html.j2",
         title=f"pendcli: {paper}", lang="fr", paper=paper, citation=citation, legend=_legend(),
@@ -480,7 +495,7 @@ def paper_page(
         front=[b for b in blocks if b["front"]], blocks=[b for b in blocks if not b["front"]],
         claims=_claim_rows(claims, at),
         equations=_equation_rows(equations, cited, at), formulas=_formula_rows(alone),
-        figs=figure_entries(figures),
+        figure_section=figures_html,
     )  # fmt: skip
 
 

@@ -27,9 +27,10 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.data.vocabulary import PROCEDURE_VERDICTS
 from pendcli.output.html.paper import (
+    FIGURES_LATER,
     Figure,
     cited_formulas,
-    figure_entries,
+    figure_section,
     formula_cell,
     markup,
     paper_page,
@@ -57,9 +58,12 @@ if TYPE_CHECKING:
 
 __all__ = [
     "Figure",
+    "Pages",
     "chromium",
     "cited_formulas",
     "markdown_for_a_reader",
+    "page_without_figures",
+    "pages_for_result",
     "paper_page",
     "print_pdfs",
     "propagation_svg",
@@ -69,6 +73,7 @@ __all__ = [
     "require_chromium",
     "write_for_result",
     "write_html_report",
+    "write_pages",
 ]
 
 
@@ -151,8 +156,10 @@ def report_page(
     equations: Mapping[str, Sequence[Row]],
     figures: Sequence[Figure] = (),
     intro: str = "",
+    figures_later: bool = False,
 ) -> str:
-    """The overview: counts, root slips and their propagation, the findings, figures."""
+    """The overview: counts, root slips and their propagation, the findings, figures
+    (``figures_later``: as :func:`~pendcli.output.html.paper.paper_page`'s)."""
     every_claim = [r for p in papers for r in claims.get(p, [])]
     causes = {
         p: _tally((r for r in claims.get(p, []) if r.get("cause") and disagrees(r)),
@@ -169,7 +176,8 @@ def report_page(
         own_keys=(*PROCEDURE_VERDICTS, "no procedure known"),
         cause_keys=sorted({c for t in causes.values() for c in t}),
         graph=markup(propagation_svg(every_claim)), ledger=ledger, status_keys=STATUS_CLASSES,
-        findings=_findings(papers, claims, formulas, equations), figs=figure_entries(figures),
+        findings=_findings(papers, claims, formulas, equations),
+        figure_section=markup(FIGURES_LATER) if figures_later else figure_section(figures),
     )  # fmt: skip
 
 
@@ -183,8 +191,10 @@ def _in_order(items: Sequence[Any], run: Callable[[Any], Any]) -> list[Any]:
 
 
 @dataclass(frozen=True)
-class _Pages:
-    """What the pages are made of (sent once to each process that renders some)."""
+class Pages:
+    """What the pages are made of, but their figures (sent once to each process that renders
+    some): each page is rendered without them (:func:`page_without_figures`, which needs no
+    figure drawn yet) and finished with them (:func:`write_pages`)."""
 
     papers: Sequence[str]
     citations: Mapping[str, str]
@@ -192,24 +202,56 @@ class _Pages:
     claims: Mapping[str, Sequence[Row]]
     formulas: Mapping[str, Sequence[Row]]
     equations: Mapping[str, Sequence[Row]]
-    figures: Mapping[str, Sequence[Figure]]
+
+    def order(self) -> list[str | None]:
+        """The pages (a paper's, None the overview), the longest text first."""
+        return [*sorted(self.papers, key=lambda p: -len(self.texts.get(p, ""))), None]
 
 
-def _rendered(pages: _Pages, paper: str | None) -> str:
-    """The page of ``paper``, or (None) the overview."""
+def page_without_figures(pages: Pages, paper: str | None) -> str:
+    """The page of ``paper`` (None: the overview) as a reader reads it (no module path, no
+    builder name, no raw TeX: data/reader_text), :data:`FIGURES_LATER` where its figures go."""
+    from pendcli.data.reader_text import html_for_reader
+
     if paper is None:
-        return report_page(
-            pages.papers, pages.claims, pages.formulas, pages.equations, pages.figures.get("", [])
+        page = report_page(
+            pages.papers, pages.claims, pages.formulas, pages.equations, figures_later=True
         )
-    return paper_page(
-        paper,
-        pages.citations.get(paper, ""),
-        pages.texts.get(paper, ""),
-        pages.claims.get(paper, []),
-        pages.formulas.get(paper, []),
-        pages.equations.get(paper, []),
-        pages.figures.get(paper, []),
-    )
+    else:
+        page = paper_page(
+            paper,
+            pages.citations.get(paper, ""),
+            pages.texts.get(paper, ""),
+            pages.claims.get(paper, []),
+            pages.formulas.get(paper, []),
+            pages.equations.get(paper, []),
+            figures_later=True,
+        )
+    return html_for_reader(page, reference_words([page]))
+
+
+def write_pages(
+    out: Path,
+    pages: Pages,
+    rendered: Sequence[str],
+    figures: Mapping[str, Sequence[Figure]],
+) -> list[Path]:
+    """Write ``out/report.html`` and ``out/papers/<paper>.html`` (atomically): each page of
+    ``rendered`` (:func:`page_without_figures`, in :meth:`Pages.order`) with its figures
+    (``figures``: a paper's by its key, the overview's by ""); return them."""
+    from pendcli.base.files import atomic_write
+    from pendcli.data.reader_text import html_for_reader
+
+    (out / "papers").mkdir(parents=True, exist_ok=True)
+    by_page = dict(zip(pages.order(), rendered, strict=True))
+    written = []
+    for paper in [*pages.papers, None]:
+        anchor = "" if paper is None else "figures"
+        section = str(figure_section(figures.get(paper or "", []), anchor))
+        section = html_for_reader(section, reference_words([section]))
+        path = out / "report.html" if paper is None else out / "papers" / f"{paper}.html"
+        written.append(atomic_write(path, by_page[paper].replace(FIGURES_LATER, section, 1)))
+    return written
 
 
 def write_html_report(
@@ -226,19 +268,9 @@ def write_html_report(
     """Write ``out/report.html`` and ``out/papers/<paper>.html`` (atomically); return them.
     ``share``: how the pages are shared among processes (default: all rendered here), the
     longest text first."""
-    from pendcli.base.files import atomic_write
-    from pendcli.data.reader_text import html_for_reader
-
-    (out / "papers").mkdir(parents=True, exist_ok=True)
-    made = _Pages(papers, citations, texts, claims, formulas, equations, figures)
-    order: list[str | None] = [*sorted(papers, key=lambda p: -len(texts.get(p, ""))), None]
-    rendered = (share or _in_order)(order, functools.partial(_rendered, made))
-    by_page = dict(zip(order, rendered, strict=True))
-    pages = {out / "papers" / f"{p}.html": by_page[p] for p in papers}
-    pages[out / "report.html"] = by_page[None]
-    # what a historian reads: no module path, no builder name, no raw TeX (data/reader_text)
-    references = reference_words(list(pages.values()))
-    return [atomic_write(path, html_for_reader(page, references)) for path, page in pages.items()]
+    made = Pages(papers, citations, texts, claims, formulas, equations)
+    rendered = (share or _in_order)(made.order(), functools.partial(page_without_figures, made))
+    return write_pages(out, made, rendered, figures)
 
 
 def _ledger_fields(paper: str, rows: Sequence[Row]) -> list[Row]:
@@ -267,6 +299,16 @@ def write_for_result(
 ) -> list[Path]:
     """The HTML pages of a reproduction: rows from ``result``, texts from tables/papers/
     (``share``: as :func:`write_html_report`'s)."""
+    made = pages_for_result(result, equations)
+    rendered = (share or _in_order)(made.order(), functools.partial(page_without_figures, made))
+    return write_pages(out, made, rendered, figures)
+
+
+def pages_for_result(
+    result: ReproduceResult, equations: Mapping[str, Sequence[EquationRow]] | None = None
+) -> Pages:
+    """What the HTML pages of a reproduction are made of: rows from ``result``, texts from
+    tables/papers/."""
     from pendcli.data.tables import load_paper_table, tables_dir
     from pendcli.papers.registry import paper
 
@@ -279,8 +321,7 @@ def write_for_result(
              "lines": getattr(printed.get(row.id), "lines", None)}
             for row in result.claims.get(key, [])
         ]  # fmt: skip
-    return write_html_report(
-        out,
+    return Pages(
         result.papers,
         {key: paper(key).citation() for key in result.papers},
         {key: paper(key).tables(tables_dir()).text.read_text("utf-8") for key in result.papers},
@@ -290,8 +331,6 @@ def write_for_result(
             key: _ledger_fields(key, [r.as_dict() for r in rows])
             for key, rows in (equations or {}).items()
         },
-        figures,
-        share,
     )
 
 

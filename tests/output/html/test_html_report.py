@@ -554,3 +554,35 @@ def test_reference_words_builds_only_the_names_the_texts_name(
     assert found["ref_a"] == "what ref_a models"
     assert set(built) == expected  # ref_b, ref_c, ref_d never built
     assert len(built) == len(expected) * len(registry.all_papers())
+
+
+def test_a_page_finished_with_its_figures_is_the_page_drawn_with_them(tmp_path: Path) -> None:
+    """The pages are rendered while the figures are drawn, without them, and finished with
+    them: each file is the page rendered with its figures at once, read as a reader reads it."""
+    from pendcli.data.reader_text import html_for_reader
+    from pendcli.output.html.report import (
+        Figure,
+        Pages,
+        page_without_figures,
+        reference_words,
+        write_pages,
+    )
+
+    claims, equations = _rows()
+    figures = {}
+    for key in ("p", ""):
+        path = tmp_path / f"fig{key}.png"
+        path.write_bytes(b"\x89PNG not really" + key.encode())
+        figures[key] = [Figure(path, f"x_(n,s) against n <b> for {key or 'all'}")]
+    made = Pages(["p"], {"p": "A citation"}, {"p": TEXT}, {"p": claims}, {}, {"p": equations})
+    rendered = [page_without_figures(made, page) for page in made.order()]
+    written = write_pages(tmp_path / "out", made, rendered, figures)
+    at_once = {
+        "p.html": paper_page("p", "A citation", TEXT, claims, (), equations, figures["p"]),
+        "report.html": report_page(["p"], {"p": claims}, {}, {"p": equations}, figures[""]),
+    }
+    assert [p.name for p in written] == ["p.html", "report.html"]
+    for path in written:
+        expected = html_for_reader(at_once[path.name], reference_words([at_once[path.name]]))
+        assert path.read_text("utf-8") == expected, path.name
+        assert "<figcaption>x<sub>n,s</sub> against n &lt;b&gt; for" in expected
