@@ -7,7 +7,9 @@ unless ``--measure`` times them now, which the report then says.
 
 The folder is built beside ``out`` and swapped in whole (:func:`pendcli.base.files.
 replace_directory`); the figures are drawn in two forked processes where two cores exist
-(``PENDCLI_JOBS=1`` draws them here), the costliest first.
+(``PENDCLI_JOBS=1`` draws them here), the costliest first, while the same processes render
+the HTML pages without their figures and write the introduction; each page then gets its
+figures.
 
 This module writes the folder; the text of report.md is :mod:`~pendcli.output.report_sections`,
 the figures :mod:`~pendcli.output.report_figures`, the copy kept in the result cache
