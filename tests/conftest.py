@@ -20,6 +20,14 @@ settings.load_profile("pendcli")
 # its tests a folder of its own; the tests of an output's form share one (shared_result_cache).
 os.environ["PENDCLI_CACHE"] = "off"
 
+# The collector runs every 50,000 allocations, not every 700: each test process keeps sympy's,
+# mpmath's and the tables' objects for the whole run, and the default thresholds had the
+# collector walk them about 1,500 times in tests/papers/lecornu and tests/data (1.1 s of their
+# 18 s of CPU; 0.35 s so). Only this process: a child a test starts keeps Python's defaults.
+import gc  # noqa: E402
+
+gc.set_threshold(50_000, 20, 20)
+
 from collections import defaultdict  # noqa: E402
 from fnmatch import fnmatchcase  # noqa: E402
 from functools import cache  # noqa: E402
