@@ -275,6 +275,18 @@ def computed_tables(tmp_path_factory: pytest.TempPathFactory, worker_id: str):  
     return computed_once(shared_root(tmp_path_factory, worker_id))
 
 
+@pytest.fixture(scope="session", autouse=True)
+def _committed_rows_shared_by_the_workers(
+    tmp_path_factory: pytest.TempPathFactory, worker_id: str
+) -> None:
+    """The committed tables' claims and formula checks (tests/helpers/evaluated.py) computed
+    by one worker of the run for all: Lecornu's alone cost 0.6 s and 0.6-2.5 s a computation."""
+    from helpers.evaluated import share_across_workers
+    from helpers.regenerated import shared_root
+
+    share_across_workers(shared_root(tmp_path_factory, worker_id))
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     members: dict[str, list[pytest.Item]] = defaultdict(list)
