@@ -276,15 +276,15 @@ def computed_tables(tmp_path_factory: pytest.TempPathFactory, worker_id: str):  
 
 
 @pytest.fixture(scope="session", autouse=True)
-def _committed_rows_shared_by_the_workers(
-    tmp_path_factory: pytest.TempPathFactory, worker_id: str
-) -> None:
+def _committed_rows_shared_by_the_workers(tmp_path_factory: pytest.TempPathFactory) -> None:
     """The committed tables' claims and formula checks (tests/helpers/evaluated.py) computed
-    by one worker of the run for all: Lecornu's alone cost 0.6 s and 0.6-2.5 s a computation."""
+    by one worker of the run for all: Lecornu's alone cost 0.6 s and 0.6-2.5 s a computation.
+    (The worker's name from xdist's variable: the run may be without xdist, `-p no:xdist`.)"""
     from helpers.evaluated import share_across_workers
     from helpers.regenerated import shared_root
 
-    share_across_workers(shared_root(tmp_path_factory, worker_id))
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "master")
+    share_across_workers(shared_root(tmp_path_factory, worker))
 
 
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
