@@ -20,6 +20,14 @@ settings.load_profile("pendcli")
 # its tests a folder of its own; the tests of an output's form share one (shared_result_cache).
 os.environ["PENDCLI_CACHE"] = "off"
 
+# The collector runs every 50,000 allocations, not every 700: each test process keeps sympy's,
+# mpmath's and the tables' objects for the whole run, and the default thresholds had the
+# collector walk them about 1,500 times in tests/papers/lecornu and tests/data (1.1 s of their
+# 18 s of CPU; 0.35 s so). Only this process: a child a test starts keeps Python's defaults.
+import gc  # noqa: E402
+
+gc.set_threshold(50_000, 20, 20)
+
 from collections import defaultdict  # noqa: E402
 from fnmatch import fnmatchcase  # noqa: E402
 from functools import cache  # noqa: E402
@@ -267,6 +275,18 @@ def computed_tables(tmp_path_factory: pytest.TempPathFactory, worker_id: str):  
     return computed_once(shared_root(tmp_path_factory, worker_id))
 
 
+@pytest.fixture(scope="session", autouse=True)
+def _committed_rows_shared_by_the_workers(tmp_path_factory: pytest.TempPathFactory) -> None:
+    """The committed tables' claims and formula checks (tests/helpers/evaluated.py) computed
+    by one worker of the run for all: Lecornu's alone cost 0.6 s and 0.6-2.5 s a computation.
+    (The worker's name from xdist's variable: the run may be without xdist, `-p no:xdist`.)"""
+    from helpers.evaluated import share_across_workers
+    from helpers.regenerated import shared_root
+
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "master")
+    share_across_workers(shared_root(tmp_path_factory, worker))
+
+
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     members: dict[str, list[pytest.Item]] = defaultdict(list)
@@ -316,3 +336,11 @@ def _param_indices(item: pytest.Item) -> tuple[int, ...]:
 def _mark_slow(item: pytest.Item, reason: str) -> None:
     if item.get_closest_marker("slow") is None:
         item.add_marker(pytest.mark.slow(reason=reason))
+
+
+def pytest_sessionfinish(session: pytest.Session) -> None:
+    """The syntax trees parsed once per process (helpers/sources.py) let go before pytest's
+    last full collections, which would walk their million nodes (1.4 s each, profiled)."""
+    from helpers.sources import parsed
+
+    parsed.cache_clear()

@@ -18,6 +18,8 @@ import functools
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 
+from helpers.sources import parsed_file
+
 PACKAGE = Path(__file__).resolve().parents[1] / "pendcli"
 
 # The circles that remain, each as the whole group of its modules: none. A circle found is
@@ -66,7 +68,7 @@ def import_graph(package: Path) -> dict[str, set[str]]:
     graph: dict[str, set[str]] = {}
     for name, path in known.items():
         here = name if path.name == "__init__.py" else name.rpartition(".")[0]
-        tree = ast.parse(path.read_text(encoding="utf-8"))
+        tree = parsed_file(path)
         graph[name] = {t for t in _imported(tree, here, known) if t is not None} - {name}
     return graph
 

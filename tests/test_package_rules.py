@@ -7,6 +7,7 @@ import ast
 from pathlib import Path
 
 import pytest
+from helpers.sources import parsed_file
 
 ROOT = Path(__file__).resolve().parents[1] / "pendcli"
 
@@ -119,7 +120,7 @@ def type_only(tree: ast.Module) -> set[ast.AST]:
 
 def run_imports(path: Path) -> set[str]:
     """The run's modules that ``path`` imports when it runs (a function's imports included)."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
+    tree = parsed_file(path)
     skip = type_only(tree)
     names = [
         name
@@ -136,7 +137,7 @@ def run_imports(path: Path) -> set[str]:
 
 def imported(path: Path) -> list[str]:
     names = []
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    for node in ast.walk(parsed_file(path)):
         if isinstance(node, ast.ImportFrom) and node.module:
             names.append(node.module)
         elif isinstance(node, ast.Import):
@@ -194,5 +195,5 @@ def test_nothing_installed_imports_the_developer_tools() -> None:
     ],
 )
 def test_every_package_opens_with_a_docstring(package: str) -> None:
-    doc = ast.get_docstring(ast.parse((ROOT / package / "__init__.py").read_text("utf-8")))
+    doc = ast.get_docstring(parsed_file(ROOT / package / "__init__.py"))
     assert doc and "TODO" not in doc and len(doc) > 80

@@ -12,6 +12,7 @@ from dataclasses import replace
 from pathlib import Path
 
 import pytest
+from helpers.sources import parsed_file
 
 from pendcli.base.errors import PendcliError
 from pendcli.papers.paper import check_hooks, hook, merged, modules
@@ -58,7 +59,7 @@ def test_a_paper_package_imports_nothing_above_it(key: str) -> None:
     engines = ("pendcli.run.tradeoff_engine", "pendcli.run.stability")  # generic, registry-free
     found = []
     for path in sorted((ROOT / "pendcli" / "papers" / key).glob("*.py")):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in ast.walk(parsed_file(path)):
             names = [node.module or ""] if isinstance(node, ast.ImportFrom) else []
             names += [a.name for a in node.names] if isinstance(node, ast.Import) else []
             found += [
@@ -69,5 +70,5 @@ def test_a_paper_package_imports_nothing_above_it(key: str) -> None:
 
 @pytest.mark.parametrize("key", sorted(PAPERS))
 def test_a_paper_init_defines_no_wrapper_function(key: str) -> None:
-    tree = ast.parse((ROOT / "pendcli" / "papers" / key / "__init__.py").read_text("utf-8"))
+    tree = parsed_file(ROOT / "pendcli" / "papers" / key / "__init__.py")
     assert not [n.name for n in tree.body if isinstance(n, ast.FunctionDef)]
