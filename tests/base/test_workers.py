@@ -137,7 +137,7 @@ from pendcli.base.errors import PendcliError
 from pendcli.base.workers import ForkedWorkers, WorkerDied
 
 how, sign, started = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[2] + "-parent")
-parent, looks = os.getpid(), []
+parent, looks, taken = os.getpid(), [], []
 
 def item(name):
     if os.getpid() != parent:
@@ -153,6 +153,7 @@ def item(name):
         if how == "error":
             raise PendcliError("tables/x.csv: row 3: not a number")
         return name
+    taken.append(name)  # before the sign: the worker may die, and SIGCHLD stop this item, at once
     started.touch()
     for _ in range(6000):
         looks.append(name)
@@ -175,7 +176,7 @@ try:
     reaped = "not reaped"
 except ChildProcessError:
     reaped = "reaped"
-print(pid, len(looks), looks[0], reaped, sep="|")
+print(pid, len(looks), taken[0], reaped, sep="|")
 """
 
 
