@@ -35,7 +35,7 @@ from __future__ import annotations
 import random
 from collections.abc import Mapping, Sequence
 from fractions import Fraction
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from pendcli.verify.float_compile import (
     DUMMY,
@@ -43,9 +43,12 @@ from pendcli.verify.float_compile import (
     REAL_ONLY,
     Compiled,
     Unsupported,
-    compile_text,
+    compile_expr,
 )
 from pendcli.verify.point_values import FLOOR, RELATION_POINTS
+
+if TYPE_CHECKING:
+    from pendcli.data.stored_expr import StoredExpr
 
 
 class Item(Protocol):
@@ -54,7 +57,7 @@ class Item(Protocol):
     @property
     def call(self) -> str: ...
     @property
-    def source(self) -> str | None: ...
+    def source(self) -> str | StoredExpr | None: ...
     @property
     def scale(self) -> Any: ...
     @property
@@ -62,11 +65,11 @@ class Item(Protocol):
     @property
     def domain(self) -> Mapping[str, tuple[Any, Any]]: ...
     @property
-    def rooted(self) -> tuple[str, int] | None: ...
+    def rooted(self) -> tuple[str | StoredExpr, int] | None: ...
     @property
-    def taylor(self) -> str | None: ...
+    def taylor(self) -> str | StoredExpr | None: ...
     @property
-    def limit(self) -> str | None: ...
+    def limit(self) -> str | StoredExpr | None: ...
 
 
 __all__ = [
@@ -75,7 +78,6 @@ __all__ = [
     "HOLDS",
     "POINTS",
     "certain_margins",
-    "compile_text",
     "quick_verdict",
 ]
 
@@ -93,7 +95,7 @@ def quick_verdict(item: Item) -> Verdict | None:
     if item.call not in ("equation", "relation", "bounded") or item.source is None:
         return None
     try:
-        compiled = compile_text(item.source)
+        compiled = compile_expr(item.source)
         if item.call == "bounded":
             return _stored_limit(item, compiled)
         if item.call == "relation":
@@ -203,7 +205,7 @@ def certain_margins(item: Item, points: Sequence[Mapping[Any, Any]], tolerance: 
     if item.call != "relation" or item.source is None or not points:
         return set()
     try:
-        compiled = compile_text(item.source)
+        compiled = compile_expr(item.source)
         if FREE_FUNCTION in compiled.names:
             return set()
         names = sorted(compiled.names - REAL_ONLY)
@@ -227,7 +229,7 @@ def _series(item: Item, compiled: Compiled) -> Verdict | None:
     assert item.order is not None
     variable, branch = scale, 1
     if item.rooted is not None:  # s = t**q: a Laurent series in t, its terms below t**(q n)
-        compiled, branch = compile_text(item.rooted[0]), item.rooted[1]
+        compiled, branch = compile_expr(item.rooted[0]), item.rooted[1]
         roots_of = [n for n in compiled.names if n.startswith(DUMMY + "root_")]
         if len(roots_of) != 1:
             return None
@@ -265,7 +267,7 @@ def _stored_series(item: Item) -> Verdict | None:
     engine's to word."""
     if item.taylor is None:
         return None
-    verdict = _identity(item, compile_text(item.taylor))
+    verdict = _identity(item, compile_expr(item.taylor))
     if verdict is None or not verdict[0]:
         return None
     return True, (
@@ -283,7 +285,7 @@ def _stored_limit(item: Item, compiled: Compiled) -> Verdict | None:
 
     if item.limit is None:
         return None
-    limit = compile_text(item.limit)
+    limit = compile_expr(item.limit)
     others = sorted(compiled.names - {str(item.scale)} - REAL_ONLY)
     if FREE_FUNCTION in limit.names | compiled.names or not limit.names - REAL_ONLY <= set(others):
         return None

@@ -268,7 +268,7 @@ def use_store(on: bool) -> None:
 def _stored(row: LedgerRow, symbols: Mapping[str, str]) -> Any:
     """The row's stored derivation (kind, forms) when the store is on and current for the
     row and the tables in use; else None (and, once per paper, a line on stderr)."""
-    from pendcli.verify.derivation_store import row_inputs, row_record, stored_rows
+    from pendcli.verify.derivation_store import row_inputs, row_record, stored_nodes, stored_rows
 
     if not _STORE["on"]:
         return None
@@ -278,7 +278,7 @@ def _stored(row: LedgerRow, symbols: Mapping[str, str]) -> Any:
         return None
     if "live" in entry[1]:  # judged from the live reference by design
         return None
-    return row_record(row.id, entry[1])
+    return row_record(row.id, entry[1], stored_nodes(row.paper))
 
 
 _SAID: set[str] = set()
@@ -440,17 +440,19 @@ def store_derivations(paper: Paper) -> Path:
 def derivation_drift(paper: Paper) -> list[str]:
     """How the stored derivations differ from what the code derives now: one line per row
     (its reference named), empty when they agree."""
-    from pendcli.verify.derivation_store import stored_rows
+    from pendcli.verify.derivation_store import canonical_record, stored_nodes, stored_rows
 
     stored = stored_rows(paper.key, paper_digest(paper.key))
     if not stored and paper.references is not None:
         return [f"{paper.key}: no stored derivations for these tables (run `make regen`)"]
     fresh = derivation_records(paper)
+    nodes = stored_nodes(paper.key)
     lines = []
     for row_id in sorted(set(stored) | set(fresh)):
         old = stored.get(row_id, (None, None))[1]
         new = fresh.get(row_id)
-        if old != new:
+        old = None if old is None else canonical_record(old, nodes)
+        if old != (None if new is None else canonical_record(new)):
             reference = (new or old or {}).get("reference", "")
             lines.append(
                 f"{row_id}: the stored derivation differs from the code's {reference}".rstrip()
