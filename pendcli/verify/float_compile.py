@@ -39,10 +39,23 @@ class Unsupported(Exception):
 
 
 class Compiled:
-    """A residual's value and size as numpy functions of its symbols' arrays."""
+    """A residual's value and size as numpy functions of its symbols' arrays (``both``: the
+    two in one walk, each node's value computed once)."""
 
-    def __init__(self, value: Node, size: Node, names: frozenset[str]) -> None:
+    def __init__(
+        self, value: Node, size: Node, names: frozenset[str], both: Node | None = None
+    ) -> None:
         self._value, self._size, self.names = value, size, names
+        self._both = both if both is not None else lambda env: (value(env), size(env))
+
+    def both(self, env: dict[str, Any], points: int) -> tuple[Any, Any]:
+        """(value, size), as :meth:`value` and :meth:`size` give them."""
+        import numpy as np
+
+        with np.errstate(all="ignore"):
+            value, size = self._both(env)
+            shape = (points,)
+            return np.broadcast_to(value, shape), np.abs(np.broadcast_to(size, shape))
 
     def value(self, env: dict[str, Any], points: int) -> Any:
         import numpy as np
@@ -126,10 +139,21 @@ class _Compiler:
         self.nodes = nodes
         self._values: dict[int, tuple[Node, frozenset[str]] | Unsupported] = {}
         self._sizes: dict[int, Node | Unsupported] = {}
+        self._both: dict[int, Node] = {}
 
     def compiled(self, index: int) -> Compiled:
         value, names = self.value(index)
-        return Compiled(value, self.size(index), names)
+        return Compiled(value, self.size(index), names, self.both(index))
+
+    def both(self, index: int) -> Node:
+        """The node's (value, size) in one walk: a sum's or product's from its terms' pairs,
+        a power's to a positive integer from its base's; any other node's size is its
+        value's absolute value (what :func:`_size_node` computes, the value not computed
+        twice)."""
+        found = self._both.get(index)
+        if found is None:
+            found = self._both[index] = _both_node(self, index)
+        return found
 
     def value(self, index: int) -> tuple[Node, frozenset[str]]:
         found = self._values.get(index)
@@ -281,6 +305,48 @@ def _size_node(compiler: _Compiler, index: int) -> Node:
         return lambda env: np.abs(base(env)) ** power
     value, _ = compiler.value(index)
     return lambda env: np.abs(value(env))
+
+
+def _both_node(compiler: _Compiler, index: int) -> Node:
+    import numpy as np
+
+    node = compiler.nodes.nodes[index]
+    head, args = node[0], node[1:]
+    size = compiler.size(index)  # compiled first: what it cannot follow is refused alike
+    value, _ = compiler.value(index)
+    if head in ("Add", "Mul"):
+        parts = [compiler.both(a) for a in args]
+        if head == "Add":
+
+            def added(env: dict[str, Any]) -> tuple[Any, Any]:
+                pairs = [p(env) for p in parts]
+                return sum(v for v, _ in pairs), sum(np.abs(s) for _, s in pairs)
+
+            return added
+
+        def multiplied(env: dict[str, Any]) -> tuple[Any, Any]:
+            pairs = [p(env) for p in parts]
+            product = math.prod((v for v, _ in pairs), start=1.0)
+            return product, math.prod((np.abs(s) for _, s in pairs), start=1.0)
+
+        return multiplied
+    power = compiler.integer(args[1]) if head == "Pow" else None
+    if power is not None and power > 0:
+        base, (exponent, _) = compiler.both(args[0]), compiler.value(args[1])
+
+        def raised(env: dict[str, Any]) -> tuple[Any, Any]:
+            below, scale = base(env)
+            return np.power(below, exponent(env)), np.abs(scale) ** power
+
+        return raised
+    if head == "Integral":
+        return lambda env: (value(env), size(env))
+
+    def other(env: dict[str, Any]) -> tuple[Any, Any]:
+        computed = value(env)
+        return computed, np.abs(computed)
+
+    return other
 
 
 # tanh-sinh quadrature on [-1, 1]: steps h, h/2, h/4, nodes until the weights underflow; a

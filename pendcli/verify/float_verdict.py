@@ -37,6 +37,7 @@ from collections.abc import Mapping, Sequence
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, Protocol
 
+from pendcli.base.recent import Recent
 from pendcli.verify.float_compile import (
     DUMMY,
     FREE_FUNCTION,
@@ -128,13 +129,29 @@ def _fraction(value: Any) -> Fraction:
 
 
 def _points(item: Item, names: list[str], count: int) -> list[dict[str, Fraction]]:
-    """``count`` random rational points, drawn as the exact engine draws them."""
+    """``count`` random rational points, drawn as the exact engine draws them (the same
+    points for every item with the same symbols, domains and count: drawn once)."""
+    ranges = tuple((name, _domain(item, name)) for name in names)
+    key = (ranges, count)
+    found: list[dict[str, Fraction]] | None = _DRAWN.get(key)
+    if found is None:
+        found = _drawn(ranges, count)
+        _DRAWN.put(key, found)
+    return [dict(point) for point in found]
+
+
+# (each symbol's range, the count) -> the points drawn (seeded: the same every time)
+_DRAWN = Recent(1024)
+
+
+def _drawn(
+    ranges: tuple[tuple[str, tuple[Fraction, Fraction]], ...], count: int
+) -> list[dict[str, Fraction]]:
     generator = random.Random(19)
     out = []
     for _ in range(count):
         point = {}
-        for name in names:
-            low, high = _domain(item, name)
+        for name, (low, high) in ranges:
             point[name] = low + (high - low) * Fraction(generator.randint(1, 999), 1000)
         out.append(point)
     return out
@@ -157,7 +174,7 @@ def _identity(item: Item, compiled: Compiled) -> Verdict | None:
     names = sorted(compiled.names - REAL_ONLY)
     points = _points(item, names, POINTS)
     env = {n: np.array([float(p[n]) for p in points]) for n in names}
-    value, size = compiled.value(env, points=len(points)), compiled.size(env, points=len(points))
+    value, size = compiled.both(env, points=len(points))
     if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
         return None
     if np.iscomplexobj(value) and np.any(np.abs(value.imag) > HOLDS * size):
@@ -182,7 +199,7 @@ def _relation(item: Item, compiled: Compiled) -> Verdict | None:
         return None  # the exact engine words it
     points = _points(item, names, RELATION_POINTS if names else 1)
     env = {n: np.array([float(p[n]) for p in points]) for n in names}
-    value, size = compiled.value(env, points=len(points)), compiled.size(env, points=len(points))
+    value, size = compiled.both(env, points=len(points))
     if np.iscomplexobj(value) or not np.all(np.isfinite(value)):
         return None
     for index, (v, s) in enumerate(zip(value, size, strict=True)):
@@ -213,8 +230,7 @@ def certain_margins(item: Item, points: Sequence[Mapping[Any, Any]], tolerance: 
         if any(set(point) != set(names) for point in by_name):
             return set()
         env = {n: np.array([float(p[n]) for p in by_name]) for n in names}
-        value = compiled.value(env, points=len(points))
-        size = compiled.size(env, points=len(points))
+        value, size = compiled.both(env, points=len(points))
     except (Unsupported, ArithmeticError, ValueError, TypeError, RecursionError):
         return set()
     if np.iscomplexobj(value) or np.iscomplexobj(size):
@@ -327,8 +343,7 @@ def _on_circles(
     for radius in radii:
         env = {n: np.full(CIRCLE, float(point[n]), dtype=complex) for n in others}
         env[variable] = radius * roots
-        value = compiled.value(env, points=CIRCLE)
-        size = compiled.size(env, points=CIRCLE)
+        value, size = compiled.both(env, points=CIRCLE)
         if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
             return None
         coefficients.append(np.fft.fft(value) / CIRCLE / radius**powers)
