@@ -282,8 +282,8 @@ def _with_exprs(record: dict[str, Any], change: Callable[[Any], Any]) -> dict[st
             out["rooted"] = [change(out["rooted"][0]), out["rooted"][1]]
         return out
 
-    forms = {
+    forms = {  # in the order of their names, as the store writes them, whoever made them
         form: {**derived, "items": [item(i) for i in derived.get("items", ())]}
-        for form, derived in record["forms"].items()
+        for form, derived in sorted(record["forms"].items())
     }
     return {**record, "forms": forms}

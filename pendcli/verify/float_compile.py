@@ -265,6 +265,9 @@ def _free_function(compiler: _Compiler, args: tuple[Any, ...]) -> tuple[Node, fr
     return value, names | {FREE_FUNCTION}
 
 
+_FACTORIAL_MOST = 1000
+
+
 def _special(compiler: _Compiler, head: str, args: tuple[Any, ...], functions: list[Node]) -> Node:
     import numpy as np
 
@@ -278,7 +281,9 @@ def _special(compiler: _Compiler, head: str, args: tuple[Any, ...], functions: l
         order, argument = functions
         return lambda env: function(order(env), argument(env))
     n = compiler.integer(args[0]) if head in ("factorial", "factorial2") and args else None
-    if n is not None:
+    # an integer's factorial, exact from sympy then rounded (beyond 170! a double overflows;
+    # a far larger argument, which sympy would take long to multiply out, is not followed)
+    if n is not None and abs(n) <= _FACTORIAL_MOST:
         from sympy import factorial, factorial2
 
         value = float((factorial if head == "factorial" else factorial2)(n))
