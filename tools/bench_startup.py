@@ -101,13 +101,13 @@ READ_LEDGERS = (
 READ_DERIVATIONS = (
     "import sympy, scipy.special, scipy.integrate, matplotlib.pyplot, mpmath\n"
     "from pendcli.data.ledger import load_ledger\n"
-    "from pendcli.verify.derivation_store import row_record, stored_rows\n"
+    "from pendcli.verify.derivation_store import row_record, stored_nodes, stored_rows\n"
     "from pendcli.verify.ledger_references import paper_digest\n"
     "from pendcli.papers.registry import ledger_papers\n"
     "for key in ledger_papers():\n"
     "    load_ledger(key)\n"
     "    for name, (_, record) in stored_rows(key, paper_digest(key)).items():\n"
-    "        if 'live' not in record: row_record(name, record)"
+    "        if 'live' not in record: row_record(name, record, stored_nodes(key))"
 )
 
 

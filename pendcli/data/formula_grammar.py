@@ -44,6 +44,7 @@ __all__ = [
     "MAX_NUMBER_DIGITS",
     "MAX_UNARY_RUN",
     "MAX_WORDS",
+    "check_side",
     "check_words",
     "parse_side",
     "plain_name",
@@ -190,13 +191,22 @@ def parse_side(
     sympy expression over ``space`` (name -> sympy object; ``functions``: the names that
     are called, each with its arity: :data:`ARITY`, :data:`DECLARED_ARITY`). Raises
     PendcliError naming ``where`` on anything outside the grammar."""
+    return _build(where, text, check_side(where, text, space, functions), space)
+
+
+def check_side(
+    where: str, text: str, names: Container[str], functions: Mapping[str, Arity]
+) -> list[ast.AST]:
+    """Steps 1 and 2 of :func:`parse_side` without building anything (sympy is not needed):
+    the tree of one side, each node in the grammar and every bound checked, its nodes in
+    post-order. Raises PendcliError naming ``where``."""
     try:
         tree = ast.parse(text, mode="eval").body
     except SyntaxError as exc:
         raise PendcliError(f"{where}: cannot parse {_short(text)!r}: {exc.msg}") from None
     nodes = _post_order(tree)
-    _check_tree(where, text, nodes, space, functions)
-    return _build(where, text, nodes, space)
+    _check_tree(where, text, nodes, names, functions)
+    return nodes
 
 
 def _children(node: ast.AST) -> tuple[ast.AST, ...]:
@@ -240,7 +250,7 @@ def _check_tree(
     where: str,
     text: str,
     nodes: list[ast.AST],
-    space: Mapping[str, Any],
+    space: Container[str],
     functions: Mapping[str, Arity],
 ) -> None:
     """Each node of the grammar, and every bound (:func:`_digits`), before anything is built."""
@@ -274,7 +284,7 @@ def _check_tree(
 
 
 def _shape(
-    node: ast.AST, space: Mapping[str, Any], functions: Mapping[str, Arity], tuple_ok: bool
+    node: ast.AST, space: Container[str], functions: Mapping[str, Arity], tuple_ok: bool
 ) -> str | None:
     """Why ``node`` is outside the grammar, or None."""
     if isinstance(node, ast.BinOp):

@@ -25,12 +25,21 @@ from pendcli.data.formula_grammar import (
     ARITY,
     DECLARED_ARITY,
     Arity,
+    check_side,
     check_words,
     parse_side,
     plain_name,
 )
 
-__all__ = ["ELLIPSIS", "FUNCTIONS", "Formula", "ledger_symbols", "parse_dimension", "parse_formula"]
+__all__ = [
+    "ELLIPSIS",
+    "FUNCTIONS",
+    "Formula",
+    "check_formula",
+    "ledger_symbols",
+    "parse_dimension",
+    "parse_formula",
+]
 
 
 def ledger_symbols(*names: str) -> list[Any]:
@@ -93,6 +102,8 @@ def _power(text: str) -> Any:
 
 
 _CALLS = ("Rational", "Integer", "Float", "Integral", "Derivative")
+# the names of the notation a formula may use besides its ledger's symbols and functions
+_NOTATION = (*FUNCTIONS, "pi", "oo", *_CALLS, ELLIPSIS)
 
 
 @cache
@@ -141,12 +152,39 @@ def parse_formula(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
     return found
 
 
-def _parse(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
+# The formulas checked by the grammar alone (:func:`check_formula`), by content.
+_CHECKED = Recent(8192)
+
+
+def check_formula(where: str, text: str, symbols: Mapping[str, str]) -> None:
+    """What :func:`parse_formula` refuses before sympy is called (the words, the tree and
+    every bound: data/formula_grammar), checked without building the expression: what a
+    ledger's loading checks of every formula. Raises PendcliError naming ``where``."""
+    key = (text, tuple(sorted(symbols.items())))
+    if _CHECKED.get(key) is not None or _PARSED.get(key) is not None:
+        return
+    names, functions = _declared(where, symbols)
+    known = frozenset((*_NOTATION, *names, *functions))
+    check_words(where, text.replace("...", f" {ELLIPSIS} "), known)
+    for part in (p.strip() for p in text.split(";")):
+        for side in re.split(r"(?<![=<>!])=(?!=)", part):
+            side = side.replace("...", f" {ELLIPSIS} ").strip()
+            check_side(where, side, known, _callable(functions))
+    _CHECKED.put(key, True)
+
+
+def _declared(where: str, symbols: Mapping[str, str]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """The declared symbols' names and functions' names, each a plain name."""
     names = tuple(sorted(n for n in symbols if not n.endswith("()")))
     functions = tuple(sorted(n[:-2] for n in symbols if n.endswith("()")))
     bad = _not_plain((*names, *functions))
     if bad is not None:
         raise PendcliError(f"{where}: the symbol {bad!r} is not a plain name")
+    return names, functions
+
+
+def _parse(where: str, text: str, symbols: Mapping[str, str]) -> Formula:
+    names, functions = _declared(where, symbols)
     space = _namespace(names, functions)
     check_words(where, text.replace("...", f" {ELLIPSIS} "), space)
     equations = []

@@ -25,10 +25,13 @@ import random
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from pendcli.verify.point_values import DIGITS, RELATION_POINTS, evaluator, vanishes_at_points
 from pendcli.verify.series_proof import taylor_verdict
+
+if TYPE_CHECKING:
+    from pendcli.data.stored_expr import StoredExpr
 
 __all__ = [
     "CALLS",
@@ -62,7 +65,8 @@ class Item:
     live reference; ``rooted``: a series in a root t of its scale, its residual in t and the
     root's degree (what float64 expands; the exact engine rewrites ``expr`` alike);
     ``taylor``, ``limit``: derived once (:func:`derived_once`) where float64 cannot follow the
-    residual itself, as the store keeps them: a series' terms below its order, a bounded
+    residual itself, as the store keeps them (each stored text, a node of the store's table
+    when read back): a series' terms below its order, a bounded
     residual's limit as the scale tends to 0+ (what float64 judges instead; never the exact
     engine)."""
 
@@ -75,11 +79,11 @@ class Item:
     strict: bool = False
     why: str = ""
     live: Callable[[], tuple[bool, str]] | None = field(default=None, compare=False)
-    text: str | None = None
+    text: str | StoredExpr | None = None
     # a series entering through s**(p/q): (the residual in t = s**(1/q), as srepr; q)
-    rooted: tuple[str, int] | None = None
-    taylor: str | None = None
-    limit: str | None = None
+    rooted: tuple[str | StoredExpr, int] | None = None
+    taylor: str | StoredExpr | None = None
+    limit: str | StoredExpr | None = None
 
     def __post_init__(self) -> None:
         if self.call not in CALLS:
@@ -90,13 +94,16 @@ class Item:
         """The residual as a sympy expression (read from :attr:`text` the first time)."""
         if self.residual is not None or self.text is None:
             return self.residual
+        if not isinstance(self.text, str):
+            return self.text.expr()
         from pendcli.data.stored_expr import read_expr
 
         return read_expr(self.where, self.text)
 
     @cached_property
-    def source(self) -> str | None:
-        """The residual as the store writes it (sympy's srepr), None without one."""
+    def source(self) -> str | StoredExpr | None:
+        """The residual as the store keeps it (a node of its table) or writes it (sympy's
+        srepr), None without one."""
         if self.text is not None or self.residual is None:
             return self.text
         return stored_text(self.residual)

@@ -1,24 +1,35 @@
-"""A stored expression (sympy's srepr) compiled to numpy, for float64 first (verify/float_verdict).
+"""A stored expression compiled to numpy, for float64 first (verify/float_verdict).
 
-The text's syntax tree is walked, never evaluated as code: each node becomes a function of the
-symbols' arrays, for the expression's *value* and for its *size* (every sum a sum of absolute
-values, the scale of the cancellation a vanishing residual shows). Bessel functions by scipy;
-definite integrals by tanh-sinh quadrature, the step halved until two agree; an undefined
-function as a fixed generic analytic one (:data:`FREE_FUNCTION`). What float64 cannot evaluate
-raises :class:`Unsupported`: the exact engine judges it.
+The expression's table of nodes (data/stored_expr: each distinct subexpression once) is walked,
+never evaluated as code: each node becomes a function of the symbols' arrays, once per table,
+for the expression's *value* and for its *size* (every sum a sum of absolute values, the scale
+of the cancellation a vanishing residual shows), so a subexpression many residuals share is
+compiled once. Bessel functions by scipy; definite integrals by tanh-sinh quadrature, the step
+halved until two agree; an undefined function as a fixed generic analytic one
+(:data:`FREE_FUNCTION`). What float64 cannot evaluate raises :class:`Unsupported`: the exact
+engine judges it.
 """
 
 from __future__ import annotations
 
-import ast
 import math
 import random
-import re
 from collections.abc import Callable
 from functools import cache
 from typing import Any
+from weakref import WeakKeyDictionary
 
-__all__ = ["DUMMY", "FREE_FUNCTION", "REAL_ONLY", "Compiled", "Unsupported", "compile_text"]
+from pendcli.data.stored_expr import APPLY, Nodes, NodeWriter, StoredExpr
+
+__all__ = [
+    "DUMMY",
+    "FREE_FUNCTION",
+    "REAL_ONLY",
+    "Compiled",
+    "Unsupported",
+    "compile_expr",
+    "compile_text",
+]
 
 DUMMY = "\\0"  # a dummy's name starts so: never a symbol of the ledger
 
@@ -28,10 +39,23 @@ class Unsupported(Exception):
 
 
 class Compiled:
-    """A residual's value and size as numpy functions of its symbols' arrays."""
+    """A residual's value and size as numpy functions of its symbols' arrays (``both``: the
+    two in one walk, each node's value computed once)."""
 
-    def __init__(self, value: Node, size: Node, names: frozenset[str]) -> None:
+    def __init__(
+        self, value: Node, size: Node, names: frozenset[str], both: Node | None = None
+    ) -> None:
         self._value, self._size, self.names = value, size, names
+        self._both = both if both is not None else lambda env: (value(env), size(env))
+
+    def both(self, env: dict[str, Any], points: int) -> tuple[Any, Any]:
+        """(value, size), as :meth:`value` and :meth:`size` give them."""
+        import numpy as np
+
+        with np.errstate(all="ignore"):
+            value, size = self._both(env)
+            shape = (points,)
+            return np.broadcast_to(value, shape), np.abs(np.broadcast_to(size, shape))
 
     def value(self, env: dict[str, Any], points: int) -> Any:
         import numpy as np
@@ -47,16 +71,32 @@ class Compiled:
 
 
 Node = Callable[[dict[str, Any]], Any]
+Failure = (ArithmeticError, ValueError, TypeError, IndexError)
 
 
 @cache
 def compile_text(text: str) -> Compiled:
-    """The value and size functions of a stored expression (sympy's srepr)."""
-    tree = ast.parse(_shortened(text), mode="eval").body
-    names: set[str] = set()
-    value = _node(tree, names)
-    size = _size_node(tree, names)
-    return Compiled(value, size, frozenset(names))
+    """The value and size functions of an expression written as sympy's srepr (read into a
+    table of its own by the store's closed grammar)."""
+    from pendcli.base.errors import PendcliError
+
+    writer = NodeWriter("an expression")
+    try:
+        index = writer.encode("an expression", text)
+    except PendcliError as exc:
+        raise Unsupported(str(exc)) from None
+    return compile_expr(StoredExpr(writer.table("an expression"), index))
+
+
+def compile_expr(expr: str | StoredExpr) -> Compiled:
+    """The value and size functions of a stored expression (a node of its table, each node
+    compiled once per table) or of an srepr text."""
+    if isinstance(expr, str):
+        return compile_text(expr)
+    compiler = _compilers.get(expr.nodes)
+    if compiler is None:
+        compiler = _compilers[expr.nodes] = _Compiler(expr.nodes)
+    return compiler.compiled(expr.index)
 
 
 # heads whose value is not analytic in a complex scale: a series that has one is not judged here
@@ -82,40 +122,7 @@ _UNARY = {
     "im": "imag",
     "arg": "angle",
 }
-_CONSTANTS = {"pi": math.pi, "E": math.e, "I": 1j}
-
-
-# srepr spells each symbol and integer as a call; parsed as such, they are most of the nodes
-# of a stored text (half its characters), so they are written shorter before it is parsed:
-# Symbol('x', real=True) as the name symbol__x (its assumptions are no part of a value),
-# Integer(-2) as the literal (-2)
-_SYMBOL = "symbol__"
-_SYMBOL_CALL = re.compile(r"Symbol\('([A-Za-z_][A-Za-z0-9_]*)'(?:, [a-z_]+=(?:True|False))*\)")
-_INTEGER_CALL = re.compile(r"Integer\((-?[0-9]+)\)")
-
-
-def _shortened(text: str) -> str:
-    return _INTEGER_CALL.sub(r"(\1)", _SYMBOL_CALL.sub(_SYMBOL + r"\1", text))
-
-
-def _integer(node: ast.AST) -> int | None:
-    """An integer written as a literal or as Integer(n); None for anything else."""
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
-        if node.func.id != "Integer" or len(node.args) != 1:
-            return None
-        node = node.args[0]
-    try:
-        value = _number(node)
-    except Unsupported:
-        return None
-    return value if isinstance(value, int) else None
-
-
-def _head(node: ast.AST) -> str:
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
-        return node.func.id
-    raise Unsupported(ast.dump(node)[:40])
-
+_CONSTANTS = {"pi": math.pi, "E": math.e, "I": 1j, "EulerGamma": 0.5772156649015329}
 
 # an undefined function applied (a constant of integration, a function the reference leaves
 # free): a residual that vanishes for every such function vanishes for a fixed generic one,
@@ -123,136 +130,228 @@ def _head(node: ast.AST) -> str:
 FREE_FUNCTION = "\0free function"
 
 
-def _free_function(tree: ast.Call, names: set[str]) -> Node:
+class _Compiler:
+    """The functions of a table's nodes, each node's once: its value, its size and the
+    names it reads (symbols, and the heads of :data:`REAL_ONLY` it holds); a node float64
+    cannot evaluate keeps its :class:`Unsupported`."""
+
+    def __init__(self, nodes: Nodes) -> None:
+        self.nodes = nodes
+        self._values: dict[int, tuple[Node, frozenset[str]] | Unsupported] = {}
+        self._sizes: dict[int, Node | Unsupported] = {}
+        self._both: dict[int, Node] = {}
+
+    def compiled(self, index: int) -> Compiled:
+        value, names = self.value(index)
+        return Compiled(value, self.size(index), names, self.both(index))
+
+    def both(self, index: int) -> Node:
+        """The node's (value, size) in one walk: a sum's or product's from its terms' pairs,
+        a power's to a positive integer from its base's; any other node's size is its
+        value's absolute value (what :func:`_size_node` computes, the value not computed
+        twice)."""
+        found = self._both.get(index)
+        if found is None:
+            found = self._both[index] = _both_node(self, index)
+        return found
+
+    def value(self, index: int) -> tuple[Node, frozenset[str]]:
+        found = self._values.get(index)
+        if found is None:
+            try:
+                found = _value_node(self, self.nodes.nodes[index])
+            except Failure as exc:
+                found = Unsupported(repr(exc)[:60])
+            except Unsupported as exc:
+                found = exc
+            self._values[index] = found
+        if isinstance(found, Unsupported):
+            raise found
+        return found
+
+    def size(self, index: int) -> Node:
+        found = self._sizes.get(index)
+        if found is None:
+            try:
+                found = _size_node(self, index)
+            except Failure as exc:
+                found = Unsupported(repr(exc)[:60])
+            except Unsupported as exc:
+                found = exc
+            self._sizes[index] = found
+        if isinstance(found, Unsupported):
+            raise found
+        return found
+
+    def integer(self, index: int) -> int | None:
+        """A node that is an integer literal, its value; None for anything else."""
+        node = self.nodes.nodes[index]
+        return int(node[1]) if node[0] == "Integer" else None
+
+    def head(self, index: int) -> str:
+        return str(self.nodes.nodes[index][0])
+
+
+# each table's compiler (its nodes' functions, kept while the table is)
+_compilers: WeakKeyDictionary[Nodes, _Compiler] = WeakKeyDictionary()
+
+
+def _symbol_name(node: tuple[Any, ...]) -> str:
+    """A symbol's name; a dummy's is its own (never the ledger's symbol of the same name)."""
+    if node[0] == "Symbol":
+        return str(node[1])
+    if node[0] == "Dummy":
+        return f"{DUMMY}{node[1]}_{node[2]}"
+    raise Unsupported(str(node[0]))
+
+
+def _value_node(compiler: _Compiler, node: tuple[Any, ...]) -> tuple[Node, frozenset[str]]:
+    """The value of ``node`` as a function of the symbols' arrays, and the names it reads."""
+    import numpy as np
+
+    head, args = node[0], node[1:]
+    if head == "Function":  # an undefined function not applied
+        raise Unsupported(head)
+    if head in ("Symbol", "Dummy"):
+        name = _symbol_name(node)
+        return (lambda env: env[name]), frozenset([name])
+    if head in ("Integer", "Float", "Rational") or head in _CONSTANTS:
+        value = _literal(node)
+        return (lambda env: value), frozenset()
+    if head == APPLY:
+        return _free_function(compiler, args)
+    if head == "Integral":
+        return _integral(compiler, args)
+    parts = [compiler.value(a) for a in args]
+    names = frozenset().union(*(n for _, n in parts))
+    names |= {head} if head in REAL_ONLY else set()
+    functions = [f for f, _ in parts]
+    if head == "Add":
+        return (lambda env: sum(p(env) for p in functions)), names
+    if head == "Mul":
+        return (lambda env: math.prod((p(env) for p in functions), start=1.0)), names
+    if head == "Pow":
+        base, exponent = functions
+        return (lambda env: np.power(base(env), exponent(env))), names
+    if head in _UNARY:
+        (inner,) = functions
+        function = getattr(np, _UNARY[head])
+        return (lambda env: function(inner(env))), names
+    return _special(compiler, head, args, functions), names
+
+
+def _literal(node: tuple[Any, ...]) -> Any:
+    head, args = node[0], node[1:]
+    if head in _CONSTANTS:
+        return _CONSTANTS[head]
+    if head == "Rational":
+        return int(args[0]) / int(args[1])
+    return float(args[0])
+
+
+def _free_function(compiler: _Compiler, args: tuple[Any, ...]) -> tuple[Node, frozenset[str]]:
     """``Function('f')(z)`` as exp(a z) sin(b z + c) + d, its coefficients drawn from f's name."""
     import numpy as np
 
-    func = tree.func
-    if not (
-        isinstance(func, ast.Call)
-        and isinstance(func.func, ast.Name)
-        and func.func.id == "Function"
-        and len(tree.args) == 1
-    ):
-        raise Unsupported(ast.dump(tree)[:40])
-    generator = random.Random(str(_number(func.args[0])))
+    if len(args) != 2:
+        raise Unsupported("a free function of several arguments")
+    generator = random.Random(str(compiler.nodes.nodes[args[0]][1]))
     a, b, c, d = (generator.uniform(0.5, 1.5) for _ in range(4))
-    (inner,) = (_node(x, names) for x in tree.args)
-    names.add(FREE_FUNCTION)
-    return lambda env: np.exp(a * inner(env)) * np.sin(b * inner(env) + c) + d
+    inner, names = compiler.value(args[1])
+
+    def value(env: dict[str, Any]) -> Any:
+        return np.exp(a * inner(env)) * np.sin(b * inner(env) + c) + d
+
+    return value, names | {FREE_FUNCTION}
 
 
-def _number(node: ast.AST) -> float | int | str:
-    if isinstance(node, ast.Constant) and isinstance(node.value, (int, float, str)):
-        return node.value
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-        inner = _number(node.operand)
-        if isinstance(inner, (int, float)):
-            return -inner
-    raise Unsupported("not a literal")
+_FACTORIAL_MOST = 1000
 
 
-def _node(tree: ast.AST, names: set[str]) -> Node:
-    """The value of ``tree`` as a function of the symbols' arrays."""
-    import numpy as np
-
-    if isinstance(tree, ast.Name) and tree.id.startswith(_SYMBOL):
-        name = tree.id[len(_SYMBOL) :]
-        names.add(name)
-        return lambda env: env[name]
-    if isinstance(tree, (ast.Constant, ast.UnaryOp)):
-        literal = float(_number(tree))
-        return lambda env: literal
-    if isinstance(tree, ast.Name):
-        if tree.id not in _CONSTANTS and tree.id != "EulerGamma":
-            raise Unsupported(tree.id)
-        constant = float(np.euler_gamma) if tree.id == "EulerGamma" else _CONSTANTS[tree.id]
-        return lambda env: constant
-    if isinstance(tree, ast.Call) and isinstance(tree.func, ast.Call):
-        return _free_function(tree, names)
-    head = _head(tree)
-    names.add(head) if head in REAL_ONLY else None
-    args = tree.args  # type: ignore[attr-defined]
-    if head in ("Symbol", "Dummy"):
-        name = _symbol_name(tree)
-        names.add(name)
-        return lambda env: env[name]
-    if head in ("Integer", "Rational", "Float"):
-        numbers = [_number(a) for a in args]
-        value = float(numbers[0]) if head != "Rational" else int(numbers[0]) / int(numbers[1])
-        return lambda env: value
-    if head in ("Add", "Mul"):
-        parts = [_node(a, names) for a in args]
-        if head == "Add":
-            return lambda env: sum(p(env) for p in parts)
-        return lambda env: math.prod((p(env) for p in parts), start=1.0)
-    if head == "Pow":
-        base, exponent = (_node(a, names) for a in args)
-        return lambda env: np.power(base(env), exponent(env))
-    if head in _UNARY:
-        (inner,) = (_node(a, names) for a in args)
-        function = getattr(np, _UNARY[head])
-        return lambda env: function(inner(env))
-    return _special(head, args, names)
-
-
-def _symbol_name(node: ast.AST) -> str:
-    """A symbol's name; a dummy's is its own (never the ledger's symbol of the same name)."""
-    if isinstance(node, ast.Name) and node.id.startswith(_SYMBOL):
-        return node.id[len(_SYMBOL) :]
-    head = _head(node)
-    if head not in ("Symbol", "Dummy"):
-        raise Unsupported(head)
-    name = str(_number(node.args[0]))  # type: ignore[attr-defined]
-    if head == "Symbol":
-        return name
-    index = [k.value for k in node.keywords if k.arg == "dummy_index"]  # type: ignore[attr-defined]
-    return f"{DUMMY}{name}_{_number(index[0]) if index else 0}"
-
-
-def _special(head: str, args: list[ast.AST], names: set[str]) -> Node:
+def _special(compiler: _Compiler, head: str, args: tuple[Any, ...], functions: list[Node]) -> Node:
     import numpy as np
 
     if head == "atan2":
-        y, x = (_node(a, names) for a in args)
+        y, x = functions
         return lambda env: np.arctan2(y(env), x(env))
     if head in ("besselj", "bessely"):
         from scipy import special
 
         function = special.jv if head == "besselj" else special.yv
-        order, argument = (_node(a, names) for a in args)
+        order, argument = functions
         return lambda env: function(order(env), argument(env))
-    if head in ("factorial", "factorial2") and _integer(args[0]) is not None:
+    n = compiler.integer(args[0]) if head in ("factorial", "factorial2") and args else None
+    # an integer's factorial, exact from sympy then rounded (beyond 170! a double overflows;
+    # a far larger argument, which sympy would take long to multiply out, is not followed)
+    if n is not None and abs(n) <= _FACTORIAL_MOST:
         from sympy import factorial, factorial2
 
-        n = _integer(args[0])
         value = float((factorial if head == "factorial" else factorial2)(n))
         return lambda env: value
-    if head == "Integral":
-        return _integral(args, names)
     raise Unsupported(head)
 
 
-def _size_node(tree: ast.AST, names: set[str]) -> Node:
-    """The size of ``tree``: every sum a sum of absolute values (ε·(a − b): |ε|·(|a| + |b|))."""
+def _size_node(compiler: _Compiler, index: int) -> Node:
+    """The size of a node: every sum a sum of absolute values (ε·(a − b): |ε|·(|a| + |b|))."""
     import numpy as np
 
-    named = isinstance(tree, ast.Call) and isinstance(tree.func, ast.Name)
-    head = _head(tree) if named else ""
-    args = getattr(tree, "args", [])
+    node = compiler.nodes.nodes[index]
+    head, args = node[0], node[1:]
     if head in ("Add", "Mul"):
-        parts = [_size_node(a, names) for a in args]
+        parts = [compiler.size(a) for a in args]
         if head == "Add":
             return lambda env: sum(np.abs(p(env)) for p in parts)
         return lambda env: math.prod((np.abs(p(env)) for p in parts), start=1.0)
     if head == "Integral":
-        return _integral(args, names, absolute=True)
-    power = _integer(args[1]) if head == "Pow" else None
+        return _integral(compiler, args, absolute=True)[0]
+    power = compiler.integer(args[1]) if head == "Pow" else None
     if power is not None and power > 0:
-        base = _size_node(args[0], names)
+        base = compiler.size(args[0])
         return lambda env: np.abs(base(env)) ** power
-    value = _node(tree, names)
+    value, _ = compiler.value(index)
     return lambda env: np.abs(value(env))
+
+
+def _both_node(compiler: _Compiler, index: int) -> Node:
+    import numpy as np
+
+    node = compiler.nodes.nodes[index]
+    head, args = node[0], node[1:]
+    size = compiler.size(index)  # compiled first: what it cannot follow is refused alike
+    value, _ = compiler.value(index)
+    if head in ("Add", "Mul"):
+        parts = [compiler.both(a) for a in args]
+        if head == "Add":
+
+            def added(env: dict[str, Any]) -> tuple[Any, Any]:
+                pairs = [p(env) for p in parts]
+                return sum(v for v, _ in pairs), sum(np.abs(s) for _, s in pairs)
+
+            return added
+
+        def multiplied(env: dict[str, Any]) -> tuple[Any, Any]:
+            pairs = [p(env) for p in parts]
+            product = math.prod((v for v, _ in pairs), start=1.0)
+            return product, math.prod((np.abs(s) for _, s in pairs), start=1.0)
+
+        return multiplied
+    power = compiler.integer(args[1]) if head == "Pow" else None
+    if power is not None and power > 0:
+        base, (exponent, _) = compiler.both(args[0]), compiler.value(args[1])
+
+        def raised(env: dict[str, Any]) -> tuple[Any, Any]:
+            below, scale = base(env)
+            return np.power(below, exponent(env)), np.abs(scale) ** power
+
+        return raised
+    if head == "Integral":
+        return lambda env: (value(env), size(env))
+
+    def other(env: dict[str, Any]) -> tuple[Any, Any]:
+        computed = value(env)
+        return computed, np.abs(computed)
+
+    return other
 
 
 # tanh-sinh quadrature on [-1, 1]: steps h, h/2, h/4, nodes until the weights underflow; a
@@ -276,27 +375,29 @@ def _tanh_sinh(step: float) -> tuple[Any, Any]:
     return nodes[keep], weights[keep]
 
 
-def _integral(args: list[ast.AST], names: set[str], absolute: bool = False) -> Node:
+def _integral(
+    compiler: _Compiler, args: tuple[Any, ...], absolute: bool = False
+) -> tuple[Node, frozenset[str]]:
     """A definite integral by tanh-sinh quadrature at every point at once (the ends may be
     singular; an upper end at infinity is brought to 1 by t = a + u/(1 − u)), the step halved
     until two agree (:data:`_SETTLED`); when none do, undecided."""
-    if len(args) != 2 or _head(args[1]) != "Tuple":
+    if len(args) != 2 or compiler.head(args[1]) != "Tuple":
         raise Unsupported("a multiple integral")
-    variable, low, high = args[1].args  # type: ignore[attr-defined]
-    name = _symbol_name(variable)
-    inside: set[str] = set()
-    integrand = _node(args[0], inside)
-    names |= inside - {name}
+    variable, low, high = compiler.nodes.nodes[args[1]][1:]
+    name = _symbol_name(compiler.nodes.nodes[variable])
+    integrand, inside = compiler.value(args[0])
     if absolute:  # the size of an integral: the integral of its integrand's absolute value
         signed = integrand
 
         def integrand(env: dict[str, Any]) -> Any:
             return abs(signed(env))
 
-    lower = _node(low, names)
-    if isinstance(high, ast.Name) and high.id == "oo":
-        return _to_infinity(integrand, lower, name, absolute)
-    return _settled(integrand, lower, _node(high, names), name, absolute)
+    lower, below = compiler.value(low)
+    names = (inside - {name}) | below | {"Integral"}
+    if compiler.head(high) == "oo":
+        return _to_infinity(integrand, lower, name, absolute), names
+    upper, above = compiler.value(high)
+    return _settled(integrand, lower, upper, name, absolute), names | above
 
 
 def _settled(integrand: Node, lower: Node, upper: Node, name: str, absolute: bool) -> Node:

@@ -35,17 +35,21 @@ from __future__ import annotations
 import random
 from collections.abc import Mapping, Sequence
 from fractions import Fraction
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
+from pendcli.base.recent import Recent
 from pendcli.verify.float_compile import (
     DUMMY,
     FREE_FUNCTION,
     REAL_ONLY,
     Compiled,
     Unsupported,
-    compile_text,
+    compile_expr,
 )
 from pendcli.verify.point_values import FLOOR, RELATION_POINTS
+
+if TYPE_CHECKING:
+    from pendcli.data.stored_expr import StoredExpr
 
 
 class Item(Protocol):
@@ -54,7 +58,7 @@ class Item(Protocol):
     @property
     def call(self) -> str: ...
     @property
-    def source(self) -> str | None: ...
+    def source(self) -> str | StoredExpr | None: ...
     @property
     def scale(self) -> Any: ...
     @property
@@ -62,11 +66,11 @@ class Item(Protocol):
     @property
     def domain(self) -> Mapping[str, tuple[Any, Any]]: ...
     @property
-    def rooted(self) -> tuple[str, int] | None: ...
+    def rooted(self) -> tuple[str | StoredExpr, int] | None: ...
     @property
-    def taylor(self) -> str | None: ...
+    def taylor(self) -> str | StoredExpr | None: ...
     @property
-    def limit(self) -> str | None: ...
+    def limit(self) -> str | StoredExpr | None: ...
 
 
 __all__ = [
@@ -75,7 +79,6 @@ __all__ = [
     "HOLDS",
     "POINTS",
     "certain_margins",
-    "compile_text",
     "quick_verdict",
 ]
 
@@ -93,7 +96,7 @@ def quick_verdict(item: Item) -> Verdict | None:
     if item.call not in ("equation", "relation", "bounded") or item.source is None:
         return None
     try:
-        compiled = compile_text(item.source)
+        compiled = compile_expr(item.source)
         if item.call == "bounded":
             return _stored_limit(item, compiled)
         if item.call == "relation":
@@ -126,13 +129,29 @@ def _fraction(value: Any) -> Fraction:
 
 
 def _points(item: Item, names: list[str], count: int) -> list[dict[str, Fraction]]:
-    """``count`` random rational points, drawn as the exact engine draws them."""
+    """``count`` random rational points, drawn as the exact engine draws them (the same
+    points for every item with the same symbols, domains and count: drawn once)."""
+    ranges = tuple((name, _domain(item, name)) for name in names)
+    key = (ranges, count)
+    found: list[dict[str, Fraction]] | None = _DRAWN.get(key)
+    if found is None:
+        found = _drawn(ranges, count)
+        _DRAWN.put(key, found)
+    return [dict(point) for point in found]
+
+
+# (each symbol's range, the count) -> the points drawn (seeded: the same every time)
+_DRAWN = Recent(1024)
+
+
+def _drawn(
+    ranges: tuple[tuple[str, tuple[Fraction, Fraction]], ...], count: int
+) -> list[dict[str, Fraction]]:
     generator = random.Random(19)
     out = []
     for _ in range(count):
         point = {}
-        for name in names:
-            low, high = _domain(item, name)
+        for name, (low, high) in ranges:
             point[name] = low + (high - low) * Fraction(generator.randint(1, 999), 1000)
         out.append(point)
     return out
@@ -155,7 +174,7 @@ def _identity(item: Item, compiled: Compiled) -> Verdict | None:
     names = sorted(compiled.names - REAL_ONLY)
     points = _points(item, names, POINTS)
     env = {n: np.array([float(p[n]) for p in points]) for n in names}
-    value, size = compiled.value(env, points=len(points)), compiled.size(env, points=len(points))
+    value, size = compiled.both(env, points=len(points))
     if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
         return None
     if np.iscomplexobj(value) and np.any(np.abs(value.imag) > HOLDS * size):
@@ -180,7 +199,7 @@ def _relation(item: Item, compiled: Compiled) -> Verdict | None:
         return None  # the exact engine words it
     points = _points(item, names, RELATION_POINTS if names else 1)
     env = {n: np.array([float(p[n]) for p in points]) for n in names}
-    value, size = compiled.value(env, points=len(points)), compiled.size(env, points=len(points))
+    value, size = compiled.both(env, points=len(points))
     if np.iscomplexobj(value) or not np.all(np.isfinite(value)):
         return None
     for index, (v, s) in enumerate(zip(value, size, strict=True)):
@@ -203,7 +222,7 @@ def certain_margins(item: Item, points: Sequence[Mapping[Any, Any]], tolerance: 
     if item.call != "relation" or item.source is None or not points:
         return set()
     try:
-        compiled = compile_text(item.source)
+        compiled = compile_expr(item.source)
         if FREE_FUNCTION in compiled.names:
             return set()
         names = sorted(compiled.names - REAL_ONLY)
@@ -211,8 +230,7 @@ def certain_margins(item: Item, points: Sequence[Mapping[Any, Any]], tolerance: 
         if any(set(point) != set(names) for point in by_name):
             return set()
         env = {n: np.array([float(p[n]) for p in by_name]) for n in names}
-        value = compiled.value(env, points=len(points))
-        size = compiled.size(env, points=len(points))
+        value, size = compiled.both(env, points=len(points))
     except (Unsupported, ArithmeticError, ValueError, TypeError, RecursionError):
         return set()
     if np.iscomplexobj(value) or np.iscomplexobj(size):
@@ -227,7 +245,7 @@ def _series(item: Item, compiled: Compiled) -> Verdict | None:
     assert item.order is not None
     variable, branch = scale, 1
     if item.rooted is not None:  # s = t**q: a Laurent series in t, its terms below t**(q n)
-        compiled, branch = compile_text(item.rooted[0]), item.rooted[1]
+        compiled, branch = compile_expr(item.rooted[0]), item.rooted[1]
         roots_of = [n for n in compiled.names if n.startswith(DUMMY + "root_")]
         if len(roots_of) != 1:
             return None
@@ -265,7 +283,7 @@ def _stored_series(item: Item) -> Verdict | None:
     engine's to word."""
     if item.taylor is None:
         return None
-    verdict = _identity(item, compile_text(item.taylor))
+    verdict = _identity(item, compile_expr(item.taylor))
     if verdict is None or not verdict[0]:
         return None
     return True, (
@@ -283,7 +301,7 @@ def _stored_limit(item: Item, compiled: Compiled) -> Verdict | None:
 
     if item.limit is None:
         return None
-    limit = compile_text(item.limit)
+    limit = compile_expr(item.limit)
     others = sorted(compiled.names - {str(item.scale)} - REAL_ONLY)
     if FREE_FUNCTION in limit.names | compiled.names or not limit.names - REAL_ONLY <= set(others):
         return None
@@ -325,8 +343,7 @@ def _on_circles(
     for radius in radii:
         env = {n: np.full(CIRCLE, float(point[n]), dtype=complex) for n in others}
         env[variable] = radius * roots
-        value = compiled.value(env, points=CIRCLE)
-        size = compiled.size(env, points=CIRCLE)
+        value, size = compiled.both(env, points=CIRCLE)
         if not (np.all(np.isfinite(value)) and np.all(np.isfinite(size))):
             return None
         coefficients.append(np.fft.fft(value) / CIRCLE / radius**powers)

@@ -24,11 +24,11 @@ from pendcli.data.rows import EquationRow
 from pendcli.data.vocabulary import CHECKED_STATUSES, STATUSES
 from pendcli.data.vocabulary import EquationStatus as Status
 from pendcli.verify.ledger_blame import FLAWED, Context, is_finding, row_context
-from pendcli.verify.ledger_formulas import row_dimensions
 from pendcli.verify.ledger_paper import LedgerPaper
 from pendcli.verify.ledger_references import (
     Computed,
     conditional,
+    printed_dimensions,
     printed_problem,
     reference_table,
     row_printed_status,
@@ -146,7 +146,7 @@ def evaluate(paper: LedgerPaper, root: Path | None = None, part: Part = (0, 1)) 
     out = []
     for row in rows[start:stop]:
         symbols = ledger.symbols_for(row)
-        dims = row_dimensions(row, symbols).get("printed")
+        dims = printed_dimensions(row, symbols)
         computed = row_printed_status(row, symbols, references) if row.reference else None
         condition = conditional(paper, ledger, row, references)
         step, step_problem = step_evidence(row, ledger)

@@ -1,8 +1,11 @@
 """The ledger's formulas: its ``[symbols]`` table (name -> dimension) and each row's
 ``printed``, ``reading_formula`` and ``corrected_formula``, parsed and dimension-checked.
 
-Parsing happens when a ledger is loaded, so a typo or an undeclared name is a load error
-naming the row; sympy is imported only when some row carries a formula.
+Every formula is checked by the notation's grammar when a ledger is loaded (its words, its
+tree and its bounds: data/formula_grammar), so a typo or an undeclared name is a load error
+naming the row; its sympy expression is built when first used (a row judged from its live
+reference, its dimensions where the store does not keep them, a formula check), once per
+text and symbol table.
 """
 
 from __future__ import annotations
@@ -14,7 +17,14 @@ from typing import TYPE_CHECKING, Any
 
 from pendcli.base.errors import PendcliError
 from pendcli.data.formula_grammar import plain_name
-from pendcli.data.printed import ELLIPSIS, FUNCTIONS, Formula, parse_dimension, parse_formula
+from pendcli.data.printed import (
+    ELLIPSIS,
+    FUNCTIONS,
+    Formula,
+    check_formula,
+    parse_dimension,
+    parse_formula,
+)
 
 if TYPE_CHECKING:
     from pendcli.data.ledger_rows import LedgerRow
@@ -95,18 +105,18 @@ def validate_scopes(
 def validate_formulas(
     path: Path, rows: Iterable[LedgerRow], symbols_for: Callable[[LedgerRow], Mapping[str, str]]
 ) -> None:
-    """Parse every formula field of every row (in the symbols of its place in the text); the
-    first bad one is an error naming it."""
+    """Check every formula field of every row by the notation's grammar (in the symbols of its
+    place in the text; nothing is built); the first bad one is an error naming it."""
     for row in rows:
         symbols = symbols_for(row)
         for field in FORMULA_FIELDS:
             if getattr(row, field) is not None:
                 if not symbols:
                     raise PendcliError(f"{path}: {row.id}: {field} needs a [symbols] table")
-                row_formula(f"{path}: {row.id}: {field}", getattr(row, field), symbols)
+                check_formula(f"{path}: {row.id}: {field}", getattr(row, field), symbols)
                 read = row.read(field)  # as the engine judges it, the reading table applied
                 if read is not None and read != getattr(row, field):
-                    row_formula(f"{path}: {row.id}: {field} (read)", read, symbols)
+                    check_formula(f"{path}: {row.id}: {field} (read)", read, symbols)
         if row.reference is not None and row.printed is None:
             raise PendcliError(f"{path}: {row.id}: a reference checks a printed form; none")
         if row.reading_formula is not None and row.status != "misprint":

@@ -18,11 +18,12 @@ from typing import TYPE_CHECKING, Any
 from pendcli.base.errors import PendcliError
 from pendcli.data.ledger_conditions import Conditional, row_conditional
 from pendcli.data.rows import NO_STATUS
-from pendcli.verify.ledger_formulas import printed_status, row_formula
+from pendcli.verify.ledger_formulas import printed_status, row_dimensions, row_formula
 
 if TYPE_CHECKING:
     from pendcli.data.ledger_rows import Ledger, LedgerRow
     from pendcli.data.printed import Formula
+    from pendcli.verify.dimensions import DimensionCheck
     from pendcli.verify.ledger_paper import LedgerPaper as Paper
     from pendcli.verify.printed_check import Reference
 
@@ -36,6 +37,7 @@ __all__ = [
     "derivation_drift",
     "derivation_records",
     "paper_digest",
+    "printed_dimensions",
     "printed_problem",
     "reference_table",
     "row_derivation",
@@ -214,8 +216,10 @@ def row_derivation(
     built = _reference(references[name], row.paper, name, _read_by_references())
     reference = _with_row_parameters(row, built, _case_builders(row, references))
     inputs = row_inputs(row, symbols)
+    dims = row_dimensions(row, symbols)["printed"]
+    shared = {"inputs": inputs, "reference": name, "dimensions": [dims.verdict, dims.detail]}
     if isinstance(reference, Numbers):
-        return {"inputs": inputs, "reference": name, "live": "printed numbers"}
+        return {**shared, "live": "printed numbers"}
 
     def parsed(field: str) -> Formula | None:
         text = row.read(field)
@@ -227,10 +231,9 @@ def row_derivation(
     forms = derived_forms(printed, reading, corrected, reference)
     live = _live_only(forms)
     if live:
-        return {"inputs": inputs, "reference": name, "live": live}
+        return {**shared, "live": live}
     return {
-        "inputs": inputs,
-        "reference": name,
+        **shared,
         "kind": kind_called_for(printed, reference),
         "forms": {
             f: {"holds": d.holds, "items": [item_record(i) for i in d.items]}
@@ -268,7 +271,7 @@ def use_store(on: bool) -> None:
 def _stored(row: LedgerRow, symbols: Mapping[str, str]) -> Any:
     """The row's stored derivation (kind, forms) when the store is on and current for the
     row and the tables in use; else None (and, once per paper, a line on stderr)."""
-    from pendcli.verify.derivation_store import row_inputs, row_record, stored_rows
+    from pendcli.verify.derivation_store import row_inputs, row_record, stored_nodes, stored_rows
 
     if not _STORE["on"]:
         return None
@@ -278,7 +281,24 @@ def _stored(row: LedgerRow, symbols: Mapping[str, str]) -> Any:
         return None
     if "live" in entry[1]:  # judged from the live reference by design
         return None
-    return row_record(row.id, entry[1])
+    return row_record(row.id, entry[1], stored_nodes(row.paper))
+
+
+def printed_dimensions(row: LedgerRow, symbols: Mapping[str, str]) -> DimensionCheck | None:
+    """The dimensional verdict of the row's printed form (None without one): the store's,
+    derived from these very tables (``make regen``, compared by ``check``), else computed."""
+    from pendcli.verify.derivation_store import row_inputs, stored_rows
+    from pendcli.verify.dimensions import DIMENSION_VERDICTS, DimensionCheck
+
+    if row.printed is None:
+        return None
+    entry = None
+    if _STORE["on"] and row.reference is not None:
+        entry = stored_rows(row.paper, paper_digest(row.paper)).get(row.id)
+    stored = entry[1].get("dimensions") if entry and entry[0] == row_inputs(row, symbols) else None
+    if isinstance(stored, list) and len(stored) == 2 and stored[0] in DIMENSION_VERDICTS:
+        return DimensionCheck(stored[0], str(stored[1]))
+    return row_dimensions(row, symbols).get("printed")
 
 
 _SAID: set[str] = set()
@@ -440,17 +460,19 @@ def store_derivations(paper: Paper) -> Path:
 def derivation_drift(paper: Paper) -> list[str]:
     """How the stored derivations differ from what the code derives now: one line per row
     (its reference named), empty when they agree."""
-    from pendcli.verify.derivation_store import stored_rows
+    from pendcli.verify.derivation_store import canonical_record, stored_nodes, stored_rows
 
     stored = stored_rows(paper.key, paper_digest(paper.key))
     if not stored and paper.references is not None:
         return [f"{paper.key}: no stored derivations for these tables (run `make regen`)"]
     fresh = derivation_records(paper)
+    nodes = stored_nodes(paper.key)
     lines = []
     for row_id in sorted(set(stored) | set(fresh)):
         old = stored.get(row_id, (None, None))[1]
         new = fresh.get(row_id)
-        if old != new:
+        old = None if old is None else canonical_record(old, nodes)
+        if old != (None if new is None else canonical_record(new)):
             reference = (new or old or {}).get("reference", "")
             lines.append(
                 f"{row_id}: the stored derivation differs from the code's {reference}".rstrip()

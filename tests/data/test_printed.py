@@ -403,3 +403,22 @@ def test_a_random_number_of_a_random_holds_row_changed_stops_it_holding(seed: in
     symbols = committed_ledger(paper).symbols_for(mutant)
     status, why = printed_status(mutant, symbols, reference)
     assert status != "holds", f"{row.id}: {text} -> {changed} at {number.start()}: {why}"
+
+
+def test_a_ledger_loads_checking_each_formula_without_building_it(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Loading checks the words, the tree and the bounds of every formula; no sympy
+    expression is built (what the store gives a cold run is not parsed again), and what the
+    grammar refuses is still refused when the ledger loads."""
+    from pendcli.data import formula_grammar
+
+    def no_build(*args: object) -> None:
+        raise AssertionError("a formula was built while the ledger loaded")
+
+    monkeypatch.setattr(formula_grammar, "_build", no_build)
+    _ledger("rho = l*u + sin(u)**2")
+    with pytest.raises(PendcliError, match="'v' is not a declared"):
+        _ledger("rho = l*v")
+    with pytest.raises(PendcliError, match="over the limit"):
+        _ledger("rho = l*u**(u**9**9)")

@@ -327,7 +327,6 @@ def test_check_fails_naming_the_row_whose_stored_derivation_the_code_no_longer_d
     """`pendcli check` derives the ledger again (Tisserand's here) and compares it with
     tables/derivations: one stored residual changed makes it fail before any table is
     recomputed, naming the row and its reference; the untouched store passes this step."""
-    import json
 
     from pendcli.papers import registry
     from pendcli.run import regression
@@ -335,19 +334,21 @@ def test_check_fails_naming_the_row_whose_stored_derivation_the_code_no_longer_d
 
     monkeypatch.setattr(registry, "ledger_papers", lambda: ["tisserand"])
     assert regression._derivations(False, None) == []
-    stored = json.loads(derivation_store.store_path("tisserand").read_text(encoding="utf-8"))
+    tables, rows = derivation_store.text_records("tisserand")  # each expression as srepr
     row_id, record = next(
-        (k, v) for k, v in sorted(stored["rows"].items()) if "live" not in v and "forms" in v
+        (k, v) for k, v in sorted(rows.items()) if "live" not in v and "forms" in v
     )
     item = record["forms"]["printed"]["items"][0]
-    item["expr"] = f"Add({item['expr']}, Integer(1))"
+    original = item["expr"]
+    item["expr"] = f"Add({original}, Integer(1))"
     tampered = tmp_path / "tisserand.json"
     monkeypatch.setattr(derivation_store, "store_path", lambda paper: tampered)
-    derivation_store.write_store("tisserand", stored["tables"], stored["rows"])
+    derivation_store.write_store("tisserand", tables, rows)
     try:
         assert regression.run_check() == 1
     finally:  # written once more where it was, which empties the store's memo before the
         # package's own store is read again
-        derivation_store.write_store("tisserand", stored["tables"], stored["rows"])
+        item["expr"] = original
+        derivation_store.write_store("tisserand", tables, rows)
     err = capsys.readouterr().err
     assert f"{row_id}: the stored derivation differs from the code's {record['reference']}" in err

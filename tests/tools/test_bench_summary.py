@@ -148,7 +148,9 @@ def test_the_derivations_floor_command_reads_every_stored_row_of_every_ledger(
     read: list[str] = []
     real = derivation_store.row_record
     monkeypatch.setattr(
-        derivation_store, "row_record", lambda name, record: read.append(name) or real(name, record)
+        derivation_store,
+        "row_record",
+        lambda name, record, nodes: read.append(name) or real(name, record, nodes),
     )
     exec(bench_startup.READ_DERIVATIONS, {})
     rows = {row.id for key in ledger_papers() for row in load_ledger(key).rows}

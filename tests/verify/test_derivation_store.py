@@ -21,7 +21,7 @@ from pendcli.data.printed import ledger_symbols
 from pendcli.data.stored_expr import read_expr
 from pendcli.papers.registry import ledger_papers, paper
 from pendcli.verify import float_verdict, ledger_references
-from pendcli.verify.derivation_store import row_record, store_path, stored_rows
+from pendcli.verify.derivation_store import row_record, store_path, stored_nodes, stored_rows
 from pendcli.verify.derived import Item, item_passes, relation_points
 from pendcli.verify.ledger_references import row_printed_status
 
@@ -48,6 +48,51 @@ def test_the_grammar_refuses_what_is_not_a_stored_expression(text: str) -> None:
     with pytest.raises(PendcliError) as raised:
         read_expr("a row", text)
     assert str(raised.value).startswith("a row: ") and "\n" not in str(raised.value)
+
+
+# a table's nodes: a compound's arguments earlier nodes, leaves' literals of their head
+_X = ["Symbol", "x", {"real": True}]
+REFUSED_TABLES = [
+    ([_X, ["Add", 0, 2]], "arguments it does not take"),  # a later node: no cycle can form
+    ([["Add", 0]], "arguments it does not take"),  # itself
+    ([_X, ["eval", 0]], "the grammar refuses"),
+    ([_X, ["Integer", 10**61]], "arguments it does not take"),
+    ([_X, ["Rational", 1, 0]], "arguments it does not take"),
+    ([_X, ["Symbol", "y", {"real": "yes"}]], "arguments it does not take"),
+    ([_X, ["Apply", 0, 0]], "no Function"),
+    # each node twice the last: 2**30 nodes in the tree the last one stands for
+    ([_X, *(["Add", k, k] for k in range(30))], "more than 200000 nodes"),
+    ([_X, *(["sin", k] for k in range(250))], "more than 200 deep"),
+    ("not a list", "must be a list"),
+]
+
+
+@pytest.mark.parametrize(("nodes", "why"), REFUSED_TABLES)
+def test_a_table_of_nodes_is_refused_unless_every_node_is_of_the_grammar(
+    nodes: object, why: str
+) -> None:
+    from pendcli.data.stored_expr import read_nodes
+
+    with pytest.raises(PendcliError, match=why) as raised:
+        read_nodes("a store", nodes)
+    assert str(raised.value).startswith("a store") and "\n" not in str(raised.value)
+
+
+def test_a_shared_node_is_one_expression_and_reads_back() -> None:
+    """sin(x)**2 + sin(x): sin(x) written once, read back as sympy builds it, and compiled
+    to numpy values that mpmath computes alike."""
+    from pendcli.data.stored_expr import NodeWriter, StoredExpr
+    from pendcli.verify.float_compile import compile_expr
+
+    x = ledger_symbols("x")[0]
+    expr = sp.sin(x) ** 2 + sp.sin(x)
+    writer = NodeWriter()
+    index = writer.encode("e", sp.srepr(expr))
+    assert sum(1 for n in writer.nodes if n[0] == "sin") == 1
+    table = writer.table("e")
+    assert table.expr(index) == expr and table.text(index) == sp.srepr(expr)
+    value = compile_expr(StoredExpr(table, index)).value({"x": 0.3}, 1)[0]
+    assert value == pytest.approx(float(mpmath.sin(0.3) ** 2 + mpmath.sin(0.3)), rel=1e-15)
 
 
 def test_the_grammar_reads_back_what_srepr_writes() -> None:
@@ -135,7 +180,7 @@ def _stored_items() -> list[tuple[str, Item]]:
         for row_id, (_, record) in stored_rows(key, ledger_references.paper_digest(key)).items():
             if "live" in record:
                 continue
-            for form, derived in row_record(row_id, record)[1].items():
+            for form, derived in row_record(row_id, record, stored_nodes(key))[1].items():
                 out += [(f"{row_id} {form} {item.where[:40]}", item) for item in derived.items]
     return out
 
@@ -328,4 +373,18 @@ def test_a_relation_is_computed_again_only_where_float64_does_not_show_it(
             True,
             "the inequality holds at 32 random points",
         )
+    )
+
+
+def test_a_factorial_of_a_huge_integer_is_not_multiplied_out_in_float64() -> None:
+    """factorial(10**40) + x: float64 leaves it undecided (a double holds no factorial past
+    170!) instead of asking sympy for its forty-digit-long product; x! of a small integer is
+    evaluated (5! = 120 by hand)."""
+    x = "Symbol('x', real=True)"
+    huge = Item("equation", "e", text=f"Add(factorial(Integer({10**40})), {x})")
+    assert float_verdict.quick_verdict(huge) is None
+    small = Item("equation", "e", text="Add(factorial(Integer(5)), Integer(-120))")
+    assert float_verdict.quick_verdict(small) == (
+        True,
+        "vanishes at 8 random points to 1e-14 of its terms (float64)",
     )
