@@ -225,36 +225,19 @@ def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 @pytest.fixture
-def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
+def reproduce_computed_once(
+    monkeypatch: pytest.MonkeyPatch, tmp_path_factory: pytest.TempPathFactory, worker_id: str
+) -> None:
     """For the tests of a command's output form that run it several times (at several widths,
-    in several formats): ``reproduce_all`` computes each set of arguments once in the test and
-    serves it again, and so does ``derivation_drift`` (each paper's stored derivations derived
-    again) for each paper and tables folder, so `check`, which never reads the result cache,
-    does not compute every table and derivation again for each form. No test of a computation
-    uses it."""
-    from pendcli.data.tables import tables_dir
-    from pendcli.run import reproduce
-    from pendcli.verify import ledger_references
+    in several formats): ``reproduce_all`` and ``derivation_drift`` (each paper's stored
+    derivations derived again) answer from the run's one computation of every table and of
+    the derivations (tests/helpers/regenerated.py, shared by the workers) where asked for
+    that, of the committed tables; any other call is computed once in the test and served
+    again. So `check`, which never reads the result cache, does not compute every table and
+    derivation again for each form. No test of a computation uses it."""
+    from helpers.regenerated import serve_shared, shared_root
 
-    computed = reproduce.reproduce_all
-    derived = ledger_references.derivation_drift
-    done: dict[str, object] = {}
-    drifts: dict[tuple[str, str], list[str]] = {}
-
-    def once(*args: object, **kwargs: object) -> object:
-        key = repr((args, sorted(kwargs.items())))
-        if key not in done:
-            done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
-        return done[key]
-
-    def drift_once(paper):  # type: ignore[no-untyped-def]
-        key = (paper.key, str(tables_dir()))
-        if key not in drifts:
-            drifts[key] = derived(paper)
-        return list(drifts[key])
-
-    monkeypatch.setattr(reproduce, "reproduce_all", once)
-    monkeypatch.setattr(ledger_references, "derivation_drift", drift_once)
+    serve_shared(monkeypatch, shared_root(tmp_path_factory, worker_id))
 
 
 @pytest.fixture(scope="session")

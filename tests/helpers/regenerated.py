@@ -2,8 +2,13 @@
 paper with its formulas and ledger), done once per test run in a fresh process with one job,
 and shared by the tests that need its result but test something else: the writer of `check
 --update` under a kill, a signal, a full disk or a read-only folder, the comparison of damaged
-committed cells, and the one-job side of the determinism tests. xdist workers share one
-computation through a file lock in the run's common temporary folder.
+committed cells, the one-job side of the determinism tests, and the tests of `check`'s output
+(its formats, its widths, its command line fuzzed). xdist workers share one computation through
+a file lock in the run's common temporary folder.
+
+The same holds for `check`'s other computation, the stored derivations of each ledger derived
+again (``derivation_drift``: 20 s of CPU), done once per run in its own fresh process when a
+test first asks for it (:func:`serve_shared`).
 
 :data:`SERVED_CLI` runs `pendcli ARGS` in a fresh process as ``python -m pendcli`` does, with
 ``reproduce_all`` answering from that file: the process, its signal handlers, its lock, its
@@ -14,6 +19,7 @@ from __future__ import annotations
 
 import fcntl
 import os
+import pickle
 import subprocess
 import sys
 from collections.abc import Callable
@@ -34,6 +40,13 @@ asked = {"keys": tuple(keys()), "formulas": True, "equations": True, "stability"
 result = reproduce_all(keys(), formulas=True, equations=True, stability=False, quiet=True, jobs=1)
 sys.stdout.buffer.write(pickle.dumps((asked, result)))
 """
+DRIFT = "derivation-drift.pickle"
+COMPUTE_DRIFT = """
+import pickle, sys
+from pendcli.papers.registry import keys, paper
+from pendcli.verify.ledger_references import derivation_drift
+sys.stdout.buffer.write(pickle.dumps({key: derivation_drift(paper(key)) for key in keys()}))
+"""
 
 
 def shared_root(factory: pytest.TempPathFactory, worker: str) -> Path:
@@ -42,22 +55,23 @@ def shared_root(factory: pytest.TempPathFactory, worker: str) -> Path:
     return base if worker == "master" else base.parent
 
 
-def computed_once(root: Path) -> Path:
-    """The file holding every table's computation from the committed tables, computed by
-    the first worker to ask (the others wait on the lock, then read it)."""
-    path = root / NAME
-    with open(root / f"{NAME}.lock", "w") as lock:
+def computed_once(root: Path, name: str = NAME, script: str = COMPUTE) -> Path:
+    """The file holding every table's computation from the committed tables (or what
+    ``script`` prints), computed by the first worker to ask (the others wait on the lock,
+    then read it)."""
+    path = root / name
+    with open(root / f"{name}.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if not path.exists():
             env = {k: v for k, v in os.environ.items() if k != "PENDCLI_TABLES"}
             done = subprocess.run(
-                [sys.executable, "-c", COMPUTE],
+                [sys.executable, "-c", script],
                 env={**env, "PENDCLI_JOBS": "1"},
                 capture_output=True,
                 check=False,
             )
             assert done.returncode == 0, done.stderr.decode()
-            tmp = path.with_name(f"{NAME}.tmp")
+            tmp = path.with_name(f"{name}.tmp")
             tmp.write_bytes(done.stdout)
             os.replace(tmp, path)
     return path
@@ -66,3 +80,54 @@ def computed_once(root: Path) -> Path:
 def served(path: Path) -> Callable[..., Any]:
     """A stand-in for ``reproduce_all`` in this process, answering from ``path``."""
     return stand_in(path)
+
+
+def serve_shared(monkeypatch: pytest.MonkeyPatch, root: Path) -> None:
+    """For the tests of a command's output form that run it several times: in this test,
+    ``reproduce_all`` and ``derivation_drift`` (`check`'s two computations) answer from the
+    run's shared computations (in ``root``, made when first asked) where asked what those
+    hold of the package's own tables; anything else is computed once in the test and served
+    again (another set of arguments, another tables folder)."""
+    from pendcli.data.tables import tables_dir
+    from pendcli.run import reproduce
+    from pendcli.verify import ledger_references
+    from pendcli.verify.derivation_store import stores_here
+
+    computed, derived = reproduce.reproduce_all, ledger_references.derivation_drift
+    done: dict[str, object] = {}
+    drifts: dict[tuple[str, str], list[str]] = {}
+
+    def once(*args: object, **kwargs: object) -> object:
+        if stores_here(tables_dir()) and _asks_for_every_table(computed, args, kwargs):
+            return served(computed_once(root))(*args, **kwargs)
+        key = repr((args, sorted(kwargs.items())))
+        if key not in done:
+            done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
+        return done[key]
+
+    def drift_once(paper):  # type: ignore[no-untyped-def]
+        if stores_here(tables_dir()):
+            shared = computed_once(root, DRIFT, COMPUTE_DRIFT)
+            return list(pickle.loads(shared.read_bytes())[paper.key])
+        key = (paper.key, str(tables_dir()))
+        if key not in drifts:
+            drifts[key] = derived(paper)
+        return list(drifts[key])
+
+    monkeypatch.setattr(reproduce, "reproduce_all", once)
+    monkeypatch.setattr(ledger_references, "derivation_drift", drift_once)
+
+
+def _asks_for_every_table(
+    function: Callable[..., Any], args: tuple[object, ...], kwargs: dict[str, object]
+) -> bool:
+    """Whether a call of ``reproduce_all`` asks for what :data:`COMPUTE` computes."""
+    import inspect
+
+    from pendcli.papers.registry import keys
+
+    bound = inspect.signature(function).bind(*args, **kwargs)
+    bound.apply_defaults()
+    asked = bound.arguments
+    wanted = {"formulas": True, "equations": True, "stability": False}
+    return tuple(asked["keys"]) == tuple(keys()) and all(asked[k] == v for k, v in wanted.items())
