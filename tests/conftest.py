@@ -106,10 +106,10 @@ SLOW_FAMILIES = {
     "cold)",
     "tests/attacks/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this "
     "process, each regenerating every table and the three ledgers (20 s of CPU)",
-    "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
-    "judged as committed and with 165 data mutations (20 s of CPU with their references)",
+    "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "54 sampled ledger rows "
+    "judged as committed and with 123 data mutations (15 s of CPU with their references)",
     "tests/verify/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
-    "engine mutation judged over the sampled rows it applies to (up to 5 s of CPU each)",
+    "engine mutation judged over the sampled rows it applies to (up to 1.6 s of CPU each)",
     "tests/attacks/test_attack_signals.py::test_a_worker_killed_stops_the_run_*": "a cold "
     "`equations` in two processes, until its worker computes",
     "tests/attacks/test_attack_signals.py::test_a_stop_while_a_worker_computes_*": "a cold "
