@@ -84,26 +84,39 @@ def served(path: Path) -> Callable[..., Any]:
 
 def serve_shared(monkeypatch: pytest.MonkeyPatch, root: Path) -> None:
     """For the tests of a command's output form that run it several times: in this test,
-    ``reproduce_all`` and ``derivation_drift`` (`check`'s two computations) answer from the
-    run's shared computations (in ``root``, made when first asked) where asked what those
-    hold of the package's own tables; anything else is computed once in the test and served
-    again (another set of arguments, another tables folder)."""
+    ``reproduce_all``, ``ledger_rows`` and ``derivation_drift`` answer from the run's shared
+    computations (in ``root``, made when first asked) where asked for what those hold (every
+    table or a part of it: fewer papers, no formulas, no ledger) of the package's own tables;
+    anything else is computed once in the test and served again (the stability table,
+    another tables folder). The claims, formula checks and explanations of the committed
+    tables are computed once per process."""
     from pendcli.data.tables import tables_dir
     from pendcli.run import reproduce
     from pendcli.verify import ledger_references
     from pendcli.verify.derivation_store import stores_here
 
-    computed, derived = reproduce.reproduce_all, ledger_references.derivation_drift
+    computed, rows, derived = (
+        reproduce.reproduce_all,
+        reproduce.ledger_rows,
+        ledger_references.derivation_drift,
+    )
     done: dict[str, object] = {}
     drifts: dict[tuple[str, str], list[str]] = {}
 
     def once(*args: object, **kwargs: object) -> object:
-        if stores_here(tables_dir()) and _asks_for_every_table(computed, args, kwargs):
-            return served(computed_once(root))(*args, **kwargs)
+        part = _part_asked(computed, args, kwargs)
+        if stores_here(tables_dir()) and part is not None:
+            return _part_of(computed_once(root), *part)
         key = repr((args, sorted(kwargs.items())))
         if key not in done:
             done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
         return done[key]
+
+    def ledger_once(keys, *args, **kwargs):  # type: ignore[no-untyped-def]
+        if not stores_here(tables_dir()):
+            return rows(keys, *args, **kwargs)
+        result = _part_of(computed_once(root), tuple(keys), False, True)
+        return [row for key in keys for row in result.equations[key]]
 
     def drift_once(paper):  # type: ignore[no-untyped-def]
         if stores_here(tables_dir()):
@@ -115,13 +128,16 @@ def serve_shared(monkeypatch: pytest.MonkeyPatch, root: Path) -> None:
         return list(drifts[key])
 
     monkeypatch.setattr(reproduce, "reproduce_all", once)
+    monkeypatch.setattr(reproduce, "ledger_rows", ledger_once)
     monkeypatch.setattr(ledger_references, "derivation_drift", drift_once)
+    _serve_committed_rows(monkeypatch)
 
 
-def _asks_for_every_table(
+def _part_asked(
     function: Callable[..., Any], args: tuple[object, ...], kwargs: dict[str, object]
-) -> bool:
-    """Whether a call of ``reproduce_all`` asks for what :data:`COMPUTE` computes."""
+) -> tuple[tuple[str, ...], bool, bool] | None:
+    """The papers, formulas and ledger a call of ``reproduce_all`` asks for, when the run's
+    computation (:data:`COMPUTE`) holds them: not the stability table."""
     import inspect
 
     from pendcli.papers.registry import keys
@@ -129,5 +145,63 @@ def _asks_for_every_table(
     bound = inspect.signature(function).bind(*args, **kwargs)
     bound.apply_defaults()
     asked = bound.arguments
-    wanted = {"formulas": True, "equations": True, "stability": False}
-    return tuple(asked["keys"]) == tuple(keys()) and all(asked[k] == v for k, v in wanted.items())
+    papers = tuple(asked["keys"])
+    if asked["stability"] or not set(papers) <= set(keys()):
+        return None
+    return papers, bool(asked["formulas"]), bool(asked["equations"])
+
+
+def _part_of(path: Path, papers: tuple[str, ...], formulas: bool, equations: bool) -> Any:
+    """The run's computation of every table, cut to what was asked."""
+    from dataclasses import replace
+
+    _, result = pickle.loads(path.read_bytes())
+    return replace(
+        result,
+        papers=papers,
+        claims={k: result.claims[k] for k in papers if k in result.claims},
+        formulas={k: result.formulas[k] for k in papers if k in result.formulas}
+        if formulas
+        else {},
+        equations={k: result.equations[k] for k in papers if k in result.equations}
+        if equations
+        else {},
+    )
+
+
+# (paper, claim id or None) -> its explained rows, of the committed tables
+_EXPLAINED: dict[tuple[str, str | None], list[Any]] = {}
+
+
+def _serve_committed_rows(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The committed tables' claims, formula checks and explanations (the rows of `list`,
+    `formulas` and `explain`), each computed once per process (tests/helpers/evaluated.py)
+    and served again; with a tables folder of the test's own, computed as usual."""
+    from helpers.evaluated import committed_claims, committed_formulas
+    from pendcli.papers import registry
+    from pendcli.verify import explain
+
+    claims, formulas, explained = registry.claim_rows, registry.formula_checks, explain.explain_rows
+
+    def committed() -> bool:
+        return not os.environ.get("PENDCLI_TABLES")
+
+    def explain_once(key: str, *args: Any, **kwargs: Any) -> list[Any]:
+        claim = args[2] if len(args) > 2 else kwargs.get("claim_id")
+        if not committed():
+            return explained(key, *args, **kwargs)
+        if (key, claim) not in _EXPLAINED:
+            _EXPLAINED[key, claim] = explained(key, *args, **kwargs)
+        return list(_EXPLAINED[key, claim])
+
+    monkeypatch.setattr(
+        registry,
+        "claim_rows",
+        lambda key: list(committed_claims(key)) if committed() else claims(key),
+    )
+    monkeypatch.setattr(
+        registry,
+        "formula_checks",
+        lambda key: list(committed_formulas(key)) if committed() else formulas(key),
+    )
+    monkeypatch.setattr(explain, "explain_rows", explain_once)
