@@ -60,9 +60,10 @@ SLOW_FAMILIES = {
     "tests/output/test_terminal_fit.py::*": "each command's whole output at two widths",
     "tests/output/test_terminal_render.py::test_render_*": "each command's whole output at three "
     "widths",
-    "tests/output/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
-    "tests/output/test_summary.py::test_only_failing_*": "a whole reproduce of a paper, in a "
-    "process",
+    "tests/output/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce's view, "
+    "served the run's one computation of every table",
+    "tests/output/test_summary.py::test_only_failing_*": "a reproduce of a paper, served the "
+    "run's one computation of every table",
     "tests/cli/test_cli.py::test_ascii_only_locale": "each command in a fresh process",
     "tests/cli/test_cli.py::test_file_size_limit_names_the_plot_*": "a figure drawn in a process",
     "tests/output/test_report.py::test_report_of_one_paper_*": "a report's figures in forked "

@@ -28,7 +28,7 @@ from typing import Any
 
 import pytest
 
-from helpers.served_cli import stand_in
+from helpers.served_cli import holds, stand_in
 
 SERVED_CLI = (sys.executable, str(Path(__file__).with_name("served_cli.py")))
 NAME = "reproduce-all.pickle"
@@ -104,9 +104,8 @@ def serve_shared(monkeypatch: pytest.MonkeyPatch, root: Path) -> None:
     drifts: dict[tuple[str, str], list[str]] = {}
 
     def once(*args: object, **kwargs: object) -> object:
-        part = _part_asked(computed, args, kwargs)
-        if stores_here(tables_dir()) and part is not None:
-            return _part_of(computed_once(root), *part)
+        if stores_here(tables_dir()) and _run_holds(computed, args, kwargs):
+            return served(computed_once(root))(*args, **kwargs)
         key = repr((args, sorted(kwargs.items())))
         if key not in done:
             done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
@@ -115,7 +114,7 @@ def serve_shared(monkeypatch: pytest.MonkeyPatch, root: Path) -> None:
     def ledger_once(keys, *args, **kwargs):  # type: ignore[no-untyped-def]
         if not stores_here(tables_dir()):
             return rows(keys, *args, **kwargs)
-        result = _part_of(computed_once(root), tuple(keys), False, True)
+        result = served(computed_once(root))(tuple(keys), formulas=False, equations=True)
         return [row for key in keys for row in result.equations[key]]
 
     def drift_once(paper):  # type: ignore[no-untyped-def]
@@ -133,40 +132,20 @@ def serve_shared(monkeypatch: pytest.MonkeyPatch, root: Path) -> None:
     _serve_committed_rows(monkeypatch)
 
 
-def _part_asked(
+def _run_holds(
     function: Callable[..., Any], args: tuple[object, ...], kwargs: dict[str, object]
-) -> tuple[tuple[str, ...], bool, bool] | None:
-    """The papers, formulas and ledger a call of ``reproduce_all`` asks for, when the run's
-    computation (:data:`COMPUTE`) holds them: not the stability table."""
+) -> bool:
+    """Whether the run's computation (:data:`COMPUTE`) holds what a call of ``reproduce_all``
+    asks for: not the stability table."""
     import inspect
 
     from pendcli.papers.registry import keys
 
     bound = inspect.signature(function).bind(*args, **kwargs)
     bound.apply_defaults()
-    asked = bound.arguments
-    papers = tuple(asked["keys"])
-    if asked["stability"] or not set(papers) <= set(keys()):
-        return None
-    return papers, bool(asked["formulas"]), bool(asked["equations"])
-
-
-def _part_of(path: Path, papers: tuple[str, ...], formulas: bool, equations: bool) -> Any:
-    """The run's computation of every table, cut to what was asked."""
-    from dataclasses import replace
-
-    _, result = pickle.loads(path.read_bytes())
-    return replace(
-        result,
-        papers=papers,
-        claims={k: result.claims[k] for k in papers if k in result.claims},
-        formulas={k: result.formulas[k] for k in papers if k in result.formulas}
-        if formulas
-        else {},
-        equations={k: result.equations[k] for k in papers if k in result.equations}
-        if equations
-        else {},
-    )
+    asked = {k: bound.arguments[k] for k in ("keys", "formulas", "equations")}
+    computed = {"keys": tuple(keys()), "formulas": True, "equations": True}
+    return holds(computed, asked, bool(bound.arguments["stability"]))
 
 
 # (paper, claim id or None) -> its explained rows, of the committed tables
