@@ -103,10 +103,11 @@ SLOW_FAMILIES = {
     "tests/attacks/test_attack_misc.py::test_scipy_zeros_are_written_a_chunk_at_a_time": "400,000 "
     "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
     "tests/output/test_equation_fields.py::"
-    "test_every_json_row_carries_the_engines_verdict": "every paper's whole ledger (40 s of CPU "
-    "cold)",
+    "test_every_json_row_carries_the_engines_verdict": "every paper's whole ledger, served the "
+    "run's one computation of every table (10 s of CPU, paid by the first test to ask)",
     "tests/attacks/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this "
-    "process, each regenerating every table and the three ledgers (20 s of CPU)",
+    "process, served the run's one computation of every table and of the derivations (30 s "
+    "of CPU, paid by the first test to ask)",
     "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "54 sampled ledger rows "
     "judged as committed and with 123 data mutations (15 s of CPU with their references)",
     "tests/verify/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
