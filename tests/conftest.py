@@ -242,6 +242,20 @@ def reproduce_computed_once(
     serve_shared(monkeypatch, shared_root(tmp_path_factory, worker_id))
 
 
+@pytest.fixture(scope="session", autouse=True)
+def shared_computations_started(  # type: ignore[no-untyped-def]
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory, worker_id: str
+):
+    """The run's shared computations its selected tests will read (tests/helpers/regenerated.py)
+    started in the background at the first test, so no worker waits idle for one; waited
+    for at the end. Nothing is started for a run that reads none (make test)."""
+    from helpers.regenerated import shared_root, start_early, wait_started
+
+    start_early(request.session.items, shared_root(tmp_path_factory, worker_id))
+    yield
+    wait_started()
+
+
 @pytest.fixture(scope="session")
 def computed_tables(tmp_path_factory: pytest.TempPathFactory, worker_id: str):  # type: ignore[no-untyped-def]
     """The file holding every table's computation from the committed tables, done once per

@@ -55,26 +55,76 @@ def shared_root(factory: pytest.TempPathFactory, worker: str) -> Path:
     return base if worker == "master" else base.parent
 
 
+# Run in the background by :func:`start_early`: computes ``script`` into ROOT/NAME under the
+# same lock as :func:`computed_once`, or records why it failed beside it.
+RUNNER = """
+import fcntl, os, subprocess, sys
+root, name, script = sys.argv[1:4]
+path = os.path.join(root, name)
+with open(path + ".lock", "w") as lock:
+    fcntl.flock(lock, fcntl.LOCK_EX)
+    if not os.path.exists(path):
+        done = subprocess.run([sys.executable, "-c", script], capture_output=True)
+        if done.returncode == 0:
+            with open(path + ".tmp", "wb") as out:
+                out.write(done.stdout)
+            os.replace(path + ".tmp", path)
+        else:
+            with open(path + ".failed", "wb") as out:
+                out.write(done.stderr)
+"""
+_STARTED: list[subprocess.Popen[bytes]] = []
+
+
+def _child_env() -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items() if k != "PENDCLI_TABLES"}
+    return {**env, "PENDCLI_JOBS": "1"}
+
+
 def computed_once(root: Path, name: str = NAME, script: str = COMPUTE) -> Path:
     """The file holding every table's computation from the committed tables (or what
-    ``script`` prints), computed by the first worker to ask (the others wait on the lock,
-    then read it)."""
+    ``script`` prints): computed by the first worker to ask, or already started in the
+    background (:func:`start_early`); the others wait on the lock, then read it."""
     path = root / name
     with open(root / f"{name}.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
+        failed = root / f"{name}.failed"
+        assert not failed.exists(), failed.read_bytes().decode()
         if not path.exists():
-            env = {k: v for k, v in os.environ.items() if k != "PENDCLI_TABLES"}
             done = subprocess.run(
-                [sys.executable, "-c", script],
-                env={**env, "PENDCLI_JOBS": "1"},
-                capture_output=True,
-                check=False,
+                [sys.executable, "-c", script], env=_child_env(), capture_output=True, check=False
             )
             assert done.returncode == 0, done.stderr.decode()
             tmp = path.with_name(f"{name}.tmp")
             tmp.write_bytes(done.stdout)
             os.replace(tmp, path)
     return path
+
+
+def start_early(items: list[pytest.Item], root: Path) -> None:
+    """Start in the background, once for the run's workers, the shared computations the
+    selected ``items`` will read: every table's (a test asking for ``computed_tables`` or
+    ``reproduce_computed_once``) and the derivations' (a test of `check`'s output, its id
+    naming check, asking for ``reproduce_computed_once``). A worker asking for one then
+    finds it done or under way, instead of both workers waiting idle on one computation."""
+    served = [i for i in items if "reproduce_computed_once" in getattr(i, "fixturenames", ())]
+    tables = served or [i for i in items if "computed_tables" in getattr(i, "fixturenames", ())]
+    wanted = [(NAME, COMPUTE)] if tables else []
+    wanted += [(DRIFT, COMPUTE_DRIFT)] if any("check" in i.nodeid for i in served) else []
+    for name, script in wanted:
+        try:
+            os.close(os.open(root / f"{name}.started", os.O_CREAT | os.O_EXCL | os.O_WRONLY))
+        except FileExistsError:  # another worker started it
+            continue
+        runner = [sys.executable, "-c", RUNNER, str(root), name, script]
+        _STARTED.append(subprocess.Popen(runner, env=_child_env(), stdout=subprocess.DEVNULL))
+
+
+def wait_started() -> None:
+    """Wait for the computations this process started (their CPU is then counted as its
+    children's, and none outlives the run)."""
+    while _STARTED:
+        _STARTED.pop().wait()
 
 
 def served(path: Path) -> Callable[..., Any]:
