@@ -68,9 +68,10 @@ SLOW_FAMILIES = {
     "tests/output/test_terminal_fit.py::*": "each command's whole output at two widths",
     "tests/output/test_terminal_render.py::test_render_*": "each command's whole output at three "
     "widths",
-    "tests/output/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce, twice",
-    "tests/output/test_summary.py::test_only_failing_*": "a whole reproduce of a paper, in a "
-    "process",
+    "tests/output/test_summary.py::test_reproduce_fits_80_columns_*": "a whole reproduce's view, "
+    "served the run's one computation of every table",
+    "tests/output/test_summary.py::test_only_failing_*": "a reproduce of a paper, served the "
+    "run's one computation of every table",
     "tests/cli/test_cli.py::test_ascii_only_locale": "each command in a fresh process",
     "tests/cli/test_cli.py::test_file_size_limit_names_the_plot_*": "a figure drawn in a process",
     "tests/output/test_report.py::test_report_of_one_paper_*": "a report's figures in forked "
@@ -110,14 +111,15 @@ SLOW_FAMILIES = {
     "tests/attacks/test_attack_misc.py::test_scipy_zeros_are_written_a_chunk_at_a_time": "400,000 "
     "zeros by scipy and a baseline run, in two processes (2.2 s of CPU)",
     "tests/output/test_equation_fields.py::"
-    "test_every_json_row_carries_the_engines_verdict": "every paper's whole ledger (40 s of CPU "
-    "cold)",
+    "test_every_json_row_carries_the_engines_verdict": "every paper's whole ledger, served the "
+    "run's one computation of every table (10 s of CPU, paid by the first test to ask)",
     "tests/attacks/test_fuzz.py::test_check_never_tracebacks": "whole `check` runs in this "
-    "process, each regenerating every table and the three ledgers (20 s of CPU)",
-    "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "76 sampled ledger rows "
-    "judged as committed and with 165 data mutations (20 s of CPU with their references)",
+    "process, served the run's one computation of every table and of the derivations (30 s "
+    "of CPU, paid by the first test to ask)",
+    "tests/verify/test_engine_mutations.py::test_the_correct_engine_*": "54 sampled ledger rows "
+    "judged as committed and with 123 data mutations (15 s of CPU with their references)",
     "tests/verify/test_engine_mutations.py::test_an_engine_mutation_is_caught_by_many_rows": "one "
-    "engine mutation judged over the sampled rows it applies to (up to 5 s of CPU each)",
+    "engine mutation judged over the sampled rows it applies to (up to 1.6 s of CPU each)",
     "tests/attacks/test_attack_signals.py::test_a_worker_killed_stops_the_run_*": "a cold "
     "`equations` in two processes, until its worker computes",
     "tests/attacks/test_attack_signals.py::test_a_stop_while_a_worker_computes_*": "a cold "
@@ -233,36 +235,33 @@ def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 @pytest.fixture
-def reproduce_computed_once(monkeypatch: pytest.MonkeyPatch) -> None:
+def reproduce_computed_once(
+    monkeypatch: pytest.MonkeyPatch, tmp_path_factory: pytest.TempPathFactory, worker_id: str
+) -> None:
     """For the tests of a command's output form that run it several times (at several widths,
-    in several formats): ``reproduce_all`` computes each set of arguments once in the test and
-    serves it again, and so does ``derivation_drift`` (each paper's stored derivations derived
-    again) for each paper and tables folder, so `check`, which never reads the result cache,
-    does not compute every table and derivation again for each form. No test of a computation
-    uses it."""
-    from pendcli.data.tables import tables_dir
-    from pendcli.run import reproduce
-    from pendcli.verify import ledger_references
+    in several formats): ``reproduce_all`` and ``derivation_drift`` (each paper's stored
+    derivations derived again) answer from the run's one computation of every table and of
+    the derivations (tests/helpers/regenerated.py, shared by the workers) where asked for
+    that, of the committed tables; any other call is computed once in the test and served
+    again. So `check`, which never reads the result cache, does not compute every table and
+    derivation again for each form. No test of a computation uses it."""
+    from helpers.regenerated import serve_shared, shared_root
 
-    computed = reproduce.reproduce_all
-    derived = ledger_references.derivation_drift
-    done: dict[str, object] = {}
-    drifts: dict[tuple[str, str], list[str]] = {}
+    serve_shared(monkeypatch, shared_root(tmp_path_factory, worker_id))
 
-    def once(*args: object, **kwargs: object) -> object:
-        key = repr((args, sorted(kwargs.items())))
-        if key not in done:
-            done[key] = computed(*args, **kwargs)  # type: ignore[arg-type]
-        return done[key]
 
-    def drift_once(paper):  # type: ignore[no-untyped-def]
-        key = (paper.key, str(tables_dir()))
-        if key not in drifts:
-            drifts[key] = derived(paper)
-        return list(drifts[key])
+@pytest.fixture(scope="session", autouse=True)
+def shared_computations_started(  # type: ignore[no-untyped-def]
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory, worker_id: str
+):
+    """The run's shared computations its selected tests will read (tests/helpers/regenerated.py)
+    started in the background at the first test, so no worker waits idle for one; waited
+    for at the end. Nothing is started for a run that reads none (make test)."""
+    from helpers.regenerated import shared_root, start_early, wait_started
 
-    monkeypatch.setattr(reproduce, "reproduce_all", once)
-    monkeypatch.setattr(ledger_references, "derivation_drift", drift_once)
+    start_early(request.session.items, shared_root(tmp_path_factory, worker_id))
+    yield
+    wait_started()
 
 
 @pytest.fixture(scope="session")

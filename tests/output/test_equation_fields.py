@@ -117,10 +117,13 @@ def test_a_cached_row_of_the_old_shape_is_not_read() -> None:
         rows_from_json(EquationRow, [old])
 
 
-def test_every_json_row_carries_the_engines_verdict(monkeypatch, shared_result_cache) -> None:
+def test_every_json_row_carries_the_engines_verdict(
+    monkeypatch, shared_result_cache, reproduce_computed_once
+) -> None:
     """`pendcli equations -f json`, every paper: a row with a reference carries the status
     computed from its printed form (the recorded one) and why; a row without none; every
-    ``note`` is the ledger's own."""
+    ``note`` is the ledger's own. The ledgers are the run's one computation of every table
+    (tests/helpers/regenerated.py), made by the same engine in a fresh process."""
     monkeypatch.setenv("PENDCLI_CACHE", shared_result_cache)
     code, out, err = invoke("equations", "-f", "json")
     assert code == 0, err

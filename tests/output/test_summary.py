@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from helpers.cli import run_cli
-
 from pendcli.output.summary import disagrees, propagation_tree
 
 
@@ -35,11 +33,16 @@ def test_disagrees_covers_claims_formulas_and_equations():
 
 
 def _reproduce(*args: str) -> str:
-    done = run_cli("reproduce", *args, env={"COLUMNS": "80", "PENDCLI_JOBS": "1"}, check=True)
-    return done.stdout
+    """`pendcli reproduce ARGS` at 80 columns, in this process (its computation served by
+    ``reproduce_computed_once``: what is tested is the view)."""
+    from helpers.cli import invoke
+
+    code, out, err = invoke("reproduce", *args, env={"COLUMNS": "80"}, utf8=True)
+    assert code == 0, err
+    return out
 
 
-def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary():
+def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary(reproduce_computed_once):
     from pendcli.papers.registry import PAPERS
     from pendcli.run.reproduce import reproduce_all
 
@@ -65,7 +68,7 @@ def test_reproduce_fits_80_columns_with_every_id_whole_and_a_summary():
     assert len(lines) < 260  # no notes: 3,336 lines before the compact table
 
 
-def test_only_failing_keeps_just_what_does_not_hold():
+def test_only_failing_keeps_just_what_does_not_hold(reproduce_computed_once):
     text = _reproduce("--only-failing", "--paper", "tisserand")
     assert "Tisserand: printed numbers" not in text  # all five agree
     assert "Summary: printed numbers" in text

@@ -125,7 +125,9 @@ def units_apart(out: str, wide: str) -> list[str]:
 
 
 @pytest.mark.parametrize("args", COMMANDS, ids=lambda a: " ".join(a))
-def test_render_numbers_at_80_and_120_columns(args, monkeypatch, shared_result_cache):
+def test_render_numbers_at_80_and_120_columns(
+    args, monkeypatch, shared_result_cache, reproduce_computed_once
+):
     library = _library_text(args, monkeypatch, shared_result_cache)
     wide = _render(args, 1000, monkeypatch, shared_result_cache)
     for width in (80, 120):

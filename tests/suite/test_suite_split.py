@@ -5,6 +5,7 @@ worker collects the whole suite); a family whose file was not collected is not j
 
 from __future__ import annotations
 
+import re
 from fnmatch import fnmatch
 from pathlib import Path
 
@@ -70,3 +71,16 @@ def test_ci_runs_the_slow_suite_and_make_test_leaves_it_out() -> None:
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     command = readme.split("```sh\n", 1)[1].split("```", 1)[0].splitlines()[1].split("#")[0]
     assert command.strip() == "make test" and "make test" in ci
+
+
+def test_make_test_browser_collects_every_file_with_a_browser_test() -> None:
+    """`make test-browser` collects only the files it names: a browser test elsewhere would
+    never run."""
+    make = (ROOT / "Makefile").read_text(encoding="utf-8")
+    named = set(make.split("\nBROWSER_TESTS :=", 1)[1].split("\n", 1)[0].split())
+    marked = {
+        p.relative_to(ROOT).as_posix()
+        for p in (ROOT / "tests").rglob("test_*.py")
+        if re.search(r"pytest\.mark\.browser\b", p.read_text(encoding="utf-8"))
+    }
+    assert marked and marked <= named, marked - named
