@@ -26,6 +26,7 @@ one way pendcli runs work in parallel (reproduce's steps, the report's figures).
 from __future__ import annotations
 
 import contextlib
+import gc
 import mmap
 import os
 import signal
@@ -278,6 +279,7 @@ class ForkedWorkers:
         self.slots: _Slots | None = None
         self.previous_sigterm: Any = None
         self.label: Callable[[int], str] = str
+        self.frozen = False
 
     def __enter__(self) -> ForkedWorkers:
         if self.processes > 0:
@@ -295,6 +297,10 @@ class ForkedWorkers:
         from multiprocessing.connection import Pipe
 
         parent, self.turns, self.slots = os.getpid(), _Turns(), _Slots(self.processes)
+        # What exists now is shared with the workers: frozen, the collector of neither process
+        # walks it (writing to every page of it, which the fork then copies), until _end
+        gc.freeze()
+        self.frozen = True
         for slot in range(self.processes):
             here, there = Pipe()
             try:
@@ -440,6 +446,9 @@ class ForkedWorkers:
             self.turns.close()
             self.slots.memory.close()
         self.turns = self.slots = None
+        if self.frozen:
+            gc.unfreeze()
+            self.frozen = False
 
 
 def _done(done: Callable[[T, R], None], item: T, result: R) -> R:

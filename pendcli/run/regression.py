@@ -168,7 +168,7 @@ def _derivations(update: bool, root: Path | None) -> list[str]:
     naming its reference (empty when every one agrees). Only the package's own tables have a
     store; a tables folder of one's own is derived afresh when judged."""
     from pendcli.papers.registry import PAPERS, ledger_papers, paper
-    from pendcli.verify.ledger_references import derivation_drift, store_derivations
+    from pendcli.verify.ledger_references import store_derivations
 
     if not stores_here(root or tables_dir()):
         return []
@@ -177,7 +177,28 @@ def _derivations(update: bool, root: Path | None) -> list[str]:
         for key in built_in:
             store_derivations(paper(key))
         return []
-    return [line for key in built_in for line in derivation_drift(paper(key))]
+    return _drift_lines(built_in)
+
+
+def _drift_lines(keys: list[str]) -> list[str]:
+    """:func:`derivation_drift` of each paper, shared by this process and a forked worker
+    (the ledger of most rows first, Lecornu's: 15 of the 22 s of CPU), in the order of
+    ``keys`` whoever derived what."""
+    from pendcli.base.workers import ForkedWorkers, job_count
+    from pendcli.data.ledger import load_ledger
+
+    order = sorted(keys, key=lambda key: -len(load_ledger(key).rows))
+    with ForkedWorkers(job_count(None, len(order)) - 1) as pool:
+        lines = pool.share(order, _drift, name=lambda key: f"the {key} derivations")
+    by_key = dict(zip(order, lines, strict=True))
+    return [line for key in keys for line in by_key[key]]
+
+
+def _drift(key: str) -> list[str]:
+    from pendcli.papers.registry import paper
+    from pendcli.verify.ledger_references import derivation_drift
+
+    return derivation_drift(paper(key))
 
 
 def _read_committed_tables(folder: Path) -> None:

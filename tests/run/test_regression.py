@@ -352,3 +352,40 @@ def test_check_fails_naming_the_row_whose_stored_derivation_the_code_no_longer_d
         derivation_store.write_store("tisserand", tables, rows)
     err = capsys.readouterr().err
     assert f"{row_id}: the stored derivation differs from the code's {record['reference']}" in err
+
+
+def _drift_in_turn(key: str) -> list[str]:
+    """A stand-in for one paper's derivation drift: Lecornu's waits (30 s at most) until
+    another paper's has been derived, so the two processes both derive some."""
+    import os
+    import time
+    from pathlib import Path
+
+    sign = Path(os.environ["DRIFT_SIGN"])
+    if key == "lecornu":
+        until = time.monotonic() + 30
+        while not sign.exists() and time.monotonic() < until:
+            time.sleep(0.01)
+    else:
+        sign.touch()
+    return [f"{key}|{os.getpid()}|{sign.exists()}"]
+
+
+def test_the_derivations_are_compared_in_two_processes_and_said_in_the_ledgers_order(
+    tmp_path, monkeypatch
+):
+    """`check` derives the ledgers again in this process and a forked worker (Lecornu's, the
+    costliest, beside the others); the lines come back in the ledgers' order."""
+    import os
+
+    from pendcli.run import regression
+
+    monkeypatch.setenv("PENDCLI_JOBS", "2")
+    monkeypatch.setenv("DRIFT_SIGN", str(tmp_path / "derived"))
+    monkeypatch.setattr(regression, "_drift", _drift_in_turn)
+    lines = [
+        line.split("|") for line in regression._drift_lines(["tisserand", "lecornu", "charbonnier"])
+    ]
+    assert [key for key, _, _ in lines] == ["tisserand", "lecornu", "charbonnier"]
+    assert len({pid for _, pid, _ in lines}) == 2 and str(os.getpid()) in {p for _, p, _ in lines}
+    assert all(seen == "True" for _, _, seen in lines)

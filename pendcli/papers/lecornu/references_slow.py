@@ -161,14 +161,21 @@ def reference_eq27_from_9() -> Any:
 
 
 @cache
-def _eq27_solution() -> tuple[Any, Any, Any]:
-    """(27) with u(0) = 0, u'(0) = γ to p² (line 638): u0 = sin γt and, in τ = γt (line 626),
-    u_n'' + u_n = −τ u_(n−1)'', u_n(0) = u_n'(0) = 0 (line 628)."""
-    t, gamma, p = symbols("t", "gamma", "p")
+def _eq27_parts() -> tuple[list[Any], Any]:
+    """(27)'s solution with u(0) = 0, u'(0) = γ, in τ = γt (line 626), by powers of p to p²
+    (line 638): u0 = sin τ and u_n'' + u_n = −τ u_(n−1)'', u_n(0) = u_n'(0) = 0 (line 628)."""
     tau = sp.Dummy("tau")
     parts = [sp.sin(tau)]
     for n in (1, 2):
         parts.append(zero_start_forced(-tau * parts[-1].diff(tau, 2), tau, 2 * n))
+    return parts, tau
+
+
+@cache
+def _eq27_solution() -> tuple[Any, Any, Any]:
+    """(27)'s solution to p² (:func:`_eq27_parts`) in t: u = Σ p^n u_n(γt)."""
+    t, gamma, p = symbols("t", "gamma", "p")
+    parts, tau = _eq27_parts()
     u = sum(part * p**k for k, part in enumerate(parts)).subs(tau, gamma * t)
     return u, t, p
 
@@ -184,13 +191,21 @@ def reference_eq27() -> Any:
 
 @cache
 def _epsilon_root() -> tuple[Any, Any]:
-    """The root γt = π + ε of (27)'s solution to p² (not (28) as printed): ε = e1 p + e2 p²."""
-    u, t, p = _eq27_solution()
-    (gamma,) = symbols("gamma")
+    """The root γt = π + ε of (27)'s solution to p² (not (28) as printed): ε = e1 p + e2 p².
+    Each u_n(π + ε) by its Taylor polynomial about π to p^(2 − n) (ε is of order p), which is
+    u(π + ε)'s to p², without differentiating the whole substituted sum."""
+    parts, tau = _eq27_parts()
+    (p,) = symbols("p")
     e1, e2 = sp.symbols("e1 e2")
     eps = e1 * p + e2 * p**2
-    at_root = taylor(u.subs(t, (sp.pi + eps) / gamma), p, 3)
-    first = sp.solve(sp.expand(at_root).coeff(p, 1), e1)[0]
+    at_root = sp.expand(
+        sum(
+            p**n * part.diff(tau, j).subs(tau, sp.pi) * eps**j / sp.factorial(j)
+            for n, part in enumerate(parts)
+            for j in range(3 - n)
+        )
+    )
+    first = sp.solve(at_root.coeff(p, 1), e1)[0]
     second = sp.solve(sp.expand(at_root.subs(e1, first)).coeff(p, 2), e2)[0]
     return sp.simplify(first * p + second * p**2), p
 
