@@ -129,12 +129,6 @@ SLOW_FAMILIES = {
 # parameters' id): the heavy rows of a family whose other rows are fast.
 LEDGER_STATUS = "tests/data/test_ledger.py::test_the_engine_computes_the_recorded_status"
 SLOW_CASES = {
-    # a renamed claim id through `check`: found when the claims are evaluated, after the
-    # ledgers (the costliest steps go first); the `reproduce` and `g-sensitivity` cases stay
-    ("tests/attacks/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
-     "tisserand.resal.rate-command0"): "a whole `check` before the renamed id is found (18 s)",
-    ("tests/attacks/test_faults.py::test_renamed_id_through_the_cli_is_one_line_exit_2",
-     "charbonnier.I_pi.n2-command2"): "a whole `check` before the renamed id is found (21 s)",
     # of the two edits of lines 448-460, the logarithm's coefficient costs 2.6 s alone; the
     # other, 0.8 s alone, is the family's fast case
     ("tests/papers/lecornu/test_printed_lecornu_finite_and_conical.py::"
