@@ -262,8 +262,9 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
     against the truth, the fill pattern the verdict against his own procedure."""
     bars, spans = difference_bars(rows)
     ids = [cid for _, group in GROUPS for cid in group]
-    # Symmetric-log beyond ±1: the deviations miss by up to ~40 units, the rest by under 1.
-    top = 3.0 * max(max(b[1] for b in bars), 1.0)
+    # Symmetric-log beyond ±1: the deviations miss by up to ~40 units, the rest by under 1;
+    # headroom above the tallest bar for the group names hung from the frame's top
+    top = 8.0 * max(max(b[1] for b in bars), 1.0)
     bottom = 1.6 * min(min(b[1] for b in bars), -1.0)
     seen: set[str | None] = set()
     for (bx, d, verdict, _), cid in zip(bars, ids, strict=True):
@@ -274,8 +275,11 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
             bx, d, color=_VERDICT_COLOURS.get(verdict, "C3"), hatch=_OWN_HATCHES[key][0],
             edgecolor="0.2", linewidth=0.6,
         )  # fmt: skip
-    for name, start, end in spans:
-        ax.text((start + end) / 2, top / 2, name, ha="center", va="center", fontsize=8)
+    for name, start, end in spans:  # hung from the frame's top: a two-line name stays inside
+        ax.text(
+            (start + end) / 2, 0.97, name, ha="center", va="top", fontsize=8,
+            transform=ax.get_xaxis_transform(),
+        )  # fmt: skip
     ax.axhspan(-0.5, 0.5, color="0.9", zorder=0)
     ax.set_xticks([b[0] for b in bars], [b[3] for b in bars], rotation=90, fontsize=8)
     ax.set_yscale("symlog", linthresh=1.0)
