@@ -6,6 +6,7 @@ Also the wording of an error line itself: :func:`one_line` (a newline in a path 
 
 from __future__ import annotations
 
+import gc
 import re
 from collections.abc import Iterable
 
@@ -80,6 +81,10 @@ def out_of_memory(exc: BaseException) -> str | None:
     be loaded for lack of it (an ImportError); None for any other error."""
     if isinstance(exc, MemoryError):
         detail = str(exc) or "an allocation failed"
+        # the failed work's frames (and what they held) freed before anything more is asked:
+        # the line below must not run out of the same memory
+        exc.__traceback__ = None
+        gc.collect()
     elif isinstance(exc, ImportError) and (found := _NO_MEMORY.search(str(exc))):
         detail = f"cannot load {exc.path or exc.name or 'a library'} ({found.group()})"
     else:
@@ -88,12 +93,13 @@ def out_of_memory(exc: BaseException) -> str | None:
 
 
 def _address_space_limit() -> str:
-    """The soft ``ulimit -v``, from /proc: loading the resource module may itself need the
-    memory that is missing."""
+    """The soft ``ulimit -v``, from /proc, read as bytes: loading the resource module, or the
+    codec a text file is read with (imported on first use), may itself need the memory that is
+    missing; if even this fails for lack of it, the line says no limit."""
     try:
-        with open("/proc/self/limits", encoding="ascii") as limits:
-            soft = next(ln for ln in limits if ln.startswith("Max address space")).split()[3]
-    except (OSError, StopIteration, IndexError, ValueError):
+        with open("/proc/self/limits", "rb") as limits:
+            soft = next(ln for ln in limits if ln.startswith(b"Max address space")).split()[3]
+    except (OSError, MemoryError, StopIteration, IndexError, ValueError):
         return ""
     if not soft.isdigit():  # unlimited
         return ""

@@ -251,3 +251,30 @@ def test_a_reader_of_standard_error_that_stops_early_costs_no_output():
     os.close(write)
     assert proc.returncode == 0
     assert proc.stdout.count(b"\n") >= 5 and b"17.95982" in proc.stdout
+
+
+# Out of memory with every import refused: the line must not need a module not yet loaded
+# (reading /proc/self/limits as text imported its codec, and at the limit that import failed
+# in turn, a traceback instead of the line).
+NO_IMPORT = """
+import resource, sys
+resource.setrlimit(resource.RLIMIT_AS, (2048 << 20, resource.RLIM_INFINITY))
+from pendcli.base.errors import out_of_memory
+
+class NoMemory:
+    def find_spec(self, name, path, target=None):
+        raise MemoryError(f"importing {name}")
+
+sys.meta_path.insert(0, NoMemory())
+print(out_of_memory(MemoryError()))
+"""
+
+
+def test_the_out_of_memory_line_imports_nothing_more():
+    done = subprocess.run(
+        [sys.executable, "-c", NO_IMPORT], capture_output=True, text=True, timeout=60
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == (
+        "out of memory (the address space is limited to 2048 MB: ulimit -v): an allocation failed\n"
+    )
