@@ -228,9 +228,15 @@ def shared_claims(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(registry, "claim_rows", lambda key: list(committed_claims(key)))
 
 
+def _worker() -> str:
+    """This xdist worker's name ("master" without xdist): from xdist's variable, not its
+    ``worker_id`` fixture, which a run with ``-p no:xdist`` (the 2 s rule's reruns) lacks."""
+    return os.environ.get("PYTEST_XDIST_WORKER", "master")
+
+
 @pytest.fixture
 def reproduce_computed_once(
-    monkeypatch: pytest.MonkeyPatch, tmp_path_factory: pytest.TempPathFactory, worker_id: str
+    monkeypatch: pytest.MonkeyPatch, tmp_path_factory: pytest.TempPathFactory
 ) -> None:
     """For the tests of a command's output form that run it several times (at several widths,
     in several formats): ``reproduce_all`` and ``derivation_drift`` (each paper's stored
@@ -241,43 +247,41 @@ def reproduce_computed_once(
     derivation again for each form. No test of a computation uses it."""
     from helpers.regenerated import serve_shared, shared_root
 
-    serve_shared(monkeypatch, shared_root(tmp_path_factory, worker_id))
+    serve_shared(monkeypatch, shared_root(tmp_path_factory, _worker()))
 
 
 @pytest.fixture(scope="session", autouse=True)
 def shared_computations_started(  # type: ignore[no-untyped-def]
-    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory, worker_id: str
+    request: pytest.FixtureRequest, tmp_path_factory: pytest.TempPathFactory
 ):
     """The run's shared computations its selected tests will read (tests/helpers/regenerated.py)
     started in the background at the first test, so no worker waits idle for one; waited
     for at the end. Nothing is started for a run that reads none (make test)."""
     from helpers.regenerated import shared_root, start_early, wait_started
 
-    start_early(request.session.items, shared_root(tmp_path_factory, worker_id))
+    start_early(request.session.items, shared_root(tmp_path_factory, _worker()))
     yield
     wait_started()
 
 
 @pytest.fixture(scope="session")
-def computed_tables(tmp_path_factory: pytest.TempPathFactory, worker_id: str):  # type: ignore[no-untyped-def]
+def computed_tables(tmp_path_factory: pytest.TempPathFactory):  # type: ignore[no-untyped-def]
     """The file holding every table's computation from the committed tables, done once per
     run for all workers (tests/helpers/regenerated.py): for the tests of what `check` does
     with it (write, compare), not of the computation."""
     from helpers.regenerated import computed_once, shared_root
 
-    return computed_once(shared_root(tmp_path_factory, worker_id))
+    return computed_once(shared_root(tmp_path_factory, _worker()))
 
 
 @pytest.fixture(scope="session", autouse=True)
 def _committed_rows_shared_by_the_workers(tmp_path_factory: pytest.TempPathFactory) -> None:
     """The committed tables' claims and formula checks (tests/helpers/evaluated.py) computed
-    by one worker of the run for all: Lecornu's alone cost 0.6 s and 0.6-2.5 s a computation.
-    (The worker's name from xdist's variable: the run may be without xdist, `-p no:xdist`.)"""
+    by one worker of the run for all: Lecornu's alone cost 0.6 s and 0.6-2.5 s a computation."""
     from helpers.evaluated import share_across_workers
     from helpers.regenerated import shared_root
 
-    worker = os.environ.get("PYTEST_XDIST_WORKER", "master")
-    share_across_workers(shared_root(tmp_path_factory, worker))
+    share_across_workers(shared_root(tmp_path_factory, _worker()))
 
 
 @pytest.hookimpl(tryfirst=True)  # before -m deselects by marker

@@ -79,14 +79,15 @@ def warm_up_test(test: str, tests: dict[str, tuple[float, bool]]) -> str | None:
 
 
 def rerun_seconds(test: str, warm_up: str | None, key: str) -> float:
-    """``test``'s seconds (``key``: cpu or wall) run alone in a fresh pytest process."""
+    """``test``'s seconds (``key``: cpu or wall) run alone in a fresh pytest process; a rerun
+    that does not pass (a fixture missing without xdist, say) is no measurement: infinite."""
     with tempfile.TemporaryDirectory() as folder:
         timings = Path(folder) / "timings.jsonl"
         command = [sys.executable, "-m", "pytest", "-q", "-p", "no:xdist"]
         command += ["--timings-file", str(timings), *([warm_up] if warm_up else []), test]
         env = {**os.environ, "PENDCLI_JOBS": "1"}
-        subprocess.run(command, env=env, stdout=subprocess.DEVNULL, check=False)
-        if not timings.exists():
+        done = subprocess.run(command, env=env, stdout=subprocess.DEVNULL, check=False)
+        if done.returncode != 0 or not timings.exists():
             return float("inf")
         return per_test(read(timings), key).get(test, (float("inf"), False))[0]
 

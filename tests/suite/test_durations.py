@@ -55,3 +55,25 @@ def test_a_recheck_keeps_a_heavy_test_and_clears_one_recorded_heavy_by_a_crowded
     assert "over 0.15 s and not marked slow: test_burn.py::test_heavy" in out
     assert "not marked slow: test_burn.py::test_light" not in out
     assert "rechecked test_burn.py::test_light: 3.00 s in the run, least 0.0" in out
+
+
+def test_a_recheck_that_cannot_run_the_test_clears_nothing(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A rerun whose test errors (a fixture the rerun lacks, as xdist's ``worker_id`` without
+    xdist) measures only its setup: it is no rerun, and the test stays over the limit."""
+    (tmp_path / "conftest.py").write_text(
+        f"import sys\nsys.path.insert(0, {str(TESTS)!r})\n"
+        "from helpers.timing import (  # noqa: F401\n"
+        "    pytest_addoption, pytest_runtest_call, pytest_runtest_setup, pytest_runtest_teardown\n"
+        ")\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "test_broken.py").write_text(
+        "def test_needs(a_fixture_only_xdist_gives):\n    pass\n", encoding="utf-8"
+    )
+    monkeypatch.chdir(tmp_path)
+    path = _timings(tmp_path / "t.jsonl", {"test_broken.py::test_needs": (3.0, False)})
+    assert durations.main([str(path), "--limit", "2", "--recheck", "1"]) == 1
+    out = capsys.readouterr().out
+    assert "rechecked test_broken.py::test_needs: 3.00 s in the run, least 3.00 s" in out
