@@ -239,7 +239,6 @@ def _render_formula(text: str, s: MathSegment, marks: Sequence[Placement],
 # --- the pages ------------------------------------------------------------------------------
 
 
-@cache
 @cache  # one per process: its templates compiled once, not at every page
 def _environment() -> Environment:
     from jinja2 import Environment, PackageLoader, StrictUndefined

@@ -203,7 +203,6 @@ def test_the_root_of_27_falls_on_the_references_epsilon_to_the_third_order() -> 
     assert all(3.7 < o < 4.3 for o in orders), orders
 
 
-@cache
 @cache  # the committed ledger's three studies, integrated once (0.3 s), read by five tests
 def _committed_formula_rows() -> Mapping[str, FormulaRow]:
     return MappingProxyType(_formula_rows())
