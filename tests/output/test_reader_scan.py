@@ -1,7 +1,7 @@
 """What a historian reads carries no internal name and no raw TeX.
 
 The report (Markdown and HTML), the edition of the three texts and `pendcli list` are scanned
-for module paths (core/…), reference builders' names (reference_in_…), editors' tags (a letter
+for module paths (verify/…), reference builders' names (reference_in_…), editors' tags (a letter
 and two digits), TeX groups (^{…}, _{…}), TeX commands (\\frac) and the ledger's linear
 subscripts (_(…)).
 The edition's joins of the paragraphs the OCR cut are checked against the text file itself.
@@ -26,7 +26,9 @@ PAPERS = ("tisserand", "lecornu", "charbonnier")
 
 # what may not reach a reader, by name
 INTERNAL = {
-    "module path": r"(?<![\w/])(?:core|render|numerics|pendcli)/\w+",
+    "module path": (
+        r"(?<![\w/])(?:core|render|numerics|pendcli|base|data|verify|output|run|papers|cli)/\w+"
+    ),
     "reference builder": r"\breference_\w+|\bnumbers_\w+",
     "editor's tag": r"(?<![\w.])n\d{2}(?![\w.])",
     "TeX group": r"[\^_]\{",
@@ -43,6 +45,12 @@ def internal_names(text: str) -> list[str]:
         for m in re.finditer(pattern, text):
             found.append(f"{what}: …{text[max(0, m.start() - 50) : m.end() + 30]}…")
     return found
+
+
+def test_the_scan_knows_the_package_s_module_paths() -> None:
+    for path in ("verify/printed_check", "data/ledger", "base/workers", "papers/lecornu"):
+        assert internal_names(f"judged by ({path})"), path
+    assert not internal_names("the file tables/papers/lecornu.txt")
 
 
 def visible_text(page: str) -> str:
