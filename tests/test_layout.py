@@ -46,7 +46,7 @@ def test_every_paper_has_its_own_folder() -> None:
 
 def test_the_reference_tables_name_nothing_twice() -> None:
     """Lecornu's references are gathered from its section modules (their public reference_*
-    and numbers_* functions, core/ledger_references.builders): a name two of them define would
+    and numbers_* functions, verify/ledger_references.builders): a name two of them define would
     silently take the later one's meaning (two builders named reference_elongation_condition
     once did, and (12) was judged against (23)'s condition), so it is refused; and every
     references_*.py module that defines a builder is a section."""

@@ -65,7 +65,7 @@ class ClaimRow:
     procedure: str = ""  # the procedure, as he does it ("(1 m - l)/b"); "" when none is known
     procedure_inputs: tuple[str, ...] = ()  # the claims it reads, as printed
     # its verdict on each side of each change within an assumption the paper leaves open
-    # (core/claims.with_conditions): "agrees for g <= 9.8, last-digit for g > 9.8 (...)"
+    # (verify/claims.with_conditions): "agrees for g <= 9.8, last-digit for g > 9.8 (...)"
     condition: str | None = None
 
     def as_dict(self) -> dict[str, object]:

@@ -226,7 +226,7 @@ def _relation_passes(item: Item) -> tuple[bool, str]:
     engine's tolerance, a wide one fall short of 0 by no more. An inequality false on a
     share f of its domain passes with chance (1 - f)**RELATION_POINTS (0.03 for f = 0.1).
     A point where float64 alone shows the margin positive, well above the tolerance, is not
-    computed again (core/float_verdict.certain_margins)."""
+    computed again (verify/float_verdict.certain_margins)."""
     import sympy as sp
 
     from pendcli.verify.float_verdict import certain_margins

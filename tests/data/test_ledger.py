@@ -77,7 +77,7 @@ def test_the_engine_computes_the_recorded_status(row_id: str) -> None:
     symbols = committed_ledger(row.paper).symbols_for(row)
     computed = row_printed_status(row, symbols, reference_table(paper(row.paper)))
     assert printed_problem(row, computed) is None, f"{row.id}: {computed}"
-    if row.kind == "digits":  # judged by its printed digits (pendcli/core/printed_numeric.py)
+    if row.kind == "digits":  # judged by its printed digits (pendcli/verify/printed_numeric.py)
         assert computed[1].startswith("the printed numbers"), f"{row.id}: {computed}"
 
 

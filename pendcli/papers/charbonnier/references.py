@@ -26,5 +26,5 @@ from pendcli.papers.charbonnier import references_points as points
 from pendcli.papers.charbonnier import references_resisting as resisting
 from pendcli.verify.ledger_references import builders
 
-# Every builder the ledger cites, by its name there (core/ledger_references.builders).
+# Every builder the ledger cites, by its name there (verify/ledger_references.builders).
 REFERENCES = builders(general, points, resisting, monomial)

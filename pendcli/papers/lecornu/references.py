@@ -31,5 +31,5 @@ SECTIONS = tuple(
     for name in (*_NAMES.split(), "conical_planes", "prose")
 )
 
-# every builder the sections define, by its name (core/ledger_references.builders)
+# every builder the sections define, by its name (verify/ledger_references.builders)
 REFERENCES = builders(*SECTIONS)

@@ -81,5 +81,5 @@ def reference_second_approximation() -> Reference:
 
 # --- the table the ledger's rows cite, in the order of the paper -------------------------
 
-# Every builder the ledger cites, by its name there (core/ledger_references.builders).
+# Every builder the ledger cites, by its name there (verify/ledger_references.builders).
 REFERENCES = builders(sys.modules[__name__], differentials, series, prose, numeric)
