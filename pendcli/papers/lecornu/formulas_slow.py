@@ -81,6 +81,15 @@ def _function(expr: Any, *names: str, modules: str = "mpmath") -> Any:
     return sp.lambdify([symbols.get(n, sp.Symbol(n)) for n in names], expr, modules)
 
 
+def _solved_for(expr: Any, symbol: Any) -> Any:
+    """The root of ``expr`` = 0 in ``symbol``: sympy's solve_linear where ``expr`` is linear
+    in it ((23) is: a thousandth of solve's cost), else solve's first root."""
+    import sympy as sp
+
+    found, root = sp.solve_linear(expr, symbols=[symbol])
+    return root if found == symbol else sp.solve(expr, symbol)[0]
+
+
 def _source(row: LedgerRow) -> str:
     assert row.lines is not None
     return row.equation or f"lines {row.lines[0]}-{row.lines[1]}"
@@ -91,13 +100,12 @@ def _quarter_residuals(ledger: Ledger | None) -> list[float]:
     """(l'' − l)/b minus the printed right side of line 555, per q, g = l = 1 (times in units
     of √(l/g)): l'' the root of (24) (λ = 0) with φ from (23) at the vertical at l."""
     import mpmath
-    import sympy as sp
 
     _, ((left23, right23), *_) = _printed(ledger, "lecornu.eq.23")
     _, ((left24, right24),) = _printed(ledger, "lecornu.eq.24")
     _, ((left, right),) = _printed(ledger, "lecornu.result.quarter_time")
     phi = next(s for s in left23.free_symbols if s.name == "phi")
-    phase = _function(sp.solve(left23 - right23, phi)[0], "b", "g", "l", "lam")
+    phase = _function(_solved_for(left23 - right23, phi), "b", "g", "l", "lam")
     at_elongation = _function(left24 - right24, "b", "g", "l", "lam", "phi")
     printed = _function(left - right, "b", "g", "l", "lpp")
     out = []
