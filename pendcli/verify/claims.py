@@ -329,13 +329,17 @@ def _sides(
 ) -> list[tuple[float, str, Verdict]]:
     """Each change of the claim's verdict: (the bound, as printed to 4 decimals, its side
     "<=" when the bound itself keeps the verdict below, else "<", the verdict below), then
-    (inf, "", the last verdict)."""
+    (inf, "", the last verdict). The bisection stops once both ends of its bracket round to
+    the same 4 decimals (rounding is monotone, so the bound printed is then decided: the
+    full _BISECTIONS halvings would end inside that bracket)."""
     sides = []
     for k in range(len(grid) - 1):
         if verdicts[k] == verdicts[k + 1]:
             continue
         a, b = grid[k], grid[k + 1]
         for _ in range(_BISECTIONS):
+            if round(a, 4) == round(b, 4):
+                break  # the bound printed is decided: every point of [a, b] rounds to it
             middle = (a + b) / 2
             a, b = (middle, b) if at(middle)[claim_id] == verdicts[k] else (a, middle)
         bound = round((a + b) / 2, 4)

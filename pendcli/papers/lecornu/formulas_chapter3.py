@@ -92,7 +92,9 @@ def _ledger_row_in(row_id: str, tables: str) -> tuple[Any, dict[str, str]]:
     return row, ledger.symbols_for(row)
 
 
-def _ledger_row(row_id: str) -> tuple[Any, dict[str, str]]:
+def ledger_row(row_id: str) -> tuple[Any, dict[str, str]]:
+    """Ledger row ``lecornu.<row_id>`` of the tables in use, its formulas parsed alone (the
+    whole ledger is not), and the symbols of its place in the text."""
     from pendcli.data.tables import tables_dir
 
     return _ledger_row_in(row_id, str(tables_dir()))
@@ -101,7 +103,7 @@ def _ledger_row(row_id: str) -> tuple[Any, dict[str, str]]:
 def ledger_text(row_id: str, field: str = "printed") -> str:
     """Ledger row ``lecornu.<row_id>``'s formula ``field`` (``printed``,
     ``reading_formula`` or ``corrected_formula``) as the ledger transcribes it."""
-    row, _ = _ledger_row(row_id)
+    row, _ = ledger_row(row_id)
     text = getattr(row, field)
     if text is None:
         raise ValueError(f"{row.id} has no {field}")
@@ -113,7 +115,7 @@ def ledger_sides(row_id: str, field: str = "printed") -> tuple[tuple[Any, Any], 
     in the text: what a check of a printed formula evaluates, never a copy of it."""
     from pendcli.data.printed import parse_formula
 
-    row, symbols = _ledger_row(row_id)
+    row, symbols = ledger_row(row_id)
     return parse_formula(row.id, ledger_text(row_id, field), symbols).equations
 
 

@@ -18,6 +18,7 @@ The reduced variables (u = γt, p = b/√(ga)), the sweep in p and the row helpe
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from functools import cache
 from typing import Any
 
 import numpy as np
@@ -166,7 +167,17 @@ def _inverse_square_row(ref: Integrator) -> FormulaRow:
 
 def _plane_solutions(ref: Integrator) -> tuple[list[Callable[..., Any]], list[Solution]]:
     """(52) as read, θ1/ρ1 and θ2/ρ2 as functions (u, p), and (3) linearised from their
-    values and slopes at u = 0, per p: the trace of the conical pendulum."""
+    values and slopes at u = 0, per p: the trace of the conical pendulum (derived once per
+    tables folder, for the three rows that read it)."""
+    from pendcli.data.tables import tables_dir
+
+    return _plane_solutions_in(ref, str(tables_dir()))
+
+
+@cache
+def _plane_solutions_in(
+    ref: Integrator, tables: str
+) -> tuple[list[Callable[..., Any]], list[Solution]]:
     printed, solved = [], []
     for _, component in ledger_sides("eq.52", "reading_formula")[:2]:
         value, solution = through_printed_state(component, ("u", "p"), (), 2 * PI + 1.5, ref)

@@ -21,6 +21,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from pendcli.numerics.cylinder_zeros import cylinder, cylinder_zero
+from pendcli.papers.lecornu.formulas_chapter3 import ledger_row
 from pendcli.verify.claims import FormulaRow
 from pendcli.verify.formula_engine import (
     DEFAULT_INTEGRATOR,
@@ -57,13 +59,18 @@ SLOW_PANELS = {
 }
 
 
-def _printed(ledger: Ledger, row_id: str) -> tuple[LedgerRow, tuple[tuple[Any, Any], ...]]:
-    """A ledger row and the equations (lhs, rhs) of its printed form, as sympy parses them."""
+def _printed(ledger: Ledger | None, row_id: str) -> tuple[LedgerRow, tuple[tuple[Any, Any], ...]]:
+    """A ledger row and the equations (lhs, rhs) of its printed form, as sympy parses them;
+    ``ledger`` None: the row of the tables in use, parsed alone (not the whole ledger)."""
     from pendcli.data.printed import parse_formula
 
-    row = next(r for r in ledger.rows if r.id == row_id)
+    if ledger is None:
+        row, symbols = ledger_row(row_id.removeprefix(f"{PAPER}."))
+    else:
+        row = next(r for r in ledger.rows if r.id == row_id)
+        symbols = ledger.symbols_for(row)
     assert row.printed is not None, row_id
-    return row, parse_formula(row.id, row.printed, ledger.symbols_for(row)).equations
+    return row, parse_formula(row.id, row.printed, symbols).equations
 
 
 def _function(expr: Any, *names: str, modules: str = "mpmath") -> Any:
@@ -74,23 +81,31 @@ def _function(expr: Any, *names: str, modules: str = "mpmath") -> Any:
     return sp.lambdify([symbols.get(n, sp.Symbol(n)) for n in names], expr, modules)
 
 
+def _solved_for(expr: Any, symbol: Any) -> Any:
+    """The root of ``expr`` = 0 in ``symbol``: sympy's solve_linear where ``expr`` is linear
+    in it ((23) is: a thousandth of solve's cost), else solve's first root."""
+    import sympy as sp
+
+    found, root = sp.solve_linear(expr, symbols=[symbol])
+    return root if found == symbol else sp.solve(expr, symbol)[0]
+
+
 def _source(row: LedgerRow) -> str:
     assert row.lines is not None
     return row.equation or f"lines {row.lines[0]}-{row.lines[1]}"
 
 
 # --- lines 549-555: from a vertical passage to the next elongation --------------------------
-def _quarter_residuals(ledger: Ledger) -> list[float]:
+def _quarter_residuals(ledger: Ledger | None) -> list[float]:
     """(l'' − l)/b minus the printed right side of line 555, per q, g = l = 1 (times in units
     of √(l/g)): l'' the root of (24) (λ = 0) with φ from (23) at the vertical at l."""
     import mpmath
-    import sympy as sp
 
     _, ((left23, right23), *_) = _printed(ledger, "lecornu.eq.23")
     _, ((left24, right24),) = _printed(ledger, "lecornu.eq.24")
     _, ((left, right),) = _printed(ledger, "lecornu.result.quarter_time")
     phi = next(s for s in left23.free_symbols if s.name == "phi")
-    phase = _function(sp.solve(left23 - right23, phi)[0], "b", "g", "l", "lam")
+    phase = _function(_solved_for(left23 - right23, phi), "b", "g", "l", "lam")
     at_elongation = _function(left24 - right24, "b", "g", "l", "lam", "phi")
     printed = _function(left - right, "b", "g", "l", "lpp")
     out = []
@@ -104,7 +119,7 @@ def _quarter_residuals(ledger: Ledger) -> list[float]:
     return out
 
 
-def _quarter_row(ledger: Ledger) -> FormulaRow:
+def _quarter_row(ledger: Ledger | None) -> FormulaRow:
     row, _ = _printed(ledger, "lecornu.result.quarter_time")
     return make_row(
         id=f"{PAPER}.quarter_time",
@@ -128,23 +143,17 @@ def _amplitude_residuals(factor: Any) -> tuple[list[float], list[float]]:
     qs, residuals = [], []
     with mpmath.workdps(DIGITS):
         delta = mpmath.mpf(str(PHASE))
-
-        def cylinder(nu: int, z: Any) -> Any:
-            return mpmath.cos(delta) * mpmath.besselj(nu, z) + mpmath.sin(delta) * mpmath.bessely(
-                nu, z
-            )
-
         for n in ELONGATIONS:
-            guess = (n + 1.25) * mpmath.pi - delta  # McMahon: C₂(z) ~ cos(z − 5π/4 + δ)
-            z = mpmath.findroot(lambda w: cylinder(2, w), guess)
+            guess = (n + 1.25) * math.pi - PHASE  # McMahon: C₂(z) ~ cos(z − 5π/4 + δ)
+            z = cylinder_zero(2, delta, guess)
             # θl^(3/4)/R = |C₁(z)|√(πz/2), which tends to 1 as l → ∞ ((22) normalised)
-            amplitude = abs(cylinder(1, z)) * mpmath.sqrt(mpmath.pi * z / 2)
+            amplitude = abs(cylinder(1, delta, z)) * mpmath.sqrt(mpmath.pi * z / 2)
             qs.append(float(2 / z))  # x = gl/b² = z²/4
             residuals.append(float(amplitude - factor(2 / z)))
     return qs, residuals
 
 
-def _amplitude_row(ledger: Ledger) -> FormulaRow:
+def _amplitude_row(ledger: Ledger | None) -> FormulaRow:
     row, ((_, factor), *_) = _printed(ledger, "lecornu.result.amplitude_factor")
     at_unit = _function(factor, "b", "R", "g", "l")
     qs, residuals = _amplitude_residuals(lambda q: at_unit(q, 1, 1, 1))
@@ -172,12 +181,10 @@ def eq25_residuals(psi: float, ref: Integrator = DEFAULT_INTEGRATOR) -> list[flo
     """Max over 0 ≤ γt ≤ 2π of |θ − (25)| per p of P_SWEEP (ρ = γ = 1, phase ψ), θ of (3)
     linearised in the reduced variables, (1 + pτ)θ'' + 2pθ' + θ = 0, started from (25)'s
     value and slope at τ = 0; (25) is the ledger's printed form."""
-    from pendcli.data.ledger import load_ledger
-
-    return _eq25_residuals(load_ledger(PAPER), psi, ref)
+    return _eq25_residuals(None, psi, ref)
 
 
-def _eq25_residuals(ledger: Ledger, psi: float, ref: Integrator) -> list[float]:
+def _eq25_residuals(ledger: Ledger | None, psi: float, ref: Integrator) -> list[float]:
     import sympy as sp
 
     _, ((_, right),) = _printed(ledger, "lecornu.eq.25")
@@ -200,7 +207,7 @@ def _eq25_residuals(ledger: Ledger, psi: float, ref: Integrator) -> list[float]:
     return [float(np.max(np.abs(solved[j] - printed(grid, v)))) for j, v in enumerate(ps)]
 
 
-def _eq25_row(ledger: Ledger, ref: Integrator) -> FormulaRow:
+def _eq25_row(ledger: Ledger | None, ref: Integrator) -> FormulaRow:
     row, _ = _printed(ledger, "lecornu.eq.25")
     return make_row(
         id=f"{PAPER}.eq25",
@@ -219,8 +226,5 @@ def slow_rows(
     ref: Integrator = DEFAULT_INTEGRATOR, ledger: Ledger | None = None
 ) -> list[FormulaRow]:
     """The quarter oscillation (line 555), the amplitude factor (line 573) and (25), their
-    printed forms read from ``ledger`` (by default the committed one)."""
-    from pendcli.data.ledger import load_ledger
-
-    ledger = ledger if ledger is not None else load_ledger(PAPER)
+    printed forms read from ``ledger`` (by default the tables in use, each row parsed alone)."""
     return [_quarter_row(ledger), _amplitude_row(ledger), _eq25_row(ledger, ref)]
