@@ -290,7 +290,7 @@ def _outside_lines(page: str, equations: list[dict[str, object]]) -> list[str]:
     return bad
 
 
-@cache  # three tests read the same page and marks of a paper (0.4-0.6 s for Lecornu's)
+@cache  # four tests read the same page and marks of a paper (0.4-0.6 s for Lecornu's)
 def _page_and_marks(paper: str) -> tuple[str, str, tuple[Placement, ...]]:
     """A paper's text, its page of the edition's rows, and the marks placed in its text."""
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
@@ -357,13 +357,17 @@ def _subscripts_as_tex(html: str) -> str:
 
 
 def _wrong_term_faults(text: str, claims: list[dict[str, object]],
-                      equations: list[dict[str, object]]) -> list[str]:  # fmt: skip
+                      equations: list[dict[str, object]],
+                      drawn: tuple[str, tuple[Placement, ...]] | None = None) -> list[str]:  # fmt: skip
     """The misprint/fails rows whose wrong terms are not recorded, not each marked as printed
     within their lines (lines counted here), not drawn in the page, or whose reading or
-    correction is not the note beside the first, once in the edition."""
+    correction is not the note beside the first, once in the edition. ``drawn``: the page
+    and marks of these rows when already made (the committed rows': _page_and_marks)."""
     wrong = [r for r in equations if str(r["status"]) in ("misprint", "fails")]
-    marks = {m.key: m for m in place_marks(text, claims, equations)[0]}
-    page = paper_page("p", "", text, claims, (), equations)
+    if drawn is None:
+        drawn = (paper_page("p", "", text, claims, (), equations),
+                 tuple(place_marks(text, claims, equations)[0]))  # fmt: skip
+    page, marks = drawn[0], {m.key: m for m in drawn[1]}
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
     notes = {
         k: _subscripts_as_tex(b)
@@ -406,10 +410,10 @@ def _term_fault(text: str, row: dict[str, object], i: int, term: str,
 def test_every_misprint_or_failure_is_marked_at_its_wrong_term_with_its_note_once(
     paper: str,
 ) -> None:
-    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    text, page, placed = _page_and_marks(paper)
     claims, equations = edition_rows(paper)
     assert len([r for r in equations if str(r["status"]) in ("misprint", "fails")]) >= 3
-    assert _wrong_term_faults(text, claims, equations) == []
+    assert _wrong_term_faults(text, claims, equations, (page, placed)) == []
 
 
 def test_the_wrong_term_check_sees_a_term_missing_or_not_printed_in_its_lines() -> None:
