@@ -356,9 +356,12 @@ def _subscripts_as_tex(html: str) -> str:
     return re.sub(r"_\{([^{}]*)\}", r"_\1", plain).replace("\u2212", "-")
 
 
+Drawn = tuple[str, tuple[Placement, ...]]  # a page and the marks placed in its text
+
+
 def _wrong_term_faults(text: str, claims: list[dict[str, object]],
                       equations: list[dict[str, object]],
-                      drawn: tuple[str, tuple[Placement, ...]] | None = None) -> list[str]:  # fmt: skip
+                      drawn: Drawn | None = None) -> list[str]:  # fmt: skip
     """The misprint/fails rows whose wrong terms are not recorded, not each marked as printed
     within their lines (lines counted here), not drawn in the page, or whose reading or
     correction is not the note beside the first, once in the edition. ``drawn``: the page
@@ -420,11 +423,10 @@ def test_the_wrong_term_check_sees_a_term_missing_or_not_printed_in_its_lines() 
     """Broken on purpose: (13)'s wrong term dropped, or one the OCR does not print in its
     lines, is caught."""
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    claims, equations = edition_rows("tisserand")
+    row = next(r for r in edition_rows("tisserand")[1] if r["id"] == "tisserand.eq.13")
     for term in (None, "\\sin^3 4k' t"):
-        broken = [{**r, "wrong_term": term} if r["id"] == "tisserand.eq.13" else r
-                  for r in equations]  # fmt: skip
-        faults = _wrong_term_faults(text, claims, broken)
+        # the row alone on the page: the other rows' marks are checked on the committed page
+        faults = _wrong_term_faults(text, [], [{**row, "wrong_term": term}])
         assert {b.split(":")[0].split("~")[0] for b in faults} == {"tisserand.eq.13"}
 
 
@@ -432,13 +434,12 @@ def test_the_wrong_term_check_sees_a_second_term_that_is_not_printed() -> None:
     """Broken on purpose: delta_rhs's second wrong term (the 3/8 of u cos 3u) changed to one
     the text does not print is caught, as that term alone."""
     text = (tables_dir() / "papers" / "lecornu.txt").read_text("utf-8")
-    claims, equations = edition_rows("lecornu")
-    row = next(r for r in equations if r["id"] == "lecornu.result.delta_rhs")
+    row = next(r for r in edition_rows("lecornu")[1] if r["id"] == "lecornu.result.delta_rhs")
     first, second = row["wrong_term"]  # type: ignore[misc]
     assert second == "+ \\frac{3}{8} u \\cos 3u"
-    broken = [{**r, "wrong_term": (first, "+ \\frac{7}{8} u \\cos 3u")} if r is row else r
-              for r in equations]  # fmt: skip
-    faults = _wrong_term_faults(text, claims, broken)
+    # the row alone on the page: the other rows' marks are checked on the committed page
+    broken = [{**row, "wrong_term": (first, "+ \\frac{7}{8} u \\cos 3u")}]
+    faults = _wrong_term_faults(text, [], broken)
     assert [b.split(":")[0] for b in faults] == ["lecornu.result.delta_rhs~term1"]
 
 
