@@ -15,7 +15,7 @@ from helpers.ledgers import committed_ledger, committed_row, row_ids
 
 from pendcli.base.errors import PendcliError
 from pendcli.data.ledger import CHECKED_STATUSES, OUTPUT_KEYS, labels_in_text, parse_ledger
-from pendcli.data.ledger_rows import Ledger
+from pendcli.data.ledger_rows import Ledger, LedgerRow
 from pendcli.data.rows import equation_notes
 from pendcli.papers.registry import equation_rows, ledger_papers, paper
 from pendcli.verify.ledger_evaluation import coverage, evaluate
@@ -88,17 +88,25 @@ def test_the_engine_computes_the_recorded_status(row_id: str) -> None:
 DEFINING = ("defines", "imposes", "repeats")
 
 
-@pytest.mark.parametrize("row_id", _rows())
-def test_the_definition_rule(row_id: str) -> None:
-    row = committed_row(row_id)
+def _definition_fault(row: LedgerRow) -> str | None:
+    """How the row breaks the definition rule (None: it keeps it)."""
     if row.status != "definition":
-        assert row.status == "not-checkable" or row.kind, f"{row.id}: {row.status} without a kind"
-        return
+        kept = row.status == "not-checkable" or row.kind
+        return None if kept else f"{row.id}: {row.status} without a kind"
     first = row.note.split()[0] if row.note else ""
-    assert first in DEFINING, f"{row.id}: a definition's note starts with one of {DEFINING}"
-    assert (first == "repeats") == (row.restates is not None), (
-        f"{row.id}: a repeated formula names the row it restates, and only then"
-    )
+    if first not in DEFINING:
+        return f"{row.id}: a definition's note starts with one of {DEFINING}"
+    if (first == "repeats") != (row.restates is not None):
+        return f"{row.id}: a repeated formula names the row it restates, and only then"
+    return None
+
+
+# One case per ledger, naming every row that breaks the rule: one case per row (378) cost
+# about 1 ms of pytest (2 ms under xdist) apiece, twenty times the check.
+@pytest.mark.parametrize("paper", _papers())
+def test_the_definition_rule(paper: str) -> None:
+    faults = [_definition_fault(row) for row in committed_ledger(paper).rows]
+    assert [f for f in faults if f] == []
 
 
 def test_required_ledgers_are_present() -> None:

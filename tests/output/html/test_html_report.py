@@ -290,7 +290,7 @@ def _outside_lines(page: str, equations: list[dict[str, object]]) -> list[str]:
     return bad
 
 
-@cache  # three tests read the same page and marks of a paper (0.4-0.6 s for Lecornu's)
+@cache  # four tests read the same page and marks of a paper (0.4-0.6 s for Lecornu's)
 def _page_and_marks(paper: str) -> tuple[str, str, tuple[Placement, ...]]:
     """A paper's text, its page of the edition's rows, and the marks placed in its text."""
     text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
@@ -356,14 +356,21 @@ def _subscripts_as_tex(html: str) -> str:
     return re.sub(r"_\{([^{}]*)\}", r"_\1", plain).replace("\u2212", "-")
 
 
+Drawn = tuple[str, tuple[Placement, ...]]  # a page and the marks placed in its text
+
+
 def _wrong_term_faults(text: str, claims: list[dict[str, object]],
-                      equations: list[dict[str, object]]) -> list[str]:  # fmt: skip
+                      equations: list[dict[str, object]],
+                      drawn: Drawn | None = None) -> list[str]:  # fmt: skip
     """The misprint/fails rows whose wrong terms are not recorded, not each marked as printed
     within their lines (lines counted here), not drawn in the page, or whose reading or
-    correction is not the note beside the first, once in the edition."""
+    correction is not the note beside the first, once in the edition. ``drawn``: the page
+    and marks of these rows when already made (the committed rows': _page_and_marks)."""
     wrong = [r for r in equations if str(r["status"]) in ("misprint", "fails")]
-    marks = {m.key: m for m in place_marks(text, claims, equations)[0]}
-    page = paper_page("p", "", text, claims, (), equations)
+    if drawn is None:
+        drawn = (paper_page("p", "", text, claims, (), equations),
+                 tuple(place_marks(text, claims, equations)[0]))  # fmt: skip
+    page, marks = drawn[0], {m.key: m for m in drawn[1]}
     edition = page[page.index('<div class="edition">') : page.index("<h2>Printed numbers")]
     notes = {
         k: _subscripts_as_tex(b)
@@ -406,21 +413,20 @@ def _term_fault(text: str, row: dict[str, object], i: int, term: str,
 def test_every_misprint_or_failure_is_marked_at_its_wrong_term_with_its_note_once(
     paper: str,
 ) -> None:
-    text = (tables_dir() / "papers" / f"{paper}.txt").read_text("utf-8")
+    text, page, placed = _page_and_marks(paper)
     claims, equations = edition_rows(paper)
     assert len([r for r in equations if str(r["status"]) in ("misprint", "fails")]) >= 3
-    assert _wrong_term_faults(text, claims, equations) == []
+    assert _wrong_term_faults(text, claims, equations, (page, placed)) == []
 
 
 def test_the_wrong_term_check_sees_a_term_missing_or_not_printed_in_its_lines() -> None:
     """Broken on purpose: (13)'s wrong term dropped, or one the OCR does not print in its
     lines, is caught."""
     text = (tables_dir() / "papers" / "tisserand.txt").read_text("utf-8")
-    claims, equations = edition_rows("tisserand")
+    row = next(r for r in edition_rows("tisserand")[1] if r["id"] == "tisserand.eq.13")
     for term in (None, "\\sin^3 4k' t"):
-        broken = [{**r, "wrong_term": term} if r["id"] == "tisserand.eq.13" else r
-                  for r in equations]  # fmt: skip
-        faults = _wrong_term_faults(text, claims, broken)
+        # the row alone on the page: the other rows' marks are checked on the committed page
+        faults = _wrong_term_faults(text, [], [{**row, "wrong_term": term}])
         assert {b.split(":")[0].split("~")[0] for b in faults} == {"tisserand.eq.13"}
 
 
@@ -428,13 +434,12 @@ def test_the_wrong_term_check_sees_a_second_term_that_is_not_printed() -> None:
     """Broken on purpose: delta_rhs's second wrong term (the 3/8 of u cos 3u) changed to one
     the text does not print is caught, as that term alone."""
     text = (tables_dir() / "papers" / "lecornu.txt").read_text("utf-8")
-    claims, equations = edition_rows("lecornu")
-    row = next(r for r in equations if r["id"] == "lecornu.result.delta_rhs")
+    row = next(r for r in edition_rows("lecornu")[1] if r["id"] == "lecornu.result.delta_rhs")
     first, second = row["wrong_term"]  # type: ignore[misc]
     assert second == "+ \\frac{3}{8} u \\cos 3u"
-    broken = [{**r, "wrong_term": (first, "+ \\frac{7}{8} u \\cos 3u")} if r is row else r
-              for r in equations]  # fmt: skip
-    faults = _wrong_term_faults(text, claims, broken)
+    # the row alone on the page: the other rows' marks are checked on the committed page
+    broken = [{**row, "wrong_term": (first, "+ \\frac{7}{8} u \\cos 3u")}]
+    faults = _wrong_term_faults(text, [], broken)
     assert [b.split(":")[0] for b in faults] == ["lecornu.result.delta_rhs~term1"]
 
 
