@@ -524,11 +524,12 @@ def test_figures_written(tmp_path, monkeypatch):
     second computation of them) and draw them."""
     from pendcli.verify import claims as claims_engine
 
+    judged = list(committed_claims("lecornu"))  # before the patch: they are computed by it
     asked = []
 
     def evaluated(key, recompute, procedures):
         asked.append((key, recompute, sorted(procedures)))
-        return list(committed_claims("lecornu"))
+        return judged
 
     monkeypatch.setattr(claims_engine, "evaluate_paper", evaluated)
     paths = figures.figures(tmp_path)
@@ -545,13 +546,15 @@ def test_figures_written(tmp_path, monkeypatch):
     assert _share_of(bars, "C3") > 1e-3  # discrepant bars (red)
 
 
-def test_figures_draw_the_claim_rows_given(tmp_path):
+def test_figures_draw_the_claim_rows_given(tmp_path, monkeypatch):
     """The report hands its judged rows to the figures, which draw them as given (not judged
-    again): every row made to agree, no bar is red."""
+    again): every row made to agree, no bar is red. (The example's curves, read by
+    test_figures_written, are left undrawn here.)"""
     from dataclasses import replace
 
     from pendcli.data.vocabulary import Verdict
 
+    monkeypatch.setattr(figures, "draw_example_claims", lambda *_: None)
     rows = [replace(r, verdict=Verdict.AGREES) for r in committed_claims("lecornu")]
     _theta, bars = (_png_pixels(p) for p in figures.figures(tmp_path, rows))
     assert _share_of(bars, "C2") > 1e-2  # every bar green
