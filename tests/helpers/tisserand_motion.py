@@ -57,8 +57,22 @@ def _mp_integrands(theta0: float, theta1: float):
     return kdt, dphi_prime
 
 
+def _remembered(function):
+    """``function`` of one mpf, each value kept: the quadratures over [0, π] of one degree
+    evaluate their integrands at the same nodes (every harmonic's, b_n's and c_n's)."""
+    values: dict = {}
+
+    def at(x):
+        if x not in values:
+            values[x] = function(x)
+        return values[x]
+
+    return at
+
+
 def _mp_mean_anomaly(kdt, dps: int):
     """τ = k't as a function of ψ: the Fourier series of ∫ k dt/dψ, divided by its mean."""
+    kdt = _remembered(kdt)
     pi = mpmath.pi
     a0 = mpmath.quad(kdt, [0, pi]) / pi
     coeffs = []
@@ -67,8 +81,10 @@ def _mp_mean_anomaly(kdt, dps: int):
         coeffs.append(am / (2 * m * a0))
         if abs(am) < mpmath.mpf(10) ** (-dps + 2):
             break
-    return lambda psi: (
-        psi + mpmath.fsum(a * mpmath.sin(2 * (j + 1) * psi) for j, a in enumerate(coeffs))
+    return _remembered(
+        lambda psi: (
+            psi + mpmath.fsum(a * mpmath.sin(2 * (j + 1) * psi) for j, a in enumerate(coeffs))
+        )
     )
 
 

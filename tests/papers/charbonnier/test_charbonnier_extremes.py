@@ -9,6 +9,7 @@ out here and from direct ODE integration.
 from __future__ import annotations
 
 import math
+from functools import cache
 
 import mpmath
 import pytest
@@ -20,6 +21,10 @@ from pendcli.papers.charbonnier import resistance as cr
 pytestmark = pytest.mark.extremes
 
 
+# The references are pure functions of (n, x), kept once computed (an mpf is immutable): the
+# grid's values serve both its own test and the bounds over it (test_integral_fast_bounded_on_grid
+# and the recurrence's error bound read 40 of the same points again).
+@cache
 def ref_pi(n: int):
     with mpmath.workdps(50):
         return (
@@ -42,6 +47,7 @@ def series_0_half(n: int, x):
     return s ** (n + 2) * c / (n + 2) * total
 
 
+@cache
 def ref_x(n: int, x: float):
     """I_n(x) for any real x: reduction mod π and the sign rules done in mpmath."""
     with mpmath.workdps(60):

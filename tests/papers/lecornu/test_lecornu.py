@@ -518,8 +518,22 @@ def _share_of(pixels: np.ndarray, colour: str, tol: float = 0.08) -> float:
     return float(np.mean(np.all(np.abs(pixels[..., :3] - rgb) < tol, axis=-1)))
 
 
-def test_figures_written(tmp_path):
+def test_figures_written(tmp_path, monkeypatch):
+    """Without rows given, the figures judge Lecornu's claims themselves (evaluate_paper with
+    his recomputation and procedures: the rows it returns are the shared committed ones, not a
+    second computation of them) and draw them."""
+    from pendcli.verify import claims as claims_engine
+
+    judged = list(committed_claims("lecornu"))  # before the patch: they are computed by it
+    asked = []
+
+    def evaluated(key, recompute, procedures):
+        asked.append((key, recompute, sorted(procedures)))
+        return judged
+
+    monkeypatch.setattr(claims_engine, "evaluate_paper", evaluated)
     paths = figures.figures(tmp_path)
+    assert asked == [("lecornu", claims.recompute, sorted(claims.author_procedures()))]
     assert [p.name for p in paths] == [
         "lecornu_example_theta.png",
         "lecornu_printed_minus_recomputed.png",
@@ -532,15 +546,16 @@ def test_figures_written(tmp_path):
     assert _share_of(bars, "C3") > 1e-3  # discrepant bars (red)
 
 
-def test_figures_draw_the_claim_rows_given(tmp_path):
+def test_figures_draw_the_claim_rows_given(tmp_path, monkeypatch):
     """The report hands its judged rows to the figures, which draw them as given (not judged
-    again): every row made to agree, no bar is red."""
+    again): every row made to agree, no bar is red. (The example's curves, read by
+    test_figures_written, are left undrawn here.)"""
     from dataclasses import replace
 
     from pendcli.data.vocabulary import Verdict
-    from pendcli.papers.registry import claim_rows
 
-    rows = [replace(r, verdict=Verdict.AGREES) for r in claim_rows("lecornu")]
+    monkeypatch.setattr(figures, "draw_example_claims", lambda *_: None)
+    rows = [replace(r, verdict=Verdict.AGREES) for r in committed_claims("lecornu")]
     _theta, bars = (_png_pixels(p) for p in figures.figures(tmp_path, rows))
     assert _share_of(bars, "C2") > 1e-2  # every bar green
     assert _share_of(bars, "C3") < 1e-3  # only the legend's patch red (the judged rows: 0.027)

@@ -68,6 +68,7 @@ def _from_newton(k: float, theta0: float, theta1: float, h: float) -> tuple[floa
         return y[1]
 
     at_the_bottom.direction = 1  # type: ignore[attr-defined]  # θ' from − to +: the least θ
+    at_the_bottom.terminal = True  # type: ignore[attr-defined]  # the first is all it reads
     start = [theta0, 0.0, h / math.sin(theta0) ** 2]
     run = solve_ivp(rhs, (0, 100 / k), start, events=at_the_bottom, rtol=1e-12, atol=1e-14,
                     dense_output=True)  # fmt: skip
