@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import math
 import shutil
+from dataclasses import replace
 from fractions import Fraction
 from pathlib import Path
 
@@ -23,6 +24,7 @@ from helpers.cli import invoke
 from helpers.evaluated import committed_claims
 
 from pendcli.data.tables import load_paper_table, tables_dir
+from pendcli.data.vocabulary import Verdict
 from pendcli.papers.lecornu import claims, explore, figures, model
 from pendcli.verify.verdict import judge
 
@@ -547,13 +549,8 @@ def test_figures_written(tmp_path, monkeypatch):
 
 
 def test_figures_draw_the_claim_rows_given(tmp_path, monkeypatch):
-    """The report hands its judged rows to the figures, which draw them as given (not judged
-    again): every row made to agree, no bar is red. (The example's curves, read by
-    test_figures_written, are left undrawn here.)"""
-    from dataclasses import replace
-
-    from pendcli.data.vocabulary import Verdict
-
+    """The report's judged rows are drawn as given (not judged again): every row made to
+    agree, no bar is red. (The example's curves, read by test_figures_written, are not drawn.)"""
     monkeypatch.setattr(figures, "draw_example_claims", lambda *_: None)
     rows = [replace(r, verdict=Verdict.AGREES) for r in committed_claims("lecornu")]
     _theta, bars = (_png_pixels(p) for p in figures.figures(tmp_path, rows))
