@@ -59,3 +59,36 @@ def test_each_panel_title_sits_just_above_its_frame_clear_of_its_tick_labels(
         for label in labels:
             assert not title.overlaps(label.get_window_extent(renderer)), label.get_text()
         assert title.y1 <= header, ax.get_title()
+
+
+def _shown_ticks(ax: Any) -> list[tuple[float, str]]:
+    """The y ticks drawn within the panel: (value, label)."""
+    low, high = ax.get_ylim()
+    ticks = zip(ax.get_yticks(), ax.get_yticklabels(), strict=True)
+    return [(float(v), t.get_text()) for v, t in ticks if low <= v <= high]
+
+
+def test_each_panel_y_ticks_are_matplotlibs_own_for_its_data(
+    monkeypatch: Any, tmp_path: Any
+) -> None:
+    """The y ticks each panel shows are those matplotlib's log locator and formatter give an
+    axes of the same lines (the panel's ticks are fixed once its limits are known)."""
+    import matplotlib.pyplot as plt
+    from matplotlib.ticker import LogLocator
+
+    fig = _saved_grid(monkeypatch, tmp_path)
+    for ax in (ax for ax in fig.get_axes() if ax.get_visible()):
+        other_fig, other = plt.subplots()
+        try:
+            for line in ax.get_lines():
+                other.loglog(*line.get_data())
+            other.yaxis.set_major_locator(LogLocator(numticks=6))
+            other.set_xlim(ax.get_xlim())
+            other_fig.canvas.draw()
+            mine = _shown_ticks(ax)
+            assert mine, ax.get_title()
+            if ax.yaxis.get_major_locator().__class__.__name__ == "LogLocator":
+                continue  # a sweep within a decade: 1, 2, 5 of each, left to matplotlib
+            assert mine == _shown_ticks(other), ax.get_title()
+        finally:
+            plt.close(other_fig)
