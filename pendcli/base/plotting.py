@@ -68,18 +68,39 @@ def save_figure(fig: Figure, path: str | Path) -> Path:
     # tight_layout leaves a placeholder layout engine behind, and savefig draws the whole
     # figure once more (without rendering) for any engine: none, so it draws once
     fig.set_layout_engine(None)
-    metadata: dict[str, str | None] = {"Software": None} if suffix == ".png" else {"Creator": None}
+    metadata: dict[str, str | None] = {"Creator": None}
     if suffix == ".pdf":
         metadata = {"Creator": None, "Producer": None, "CreationDate": None}
-    # zlib's fastest level: encoding the report's nine PNGs takes 0.48 s of CPU, not 0.68, for
-    # 7 % more bytes; the pixels are the same
-    buffer = io.BytesIO()
     if suffix == ".png":
-        fig.savefig(buffer, format="png", metadata=metadata, pil_kwargs={"compress_level": 1})
+        data = _png(fig)
     else:
+        buffer = io.BytesIO()
         fig.savefig(buffer, format=suffix[1:], metadata=metadata)
-    atomic_write(path, buffer.getvalue())
+        data = buffer.getvalue()
+    atomic_write(path, data)
     return path
+
+
+def _png(fig: Figure) -> bytes:
+    """``fig`` drawn once by Agg at its resolution (what savefig draws), as a PNG without
+    metadata: RGB where every pixel is opaque (the figures' white ground: 11 % fewer bytes
+    than savefig's RGBA, and 5 % less CPU to encode), else RGBA; zlib's fastest level (the
+    report's nine PNGs took 0.48 s of CPU to encode, not 0.68, for 7 % more bytes)."""
+    import io
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
+
+    canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
+    canvas.draw()
+    size = (int(canvas.renderer.width), int(canvas.renderer.height))
+    image = Image.frombuffer("RGBA", size, canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+    alpha = image.getchannel("A").getextrema()
+    if alpha == (255, 255):
+        image = image.convert("RGB")
+    buffer = io.BytesIO()
+    image.save(buffer, format="png", compress_level=1, dpi=(fig.dpi, fig.dpi))
+    return buffer.getvalue()
 
 
 FIGURE_SUFFIXES = (".png", ".svg", ".pdf")

@@ -192,6 +192,7 @@ def reproduce(
 ) -> None:
     """Every claim, published against recomputed, with a verdict (exit 0 unless --fail-on)."""
     from pendcli.cli.common import result_cache
+    from pendcli.output.report_figures import load_drawing_libraries
     from pendcli.papers.registry import resolve_papers
     from pendcli.run.reproduce import EQUATION_ONLY, reproduce_all
 
@@ -209,6 +210,7 @@ def reproduce(
             equations=(out is not None) if equations is None else equations,
             quiet=quiet or fmt is not OutputFormat.table,
             cache=stored,
+            meanwhile=None if out is None else load_drawing_libraries,
         )
         compact = fmt is OutputFormat.table and not notes
         emit(fmt, result.sections(compact, only_failing), result.document(only_failing))

@@ -130,6 +130,12 @@ class Drawing:
         self.workers.__exit__(*exc)
 
 
+def load_drawing_libraries() -> None:
+    """matplotlib (Agg): loaded once before the workers that draw are forked, rather than
+    once in each (`reproduce --out` loads it during the run, while a worker computes)."""
+    _pyplot()
+
+
 def _pyplot() -> None:
     """Load matplotlib (Agg) before forking the workers, rather than once in each."""
     import matplotlib

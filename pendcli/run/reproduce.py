@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import os
 import sys
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from contextlib import nullcontext
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -17,6 +18,7 @@ from pendcli.data.vocabulary import (
     CLAIM_VERDICTS,
     FORMULA_VERDICTS,
     PROCEDURE_VERDICTS,
+    STATUSES,
     EquationStatus,
     FormulaVerdict,
 )
@@ -85,11 +87,7 @@ class ReproduceResult:
         return out + self.summary_sections()
 
     def _paper_sections(self, key: str, compact: bool, only_failing: bool) -> list[Section]:
-        from pendcli.output.summary import (
-            compact_claim_columns,
-            compact_equation_columns,
-            compact_formula_columns,
-        )
+        from pendcli.output import summary
         from pendcli.output.views import EQUATION_COLUMNS, FORMULA_COLUMNS, claim_columns
 
         name = key.capitalize()
@@ -102,13 +100,13 @@ class ReproduceResult:
             rows, frows = [r for r in rows if disagrees(r)], [r for r in frows if disagrees(r)]
         out: list[Section] = []
         if rows:
-            cols = compact_claim_columns() if compact else claim_columns(rows)
+            cols = summary.compact_claim_columns() if compact else claim_columns(rows)
             out.append((f"{name}: printed numbers", rows, cols))
         if frows:
-            fcols = compact_formula_columns() if compact else FORMULA_COLUMNS
+            fcols = summary.compact_formula_columns() if compact else FORMULA_COLUMNS
             out.append((f"{name}: derived formulas", frows, fcols))
         if eqs:
-            ecols = compact_equation_columns() if compact else EQUATION_COLUMNS
+            ecols = summary.compact_equation_columns() if compact else EQUATION_COLUMNS
             what = "equations that fail or are misprinted" if compact else "equation ledger"
             out.append((f"{name}: {what}", eqs, ecols))
         return out
@@ -219,6 +217,7 @@ def reproduce_all(
     jobs: int | None = None,
     equations: bool = False,
     cache: ResultCache | None = None,
+    meanwhile: Callable[[], object] | None = None,
 ) -> ReproduceResult:
     """Evaluate the claims (and, if asked, the formula checks, the equation ledger and the
     stability measurements).
@@ -228,12 +227,13 @@ def reproduce_all(
     steps done, only on a terminal and when not ``quiet``. With a ``cache``
     (:func:`result_cache`), each paper's claims, formula checks and ledger (and the stability
     table) are read from it when stored, else computed and stored; without one (the library's
-    default, and `pendcli check`'s) everything is computed.
+    default, and `pendcli check`'s) everything is computed. ``meanwhile``: done here while a
+    forked worker takes its first step (the report's libraries loaded; no worker: not done).
     """
     wanted = _wanted(keys, formulas, equations, stability)
     stored = _cached(cache, wanted, keys)
     steps = _steps(keys, formulas, equations, stability, stored)
-    computed = _computed(steps, keys, stored, quiet, jobs)
+    computed = _computed(steps, keys, stored, quiet, jobs, meanwhile=meanwhile)
     _store_all(cache, computed, keys)
     return _result(keys, wanted, {**stored, **computed})
 
@@ -245,6 +245,7 @@ def _computed(
     quiet: bool,
     jobs: int | None,
     title: str = "reproducing",
+    meanwhile: Callable[[], object] | None = None,
 ) -> dict[Wanted, Any]:
     """The steps run, shared by this process and the forked workers (reproduce_all), and
     gathered into one value per cached unit: a ledger's parts back in its order."""
@@ -269,6 +270,9 @@ def _computed(
         _lend_formula_rows(lent, stored, steps)
         done = lent.enter_context(counting_rows())  # before the fork: workers count too
         bar = progress_bar(quiet, len(steps), title, (rows, done) if rows else None)
+        # done here while the worker takes its first step
+        _FIRST_HERE[:] = [(os.getpid(), meanwhile)] if meanwhile and workers else []
+        lent.callback(_FIRST_HERE.clear)
         with ForkedWorkers(workers) as pool, bar as advance:
             run = functools.partial(_run_step, papers=keys)
             values = pool.share(order, run, lambda step, _: advance(_named(step), 1), _named)
@@ -506,7 +510,12 @@ def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
                 references()
 
 
+_FIRST_HERE: list[tuple[int, Callable[[], object]]] = []  # (pid, work): before its next step
+
+
 def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
+    while _FIRST_HERE and _FIRST_HERE[0][0] == os.getpid():
+        _FIRST_HERE.pop()[1]()
     key, what = step
     if what == "claims":
         return claim_rows(key)
@@ -573,15 +582,8 @@ def _lend_formula_rows(
         stack.enter_context(sharing_formula_rows(key, rows))
 
 
-def _verdict_names() -> tuple[str, ...]:
-    from pendcli.data.vocabulary import STATUSES
-
-    names = [*CLAIM_VERDICTS, *FORMULA_VERDICTS, *STATUSES]
-    return tuple(dict.fromkeys(str(n) for n in names))
-
-
 # Every verdict (claims, formulas) and status (equations) a row can have, best first.
-VERDICT_NAMES: tuple[str, ...] = _verdict_names()
+VERDICT_NAMES = tuple(dict.fromkeys(map(str, (*CLAIM_VERDICTS, *FORMULA_VERDICTS, *STATUSES))))
 # Statuses only the equation ledger gives: asking to fail on one runs the ledger.
 EQUATION_ONLY = frozenset(VERDICT_NAMES) - {*CLAIM_VERDICTS, *FORMULA_VERDICTS}
 

@@ -224,7 +224,7 @@ def _family_axes(ax: Axes, name: str, edges: dict[str, set[str]]) -> None:
     ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.yaxis.set_major_locator(LogLocator(numticks=10))
-    ax.set_title(family_title(name), fontsize=9)
+    ax.set_title(family_title(name), fontsize=9, y=1.0)
     ax.set_xlabel("seconds per evaluation")
     ax.set_ylabel("worst relative error")
     ax.grid(True, which="both", alpha=0.3)

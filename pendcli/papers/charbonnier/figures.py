@@ -79,7 +79,9 @@ def draw_printed_minus_recomputed(ax: Axes) -> None:
     ax.set_ylim(-2.5, 2.5)
     ax.set_xlabel("n")
     ax.set_ylabel("printed − recomputed\n(ulp)")
-    ax.set_title("printed entries are exact expressions: they match to the last bit", fontsize=10)
+    ax.set_title(
+        "printed entries are exact expressions: they match to the last bit", fontsize=10, y=1.0
+    )
     ax.grid(True, alpha=0.3)
 
 
@@ -109,7 +111,7 @@ def draw_table(ax: Axes, n_max: int = 5) -> None:
     ax.set_ylabel("Iₙ(π) = ∫₀$^π$ sinⁿ⁺¹x dx")
     _plain_ticks(ax)
     # the printed entries are exact expressions: on the curve by construction, not by fit
-    ax.set_title("Charbonnier's Iₙ(π): printed (exact expressions) and recomputed")
+    ax.set_title("Charbonnier's Iₙ(π): printed (exact expressions) and recomputed", y=1.0)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
 

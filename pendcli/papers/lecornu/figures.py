@@ -200,7 +200,7 @@ def draw_example_claims(ax: Axes, m: ExampleModel, rows: dict[str, ClaimRow]) ->
     _draw_printed_points(ax, m, rows)
     ax.set_xlabel(f"t (s), pendulum {_comma(m.length)} m long at t = 0, shortening at {speed} m/s")
     ax.set_ylabel("θ/θ0 (asinh scale)")
-    ax.set_title("Lecornu's example: elongations and vertical passages")
+    ax.set_title("Lecornu's example: elongations and vertical passages", y=1.0)
     ax.axhline(0, color="0.8", lw=0.5)
     ax.legend(fontsize=8, loc="lower left")
 
@@ -289,7 +289,7 @@ def draw_printed_minus_recomputed(ax: Axes, rows: dict[str, ClaimRow], g: float)
     ticks = sorted({s * sign for s in steps for sign in (1, -1) if bottom <= s * sign <= top})
     ax.set_yticks(ticks, [f"{v:g}".replace("-", "−") for v in ticks])
     ax.minorticks_off()
-    ax.set_title(f"Lecornu's example, printed minus recomputed (g = {g:g})", fontsize=9)
+    ax.set_title(f"Lecornu's example, printed minus recomputed (g = {g:g})", fontsize=9, y=1.0)
     _legend(ax, seen)
 
 

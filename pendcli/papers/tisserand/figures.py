@@ -119,6 +119,7 @@ def draw_path(
         f"{turns} radial periods:\nthe series lies on the exact path (at most {gap.max():.1e} l "
         "away)",
         fontsize=10,
+        y=1.0,  # where matplotlib puts it, not searched for at each draw
     )
     if gap_ax is not None:
         _draw_gap(gap_ax, kt / exact.radial_period, gap)
@@ -131,7 +132,7 @@ def _draw_gap(ax: Axes, periods: np.ndarray, gap: np.ndarray) -> None:
     ax.semilogy(periods[1:], gap[1:], color="tab:purple", lw=0.9)
     ax.set_xlabel("time (radial periods)")
     ax.set_ylabel("|series − exact| / l")
-    ax.set_title("distance between the two paths at equal times", fontsize=9)
+    ax.set_title("distance between the two paths at equal times", fontsize=9, y=1.0)
     ax.grid(True, which="both", alpha=0.3)
 
 
@@ -208,7 +209,7 @@ def draw_series_error(ax: Axes, ratio: float | None = None) -> None:
     ax.set_ylim(1e-16, 10)
     ax.set_xlabel(f"θ0 (degrees), θ1 = {_ratio_text(ratio)}")
     ax.set_ylabel("relative error of the series")
-    ax.set_title("Tisserand's series (I), (II), (V) against the exact motion")
+    ax.set_title("Tisserand's series (I), (II), (V) against the exact motion", y=1.0)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
 

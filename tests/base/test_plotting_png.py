@@ -1,0 +1,59 @@
+"""The PNG a figure is saved as: the pixels matplotlib's own savefig draws, no metadata."""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from pendcli.base.plotting import new_figure
+
+
+def _draw(ax, transparent: bool) -> None:  # type: ignore[no-untyped-def]
+    ax.plot([1, 2, 3], [3, 1, 2], "o-", color="tab:red")
+    ax.set_title("a title, $x^2$ and 10⁻³")
+    ax.set_yscale("log")
+    if transparent:
+        ax.figure.patch.set_alpha(0.0)
+        ax.patch.set_alpha(0.5)
+
+
+def _savefig_pixels(transparent: bool) -> np.ndarray:
+    """The same figure through matplotlib's savefig (RGBA), decoded: the independent view."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(4.0, 3.0), dpi=120)
+    try:
+        _draw(ax, transparent)
+        fig.tight_layout()
+        buffer = io.BytesIO()
+        fig.savefig(buffer, format="png", dpi=120)
+    finally:
+        plt.close(fig)
+    return np.asarray(Image.open(io.BytesIO(buffer.getvalue())).convert("RGBA"))
+
+
+@pytest.mark.parametrize("transparent", [False, True])
+def test_a_saved_png_has_the_pixels_savefig_draws(tmp_path: Path, transparent: bool) -> None:
+    path = tmp_path / "f.png"
+    with new_figure(path, size=(4.0, 3.0)) as (_fig, ax):
+        _draw(ax, transparent)
+    image = Image.open(path)
+    # opaque: RGB, a quarter fewer bytes to compress; see-through: the alpha is kept
+    assert image.mode == ("RGBA" if transparent else "RGB")
+    assert image.info.get("dpi") == pytest.approx((120, 120), abs=0.1)  # stored per metre
+    assert not {"Software", "Creation Time"} & set(image.info)
+    assert np.array_equal(np.asarray(image.convert("RGBA")), _savefig_pixels(transparent))
+
+
+def test_a_saved_png_is_the_same_bytes_each_time(tmp_path: Path) -> None:
+    for name in ("a.png", "b.png"):
+        with new_figure(tmp_path / name, size=(4.0, 3.0)) as (_fig, ax):
+            _draw(ax, transparent=False)
+    assert (tmp_path / "a.png").read_bytes() == (tmp_path / "b.png").read_bytes()
