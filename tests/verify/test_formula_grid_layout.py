@@ -4,14 +4,22 @@ from __future__ import annotations
 
 from typing import Any
 
+import pytest
 from helpers.evaluated import committed_formulas
 
 from pendcli.papers.tisserand.formulas import PANELS
 from pendcli.verify import formula_plots
 
 
+@pytest.fixture(scope="module")
+def saved_grid(tmp_path_factory: Any) -> Any:
+    """Tisserand's grid laid out and written as the report writes it; the figure kept (drawn
+    once for the module: the tests only read it)."""
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        yield _saved_grid(monkeypatch, tmp_path_factory.mktemp("grid"))
+
+
 def _saved_grid(monkeypatch: Any, tmp_path: Any) -> Any:
-    """Tisserand's grid laid out and written as the report writes it; the figure kept."""
     import matplotlib
 
     matplotlib.use("Agg", force=True)
@@ -35,12 +43,12 @@ def _saved_grid(monkeypatch: Any, tmp_path: Any) -> Any:
 
 
 def test_each_panel_title_sits_just_above_its_frame_clear_of_its_tick_labels(
-    monkeypatch: Any, tmp_path: Any
+    saved_grid: Any,
 ) -> None:
     """The title stands on the frame's top, its baseline the title pad above it (6 points: 10
     pixels at 120 dpi), clear of every tick label of its panel and below the figure's header:
     the panels' titles are fixed there, not searched for at each draw."""
-    fig = _saved_grid(monkeypatch, tmp_path)
+    fig = saved_grid
     renderer = fig.canvas.get_renderer()
     pad = 6 * fig.dpi / 72
     (suptitle,) = [t for t in fig.texts if t.get_text() == "Tisserand"]
@@ -68,15 +76,13 @@ def _shown_ticks(ax: Any) -> list[tuple[float, str]]:
     return [(float(v), t.get_text()) for v, t in ticks if low <= v <= high]
 
 
-def test_each_panel_y_ticks_are_matplotlibs_own_for_its_data(
-    monkeypatch: Any, tmp_path: Any
-) -> None:
+def test_each_panel_y_ticks_are_matplotlibs_own_for_its_data(saved_grid: Any) -> None:
     """The y ticks each panel shows are those matplotlib's log locator and formatter give an
     axes of the same lines (the panel's ticks are fixed once its limits are known)."""
     import matplotlib.pyplot as plt
     from matplotlib.ticker import LogLocator
 
-    fig = _saved_grid(monkeypatch, tmp_path)
+    fig = saved_grid
     for ax in (ax for ax in fig.get_axes() if ax.get_visible()):
         other_fig, other = plt.subplots()
         try:
