@@ -3,6 +3,7 @@ output targets refused before any work."""
 
 from __future__ import annotations
 
+import functools
 import os
 import shlex
 import subprocess
@@ -17,6 +18,7 @@ from pendcli.cli.app import app
 from pendcli.cli.help_format import EXAMPLES
 
 
+@functools.cache  # one group for the module: each example only makes a context of it
 def _leaf_commands():
     group = typer.main.get_command(app)
     ctx = typer.Context(group, info_name="pendcli")
