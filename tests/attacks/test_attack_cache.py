@@ -89,15 +89,23 @@ def first_claim_is_42(value: Any) -> None:
     value[0].update(recomputed=42.0, verdict="discrepant")
 
 
+@pytest.fixture(scope="module")
+def uncached() -> str:
+    """The output of a run without the cache (``--no-cache``: no folder read or written),
+    the same for every test of the module: computed once."""
+    fresh = invoke(*CLAIMS, "--no-cache", env=WIDE)
+    assert fresh.code == 0, fresh.err
+    return fresh.out
+
+
 @pytest.fixture
-def cold(tmp_path: Path) -> tuple[dict[str, str], str]:
-    """A cache filled by Tisserand's claims (in this process), and the output of a run
+def cold(tmp_path: Path, uncached: str) -> tuple[dict[str, str], str]:
+    """A cache filled by Charbonnier's claims (in this process), and the output of a run
     without the cache."""
     env = {"PENDCLI_CACHE": str(tmp_path / "cache"), **WIDE}
-    fresh = invoke(*CLAIMS, "--no-cache", env=env)
     first = invoke(*CLAIMS, env=env)
-    assert (first.code, first.out) == (0, fresh.out), first.err
-    return env, fresh.out
+    assert (first.code, first.out) == (0, uncached), first.err
+    return env, uncached
 
 
 # -- the folder: only pendcli's names are ever removed ----------------------------------------
