@@ -4,10 +4,7 @@ output targets refused before any work."""
 from __future__ import annotations
 
 import functools
-import os
 import shlex
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -94,14 +91,11 @@ def test_bad_paper_has_the_common_wording():
 
 
 def _colour(env):
-    proc = subprocess.run(
-        [sys.executable, "-m", "pendcli", "list", "-p", "charbonnier"],
-        capture_output=True,
-        text=True,
-        check=True,
-        env={**os.environ, **env},
-    )
-    return "\x1b[" in proc.stdout
+    """Whether `pendcli list` colours its output to a pipe (a captured stdout is not a
+    terminal), run in this process with ``env``."""
+    code, out, err = invoke("list", "-p", "charbonnier", env=env)
+    assert code == 0, err
+    return "\x1b[" in out
 
 
 def test_force_color_colours_a_pipe_and_no_color_wins():
