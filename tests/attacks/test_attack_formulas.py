@@ -333,7 +333,9 @@ def _expressions() -> st.SearchStrategy[str]:
     )
 
 
-@FEW
+# 40 of the fixed examples: a division built as a product, a minus as a plus, a sign dropped,
+# a large integer built as a float each fail within them, as within 100
+@settings(FEW, max_examples=40)
 @given(_expressions())
 def test_the_built_expression_is_sympys_parse_of_the_same_text(text: str) -> None:
     """On formulas of the notation with small numbers (where python's eval is harmless), the
