@@ -338,6 +338,7 @@ def _mark_slow(item: pytest.Item, reason: str) -> None:
 def pytest_sessionfinish(session: pytest.Session) -> None:
     """The syntax trees parsed once per process (helpers/sources.py) let go before pytest's
     last full collections, which would walk their million nodes (1.4 s each, profiled)."""
-    from helpers.sources import parsed
+    from helpers.sources import parsed, walked
 
+    walked.cache_clear()
     parsed.cache_clear()

@@ -18,7 +18,7 @@ import functools
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 
-from helpers.sources import parsed_file
+from helpers.sources import walked_file
 
 PACKAGE = Path(__file__).resolve().parents[1] / "pendcli"
 
@@ -46,10 +46,13 @@ def _nearest(name: str, known: Mapping[str, Path]) -> str | None:
     return name or None
 
 
-def _imported(tree: ast.Module, here: str, known: Mapping[str, Path]) -> Iterator[str | None]:
-    """Every module of ``known`` an import of the tree names (``here``: the file's package).
-    ``from a import b``: the module ``a.b`` when there is one, else ``a`` (b is a name in it)."""
-    for node in ast.walk(tree):
+def _imported(
+    nodes: tuple[ast.AST, ...], here: str, known: Mapping[str, Path]
+) -> Iterator[str | None]:
+    """Every module of ``known`` an import among a tree's ``nodes`` names (``here``: the
+    file's package). ``from a import b``: the module ``a.b`` when there is one, else ``a`` (b
+    is a name in it)."""
+    for node in nodes:
         if isinstance(node, ast.Import):
             yield from (_nearest(alias.name, known) for alias in node.names)
         elif isinstance(node, ast.ImportFrom):
@@ -68,8 +71,8 @@ def import_graph(package: Path) -> dict[str, set[str]]:
     graph: dict[str, set[str]] = {}
     for name, path in known.items():
         here = name if path.name == "__init__.py" else name.rpartition(".")[0]
-        tree = parsed_file(path)
-        graph[name] = {t for t in _imported(tree, here, known) if t is not None} - {name}
+        nodes = walked_file(path)
+        graph[name] = {t for t in _imported(nodes, here, known) if t is not None} - {name}
     return graph
 
 

@@ -7,7 +7,7 @@ import ast
 from pathlib import Path
 
 import pytest
-from helpers.sources import parsed_file
+from helpers.sources import parsed_file, walked_file
 
 ROOT = Path(__file__).resolve().parents[1] / "pendcli"
 
@@ -106,11 +106,11 @@ THE_RUN = ("reproduce", "regression")
 RUNS_WITH_THE_RUN = {"report.py": {"regression"}}
 
 
-def type_only(tree: ast.Module) -> set[ast.AST]:
-    """The import statements inside ``if TYPE_CHECKING:`` blocks."""
+def type_only(nodes: tuple[ast.AST, ...]) -> set[ast.AST]:
+    """The import statements inside ``if TYPE_CHECKING:`` blocks among a tree's ``nodes``."""
     return {
         node
-        for block in ast.walk(tree)
+        for block in nodes
         if isinstance(block, ast.If) and ast.unparse(block.test) == "TYPE_CHECKING"
         for stmt in block.body
         for node in ast.walk(stmt)
@@ -120,11 +120,11 @@ def type_only(tree: ast.Module) -> set[ast.AST]:
 
 def run_imports(path: Path) -> set[str]:
     """The run's modules that ``path`` imports when it runs (a function's imports included)."""
-    tree = parsed_file(path)
-    skip = type_only(tree)
+    nodes = walked_file(path)
+    skip = type_only(nodes)
     names = [
         name
-        for node in ast.walk(tree)
+        for node in nodes
         if node not in skip
         for name in (
             [node.module or ""] if isinstance(node, ast.ImportFrom)
@@ -137,7 +137,7 @@ def run_imports(path: Path) -> set[str]:
 
 def imported(path: Path) -> list[str]:
     names = []
-    for node in ast.walk(parsed_file(path)):
+    for node in walked_file(path):
         if isinstance(node, ast.ImportFrom) and node.module:
             names.append(node.module)
         elif isinstance(node, ast.Import):

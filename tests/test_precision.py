@@ -12,7 +12,7 @@ from pathlib import Path
 
 import mpmath
 import pytest
-from helpers.sources import parsed
+from helpers.sources import walked
 
 import pendcli
 
@@ -23,7 +23,7 @@ SOURCES = sorted(PACKAGE.rglob("*.py"))
 def global_precision_assignments(source: str) -> list[int]:
     """Lines that assign (or augment) an attribute named dps or prec of something named mp."""
     found = []
-    for node in ast.walk(parsed(source)):
+    for node in walked(source):
         targets: list[ast.expr] = []
         if isinstance(node, ast.Assign):
             targets = list(node.targets)

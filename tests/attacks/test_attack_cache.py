@@ -89,15 +89,23 @@ def first_claim_is_42(value: Any) -> None:
     value[0].update(recomputed=42.0, verdict="discrepant")
 
 
+@pytest.fixture(scope="module")
+def uncached() -> str:
+    """The output of a run without the cache (``--no-cache``: no folder read or written),
+    the same for every test of the module: computed once."""
+    fresh = invoke(*CLAIMS, "--no-cache", env=WIDE)
+    assert fresh.code == 0, fresh.err
+    return fresh.out
+
+
 @pytest.fixture
-def cold(tmp_path: Path) -> tuple[dict[str, str], str]:
-    """A cache filled by Tisserand's claims (in this process), and the output of a run
+def cold(tmp_path: Path, uncached: str) -> tuple[dict[str, str], str]:
+    """A cache filled by Charbonnier's claims (in this process), and the output of a run
     without the cache."""
     env = {"PENDCLI_CACHE": str(tmp_path / "cache"), **WIDE}
-    fresh = invoke(*CLAIMS, "--no-cache", env=env)
     first = invoke(*CLAIMS, env=env)
-    assert (first.code, first.out) == (0, fresh.out), first.err
-    return env, fresh.out
+    assert (first.code, first.out) == (0, uncached), first.err
+    return env, uncached
 
 
 # -- the folder: only pendcli's names are ever removed ----------------------------------------
@@ -306,9 +314,24 @@ BAD_NAMES = {
 }
 
 
+@pytest.fixture(scope="module")
+def code_and_tables_key() -> str:
+    """The part of every key the code, the tables and the versions make (``ResultCache.base``,
+    12 ms of hashing), the same for every cache of the module's committed tables: computed
+    once, for the tests of what an entry holds (the key's own tests hash afresh)."""
+    return ResultCache(None, tables_dir()).base
+
+
+def report_cache(folder: Path, base: str) -> ResultCache:
+    """A cache in ``folder`` of the committed tables, its key's base given."""
+    cache = ResultCache(folder, tables_dir())
+    cache.base = base  # what the cached property computes, computed once
+    return cache
+
+
 @pytest.mark.parametrize("files", list(BAD_NAMES.values()), ids=list(BAD_NAMES))
 def test_a_damaged_report_entry_is_recomputed(
-    tmp_path: Path, monkeypatch, files: dict[str, Any]
+    tmp_path: Path, monkeypatch, files: dict[str, Any], code_and_tables_key: str
 ) -> None:
     """Each such entry (its digest made right) failed every run (exit 2 or 3) until the
     cache was cleared; now it is a miss: the report is written afresh and stored again."""
@@ -323,12 +346,12 @@ def test_a_damaged_report_entry_is_recomputed(
         return [Path("report.md")]
 
     monkeypatch.setattr("pendcli.output.report._fill", fill)
-    cache = ResultCache(tmp_path / "cache", tables_dir())
+    cache = report_cache(tmp_path / "cache", code_and_tables_key)
     result = ReproduceResult(papers=("tisserand",))
     write_report(result, tmp_path / "first", cache=cache)
     (entry,) = entries_of(tmp_path / "cache", "report")
     forge(entry, lambda value: value.update(files=files), sign=True)
-    write_report(result, tmp_path / "out", cache=ResultCache(tmp_path / "cache", tables_dir()))
+    write_report(result, tmp_path / "out", cache=report_cache(tmp_path / "cache", cache.base))
     assert len(written) == 2  # computed again
     assert (tmp_path / "out" / "report.md").read_text(encoding="utf-8") == "fresh"
     assert json.loads(entry.read_bytes().partition(b"\n")[2])["value"]["files"] != files

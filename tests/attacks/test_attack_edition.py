@@ -240,7 +240,9 @@ TEX_PIECES = [
 ]  # fmt: skip
 
 
-@settings(max_examples=200)
+# 100 examples: an attribute kept whatever its value (the value patterns skipped) fails it
+# within them for each of five seeds, as with 200
+@settings(max_examples=100)
 @given(st.lists(st.sampled_from(TEX_PIECES) | st.text(max_size=4), max_size=12), st.booleans())
 def test_tex_junk_gives_allowlisted_mathml_or_none(pieces: list[str], display: bool) -> None:
     out = to_mathml("".join(pieces), display)

@@ -4,9 +4,9 @@ run code (attribute access, subscripts, strings, keywords, dunder names) or to h
 brackets) is refused when the ledger is read: one line naming the file, the row (or the
 symbol) and the limit, exit 2, nothing run, no file created.
 
-The code-execution ledger and a tower run the real CLI in a fresh process on a copy of
-``tables/``; the rest load a one-row ledger in this process (``parse_ledger``), which is
-what every command does first.
+The code-execution ledger runs the real CLI in a fresh process on a copy of ``tables/``, and
+a tower the same entry point in this process; the rest load a one-row ledger in this process
+(``parse_ledger``), which is what every command does first.
 """
 
 from __future__ import annotations
@@ -261,7 +261,9 @@ def test_a_tower_is_one_line_exit_2_in_the_real_cli(tmp_path: Path, command: str
     text = path.read_text(encoding="utf-8")
     path.write_text(text.replace("'k = sqrt(g/l)'", "'k = sqrt(g/l) + 9**9**9**9'", 1), "utf-8")
     env = {"PENDCLI_TABLES": str(copy), "PENDCLI_JOBS": "1", "PENDCLI_DEBUG": ""}
-    code, err = _cli(command, env, tmp_path, fresh=command == "equations")
+    # in this process, through the real entry point's `run` (the fresh process of a refused
+    # ledger is the code-execution attack's): refused as the ledger is read, nothing evaluated
+    code, err = _cli(command, env, tmp_path, fresh=False)
     assert_clean_error(code, err)
     assert f"{path}: tisserand.result.k-definition: printed: a power's exponent" in err, err
     assert f"limit of {grammar.MAX_EXPONENT}" in err, err
@@ -331,7 +333,9 @@ def _expressions() -> st.SearchStrategy[str]:
     )
 
 
-@FEW
+# 40 of the fixed examples: a division built as a product, a minus as a plus, a sign dropped,
+# a large integer built as a float each fail within them, as within 100
+@settings(FEW, max_examples=40)
 @given(_expressions())
 def test_the_built_expression_is_sympys_parse_of_the_same_text(text: str) -> None:
     """On formulas of the notation with small numbers (where python's eval is harmless), the

@@ -3,10 +3,8 @@ output targets refused before any work."""
 
 from __future__ import annotations
 
-import os
+import functools
 import shlex
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -17,6 +15,7 @@ from pendcli.cli.app import app
 from pendcli.cli.help_format import EXAMPLES
 
 
+@functools.cache  # one group for the module: each example only makes a context of it
 def _leaf_commands():
     group = typer.main.get_command(app)
     ctx = typer.Context(group, info_name="pendcli")
@@ -92,14 +91,11 @@ def test_bad_paper_has_the_common_wording():
 
 
 def _colour(env):
-    proc = subprocess.run(
-        [sys.executable, "-m", "pendcli", "list", "-p", "charbonnier"],
-        capture_output=True,
-        text=True,
-        check=True,
-        env={**os.environ, **env},
-    )
-    return "\x1b[" in proc.stdout
+    """Whether `pendcli list` colours its output to a pipe (a captured stdout is not a
+    terminal), run in this process with ``env``."""
+    code, out, err = invoke("list", "-p", "charbonnier", env=env)
+    assert code == 0, err
+    return "\x1b[" in out
 
 
 def test_force_color_colours_a_pipe_and_no_color_wins():

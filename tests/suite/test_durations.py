@@ -14,6 +14,13 @@ from helpers import durations
 TESTS = Path(__file__).resolve().parents[1]
 
 
+@pytest.fixture
+def bare_pytest(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The reruns' pytest processes load no installed plugin (hypothesis, xdist...): what
+    they time is the conftest's timing hooks alone, and each starts in 0.15 s, not 0.25 s."""
+    monkeypatch.setenv("PYTEST_DISABLE_PLUGIN_AUTOLOAD", "1")
+
+
 def _timings(path: Path, seconds: dict[str, tuple[float, bool]]) -> Path:
     lines = [
         {"test": test, "phase": "call", "slow": slow, "wall": cpu, "cpu": cpu, "load": 0.1}
@@ -34,7 +41,10 @@ def test_a_fast_test_over_the_limit_fails_the_guard_and_a_slow_one_does_not(
 
 
 def test_a_recheck_keeps_a_heavy_test_and_clears_one_recorded_heavy_by_a_crowded_run(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+    bare_pytest: None,
 ) -> None:
     (tmp_path / "conftest.py").write_text(
         f"import sys\nsys.path.insert(0, {str(TESTS)!r})\n"
@@ -42,7 +52,7 @@ def test_a_recheck_keeps_a_heavy_test_and_clears_one_recorded_heavy_by_a_crowded
         encoding="utf-8",
     )
     (tmp_path / "test_burn.py").write_text(
-        "import time\n\n\ndef test_heavy():\n    end = time.process_time() + 0.25\n"
+        "import time\n\n\ndef test_heavy():\n    end = time.process_time() + 0.08\n"
         "    while time.process_time() < end:\n        pass\n\n\n"
         "def test_light():\n    pass\n",
         encoding="utf-8",
@@ -50,15 +60,18 @@ def test_a_recheck_keeps_a_heavy_test_and_clears_one_recorded_heavy_by_a_crowded
     monkeypatch.chdir(tmp_path)
     recorded = {"test_burn.py::test_heavy": (0.5, False), "test_burn.py::test_light": (3.0, False)}
     path = _timings(tmp_path / "t.jsonl", recorded)
-    assert durations.main([str(path), "--limit", "0.15", "--recheck", "1"]) == 1
+    assert durations.main([str(path), "--limit", "0.04", "--recheck", "1"]) == 1
     out = capsys.readouterr().out
-    assert "over 0.15 s and not marked slow: test_burn.py::test_heavy" in out
+    assert "over 0.04 s and not marked slow: test_burn.py::test_heavy" in out
     assert "not marked slow: test_burn.py::test_light" not in out
     assert "rechecked test_burn.py::test_light: 3.00 s in the run, least 0.0" in out
 
 
 def test_a_recheck_that_cannot_run_the_test_clears_nothing(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    capsys: pytest.CaptureFixture[str],
+    bare_pytest: None,
 ) -> None:
     """A rerun whose test errors (a fixture the rerun lacks, as xdist's ``worker_id`` without
     xdist) measures only its setup: it is no rerun, and the test stays over the limit."""
