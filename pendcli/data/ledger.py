@@ -13,7 +13,7 @@ by its kind and verifies that the status computed is the one the row records.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import fields
 from pathlib import Path
 from typing import Any
@@ -147,20 +147,24 @@ def parse_ledger(
     entries = raw.get("equation")
     if not isinstance(entries, list) or not entries:
         raise PendcliError(f"{path}: no [[equation]] rows")
+    keys = [repr(entry) for entry in entries]
     rows: list[LedgerRow] = []
     seen: set[str] = set()
-    for index, entry in enumerate(entries):
-        row = _row(path, index, entry, paper)
+    for index, (entry, key) in enumerate(zip(entries, keys, strict=True)):
+        row = _row_once(path, index, entry, paper, key)
         if row.id in seen:
             raise PendcliError(f"{path}: {row.id}: duplicate id")
         seen.add(row.id)
         rows.append(row)
     text_path = _text_inside(path, text, root)
-    lines = _check_text_fields(path, rows, text_path, partial)
+    lines = _text_lines(text_path)
+    context = _context(paper, raw, lines)
+    done = {i: r for i, k in enumerate(keys) if (r := _CHECKED_ROWS.get((context, k)))}
+    _check_text_fields(path, rows, lines, text_path.name, partial, done)
     symbols = validate_symbols(path, raw.get("symbols"))
     scopes = validate_scopes(path, raw.get("scope"), dict(symbols))
     readings = parse_readings(path, raw.get("reading"), lines)
-    rows = [_with_readings(row, readings, lines) for row in rows]
+    rows = [done.get(i) or _with_readings(row, readings, lines) for i, row in enumerate(rows)]
     assumptions = parse_assumptions(path, raw.get("assumption"), None if partial else seen)
     named = {a.id: a for a in assumptions}
     for row in rows:
@@ -168,10 +172,42 @@ def parse_ledger(
     check_listed(path, rows, assumptions)
     parse_companions(f"{path}", raw.get("companion"))  # its shape; its match: when judged
     ledger = Ledger(paper, text_path, path, tuple(rows), symbols, scopes, readings, assumptions)
-    validate_formulas(path, rows, ledger.symbols_for)
+    validate_formulas(path, [r for i, r in enumerate(rows) if i not in done], ledger.symbols_for)
     if not partial:
         validate_step(path, ledger)
+    for index, row in enumerate(rows):  # the ledger is valid: each new row is kept
+        if index not in done:
+            _CHECKED_ROWS.put((context, keys[index]), row)
     return ledger
+
+
+# Each [[equation]] entry validated once per content, whichever ledger holds it: a ledger
+# edited in one entry (a mutation test's edit) validates that entry alone again. _ROWS: the
+# row its entry alone gives ((paper, repr of the entry) -> LedgerRow; the path and index only
+# name an error). _CHECKED_ROWS: the row with its readings applied, whose lines, quotes and
+# formulas passed in a context (paper, [symbols], [[scope]], [[reading]] and the paper's text:
+# all the checks of one row read) -> LedgerRow; kept only once the whole ledger is valid.
+# What concerns several rows (duplicates, restatements, blame, assumptions, steps) is checked
+# on every load. A failure is never kept, so each names its own ledger.
+_ROWS = Recent(4096)
+_CHECKED_ROWS = Recent(4096)
+
+
+def _row_once(path: Path, index: int, entry: object, paper: str, key: str) -> LedgerRow:
+    row: LedgerRow | None = _ROWS.get((paper, type(entry).__name__, key))
+    if row is None:
+        row = _row(path, index, entry, paper)
+        _ROWS.put((paper, type(entry).__name__, key), row)
+    return row
+
+
+def _context(paper: str, raw: dict[str, Any], lines: list[str] | None) -> str:
+    """What a row's own checks read besides the row: one digest."""
+    import hashlib
+
+    parts = [paper, *(repr(raw.get(k)) for k in ("symbols", "scope", "reading"))]
+    parts.append(repr(None) if lines is None else "\n".join(lines))
+    return hashlib.sha256("\0".join(parts).encode()).hexdigest()
 
 
 def _with_readings(
@@ -241,23 +277,33 @@ def _strings(where: str, key: str, value: object) -> str | tuple[str, ...]:
     return value if isinstance(value, str) else tuple(str(v) for v in items)
 
 
-def _check_text_fields(
-    path: Path, rows: list[LedgerRow], text: Path, partial: bool = False
-) -> list[str] | None:
-    """``lines`` within the paper's text (when the text is there to count), each wrong term
-    and quote printed verbatim within them, ``restates`` naming another row and the later
-    use of a slip (verify/ledger_blame); the text's lines (None when it is not there)."""
+def _text_lines(text: Path) -> list[str] | None:
+    """The paper text's lines, None when it is not there (load_ledger says so)."""
     from pendcli.data.tables import read_table_text
 
-    # not UTF-8 or empty: the text's own one-line error; missing: load_ledger says so
-    lines = read_table_text(text, "paper text").splitlines() if text.exists() else None
-    for row in rows:
-        if row.lines is not None and lines is not None:
+    # not UTF-8 or empty: the text's own one-line error
+    return read_table_text(text, "paper text").splitlines() if text.exists() else None
+
+
+def _check_text_fields(
+    path: Path,
+    rows: list[LedgerRow],
+    lines: list[str] | None,
+    text: str,
+    partial: bool = False,
+    done: Mapping[int, LedgerRow] | None = None,
+) -> None:
+    """``lines`` within the paper's text ``lines`` (when the text is there to count), each
+    wrong term and quote printed verbatim within them (but for the rows ``done``: found so in
+    this very text), ``restates`` naming another row and the later use of a slip
+    (verify/ledger_blame)."""
+    for index, row in enumerate(rows):
+        if lines is None or (done is not None and index in done):
+            continue
+        if row.lines is not None:
             validate_span(f"{path}: {row.id}", list(row.lines), len(lines))
-        if lines is not None:
-            _check_printed_within_lines(f"{path}: {row.id}", row, lines, text.name)
+        _check_printed_within_lines(f"{path}: {row.id}", row, lines, text)
     validate_blame(path, rows, lines, partial)
-    return lines
 
 
 def _check_printed_within_lines(where: str, row: LedgerRow, lines: list[str], text: str) -> None:

@@ -270,9 +270,10 @@ def _bounded_passes(item: Item) -> tuple[bool, str]:
         for s in others:
             low, high = item.domain.get(s.name, (sp.Rational(1, 10), sp.Rational(1, 2)))
             point[s] = low + (high - low) * sp.Rational(generator.randint(1, 999), 1000)
-        limit = finite_limit(expr.subs(point), scale)
+        at_point = expr.subs(point)  # once: Cauchy's proof, then sympy's limit if need be
+        limit = finite_limit(at_point, scale)
         if limit is None:
-            limit = sp.limit(expr.subs(point), scale, 0, "+")
+            limit = sp.limit(at_point, scale, 0, "+")
         shown = ", ".join(f"{k}={v}" for k, v in point.items())
         if not limit.is_finite:
             return False, f"the residual tends to {limit} as {scale} -> 0+ at {shown}"

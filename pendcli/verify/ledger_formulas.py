@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pendcli.base.errors import PendcliError
+from pendcli.base.recent import Recent
 from pendcli.data.formula_grammar import plain_name
 from pendcli.data.printed import (
     ELLIPSIS,
@@ -63,6 +64,18 @@ def validate_symbols(path: Path, raw: object) -> tuple[tuple[str, str], ...]:
         return ()
     if not isinstance(raw, dict):
         raise PendcliError(f'{path}: [symbols] must be a table of name = "dimension"')
+    key = repr(raw)
+    if _SYMBOLS.get(key) is None:  # a table found valid is not checked again
+        _check_symbols(path, raw)
+        _SYMBOLS.put(key, True)
+    return tuple(sorted(raw.items()))
+
+
+# repr of a [symbols] table -> True: the tables :func:`_check_symbols` found valid
+_SYMBOLS = Recent(64)
+
+
+def _check_symbols(path: Path, raw: dict[str, Any]) -> None:
     for name, dim in raw.items():
         bare = name.removesuffix("()")
         if not plain_name(bare) or bare in _RESERVED or not isinstance(dim, str):
@@ -71,7 +84,6 @@ def validate_symbols(path: Path, raw: object) -> tuple[tuple[str, str], ...]:
                 'letter; not a keyword) = "L T^-2" or "1"'
             )
         parse_dimension(f"{path}: [symbols] {name}", dim)
-    return tuple(sorted(raw.items()))
 
 
 def validate_scopes(
