@@ -264,7 +264,7 @@ def _computed(
     # one process: the steps as listed, the claims first (a published table that does not
     # match the code fails at once, not after every ledger); two: the costliest first
     order = _costliest_first(steps) if workers else steps
-    rows = None if quiet or not sys.stderr.isatty() else _ledger_rows_in(steps)
+    rows = None if quiet or not sys.stderr.isatty() else sum(map(_part_rows, steps))
     status_line("")
     with contextlib.ExitStack() as lent:
         _lend_formula_rows(lent, stored, steps)
@@ -398,8 +398,7 @@ def ledger_rows(
 ) -> list[EquationRow]:
     """The equation ledgers of the papers ``keys`` (`pendcli equations`), each read from
     ``cache`` when stored, else computed (and stored): each ledger's parts (:data:`LEDGER_PARTS`)
-    shared by this process and a forked worker, as in :func:`reproduce_all` (``jobs=1``: all
-    here)."""
+    shared by this process and a forked worker, as in :func:`reproduce_all` (``jobs=1``: here)."""
     wanted = [(k, "equations") for k in keys]
     stored = _cached(cache, wanted, keys)
     steps = _steps(keys, formulas=False, equations=True, stability=False, stored=stored,
@@ -423,8 +422,7 @@ def _result(
 
 
 # Each ledger is cut in this many contiguous parts, taken by whichever process is free. Four
-# were measured against two in paired runs: equations cold 1.06x the wall of halves (each
-# process builds more of the same references), reproduce --out 0.94x (0.90-1.10): no gain.
+# against two, paired runs: equations cold 1.06x the wall, reproduce --out 0.94x: no gain.
 LEDGER_PARTS = 2
 
 
@@ -458,17 +456,20 @@ def _steps(
     return steps
 
 
-def _ledger_rows_in(steps: list[Step]) -> int:
-    """How many ledger rows the steps judge (their parts of each ledger)."""
+def _part_rows(step: Step) -> int:
+    """How many ledger rows a step judges (0: none, or its ledger does not load: it says why)."""
+    from pendcli.base.errors import PendcliError
     from pendcli.data.ledger import load_ledger
 
-    total = 0
-    for key, what in steps:
-        if what.startswith(("equations", "formulas+equations")):
-            index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
-            size = len(load_ledger(key).rows)
-            total += size * (index + 1) // count - size * index // count
-    return total
+    key, what = step
+    if not what.startswith(("equations", "formulas+equations")):
+        return 0
+    index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
+    try:
+        size = len(load_ledger(key).rows)
+    except (PendcliError, OSError):
+        return 0
+    return size * (index + 1) // count - size * index // count
 
 
 Step = tuple[str, str]
@@ -480,17 +481,18 @@ def _named(step: Step) -> str:
 
 
 def _costliest_first(steps: list[Step]) -> list[Step]:
-    """The order the processes take the steps in, with no timings: the ledgers' parts and
-    the stability table (sympy and ODEs over many rows) first, then the formula checks, the
-    claims last (the smallest, they fill the gaps while the other process ends its step)."""
+    """The order the processes take the steps in, with no timings: the ledgers' parts, the
+    largest ledger's first (its part of 1.8 s CPU, taken last, left the other process idle),
+    the part with the formula checks first; then the stability table, the formula checks, the
+    claims last (the smallest, they fill the gaps), each the largest ledger's paper first."""
     rank = {"equations": 0, "formulas+equations": 0, "stability": 1, "formulas": 2}
-    return sorted(steps, key=lambda step: rank.get(step[1].split(" ")[0], 3))
+    rows = {k: sum(_part_rows(s) for s in steps if s[0] == k) for k, _ in steps}
+    return sorted(steps, key=lambda s: (rank.get(s[1].split()[0], 3), -rows[s[0]], "+" not in s[1]))
 
 
 def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
     """Import, once and before the fork, what both processes would otherwise each import:
-    the papers' claims and formulas modules, scipy (~0.3 s), and sympy with mpmath and the
-    equations modules when both lanes check parts of the equation ledger."""
+    the papers' modules, scipy (~0.35 s), and sympy, mpmath and the references for a ledger."""
     import scipy.integrate
     import scipy.special  # noqa: F401
 
@@ -548,10 +550,8 @@ def _gather(
     what: str,
     value: Any,
 ) -> None:
-    if what == "claims":
-        computed[key, "claims"] = value
-    elif what == "formulas":
-        computed[key, "formulas"] = value
+    if what in ("claims", "formulas"):
+        computed[key, what] = value
     elif what.startswith("equations"):
         ledger_parts.setdefault(key, []).append(value)
     elif what.startswith("formulas+equations"):
@@ -564,10 +564,9 @@ def _gather(
 def _lend_formula_rows(
     stack: contextlib.ExitStack, stored: dict[Wanted, Any], steps: list[Step]
 ) -> None:
-    """Lend formula rows to the ledger's checks that re-read them (before the fork, so a
-    worker inherits them too), rather than integrate them again: the stored ones; else, for a
-    ledger judged without its paper's formula checks (``pendcli equations``) whose rows name
-    one (``measured``), the checks computed here, once, not by each part of the ledger."""
+    """Lend formula rows to the ledger's checks that re-read them (before the fork: a worker
+    inherits them): the stored ones; else, for a ledger judged without its paper's formula
+    checks (``pendcli equations``) whose rows name one (``measured``), those computed here."""
     from pendcli.data.ledger import load_ledger
     from pendcli.verify.claims import sharing_formula_rows
 
