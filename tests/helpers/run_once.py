@@ -33,3 +33,26 @@ def once_per_run(factory: pytest.TempPathFactory, name: str, compute: Callable[[
         written.write_bytes(pickle.dumps(value))
         os.replace(written, path)
         return value
+
+
+C = TypeVar("C")
+S = TypeVar("S")
+
+
+def judged_once(
+    factory: pytest.TempPathFactory,
+    name: str,
+    cases: dict[str, list[C]],
+    judge: Callable[[C], S],
+    label: Callable[[C], str],
+) -> dict[str, list[tuple[C, S]]]:
+    """Each case of ``cases`` (made by every worker alike) with ``judge(case)``, judged once
+    for the run: a worker reading the verdicts pairs them with its own cases by ``label``."""
+    verdicts = once_per_run(
+        factory,
+        name,
+        lambda: {k: [(label(c), judge(c)) for c in made] for k, made in cases.items()},
+    )
+    paired = {k: list(zip(made, verdicts[k], strict=True)) for k, made in cases.items()}
+    assert all(label(c) == kept for pairs in paired.values() for c, (kept, _) in pairs)
+    return {k: [(c, verdict) for c, (_, verdict) in pairs] for k, pairs in paired.items()}

@@ -56,9 +56,7 @@ tolerance below 1 lets it pass; a series is judged by its Cauchy coefficients, n
 With each mutation's patch removed, each of these tests fails (0 rows catch it). A mutation's
 test judges the rows in order until as many as asserted have caught it. CPU of the whole file,
 one process: 23 s (the sample and its baseline 15 s, its references 7 s of it; the mutations
-6 s). Under xdist the choice of the sample and the baseline's statuses are made once for the
-run (tests/helpers/run_once.py): the other worker builds the sampled rows' references and
-cases alone (its setup 5-6 s of CPU under load, not 15). The
+6 s); the
 fast suite keeps one representative, the tolerance loosened to 1e-3 caught by each of five
 holds rows (1.2 s alone); the rest is slow (tests/conftest.py).
 """
@@ -77,7 +75,7 @@ from typing import Any
 import pytest
 from helpers.ledgers import committed_ledger
 from helpers.mutations import altered_field, judged_after_edit
-from helpers.run_once import once_per_run
+from helpers.run_once import judged_once, once_per_run
 
 from pendcli.base.errors import PendcliError
 from pendcli.data.ledger_rows import LedgerRow
@@ -511,28 +509,16 @@ def status_or_raised(case: Case) -> str | None:
 
 @pytest.fixture(scope="module")
 def sample(tmp_path_factory: pytest.TempPathFactory) -> list[Sampled]:
-    """The sample, chosen once for the run (the choice builds every row's reference): a
-    worker that reads the choice builds the sampled rows' references alone."""
-    chosen = once_per_run(
-        tmp_path_factory, "engine-mutations-sample", lambda: [s.row.id for s in sampled_rows()]
-    )
+    # chosen and judged once for the run: the other worker builds the chosen rows' references
+    chosen = once_per_run(tmp_path_factory, "engine", lambda: [s.row.id for s in sampled_rows()])
     rows = {row.id: row for paper in PAPERS for row in committed_ledger(paper).rows}
     return [Sampled(rows[row_id], reference_of(rows[row_id])) for row_id in chosen]
 
 
 @pytest.fixture(scope="module")
 def baseline(sample: list[Sampled], tmp_path_factory: pytest.TempPathFactory) -> Judged:
-    """Each sampled case and its status by the unmutated engine, judged once for the run;
-    each worker makes the cases (its mutations judge them again)."""
     cases = {s.row.id: cases_of(s) for s in sample}
-    statuses = once_per_run(
-        tmp_path_factory,
-        "engine-mutations-baseline",
-        lambda: {row: [(c.what, status_or_raised(c)) for c in made] for row, made in cases.items()},
-    )
-    judged = {row: list(zip(made, statuses[row], strict=True)) for row, made in cases.items()}
-    assert all(c.what == what for pairs in judged.values() for c, (what, _) in pairs)
-    return {row: [(c, status) for c, (_, status) in pairs] for row, pairs in judged.items()}
+    return judged_once(tmp_path_factory, "engine-cases", cases, status_or_raised, lambda c: c.what)
 
 
 def rightly_judged(baseline: Judged) -> dict[str, list[Case]]:
