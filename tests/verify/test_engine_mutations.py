@@ -75,6 +75,7 @@ from typing import Any
 import pytest
 from helpers.ledgers import committed_ledger
 from helpers.mutations import altered_field, judged_after_edit
+from helpers.run_once import judged_once, once_per_run
 
 from pendcli.base.errors import PendcliError
 from pendcli.data.ledger_rows import LedgerRow
@@ -507,13 +508,17 @@ def status_or_raised(case: Case) -> str | None:
 
 
 @pytest.fixture(scope="module")
-def sample() -> list[Sampled]:
-    return list(sampled_rows())
+def sample(tmp_path_factory: pytest.TempPathFactory) -> list[Sampled]:
+    # chosen and judged once for the run: the other worker builds the chosen rows' references
+    chosen = once_per_run(tmp_path_factory, "engine", lambda: [s.row.id for s in sampled_rows()])
+    rows = {row.id: row for paper in PAPERS for row in committed_ledger(paper).rows}
+    return [Sampled(rows[row_id], reference_of(rows[row_id])) for row_id in chosen]
 
 
 @pytest.fixture(scope="module")
-def baseline(sample: list[Sampled]) -> Judged:
-    return {s.row.id: [(c, status_or_raised(c)) for c in cases_of(s)] for s in sample}
+def baseline(sample: list[Sampled], tmp_path_factory: pytest.TempPathFactory) -> Judged:
+    cases = {s.row.id: cases_of(s) for s in sample}
+    return judged_once(tmp_path_factory, "engine-cases", cases, status_or_raised, lambda c: c.what)
 
 
 def rightly_judged(baseline: Judged) -> dict[str, list[Case]]:
