@@ -121,8 +121,8 @@ def run_entry(main: Callable[[], int], prog: str) -> int:
     :class:`~pendcli.base.errors.PendcliError` is one line on stderr, never a traceback."""
     from pendcli.base.errors import PendcliError
 
-    stop_on_signals()
     try:
+        stop_on_signals()  # inside the block: a signal as soon as its handler is in is caught
         return main()
     except Interrupted as exc:
         print(f"{prog}: {exc}", file=sys.stderr)

@@ -36,15 +36,18 @@ def run() -> None:
     # pairs); the peak memory stays the same (156 MB both). Forked workers inherit it.
     gc.set_threshold(50_000, 20, 20)
     set_quiet(False)
-    from pendcli.base.interrupts import stop_on_signals
+    from pendcli.base.interrupts import Interrupted, stop_on_signals
 
-    stop_on_signals()  # Ctrl-C, TERM, HUP: one line, status 128 + the signal (_invoke)
-    original = protect_streams()
-    try:
-        code = _invoke(sys.argv[1:])
-        code = _flush_standard_output(code)
-    finally:
-        sys.stdout = original
+    try:  # a stop that lands outside _invoke (as the handlers go in, at the flush): one line
+        stop_on_signals()  # Ctrl-C, TERM, HUP: one line, status 128 + the signal (_invoke)
+        original = protect_streams()
+        try:
+            code = _invoke(sys.argv[1:])
+            code = _flush_standard_output(code)
+        finally:
+            sys.stdout = original
+    except Interrupted as exc:
+        code = _fail(str(exc), exc.status)
     sys.exit(code)
 
 

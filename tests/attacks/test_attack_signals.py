@@ -400,3 +400,41 @@ def test_a_stop_while_a_worker_computes_ends_the_run_with_its_line(
     assert proc.returncode == 128 + signum, stderr
     assert stderr == f"pendcli: error: interrupted by {signum.name}\n"
     assert session_processes(proc.pid) == []
+
+
+# A signal that lands the moment the handlers are in place, before the entry point has begun
+# its work: the stop is the entry point's one line and status, not a traceback (it was a
+# traceback and status 1 when the signal came between the handlers' installation and the
+# block that catches the stop: a `make bench` stopped early, once in a few runs).
+_SIGNAL_AT_ONCE = """
+import os, signal, sys
+from pendcli.base import interrupts
+
+installed = interrupts.stop_on_signals
+
+def installed_then_signalled():
+    installed()
+    os.kill(os.getpid(), signal.SIGINT)  # its handler raises here, at once
+
+interrupts.stop_on_signals = installed_then_signalled
+{call}
+"""
+
+
+@pytest.mark.parametrize(
+    ("call", "line"),
+    [
+        ("sys.exit(interrupts.run_entry(lambda: 0, 'python -m tools.x'))", "python -m tools.x"),
+        ("sys.argv[1:] = ['--version']\nfrom pendcli.cli.main import run\nrun()", "pendcli: error"),
+    ],
+    ids=["tools", "pendcli"],
+)
+def test_a_signal_as_the_handlers_are_installed_is_one_line_130(call: str, line: str) -> None:
+    proc = subprocess.run(
+        [sys.executable, "-c", _SIGNAL_AT_ONCE.format(call=call)],
+        env=child_env(),
+        capture_output=True,
+        text=True,
+    )
+    assert (proc.returncode, proc.stdout) == (130, ""), proc.stderr
+    assert proc.stderr == f"{line}: interrupted by SIGINT\n"
