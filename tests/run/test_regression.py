@@ -326,14 +326,27 @@ def test_check_fails_naming_the_row_whose_stored_derivation_the_code_no_longer_d
 ):
     """`pendcli check` derives the ledger again (Tisserand's here) and compares it with
     tables/derivations: one stored residual changed makes it fail before any table is
-    recomputed, naming the row and its reference; the untouched store passes this step."""
+    recomputed, naming the row and its reference; the untouched store passes this step.
+    The code and tables are the same for both checks: the ledger is derived once (the first
+    check's derivation served to the second), the second compares a tampered store."""
 
     from pendcli.papers import registry
     from pendcli.run import regression
-    from pendcli.verify import derivation_store
+    from pendcli.verify import derivation_store, ledger_references
 
     monkeypatch.setattr(registry, "ledger_papers", lambda: ["tisserand"])
+    derived = ledger_references.derivation_records
+    fresh: dict[str, dict] = {}
+
+    def derived_once(paper, root=None):  # type: ignore[no-untyped-def]
+        assert root is None
+        if paper.key not in fresh:
+            fresh[paper.key] = derived(paper)
+        return fresh[paper.key]
+
+    monkeypatch.setattr(ledger_references, "derivation_records", derived_once)
     assert regression._derivations(False, None) == []
+    assert list(fresh) == ["tisserand"]  # derived here, not forked away
     tables, rows = derivation_store.text_records("tisserand")  # each expression as srepr
     row_id, record = next(
         (k, v) for k, v in sorted(rows.items()) if "live" not in v and "forms" in v
