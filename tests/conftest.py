@@ -58,7 +58,7 @@ SLOW_FAMILIES = {
     "tests/run/test_regression.py::test_check_passes_untouched_and_fails_tampered": "two checks",
     "tests/run/test_reproduce_steps.py::*": "Tisserand's claims and ledger judged whole",
     "tests/run/test_regression.py::test_check_fails_naming_the_row_whose_*": "Tisserand's ledger "
-    "derived twice",
+    "derived once for two checks",
     "tests/papers/lecornu/test_prose_lecornu_from_line_462.py::test_the_reference_of_*": "the "
     "table after (26), sympy",
     "tests/papers/lecornu/test_prose_scales.py::test_the_engine_judges_*": "four inequalities "

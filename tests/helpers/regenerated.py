@@ -40,6 +40,10 @@ asked = {"keys": tuple(keys()), "formulas": True, "equations": True, "stability"
 result = reproduce_all(keys(), formulas=True, equations=True, stability=False, quiet=True, jobs=1)
 sys.stdout.buffer.write(pickle.dumps((asked, result)))
 """
+# the same computation in two processes (a forked worker beside the computing one): the
+# two-process side of the determinism tests, shared by them
+TWO_JOBS = "reproduce-all-two-jobs.pickle"
+COMPUTE_TWO_JOBS = COMPUTE.replace("jobs=1)", "jobs=2)")
 DRIFT = "derivation-drift.pickle"
 COMPUTE_DRIFT = """
 import pickle, sys
@@ -106,11 +110,14 @@ def start_early(items: list[pytest.Item], root: Path) -> None:
     selected ``items`` will read: every table's (a test asking for ``computed_tables`` or
     ``reproduce_computed_once``) and the derivations' (a test of `check`'s output, its id
     naming check, asking for ``reproduce_computed_once``). A worker asking for one then
-    finds it done or under way, instead of both workers waiting idle on one computation."""
+    finds it done or under way, instead of both workers waiting idle on one computation. The
+    same computation with two jobs (the determinism tests' ``computed_with_two_jobs``) too."""
     served = [i for i in items if "reproduce_computed_once" in getattr(i, "fixturenames", ())]
     tables = served or [i for i in items if "computed_tables" in getattr(i, "fixturenames", ())]
     wanted = [(NAME, COMPUTE)] if tables else []
     wanted += [(DRIFT, COMPUTE_DRIFT)] if any("check" in i.nodeid for i in served) else []
+    two = any("computed_with_two_jobs" in getattr(i, "fixturenames", ()) for i in items)
+    wanted += [(TWO_JOBS, COMPUTE_TWO_JOBS)] if two else []
     for name, script in wanted:
         try:
             os.close(os.open(root / f"{name}.started", os.O_CREAT | os.O_EXCL | os.O_WRONLY))

@@ -3,8 +3,9 @@ fresh copy of the committed tables is left as it is.
 
 Each run is a fresh process, so nothing one run leaves behind (a global mpmath precision, a
 cache, an import) can reach the other. The one-job side is the computation of every table the
-run shares (tests/helpers/regenerated.py: a fresh process, one job), written or printed by the
-real command in another fresh process; the two-job side is the whole command.
+run shares (tests/helpers/regenerated.py: a fresh process, one job); the two-job side is the
+same computation in another fresh process with two jobs (a forked worker beside it), done once
+for both tests; each is written or printed by the real command in a fresh process of its own.
 
 Found: the committed formula tables had been written on a CPU whose BLAS and SIMD kernels
 round differently; the adaptive ODE steps carry those last bits to ~1e-9 in an observed order.
@@ -21,11 +22,19 @@ import sys
 from pathlib import Path
 
 import pytest
-from helpers.regenerated import SERVED_CLI
+from helpers.regenerated import COMPUTE_TWO_JOBS, SERVED_CLI, TWO_JOBS, computed_once, shared_root
 
 import pendcli
 
 TABLES = Path(pendcli.__file__).parent / "_tables"
+
+
+@pytest.fixture(scope="session")
+def computed_with_two_jobs(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Every table's computation from the committed tables in a fresh process with two jobs,
+    done once per run for all workers (beside the one-job computation of ``computed_tables``)."""
+    root = shared_root(tmp_path_factory, os.environ.get("PYTEST_XDIST_WORKER", "master"))
+    return computed_once(root, TWO_JOBS, COMPUTE_TWO_JOBS)
 
 
 def pendcli(served: Path | None) -> list[str]:
@@ -60,9 +69,10 @@ def changed_lines(old: bytes, new: bytes) -> list[str]:
 
 @pytest.mark.slow
 def test_check_update_on_a_fresh_copy_changes_no_byte_with_one_or_two_processes(
-    tmp_path: Path, computed_tables: Path
+    tmp_path: Path, computed_tables: Path, computed_with_two_jobs: Path
 ) -> None:
-    one, two = regenerate(tmp_path, 1, computed_tables), regenerate(tmp_path, 2)
+    one = regenerate(tmp_path, 1, computed_tables)
+    two = regenerate(tmp_path, 2, computed_with_two_jobs)
     assert one.keys() == two.keys()
     for name in one:
         assert one[name] == two[name], (name, changed_lines(one[name], two[name]))
@@ -86,6 +96,6 @@ def reproduce_json(jobs: int, served: Path | None = None) -> bytes:
 
 @pytest.mark.slow
 def test_reproduce_json_with_equations_is_the_same_bytes_with_one_or_two_processes(
-    computed_tables: Path,
+    computed_tables: Path, computed_with_two_jobs: Path
 ) -> None:
-    assert reproduce_json(1, computed_tables) == reproduce_json(2)
+    assert reproduce_json(1, computed_tables) == reproduce_json(2, computed_with_two_jobs)

@@ -144,12 +144,29 @@ def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
     """Untouched, `pendcli check` passes and never reads the result cache (it is the CI's
     drift detector: the cache's key cannot see an environment that changes a BLAS kernel, so
     it always computes); one run with a printed value edited, a committed verdict and a
-    committed ledger status tampered names each of the three drifts by its row."""
+    committed ledger status tampered names each of the three drifts by its row. The second
+    check computes the claims and formulas again and is served the first one's ledgers (the
+    tampered ledger table is a committed one: what the ledger computes is unchanged; the
+    edited published value would only make Charbonnier's ledger derived afresh)."""
+    from dataclasses import replace
+
     from helpers.cli import invoke
 
     from pendcli.api import check
     from pendcli.base.cache import ResultCache
     from pendcli.data.tables import clear_table_cache, tables_dir
+    from pendcli.run import reproduce
+
+    computed, first = reproduce.reproduce_all, []
+
+    def kept(*args, **kwargs):  # type: ignore[no-untyped-def]
+        first.append(computed(*args, **kwargs))
+        return first[-1]
+
+    def ledgers_kept(keys, formulas, quiet, jobs, equations):  # type: ignore[no-untyped-def]
+        assert equations and set(keys) == set(first[0].equations)
+        result = computed(keys, formulas=formulas, quiet=quiet, jobs=jobs, equations=False)
+        return replace(result, equations=first[0].equations)
 
     shutil.copytree(tables_dir(), tmp_path / "tables")
     monkeypatch.setenv("PENDCLI_TABLES", str(tmp_path / "tables"))
@@ -159,6 +176,7 @@ def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
         with monkeypatch.context() as spied:
             spied.setattr(ResultCache, "get", lambda self, *args: reads.append(args))
             spied.setenv("PENDCLI_CACHE", str(tmp_path / "cache"))
+            spied.setattr(reproduce, "reproduce_all", kept)
             result = invoke("check", "--format", "json")
         assert result.code == 0, result.err
         assert reads == [] and not any((tmp_path / "cache").rglob("*"))
@@ -175,6 +193,8 @@ def test_check_passes_untouched_and_fails_tampered(tmp_path, monkeypatch):
         lines[row] = lines[row].replace(",holds,", ",fails,")
         ledger.write_text("".join(lines), "utf-8")
         clear_table_cache()
+        assert len(first) == 1
+        monkeypatch.setattr(reproduce, "reproduce_all", ledgers_kept)
         drifts = {(d.table, d.id, d.column, d.committed, d.now) for d in check()}
         tables = {d[:3] for d in drifts}
         assert ("charbonnier-claims.csv", "charbonnier.I_pi.n2", "published") in tables
@@ -326,14 +346,27 @@ def test_check_fails_naming_the_row_whose_stored_derivation_the_code_no_longer_d
 ):
     """`pendcli check` derives the ledger again (Tisserand's here) and compares it with
     tables/derivations: one stored residual changed makes it fail before any table is
-    recomputed, naming the row and its reference; the untouched store passes this step."""
+    recomputed, naming the row and its reference; the untouched store passes this step.
+    The code and tables are the same for both checks: the ledger is derived once (the first
+    check's derivation served to the second), the second compares a tampered store."""
 
     from pendcli.papers import registry
     from pendcli.run import regression
-    from pendcli.verify import derivation_store
+    from pendcli.verify import derivation_store, ledger_references
 
     monkeypatch.setattr(registry, "ledger_papers", lambda: ["tisserand"])
+    derived = ledger_references.derivation_records
+    fresh: dict[str, dict] = {}
+
+    def derived_once(paper, root=None):  # type: ignore[no-untyped-def]
+        assert root is None
+        if paper.key not in fresh:
+            fresh[paper.key] = derived(paper)
+        return fresh[paper.key]
+
+    monkeypatch.setattr(ledger_references, "derivation_records", derived_once)
     assert regression._derivations(False, None) == []
+    assert list(fresh) == ["tisserand"]  # derived here, not forked away
     tables, rows = derivation_store.text_records("tisserand")  # each expression as srepr
     row_id, record = next(
         (k, v) for k, v in sorted(rows.items()) if "live" not in v and "forms" in v
