@@ -215,15 +215,6 @@ def test_list_shows_printed_units_raised() -> None:
 # --- the whole report (slow: every paper reproduced) ---------------------------------------
 
 
-def _figure_placeholder(fig: object, path: str | Path) -> Path:
-    """A figure's file written without drawing it: the pages embed its bytes in an ``<img>``
-    attribute, which no reader reads as text, and show its caption, which is the figure's."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_bytes(b"a figure not drawn")
-    return path
-
-
 def test_the_pages_of_a_whole_report_show_no_internal_name(
     tmp_path: Path, computed_tables: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -232,12 +223,12 @@ def test_the_pages_of_a_whole_report_show_no_internal_name(
     (their captions and titles made as in a report) but not rendered to pixels, which the
     scan does not read."""
     from helpers.regenerated import served
+    from helpers.undrawn_figures import figures_not_rendered
 
-    from pendcli.base import plotting
     from pendcli.output.report import write_report
     from pendcli.papers import registry
 
-    monkeypatch.setattr(plotting, "save_figure", _figure_placeholder)
+    figures_not_rendered(monkeypatch)
     result = served(computed_tables)(registry.keys(), equations=True, jobs=1)
     write_report(result, tmp_path / "out", quiet=True, jobs=1)
     out = tmp_path / "out"
