@@ -18,7 +18,6 @@ import os
 import re
 import shutil
 import subprocess
-import sys
 import xml.etree.ElementTree as ET
 from html.parser import HTMLParser
 from pathlib import Path
@@ -373,11 +372,15 @@ def markup_tables(folder: Path) -> Path:
 
 
 def test_reproduce_out_of_tables_full_of_markup(tmp_path: Path) -> None:
+    """`reproduce --out` in a process of its own, its figures plotted but not rendered to
+    pixels (tests/helpers/undrawn_figures.py: the pages' text is what is read)."""
+    from helpers.undrawn_figures import UNDRAWN_CLI
+
     tables = markup_tables(tmp_path / "tables")
     out = tmp_path / "out"
     env = {**os.environ, "PENDCLI_TABLES": str(tables), "PENDCLI_JOBS": "1"}
-    command = [sys.executable, "-m", "pendcli", "reproduce", "-p", "tisserand", "--no-formulas",
-               "--no-stability", "--out", str(out)]  # fmt: skip
+    command = [*UNDRAWN_CLI, "reproduce", "-p", "tisserand", "--no-formulas", "--no-stability",
+               "--out", str(out)]  # fmt: skip
     done = subprocess.run(command, env=env, capture_output=True, text=True, timeout=900)
     assert done.returncode == 0, done.stderr
     report = (out / "report.md").read_text(encoding="utf-8")

@@ -173,7 +173,11 @@ def test_two_concurrent_runs_on_out_star_keep_every_folder_beside_it_and_leave_a
 ) -> None:
     """Two runs at once on ``--out '*'``: each ends 0 or refused in one line, the folder is a
     whole report; the hidden folders beside it (matched by an unescaped glob ``.*.*-*``) are
-    all kept, pendcli's own names of a live writer too; a dead writer's is removed."""
+    all kept, pendcli's own names of a live writer too; a dead writer's is removed. The
+    figures are plotted but not rendered to pixels (tests/helpers/undrawn_figures.py): the
+    folders are what is read."""
+    from helpers.undrawn_figures import UNDRAWN_CLI
+
     keep = [".R9.keep-me", ".my.notes-2024", ".config.bak-1", ".*.new-1-abcdefgh"]
     for name in keep:  # the last: pendcli's own name, but pid 1 is alive
         (tmp_path / name).mkdir()
@@ -183,7 +187,7 @@ def test_two_concurrent_runs_on_out_star_keep_every_folder_beside_it_and_leave_a
     env = child_env()
     runs = [
         subprocess.Popen(
-            [str(PENDCLI), *CHEAP, "--out", "*"],
+            [*UNDRAWN_CLI, *CHEAP, "--out", "*"],
             cwd=tmp_path,
             env=env,
             stdout=subprocess.DEVNULL,

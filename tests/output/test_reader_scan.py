@@ -216,15 +216,19 @@ def test_list_shows_printed_units_raised() -> None:
 
 
 def test_the_pages_of_a_whole_report_show_no_internal_name(
-    tmp_path: Path, computed_tables: Path
+    tmp_path: Path, computed_tables: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Every paper's pages, written from the run's shared computation of every table
-    (tests/helpers/regenerated.py): what is scanned is the writing."""
+    (tests/helpers/regenerated.py): what is scanned is the writing. The figures are plotted
+    (their captions and titles made as in a report) but not rendered to pixels, which the
+    scan does not read."""
     from helpers.regenerated import served
+    from helpers.undrawn_figures import figures_not_rendered
 
     from pendcli.output.report import write_report
     from pendcli.papers import registry
 
+    figures_not_rendered(monkeypatch)
     result = served(computed_tables)(registry.keys(), equations=True, jobs=1)
     write_report(result, tmp_path / "out", quiet=True, jobs=1)
     out = tmp_path / "out"
