@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Mapping
-from html import escape
+from html import escape, unescape
 
 __all__ = [
     "figure_text",
@@ -112,7 +112,8 @@ _KEEP = ("math", "style", "script", "code", "pre")
 
 
 def html_for_reader(page: str, references: Mapping[str, str] | None = None) -> str:
-    """Every text node of ``page`` (escaped HTML) through :func:`for_reader`."""
+    """Every text node of ``page`` (escaped HTML) through :func:`for_reader`, and every
+    image's alt text, which a screen reader speaks."""
     out: list[str] = []
     inside: list[str] = []
     for piece in _TAG.split(page):
@@ -125,12 +126,29 @@ def html_for_reader(page: str, references: Mapping[str, str] | None = None) -> s
                         inside.remove(tag)
                 else:
                     inside.append(tag)
-            out.append(piece)
+            out.append(
+                piece if inside or ' alt="' not in piece else _alt_for_reader(piece, references)
+            )
         elif inside or not piece.strip():
             out.append(piece)
         else:
             out.append(for_reader(piece, references, html=True))
     return "".join(out)
+
+
+# An image's alt text, which a screen reader speaks (escaped HTML, in double quotes)
+_ALT = re.compile(r'(\salt=")([^"]*)(")')
+
+
+def _alt_for_reader(tag: str, references: Mapping[str, str] | None) -> str:
+    """``tag`` with its alt text read as a reader reads it: plain (no tag can stand in an
+    attribute), escaped again, quotes included."""
+
+    def read(match: re.Match[str]) -> str:
+        shown = for_reader(unescape(match.group(2)), references, plain=True)
+        return f"{match.group(1)}{escape(shown, quote=True)}{match.group(3)}"
+
+    return _ALT.sub(read, tag)
 
 
 def markdown_for_reader(text: str, references: Mapping[str, str] | None = None) -> str:

@@ -53,6 +53,25 @@ def test_the_scan_knows_the_package_s_module_paths() -> None:
     assert not internal_names("the file tables/papers/lecornu.txt")
 
 
+def alt_texts(page: str) -> list[str]:
+    """The images' alt texts of an HTML page, as a screen reader speaks them."""
+    return [html.unescape(v) for v in re.findall(r'\salt="([^"]*)"', page)]
+
+
+def test_an_images_alt_text_is_read_as_its_caption_is() -> None:
+    """A module path in a figure's caption is dropped from the alt text as from the caption
+    shown; the alt text stays escaped (a quote or a tag in it cannot leave the attribute)."""
+    from pendcli.data.reader_text import html_for_reader
+
+    caption = "residuals (verify/printed_check), &lt;b&gt; &#34;x&#34;"
+    page = f'<figure><img alt="{caption}" src="data:,"><figcaption>{caption}</figcaption></figure>'
+    assert internal_names(" ".join(alt_texts(page)))  # the scan sees the path unread
+    read = html_for_reader(page)
+    (alt,) = alt_texts(read)
+    assert internal_names(alt) == [] and alt == visible_text(read).strip()
+    assert alt == 'residuals, <b> "x"' and "<b>" not in read
+
+
 def visible_text(page: str) -> str:
     """An HTML page's text as a reader sees it: no tags, no MathML, style or script."""
     for tag in ("math", "style", "script"):
@@ -234,4 +253,5 @@ def test_the_pages_of_a_whole_report_show_no_internal_name(
     out = tmp_path / "out"
     assert internal_names((out / "report.md").read_text("utf-8")) == []
     for page in [out / "report.html", *sorted((out / "papers").glob("*.html"))]:
-        assert internal_names(visible_text(page.read_text("utf-8"))) == [], page.name
+        text = page.read_text("utf-8")
+        assert internal_names(" ".join([visible_text(text), *alt_texts(text)])) == [], page.name
