@@ -321,17 +321,21 @@ class ForkedWorkers:
         run: Callable[[T], R],
         done: Callable[[T, R], None] = lambda item, result: None,
         name: Callable[[T], str] | None = None,
+        first: Callable[[], object] | None = None,
     ) -> list[R]:
         """``run`` over ``items``, shared by this process and the workers, each taking the
         next item when free (put the costliest first); results in the order of ``items``.
         ``done`` is called here for each item, as soon as its result is here; ``name`` says
-        what an item is, should a worker die computing it."""
+        what an item is, should a worker die computing it; ``first`` is done here while the
+        workers take their first items (with no worker, not at all: nothing runs beside it)."""
         if not self.workers:
             return [_done(done, item, run(item)) for item in items]
         self.label = (lambda i: name(items[i])) if name else (lambda i: f"item {i + 1}")
         results: dict[int, R] = {}
         with self._watching():
             self._deal(items, run)
+            if first is not None:
+                first()
             assert self.turns is not None
             while (index := self.turns.take()) is not None:
                 results[index] = _done(done, items[index], run(items[index]))

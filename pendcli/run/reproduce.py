@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import contextlib
 import functools
-import os
 import sys
 from collections.abc import Callable, Iterable
 from contextlib import nullcontext
@@ -270,12 +269,11 @@ def _computed(
         _lend_formula_rows(lent, stored, steps)
         done = lent.enter_context(counting_rows())  # before the fork: workers count too
         bar = progress_bar(quiet, len(steps), title, (rows, done) if rows else None)
-        # done here while the worker takes its first step
-        _FIRST_HERE[:] = [(os.getpid(), meanwhile)] if meanwhile and workers else []
-        lent.callback(_FIRST_HERE.clear)
         with ForkedWorkers(workers) as pool, bar as advance:
             run = functools.partial(_run_step, papers=keys)
-            values = pool.share(order, run, lambda step, _: advance(_named(step), 1), _named)
+            values = pool.share(
+                order, run, lambda step, _: advance(_named(step), 1), _named, first=meanwhile
+            )
     by_step = dict(zip(order, values, strict=True))
     computed: dict[Wanted, Any] = {}
     ledger_parts: dict[str, list[tuple[int, list[EquationRow]]]] = {}
@@ -512,12 +510,7 @@ def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
                 references()
 
 
-_FIRST_HERE: list[tuple[int, Callable[[], object]]] = []  # (pid, work): before its next step
-
-
 def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
-    while _FIRST_HERE and _FIRST_HERE[0][0] == os.getpid():
-        _FIRST_HERE.pop()[1]()
     key, what = step
     if what == "claims":
         return claim_rows(key)

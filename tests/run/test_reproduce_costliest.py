@@ -40,7 +40,12 @@ class _Recording:
         return None
 
     def share(
-        self, items: Sequence[Any], run: Callable[[Any], Any], done: Any = None, name: Any = None
+        self,
+        items: Sequence[Any],
+        run: Callable[[Any], Any],
+        done: Any = None,
+        name: Any = None,
+        first: Any = None,
     ) -> list[Any]:
         _Recording.taken[:] = list(items)
         return [run(item) for item in items]
