@@ -156,32 +156,10 @@ class _Compiler:
         return found
 
     def value(self, index: int) -> tuple[Node, frozenset[str]]:
-        found = self._values.get(index)
-        if found is None:
-            try:
-                found = _value_node(self, self.nodes.nodes[index])
-            except Failure as exc:
-                found = Unsupported(repr(exc)[:60])
-            except Unsupported as exc:
-                found = exc
-            self._values[index] = found
-        if isinstance(found, Unsupported):
-            raise found
-        return found
+        return _kept(self._values, index, lambda: _value_node(self, self.nodes.nodes[index]))
 
     def size(self, index: int) -> Node:
-        found = self._sizes.get(index)
-        if found is None:
-            try:
-                found = _size_node(self, index)
-            except Failure as exc:
-                found = Unsupported(repr(exc)[:60])
-            except Unsupported as exc:
-                found = exc
-            self._sizes[index] = found
-        if isinstance(found, Unsupported):
-            raise found
-        return found
+        return _kept(self._sizes, index, lambda: _size_node(self, index))
 
     def integer(self, index: int) -> int | None:
         """A node that is an integer literal, its value; None for anything else."""
@@ -190,6 +168,23 @@ class _Compiler:
 
     def head(self, index: int) -> str:
         return str(self.nodes.nodes[index][0])
+
+
+def _kept(memo: dict[int, Any], index: int, compile_node: Callable[[], Any]) -> Any:
+    """``memo[index]``, compiled once: what cannot be compiled is kept too and raised again
+    (an Unsupported; a failure of the compilation becomes one)."""
+    found = memo.get(index)
+    if found is None:
+        try:
+            found = compile_node()
+        except Failure as exc:
+            found = Unsupported(repr(exc)[:60])
+        except Unsupported as exc:
+            found = exc
+        memo[index] = found
+    if isinstance(found, Unsupported):
+        raise found
+    return found
 
 
 # each table's compiler (its nodes' functions, kept while the table is)
