@@ -39,6 +39,9 @@ _EXPECTED = {
 def usage_message(exc: Exception, args: list[str]) -> str:
     """click's or pydantic's wording of a parse error in pendcli's: the option, the value, why."""
     param = getattr(exc, "param", None)
+    unknown = _unknown_option(exc, param)
+    if unknown is not None:
+        return f"No such option: {unknown}"
     if param is None or not isinstance(exc, typer.BadParameter):
         return _format_message(exc)
     if not str(getattr(exc, "message", "")):  # a missing option or argument: click's wording
@@ -61,6 +64,28 @@ def usage_message(exc: Exception, args: list[str]) -> str:
     if message.startswith("must "):  # pendcli's own readers (pendcli.cli.values)
         return f"{name} {message}"
     return f"{name}: {message}"
+
+
+_EXTRA = re.compile(r"Got unexpected extra argument(?:s|\(s\))? \((?P<first>[^)\s]+)")
+
+
+def _unknown_option(exc: Exception, param: Any) -> str | None:
+    """An option the command does not have, where a command that reads negative numbers as
+    arguments (``charbonnier integral -1``) took it for its argument or an extra one: click
+    then says "N must be an integer, got '--n'" or "unexpected extra argument (--n)"."""
+    if param is not None and getattr(param, "param_type_name", None) == "argument":
+        errors = getattr(exc.__cause__, "errors", None)
+        value = (errors()[0] if callable(errors) and errors() else {}).get("input")
+    else:
+        match = _EXTRA.match(_format_message(exc))
+        value = match["first"] if match else None
+    if not isinstance(value, str) or not value.startswith("-"):
+        return None
+    try:
+        float(value)
+    except ValueError:
+        return value.split("=", 1)[0]
+    return None  # a negative number: not an option
 
 
 def _format_message(exc: Exception) -> str:

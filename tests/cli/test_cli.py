@@ -143,6 +143,10 @@ def test_help_summaries_are_whole_sentences():
         (("lecornu", "claims", "--g", "abc"), "--g must be a number, got 'abc'"),
         (("lecornu", "zeros", "--count", "2.5"), "--count must be an integer, got '2.5'"),
         (("charbonnier", "integral", "abc"), "N must be an integer, got 'abc'"),
+        # integral reads a negative N, so click took an unknown option for N or an extra one
+        (("charbonnier", "integral", "--n", "1e30"), "No such option: --n"),
+        (("charbonnier", "integral", "4", "--bogus=3"), "No such option: --bogus"),
+        (("charbonnier", "integral", "4", "-7"), "Got unexpected extra argument(s) (-7)"),
         (
             ("charbonnier", "table", "-f", "xml"),
             "-f must be one of table, json, csv or markdown, got 'xml'",
