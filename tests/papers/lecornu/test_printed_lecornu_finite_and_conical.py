@@ -162,7 +162,7 @@ def _dimension_verdict(text: str) -> str:
 def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
     """Line 1008: l θ_tt + 2θ_t + (g/b²) sin θ − … is not (43) in l; with d²θ/dl², dθ/dl
     (and l³) it is. Symbolic (the engine, each slip alone) and dimensional here; numeric:
-    (43) integrated by mpmath, the two forms evaluated along the solution."""
+    (43) integrated by scipy, the two forms evaluated by mpmath along the solution."""
     reference = cited_reference(paper("lecornu"), "reference_conical_l_form")
     l3 = "c**2*cos(theta)/(b**2*l**3*sin(theta)**3) = 0"
     in_t = f"l*d2theta_dt2 + 2*dtheta_dt + g/b**2*sin(theta) - {l3}"
@@ -176,7 +176,11 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
 
     a, b, g, c = (mpmath.mpf(x) for x in ("1", "0.3", "9.81", "0.4"))
     # 15 digits: the reading's residual along the solution is then ~1e-14, the printed form's
-    # ~87; at 25 digits the Taylor integrator took 4 s of CPU for the same verdict
+    # ~87. The state (θ, θ') at t = 0.5 comes from scipy's DOP853 at 1e-12 (mpmath's Taylor
+    # integrator gave the same state to 2e-12 in 0.4 s of CPU, not 2 ms): the residuals take
+    # θ'' from (43) itself, so they judge the two forms, not the integration's accuracy
+    from scipy.integrate import solve_ivp
+
     with mpmath.workdps(15):
 
         def rhs(t: object, y: list[object]) -> list[object]:
@@ -189,9 +193,16 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
                 + c**2 * mpmath.cos(theta) / (length**4 * mpmath.sin(theta) ** 3),
             ]
 
-        solution = mpmath.odefun(rhs, 0, [mpmath.mpf("0.6"), mpmath.mpf(0)])
+        solved = solve_ivp(
+            lambda t, y: [float(v) for v in rhs(t, y)],  # type: ignore[arg-type]
+            (0.0, 0.5),
+            [0.6, 0.0],
+            method="DOP853",
+            rtol=1e-12,
+            atol=1e-12,
+        )
         t = mpmath.mpf("0.5")
-        theta, dtheta = solution(t)
+        theta, dtheta = (mpmath.mpf(v) for v in solved.y[:, -1])
         d2theta = rhs(t, [theta, dtheta])[1]
         length = a + b * t
         tail = g / b**2 * mpmath.sin(theta) - c**2 * mpmath.cos(theta) / (
@@ -294,15 +305,15 @@ def test_a_formula_check_evaluates_the_ledgers_form(
     reading's −u sin u of θ1 set back to the printed u cos u (in a copy of tables/), the
     residual falls as p only and the check fails."""
     from pendcli.data.tables import clear_table_cache
-    from pendcli.papers.lecornu.formulas_conical import conical_rows
+    from pendcli.papers.lecornu.formulas_conical import conical_row
 
-    rows = {r.id: r for r in conical_rows()}
-    assert rows["lecornu.eq52_as_read"].verdict == "holds"
+    # the row alone (conical_rows builds it by the same function, with six others)
+    assert conical_row("eq52_as_read").verdict == "holds"
     edit = ("equations/lecornu.toml", "p*u/4*(3*cos(u) - u*sin(u))", "p*u/4*(3*cos(u) + u*cos(u))")
     monkeypatch.setenv("PENDCLI_TABLES", str(altered_tables(tmp_path, edit)))
     clear_table_cache()
-    changed = {r.id: r for r in conical_rows()}["lecornu.eq52_as_read"]
-    assert changed.verdict == "fails"
+    changed = conical_row("eq52_as_read")
+    assert changed.id == "lecornu.eq52_as_read" and changed.verdict == "fails"
     assert changed.observed_order is not None and changed.observed_order < 1.2
 
 
