@@ -248,7 +248,7 @@ def _trace(p: float, grid: object) -> tuple[object, object, object, object]:
     u = 0 (ρ1 = 1, ρ2 = 0.4)."""
     import sympy as sp
 
-    exact = REFERENCES["reference_rotated_phases"]().exact
+    exact = cited_reference(paper("lecornu"), "reference_rotated_phases").exact
     names = ("u", "p", "rho1", "rho2")
     out = []
     for name in ("theta1", "theta2"):
@@ -363,7 +363,7 @@ def test_line_880_solves_neither_delta_equation() -> None:
     for field in ("printed", "corrected_formula"):
         ((lhs, rhs),) = _formula(str(getattr(row, field))).equations  # type: ignore[attr-defined]
         found[field] = float(rhs.subs(u, 1.5) / (lhs / sp.Symbol("delta_e", real=True)))
-    reference = REFERENCES["reference_beta_delta"]().exact["delta_e"]
+    reference = cited_reference(paper("lecornu"), "reference_beta_delta").exact["delta_e"]
     assert abs(float(reference.subs(u, 1.5)) - solved) < 1e-9
     assert abs(found["corrected_formula"] - solved) < 1e-9 < 1e-3 < abs(found["printed"] - solved)
 
@@ -378,7 +378,7 @@ def test_line_1102_prints_rho_for_l() -> None:
     # gap falls as p² (a = γt = 1)
     import mpmath
 
-    exact = REFERENCES["reference_slow_length"]().exact
+    exact = cited_reference(paper("lecornu"), "reference_slow_length").exact
     row = committed_row("lecornu.result.inverse_square_length")
     series = _formula(str(row.reading_formula)).equations[-1][1]  # type: ignore[attr-defined]
     at = {"a": 1, "gamma": 1, "t": 1}

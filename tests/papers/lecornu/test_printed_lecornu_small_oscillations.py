@@ -22,8 +22,6 @@ from pendcli.data.ledger_rows import Ledger, LedgerRow
 from pendcli.data.printed import Formula, parse_formula
 from pendcli.papers.lecornu import (
     references,
-    references_slow,
-    references_small,
 )
 from pendcli.papers.lecornu.formulas_slow import slow_row, slow_rows
 from pendcli.papers.registry import paper
@@ -154,7 +152,7 @@ def test_the_curvature_reference_is_the_paths_and_refutes_the_claim() -> None:
     −1/c, so « proportionnellement à l'écart horizontal » fails, as the engine finds."""
     import mpmath
 
-    exact = references_small.reference_curvature().exact
+    exact = cited_reference(paper("lecornu"), "reference_curvature").exact
     scale = mpmath.mpf("1e-6")  # small slopes
 
     def u(z: Any) -> Any:
@@ -195,7 +193,7 @@ def test_the_root_of_27_falls_on_the_references_epsilon_to_the_third_order() -> 
     as p⁴ (the p³ term vanishes), as lecornu.period_second_order measures with solve_ivp."""
     import mpmath
 
-    epsilon = references_slow.reference_root_epsilon().exact["epsilon"]
+    epsilon = cited_reference(paper("lecornu"), "reference_root_epsilon").exact["epsilon"]
     ps = [mpmath.mpf(v) for v in ("0.04", "0.02", "0.01", "0.005")]
     with mpmath.workdps(30):
         gaps = [_first_zero_of_27(p) - mpmath.pi - _number(epsilon, p=p) for p in ps]
@@ -218,7 +216,7 @@ def test_the_quarter_time_study_is_the_rows_reference_solved_in_closed_form() ->
     import mpmath
 
     row = _committed_formula_rows()["lecornu.quarter_time"]
-    lpp = references_slow.reference_quarter_oscillation().exact["lpp"]
+    lpp = cited_reference(paper("lecornu"), "reference_quarter_oscillation").exact["lpp"]
     ((left, right),) = _printed("lecornu.result.quarter_time")
     with mpmath.workdps(30):
         for q, residual in row.residuals:
