@@ -492,6 +492,7 @@ def test_the_mean_pendulum_correction_is_computed() -> None:
         return y[0]
 
     falling_zero.direction = -1  # type: ignore[attr-defined]
+    falling_zero.terminal = True  # type: ignore[attr-defined]
     ratios = []
     for p in (0.02, 0.01):
         # (27) in τ = γt: (1 + pτ)u'' + u = 0, u(0) = 0, u'(0) = 1; its next zero, by DOP853
