@@ -8,9 +8,11 @@ import json
 import re
 import tomllib
 from collections import Counter
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
+from helpers.evaluated import committed_formulas
 from helpers.ledgers import committed_ledger, committed_row, row_ids
 
 from pendcli.base.errors import PendcliError
@@ -18,6 +20,7 @@ from pendcli.data.ledger import CHECKED_STATUSES, OUTPUT_KEYS, labels_in_text, p
 from pendcli.data.ledger_rows import Ledger, LedgerRow
 from pendcli.data.rows import equation_notes
 from pendcli.papers.registry import equation_rows, ledger_papers, paper
+from pendcli.verify.claims import sharing_formula_rows
 from pendcli.verify.ledger_evaluation import coverage, evaluate
 from pendcli.verify.ledger_references import printed_problem, reference_table, row_printed_status
 
@@ -153,6 +156,17 @@ def _small_ledger(root: Path, change: dict[str, dict[str, object]] | None = None
     (root / text).write_bytes((TABLES / text).read_bytes())
 
 
+@pytest.fixture
+def charbonnier_formulas_lent() -> Iterator[None]:
+    """Charbonnier's formula checks, which the small ledger's measured rows cite, lent to
+    each judgement as a reproduction lends them to its ledger: computed once per run from the
+    committed tables (tests/helpers/evaluated.py), as every judgement here would compute them
+    (the small ledgers change no table they read), not once per call (0.1-0.3 s each)."""
+    with sharing_formula_rows("charbonnier", list(committed_formulas("charbonnier"))):
+        yield
+
+
+@pytest.mark.usefixtures("charbonnier_formulas_lent")
 def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) -> None:
     _small_ledger(tmp_path)
     items = evaluate(paper("charbonnier"), tmp_path)
@@ -192,6 +206,7 @@ def test_evaluate_runs_each_check_and_renders_the_output_rows(tmp_path: Path) ->
         ),
     ],
 )  # fmt: skip
+@pytest.mark.usefixtures("charbonnier_formulas_lent")
 def test_a_check_contradicting_its_status_is_reported(
     tmp_path: Path, row_id: str, change: dict[str, object]
 ) -> None:

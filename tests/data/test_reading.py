@@ -215,6 +215,7 @@ def _apse_advance(h_sign: float) -> float:
         return y[1]
 
     lowest.direction = 1  # type: ignore[attr-defined]
+    lowest.terminal = True  # type: ignore[attr-defined]  # the first lowest point is the one read
     run = solve_ivp(rhs, (0, 50), [theta0, 0, 0], events=lowest, rtol=1e-9, atol=1e-11)
     (_, _, phi) = run.y_events[0][0]
     return float(abs(phi) - math.pi / 2) * math.copysign(1, phi)

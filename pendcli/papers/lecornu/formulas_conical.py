@@ -33,7 +33,7 @@ from pendcli.papers.lecornu.formulas_chapter3 import (
 from pendcli.verify.claims import FormulaRow
 from pendcli.verify.formula_engine import DEFAULT_INTEGRATOR, Integrator, Study
 
-__all__ = ["conical_rows"]
+__all__ = ["conical_row", "conical_rows"]
 
 P_PARAM = "p = b/√(ga) = 0.032 … 0.002"
 ANGLES = (0.2, 0.1, 0.05, 0.025, 0.0125)  # θ for line 1088
@@ -256,12 +256,22 @@ def _homothety_axes_row(ref: Integrator) -> FormulaRow:
 def conical_rows(ref: Integrator = DEFAULT_INTEGRATOR) -> list[FormulaRow]:
     """Lines 1086-1134: θ² for sin²θ, (50), 1/l², (52), the trace and its ellipse's axes,
     each as read where it is a misprint."""
-    return [
-        _area_row(ref),
-        _composed_row(ref),
-        _eq50_row(ref),
-        _inverse_square_row(ref),
-        _eq52_row(ref),
-        _trajectory_row(ref),
-        _homothety_axes_row(ref),
-    ]
+    return [build(ref) for build in _BUILDERS.values()]
+
+
+def conical_row(name: str, ref: Integrator = DEFAULT_INTEGRATOR) -> FormulaRow:
+    """One of :func:`conical_rows` alone, by its id without the paper (``eq52_as_read``):
+    a row whose ledger form was edited is measured again without the other six."""
+    return _BUILDERS[name](ref)
+
+
+# each row's id (without the paper) and its builder, in the order of the lines
+_BUILDERS: dict[str, Callable[[Integrator], FormulaRow]] = {
+    "area_small_angle": _area_row,
+    "composed_planes": _composed_row,
+    "eq50": _eq50_row,
+    "inverse_square_length": _inverse_square_row,
+    "eq52_as_read": _eq52_row,
+    "trajectory_after_52": _trajectory_row,
+    "homothety_axes": _homothety_axes_row,
+}

@@ -37,7 +37,7 @@ from pendcli.verify.formula_plots import PanelLabels
 if TYPE_CHECKING:
     from pendcli.data.ledger_rows import Ledger, LedgerRow
 
-__all__ = ["SLOW_PANELS", "eq25_residuals", "slow_rows"]
+__all__ = ["SLOW_PANELS", "eq25_residuals", "slow_row", "slow_rows"]
 
 PAPER = "lecornu"
 Q_SWEEP = (0.032, 0.016, 0.008, 0.004, 0.002)  # q = b/√(gl), as p = b/√(ga) of formulas.py
@@ -227,4 +227,19 @@ def slow_rows(
 ) -> list[FormulaRow]:
     """The quarter oscillation (line 555), the amplitude factor (line 573) and (25), their
     printed forms read from ``ledger`` (by default the tables in use, each row parsed alone)."""
-    return [_quarter_row(ledger), _amplitude_row(ledger), _eq25_row(ledger, ref)]
+    return [slow_row(name, ref, ledger) for name in ("quarter_time", "amplitude_factor", "eq25")]
+
+
+def slow_row(
+    name: str, ref: Integrator = DEFAULT_INTEGRATOR, ledger: Ledger | None = None
+) -> FormulaRow:
+    """One of :func:`slow_rows` alone, by its id without the paper (``quarter_time``,
+    ``amplitude_factor``, ``eq25``): a study whose printed form was edited is measured again
+    without the other two."""
+    if name == "quarter_time":
+        return _quarter_row(ledger)
+    if name == "amplitude_factor":
+        return _amplitude_row(ledger)
+    if name == "eq25":
+        return _eq25_row(ledger, ref)
+    raise KeyError(f"no slow-variation study {name!r}")

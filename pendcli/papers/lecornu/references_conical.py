@@ -207,13 +207,25 @@ def reference_conical_solution() -> Any:
     line 1042's square root)."""
     from sympy.utilities.lambdify import implemented_function
 
+    from pendcli.base.recent import Recent
+
     (x,) = symbols("x")
     numeric = _conical_solution()
 
     def at_30_digits(f: Any) -> Any:
+        # each point's value kept: a residual asks for one function at one point many times
+        # (18 quadratures of ∫dx/ω² for 3 distinct points, 144 calls for 12 values, judging
+        # lecornu.result.conical_general_integral), and the value is a function of the point
+        kept = Recent(256)
+
         def value(point: Any) -> Any:
-            with mpmath.workdps(30):
-                return f(mpmath.mpf(str(sp.Float(point, 30))))
+            key = str(sp.Float(point, 30))
+            found = kept.get(key)
+            if found is None:
+                with mpmath.workdps(30):
+                    found = f(mpmath.mpf(key))
+                kept.put(key, found)
+            return found
 
         return value
 

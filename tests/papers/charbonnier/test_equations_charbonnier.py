@@ -67,7 +67,7 @@ def test_the_reference_of_4_and_5_solves_theta1s_equation() -> None:
 
     from pendcli.papers.charbonnier.references_general import free_parameters, ledger_symbols
 
-    exact = REFERENCES["reference_first_order"]().exact
+    exact = cited_reference(paper("charbonnier"), "reference_first_order").exact
     t, k = ledger_symbols("t", "k")
     values = dict(zip((k, *free_parameters(5)), (1.3, 0.7, -0.4, 0.3, 0.25, -0.8), strict=True))
     ex = {name: exact[name].subs(values) for name in ("theta_1", "dtheta_1_dt")}

@@ -516,7 +516,7 @@ def _png_pixels(path: Path) -> np.ndarray:
 def _share_of(pixels: np.ndarray, colour: str, tol: float = 0.08) -> float:
     from matplotlib.colors import to_rgb
 
-    rgb = np.array(to_rgb(colour))
+    rgb = np.array(to_rgb(colour), dtype=pixels.dtype)  # float32 as read: not widened
     return float(np.mean(np.all(np.abs(pixels[..., :3] - rgb) < tol, axis=-1)))
 
 

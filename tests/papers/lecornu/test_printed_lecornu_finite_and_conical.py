@@ -162,7 +162,7 @@ def _dimension_verdict(text: str) -> str:
 def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
     """Line 1008: l θ_tt + 2θ_t + (g/b²) sin θ − … is not (43) in l; with d²θ/dl², dθ/dl
     (and l³) it is. Symbolic (the engine, each slip alone) and dimensional here; numeric:
-    (43) integrated by mpmath, the two forms evaluated along the solution."""
+    (43) integrated by scipy, the two forms evaluated by mpmath along the solution."""
     reference = cited_reference(paper("lecornu"), "reference_conical_l_form")
     l3 = "c**2*cos(theta)/(b**2*l**3*sin(theta)**3) = 0"
     in_t = f"l*d2theta_dt2 + 2*dtheta_dt + g/b**2*sin(theta) - {l3}"
@@ -176,7 +176,11 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
 
     a, b, g, c = (mpmath.mpf(x) for x in ("1", "0.3", "9.81", "0.4"))
     # 15 digits: the reading's residual along the solution is then ~1e-14, the printed form's
-    # ~87; at 25 digits the Taylor integrator took 4 s of CPU for the same verdict
+    # ~87. The state (θ, θ') at t = 0.5 comes from scipy's DOP853 at 1e-12 (mpmath's Taylor
+    # integrator gave the same state to 2e-12 in 0.4 s of CPU, not 2 ms): the residuals take
+    # θ'' from (43) itself, so they judge the two forms, not the integration's accuracy
+    from scipy.integrate import solve_ivp
+
     with mpmath.workdps(15):
 
         def rhs(t: object, y: list[object]) -> list[object]:
@@ -189,9 +193,16 @@ def test_line_1008_prints_time_derivatives_for_length_derivatives() -> None:
                 + c**2 * mpmath.cos(theta) / (length**4 * mpmath.sin(theta) ** 3),
             ]
 
-        solution = mpmath.odefun(rhs, 0, [mpmath.mpf("0.6"), mpmath.mpf(0)])
+        solved = solve_ivp(
+            lambda t, y: [float(v) for v in rhs(t, y)],  # type: ignore[arg-type]
+            (0.0, 0.5),
+            [0.6, 0.0],
+            method="DOP853",
+            rtol=1e-12,
+            atol=1e-12,
+        )
         t = mpmath.mpf("0.5")
-        theta, dtheta = solution(t)
+        theta, dtheta = (mpmath.mpf(v) for v in solved.y[:, -1])
         d2theta = rhs(t, [theta, dtheta])[1]
         length = a + b * t
         tail = g / b**2 * mpmath.sin(theta) - c**2 * mpmath.cos(theta) / (
@@ -237,7 +248,7 @@ def _trace(p: float, grid: object) -> tuple[object, object, object, object]:
     u = 0 (ρ1 = 1, ρ2 = 0.4)."""
     import sympy as sp
 
-    exact = REFERENCES["reference_rotated_phases"]().exact
+    exact = cited_reference(paper("lecornu"), "reference_rotated_phases").exact
     names = ("u", "p", "rho1", "rho2")
     out = []
     for name in ("theta1", "theta2"):
@@ -294,15 +305,15 @@ def test_a_formula_check_evaluates_the_ledgers_form(
     reading's −u sin u of θ1 set back to the printed u cos u (in a copy of tables/), the
     residual falls as p only and the check fails."""
     from pendcli.data.tables import clear_table_cache
-    from pendcli.papers.lecornu.formulas_conical import conical_rows
+    from pendcli.papers.lecornu.formulas_conical import conical_row
 
-    rows = {r.id: r for r in conical_rows()}
-    assert rows["lecornu.eq52_as_read"].verdict == "holds"
+    # the row alone (conical_rows builds it by the same function, with six others)
+    assert conical_row("eq52_as_read").verdict == "holds"
     edit = ("equations/lecornu.toml", "p*u/4*(3*cos(u) - u*sin(u))", "p*u/4*(3*cos(u) + u*cos(u))")
     monkeypatch.setenv("PENDCLI_TABLES", str(altered_tables(tmp_path, edit)))
     clear_table_cache()
-    changed = {r.id: r for r in conical_rows()}["lecornu.eq52_as_read"]
-    assert changed.verdict == "fails"
+    changed = conical_row("eq52_as_read")
+    assert changed.id == "lecornu.eq52_as_read" and changed.verdict == "fails"
     assert changed.observed_order is not None and changed.observed_order < 1.2
 
 
@@ -352,7 +363,7 @@ def test_line_880_solves_neither_delta_equation() -> None:
     for field in ("printed", "corrected_formula"):
         ((lhs, rhs),) = _formula(str(getattr(row, field))).equations  # type: ignore[attr-defined]
         found[field] = float(rhs.subs(u, 1.5) / (lhs / sp.Symbol("delta_e", real=True)))
-    reference = REFERENCES["reference_beta_delta"]().exact["delta_e"]
+    reference = cited_reference(paper("lecornu"), "reference_beta_delta").exact["delta_e"]
     assert abs(float(reference.subs(u, 1.5)) - solved) < 1e-9
     assert abs(found["corrected_formula"] - solved) < 1e-9 < 1e-3 < abs(found["printed"] - solved)
 
@@ -367,7 +378,7 @@ def test_line_1102_prints_rho_for_l() -> None:
     # gap falls as p² (a = γt = 1)
     import mpmath
 
-    exact = REFERENCES["reference_slow_length"]().exact
+    exact = cited_reference(paper("lecornu"), "reference_slow_length").exact
     row = committed_row("lecornu.result.inverse_square_length")
     series = _formula(str(row.reading_formula)).equations[-1][1]  # type: ignore[attr-defined]
     at = {"a": 1, "gamma": 1, "t": 1}
@@ -466,24 +477,40 @@ def test_a_rounded_decimal_is_judged_to_its_last_digit(decimal: str, passes: boo
 def test_the_mean_pendulum_correction_is_computed() -> None:
     """Lines 672-676: as printed 7π³/32 (and 6,47) fail; π³/32, π(π² − 3)/32 = 0,674 hold
     (sympy: the engine against (27)'s root), and numerically: the period of (27) by an ODE
-    (mpmath) against π√(l/g) at l = a + bt/2, their difference over b²/(g√(ag)) -> 0,674."""
-    import mpmath
+    (scipy) against π√(l/g) at l = a + bt/2, their difference over b²/(g√(ag)) -> 0,674."""
+    import math
+
+    from scipy.integrate import solve_ivp
 
     row = committed_row("lecornu.result.mean_pendulum")
     symbols = committed_ledger("lecornu").symbols_for(row)
     computed, problem = verify_printed(row, symbols, REFERENCES)
     assert problem is None and computed is not None and computed.startswith("misprint:")
     assert "7*pi**3" in computed
+
+    def falling_zero(_s: float, y: list[float]) -> float:
+        return y[0]
+
+    falling_zero.direction = -1  # type: ignore[attr-defined]
+    falling_zero.terminal = True  # type: ignore[attr-defined]
     ratios = []
-    with mpmath.workdps(25):
-        for p in (mpmath.mpf("0.02"), mpmath.mpf("0.01")):
-            # (27) in τ = γt: (1 + pτ)u'' + u = 0, u(0) = 0, u'(0) = 1; its next zero
-            solution = mpmath.odefun(lambda s, y, p=p: [y[1], -y[0] / (1 + p * s)], 0, [0, 1])
-            start = mpmath.pi * (1 + p * mpmath.pi / 4)
-            tau = mpmath.findroot(lambda s, f=solution: f(s)[0], start)
-            mean = mpmath.pi * mpmath.sqrt(1 + p * tau / 2)  # γ π√(l/g), l = a(1 + pτ/2)
-            ratios.append((mean - tau) / p**2)
-    expected = mpmath.pi * (mpmath.pi**2 - 3) / 32
+    for p in (0.02, 0.01):
+        # (27) in τ = γt: (1 + pτ)u'' + u = 0, u(0) = 0, u'(0) = 1; its next zero, by DOP853
+        # at 1e-13 (mpmath's Taylor integrator and findroot at 25 digits: the same ratios to
+        # 1e-10, in 0.15 s of CPU, not 6 ms; the bound below is 0.02)
+        solved = solve_ivp(
+            lambda s, y, p=p: [y[1], -y[0] / (1 + p * s)],
+            (0.0, 4.0),
+            [0.0, 1.0],
+            method="DOP853",
+            rtol=1e-13,
+            atol=1e-14,
+            events=falling_zero,
+        )
+        tau = float(solved.t_events[0][0])
+        mean = math.pi * math.sqrt(1 + p * tau / 2)  # γ π√(l/g), l = a(1 + pτ/2)
+        ratios.append((mean - tau) / p**2)
+    expected = math.pi * (math.pi**2 - 3) / 32
     assert abs(ratios[-1] - expected) < 0.02 < abs(ratios[-1] - 6.47)
 
 

@@ -81,6 +81,7 @@ def _halves(a: float, b: float, g: float) -> tuple[float, float, float]:
 
     elongation.direction = -1  # type: ignore[attr-defined]
     vertical.direction = -1  # type: ignore[attr-defined]
+    vertical.terminal = True  # type: ignore[attr-defined]  # after the elongation: all it reads
     solved = solve_ivp(
         rhs, (0.0, 3.0), [0.0, 0.01], events=(elongation, vertical), rtol=1e-12, atol=1e-15
     )

@@ -15,6 +15,7 @@ from pendcli.papers.registry import paper
 from pendcli.papers.tisserand.references import REFERENCES
 from pendcli.papers.tisserand.references_series import motion_in_kpt, motion_series, series_symbols
 from pendcli.verify.ledger_formulas import row_formula
+from pendcli.verify.ledger_references import cited_reference
 
 
 def test_every_cited_reference_is_in_the_table_and_every_entry_is_cited() -> None:
@@ -42,7 +43,7 @@ def test_the_ellipse_reference_gives_10_and_refutes_the_flattened_tan_sq_phi1() 
     """At ψ = π/4 (tan ψ = 1) (10) gives tan²φ1 = u1²/u0² exactly: the reference (9) does, the
     reading of lines 136-138 does, the fraction as the OCR flattens it does not."""
     u0, u1, psi, phi1, u = _real("u0", "u1", "psi", "phi1", "u")
-    exact = REFERENCES["reference_ellipse"]().exact
+    exact = cited_reference(paper("tisserand"), "reference_ellipse").exact
     point = {u0: sp.Rational(1, 2), u1: sp.Rational(1, 3), psi: sp.pi / 4}
     tan_sq = sp.simplify(sp.tan(exact["phi1"].subs(point)) ** 2)
     assert tan_sq == sp.Rational(4, 9)  # (u1/u0)²
@@ -82,7 +83,7 @@ def test_the_first_integrals_reference_follows_newtons_equations() -> None:
     from θ0 with its h = sin²θ dφ/dt, Newton's equations turn back at its θ1, and θ'² along
     the way is its (dθ/dt)²."""
     theta, dtheta, theta0, theta1, k = _real("theta", "dtheta", "theta0", "theta1", "k")
-    exact = REFERENCES["reference_first_integrals"]().exact
+    exact = cited_reference(paper("tisserand"), "reference_first_integrals").exact
     given = {theta0: 0.7, theta1: 0.3, k: 1.3, dtheta: -1}
     dt = sp.lambdify(theta, exact["dt"].subs(given))
     h = sp.lambdify(theta, (sp.sin(theta) ** 2 * exact["dphi"] / exact["dt"]).subs(given))
@@ -99,7 +100,7 @@ def test_the_differential_4_reference_is_the_first_integrals_through_3() -> None
     θ0, θ1), dθ the numerical derivative of (3)."""
     u, u0, u1, k, dpsi = _real("u", "u0", "u1", "k", "dpsi")
     x = sp.Symbol("x", positive=True)
-    dt = REFERENCES["reference_differential_4"]().exact["dt"]
+    dt = cited_reference(paper("tisserand"), "reference_differential_4").exact["dt"]
     with mpmath.workdps(30):
         a, b, kk, psi = mpmath.mpf("0.6"), mpmath.mpf("0.25"), mpmath.mpf("1.3"), mpmath.mpf("0.8")
         theta0, theta1 = mpmath.asin(a), mpmath.asin(b)
@@ -221,7 +222,7 @@ def test_resals_rate_is_a_rate_proportional_to_k() -> None:
     # the row's reference, dφ'/dt = k'·P (k' through the second order, P through the fourth:
     # the axis's rate agrees to the fourth order in the angles, 1.5e-5 here)
     g, length = sp.Symbol("g", real=True), sp.Symbol("l", real=True)
-    rate_of = REFERENCES["reference_resal"]().exact["dphip_dt"]
+    rate_of = cited_reference(paper("tisserand"), "reference_resal").exact["dphip_dt"]
     for k, rate in rates.items():
         found = _series_value(rate_of.subs({g: k**2, length: 1}), theta0, theta1)
         assert found == pytest.approx(rate, rel=5e-5)
