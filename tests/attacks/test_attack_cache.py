@@ -22,7 +22,7 @@ import stat
 import subprocess
 import sys
 import tracemalloc
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -89,6 +89,18 @@ def first_claim_is_42(value: Any) -> None:
     value[0].update(recomputed=42.0, verdict="discrepant")
 
 
+@pytest.fixture(scope="module", autouse=True)
+def _installed_signature_read_once() -> Iterator[None]:
+    """Each in-process run here keys the cache on the installed libraries' signature, which
+    reads the metadata of every distribution they require (10-20 ms a run): read once for
+    the module, the same text every run would read (no test here installs anything; the
+    signature's own tests are tests/base/test_cache.py's). The folders are hashed each run."""
+    signature = cache_module.installed_signature()
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        monkeypatch.setattr(cache_module, "installed_signature", lambda: signature)
+        yield
+
+
 @pytest.fixture(scope="module")
 def uncached() -> str:
     """The output of a run without the cache (``--no-cache``: no folder read or written),
@@ -122,9 +134,9 @@ def test_cache_clear_removes_only_pendcli_entries_and_dead_temporaries(tmp_path:
     live = folder / f".pendcli-{HEX}.json.{os.getpid()}-abcdefgh.tmp"
     dead.write_bytes(b"half")
     live.write_bytes(b"being written")
-    done = run_cli("cache", "clear", env={"PENDCLI_CACHE": str(folder)})
-    assert done.returncode == 0, done.stderr
-    assert "removed 1 entries" in done.stderr
+    done = invoke("cache", "clear", env={"PENDCLI_CACHE": str(folder), **WIDE})
+    assert done.code == 0, done.err
+    assert "removed 1 entries" in done.err
     assert sorted(p.name for p in folder.iterdir()) == sorted([*user, MARKER, live.name])
     assert all((folder / name).read_bytes() == data for name, data in user.items())
 
@@ -386,7 +398,8 @@ def test_a_cache_inside_the_out_folder_is_turned_off_before_the_run(
     monkeypatch.setattr("pendcli.output.report._fill", fill)
     out = tmp_path / "out"
     cache = out if inside == "the-folder" else out / "cache"
-    args = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")
+    # Charbonnier: the cheapest claims to compute (the cache is off: they are computed)
+    args = ("reproduce", "-p", "charbonnier", "--no-formulas", "--no-equations", "--no-stability")
     env = {"PENDCLI_CACHE": str(cache), **WIDE}
     result = invoke(*args, "-f", "json", "--out", str(out), env=env)
     assert result.code == 0, result.err
@@ -423,8 +436,9 @@ def test_a_file_above_the_bound_is_refused_without_reading_it(tmp_path: Path) ->
 
 
 def test_a_file_is_hashed_in_chunks(tmp_path: Path) -> None:
-    """The old digest read each file whole: a 1.5 GB table cost 1.5 GB of memory."""
-    size = 48 * 2**20
+    """The old digest read each file whole: a 1.5 GB table cost 1.5 GB of memory. 8 MB, twice
+    the peak allowed: read whole, it would be over; read in 1 MB chunks, far below."""
+    size = 8 * 2**20
     (tmp_path / "big.bin").touch()
     os.truncate(tmp_path / "big.bin", size)
     tracemalloc.start()

@@ -3,8 +3,9 @@
 ``reproduce --out`` replaces a folder as a whole, so it must only ever replace one pendcli
 made (its manifest lists every file in it), touch nothing beside it but its own temporary
 names, keep to one writer at a time, write through a symlink, follow the umask, and accept
-every legal name. The library calls run in this process (cheap); the CLI runs are
-subprocesses of the installed ``pendcli``, with ``PENDCLI_JOBS=1`` and one small paper.
+every legal name. The library calls run in this process (cheap), and so does a refusal before
+the run; the other CLI runs are subprocesses of the installed ``pendcli``, with
+``PENDCLI_JOBS=1`` and one small paper.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
-from helpers.cli import child_env
+from helpers.cli import assert_clean_error, child_env, invoke
 
 from pendcli.base.errors import PendcliError
 from pendcli.base.files import atomic_write, lock_file, locked, remove_stale
@@ -75,16 +76,22 @@ def fill_with(names: dict[str, str]):  # type: ignore[no-untyped-def]
 # --- the CLI: hidden folders beside the target, "*", a folder pendcli did not make ----------
 
 
-def test_a_folder_pendcli_did_not_make_is_refused_before_the_run(tmp_path: Path) -> None:
+def test_a_folder_pendcli_did_not_make_is_refused_before_the_run(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """In this process (a refusal before the run needs no real one): --out relative to the
+    working folder, as typed."""
     thesis = tmp_path / "thesis"
     (thesis / "chapters").mkdir(parents=True)
     for name, text in {"report.md": "# mine", "results.csv": "a,b\n"}.items():
         (thesis / name).write_text(text, encoding="utf-8")
     (thesis / "chapters" / "main.tex").write_text("\\chapter{}", encoding="utf-8")
     before = tree(thesis)
-    out = run_cli(tmp_path, *CHEAP, "--out", "thesis")
-    assert_one_line(out, "'thesis'", "did not make", "new or empty folder")
-    assert out.stdout == ""  # refused before the run
+    monkeypatch.chdir(tmp_path)
+    code, out, err = invoke(*CHEAP, "--out", "thesis")
+    assert_clean_error(code, err)
+    assert all(w in err for w in ("'thesis'", "did not make", "new or empty folder")), err
+    assert out == ""  # refused before the run
     assert tree(thesis) == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["thesis"]
 

@@ -41,7 +41,9 @@ CLONE_NEWUSER = 0x10000000  # linux/sched.h
 
 
 def copy_tables(dest: Path) -> Path:
-    shutil.copytree(REPO_TABLES, dest, ignore=shutil.ignore_patterns(".*"))
+    shutil.copytree(
+        REPO_TABLES, dest, ignore=shutil.ignore_patterns(".*"), copy_function=shutil.copy
+    )
     return dest
 
 

@@ -237,17 +237,20 @@ def _quarter_period_coefficients(delta):
     """(c0, c2) in ∂T/∂p = c0 + c2 k², T the time from the elongation to the vertical, from
     θ = 2k cos u + k³θ3 (38) and ∂θ/∂p = kβ + k³δ (41): ∂T/∂p = −ε(K)/θ'(K).
 
-    θ' is k times (−2 sin u + k²θ3'), and K = π/2 (1 + k²/4): ∂T/∂p is a function G of
-    x = k², so c0 = G(0) and c2 = G'(0), both exact (sympy differentiation)."""
+    θ' is k times (−2 sin u + k²θ3'), and K = π/2 (1 + k²/4): ∂T/∂p is g(x) = G(K(x), x),
+    x = k², G(u, x) = −(β + xδ)/(−2 sin u + xθ3'), so c0 = G(π/2, 0) and, by the chain rule,
+    c2 = g'(0) = ∂G/∂x + (π/8) ∂G/∂u at (π/2, 0): both exact (sympy differentiation, of G
+    before u is replaced by K(x), which makes the derivative in x four times as costly)."""
     import sympy as sp
 
     u, x = sp.symbols("u x", real=True)
     theta3 = (9 * sp.cos(u) + 12 * u * sp.sin(u) - sp.cos(3 * u)) / 24
     beta = (u**2 * sp.sin(u) - 3 * u * sp.cos(u) + 3 * sp.sin(u)) / 2
     slope_over_k = -2 * sp.sin(u) + x * sp.diff(theta3, u)
-    quarter = sp.pi / 2 * (1 + x / 4)
-    g = (-(beta + x * delta(u, beta, theta3)) / slope_over_k).subs(u, quarter)
-    return sp.simplify(g.subs(x, 0)), sp.simplify(sp.diff(g, x).subs(x, 0))
+    g = -(beta + x * delta(u, beta, theta3)) / slope_over_k
+    at = {u: sp.pi / 2, x: 0}
+    c2 = sp.diff(g, x).subs(at) + sp.diff(g, u).subs(at) * sp.pi / 8
+    return sp.simplify(g.subs(at)), sp.simplify(c2)
 
 
 def _printed_delta(u, beta, theta3):

@@ -292,7 +292,23 @@ def test_the_threshold_decides_explained(rows):
 # --- the CLI -------------------------------------------------------------------------------
 
 
-@pytest.mark.usefixtures("shared_claims")
+@pytest.fixture
+def searched_once(rows, monkeypatch):
+    """For the tests of the command's form: the search of each committed claim (``explain``)
+    answers with what the module's ``rows`` found for it (the same search, on the same
+    computation and target); the command still selects, orders and writes the rows."""
+    search = ex.explain
+
+    def served(claim_id, computation, target):
+        row = rows.get(claim_id)
+        if row is None or row.explanation is None:
+            return search(claim_id, computation, target)
+        return row.explanation
+
+    monkeypatch.setattr(ex, "explain", served)
+
+
+@pytest.mark.usefixtures("shared_claims", "searched_once")
 def test_cli_json_shape():
     code, out, _ = invoke("explain", "-p", "lecornu", "-f", "json")
     assert code == 0
@@ -305,7 +321,7 @@ def test_cli_json_shape():
     assert by_id["lecornu.mean_pendulum_coefficient"]["steps"][0][-1] == "printed 6,47"
 
 
-@pytest.mark.usefixtures("shared_claims")
+@pytest.mark.usefixtures("shared_claims", "searched_once")
 def test_cli_one_claim_and_formats():
     code, out, _ = invoke("explain", "lecornu.x_bound", "-f", "json")
     assert code == 0 and [e["id"] for e in json.loads(out)["explanations"]] == ["lecornu.x_bound"]

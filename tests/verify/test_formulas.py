@@ -561,7 +561,10 @@ from pendcli.verify.claims import sharing_formula_rows  # noqa: E402
 def test_cli_formulas_json_and_plot(tmp_path):
     import json
 
-    code, out, err = invoke("formulas", "--paper", "tisserand", "--format", "json")
+    # the rows as computed once per process (their computation is tested above: here, what
+    # the command writes of them)
+    with sharing_formula_rows("tisserand", list(committed_formulas("tisserand"))):
+        code, out, err = invoke("formulas", "--paper", "tisserand", "--format", "json")
     assert code == 0, err
     doc = json.loads(out)
     assert {r["id"] for r in doc["formulas"]} == {k for k in EXPECTED if k.startswith("tiss")}
