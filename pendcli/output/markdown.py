@@ -20,15 +20,44 @@ __all__ = ["MarkdownRenderer", "code_span", "fence", "markdown_text", "to_markdo
 # (one before a space, or in « <= », cannot), and a `]` that may close a link's or image's
 # text into a destination `](`, a label `][` or a definition `]:` (a string's last `]` is
 # followed by the report's own text: never `(` or `[`, and a definition must start its line).
-# Emphasis and code spans change how text looks, never what it is, and stay.
+# Emphasis changes how text looks, never what it is, and stays. A code span stays too, its
+# content as it is: CommonMark reads no escape, entity, tag or link inside one, so an escape
+# there would be shown (`a\\b` for `a\b`).
 _MARKUP = re.compile(r"\\|&|<(?!\s|=\s)|\](?=[(\[:])")
 _REPLACEMENT = {"\\": "\\\\", "&": "&amp;", "<": "&lt;", "]": "\\]"}
+_TICKS = re.compile(r"`+")
 
 
 def markdown_text(text: str) -> str:
     """``text`` as Markdown that shows it as text, on one line: see :data:`_MARKUP`."""
     one_line = re.sub(r"\r\n?|\n", " ", text)
-    return _MARKUP.sub(lambda m: _REPLACEMENT[m.group(0)], one_line)
+    out, start = [], 0
+    for opened, closed in _code_spans(one_line):
+        out += [_escaped(one_line[start:opened]), one_line[opened:closed]]
+        start = closed
+    return "".join([*out, _escaped(one_line[start:])])
+
+
+def _escaped(text: str) -> str:
+    return _MARKUP.sub(lambda m: _REPLACEMENT[m.group(0)], text)
+
+
+def _code_spans(text: str) -> list[tuple[int, int]]:
+    """Where CommonMark reads a code span in ``text`` once its backslashes outside code spans
+    are escaped (so none escapes a backtick): a run of backticks up to the next run of the
+    same length; a run that nothing closes is text."""
+    runs = list(_TICKS.finditer(text))
+    spans, i = [], 0
+    while i < len(runs):
+        closer = next(
+            (j for j in range(i + 1, len(runs)) if len(runs[j][0]) == len(runs[i][0])), None
+        )
+        if closer is None:
+            i += 1
+            continue
+        spans.append((runs[i].start(), runs[closer].end()))
+        i = closer + 1
+    return spans
 
 
 def code_span(text: str) -> str:
