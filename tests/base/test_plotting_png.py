@@ -13,10 +13,13 @@ from pendcli.base.plotting import new_figure
 
 
 def _draw(ax, transparent: bool) -> None:  # type: ignore[no-untyped-def]
-    ax.plot([1, 2, 3], [3, 1, 2], "o-", color="tab:red")
+    ax.plot([1, 20, 3000], [3, 1, 2], "o-", color="tab:red")
     ax.set_title("a title, $x^2$ and 10⁻³")
     ax.set_ylabel("turned: √(a/g), θ₀")  # drawn at 90°
+    # x over decades: minor ticks without labels, with grid lines; y within one: labelled
+    ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.grid(True, which="both", alpha=0.3)
     if transparent:
         ax.figure.patch.set_alpha(0.0)
         ax.patch.set_alpha(0.5)
