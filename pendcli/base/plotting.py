@@ -196,9 +196,8 @@ _MATHTEXT_POWER = re.compile(
 
 def plain_power(label: str) -> str:
     """A log axis's tick label as plain text: ``$\\mathdefault{2\\times10^{-5}}$`` becomes
-    ``2×10⁻⁵`` (Unicode superscripts), which the text engine lays out and draws glyph run by
-    glyph run instead of parsing and placing each glyph as mathtext (two fifths of a residual
-    grid's CPU); any other label is returned as it is."""
+    ``2×10⁻⁵`` (Unicode superscripts): set and drawn as plain text (:func:`_draw_text`), not
+    parsed and placed glyph by glyph as mathtext; any other label is returned as it is."""
     match = _MATHTEXT_POWER.fullmatch(label)
     if match is None:
         return label
