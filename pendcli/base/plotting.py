@@ -70,9 +70,10 @@ def save_figure(fig: Figure, path: str | Path) -> Path:
     except OSError as exc:
         raise PendcliError(f"cannot create folder for plot {str(path)!r}: {exc.strerror}") from None
     plain_powers(fig)
-    for ax in fig.axes:
-        unlabelled_minor_ticks(ax)
+    held = [hold_unlabelled_minor_ticks(ax) for ax in fig.axes]
     fig.tight_layout()
+    for ax, minor in zip(fig.axes, held, strict=True):
+        lighter_ticks(ax, minor)
     # tight_layout leaves a placeholder layout engine behind, and savefig draws the whole
     # figure once more (without rendering) for any engine: none, so it draws once
     fig.set_layout_engine(None)
@@ -255,54 +256,85 @@ def plain_powers(fig: Figure) -> None:
                     formatter.seq = [plain_power(str(label)) for label in formatter.seq]
 
 
-def unlabelled_minor_ticks(ax: Any) -> None:
-    """Each axis's minor ticks that carry no label (a log axis's 2…9 between its decades),
-    drawn as two artists, their marks as one line of markers and their grid lines as one
-    collection, each with the first tick's own style, instead of one Tick apiece (five
-    artists made, copied and drawn per tick: a third of the work-precision diagram's CPU).
-    The limits must be final (the figure being saved)."""
+def hold_unlabelled_minor_ticks(ax: Any) -> dict[str, tuple[Any, Any]]:
+    """Before the layout: each axis's minor ticks that carry no label (a log axis's 2…9
+    between its decades) taken off the axis, so that no Tick (five artists, made and copied
+    apiece) is made for them; their locator and the style of their first tick, by axis name,
+    for :func:`lighter_ticks` to draw them once the layout is done."""
+    from matplotlib.ticker import NullLocator
+
+    held = {}
+    for axis in (ax.xaxis, ax.yaxis):
+        locs = _shown(axis, axis.get_minorticklocs())
+        formatter = axis.get_minor_formatter()
+        formatter.set_locs(locs)
+        if locs and not any(formatter.format_ticks(locs)):
+            held[axis.axis_name] = (axis.get_minor_locator(), axis.get_minor_ticks(1)[0])
+            axis.set_minor_locator(NullLocator())
+    return held
+
+
+def lighter_ticks(ax: Any, held: dict[str, tuple[Any, Any]]) -> None:
+    """After the layout (the ticks' places final): the minor ticks ``held`` by
+    :func:`hold_unlabelled_minor_ticks`, their marks as one line of markers and their grid
+    lines as one collection, in their first tick's style, instead of a Tick each (the
+    work-precision diagram 0.93 -> 0.73 s of CPU, its pixels unchanged). (The major grid
+    lines as one collection measured no gain on a residual grid: left as they are.)"""
     from matplotlib.ticker import NullLocator
 
     for axis, transform in (
         (ax.xaxis, ax.get_xaxis_transform()),
         (ax.yaxis, ax.get_yaxis_transform()),
     ):
-        low, high = sorted(axis.get_view_interval())
-        locs = [float(v) for v in axis.get_minorticklocs() if low <= v <= high]
-        formatter = axis.get_minor_formatter()
-        formatter.set_locs(locs)
-        if not locs or any(formatter.format_ticks(locs)):
+        if axis.axis_name not in held:
             continue
-        _minor_artists(ax, axis, transform, locs)
+        locator, tick = held[axis.axis_name]
+        axis.set_minor_locator(locator)  # where it puts them now, those of a major left out
+        locs = _shown(axis, axis.get_minorticklocs())
         axis.set_minor_locator(NullLocator())
+        _tick_marks(ax, axis, transform, locs, tick)
+        if tick.gridline.get_visible():
+            _grid_lines(ax, axis, transform, locs, tick)
 
 
-def _minor_artists(ax: Any, axis: Any, transform: Any, locs: list[float]) -> None:
-    """The marks and grid lines of minor ticks at ``locs``, styled as ``axis``'s own."""
-    from matplotlib.collections import LineCollection
+def _shown(axis: Any, locs: Any) -> list[float]:
+    """The ``locs`` matplotlib draws a tick at: within the view, to 1e-10 of its width on the
+    axis's scale (as ``Axis._update_ticks``)."""
+    low, high = axis.get_transform().transform(sorted(axis.get_view_interval()))
+    near = 1e-10 * (high - low)
+    scaled = axis.get_transform().transform(locs) if len(locs) else []
+    return [float(v) for v, t in zip(locs, scaled, strict=True) if low - near <= t <= high + near]
+
+
+def _tick_marks(ax: Any, axis: Any, transform: Any, locs: list[float], tick: Any) -> None:
+    """The marks of ticks at ``locs`` (on either side where shown), styled as ``tick``'s."""
     from matplotlib.lines import Line2D
 
-    tick = axis.get_minor_ticks(1)[0]
     along_x = axis is ax.xaxis
-    zorder = axis.get_zorder()
     for line, edge in ((tick.tick1line, 0.0), (tick.tick2line, 1.0)):
         if line.get_visible():
             points = [(v, edge) for v in locs] if along_x else [(edge, v) for v in locs]
             marks = Line2D(*zip(*points, strict=True), linestyle="", marker=line.get_marker(),
                            markersize=line.get_markersize(), color=line.get_color(),
                            markeredgewidth=line.get_markeredgewidth(), transform=transform,
-                           clip_on=False, zorder=zorder)  # fmt: skip
+                           clip_on=False, zorder=axis.get_zorder())  # fmt: skip
             marks.set_in_layout(False)
             ax.add_artist(marks)
+
+
+def _grid_lines(ax: Any, axis: Any, transform: Any, locs: list[float], tick: Any) -> None:
+    """The grid lines of ticks at ``locs``, one collection styled as ``tick``'s."""
+    from matplotlib.collections import LineCollection
+
     grid = tick.gridline
-    if grid.get_visible():
-        segments = [((v, 0.0), (v, 1.0)) if along_x else ((0.0, v), (1.0, v)) for v in locs]
-        lines = LineCollection(segments, colors=[grid.get_color()], alpha=grid.get_alpha(),
-                               linewidths=grid.get_linewidth(), linestyles=grid.get_linestyle(),
-                               transform=transform, zorder=zorder)  # fmt: skip
-        lines.set_clip_path(ax.patch)
-        lines.set_in_layout(False)
-        ax.add_collection(lines, autolim=False)
+    along_x = axis is ax.xaxis
+    segments = [((v, 0.0), (v, 1.0)) if along_x else ((0.0, v), (1.0, v)) for v in locs]
+    lines = LineCollection(segments, colors=[grid.get_color()], alpha=grid.get_alpha(),
+                           linewidths=grid.get_linewidth(), linestyles=grid.get_linestyle(),
+                           transform=transform, zorder=axis.get_zorder())  # fmt: skip
+    lines.set_clip_path(ax.patch)
+    lines.set_in_layout(False)
+    ax.add_collection(lines, autolim=False)
 
 
 def cannot_create_in(folder: Path) -> str | None:
