@@ -53,9 +53,6 @@ _OCR_FORMS = {
 _SPACE = r"(?:\s|\\q?quad\b|\\[,;!])*"
 
 
-# kept: the pages look for a few thousand forms, more than re's own cache of compiled
-# patterns holds, so each page compiled them all again
-@lru_cache(maxsize=8192)
 def ocr_pattern(printed: str) -> re.Pattern[str] | None:
     """A regex for ``printed`` that tolerates the OCR's spacing (``0^m,68`` ~ ``0^m, 68``)."""
     chars = [c for c in printed if not c.isspace()]
