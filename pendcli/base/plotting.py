@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+import re
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -39,14 +41,17 @@ def new_figure(
     """Yield (fig, axes) and save to ``path`` on exit (PNG, no timestamp metadata).
 
     ``axes`` is one Axes for a single panel, else an array of them (``nrows`` × ``ncols``).
+    The figure is made directly on an Agg canvas, not through pyplot (which would register
+    it with a figure manager, and must be told to forget it).
     """
-    plt = _pyplot()
-    fig, axes = plt.subplots(nrows, ncols, figsize=size, squeeze=nrows * ncols == 1)
-    try:
-        yield fig, axes
-        save_figure(fig, path)
-    finally:
-        plt.close(fig)
+    _pyplot()  # the rcParams above
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=size, dpi=DPI)
+    _canvas_class()(fig)
+    axes = fig.subplots(nrows, ncols, squeeze=nrows * ncols == 1)
+    yield fig, axes
+    save_figure(fig, path)
 
 
 def save_figure(fig: Figure, path: str | Path) -> Path:
@@ -64,7 +69,11 @@ def save_figure(fig: Figure, path: str | Path) -> Path:
         path.parent.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise PendcliError(f"cannot create folder for plot {str(path)!r}: {exc.strerror}") from None
+    plain_powers(fig)
+    held = [hold_unlabelled_minor_ticks(ax) for ax in fig.axes]
     fig.tight_layout()
+    for ax, minor in zip(fig.axes, held, strict=True):
+        lighter_ticks(ax, minor)
     # tight_layout leaves a placeholder layout engine behind, and savefig draws the whole
     # figure once more (without rendering) for any engine: none, so it draws once
     fig.set_layout_engine(None)
@@ -88,10 +97,10 @@ def _png(fig: Figure) -> bytes:
     report's nine PNGs took 0.48 s of CPU to encode, not 0.68, for 7 % more bytes)."""
     import io
 
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image
 
-    canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
+    canvas_class = _canvas_class()
+    canvas: Any = fig.canvas if isinstance(fig.canvas, canvas_class) else canvas_class(fig)
     canvas.draw()
     size = (int(canvas.renderer.width), int(canvas.renderer.height))
     image = Image.frombuffer("RGBA", size, canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
@@ -104,6 +113,228 @@ def _png(fig: Figure) -> bytes:
 
 
 FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
+
+
+@functools.cache
+def _canvas_class() -> type:
+    """An Agg canvas whose renderer draws plain text by :func:`_draw_text`."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    class Canvas(FigureCanvasAgg):
+        def get_renderer(self) -> Any:
+            renderer = super().get_renderer()
+            if "draw_text" not in vars(renderer):
+                renderer.draw_text = functools.partial(_draw_text, renderer)
+            return renderer
+
+    return Canvas
+
+
+# the glyphs a text is set in, by (font, size, resolution, hinting, text): a figure's tick
+# labels and axis labels repeat, and setting a text costs as much as drawing its glyphs
+_GLYPHS: dict[tuple[Any, ...], list[tuple[Any, int, float, float]]] = {}
+
+
+def _draw_text(
+    renderer: Any, gc: Any, x: float, y: float, s: str, prop: Any, angle: float,
+    ismath: Any = False, mtext: Any = None,
+) -> None:  # fmt: skip
+    """Agg's ``draw_text`` for plain text, pixel for pixel: the same glyphs set by the same
+    layout at the same places, the layout kept (:data:`_GLYPHS`) and the rotation computed
+    once per text rather than once per glyph (a third of Agg's glyph loop in Python)."""
+    import math
+
+    import numpy as np
+    from matplotlib.backends.backend_agg import RendererAgg, get_hinting_flag
+    from matplotlib.ft2font import RenderMode
+
+    if ismath or (mtext is not None and (mtext.get_fontfeatures() or mtext.get_language())):
+        RendererAgg.draw_text(renderer, gc, x, y, s, prop, angle, ismath, mtext)
+        return
+    font = renderer._prepare_font(prop)
+    size, flags = prop.get_size_in_points(), get_hinting_flag()
+    glyphs = _glyphs(font, size, renderer.dpi, flags, s)
+    cos, sin = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    matrix = (0x10000 * np.array([[cos, -sin], [sin, cos]])).round().astype(int)
+    mode = RenderMode.NORMAL if gc.get_antialiased() else RenderMode.MONO
+    height = renderer.height
+    sized = set()
+    for face, index, dx, dy in glyphs:
+        if face not in sized:  # a fallback font's glyphs
+            face.set_size(size, renderer.dpi)
+            sized.add(face)
+        origin = [
+            round(0x40 * (x + dx * cos - dy * sin)),
+            round(0x40 * (height - y + dx * sin + dy * cos)),
+        ]
+        face._set_transform(matrix, origin)
+        bitmap = face._render_glyph(index, flags, mode)
+        buffer = bitmap.buffer if mode is RenderMode.NORMAL else bitmap.buffer * 0xFF
+        top = int(height) - bitmap.top + buffer.shape[0]
+        renderer._renderer.draw_text_image(buffer, bitmap.left, top, 0, gc)
+
+
+def _glyphs(
+    font: Any, size: float, dpi: float, flags: Any, s: str
+) -> list[tuple[Any, int, float, float]]:
+    """(font, glyph index, x, y) of each glyph of ``s``, as Agg sets it, kept."""
+    key = (font, font.fname, size, dpi, flags, s)
+    glyphs = _GLYPHS.get(key)
+    if glyphs is None:
+        if len(_GLYPHS) > 20_000:
+            _GLYPHS.clear()
+        glyphs = [(g.ft_object, g.glyph_index, g.x, g.y) for g in font._layout(s, flags=flags)]
+        _GLYPHS[key] = glyphs
+    return glyphs
+
+
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+# what matplotlib's log formatter writes: $\mathdefault{[-][c\times]b^{e}}$
+_MATHTEXT_POWER = re.compile(
+    r"\$\\mathdefault\{(-?)(?:([0-9.]+)\\times)?([0-9]+)\^\{(-?[0-9]+)\}\}\$"
+)
+
+
+def plain_power(label: str) -> str:
+    """A log axis's tick label as plain text: ``$\\mathdefault{2\\times10^{-5}}$`` becomes
+    ``2×10⁻⁵`` (Unicode superscripts): set and drawn as plain text (:func:`_draw_text`), not
+    parsed and placed glyph by glyph as mathtext; any other label is returned as it is."""
+    match = _MATHTEXT_POWER.fullmatch(label)
+    if match is None:
+        return label
+    sign, coefficient, base, exponent = match.groups()
+    times = f"{coefficient}×" if coefficient else ""
+    return f"{'−' if sign else ''}{times}{base}{exponent.translate(_SUPERSCRIPT)}"
+
+
+@functools.cache
+def _power_formatter() -> type:
+    from matplotlib.ticker import Formatter
+
+    class PowerFormatter(Formatter):
+        """A log formatter's labels (the same ticks labelled) in plain text."""
+
+        def __init__(self, log: Any) -> None:
+            self.log = log
+
+        def set_axis(self, axis: Any) -> None:
+            super().set_axis(axis)
+            self.log.set_axis(axis)
+
+        def set_locs(self, locs: Any) -> None:
+            self.log.set_locs(locs)
+
+        def __call__(self, x: float, pos: int | None = None) -> str:
+            return plain_power(self.log(x, pos))
+
+        def format_data(self, value: float) -> str:
+            return plain_power(self.log.format_data(value))
+
+    return PowerFormatter
+
+
+def power_formatter(log: Any) -> Any:
+    """The formatter ``log`` (matplotlib's LogFormatterSciNotation), its labels in plain text
+    (:func:`plain_power`)."""
+    return _power_formatter()(log)
+
+
+def plain_powers(fig: Figure) -> None:
+    """Every log tick label of ``fig`` in plain text (:func:`plain_power`): matplotlib's own
+    log formatters wrapped by :func:`power_formatter`, fixed labels rewritten."""
+    from matplotlib.ticker import FixedFormatter, LogFormatterSciNotation
+
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            for formatter, use in (
+                (axis.get_major_formatter(), axis.set_major_formatter),
+                (axis.get_minor_formatter(), axis.set_minor_formatter),
+            ):
+                if type(formatter) is LogFormatterSciNotation:
+                    use(power_formatter(formatter))
+                elif isinstance(formatter, FixedFormatter):
+                    formatter.seq = [plain_power(str(label)) for label in formatter.seq]
+
+
+def hold_unlabelled_minor_ticks(ax: Any) -> dict[str, tuple[Any, Any]]:
+    """Before the layout: each axis's minor ticks that carry no label (a log axis's 2…9
+    between its decades) taken off the axis, so that no Tick (five artists, made and copied
+    apiece) is made for them; their locator and the style of their first tick, by axis name,
+    for :func:`lighter_ticks` to draw them once the layout is done."""
+    from matplotlib.ticker import NullLocator
+
+    held = {}
+    for axis in (ax.xaxis, ax.yaxis):
+        locs = _shown(axis, axis.get_minorticklocs())
+        formatter = axis.get_minor_formatter()
+        formatter.set_locs(locs)
+        if locs and not any(formatter.format_ticks(locs)):
+            held[axis.axis_name] = (axis.get_minor_locator(), axis.get_minor_ticks(1)[0])
+            axis.set_minor_locator(NullLocator())
+    return held
+
+
+def lighter_ticks(ax: Any, held: dict[str, tuple[Any, Any]]) -> None:
+    """After the layout (the ticks' places final): the minor ticks ``held`` by
+    :func:`hold_unlabelled_minor_ticks`, their marks as one line of markers and their grid
+    lines as one collection, in their first tick's style, instead of a Tick each (the
+    work-precision diagram 0.93 -> 0.73 s of CPU, its pixels unchanged). (The major grid
+    lines as one collection measured no gain on a residual grid: left as they are.)"""
+    from matplotlib.ticker import NullLocator
+
+    for axis, transform in (
+        (ax.xaxis, ax.get_xaxis_transform()),
+        (ax.yaxis, ax.get_yaxis_transform()),
+    ):
+        if axis.axis_name not in held:
+            continue
+        locator, tick = held[axis.axis_name]
+        axis.set_minor_locator(locator)  # where it puts them now, those of a major left out
+        locs = _shown(axis, axis.get_minorticklocs())
+        axis.set_minor_locator(NullLocator())
+        _tick_marks(ax, axis, transform, locs, tick)
+        if tick.gridline.get_visible():
+            _grid_lines(ax, axis, transform, locs, tick)
+
+
+def _shown(axis: Any, locs: Any) -> list[float]:
+    """The ``locs`` matplotlib draws a tick at: within the view, to 1e-10 of its width on the
+    axis's scale (as ``Axis._update_ticks``)."""
+    low, high = axis.get_transform().transform(sorted(axis.get_view_interval()))
+    near = 1e-10 * (high - low)
+    scaled = axis.get_transform().transform(locs) if len(locs) else []
+    return [float(v) for v, t in zip(locs, scaled, strict=True) if low - near <= t <= high + near]
+
+
+def _tick_marks(ax: Any, axis: Any, transform: Any, locs: list[float], tick: Any) -> None:
+    """The marks of ticks at ``locs`` (on either side where shown), styled as ``tick``'s."""
+    from matplotlib.lines import Line2D
+
+    along_x = axis is ax.xaxis
+    for line, edge in ((tick.tick1line, 0.0), (tick.tick2line, 1.0)):
+        if line.get_visible():
+            points = [(v, edge) for v in locs] if along_x else [(edge, v) for v in locs]
+            marks = Line2D(*zip(*points, strict=True), linestyle="", marker=line.get_marker(),
+                           markersize=line.get_markersize(), color=line.get_color(),
+                           markeredgewidth=line.get_markeredgewidth(), transform=transform,
+                           clip_on=False, zorder=axis.get_zorder())  # fmt: skip
+            marks.set_in_layout(False)
+            ax.add_artist(marks)
+
+
+def _grid_lines(ax: Any, axis: Any, transform: Any, locs: list[float], tick: Any) -> None:
+    """The grid lines of ticks at ``locs``, one collection styled as ``tick``'s."""
+    from matplotlib.collections import LineCollection
+
+    grid = tick.gridline
+    along_x = axis is ax.xaxis
+    segments = [((v, 0.0), (v, 1.0)) if along_x else ((0.0, v), (1.0, v)) for v in locs]
+    lines = LineCollection(segments, colors=[grid.get_color()], alpha=grid.get_alpha(),
+                           linewidths=grid.get_linewidth(), linestyles=grid.get_linestyle(),
+                           transform=transform, zorder=axis.get_zorder())  # fmt: skip
+    lines.set_clip_path(ax.patch)
+    lines.set_in_layout(False)
+    ax.add_collection(lines, autolim=False)
 
 
 def cannot_create_in(folder: Path) -> str | None:

@@ -97,6 +97,16 @@ def test_each_panel_y_ticks_are_matplotlibs_own_for_its_data(saved_grid: Any) ->
             assert mine, ax.get_title()
             if ax.yaxis.get_major_locator().__class__.__name__ == "LogLocator":
                 continue  # a sweep within a decade: 1, 2, 5 of each, left to matplotlib
-            assert mine == _shown_ticks(other), ax.get_title()
+            # matplotlib's ticks, labelled 10ⁿ in plain text (not its mathtext 10^{n})
+            theirs = [(v, _power(v)) for v, _ in _shown_ticks(other)]
+            assert mine == theirs, ax.get_title()
     finally:
         plt.close(other_fig)
+
+
+def _power(value: float) -> str:
+    """10⁻⁷ for 1e-7: the label of a decade tick."""
+    import math
+
+    digits = dict(zip("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹", strict=True))
+    return "10" + "".join(digits[c] for c in str(round(math.log10(value))))
