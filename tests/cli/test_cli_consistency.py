@@ -242,32 +242,32 @@ def test_help_of_the_package_lists_reproduce_with_the_functions() -> None:
 
 
 def _on_a_terminal(*args: str) -> str:
-    """What `pendcli ARGS` writes to a pseudo-terminal (stdout and stderr both)."""
+    """What `pendcli ARGS` writes to a pseudo-terminal (stdout and stderr both), run in this
+    process: what it checks is whether its streams are a terminal, and these are one."""
     import pty
-    import subprocess
-    import sys
+    import threading
 
     leader, follower = pty.openpty()
-    env = {**os.environ, "COLUMNS": "120", "PENDCLI_CACHE": "off"}
-    with subprocess.Popen(
-        [sys.executable, "-m", "pendcli", *args],
-        stdin=subprocess.DEVNULL,
-        stdout=follower,
-        stderr=follower,
-        env=env,
-    ) as child:
-        os.close(follower)
-        chunks = []
+    chunks: list[bytes] = []
+
+    def read_all() -> None:  # the terminal's buffer is small: read while the command writes
         while True:
             try:
                 data = os.read(leader, 65536)
-            except OSError:  # the child closed its end
+            except OSError:  # every handle on the follower closed
                 break
             if not data:
                 break
             chunks.append(data)
-        child.wait()
-    os.close(leader)
+
+    reader = threading.Thread(target=read_all)
+    reader.start()
+    try:
+        with open(follower, "w", encoding="utf-8") as terminal:
+            invoke(*args, env={"COLUMNS": "120"}, terminal=terminal)
+    finally:
+        reader.join()
+        os.close(leader)
     return b"".join(chunks).decode("utf-8", "replace")
 
 

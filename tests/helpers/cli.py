@@ -10,7 +10,7 @@ import os
 import subprocess
 import sys
 from collections.abc import Iterator, Mapping
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, TextIO
 
 import typer
 
@@ -86,12 +86,21 @@ def _group_built_once() -> Iterator[None]:
         typer.main.get_command = build
 
 
-def invoke(*args: str, env: Mapping[str, str] | None = None, utf8: bool = False) -> CliResult:
+def invoke(
+    *args: str,
+    env: Mapping[str, str] | None = None,
+    utf8: bool = False,
+    terminal: TextIO | None = None,
+) -> CliResult:
     """Run `pendcli ARGS` in-process (``env``: variables set for the call; ``utf8``: stdout
-    declares UTF-8, as a terminal does); return (exit code, stdout, stderr). The app's click
-    group is built once per set of registered papers and served again."""
-    out = _Utf8Capture() if utf8 else io.StringIO()
-    err = io.StringIO()
+    declares UTF-8, as a terminal does; ``terminal``: a stream both stdout and stderr write
+    to instead, such as a pseudo-terminal's, and then the result's are empty); return (exit
+    code, stdout, stderr). The app's click group is built once per set of registered papers
+    and served again."""
+    out: TextIO = _Utf8Capture() if utf8 else io.StringIO()
+    err: TextIO = io.StringIO()
+    if terminal is not None:
+        out = err = terminal
     argv = sys.argv
     sys.argv = ["pendcli", *args]
     code = 0
@@ -107,7 +116,9 @@ def invoke(*args: str, env: Mapping[str, str] | None = None, utf8: bool = False)
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
     finally:
         sys.argv = argv
-    return CliResult(code, out.getvalue(), err.getvalue())
+    if terminal is not None:
+        return CliResult(code, "", "")
+    return CliResult(code, out.getvalue(), err.getvalue())  # type: ignore[attr-defined]
 
 
 def child_env(**extra: str) -> dict[str, str]:
