@@ -9,7 +9,8 @@ import io
 import os
 import subprocess
 import sys
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
+from pathlib import Path
 from typing import Any, NamedTuple, TextIO
 
 import typer
@@ -140,6 +141,54 @@ def run_cli(
         options["capture_output"] = True
     options.update(kwargs)
     return subprocess.run([*PENDCLI, *args], env={**os.environ, **(env or {})}, **options)
+
+
+# One interpreter imports what `python -m pendcli` imports before it reads its arguments, then
+# runs the real entry point (pendcli/__main__.py, through runpy as `-m` does) in a child forked
+# for each command line: its standard output the file named, its standard error a file of its
+# own; the child ends as the fresh process would (SystemExit, then the interpreter's shutdown
+# with its last flush). The parent prints each child's exit code.
+_FORKED_ENTRY = """
+import os
+import runpy
+import sys
+
+import pendcli.cli.main
+
+for index, args in enumerate({arg_lists!r}):
+    sys.stdout.flush()
+    sys.stderr.flush()
+    child = os.fork()
+    if child == 0:
+        os.dup2(os.open({stdout!r}, os.O_WRONLY), 1)
+        os.dup2(os.open(f"{{{errors!r}}}.{{index}}", os.O_WRONLY | os.O_CREAT, 0o600), 2)
+        sys.argv = ["pendcli", *args]
+        runpy.run_module("pendcli", run_name="__main__", alter_sys=True)
+        sys.exit(0)
+    print(index, os.waitstatus_to_exitcode(os.waitpid(child, 0)[1]))
+"""
+
+
+def run_cli_forked(
+    arg_lists: Sequence[Sequence[str]], stdout: str, errors: str
+) -> list[tuple[int, str]]:
+    """Per command line of ``arg_lists``: (exit code, stderr) of `pendcli ARGS` with its
+    standard output opened from the path ``stdout`` (such as /dev/full), each run as a fresh
+    process runs it but forked from one interpreter (``errors``: a path prefix for their
+    standard errors). For behaviours of the real entry point that do not depend on how the
+    interpreter started (its locale, its closed streams: those need :func:`run_cli`)."""
+    code = _FORKED_ENTRY.format(
+        arg_lists=[list(a) for a in arg_lists], stdout=stdout, errors=errors
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, timeout=300
+    )
+    codes = dict(line.split() for line in done.stdout.splitlines())
+    assert len(codes) == len(arg_lists), done.stderr
+    return [
+        (int(codes[str(i)]), Path(f"{errors}.{i}").read_text(encoding="utf-8"))
+        for i in range(len(arg_lists))
+    ]
 
 
 def assert_clean_error(code: int, err: str) -> None:
