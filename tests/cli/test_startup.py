@@ -139,6 +139,7 @@ def test_plain_options_and_data_formats_import_neither_pydantic_nor_rich(args):
     assert loaded == "", f"pendcli {' '.join(args)} imported {loaded}"
 
 
+@cache  # built once for the 44 spellings: both coercions only read their parameter
 def _typer_coercions():
     """Per parameter: (pendcli's PlainCoercion, typer's own pydantic-backed coercion)."""
     from pendcli.cli.coercion import PlainCoercion
