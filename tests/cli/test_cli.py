@@ -12,7 +12,14 @@ import sys
 from functools import cache
 
 import pytest
-from helpers.cli import NO_BYTECODE, assert_clean_error, invoke, run_cli, run_cli_forked
+from helpers.cli import (
+    NO_BYTECODE,
+    assert_clean_error,
+    invoke,
+    invoke_in_a_child,
+    run_cli,
+    run_cli_forked,
+)
 
 from pendcli.cli.main import run
 
@@ -372,7 +379,7 @@ def test_file_size_limit_during_out_names_the_final_path(tmp_path):
     def limit() -> None:
         resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
 
-    proc = _pendcli(
+    code, _, err = invoke_in_a_child(
         "reproduce",
         "-p",
         "charbonnier",
@@ -382,10 +389,9 @@ def test_file_size_limit_during_out_names_the_final_path(tmp_path):
         "--out",
         str(out),
         "-q",
-        preexec_fn=limit,
-        env=NO_BYTECODE,
+        limit=limit,
     )
-    assert proc.returncode == 2, proc.stderr
-    assert proc.stderr.startswith(f"pendcli: error: cannot write {out}"), proc.stderr
-    assert proc.stderr.endswith(": File too large\n") and ".new-" not in proc.stderr
+    assert code == 2, err
+    assert err.startswith(f"pendcli: error: cannot write {out}"), err
+    assert err.endswith(": File too large\n") and ".new-" not in err
     assert list(tmp_path.iterdir()) == []
