@@ -65,24 +65,26 @@ def test_replace_directory_keeps_old_when_fill_fails(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == ["tables"]
 
 
-_WRITER = textwrap.dedent(
-    """
-    import sys, time
-    from pathlib import Path
-    from pendcli.base.files import replace_directory
+def _fill_slowly(tmp: Path) -> None:
+    for i in range(6):
+        with open(tmp / f"t{i}.csv", "w") as fh:
+            for _ in range(200):
+                fh.write("new," * 50 + "\n")
+                fh.flush()
+            time.sleep(0.002)
 
-    def fill(tmp):
-        for i in range(6):
-            with open(tmp / f"t{i}.csv", "w") as fh:
-                for _ in range(200):
-                    fh.write("new," * 50 + "\\n")
-                    fh.flush()
-                time.sleep(0.002)
 
-    while True:
-        replace_directory(Path(sys.argv[1]), fill)
-    """
-)
+def _replacing_until_killed(target: Path) -> int:
+    """A child forked from this process that replaces ``target`` again and again until it is
+    killed (a real process, without a fresh interpreter's start-up); its pid."""
+    child = os.fork()
+    if child == 0:
+        try:
+            while True:
+                replace_directory(target, _fill_slowly)
+        finally:
+            os._exit(1)
+    return child
 
 
 @pytest.mark.parametrize("delay", [0.01, 0.03, 0.05, 0.08, 0.13, 0.21])
@@ -93,10 +95,10 @@ def test_kill_during_replace_leaves_old_or_new(tmp_path: Path, delay: float) -> 
         (target / f"t{i}.csv").write_text("old\n")
     old = _snapshot(target)
     new = {f"t{i}.csv": ("new," * 50 + "\n").encode() * 200 for i in range(6)}
-    proc = subprocess.Popen([sys.executable, "-c", _WRITER, str(target)])
+    child = _replacing_until_killed(target)
     time.sleep(delay)
-    proc.send_signal(signal.SIGKILL)
-    proc.wait()
+    os.kill(child, signal.SIGKILL)
+    os.waitpid(child, 0)
     assert _snapshot(target) in (old, new)
     remove_stale(tmp_path, "tables")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["tables"]
