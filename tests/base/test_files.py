@@ -12,7 +12,7 @@ import time
 from pathlib import Path
 
 import pytest
-from helpers.cli import NO_BYTECODE
+from helpers.forked import in_a_child
 
 from pendcli.base.errors import PendcliError
 from pendcli.base.files import atomic_write, locked, remove_stale, replace_directory
@@ -112,26 +112,17 @@ def test_file_size_limit_leaves_old_content(tmp_path: Path) -> None:
     target = tmp_path / "tables"
     target.mkdir()
     (target / "a.csv").write_text("old")
-    script = textwrap.dedent(
-        f"""
-        import resource
-        from pathlib import Path
-        from pendcli.base.errors import PendcliError
-        from pendcli.base.files import replace_directory
-        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, {resource.RLIM_INFINITY}))
-        def fill(tmp):
-            (tmp / "big.csv").write_bytes(b"x" * 20000)
+
+    def limited() -> str:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, resource.RLIM_INFINITY))
         try:
-            replace_directory(Path({str(target)!r}), fill)
+            replace_directory(target, _limited_fill)
         except PendcliError as exc:
-            print(exc)
-            raise SystemExit(2)
-        """
-    )
-    env = {**os.environ, **NO_BYTECODE}  # the limit would cut a module's byte-code short
-    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
-    assert out.returncode == 2, out.stderr
-    assert "File too large" in out.stdout and str(target) in out.stdout
+            return str(exc)
+        return "no error"
+
+    said = in_a_child(limited)  # a real process under the limit (the test's is not)
+    assert "File too large" in said and str(target) in said, said
     assert _snapshot(target) == {"a.csv": b"old"}
 
 

@@ -125,34 +125,15 @@ def invoke(
 def invoke_in_a_child(
     *args: str, limit: Callable[[], None], env: Mapping[str, str] | None = None
 ) -> CliResult:
-    """:func:`invoke` in a child forked from this process, after ``limit()`` (a resource
-    limit, say, that must not bind this process): a real process under the limit, without a
-    fresh interpreter's start-up and imports. The child writes no byte-code (a limit on file
-    sizes would cut a module's short)."""
-    import pickle
-    import traceback
+    """:func:`invoke` in a child forked from this process (helpers/forked.py), after
+    ``limit()`` (a resource limit, say, that must not bind this process)."""
+    from helpers.forked import in_a_child
 
-    read, write = os.pipe()
-    child = os.fork()
-    if child == 0:
-        status = 0
-        try:
-            os.close(read)
-            sys.dont_write_bytecode = True
-            limit()
-            answer: object = invoke(*args, env=env)
-        except BaseException:
-            answer, status = traceback.format_exc(), 1
-        finally:
-            with os.fdopen(write, "wb") as pipe:
-                pipe.write(pickle.dumps(answer))
-            os._exit(status)
-    os.close(write)
-    with os.fdopen(read, "rb") as pipe:
-        answer = pickle.loads(pipe.read())
-    os.waitpid(child, 0)
-    assert isinstance(answer, CliResult), answer
-    return answer
+    def limited() -> CliResult:
+        limit()
+        return invoke(*args, env=env)
+
+    return in_a_child(limited)
 
 
 def child_env(**extra: str) -> dict[str, str]:
