@@ -9,6 +9,7 @@ import subprocess
 import sys
 import textwrap
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -126,23 +127,33 @@ def test_file_size_limit_leaves_old_content(tmp_path: Path) -> None:
     assert _snapshot(target) == {"a.csv": b"old"}
 
 
+def _holding(lock: Path, until: Callable[[], object]) -> tuple[int, int]:
+    """A child forked from this process that takes ``lock`` whole, says so (one byte on the
+    pipe whose reading end is returned), and keeps it until ``until()`` returns: its pid
+    and that reading end."""
+    read, write = os.pipe()
+    child = os.fork()
+    if child == 0:
+        try:
+            os.close(read)
+            with locked(lock):
+                os.write(write, b"h")
+                until()
+        finally:
+            os._exit(0)
+    os.close(write)
+    assert os.read(read, 1) == b"h"
+    return child, read
+
+
 def test_exclusive_lock_blocks_a_second_writer(tmp_path: Path) -> None:
     lock = tmp_path / ".lock"
-    holder = subprocess.Popen(
-        [
-            sys.executable,
-            "-c",
-            "import sys, time; from pendcli.base.files import locked\n"
-            f"with locked({str(lock)!r}):\n    print('held', flush=True); time.sleep(0.6)",
-        ],
-        stdout=subprocess.PIPE,
-        text=True,
-    )
-    assert holder.stdout is not None and holder.stdout.readline().strip() == "held"
+    holder, said = _holding(lock, lambda: time.sleep(0.6))
     start = time.perf_counter()
     with locked(lock, shared=True):
         waited = time.perf_counter() - start
-    holder.wait()
+    os.waitpid(holder, 0)
+    os.close(said)
     assert waited > 0.2  # the reader waited for the writer to finish
 
 
@@ -223,24 +234,13 @@ def test_a_waiter_on_a_removed_lock_file_locks_the_current_one(tmp_path: Path) -
     """A writer that waited on a lock file its holder then removed must not believe it holds
     the lock: it locks the file now at that path (else two writers would run at once)."""
     lock = tmp_path / ".out.lock"
-    script = textwrap.dedent(
-        f"""
-        import sys
-        from pendcli.base.files import locked
-        with locked({str(lock)!r}):
-            print("held", flush=True)
-            sys.stdin.readline()
-        """
-    )
-    holder = subprocess.Popen(
-        [sys.executable, "-c", script], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
-    )
-    assert holder.stdout is not None and holder.stdout.readline() == "held\n"
+    release, released = os.pipe()
+    holder, said = _holding(lock, lambda: os.read(release, 1))
     stale_fd = os.open(lock, os.O_RDWR)  # what a waiter opened before the holder finished
-    assert holder.stdin is not None
-    holder.stdin.write("\n")
-    holder.stdin.close()
-    holder.wait()
+    os.write(released, b"\n")
+    os.waitpid(holder, 0)
+    for fd in (release, released, said):
+        os.close(fd)
     assert not lock.exists()
     with locked(lock):  # locks a new file at the path, not the removed one
         assert lock.exists() and os.fstat(stale_fd).st_ino != lock.stat().st_ino
