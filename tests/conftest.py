@@ -344,3 +344,12 @@ def pytest_sessionfinish(session: pytest.Session) -> None:
 
     walked.cache_clear()
     parsed.cache_clear()
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_runtestloop() -> None:
+    """What start-up and collection made (the modules of sympy, scipy, matplotlib and of the
+    tests, the collected items) lives as long as the process: frozen out of the collector's
+    reach, so no full collection during the tests, nor pytest's last one, walks it again."""
+    gc.collect()
+    gc.freeze()

@@ -6,13 +6,12 @@ import os
 import resource
 import signal
 import subprocess
-import sys
-import textwrap
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-from helpers.cli import NO_BYTECODE
+from helpers.forked import in_a_child
 
 from pendcli.base.errors import PendcliError
 from pendcli.base.files import atomic_write, locked, remove_stale, replace_directory
@@ -65,24 +64,26 @@ def test_replace_directory_keeps_old_when_fill_fails(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == ["tables"]
 
 
-_WRITER = textwrap.dedent(
-    """
-    import sys, time
-    from pathlib import Path
-    from pendcli.base.files import replace_directory
+def _fill_slowly(tmp: Path) -> None:
+    for i in range(6):
+        with open(tmp / f"t{i}.csv", "w") as fh:
+            for _ in range(200):
+                fh.write("new," * 50 + "\n")
+                fh.flush()
+            time.sleep(0.002)
 
-    def fill(tmp):
-        for i in range(6):
-            with open(tmp / f"t{i}.csv", "w") as fh:
-                for _ in range(200):
-                    fh.write("new," * 50 + "\\n")
-                    fh.flush()
-                time.sleep(0.002)
 
-    while True:
-        replace_directory(Path(sys.argv[1]), fill)
-    """
-)
+def _replacing_until_killed(target: Path) -> int:
+    """A child forked from this process that replaces ``target`` again and again until it is
+    killed (a real process, without a fresh interpreter's start-up); its pid."""
+    child = os.fork()
+    if child == 0:
+        try:
+            while True:
+                replace_directory(target, _fill_slowly)
+        finally:
+            os._exit(1)
+    return child
 
 
 @pytest.mark.parametrize("delay", [0.01, 0.03, 0.05, 0.08, 0.13, 0.21])
@@ -93,10 +94,10 @@ def test_kill_during_replace_leaves_old_or_new(tmp_path: Path, delay: float) -> 
         (target / f"t{i}.csv").write_text("old\n")
     old = _snapshot(target)
     new = {f"t{i}.csv": ("new," * 50 + "\n").encode() * 200 for i in range(6)}
-    proc = subprocess.Popen([sys.executable, "-c", _WRITER, str(target)])
+    child = _replacing_until_killed(target)
     time.sleep(delay)
-    proc.send_signal(signal.SIGKILL)
-    proc.wait()
+    os.kill(child, signal.SIGKILL)
+    os.waitpid(child, 0)
     assert _snapshot(target) in (old, new)
     remove_stale(tmp_path, "tables")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["tables"]
@@ -110,46 +111,47 @@ def test_file_size_limit_leaves_old_content(tmp_path: Path) -> None:
     target = tmp_path / "tables"
     target.mkdir()
     (target / "a.csv").write_text("old")
-    script = textwrap.dedent(
-        f"""
-        import resource
-        from pathlib import Path
-        from pendcli.base.errors import PendcliError
-        from pendcli.base.files import replace_directory
-        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, {resource.RLIM_INFINITY}))
-        def fill(tmp):
-            (tmp / "big.csv").write_bytes(b"x" * 20000)
+
+    def limited() -> str:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (4096, resource.RLIM_INFINITY))
         try:
-            replace_directory(Path({str(target)!r}), fill)
+            replace_directory(target, _limited_fill)
         except PendcliError as exc:
-            print(exc)
-            raise SystemExit(2)
-        """
-    )
-    env = {**os.environ, **NO_BYTECODE}  # the limit would cut a module's byte-code short
-    out = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
-    assert out.returncode == 2, out.stderr
-    assert "File too large" in out.stdout and str(target) in out.stdout
+            return str(exc)
+        return "no error"
+
+    said = in_a_child(limited)  # a real process under the limit (the test's is not)
+    assert "File too large" in said and str(target) in said, said
     assert _snapshot(target) == {"a.csv": b"old"}
+
+
+def _holding(lock: Path, until: Callable[[], object]) -> tuple[int, int]:
+    """A child forked from this process that takes ``lock`` whole, says so (one byte on the
+    pipe whose reading end is returned), and keeps it until ``until()`` returns: its pid
+    and that reading end."""
+    read, write = os.pipe()
+    child = os.fork()
+    if child == 0:
+        try:
+            os.close(read)
+            with locked(lock):
+                os.write(write, b"h")
+                until()
+        finally:
+            os._exit(0)
+    os.close(write)
+    assert os.read(read, 1) == b"h"
+    return child, read
 
 
 def test_exclusive_lock_blocks_a_second_writer(tmp_path: Path) -> None:
     lock = tmp_path / ".lock"
-    holder = subprocess.Popen(
-        [
-            sys.executable,
-            "-c",
-            "import sys, time; from pendcli.base.files import locked\n"
-            f"with locked({str(lock)!r}):\n    print('held', flush=True); time.sleep(0.6)",
-        ],
-        stdout=subprocess.PIPE,
-        text=True,
-    )
-    assert holder.stdout is not None and holder.stdout.readline().strip() == "held"
+    holder, said = _holding(lock, lambda: time.sleep(0.6))
     start = time.perf_counter()
     with locked(lock, shared=True):
         waited = time.perf_counter() - start
-    holder.wait()
+    os.waitpid(holder, 0)
+    os.close(said)
     assert waited > 0.2  # the reader waited for the writer to finish
 
 
@@ -166,26 +168,26 @@ def test_read_only_folder_is_a_named_error(tmp_path: Path) -> None:
     folder = tmp_path / "ro"
     folder.mkdir()
     folder.chmod(0o555)
-    script = textwrap.dedent(
-        f"""
-        from pendcli.base.errors import PendcliError
-        from pendcli.base.files import atomic_write
+
+    def write() -> str:  # in a child: the namespace is left with it
+        if os.geteuid() == 0:
+            try:
+                _unshare_user_namespace()
+            except OSError as exc:
+                return f"no namespace: {exc}"
         try:
-            atomic_write({str(folder / "x.csv")!r}, "a")
+            atomic_write(folder / "x.csv", "a")
         except PendcliError as exc:
-            print(exc)
-        """
-    )
-    preexec = _unshare_user_namespace if os.geteuid() == 0 else None
+            return str(exc)
+        return "written"
+
     try:
-        out = subprocess.run(
-            [sys.executable, "-c", script], capture_output=True, text=True, preexec_fn=preexec
-        )
-    except subprocess.SubprocessError as exc:
-        pytest.skip(f"root ignores folder modes here and cannot drop that: {exc}")
+        said = in_a_child(write)
     finally:
         folder.chmod(0o755)
-    assert "Permission denied" in out.stdout and str(folder / "x.csv") in out.stdout, out.stderr
+    if said.startswith("no namespace: "):
+        pytest.skip(f"root ignores folder modes here and cannot drop that: {said}")
+    assert "Permission denied" in said and str(folder / "x.csv") in said, said
     assert list(folder.iterdir()) == []
 
 
@@ -230,24 +232,13 @@ def test_a_waiter_on_a_removed_lock_file_locks_the_current_one(tmp_path: Path) -
     """A writer that waited on a lock file its holder then removed must not believe it holds
     the lock: it locks the file now at that path (else two writers would run at once)."""
     lock = tmp_path / ".out.lock"
-    script = textwrap.dedent(
-        f"""
-        import sys
-        from pendcli.base.files import locked
-        with locked({str(lock)!r}):
-            print("held", flush=True)
-            sys.stdin.readline()
-        """
-    )
-    holder = subprocess.Popen(
-        [sys.executable, "-c", script], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
-    )
-    assert holder.stdout is not None and holder.stdout.readline() == "held\n"
+    release, released = os.pipe()
+    holder, said = _holding(lock, lambda: os.read(release, 1))
     stale_fd = os.open(lock, os.O_RDWR)  # what a waiter opened before the holder finished
-    assert holder.stdin is not None
-    holder.stdin.write("\n")
-    holder.stdin.close()
-    holder.wait()
+    os.write(released, b"\n")
+    os.waitpid(holder, 0)
+    for fd in (release, released, said):
+        os.close(fd)
     assert not lock.exists()
     with locked(lock):  # locks a new file at the path, not the removed one
         assert lock.exists() and os.fstat(stale_fd).st_ino != lock.stat().st_ino

@@ -9,9 +9,17 @@ import json
 import os
 import subprocess
 import sys
+from functools import cache
 
 import pytest
-from helpers.cli import NO_BYTECODE, assert_clean_error, invoke, run_cli
+from helpers.cli import (
+    NO_BYTECODE,
+    assert_clean_error,
+    invoke,
+    invoke_in_a_child,
+    run_cli,
+    run_cli_forked,
+)
 
 from pendcli.cli.main import run
 
@@ -249,11 +257,23 @@ def _one_line(proc, expected: str) -> None:
     assert proc.stderr == f"pendcli: error: {expected}\n", proc.stderr
 
 
-@pytest.mark.parametrize("args", [("list",), ("--help",), ("-V",), ("list", "-f", "json")])
-def test_full_disk_on_stdout(args):
-    with open("/dev/full", "w") as full:
-        proc = run_cli(*args, stdout=full, stderr=subprocess.PIPE)
-    _one_line(proc, "cannot write standard output: No space left on device")
+FULL_DISK = [("list",), ("--help",), ("-V",), ("list", "-f", "json")]
+
+
+@cache
+def _on_a_full_disk(folder: str) -> dict[tuple[str, ...], tuple[int, str]]:
+    """Each command of FULL_DISK run by the real entry point, its stdout /dev/full."""
+    runs = run_cli_forked(FULL_DISK, "/dev/full", f"{folder}/stderr")
+    return dict(zip(FULL_DISK, runs, strict=True))
+
+
+@pytest.mark.parametrize("args", FULL_DISK)
+def test_full_disk_on_stdout(args, tmp_path_factory):
+    folder = tmp_path_factory.getbasetemp() / "full-disk"
+    folder.mkdir(exist_ok=True)
+    code, err = _on_a_full_disk(str(folder))[args]
+    full_disk = "cannot write standard output: No space left on device"
+    assert (code, err) == (2, f"pendcli: error: {full_disk}\n"), err
 
 
 def test_closed_stdout():
@@ -363,7 +383,7 @@ def test_file_size_limit_during_out_names_the_final_path(tmp_path):
     def limit() -> None:
         resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
 
-    proc = _pendcli(
+    code, _, err = invoke_in_a_child(
         "reproduce",
         "-p",
         "charbonnier",
@@ -373,10 +393,9 @@ def test_file_size_limit_during_out_names_the_final_path(tmp_path):
         "--out",
         str(out),
         "-q",
-        preexec_fn=limit,
-        env=NO_BYTECODE,
+        limit=limit,
     )
-    assert proc.returncode == 2, proc.stderr
-    assert proc.stderr.startswith(f"pendcli: error: cannot write {out}"), proc.stderr
-    assert proc.stderr.endswith(": File too large\n") and ".new-" not in proc.stderr
+    assert code == 2, err
+    assert err.startswith(f"pendcli: error: cannot write {out}"), err
+    assert err.endswith(": File too large\n") and ".new-" not in err
     assert list(tmp_path.iterdir()) == []

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+from functools import cache
 from typing import Annotated
 
 import pytest
@@ -17,42 +18,69 @@ from tools import bench, bench_startup
 
 HEAVY = ("scipy", "matplotlib")
 
+# One fresh interpreter imports what every command imports (pendcli.cli.main, as `python -m
+# pendcli` does before it reads its arguments), then runs each command in a child forked from
+# that state: each child starts where a fresh `pendcli` process would be when it reads its
+# arguments, and says which of the heavy packages it has loaded once its command is done.
+# Eight commands cost one interpreter's start-up and imports, not eight.
 PROBE = """
+import os
 import sys
-sys.argv = ["pendcli", *{args!r}]
+
 from pendcli.cli.main import run
-try:
-    run()
-except SystemExit:
-    pass
-loaded = sorted({{m.split(".")[0] for m in sys.modules}} & {heavy!r})
-sys.stderr.write("LOADED=" + ",".join(loaded) + "\\n")
+
+for index, args in enumerate({arg_lists!r}):
+    sys.stdout.flush()
+    sys.stderr.flush()
+    if os.fork() == 0:
+        try:
+            sys.argv = ["pendcli", *args]
+            try:
+                run()
+            except SystemExit:
+                pass
+            loaded = sorted({{m.split(".")[0] for m in sys.modules}} & {heavy!r})
+            sys.stdout.flush()
+            sys.stderr.write(f"LOADED[{{index}}]=" + ",".join(loaded) + "\\n")
+            sys.stderr.flush()
+        finally:
+            os._exit(0)
+    os.wait()
 """
 
 
-@pytest.mark.parametrize(
-    "args",
-    [
-        ["--help"],
-        ["-V"],
-        ["list"],
-        ["lecornu"],  # a bare group prints its help
-        ["lecornu", "--help"],
-        ["tradeoff", "--help"],
-        ["charbonnier", "integral", "--help"],
-        ["--show-completion", "bash"],
-    ],
-    ids=lambda a: " ".join(a),
-)
-def test_light_commands_do_not_import_scipy_or_matplotlib(args):
+@cache
+def _loaded(
+    arg_lists: tuple[tuple[str, ...], ...], heavy: frozenset[str]
+) -> dict[tuple[str, ...], str]:
+    """Per command line of ``arg_lists``: the packages of ``heavy`` it loaded (comma-separated)."""
     proc = subprocess.run(
-        [sys.executable, "-c", PROBE.format(args=args, heavy=set(HEAVY))],
+        [sys.executable, "-c", PROBE.format(arg_lists=arg_lists, heavy=set(heavy))],
         capture_output=True,
         text=True,
         check=True,
     )
-    line = [x for x in proc.stderr.splitlines() if x.startswith("LOADED=")][-1]
-    assert line == "LOADED=", f"pendcli {' '.join(args)} imported {line[7:]}"
+    said = dict(re.findall(r"^LOADED\[(\d+)\]=(.*)$", proc.stderr, re.MULTILINE))
+    assert len(said) == len(arg_lists), proc.stderr
+    return {args: said[str(index)] for index, args in enumerate(arg_lists)}
+
+
+LIGHT = [
+    ["--help"],
+    ["-V"],
+    ["list"],
+    ["lecornu"],  # a bare group prints its help
+    ["lecornu", "--help"],
+    ["tradeoff", "--help"],
+    ["charbonnier", "integral", "--help"],
+    ["--show-completion", "bash"],
+]
+
+
+@pytest.mark.parametrize("args", LIGHT, ids=lambda a: " ".join(a))
+def test_light_commands_do_not_import_scipy_or_matplotlib(args):
+    loaded = _loaded(tuple(map(tuple, LIGHT)), frozenset(HEAVY))[tuple(args)]
+    assert loaded == "", f"pendcli {' '.join(args)} imported {loaded}"
 
 
 def test_import_costs_parses_importtime():
@@ -107,16 +135,11 @@ LIGHT_JSON = [
 def test_plain_options_and_data_formats_import_neither_pydantic_nor_rich(args):
     """typer would convert every option through pydantic (pendcli.cli.coercion: ~0.19 s of
     CPU); rich is for tables only."""
-    proc = subprocess.run(
-        [sys.executable, "-c", PROBE.format(args=args, heavy={"pydantic", "rich"})],
-        capture_output=True,
-        text=True,
-        check=True,
-    )
-    line = [x for x in proc.stderr.splitlines() if x.startswith("LOADED=")][-1]
-    assert line == "LOADED=", f"pendcli {' '.join(args)} imported {line[7:]}"
+    loaded = _loaded(tuple(map(tuple, LIGHT_JSON)), frozenset({"pydantic", "rich"}))[tuple(args)]
+    assert loaded == "", f"pendcli {' '.join(args)} imported {loaded}"
 
 
+@cache  # built once for the 44 spellings: both coercions only read their parameter
 def _typer_coercions():
     """Per parameter: (pendcli's PlainCoercion, typer's own pydantic-backed coercion)."""
     from pendcli.cli.coercion import PlainCoercion

@@ -9,8 +9,9 @@ import io
 import os
 import subprocess
 import sys
-from collections.abc import Iterator, Mapping
-from typing import Any, NamedTuple
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from pathlib import Path
+from typing import Any, NamedTuple, TextIO
 
 import typer
 
@@ -86,12 +87,21 @@ def _group_built_once() -> Iterator[None]:
         typer.main.get_command = build
 
 
-def invoke(*args: str, env: Mapping[str, str] | None = None, utf8: bool = False) -> CliResult:
+def invoke(
+    *args: str,
+    env: Mapping[str, str] | None = None,
+    utf8: bool = False,
+    terminal: TextIO | None = None,
+) -> CliResult:
     """Run `pendcli ARGS` in-process (``env``: variables set for the call; ``utf8``: stdout
-    declares UTF-8, as a terminal does); return (exit code, stdout, stderr). The app's click
-    group is built once per set of registered papers and served again."""
-    out = _Utf8Capture() if utf8 else io.StringIO()
-    err = io.StringIO()
+    declares UTF-8, as a terminal does; ``terminal``: a stream both stdout and stderr write
+    to instead, such as a pseudo-terminal's, and then the result's are empty); return (exit
+    code, stdout, stderr). The app's click group is built once per set of registered papers
+    and served again."""
+    out: TextIO = _Utf8Capture() if utf8 else io.StringIO()
+    err: TextIO = io.StringIO()
+    if terminal is not None:
+        out = err = terminal
     argv = sys.argv
     sys.argv = ["pendcli", *args]
     code = 0
@@ -107,7 +117,23 @@ def invoke(*args: str, env: Mapping[str, str] | None = None, utf8: bool = False)
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
     finally:
         sys.argv = argv
-    return CliResult(code, out.getvalue(), err.getvalue())
+    if terminal is not None:
+        return CliResult(code, "", "")
+    return CliResult(code, out.getvalue(), err.getvalue())  # type: ignore[attr-defined]
+
+
+def invoke_in_a_child(
+    *args: str, limit: Callable[[], None], env: Mapping[str, str] | None = None
+) -> CliResult:
+    """:func:`invoke` in a child forked from this process (helpers/forked.py), after
+    ``limit()`` (a resource limit, say, that must not bind this process)."""
+    from helpers.forked import in_a_child
+
+    def limited() -> CliResult:
+        limit()
+        return invoke(*args, env=env)
+
+    return in_a_child(limited)
 
 
 def child_env(**extra: str) -> dict[str, str]:
@@ -129,6 +155,54 @@ def run_cli(
         options["capture_output"] = True
     options.update(kwargs)
     return subprocess.run([*PENDCLI, *args], env={**os.environ, **(env or {})}, **options)
+
+
+# One interpreter imports what `python -m pendcli` imports before it reads its arguments, then
+# runs the real entry point (pendcli/__main__.py, through runpy as `-m` does) in a child forked
+# for each command line: its standard output the file named, its standard error a file of its
+# own; the child ends as the fresh process would (SystemExit, then the interpreter's shutdown
+# with its last flush). The parent prints each child's exit code.
+_FORKED_ENTRY = """
+import os
+import runpy
+import sys
+
+import pendcli.cli.main
+
+for index, args in enumerate({arg_lists!r}):
+    sys.stdout.flush()
+    sys.stderr.flush()
+    child = os.fork()
+    if child == 0:
+        os.dup2(os.open({stdout!r}, os.O_WRONLY), 1)
+        os.dup2(os.open(f"{{{errors!r}}}.{{index}}", os.O_WRONLY | os.O_CREAT, 0o600), 2)
+        sys.argv = ["pendcli", *args]
+        runpy.run_module("pendcli", run_name="__main__", alter_sys=True)
+        sys.exit(0)
+    print(index, os.waitstatus_to_exitcode(os.waitpid(child, 0)[1]))
+"""
+
+
+def run_cli_forked(
+    arg_lists: Sequence[Sequence[str]], stdout: str, errors: str
+) -> list[tuple[int, str]]:
+    """Per command line of ``arg_lists``: (exit code, stderr) of `pendcli ARGS` with its
+    standard output opened from the path ``stdout`` (such as /dev/full), each run as a fresh
+    process runs it but forked from one interpreter (``errors``: a path prefix for their
+    standard errors). For behaviours of the real entry point that do not depend on how the
+    interpreter started (its locale, its closed streams: those need :func:`run_cli`)."""
+    code = _FORKED_ENTRY.format(
+        arg_lists=[list(a) for a in arg_lists], stdout=stdout, errors=errors
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, timeout=300
+    )
+    codes = dict(line.split() for line in done.stdout.splitlines())
+    assert len(codes) == len(arg_lists), done.stderr
+    return [
+        (int(codes[str(i)]), Path(f"{errors}.{i}").read_text(encoding="utf-8"))
+        for i in range(len(arg_lists))
+    ]
 
 
 def assert_clean_error(code: int, err: str) -> None:

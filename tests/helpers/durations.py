@@ -106,6 +106,31 @@ def confirmed(
     return out
 
 
+def timeline(lines: list[dict[str, object]]) -> list[str]:
+    """Per worker (lines that name one): its CPU and wall seconds in tests, and when its last
+    phase ended, in seconds after the first worker's start-up began; the gap between the
+    workers' last ends is the time one of them sat idle while the other finished."""
+    timed = [line for line in lines if "worker" in line and "end" in line]
+    if not timed:
+        return []
+    begin = min(float(ln["end"]) - float(ln["wall"]) for ln in timed)  # type: ignore[arg-type]
+    ends: dict[str, float] = defaultdict(float)
+    cpu: dict[str, float] = defaultdict(float)
+    wall: dict[str, float] = defaultdict(float)
+    for line in timed:
+        worker = str(line["worker"])
+        ends[worker] = max(ends[worker], float(line["end"]) - begin)  # type: ignore[arg-type]
+        if line["phase"] != "collect":
+            cpu[worker] += float(line["cpu"])  # type: ignore[arg-type]
+            wall[worker] += float(line["wall"])  # type: ignore[arg-type]
+    last = max(ends.values())
+    return [
+        f"  {worker}: tests {cpu[worker]:.1f} s CPU, {wall[worker]:.1f} s wall; done at "
+        f"{ends[worker]:.1f} s, idle {last - ends[worker]:.1f} s before the last worker"
+        for worker in sorted(ends)
+    ]
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("timings", type=Path)
@@ -135,6 +160,8 @@ def main(argv: list[str] | None = None) -> int:
         if line["phase"] == "collect":
             print(f"  {line['test']}: start-up and collection {line['cpu']} s CPU, ", end="")
             print(f"{line['wall']} s wall")
+    for worker_line in timeline(lines):
+        print(worker_line)
     for kind, chosen in (("slow", slow),) if args.slow else (("fast", fast),):
         show(kind, chosen, key, args.top)
     over = sorted(((s, t) for s, t in fast if s > args.limit), reverse=True)

@@ -3,8 +3,9 @@
 ``pytest --timings-file PATH`` writes one JSON line per test phase (setup, call, teardown):
 its node id, whether it is marked ``slow``, wall seconds, and CPU seconds of the test process
 plus the children it reaped (a test that runs the CLI in a subprocess spends its time there).
-``python tests/helpers/durations.py PATH`` then lists the tests not marked ``slow`` over 2 s. CPU
-seconds hardly move with the machine's load, wall seconds do; the list can use either.
+``python tests/helpers/durations.py PATH`` then lists the tests not marked ``slow`` over 2 s,
+and each worker's timeline (a line carries its worker and the epoch second its phase ended).
+CPU seconds hardly move with the machine's load, wall seconds do; the list can use either.
 
 The hooks are imported by conftest.py; under xdist they run in each worker, which appends its
 own lines (one ``write`` of one line each, so workers do not interleave within a line).
@@ -67,6 +68,8 @@ def pytest_collection_finish(session: pytest.Session) -> None:
                 "wall": round(wall, 4),
                 "cpu": round(time.process_time(), 4),
                 "load": round(os.getloadavg()[0], 2),
+                "worker": worker,
+                "end": round(time.time(), 3),
             },
         )
 
@@ -97,6 +100,9 @@ def _timed(item: pytest.Item, phase: str) -> Iterator[None]:
         "wall": round(time.perf_counter() - wall, 4),
         "cpu": round(_cpu_seconds() - cpu, 4),
         "load": round(os.getloadavg()[0], 2),
+        # the worker's timeline: which worker ran the phase and when it ended (epoch seconds)
+        "worker": os.environ.get("PYTEST_XDIST_WORKER", "main"),
+        "end": round(time.time(), 3),
     }
     _append(path, line)
 

@@ -52,7 +52,7 @@ def test_a_recheck_keeps_a_heavy_test_and_clears_one_recorded_heavy_by_a_crowded
         encoding="utf-8",
     )
     (tmp_path / "test_burn.py").write_text(
-        "import time\n\n\ndef test_heavy():\n    end = time.process_time() + 0.08\n"
+        "import time\n\n\ndef test_heavy():\n    end = time.process_time() + 0.03\n"
         "    while time.process_time() < end:\n        pass\n\n\n"
         "def test_light():\n    pass\n",
         encoding="utf-8",
@@ -60,9 +60,9 @@ def test_a_recheck_keeps_a_heavy_test_and_clears_one_recorded_heavy_by_a_crowded
     monkeypatch.chdir(tmp_path)
     recorded = {"test_burn.py::test_heavy": (0.5, False), "test_burn.py::test_light": (3.0, False)}
     path = _timings(tmp_path / "t.jsonl", recorded)
-    assert durations.main([str(path), "--limit", "0.04", "--recheck", "1"]) == 1
+    assert durations.main([str(path), "--limit", "0.015", "--recheck", "1"]) == 1
     out = capsys.readouterr().out
-    assert "over 0.04 s and not marked slow: test_burn.py::test_heavy" in out
+    assert "over 0.015 s and not marked slow: test_burn.py::test_heavy" in out
     assert "not marked slow: test_burn.py::test_light" not in out
     assert "rechecked test_burn.py::test_light: 3.00 s in the run, least 0.0" in out
 
@@ -90,3 +90,27 @@ def test_a_recheck_that_cannot_run_the_test_clears_nothing(
     assert durations.main([str(path), "--limit", "2", "--recheck", "1"]) == 1
     out = capsys.readouterr().out
     assert "rechecked test_broken.py::test_needs: 3.00 s in the run, least 3.00 s" in out
+
+
+def test_each_workers_timeline_says_how_long_it_sat_idle_before_the_last(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """gw0 starts at 100.0 and its last phase ends at 110.0; gw1 ends at 104.0: gw1 sat idle
+    6 s. Seconds are counted from the first start (the earliest end minus its wall); the
+    lines may come in any order (the files of two runs appended, say)."""
+    lines = [
+        {"test": "a.py::one", "phase": "call", "slow": False, "wall": 8.0, "cpu": 7.0,
+         "load": 0.1, "worker": "gw0", "end": 110.0},
+        {"test": "a.py::two", "phase": "call", "slow": False, "wall": 1.0, "cpu": 0.5,
+         "load": 0.1, "worker": "gw1", "end": 104.0},
+        {"test": "<collection gw0>", "phase": "collect", "slow": False, "wall": 2.0, "cpu": 1.5,
+         "load": 0.1, "worker": "gw0", "end": 102.0},
+        {"test": "<collection gw1>", "phase": "collect", "slow": False, "wall": 2.5, "cpu": 1.5,
+         "load": 0.1, "worker": "gw1", "end": 102.6},
+    ]  # fmt: skip
+    path = tmp_path / "t.jsonl"
+    path.write_text("".join(json.dumps(line) + "\n" for line in lines), encoding="utf-8")
+    assert durations.main([str(path), "--limit", "10"]) == 0
+    out = capsys.readouterr().out
+    assert "gw0: tests 7.0 s CPU, 8.0 s wall; done at 10.0 s, idle 0.0 s" in out
+    assert "gw1: tests 0.5 s CPU, 1.0 s wall; done at 4.0 s, idle 6.0 s" in out
