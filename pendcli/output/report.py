@@ -190,11 +190,14 @@ def _fill(
     pages = [(p or "", "page", page_without_figures, (made, p)) for p in made.order()]
     intro = ("", "introduction", introduction, (result,))
     writer.status(f"drawing {len(figure_sets)} sets of figures")
-    with Drawing(shared_order(figure_sets, pages[:-1], [intro, pages[-1]]), jobs) as drawing:
+
+    def tables() -> None:  # written here while the workers take their first figures
         writer.text("claims.json", to_json(result.document()))
         for name, table in regenerated_tables(result).items():
             writer.text(f"tables/{name}", table)
-        figures, done = drawing.results()
+
+    with Drawing(shared_order(figure_sets, pages[:-1], [intro, pages[-1]]), jobs) as drawing:
+        figures, done = drawing.results(first=tables)
     drew = sum(p.suffix == ".png" for ps in figures.values() for p in ps)
     writer.status(f"drew {drew} figures")
     markdown = _markdown(result, writer, figures, tradeoff, done["", "introduction"])
