@@ -174,7 +174,8 @@ def _fill(
 ) -> list[Path]:
     """Every file of the report, written into ``folder``; their paths relative to it. The
     figures are drawn while the pages are rendered without them (and the introduction
-    written), all shared by the processes (report_figures.Drawing); the pages are then
+    written), all shared by the processes (report_figures.Drawing), claims.json and the
+    tables written here while the workers take their first figures; the pages are then
     finished with their figures."""
     from pendcli.output.html.report import (
         markdown_for_a_reader,
