@@ -250,11 +250,15 @@ def _computed(
     gathered into one value per cached unit: a ledger's parts back in its order."""
     from pendcli.base.console import progress_bar, status_line
     from pendcli.base.workers import ForkedWorkers, counting_rows, job_count
+    from pendcli.data.ledger import load_ledger
     from pendcli.papers.registry import paper
+    from pendcli.verify.ledger_evaluation import with_measured
     from pendcli.verify.ledger_references import say_derived_afresh, stale_ledgers
 
     # found before the workers fork (they inherit that it is said), said once at the end
     stale = stale_ledgers([paper(k) for k in sorted({k for k, w in steps if "equations" in w})])
+    # formula checks run with a ledger's first part: the others leave out what they found
+    unmeasured = frozenset(k for k, what in steps if what.startswith("formulas+equations"))
 
     workers = job_count(jobs, len(steps)) - 1
     if workers:
@@ -270,7 +274,7 @@ def _computed(
         done = lent.enter_context(counting_rows())  # before the fork: workers count too
         bar = progress_bar(quiet, len(steps), title, (rows, done) if rows else None)
         with ForkedWorkers(workers) as pool, bar as advance:
-            run = functools.partial(_run_step, papers=keys)
+            run = functools.partial(_run_step, papers=keys, unmeasured=unmeasured)
             values = pool.share(
                 order, run, lambda step, _: advance(_named(step), 1), _named, first=meanwhile
             )
@@ -283,6 +287,9 @@ def _computed(
         computed[key, "equations"] = [
             row for _, rows in sorted(parts, key=lambda p: p[0]) for row in rows
         ]
+    for key in sorted(unmeasured):  # what the formula checks found, added once, not rerun
+        ledger, formulas = load_ledger(key), computed[key, "formulas"]
+        computed[key, "equations"] = with_measured(computed[key, "equations"], ledger, formulas)
     say_derived_afresh(stale)
     return computed
 
@@ -510,29 +517,29 @@ def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
                 references()
 
 
-def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
+def _run_step(step: Step, papers: tuple[str, ...], unmeasured: frozenset[str]) -> Any:
     key, what = step
     if what == "claims":
         return claim_rows(key)
     if what == "formulas":
         return formula_checks(key)
     if what.startswith(("equations", "formulas+equations")):
-        return _ledger_step(key, what)
+        return _ledger_step(key, what, what.startswith("formulas") or key not in unmeasured)
     from pendcli.papers.registry import stability_rows
 
     return stability_rows(papers)
 
 
-def _ledger_step(key: str, what: str) -> Any:
-    """``equations i/n``: (i, that part of the ledger); ``formulas+equations i/n``: the
-    formula checks too, lent to the ledger's checks."""
+def _ledger_step(key: str, what: str, measure: bool = True) -> Any:
+    """``equations i/n``: (i, that part of the ledger; ``measure`` False: without what the
+    formula checks found); ``formulas+equations i/n``: the formula checks too, lent to it."""
     from pendcli.papers.registry import equation_rows
     from pendcli.verify.claims import sharing_formula_rows
 
     index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
     rows = formula_checks(key) if what.startswith("formulas") else None
     with sharing_formula_rows(key, rows) if rows is not None else nullcontext():
-        part = equation_rows([key], part=(index, count))
+        part = equation_rows([key], part=(index, count), measure=measure)
     return (rows, (index, part)) if rows is not None else (index, part)
 
 

@@ -349,7 +349,9 @@ def test_equations_shares_each_ledger_s_parts_and_gives_them_back_in_ledger_orde
     # guard of 60 s in all: with no worker the assertion below then fails
     wait_until = time.monotonic() + 60
 
-    def fake_rows(keys: list[str], part: tuple[int, int] = (0, 1)) -> list[object]:
+    def fake_rows(
+        keys: list[str], part: tuple[int, int] = (0, 1), measure: bool = True
+    ) -> list[object]:
         if os.getpid() != parent:
             taken.touch()
         while os.getpid() == parent and not taken.exists() and time.monotonic() < wait_until:

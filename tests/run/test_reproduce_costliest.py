@@ -58,7 +58,7 @@ def _taken(monkeypatch: pytest.MonkeyPatch, jobs: int) -> list[tuple[str, str]]:
     monkeypatch.setattr(workers, "ForkedWorkers", _Recording)
     monkeypatch.setattr(reproduce, "claim_rows", lambda key: [])
     monkeypatch.setattr(reproduce, "formula_checks", lambda key: [])
-    monkeypatch.setattr(registry, "equation_rows", lambda keys, part: [])
+    monkeypatch.setattr(registry, "equation_rows", lambda keys, part, measure=True: [])
     monkeypatch.setattr(registry, "stability_rows", lambda papers: [])
     reproduce.reproduce_all(PAPERS, formulas=True, equations=True, stability=True, jobs=jobs)
     return list(_Recording.taken)
