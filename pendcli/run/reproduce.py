@@ -440,8 +440,8 @@ def _steps(
     claims: bool = True,
 ) -> list[Step]:
     """The steps of a run, for what is not ``stored``. Each ledger is cut in LEDGER_PARTS parts
-    that two processes can share; the first goes with the formula checks, whose rows it re-reads,
-    so they are computed once (stored formula rows are lent to it instead)."""
+    that two processes can share; the first goes with the formula checks, lent to it, the others
+    get what they found once all is back: computed once (stored formula rows are lent to all)."""
     have = stored or {}
     steps = [(k, "claims") for k in keys if claims and (k, "claims") not in have]
     for k in keys:
