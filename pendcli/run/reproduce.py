@@ -256,9 +256,10 @@ def _computed(
     from pendcli.verify.ledger_references import say_derived_afresh, stale_ledgers
 
     # found before the workers fork (they inherit that it is said), said once at the end
-    stale = stale_ledgers([paper(k) for k in sorted({k for k, w in steps if "equations" in w})])
-    # formula checks run with a ledger's first part: the others leave out what they found
-    unmeasured = frozenset(k for k, what in steps if what.startswith("formulas+equations"))
+    judged = {k for k, w in steps if "equations" in w}
+    stale = stale_ledgers([paper(k) for k in sorted(judged)])
+    # formula checks computed in a step of this run: the ledger's parts leave out what they found
+    unmeasured = frozenset(judged & {k for k, w in steps if "formulas" in w})
 
     workers = job_count(jobs, len(steps)) - 1
     if workers:
@@ -442,6 +443,8 @@ def _steps(
     """The steps of a run, for what is not ``stored``. Each ledger is cut in LEDGER_PARTS parts
     that two processes can share; the first goes with the formula checks, lent to it, the others
     get what they found once all is back: computed once (stored formula rows are lent to all)."""
+    from pendcli.verify.ledger_evaluation import names_formula_checks
+
     have = stored or {}
     steps = [(k, "claims") for k in keys if claims and (k, "claims") not in have]
     for k in keys:
@@ -449,6 +452,8 @@ def _steps(
         need_ledger = equations and (k, "equations") not in have
         if need_formulas:
             steps.append((k, f"formulas+equations 0/{LEDGER_PARTS}" if need_ledger else "formulas"))
+        elif need_ledger and (k, "formulas") not in have and names_formula_checks(k):
+            steps.append((k, "formulas"))  # what its `measured` rows read: a step of its own
     for k in keys:
         if equations and (k, "equations") not in have:
             together = formulas and (k, "formulas") not in have
@@ -564,21 +569,13 @@ def _gather(
 def _lend_formula_rows(
     stack: contextlib.ExitStack, stored: dict[Wanted, Any], steps: list[Step]
 ) -> None:
-    """Lend formula rows to the ledger's checks that re-read them (before the fork: a worker
-    inherits them): the stored ones; else, for a ledger judged without its paper's formula
-    checks (``pendcli equations``) whose rows name one (``measured``), those computed here."""
-    from pendcli.data.ledger import load_ledger
+    """Lend the stored formula rows to the ledger's checks that re-read them (before the fork:
+    a worker inherits them); rows computed in this run are added once all is back."""
     from pendcli.verify.claims import sharing_formula_rows
 
-    computing = {k for k, what in steps if what.startswith("formulas")}
     for key in dict.fromkeys(k for k, what in steps if what.startswith("equations")):
         if (key, "formulas") in stored:
-            rows = stored[key, "formulas"]
-        elif key in computing or not any(row.measured for row in load_ledger(key).rows):
-            continue
-        else:
-            rows = list(formula_checks(key))
-        stack.enter_context(sharing_formula_rows(key, rows))
+            stack.enter_context(sharing_formula_rows(key, stored[key, "formulas"]))
 
 
 # Every verdict (claims, formulas) and status (equations) a row can have, best first.

@@ -48,6 +48,7 @@ __all__ = [
     "equation_rows",
     "evaluate",
     "measured",
+    "names_formula_checks",
     "with_measured",
 ]
 
@@ -119,6 +120,15 @@ def measured(row: LedgerRow, formulas: Iterable[FormulaRow]) -> Measured | None:
     orders = [r.observed_order for r in chosen if r.observed_order is not None]
     detail = "; ".join(f"{r.id} {r.verdict} (order {_order(r.observed_order)})" for r in chosen)
     return Measured(detail, min(orders) if orders else None)
+
+
+def names_formula_checks(paper: str) -> bool:
+    """Whether a row of ``paper``'s ledger names a formula check (``measured``); False for a
+    ledger that does not load (judging it says why)."""
+    try:
+        return any(row.measured for row in load_ledger(paper).rows)
+    except (PendcliError, OSError):
+        return False
 
 
 def _formula_rows(paper: LedgerPaper, ledger: Ledger) -> list[FormulaRow]:

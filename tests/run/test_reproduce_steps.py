@@ -39,12 +39,14 @@ def test_a_ledger_judged_alone_computes_its_formula_checks_once(
 
 
 @pytest.mark.parametrize("jobs", [1, 2])
-def test_a_ledger_judged_with_its_formula_checks_computes_them_once(
-    monkeypatch: pytest.MonkeyPatch, tmp_path, jobs: int
+@pytest.mark.parametrize("asked", [True, False])
+def test_a_ledger_s_formula_checks_run_once_in_a_step_of_the_shared_queue(
+    monkeypatch: pytest.MonkeyPatch, tmp_path, jobs: int, asked: bool
 ) -> None:
-    """With the formula checks asked for too, they run once with the ledger's first part,
-    whichever process takes the others (which used to run them all again): every row that
-    names a check carries the order it measures and its id, in every part."""
+    """The formula checks run once, in a step (with the ledger's first part when they are
+    asked for too; else their own, no longer before the fork), whichever process takes the
+    ledger's parts (the other used to run them all again): every row that names a check
+    carries the order it measures and its id, in every part."""
     import os
 
     import pendcli.papers.tisserand.formulas as formulas
@@ -59,7 +61,7 @@ def test_a_ledger_judged_with_its_formula_checks_computes_them_once(
         return real()
 
     monkeypatch.setattr(formulas, "formula_checks", counted)
-    result = reproduce_all(("tisserand",), formulas=True, equations=True, jobs=jobs)
+    result = reproduce_all(("tisserand",), formulas=asked, equations=True, jobs=jobs)
     assert LEDGER_PARTS > 1 and len(log.read_text(encoding="utf-8").split()) == 1
     checks = {row.id: row.observed_order for row in real()}
     ledger = load_ledger("tisserand").rows
