@@ -493,11 +493,15 @@ def _named(step: Step) -> str:
 def _costliest_first(steps: list[Step]) -> list[Step]:
     """The order the processes take the steps in, with no timings: the ledgers' parts, the
     largest ledger's first (its part of 1.8 s CPU, taken last, left the other process idle),
-    the part with the formula checks first; then the stability table, the formula checks, the
-    claims last (the smallest, they fill the gaps), each the largest ledger's paper first."""
-    rank = {"equations": 0, "formulas+equations": 0, "stability": 1, "formulas": 2}
+    the part with the formula checks first, checks of their own after their ledger's parts;
+    then the stability table, the claims last (the smallest, they fill the gaps)."""
+    rank = {"equations": 0, "formulas+equations": 0, "formulas": 0, "stability": 1}
     rows = {k: sum(_part_rows(s) for s in steps if s[0] == k) for k, _ in steps}
-    return sorted(steps, key=lambda s: (rank.get(s[1].split()[0], 3), -rows[s[0]], "+" not in s[1]))
+
+    def key(s: Step) -> tuple[int, int, bool, bool]:
+        return rank.get(s[1].split()[0], 3), -rows[s[0]], "+" not in s[1], s[1] == "formulas"
+
+    return sorted(steps, key=key)
 
 
 def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
