@@ -174,7 +174,8 @@ def _fill(
 ) -> list[Path]:
     """Every file of the report, written into ``folder``; their paths relative to it. The
     figures are drawn while the pages are rendered without them (and the introduction
-    written), all shared by the processes (report_figures.Drawing); the pages are then
+    written), all shared by the processes (report_figures.Drawing), claims.json and the
+    tables written here while the workers take their first figures; the pages are then
     finished with their figures."""
     from pendcli.output.html.report import (
         markdown_for_a_reader,
@@ -190,11 +191,14 @@ def _fill(
     pages = [(p or "", "page", page_without_figures, (made, p)) for p in made.order()]
     intro = ("", "introduction", introduction, (result,))
     writer.status(f"drawing {len(figure_sets)} sets of figures")
-    with Drawing(shared_order(figure_sets, pages[:-1], [intro, pages[-1]]), jobs) as drawing:
+
+    def tables() -> None:  # written here while the workers take their first figures
         writer.text("claims.json", to_json(result.document()))
         for name, table in regenerated_tables(result).items():
             writer.text(f"tables/{name}", table)
-        figures, done = drawing.results()
+
+    with Drawing(shared_order(figure_sets, pages[:-1], [intro, pages[-1]]), jobs) as drawing:
+        figures, done = drawing.results(first=tables)
     drew = sum(p.suffix == ".png" for ps in figures.values() for p in ps)
     writer.status(f"drew {drew} figures")
     markdown = _markdown(result, writer, figures, tradeoff, done["", "introduction"])

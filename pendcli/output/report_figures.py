@@ -111,10 +111,15 @@ class Drawing:
         self.workers.__enter__()
         return self
 
-    def results(self) -> tuple[dict[str, list[Path]], dict[tuple[str, str], Any]]:
+    def results(
+        self, first: Callable[[], object] | None = None
+    ) -> tuple[dict[str, list[Path]], dict[tuple[str, str], Any]]:
         """Figures per paper (and "tradeoff"), claim figures before formula figures; and the
-        value of each other task by its (key, kind)."""
-        drawn = self.workers.share(self.tasks, _draw_task, name=_task_name)
+        value of each other task by its (key, kind). ``first`` is done here before this
+        process takes a task: while the workers take theirs (with none, before the tasks)."""
+        if first is not None and not self.workers.processes:
+            first()
+        drawn = self.workers.share(self.tasks, _draw_task, name=_task_name, first=first)
         by_key: dict[str, list[Path]] = {}
         others: dict[tuple[str, str], Any] = {}
         for (key, kind, _, _), value in zip(self.tasks, drawn, strict=True):

@@ -146,10 +146,10 @@ def ledger_papers(root: Path | None = None) -> tuple[str, ...]:
 
 
 def equation_rows(
-    keys_: Iterable[str], root: Path | None = None, part: Part = (0, 1)
+    keys_: Iterable[str], root: Path | None = None, part: Part = (0, 1), measure: bool = True
 ) -> list[EquationRow]:
-    """The equation ledger rows of the papers ``keys_`` (see :func:`pendcli.data.ledger.
-    equation_rows`)."""
+    """The equation ledger rows of the papers ``keys_`` (see :func:`pendcli.verify.
+    ledger_evaluation.equation_rows`)."""
     from pendcli.verify.ledger_evaluation import equation_rows as ledger_equation_rows
 
-    return ledger_equation_rows([paper(k) for k in keys_], root, part)
+    return ledger_equation_rows([paper(k) for k in keys_], root, part, measure)

@@ -250,11 +250,16 @@ def _computed(
     gathered into one value per cached unit: a ledger's parts back in its order."""
     from pendcli.base.console import progress_bar, status_line
     from pendcli.base.workers import ForkedWorkers, counting_rows, job_count
+    from pendcli.data.ledger import load_ledger
     from pendcli.papers.registry import paper
+    from pendcli.verify.ledger_evaluation import with_measured
     from pendcli.verify.ledger_references import say_derived_afresh, stale_ledgers
 
     # found before the workers fork (they inherit that it is said), said once at the end
-    stale = stale_ledgers([paper(k) for k in sorted({k for k, w in steps if "equations" in w})])
+    judged = {k for k, w in steps if "equations" in w}
+    stale = stale_ledgers([paper(k) for k in sorted(judged)])
+    # formula checks computed in a step of this run: the ledger's parts leave out what they found
+    unmeasured = frozenset(judged & {k for k, w in steps if "formulas" in w})
 
     workers = job_count(jobs, len(steps)) - 1
     if workers:
@@ -270,7 +275,7 @@ def _computed(
         done = lent.enter_context(counting_rows())  # before the fork: workers count too
         bar = progress_bar(quiet, len(steps), title, (rows, done) if rows else None)
         with ForkedWorkers(workers) as pool, bar as advance:
-            run = functools.partial(_run_step, papers=keys)
+            run = functools.partial(_run_step, papers=keys, unmeasured=unmeasured)
             values = pool.share(
                 order, run, lambda step, _: advance(_named(step), 1), _named, first=meanwhile
             )
@@ -283,6 +288,9 @@ def _computed(
         computed[key, "equations"] = [
             row for _, rows in sorted(parts, key=lambda p: p[0]) for row in rows
         ]
+    for key in sorted(unmeasured):  # what the formula checks found, added once, not rerun
+        ledger, formulas = load_ledger(key), computed[key, "formulas"]
+        computed[key, "equations"] = with_measured(computed[key, "equations"], ledger, formulas)
     say_derived_afresh(stale)
     return computed
 
@@ -433,8 +441,10 @@ def _steps(
     claims: bool = True,
 ) -> list[Step]:
     """The steps of a run, for what is not ``stored``. Each ledger is cut in LEDGER_PARTS parts
-    that two processes can share; the first goes with the formula checks, whose rows it re-reads,
-    so they are computed once (stored formula rows are lent to it instead)."""
+    that two processes can share; the first goes with the formula checks, lent to it, the others
+    get what they found once all is back: computed once (stored formula rows are lent to all)."""
+    from pendcli.verify.ledger_evaluation import names_formula_checks
+
     have = stored or {}
     steps = [(k, "claims") for k in keys if claims and (k, "claims") not in have]
     for k in keys:
@@ -442,6 +452,8 @@ def _steps(
         need_ledger = equations and (k, "equations") not in have
         if need_formulas:
             steps.append((k, f"formulas+equations 0/{LEDGER_PARTS}" if need_ledger else "formulas"))
+        elif need_ledger and (k, "formulas") not in have and names_formula_checks(k):
+            steps.append((k, "formulas"))  # what its `measured` rows read: a step of its own
     for k in keys:
         if equations and (k, "equations") not in have:
             together = formulas and (k, "formulas") not in have
@@ -481,11 +493,15 @@ def _named(step: Step) -> str:
 def _costliest_first(steps: list[Step]) -> list[Step]:
     """The order the processes take the steps in, with no timings: the ledgers' parts, the
     largest ledger's first (its part of 1.8 s CPU, taken last, left the other process idle),
-    the part with the formula checks first; then the stability table, the formula checks, the
-    claims last (the smallest, they fill the gaps), each the largest ledger's paper first."""
-    rank = {"equations": 0, "formulas+equations": 0, "stability": 1, "formulas": 2}
+    the part with the formula checks first, checks of their own after their ledger's parts;
+    then the stability table, the claims last (the smallest, they fill the gaps)."""
+    rank = {"equations": 0, "formulas+equations": 0, "formulas": 0, "stability": 1}
     rows = {k: sum(_part_rows(s) for s in steps if s[0] == k) for k, _ in steps}
-    return sorted(steps, key=lambda s: (rank.get(s[1].split()[0], 3), -rows[s[0]], "+" not in s[1]))
+
+    def key(s: Step) -> tuple[int, int, bool, bool]:
+        return rank.get(s[1].split()[0], 3), -rows[s[0]], "+" not in s[1], s[1] == "formulas"
+
+    return sorted(steps, key=key)
 
 
 def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
@@ -510,29 +526,29 @@ def _preload(steps: list[Step], papers: tuple[str, ...]) -> None:
                 references()
 
 
-def _run_step(step: Step, papers: tuple[str, ...]) -> Any:
+def _run_step(step: Step, papers: tuple[str, ...], unmeasured: frozenset[str]) -> Any:
     key, what = step
     if what == "claims":
         return claim_rows(key)
     if what == "formulas":
         return formula_checks(key)
     if what.startswith(("equations", "formulas+equations")):
-        return _ledger_step(key, what)
+        return _ledger_step(key, what, what.startswith("formulas") or key not in unmeasured)
     from pendcli.papers.registry import stability_rows
 
     return stability_rows(papers)
 
 
-def _ledger_step(key: str, what: str) -> Any:
-    """``equations i/n``: (i, that part of the ledger); ``formulas+equations i/n``: the
-    formula checks too, lent to the ledger's checks."""
+def _ledger_step(key: str, what: str, measure: bool = True) -> Any:
+    """``equations i/n``: (i, that part of the ledger; ``measure`` False: without what the
+    formula checks found); ``formulas+equations i/n``: the formula checks too, lent to it."""
     from pendcli.papers.registry import equation_rows
     from pendcli.verify.claims import sharing_formula_rows
 
     index, count = (int(x) for x in what.rsplit(" ", 1)[1].split("/"))
     rows = formula_checks(key) if what.startswith("formulas") else None
     with sharing_formula_rows(key, rows) if rows is not None else nullcontext():
-        part = equation_rows([key], part=(index, count))
+        part = equation_rows([key], part=(index, count), measure=measure)
     return (rows, (index, part)) if rows is not None else (index, part)
 
 
@@ -557,21 +573,13 @@ def _gather(
 def _lend_formula_rows(
     stack: contextlib.ExitStack, stored: dict[Wanted, Any], steps: list[Step]
 ) -> None:
-    """Lend formula rows to the ledger's checks that re-read them (before the fork: a worker
-    inherits them): the stored ones; else, for a ledger judged without its paper's formula
-    checks (``pendcli equations``) whose rows name one (``measured``), those computed here."""
-    from pendcli.data.ledger import load_ledger
+    """Lend the stored formula rows to the ledger's checks that re-read them (before the fork:
+    a worker inherits them); rows computed in this run are added once all is back."""
     from pendcli.verify.claims import sharing_formula_rows
 
-    computing = {k for k, what in steps if what.startswith("formulas")}
     for key in dict.fromkeys(k for k, what in steps if what.startswith("equations")):
         if (key, "formulas") in stored:
-            rows = stored[key, "formulas"]
-        elif key in computing or not any(row.measured for row in load_ledger(key).rows):
-            continue
-        else:
-            rows = list(formula_checks(key))
-        stack.enter_context(sharing_formula_rows(key, rows))
+            stack.enter_context(sharing_formula_rows(key, stored[key, "formulas"]))
 
 
 # Every verdict (claims, formulas) and status (equations) a row can have, best first.

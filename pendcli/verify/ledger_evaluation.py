@@ -11,8 +11,8 @@ ledger, reported, never re-labelled. What the engine needs of a paper is
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-from dataclasses import asdict, dataclass, field
+from collections.abc import Iterable, Sequence
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -48,6 +48,8 @@ __all__ = [
     "equation_rows",
     "evaluate",
     "measured",
+    "names_formula_checks",
+    "with_measured",
 ]
 
 
@@ -120,6 +122,15 @@ def measured(row: LedgerRow, formulas: Iterable[FormulaRow]) -> Measured | None:
     return Measured(detail, min(orders) if orders else None)
 
 
+def names_formula_checks(paper: str) -> bool:
+    """Whether a row of ``paper``'s ledger names a formula check (``measured``); False for a
+    ledger that does not load (judging it says why)."""
+    try:
+        return any(row.measured for row in load_ledger(paper).rows)
+    except (PendcliError, OSError):
+        return False
+
+
 def _formula_rows(paper: LedgerPaper, ledger: Ledger) -> list[FormulaRow]:
     """The paper's formula checks when a row of its ledger names one (else none: not run)."""
     from pendcli.verify.claims import shared_formula_rows
@@ -134,15 +145,19 @@ def _formula_rows(paper: LedgerPaper, ledger: Ledger) -> list[FormulaRow]:
 Part = tuple[int, int]
 
 
-def evaluate(paper: LedgerPaper, root: Path | None = None, part: Part = (0, 1)) -> list[Evaluated]:
+def evaluate(
+    paper: LedgerPaper, root: Path | None = None, part: Part = (0, 1), measure: bool = True
+) -> list[Evaluated]:
     """Every row of the paper's ledger (or of ``part`` of it) judged from its printed form,
-    with its consistency verified."""
+    with its consistency verified. ``measure`` False: what the formula checks a row names
+    found is left out (the run that computes them adds it: :func:`with_measured`), so that a
+    part judged in another process does not run every formula check again."""
     ledger = load_ledger(paper.key, root)
     rows = ledger.rows
     index, count = part
     start, stop = len(rows) * index // count, len(rows) * (index + 1) // count
     references = reference_table(paper)
-    formulas = _formula_rows(paper, ledger)
+    formulas = _formula_rows(paper, ledger) if measure else []
     out = []
     for row in rows[start:stop]:
         symbols = ledger.symbols_for(row)
@@ -153,29 +168,49 @@ def evaluate(paper: LedgerPaper, root: Path | None = None, part: Part = (0, 1)) 
         problem = printed_problem(row, computed) or step_problem
         problem = problem or (condition.problem if condition is not None else None)
         context = row_context(row, ledger, condition, step)
-        out.append(Evaluated(row, problem, dims, computed, measured(row, formulas), context))
+        found = measured(row, formulas) if measure else None
+        out.append(Evaluated(row, problem, dims, computed, found, context))
         row_done()  # a progress bar counts rows (base.workers)
     return out
 
 
 def equation_rows(
-    papers: Iterable[LedgerPaper], root: Path | None = None, part: Part = (0, 1)
+    papers: Iterable[LedgerPaper],
+    root: Path | None = None,
+    part: Part = (0, 1),
+    measure: bool = True,
 ) -> list[EquationRow]:
     """The rows of ``reproduce --format json`` under "equations" for ``papers`` (``part`` of
-    each ledger); raises PendcliError if a paper's ledger is missing, empty or not a file, or
-    a check contradicts its row's status."""
+    each ledger; ``measure``: as :func:`evaluate`); raises PendcliError if a paper's ledger is
+    missing, empty or not a file, or a check contradicts its row's status."""
     rows = []
     problems = []
     for paper in papers:
         if paper.references is None:  # a paper without a ledger (its file is then not read)
             continue
-        for item in evaluate(paper, root, part):
+        for item in evaluate(paper, root, part, measure):
             rows.append(item.output_row())
             if item.problem:
                 problems.append(f"{item.row.id}: {item.problem}")
     if problems:
         raise PendcliError(f"equation ledger inconsistent: {problems[0]} ({len(problems)} rows)")
     return rows
+
+
+def with_measured(
+    rows: Iterable[EquationRow], ledger: Ledger, formulas: Sequence[FormulaRow]
+) -> list[EquationRow]:
+    """``rows`` of ``ledger`` judged without their formula checks (``measure`` False), with
+    what the checks each names found (``measured``, ``observed_order``), as :func:`evaluate`
+    gives them."""
+    names = {row.id: row for row in ledger.rows}
+    out = []
+    for row in rows:
+        found = measured(names[row.id], formulas)
+        if found is not None:
+            row = replace(row, measured=found.detail, observed_order=found.observed_order)
+        out.append(row)
+    return out
 
 
 def coverage(rows: Iterable[EquationRow]) -> dict[str, dict[str, int]]:

@@ -349,7 +349,9 @@ def test_equations_shares_each_ledger_s_parts_and_gives_them_back_in_ledger_orde
     # guard of 60 s in all: with no worker the assertion below then fails
     wait_until = time.monotonic() + 60
 
-    def fake_rows(keys: list[str], part: tuple[int, int] = (0, 1)) -> list[object]:
+    def fake_rows(
+        keys: list[str], part: tuple[int, int] = (0, 1), measure: bool = True
+    ) -> list[object]:
         if os.getpid() != parent:
             taken.touch()
         while os.getpid() == parent and not taken.exists() and time.monotonic() < wait_until:
@@ -360,6 +362,9 @@ def test_equations_shares_each_ledger_s_parts_and_gives_them_back_in_ledger_orde
     # the formula rows lent to the ledger's measured rows: the fake rows read none (Lecornu's
     # checks would be integrated for each of the two runs, 0.5 s each)
     monkeypatch.setattr("pendcli.run.reproduce.formula_checks", lambda key: [])
+    monkeypatch.setattr(
+        "pendcli.verify.ledger_evaluation.with_measured", lambda rows, ledger, formulas: rows
+    )
     keys = ("tisserand", "lecornu")
     shared = ledger_rows(keys, jobs=2)
     assert [(k, p) for k, p, _ in shared] == [

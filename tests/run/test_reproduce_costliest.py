@@ -51,16 +51,18 @@ class _Recording:
         return [run(item) for item in items]
 
 
-def _taken(monkeypatch: pytest.MonkeyPatch, jobs: int) -> list[tuple[str, str]]:
+def _taken(
+    monkeypatch: pytest.MonkeyPatch, jobs: int, formulas: bool = True
+) -> list[tuple[str, str]]:
     from pendcli.papers import registry
     from pendcli.run import reproduce
 
     monkeypatch.setattr(workers, "ForkedWorkers", _Recording)
     monkeypatch.setattr(reproduce, "claim_rows", lambda key: [])
     monkeypatch.setattr(reproduce, "formula_checks", lambda key: [])
-    monkeypatch.setattr(registry, "equation_rows", lambda keys, part: [])
+    monkeypatch.setattr(registry, "equation_rows", lambda keys, part, measure=True: [])
     monkeypatch.setattr(registry, "stability_rows", lambda papers: [])
-    reproduce.reproduce_all(PAPERS, formulas=True, equations=True, stability=True, jobs=jobs)
+    reproduce.reproduce_all(PAPERS, formulas=formulas, equations=True, stability=True, jobs=jobs)
     return list(_Recording.taken)
 
 
@@ -81,3 +83,19 @@ def test_one_process_keeps_the_order_listed(monkeypatch: pytest.MonkeyPatch) -> 
     run's error at once): the order is the listed one, the papers as asked."""
     taken = _taken(monkeypatch, jobs=1)
     assert taken[:3] == [(key, "claims") for key in PAPERS]
+
+
+def test_formula_checks_of_their_own_follow_their_ledger_s_parts(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The ledger without the formula rows (`pendcli equations`): each paper's formula checks,
+    which its measured rows read, right after its ledger's parts, the largest ledger's paper
+    first (lecornu's, taken last, left the other process idle)."""
+    from pendcli.run.reproduce import LEDGER_PARTS
+
+    sizes = _ledger_sizes()
+    by_size = sorted(PAPERS, key=lambda key: -sizes[key])
+    parts = [f"equations {i}/{LEDGER_PARTS}" for i in range(LEDGER_PARTS)]
+    taken = _taken(monkeypatch, jobs=2, formulas=False)
+    ledgers = [(k, w) for k in by_size for w in (*parts, "formulas")]
+    assert taken == [*ledgers, ("all", "stability"), *((k, "claims") for k in by_size)]

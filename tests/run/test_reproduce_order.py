@@ -20,7 +20,7 @@ def test_one_process_judges_the_claims_before_any_ledger(monkeypatch: pytest.Mon
             raise PendcliError("tables/published/lecornu.toml: no claim 'x'")
         return []
 
-    def ledger(keys: list[str], part: tuple[int, int]) -> list[object]:
+    def ledger(keys: list[str], part: tuple[int, int], measure: bool = True) -> list[object]:
         judged.append(f"{keys[0]} equations {part[0]}")
         return []
 

@@ -234,18 +234,24 @@ def from_rest_cylinder(nu: int, z: Array, z0: float) -> Array:
 
 
 def _bracketed_zeros(f: Callable[[Array], Array], grid: Array) -> Array:
-    """All sign changes of f on the grid, each refined by vectorised bisection to full precision."""
+    """All sign changes of f on the grid, each refined by vectorised bisection to full precision.
+
+    Width 0.05 halved 64 times is below any ulp of z; once a halving moves no end (each
+    bracket is two neighbouring floats, or a zero was hit), every later one computes the same
+    midpoints and moves none either: the bisection stops there, with the ends 64 halvings
+    give (about 45 halvings for z below 40, so a third fewer evaluations of f)."""
     values = f(grid)
     idx = np.nonzero(np.signbit(values[:-1]) != np.signbit(values[1:]))[0]
     lo, hi = grid[idx].copy(), grid[idx + 1].copy()
     flo = values[idx]
-    for _ in range(64):  # width 0.05 halved 64 times is below any ulp of z
+    for _ in range(64):
         mid = 0.5 * (lo + hi)
         fm = f(mid)
         left = np.signbit(fm) == np.signbit(flo)
-        lo = np.where(left, mid, lo)
-        flo = np.where(left, fm, flo)
-        hi = np.where(left, hi, mid)
+        new_lo, new_hi = np.where(left, mid, lo), np.where(left, hi, mid)
+        if np.array_equal(new_lo, lo) and np.array_equal(new_hi, hi):
+            break  # a fixed point: the remaining halvings change nothing
+        lo, hi, flo = new_lo, new_hi, np.where(left, fm, flo)
     return np.asarray(0.5 * (lo + hi), dtype=float)
 
 

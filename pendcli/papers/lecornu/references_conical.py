@@ -16,6 +16,7 @@ from typing import Any
 import mpmath
 import sympy as sp
 
+from pendcli.base.recent import Recent
 from pendcli.papers.lecornu.references_base import derivative_along, reference, symbols
 
 # --- § IV, the motion in rectangular and polar coordinates, (43)-(45) (lines 940-1016) ---
@@ -207,24 +208,23 @@ def reference_conical_solution() -> Any:
     line 1042's square root)."""
     from sympy.utilities.lambdify import implemented_function
 
-    from pendcli.base.recent import Recent
-
     (x,) = symbols("x")
     numeric = _conical_solution()
 
     def at_30_digits(f: Any) -> Any:
-        # each point's value kept: a residual asks for one function at one point many times
-        # (18 quadratures of ∫dx/ω² for 3 distinct points, 144 calls for 12 values, judging
-        # lecornu.result.conical_general_integral), and the value is a function of the point
-        kept = Recent(256)
+        # sympy's evalf calls an implemented function again at each precision it climbs to
+        # (24 calls a point), each an ODE step and a quadrature: f's value is a function of
+        # its 30-digit argument alone (mpmath's ODE solution steps from its fixed start
+        # whatever was asked before), so each argument is computed once
+        memo = Recent(256)
 
         def value(point: Any) -> Any:
-            key = str(sp.Float(point, 30))
-            found = kept.get(key)
+            text = str(sp.Float(point, 30))
+            found = memo.get(text)
             if found is None:
                 with mpmath.workdps(30):
-                    found = f(mpmath.mpf(key))
-                kept.put(key, found)
+                    found = f(mpmath.mpf(text))
+                memo.put(text, found)
             return found
 
         return value
