@@ -77,8 +77,9 @@ _NO_MEMORY = re.compile(r"failed to map segment|cannot allocate memory|out of me
 
 
 def out_of_memory(exc: BaseException) -> str | None:
-    """One line for a run that ran out of memory: a MemoryError, or a library that could not
-    be loaded for lack of it (an ImportError); None for any other error."""
+    """One line for a run that ran out of memory: a MemoryError, a library that could not be
+    loaded for lack of it (an ImportError), or, under an address-space limit, a library that
+    failed without saying why (a SystemError); None for any other error."""
     if isinstance(exc, MemoryError):
         detail = str(exc) or "an allocation failed"
         # the failed work's frames (and what they held) freed before anything more is asked:
@@ -87,9 +88,19 @@ def out_of_memory(exc: BaseException) -> str | None:
         gc.collect()
     elif isinstance(exc, ImportError) and (found := _NO_MEMORY.search(str(exc))):
         detail = f"cannot load {exc.path or exc.name or 'a library'} ({found.group()})"
+    elif isinstance(exc, SystemError) and str(exc) == _UNSAID and _address_space_limit():
+        # a C function that failed without setting an exception: under ulimit -v, an
+        # allocation refused in code that does not say so (a module's initialisation while
+        # another one loads, seen at 300 MB); without a limit, a bug, said as one
+        detail = (
+            f"a library failed without saying why, as when an allocation is refused ({_UNSAID})"
+        )
     else:
         return None
     return f"out of memory{_address_space_limit()}: {detail}"
+
+
+_UNSAID = "error return without exception set"
 
 
 def _address_space_limit() -> str:

@@ -22,6 +22,9 @@ from pathlib import Path
 
 import pytest
 from helpers.cli import CliResult, assert_clean_error, child_env, invoke
+from helpers.forked import in_a_child
+
+from pendcli.base.errors import out_of_memory
 
 PENDCLI = (sys.executable, "-m", "pendcli")
 CHEAP = ("reproduce", "-p", "tisserand", "--no-formulas", "--no-equations", "--no-stability")
@@ -228,6 +231,27 @@ def test_a_memory_error_anywhere_is_one_line_and_exit_2(monkeypatch, error, said
         gc.unfreeze()
     assert_clean_error(code, err)
     assert err.strip() == f"pendcli: error: {said}"
+
+
+def _said_of_a_silent_failure(limit: int) -> str | None:
+    hard = resource.getrlimit(resource.RLIMIT_AS)[1]
+    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+    return out_of_memory(SystemError("error return without exception set"))
+
+
+def test_a_library_failing_silently_under_a_memory_limit_is_out_of_memory():
+    """At 300 MB a Cython module's initialisation, loading another module, failed without an
+    exception set (a SystemError, exit 3): under a limit that is an allocation refused; with
+    none it stays a bug (None: the internal error)."""
+    said = in_a_child(lambda: _said_of_a_silent_failure(64 << 30))
+    assert said == (
+        "out of memory (the address space is limited to 65536 MB: ulimit -v): a library failed "
+        "without saying why, as when an allocation is refused (error return without exception set)"
+    )
+    if resource.getrlimit(resource.RLIMIT_AS)[1] == resource.RLIM_INFINITY:
+        unlimited = resource.RLIM_INFINITY
+        assert in_a_child(lambda: _said_of_a_silent_failure(unlimited)) is None
+    assert out_of_memory(SystemError("another bug")) is None
 
 
 # --- a reader that stops early ------------------------------------------------------------
