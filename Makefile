@@ -72,8 +72,12 @@ test-durations: $(STAMP)
 	  $(BIN)/python tests/helpers/durations.py $(TIMINGS) --limit $(DURATION_LIMIT) --recheck $(RECHECK)
 
 # Only the slow tests: whole regenerations, real processes stopped by signals, mpmath references.
+# Each test's CPU and wall seconds go to $(SLOW_TIMINGS) (tests/helpers/durations.py --slow
+# lists where the run spends).
+SLOW_TIMINGS := $(abspath $(VENV))/test-slow-timings.jsonl
 test-slow: $(STAMP)
-	$(PYTEST) $(XDIST) -m "slow and not browser"
+	rm -f $(SLOW_TIMINGS)
+	$(PYTEST) $(XDIST) -m "slow and not browser" --timings-file $(SLOW_TIMINGS)
 
 # Everything: the fast and the slow tests in one run (one collection per worker, and each
 # reference a worker builds serves the fast and the slow cases that cite it), then the
