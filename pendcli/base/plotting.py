@@ -115,15 +115,30 @@ def _png(fig: Figure) -> bytes:
 FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
 
 
+# :func:`_draw_text` repeats, step for step, the Agg ``draw_text`` of this matplotlib series,
+# through its private font methods; any other version (pyproject allows 3.8 to 3.x) draws
+# with Agg's own, the same pixels a little slower
+MIRRORED_MATPLOTLIB = "3.11."
+
+
+def fast_text_drawing() -> bool:
+    """Whether plain text is drawn by :func:`_draw_text` (the installed matplotlib is the
+    series it mirrors)."""
+    import matplotlib
+
+    return str(matplotlib.__version__).startswith(MIRRORED_MATPLOTLIB)
+
+
 @functools.cache
 def _canvas_class() -> type:
-    """An Agg canvas whose renderer draws plain text by :func:`_draw_text`."""
+    """An Agg canvas whose renderer draws plain text by :func:`_draw_text` where the installed
+    matplotlib is the one it mirrors (:func:`fast_text_drawing`)."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     class Canvas(FigureCanvasAgg):
         def get_renderer(self) -> Any:
             renderer = super().get_renderer()
-            if "draw_text" not in vars(renderer):
+            if "draw_text" not in vars(renderer) and fast_text_drawing():
                 renderer.draw_text = functools.partial(_draw_text, renderer)
             return renderer
 

@@ -59,6 +59,27 @@ def test_a_saved_png_has_the_pixels_savefig_draws(tmp_path: Path, transparent: b
     assert np.array_equal(np.asarray(image.convert("RGBA")), _savefig_pixels(transparent))
 
 
+def test_another_matplotlib_draws_its_text_with_agg_s_own(monkeypatch, tmp_path: Path) -> None:
+    """The fast text path mirrors one matplotlib series' private font methods: under another
+    version (pyproject allows 3.8 on) Agg's own draw_text is used, the same pixels."""
+    import matplotlib
+
+    from pendcli.base import plotting
+
+    if not plotting.fast_text_drawing():
+        pytest.skip("the installed matplotlib already draws with Agg's own")
+    with new_figure(tmp_path / "fast.png", size=(4.0, 3.0)) as (fig, ax):
+        _draw(ax, False)
+    assert "draw_text" in vars(fig.canvas.get_renderer())  # the mirrored series: the fast path
+    monkeypatch.setattr(matplotlib, "__version__", "3.8.4")
+    assert not plotting.fast_text_drawing()
+    with new_figure(tmp_path / "f.png", size=(4.0, 3.0)) as (fig, ax):
+        _draw(ax, False)
+    assert "draw_text" not in vars(fig.canvas.get_renderer())
+    image = np.asarray(Image.open(tmp_path / "f.png").convert("RGBA"))
+    assert np.array_equal(image, _savefig_pixels(False))
+
+
 def _superscript(n: int) -> str:
     digits = dict(zip("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹", strict=True))
     return "".join(digits[c] for c in str(n))
