@@ -230,6 +230,19 @@ def test_sanitised_mathml_is_allowlisted_xml(mathml: str) -> None:
         assert_allowlisted(out)
 
 
+@pytest.mark.parametrize(
+    "reference", ["&#0;", "&#x0;", "&#xD800;", "&#xFFFE;", "&#x110000;", "&#11;"]
+)
+def test_a_reference_to_no_xml_character_refuses_the_formula(reference: str) -> None:
+    """A character reference XML cannot hold (NUL, a surrogate, U+FFFE, past U+10FFFF, a
+    control) would make the page's MathML ill-formed: the formula is refused (shown as its
+    plain reading), where the reference alone would pass every other check."""
+    assert sanitise_mathml(f"<math><mi>{reference}</mi></math>") is None
+    kept = sanitise_mathml("<math><mi>&#x3C6;</mi><mo>&#60;</mo></math>")
+    assert kept == "<math><mi>&#x3C6;</mi><mo>&#60;</mo></math>"
+    assert ET.fromstring(kept).findtext("mi") == "φ"
+
+
 TEX_PIECES = [
     r"\text{", r"\mbox{", r"\href{javascript:alert(1)}{", r"\style{color:red}{", r"\class{x}{",
     r"{\color{red"" onload=""x}", r"{\color{#fe0001}", "}", "{", "<script>", "</math>",
