@@ -20,15 +20,36 @@ reference_* and numbers_* functions in the order of the text. No name is given b
 
 from __future__ import annotations
 
-from importlib import import_module
-
+from pendcli.papers.lecornu import (
+    references_asymptotic,
+    references_conical,
+    references_conical_planes,
+    references_finite,
+    references_general,
+    references_integral,
+    references_motion,
+    references_numeric,
+    references_perturbed,
+    references_prose,
+    references_slow,
+    references_small,
+)
 from pendcli.verify.ledger_references import builders
 
-# the sections' modules (references_<name>.py), in the order of the text
-_NAMES = "motion small numeric general integral asymptotic slow finite perturbed conical"
-SECTIONS = tuple(
-    import_module(f"pendcli.papers.lecornu.references_{name}")
-    for name in (*_NAMES.split(), "conical_planes", "prose")
+# the sections' modules, in the order of the text
+SECTIONS = (
+    references_motion,
+    references_small,
+    references_numeric,
+    references_general,
+    references_integral,
+    references_asymptotic,
+    references_slow,
+    references_finite,
+    references_perturbed,
+    references_conical,
+    references_conical_planes,
+    references_prose,
 )
 
 # every builder the sections define, by its name (verify/ledger_references.builders)
