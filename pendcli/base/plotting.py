@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from pendcli.base.errors import PendcliError
+from pendcli.base.recent import Recent
 
 if TYPE_CHECKING:
     from types import ModuleType
@@ -147,7 +148,7 @@ def _canvas_class() -> type:
 
 # the glyphs a text is set in, by (font, size, resolution, hinting, text): a figure's tick
 # labels and axis labels repeat, and setting a text costs as much as drawing its glyphs
-_GLYPHS: dict[tuple[Any, ...], list[tuple[Any, int, float, float]]] = {}
+_GLYPHS = Recent(20_000)
 
 
 def _draw_text(
@@ -194,12 +195,10 @@ def _glyphs(
 ) -> list[tuple[Any, int, float, float]]:
     """(font, glyph index, x, y) of each glyph of ``s``, as Agg sets it, kept."""
     key = (font, font.fname, size, dpi, flags, s)
-    glyphs = _GLYPHS.get(key)
+    glyphs: list[tuple[Any, int, float, float]] | None = _GLYPHS.get(key)
     if glyphs is None:
-        if len(_GLYPHS) > 20_000:
-            _GLYPHS.clear()
         glyphs = [(g.ft_object, g.glyph_index, g.x, g.y) for g in font._layout(s, flags=flags)]
-        _GLYPHS[key] = glyphs
+        _GLYPHS.put(key, glyphs)
     return glyphs
 
 
